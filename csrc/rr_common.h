@@ -1,0 +1,44 @@
+/*
+ * rr_common.h - status codes, constants and small helpers shared by every
+ * module of the rollerrig C core.
+ *
+ * Conventions (whole core): SI units (m, s, N, Pa, rad); x is the rolling
+ * direction, y lateral, z normal; semi-axis a lies along x, b along y.
+ * Every public function returns an int status: 0 OK, > 0 warning (outputs
+ * valid), < 0 error (outputs set to NaN).  No function prints, aborts,
+ * allocates or touches errno.
+ */
+#ifndef RR_COMMON_H
+#define RR_COMMON_H
+
+#define RR_VERSION_MAJOR 0
+#define RR_VERSION_MINOR 1
+#define RR_VERSION_PATCH 0
+
+enum rr_status {
+    RR_OK = 0,
+    /* warnings: results are usable but less certain */
+    RR_WARN_EXTRAPOLATED = 1,   /* Kalker coefficients outside 0.1 <= g */
+    RR_WARN_NOT_CONVERGED = 2,  /* an inner iteration hit its cap */
+    /* errors: outputs are NaN */
+    RR_ERR_NONFINITE = -1,      /* an input is NaN or infinite */
+    RR_ERR_LOAD = -2,           /* normal load not positive */
+    RR_ERR_GEOMETRY = -3,       /* curvature or semi-axis not positive */
+    RR_ERR_MATERIAL = -4,       /* modulus not positive or nu outside [0, 0.5) */
+    RR_ERR_FRICTION = -5,       /* mu not positive, or A, B of the falling law invalid */
+    RR_ERR_GRID = -6,           /* grid size outside [1, RR_FASTSIM_MAX_GRID] */
+    RR_ERR_SPEED = -7,          /* falling friction needs a positive rolling speed */
+    RR_ERR_METHOD = -8,         /* unknown method or traction bound */
+    RR_ERR_PARAM = -9,          /* method parameter out of range (k0, alpha_inf, beta, kA, kS) */
+    RR_ERR_WORKSPACE = -10      /* caller-supplied buffer missing or too small */
+};
+
+#define RR_STATUS_MIN (-10)
+#define RR_STATUS_MAX 2
+
+/* Message of a status code; a fixed string, never NULL. */
+const char *rr_status_message(int status);
+
+#define RR_PI 3.14159265358979323846
+
+#endif

@@ -1,0 +1,26 @@
+/* rr_contact.c - validation shared by the creep-force methods. */
+#include <math.h>
+#include "rr_common.h"
+#include "rr_contact.h"
+
+int rr_contact_check(const rr_contact_case *c)
+{
+    if (!isfinite(c->a) || !isfinite(c->b) || !isfinite(c->N) || !isfinite(c->G)
+        || !isfinite(c->nu) || !isfinite(c->cx) || !isfinite(c->cy)
+        || !isfinite(c->cphi) || !isfinite(c->speed))
+        return RR_ERR_NONFINITE;
+    if (c->a <= 0.0 || c->b <= 0.0)
+        return RR_ERR_GEOMETRY;
+    if (c->N <= 0.0)
+        return RR_ERR_LOAD;
+    if (c->G <= 0.0 || c->nu < 0.0 || c->nu >= 0.5)
+        return RR_ERR_MATERIAL;
+    if (c->speed < 0.0)
+        return RR_ERR_SPEED;
+    return RR_OK;
+}
+
+void rr_forces_nan(rr_forces *f)
+{
+    f->fx = f->fy = f->mz = NAN;
+}

@@ -1,0 +1,190 @@
+/* rr_fastsim.c - FASTSIM (Kalker 1982) with blended and modified variants. */
+#include <math.h>
+#include "rr_common.h"
+#include "rr_kalker.h"
+#include "rr_fastsim.h"
+
+/* Newton iterations for the falling-friction bound; it converges in a few. */
+#define FALLING_MAX_ITER 50
+
+typedef struct {
+    double L1, L2, L3;   /* flexibilities [m/Pa] after blending and modification */
+} flex;
+
+static void flexibilities(const rr_contact_case *c, const rr_friction *fr, int method,
+                          const rr_creep_opts *o, const rr_kalker_coeffs *k, flex *fl)
+{
+    const double a = c->a, b = c->b, G = c->G;
+    fl->L1 = 8.0 * a / (3.0 * k->c11 * G);
+    fl->L2 = 8.0 * a / (3.0 * k->c22 * G);
+    fl->L3 = RR_PI * a * sqrt(a / b) / (4.0 * k->c23 * G);
+
+    if (method == RR_METHOD_FASTSIM_BLENDED) {
+        const double ab = a * b, cc = sqrt(ab), sat = fr->mu0 * c->N / G;
+        const double fx = c->cx * ab * k->c11 / sat;
+        const double fy = c->cy * ab * k->c22 / sat;
+        const double fp = c->cphi * ab * cc * k->c23 / sat;
+        double w = sqrt(fx * fx + fy * fy + fp * fp) / 3.0;
+        if (w > 1.0)
+            w = 1.0;
+        if (w > 0.0) {
+            const double pe = c->cphi * 3.0 * RR_PI * a / 32.0;
+            const double x2 = c->cx * c->cx, y2 = c->cy * c->cy, p2 = pe * pe;
+            const double L = (x2 + y2 + p2) / (x2 / fl->L1 + y2 / fl->L2 + p2 / fl->L3);
+            fl->L1 += w * (L - fl->L1);
+            fl->L2 += w * (L - fl->L2);
+            fl->L3 += w * (L - fl->L3);
+        }
+    } else if (method == RR_METHOD_MODIFIED_FASTSIM) {
+        double nphi = c->cy + c->cphi * a, mu, eps, kf;
+        if (fabs(nphi) < fabs(c->cy))
+            nphi = c->cy;
+        mu = rr_friction_mu(fr, c->speed * hypot(c->cx, c->cy));
+        eps = RR_PI * G * a * b * o->k0 * k->c11 * hypot(c->cx, nphi) / (4.0 * mu * c->N);
+        kf = o->k0 * (o->alpha_inf + (1.0 - o->alpha_inf) / (1.0 + o->beta * eps));
+        fl->L1 /= kf;
+        fl->L2 /= kf;
+        fl->L3 /= kf;
+    }
+}
+
+/* Pressure profile along a strip at t = x/a_j, up to the strip factor. */
+static double profile(int bound, double t)
+{
+    double q = 1.0 - t * t;
+    return bound == RR_BOUND_PARABOLIC ? q : sqrt(q);
+}
+
+/* Falling friction: the slip speed v = speed * s in a slipping element solves
+ *   s = (Leff/step) (m - mu(speed s) pn),  m = |p*|.
+ * The residual is convex and increasing past its root; Newton's method from
+ * the kinetic bound (mu = A mu0) approaches the root from above. */
+static double falling_bound(const rr_friction *fr, double speed, double pn, double m,
+                            double leff_step, int *converged)
+{
+    double s = leff_step * (m - fr->A * fr->mu0 * pn);
+    int it;
+
+    for (it = 0; it < FALLING_MAX_ITER; it++) {
+        const double v = speed * s;
+        const double f = s - leff_step * (m - rr_friction_mu(fr, v) * pn);
+        const double df = 1.0 + leff_step * pn * speed * rr_friction_dmu(fr, v);
+        double ds = df > 0.0 ? f / df : 0.0;
+        if (ds > s)
+            ds = 0.5 * s;     /* never step below zero slip */
+        s -= ds;
+        /* f carries rounding noise of about eps * leff_step * m */
+        if (fabs(ds) <= 1e-13 * s || fabs(f) <= 8e-16 * leff_step * m)
+            return rr_friction_mu(fr, speed * s) * pn;
+    }
+    *converged = 0;
+    return rr_friction_mu(fr, speed * s) * pn;
+}
+
+int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_opts *o,
+               rr_forces *out, rr_fastsim_field *field)
+{
+    rr_kalker_coeffs k;
+    flex fl;
+    const int nx = o->nx, ny = o->ny;
+    double dy, qsum = 0.0, S = 0.0, scale, fx = 0.0, fy = 0.0, mz = 0.0, mu_bound;
+    int st, i, j, falling, local, converged = 1, nslip = 0;
+
+    st = rr_creep_opts_check(o);
+    if (st == RR_OK && o->method != RR_METHOD_FASTSIM && o->method != RR_METHOD_FASTSIM_BLENDED
+        && o->method != RR_METHOD_MODIFIED_FASTSIM)
+        st = RR_ERR_METHOD;
+    if (st == RR_OK)
+        st = rr_contact_check(c);
+    if (st == RR_OK)
+        st = rr_friction_check(fr);
+    falling = st == RR_OK && rr_friction_is_falling(fr);
+    if (falling && !(c->speed > 0.0))
+        st = RR_ERR_SPEED;
+    if (st == RR_OK)
+        st = rr_kalker(c->a / c->b, c->nu, &k);
+    if (st < 0) {
+        rr_forces_nan(out);
+        return st;
+    }
+    flexibilities(c, fr, o->method, o, &k, &fl);
+    /* local: mu from each element's own slip speed; rigid: one mu at the
+     * rigid slip speed |(cx, cy)| speed for the whole patch. */
+    local = falling && o->slip_speed == RR_SLIP_LOCAL;
+    mu_bound = falling && !local ? rr_friction_mu(fr, c->speed * hypot(c->cx, c->cy)) : fr->mu0;
+
+    /* Scale the pressure so that it sums to N over the element centres:
+     * p(i, j) = scale * strip(y_j) * profile(t_i), with the same t_i on
+     * every strip, so the sum factorises. */
+    dy = 2.0 * c->b / ny;
+    for (i = 0; i < nx; i++)
+        qsum += profile(o->bound, 1.0 - (2.0 * i + 1.0) / nx);
+    for (j = 0; j < ny; j++) {
+        const double yh = -1.0 + (2.0 * j + 1.0) / ny, w2 = 1.0 - yh * yh;
+        const double strip = o->bound == RR_BOUND_PARABOLIC ? w2 : sqrt(w2);
+        S += strip * sqrt(w2);     /* times 2a/nx dy qsum, applied below */
+    }
+    scale = c->N / (S * qsum * 2.0 * c->a / nx * dy);
+
+    for (j = 0; j < ny; j++) {
+        const double yh = -1.0 + (2.0 * j + 1.0) / ny, w2 = 1.0 - yh * yh;
+        const double y = yh * c->b, aj = c->a * sqrt(w2), h = 2.0 * aj / nx;
+        const double pstrip = scale * (o->bound == RR_BOUND_PARABOLIC ? w2 : sqrt(w2));
+        /* rigid slip per unit length divided by the flexibility */
+        const double gx = c->cx / fl.L1 - c->cphi * y / fl.L3;
+        const double gy = c->cy / fl.L2, gphi = c->cphi / fl.L3;
+        /* Kalker's discretisation: every element adds the slip of a full
+         * element length to its upstream neighbour's traction, the first one
+         * from zero traction half an element ahead of the leading edge. */
+        double px = 0.0, py = 0.0, xprev = aj + 0.5 * h, sx = 0.0, sy = 0.0, sm = 0.0;
+
+        for (i = 0; i < nx; i++) {
+            const double x = aj - (i + 0.5) * h;
+            const double pn = pstrip * profile(o->bound, x / aj);
+            const double tx = px - gx * h;
+            const double ty = py - (gy + gphi * 0.5 * (xprev + x)) * h;
+            const double m2 = tx * tx + ty * ty;
+            double g = mu_bound * pn;
+            int slip = m2 > g * g;
+
+            if (slip) {
+                const double m = sqrt(m2);
+                if (local) {
+                    const double lx = fl.L1 * tx, ly = fl.L2 * ty;
+                    g = falling_bound(fr, c->speed, pn, m, sqrt(lx * lx + ly * ly) / (m * h),
+                                      &converged);
+                }
+                px = tx * (g / m);
+                py = ty * (g / m);
+                nslip++;
+            } else {
+                px = tx;
+                py = ty;
+            }
+            sx += px;
+            sy += py;
+            sm += x * py - y * px;
+            xprev = x;
+            if (field) {
+                const int idx = j * nx + (nx - 1 - i);
+                if (field->x) field->x[idx] = x;
+                if (field->y) field->y[idx] = y;
+                if (field->pn) field->pn[idx] = pn;
+                if (field->px) field->px[idx] = px;
+                if (field->py) field->py[idx] = py;
+                if (field->slip) field->slip[idx] = (signed char)slip;
+            }
+        }
+        fx += sx * h;
+        fy += sy * h;
+        mz += sm * h;
+    }
+    out->fx = fx * dy;
+    out->fy = fy * dy;
+    out->mz = mz * dy;
+    if (field)
+        field->nslip = nslip;
+    if (!converged && st == RR_OK)
+        st = RR_WARN_NOT_CONVERGED;
+    return st;
+}

@@ -1,0 +1,81 @@
+/*
+ * rr_fastsim.h - Kalker's FASTSIM and its variants.
+ *
+ * References:
+ *   J. J. Kalker, "A fast algorithm for the simplified theory of rolling
+ *   contact", Vehicle System Dynamics 11 (1982) 1-13 (three flexibilities,
+ *   parabolic traction bound, strip-wise march from the leading edge);
+ *   E. Vollebregt, P. Voltr, "Improved accuracy for FASTSIM using one or
+ *   three flexibility values", Vehicle System Dynamics 61 (2023) 309
+ *   (blending from three flexibilities to one as the creepage grows);
+ *   M. Spiryagin, O. Polach, C. Cole, "Creep force modelling for rail
+ *   traction vehicles based on the Fastsim algorithm", Vehicle System
+ *   Dynamics 51 (2013) 1765-1783 (modified FASTSIM).
+ *
+ * Discretisation (Kalker 1982): ny strips of equal width 2b/ny; strip j at
+ * y_j = -b + (j + 1/2) 2b/ny spans |x| <= a_j = a sqrt(1 - y_j^2/b^2) and is
+ * cut into nx equal elements of length h_j, pressure and traction at their
+ * centres.  The march goes from the leading edge x = +a_j: each element
+ * adds the rigid slip over one element length to its upstream neighbour's
+ * traction (the first one to zero traction), the spin's x-dependent slip
+ * integrated exactly over that length.  This is Kalker's explicit scheme:
+ * its initial slope exceeds the linear theory's by about 1/nx (first order
+ * in the grid), as does CONTACT's FASTSIM.  The pressure at the element
+ * centres is scaled so that it sums to N on the grid: full sliding then
+ * gives exactly |F| = mu N.
+ *
+ * Falling friction, o->slip_speed == RR_SLIP_LOCAL: in a slipping element
+ * the slip displacement is L (p - p*), p* the adhesion trial traction, so
+ * the slip speed is speed * L_eff (|p*| - g) / h; g = mu(slip speed) p is
+ * solved by Newton's method from the kinetic bound (the residual is convex,
+ * so the iteration converges monotonically to its unique root).
+ * RR_SLIP_RIGID: one mu at the rigid slip speed |(cx, cy)| speed.
+ */
+#ifndef RR_FASTSIM_H
+#define RR_FASTSIM_H
+
+#include "rr_creep.h"
+
+/*
+ * Optional traction field of one FASTSIM evaluation: every pointer either
+ * NULL (not wanted) or an array of nx * ny elements.  Element (i, j) is
+ * stored at j * nx + i, strips j along y, i along increasing x.
+ */
+typedef struct {
+    double *x, *y;        /* element centre [m] */
+    double *pn;           /* pressure [Pa] */
+    double *px, *py;      /* tangential traction on the wheel [Pa] */
+    signed char *slip;    /* 1 slip, 0 adhesion */
+    int nslip;            /* output: number of slipping elements */
+} rr_fastsim_field;
+
+/*
+ * rr_fastsim - creep forces by FASTSIM.
+ *   given:   c   the contact case; fr the friction law; o the options with
+ *                o->method one of RR_METHOD_FASTSIM, RR_METHOD_FASTSIM_BLENDED,
+ *                RR_METHOD_MODIFIED_FASTSIM
+ *            field  NULL, or buffers for the traction field
+ *   returns: *out (and *field)
+ *   status:  0 OK; RR_WARN_NOT_CONVERGED (falling-friction iteration hit
+ *            its cap in some element; results usable); errors as
+ *            rr_contact_check, rr_friction_check, rr_creep_opts_check,
+ *            RR_ERR_METHOD (not a FASTSIM method), RR_ERR_SPEED (falling
+ *            friction with speed 0).
+ *   Flexibilities (Kalker 1982): L1 = 8a/(3 C11 G), L2 = 8a/(3 C22 G),
+ *   L3 = pi a sqrt(a/b)/(4 C23 G).
+ *   Blended: with characteristic creepages ch_i = mu0 N / (G c^2 C11),
+ *   mu0 N / (G c^2 C22), mu0 N / (G c^3 C23) and
+ *   f = |(cx/ch_x, cy/ch_y, cphi/ch_phi)|, the weight w = min(1, f/3) blends
+ *   each L_i toward the single flexibility
+ *   L = (cx^2 + cy^2 + pe^2)/(cx^2/L1 + cy^2/L2 + pe^2/L3), pe = 3 pi a cphi/32
+ *   (CONTACT's simpflex; we normalise each creepage by its own
+ *   characteristic value so that the weight does not depend on the unit of
+ *   length).
+ *   Modified: all L_i divided by k = k0 (alpha_inf + (1-alpha_inf)/(1 + beta eps)),
+ *   eps = pi G a b k0 C11 |(cx, cy + a cphi)| / (4 mu N) with mu at the
+ *   rigid slip speed (CONTACT's fastsim_params).
+ */
+int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_opts *o,
+               rr_forces *out, rr_fastsim_field *field);
+
+#endif

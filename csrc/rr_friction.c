@@ -1,0 +1,28 @@
+/* rr_friction.c - Coulomb and Polach (2005) falling friction. */
+#include <math.h>
+#include "rr_common.h"
+#include "rr_friction.h"
+
+int rr_friction_check(const rr_friction *f)
+{
+    if (!isfinite(f->mu0) || !isfinite(f->A) || !isfinite(f->B))
+        return RR_ERR_NONFINITE;
+    if (f->mu0 <= 0.0 || f->A < 0.0 || f->A > 1.0 || f->B < 0.0)
+        return RR_ERR_FRICTION;
+    return RR_OK;
+}
+
+int rr_friction_is_falling(const rr_friction *f)
+{
+    return f->A < 1.0 && f->B > 0.0;
+}
+
+double rr_friction_mu(const rr_friction *f, double w)
+{
+    return f->mu0 * ((1.0 - f->A) * exp(-f->B * w) + f->A);
+}
+
+double rr_friction_dmu(const rr_friction *f, double w)
+{
+    return -f->mu0 * (1.0 - f->A) * f->B * exp(-f->B * w);
+}

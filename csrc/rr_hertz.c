@@ -1,0 +1,101 @@
+/* rr_hertz.c - Hertzian contact ellipse (Johnson 1985, section 4.2). */
+#include <math.h>
+#include "rr_common.h"
+#include "rr_elliptic.h"
+#include "rr_hertz.h"
+
+double rr_estar(double E1, double nu1, double E2, double nu2)
+{
+    if (!isfinite(E1) || !isfinite(E2) || !isfinite(nu1) || !isfinite(nu2)
+        || E1 <= 0.0 || E2 <= 0.0 || nu1 < 0.0 || nu1 >= 0.5 || nu2 < 0.0
+        || nu2 >= 0.5)
+        return NAN;
+    return 1.0 / ((1.0 - nu1 * nu1) / E1 + (1.0 - nu2 * nu2) / E2);
+}
+
+/* ln of the curvature ratio max/min produced by ellipticity k = exp(t):
+ * (E/k^2 - K)/(K - E) = (3 R_F / R_D - 1) / k^2 with R_* = R_*(0, k^2, 1). */
+static double log_ratio(double t, double *rf, double *rd)
+{
+    double k2 = exp(2.0 * t);
+    rr_carlson_rf_rd(0.0, k2, 1.0, rf, rd);
+    return log(3.0 * *rf / *rd - 1.0) - 2.0 * t;
+}
+
+static void set_nan(rr_hertz_result *out)
+{
+    out->a = out->b = out->p0 = out->delta = NAN;
+}
+
+int rr_hertz(double A, double B, double N, double estar, rr_hertz_result *out)
+{
+    double amin, rho, lrho, rf, rd, t, major, minor, k;
+
+    if (!isfinite(A) || !isfinite(B) || !isfinite(N)) {
+        set_nan(out);
+        return RR_ERR_NONFINITE;
+    }
+    if (A <= 0.0 || B <= 0.0) {
+        set_nan(out);
+        return RR_ERR_GEOMETRY;
+    }
+    if (N <= 0.0) {
+        set_nan(out);
+        return RR_ERR_LOAD;
+    }
+    if (!(estar > 0.0) || !isfinite(estar)) {
+        set_nan(out);
+        return RR_ERR_MATERIAL;
+    }
+    amin = A < B ? A : B;
+    rho = (A < B ? B : A) / amin;
+    lrho = log(rho);
+
+    if (lrho < 1e-15) {
+        t = 0.0;                          /* circular contact */
+        rf = 0.5 * RR_PI;
+        rd = 0.75 * RR_PI;
+    } else {
+        /* f(t) = log_ratio(t) - ln(rho) falls monotonically in t = ln k,
+         * from +inf as t -> -inf to -ln(rho) at t = 0.  Greenwood's
+         * k ~ rho^(-2/3) starts a secant whose slope is about -3/2
+         * everywhere; the bracket [t_lo, t_hi] catches a wild step. */
+        double t_lo = -300.0, t_hi = 0.0, t0, f0, t1, f1;
+        int it;
+
+        t0 = -2.0 / 3.0 * lrho;
+        f0 = log_ratio(t0, &rf, &rd) - lrho;
+        t1 = t0 + f0 / 1.5;
+        for (it = 0; it < 200; it++) {
+            double tn;
+            if (!(t1 > t_lo && t1 < t_hi))
+                t1 = 0.5 * (t_lo + t_hi);
+            f1 = log_ratio(t1, &rf, &rd) - lrho;
+            if (f1 > 0.0)
+                t_lo = t1;
+            else
+                t_hi = t1;
+            if (fabs(f1) < 2e-16 * (1.0 + lrho) || fabs(t1 - t0) < 1e-15 * fabs(t1))
+                break;
+            tn = (f1 != f0) ? t1 - f1 * (t1 - t0) / (f1 - f0) : 0.5 * (t_lo + t_hi);
+            t0 = t1;
+            f0 = f1;
+            t1 = tn;
+        }
+        t = t1;
+    }
+    k = exp(t);
+    /* major^3 = 3N (K - E) / (2 pi E* e^2 A_min), K - E = (e^2/3) R_D */
+    major = cbrt(N * rd / (2.0 * RR_PI * estar * amin));
+    minor = k * major;
+    if (A <= B) {
+        out->a = major;
+        out->b = minor;
+    } else {
+        out->a = minor;
+        out->b = major;
+    }
+    out->p0 = 1.5 * N / (RR_PI * out->a * out->b);
+    out->delta = out->p0 * minor * rf / estar;   /* Johnson eq. (4.41), K = R_F */
+    return RR_OK;
+}

@@ -1,0 +1,25 @@
+/* rr_status.c - the one place where status messages live. */
+#include "rr_common.h"
+
+static const char *const rr_messages[] = {
+    /* -10 */ "caller-supplied buffer missing or too small",
+    /*  -9 */ "method parameter out of range (k0, alpha_inf, beta, kA, kS)",
+    /*  -8 */ "unknown method or traction bound",
+    /*  -7 */ "falling friction needs a positive rolling speed",
+    /*  -6 */ "grid size out of range",
+    /*  -5 */ "friction coefficient not positive or falling-law A, B invalid",
+    /*  -4 */ "modulus not positive or Poisson ratio outside [0, 0.5)",
+    /*  -3 */ "curvature or semi-axis not positive",
+    /*  -2 */ "normal load not positive",
+    /*  -1 */ "input is NaN or infinite",
+    /*   0 */ "ok",
+    /*   1 */ "Kalker coefficients extrapolated below g = 0.1 (asymptotic formulas)",
+    /*   2 */ "inner iteration did not converge"
+};
+
+const char *rr_status_message(int status)
+{
+    if (status < RR_STATUS_MIN || status > RR_STATUS_MAX)
+        return "unknown status";
+    return rr_messages[status - RR_STATUS_MIN];
+}
