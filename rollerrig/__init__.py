@@ -1,4 +1,23 @@
-"""rollerrig: real-time simulation of a scaled railway roller rig."""
-from ._version import __version__
+"""rollerrig: real-time simulation of a scaled railway roller rig.
 
-__all__ = ["__version__"]
+The contact core (C99, vectorised, GIL released):
+
+    import rollerrig as rr
+    h = rr.hertz(A, B, N)                      # h.a, h.b [m], h.p0 [Pa], h.delta [m]
+    k = rr.kalker_coefficients(a_over_b, nu)   # k.c11, k.c22, k.c23
+    f = rr.creep_forces(cx, cy, cphi, a=..., b=..., N=..., mu=..., method="fastsim")
+    t = rr.fastsim_field(cx, cy, cphi, a=..., b=..., N=..., mu=...)
+
+See rollerrig.contact for the conventions.
+"""
+from ._version import __version__
+from ._errors import RollerRigError, RollerRigWarning, status_message
+from .contact import (BOUNDS, METHODS, CreepForces, FallingFriction, HertzContact,
+                      KalkerCoefficients, TractionField, creep_forces, fastsim_field, hertz,
+                      kalker_coefficients)
+
+__all__ = [
+    "__version__", "RollerRigError", "RollerRigWarning", "status_message", "METHODS",
+    "BOUNDS", "FallingFriction", "HertzContact", "KalkerCoefficients", "CreepForces",
+    "TractionField", "hertz", "kalker_coefficients", "creep_forces", "fastsim_field",
+]

@@ -1,0 +1,27 @@
+/*
+ * rollerrig.h - umbrella header of the rollerrig C core.
+ *
+ * The core is plain C99 with no Python, no globals that change and no
+ * allocation: callers own every buffer.  Modules, bottom up:
+ *   rr_common.h    status codes and their messages
+ *   rr_elliptic.h  Carlson's R_F, R_D; complete elliptic integrals K, E
+ *   rr_hertz.h     Hertzian contact ellipse
+ *   rr_kalker.h    Kalker's creep coefficients C11, C22, C23
+ *   rr_friction.h  Coulomb and Polach's falling friction
+ *   rr_contact.h   the contact case and the forces every method returns
+ *   rr_creep.h     method options, linear theory, Polach, dispatcher
+ *   rr_fastsim.h   FASTSIM, blended and modified, with its traction field
+ */
+#ifndef ROLLERRIG_H
+#define ROLLERRIG_H
+
+#include "rr_common.h"
+#include "rr_elliptic.h"
+#include "rr_hertz.h"
+#include "rr_kalker.h"
+#include "rr_friction.h"
+#include "rr_contact.h"
+#include "rr_creep.h"
+#include "rr_fastsim.h"
+
+#endif

@@ -1,0 +1,436 @@
+/*
+ * _core.c - the CPython binding of the rollerrig C core.
+ *
+ * Thin by design: no physics here.  Every batch call takes 1-D float64
+ * arrays, each of length n or 1 (a length-1 array is broadcast; any stride
+ * is accepted), allocates the outputs, releases the GIL around chunks of
+ * the C loop, checks for Ctrl-C between chunks, and returns the outputs
+ * with an int8 status array (0 OK, > 0 warning, < 0 error with NaN
+ * results).  Broadcasting of general shapes, argument names in messages
+ * and the conversion of statuses into exceptions live in rollerrig/.
+ */
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+#include <numpy/arrayobject.h>
+
+#include "rollerrig.h"
+
+/* Work per GIL release: about this many FASTSIM elements, or cases for the
+ * cheap methods, so that Ctrl-C is noticed within milliseconds. */
+#define CHUNK_WORK 65536
+
+typedef struct {
+    const char *data;
+    npy_intp stride;   /* bytes; 0 for a broadcast length-1 array */
+} input;
+
+#define IN(arg, i) (*(const double *)((arg).data + (i) * (arg).stride))
+
+/* Check one input (1-D float64 array) and fold its length into *n:
+ * *n < 0 means not yet known; length 1 broadcasts against anything. */
+static int get_input(PyObject *obj, const char *func, const char *name, npy_intp *n,
+                     input *out)
+{
+    PyArrayObject *arr;
+    npy_intp len;
+
+    if (!PyArray_Check(obj)) {
+        PyErr_Format(PyExc_TypeError, "%s: %s must be a numpy array, got %.100s", func, name,
+                     Py_TYPE(obj)->tp_name);
+        return -1;
+    }
+    arr = (PyArrayObject *)obj;
+    if (PyArray_TYPE(arr) != NPY_DOUBLE || PyArray_NDIM(arr) != 1) {
+        PyErr_Format(PyExc_ValueError, "%s: %s must be a 1-D float64 array, got %d-D %R",
+                     func, name, PyArray_NDIM(arr), (PyObject *)PyArray_DESCR(arr));
+        return -1;
+    }
+    len = PyArray_DIM(arr, 0);
+    if (len != 1) {
+        if (*n >= 0 && *n != 1 && *n != len) {
+            PyErr_Format(PyExc_ValueError, "%s: %s has length %zd, expected %zd or 1", func,
+                         name, (Py_ssize_t)len, (Py_ssize_t)*n);
+            return -1;
+        }
+        *n = len;
+    } else if (*n < 0) {
+        *n = 1;
+    }
+    out->data = PyArray_BYTES(arr);
+    out->stride = len == 1 ? 0 : PyArray_STRIDE(arr, 0);
+    return 0;
+}
+
+/* Recheck that every input matches the final length (an early length-1
+ * input may precede the first long one). */
+static int check_lengths(const char *func, PyObject *const *objs, const char *const *names,
+                         int count, npy_intp n)
+{
+    int k;
+    for (k = 0; k < count; k++) {
+        npy_intp len = PyArray_DIM((PyArrayObject *)objs[k], 0);
+        if (len != 1 && len != n) {
+            PyErr_Format(PyExc_ValueError, "%s: %s has length %zd, expected %zd or 1", func,
+                         names[k], (Py_ssize_t)len, (Py_ssize_t)n);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+static int parse_inputs(const char *func, PyObject *const *objs, const char *const *names,
+                        int count, npy_intp *n, input *in)
+{
+    int k;
+    *n = -1;
+    for (k = 0; k < count; k++)
+        if (get_input(objs[k], func, names[k], n, &in[k]) < 0)
+            return -1;
+    if (*n < 0)
+        *n = 0;
+    return check_lengths(func, objs, names, count, *n);
+}
+
+/* New 1-D output arrays; returns 0 or -1 with an exception set. */
+static int new_outputs(npy_intp n, int ndouble, PyObject **dbl, PyObject **status)
+{
+    int k;
+    for (k = 0; k < ndouble; k++) {
+        dbl[k] = PyArray_SimpleNew(1, &n, NPY_DOUBLE);
+        if (!dbl[k])
+            return -1;
+    }
+    *status = PyArray_SimpleNew(1, &n, NPY_INT8);
+    return *status ? 0 : -1;
+}
+
+#define OUT(obj) ((double *)PyArray_DATA((PyArrayObject *)(obj)))
+#define OUT8(obj) ((npy_int8 *)PyArray_DATA((PyArrayObject *)(obj)))
+
+/* ---------------------------------------------------------------- hertz */
+
+static PyObject *py_hertz(PyObject *self, PyObject *args)
+{
+    static const char *const names[] = {"A", "B", "N", "E1", "nu1", "E2", "nu2"};
+    PyObject *objs[7], *out[4] = {NULL, NULL, NULL, NULL}, *status = NULL, *res = NULL;
+    input in[7];
+    npy_intp n, start, i;
+    (void)self;
+
+    if (!PyArg_ParseTuple(args, "OOOOOOO:hertz", &objs[0], &objs[1], &objs[2], &objs[3],
+                          &objs[4], &objs[5], &objs[6]))
+        return NULL;
+    if (parse_inputs("hertz", objs, names, 7, &n, in) < 0 || new_outputs(n, 4, out, &status) < 0)
+        goto fail;
+    for (start = 0; start < n; start += CHUNK_WORK) {
+        npy_intp stop = start + CHUNK_WORK < n ? start + CHUNK_WORK : n;
+        double *a = OUT(out[0]), *b = OUT(out[1]), *p0 = OUT(out[2]), *delta = OUT(out[3]);
+        npy_int8 *st = OUT8(status);
+        Py_BEGIN_ALLOW_THREADS
+        for (i = start; i < stop; i++) {
+            rr_hertz_result h;
+            double estar = rr_estar(IN(in[3], i), IN(in[4], i), IN(in[5], i), IN(in[6], i));
+            int s;
+            if (estar != estar) {
+                h.a = h.b = h.p0 = h.delta = estar;
+                s = RR_ERR_MATERIAL;
+            } else {
+                s = rr_hertz(IN(in[0], i), IN(in[1], i), IN(in[2], i), estar, &h);
+            }
+            a[i] = h.a;
+            b[i] = h.b;
+            p0[i] = h.p0;
+            delta[i] = h.delta;
+            st[i] = (npy_int8)s;
+        }
+        Py_END_ALLOW_THREADS
+        if (PyErr_CheckSignals() < 0)
+            goto fail;
+    }
+    res = Py_BuildValue("(NNNNN)", out[0], out[1], out[2], out[3], status);
+    return res;
+fail:
+    Py_XDECREF(out[0]);
+    Py_XDECREF(out[1]);
+    Py_XDECREF(out[2]);
+    Py_XDECREF(out[3]);
+    Py_XDECREF(status);
+    return NULL;
+}
+
+/* --------------------------------------------------------------- kalker */
+
+static PyObject *py_kalker(PyObject *self, PyObject *args)
+{
+    static const char *const names[] = {"a_over_b", "nu"};
+    PyObject *objs[2], *out[3] = {NULL, NULL, NULL}, *status = NULL;
+    input in[2];
+    npy_intp n, start, i;
+    (void)self;
+
+    if (!PyArg_ParseTuple(args, "OO:kalker_coefficients", &objs[0], &objs[1]))
+        return NULL;
+    if (parse_inputs("kalker_coefficients", objs, names, 2, &n, in) < 0
+        || new_outputs(n, 3, out, &status) < 0)
+        goto fail;
+    for (start = 0; start < n; start += CHUNK_WORK) {
+        npy_intp stop = start + CHUNK_WORK < n ? start + CHUNK_WORK : n;
+        double *c11 = OUT(out[0]), *c22 = OUT(out[1]), *c23 = OUT(out[2]);
+        npy_int8 *st = OUT8(status);
+        Py_BEGIN_ALLOW_THREADS
+        for (i = start; i < stop; i++) {
+            rr_kalker_coeffs k;
+            st[i] = (npy_int8)rr_kalker(IN(in[0], i), IN(in[1], i), &k);
+            c11[i] = k.c11;
+            c22[i] = k.c22;
+            c23[i] = k.c23;
+        }
+        Py_END_ALLOW_THREADS
+        if (PyErr_CheckSignals() < 0)
+            goto fail;
+    }
+    return Py_BuildValue("(NNNN)", out[0], out[1], out[2], status);
+fail:
+    Py_XDECREF(out[0]);
+    Py_XDECREF(out[1]);
+    Py_XDECREF(out[2]);
+    Py_XDECREF(status);
+    return NULL;
+}
+
+/* --------------------------------------------------------- creep forces */
+
+#define NCASE 12
+static const char *const case_names[NCASE] = {"cx", "cy", "cphi", "a", "b", "N",
+                                              "mu", "G", "nu", "speed", "A", "B"};
+
+static void load_case(const input *in, npy_intp i, rr_contact_case *c, rr_friction *fr)
+{
+    c->cx = IN(in[0], i);
+    c->cy = IN(in[1], i);
+    c->cphi = IN(in[2], i);
+    c->a = IN(in[3], i);
+    c->b = IN(in[4], i);
+    c->N = IN(in[5], i);
+    fr->mu0 = IN(in[6], i);
+    c->G = IN(in[7], i);
+    c->nu = IN(in[8], i);
+    c->speed = IN(in[9], i);
+    fr->A = IN(in[10], i);
+    fr->B = IN(in[11], i);
+}
+
+/* Options come as keywords; unknown values are caught by rr_creep_opts_check. */
+static int parse_opts(PyObject *kwargs, const char *func, rr_creep_opts *o)
+{
+    static const char *const keys[] = {"method", "nx", "ny", "bound", "slip_speed",
+                                       "k0", "alpha_inf", "beta", "kA", "kS"};
+    PyObject *v;
+    int method = 0, k, st;
+
+    if (kwargs && (v = PyDict_GetItemString(kwargs, "method")) != NULL) {
+        method = (int)PyLong_AsLong(v);
+        if (PyErr_Occurred())
+            return -1;
+    }
+    rr_creep_opts_default(method, o);
+    for (k = 1; k < 10 && kwargs; k++) {
+        v = PyDict_GetItemString(kwargs, keys[k]);
+        if (!v)
+            continue;
+        if (k <= 4) {
+            long x = PyLong_AsLong(v);
+            if (PyErr_Occurred())
+                return -1;
+            if (x < -1000000 || x > 1000000)
+                x = -1;     /* out of every valid range: rejected below */
+            if (k == 1) o->nx = (int)x;
+            else if (k == 2) o->ny = (int)x;
+            else if (k == 3) o->bound = (int)x;
+            else o->slip_speed = (int)x;
+        } else {
+            double x = PyFloat_AsDouble(v);
+            if (PyErr_Occurred())
+                return -1;
+            if (k == 5) o->k0 = x;
+            else if (k == 6) o->alpha_inf = x;
+            else if (k == 7) o->beta = x;
+            else if (k == 8) o->kA = x;
+            else o->kS = x;
+        }
+    }
+    st = rr_creep_opts_check(o);
+    if (st < 0) {
+        PyErr_Format(PyExc_ValueError, "%s: invalid options: %s", func, rr_status_message(st));
+        return -1;
+    }
+    return 0;
+}
+
+static PyObject *py_creep_forces(PyObject *self, PyObject *args, PyObject *kwargs)
+{
+    PyObject *objs[NCASE], *out[3] = {NULL, NULL, NULL}, *status = NULL;
+    input in[NCASE];
+    rr_creep_opts o;
+    npy_intp n, start, i, chunk;
+    int k;
+    (void)self;
+
+    if (PyTuple_GET_SIZE(args) != NCASE) {
+        PyErr_Format(PyExc_TypeError, "creep_forces: expected %d arrays (%s, ...)", NCASE,
+                     case_names[0]);
+        return NULL;
+    }
+    for (k = 0; k < NCASE; k++)
+        objs[k] = PyTuple_GET_ITEM(args, k);
+    if (parse_opts(kwargs, "creep_forces", &o) < 0)
+        return NULL;
+    if (parse_inputs("creep_forces", objs, case_names, NCASE, &n, in) < 0
+        || new_outputs(n, 3, out, &status) < 0)
+        goto fail;
+    chunk = o.method == RR_METHOD_LINEAR || o.method == RR_METHOD_POLACH
+                ? CHUNK_WORK
+                : CHUNK_WORK / ((npy_intp)o.nx * o.ny) + 1;
+    for (start = 0; start < n; start += chunk) {
+        npy_intp stop = start + chunk < n ? start + chunk : n;
+        double *fx = OUT(out[0]), *fy = OUT(out[1]), *mz = OUT(out[2]);
+        npy_int8 *st = OUT8(status);
+        Py_BEGIN_ALLOW_THREADS
+        for (i = start; i < stop; i++) {
+            rr_contact_case c;
+            rr_friction fr;
+            rr_forces f;
+            load_case(in, i, &c, &fr);
+            st[i] = (npy_int8)rr_creep_forces(&c, &fr, &o, &f);
+            fx[i] = f.fx;
+            fy[i] = f.fy;
+            mz[i] = f.mz;
+        }
+        Py_END_ALLOW_THREADS
+        if (PyErr_CheckSignals() < 0)
+            goto fail;
+    }
+    return Py_BuildValue("(NNNN)", out[0], out[1], out[2], status);
+fail:
+    Py_XDECREF(out[0]);
+    Py_XDECREF(out[1]);
+    Py_XDECREF(out[2]);
+    Py_XDECREF(status);
+    return NULL;
+}
+
+/* One FASTSIM case with its traction field, arrays of shape (ny, nx). */
+static PyObject *py_fastsim_field(PyObject *self, PyObject *args, PyObject *kwargs)
+{
+    PyObject *objs[NCASE], *arr[6] = {NULL, NULL, NULL, NULL, NULL, NULL};
+    input in[NCASE];
+    rr_creep_opts o;
+    rr_contact_case c;
+    rr_friction fr;
+    rr_forces f;
+    rr_fastsim_field field;
+    npy_intp n, dims[2];
+    int k, st;
+    (void)self;
+
+    if (PyTuple_GET_SIZE(args) != NCASE) {
+        PyErr_Format(PyExc_TypeError, "fastsim_field: expected %d arrays", NCASE);
+        return NULL;
+    }
+    for (k = 0; k < NCASE; k++)
+        objs[k] = PyTuple_GET_ITEM(args, k);
+    if (parse_opts(kwargs, "fastsim_field", &o) < 0)
+        return NULL;
+    if (o.method != RR_METHOD_FASTSIM && o.method != RR_METHOD_FASTSIM_BLENDED
+        && o.method != RR_METHOD_MODIFIED_FASTSIM) {
+        PyErr_SetString(PyExc_ValueError, "fastsim_field: method must be a FASTSIM variant");
+        return NULL;
+    }
+    if (parse_inputs("fastsim_field", objs, case_names, NCASE, &n, in) < 0)
+        return NULL;
+    if (n != 1) {
+        PyErr_Format(PyExc_ValueError, "fastsim_field: one case expected, got %zd",
+                     (Py_ssize_t)n);
+        return NULL;
+    }
+    dims[0] = o.ny;
+    dims[1] = o.nx;
+    for (k = 0; k < 6; k++) {
+        arr[k] = PyArray_SimpleNew(2, dims, k < 5 ? NPY_DOUBLE : NPY_INT8);
+        if (!arr[k])
+            goto fail;
+    }
+    field.x = OUT(arr[0]);
+    field.y = OUT(arr[1]);
+    field.pn = OUT(arr[2]);
+    field.px = OUT(arr[3]);
+    field.py = OUT(arr[4]);
+    field.slip = (signed char *)PyArray_DATA((PyArrayObject *)arr[5]);
+    load_case(in, 0, &c, &fr);
+    Py_BEGIN_ALLOW_THREADS
+    st = rr_fastsim(&c, &fr, &o, &f, &field);
+    Py_END_ALLOW_THREADS
+    return Py_BuildValue("(dddiNNNNNN)", f.fx, f.fy, f.mz, st, arr[0], arr[1], arr[2], arr[3],
+                         arr[4], arr[5]);
+fail:
+    for (k = 0; k < 6; k++)
+        Py_XDECREF(arr[k]);
+    return NULL;
+}
+
+static PyObject *py_status_message(PyObject *self, PyObject *arg)
+{
+    long code = PyLong_AsLong(arg);
+    (void)self;
+    if (code == -1 && PyErr_Occurred())
+        return NULL;
+    if (code < INT_MIN || code > INT_MAX)
+        code = INT_MIN;
+    return PyUnicode_FromString(rr_status_message((int)code));
+}
+
+static PyMethodDef core_methods[] = {
+    {"hertz", py_hertz, METH_VARARGS,
+     "hertz(A, B, N, E1, nu1, E2, nu2) -> (a, b, p0, delta, status)"},
+    {"kalker", py_kalker, METH_VARARGS,
+     "kalker(a_over_b, nu) -> (c11, c22, c23, status)"},
+    {"creep_forces", (PyCFunction)(void (*)(void))py_creep_forces, METH_VARARGS | METH_KEYWORDS,
+     "creep_forces(cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B, *, method, nx, ny, bound,"
+     " slip_speed, k0, alpha_inf, beta, kA, kS) -> (fx, fy, mz, status)"},
+    {"fastsim_field", (PyCFunction)(void (*)(void))py_fastsim_field,
+     METH_VARARGS | METH_KEYWORDS,
+     "fastsim_field(<as creep_forces, one case>) -> (fx, fy, mz, status, x, y, pn, px, py, slip)"},
+    {"status_message", py_status_message, METH_O, "status_message(code) -> str"},
+    {NULL, NULL, 0, NULL}
+};
+
+static struct PyModuleDef core_module = {
+    PyModuleDef_HEAD_INIT, "rollerrig._core",
+    "Binding of the rollerrig C core; use the functions of the rollerrig package.", -1,
+    core_methods, NULL, NULL, NULL, NULL
+};
+
+PyMODINIT_FUNC PyInit__core(void)
+{
+    PyObject *m;
+    import_array();
+    m = PyModule_Create(&core_module);
+    if (!m)
+        return NULL;
+    if (PyModule_AddIntConstant(m, "METHOD_LINEAR", RR_METHOD_LINEAR) < 0
+        || PyModule_AddIntConstant(m, "METHOD_FASTSIM", RR_METHOD_FASTSIM) < 0
+        || PyModule_AddIntConstant(m, "METHOD_FASTSIM_BLENDED", RR_METHOD_FASTSIM_BLENDED) < 0
+        || PyModule_AddIntConstant(m, "METHOD_MODIFIED_FASTSIM", RR_METHOD_MODIFIED_FASTSIM) < 0
+        || PyModule_AddIntConstant(m, "METHOD_POLACH", RR_METHOD_POLACH) < 0
+        || PyModule_AddIntConstant(m, "BOUND_PARABOLIC", RR_BOUND_PARABOLIC) < 0
+        || PyModule_AddIntConstant(m, "BOUND_ELLIPTIC", RR_BOUND_ELLIPTIC) < 0
+        || PyModule_AddIntConstant(m, "SLIP_LOCAL", RR_SLIP_LOCAL) < 0
+        || PyModule_AddIntConstant(m, "SLIP_RIGID", RR_SLIP_RIGID) < 0
+        || PyModule_AddIntConstant(m, "FASTSIM_MAX_GRID", RR_FASTSIM_MAX_GRID) < 0
+        || PyModule_AddIntConstant(m, "STATUS_MIN", RR_STATUS_MIN) < 0
+        || PyModule_AddIntConstant(m, "STATUS_MAX", RR_STATUS_MAX) < 0) {
+        Py_DECREF(m);
+        return NULL;
+    }
+    return m;
+}
