@@ -12,6 +12,7 @@ void rr_creep_opts_default(int method, rr_creep_opts *o)
     o->nx = 30;
     o->ny = 30;
     o->bound = RR_BOUND_PARABOLIC;
+    o->grid = RR_GRID_RECT;
     o->slip_speed = method == RR_METHOD_MODIFIED_FASTSIM ? RR_SLIP_RIGID : RR_SLIP_LOCAL;
     o->k0 = 0.54;
     o->alpha_inf = 0.02;
@@ -32,6 +33,8 @@ int rr_creep_opts_check(const rr_creep_opts *o)
         return RR_ERR_METHOD;
     if (is_fastsim(o->method)) {
         if (o->bound != RR_BOUND_PARABOLIC && o->bound != RR_BOUND_ELLIPTIC)
+            return RR_ERR_METHOD;
+        if (o->grid != RR_GRID_RECT && o->grid != RR_GRID_STRIPS)
             return RR_ERR_METHOD;
         if (o->slip_speed != RR_SLIP_LOCAL && o->slip_speed != RR_SLIP_RIGID)
             return RR_ERR_METHOD;

@@ -27,6 +27,13 @@ enum rr_bound {
     RR_BOUND_ELLIPTIC = 1    /* Hertzian: p ~ sqrt(1 - x^2/a^2 - y^2/b^2) */
 };
 
+enum rr_grid {
+    RR_GRID_RECT = 0,    /* nx x ny elements on the ellipse's bounding box; those
+                            outside the ellipse are empty (CONTACT's grid) */
+    RR_GRID_STRIPS = 1   /* ny strips, each cut into nx elements along its own
+                            chord (Kalker's strips; converges faster) */
+};
+
 enum rr_slip_speed {
     RR_SLIP_LOCAL = 0,  /* falling friction at each element's own slip speed */
     RR_SLIP_RIGID = 1   /* one friction value at the rigid slip speed
@@ -40,6 +47,7 @@ typedef struct {
     int method;                   /* enum rr_method */
     int nx, ny;                   /* FASTSIM: elements per strip, number of strips */
     int bound;                    /* FASTSIM: enum rr_bound */
+    int grid;                     /* FASTSIM: enum rr_grid */
     int slip_speed;               /* FASTSIM with falling friction: enum rr_slip_speed */
     double k0, alpha_inf, beta;   /* modified FASTSIM: flexibility divided by
                                      k0 (alpha_inf + (1 - alpha_inf)/(1 + beta eps)) */
@@ -47,8 +55,8 @@ typedef struct {
 } rr_creep_opts;
 
 /*
- * rr_creep_opts_default - defaults for a method: a 30 x 30 grid with the
- * parabolic bound (Kalker's original); falling friction at the local slip
+ * rr_creep_opts_default - defaults for a method: a 30 x 30 rectangular grid
+ * with the parabolic bound (Kalker's original); falling friction at the local slip
  * speed, except for modified FASTSIM, whose slope reduction was calibrated
  * with friction at the rigid slip speed; modified FASTSIM's k0 = 0.54,
  * alpha_inf = 0.02, beta = 0.62 (the example of CONTACT's user guide and
@@ -57,7 +65,7 @@ typedef struct {
 void rr_creep_opts_default(int method, rr_creep_opts *o);
 
 /*
- * rr_creep_opts_check - 0, or RR_ERR_METHOD (method, bound or
+ * rr_creep_opts_check - 0, or RR_ERR_METHOD (method, bound, grid or
  * slip_speed unknown), RR_ERR_GRID (nx, ny outside [1, RR_FASTSIM_MAX_GRID]),
  * RR_ERR_NONFINITE,
  * RR_ERR_PARAM (k0 outside (0, 1], alpha_inf outside [0, 1], beta < 0,

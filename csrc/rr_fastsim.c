@@ -48,13 +48,6 @@ static void flexibilities(const rr_contact_case *c, const rr_friction *fr, int m
     }
 }
 
-/* Pressure profile along a strip at t = x/a_j, up to the strip factor. */
-static double profile(int bound, double t)
-{
-    double q = 1.0 - t * t;
-    return bound == RR_BOUND_PARABOLIC ? q : sqrt(q);
-}
-
 /* Falling friction: the slip speed v = speed * s in a slipping element solves
  *   s = (Leff/step) (m - mu(speed s) pn),  m = |p*|.
  * The residual is convex and increasing past its root; Newton's method from
@@ -87,7 +80,7 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
     rr_kalker_coeffs k;
     flex fl;
     const int nx = o->nx, ny = o->ny;
-    double dy, qsum = 0.0, S = 0.0, scale, fx = 0.0, fy = 0.0, mz = 0.0, mu_bound;
+    double dy, S = 0.0, scale, fx = 0.0, fy = 0.0, mz = 0.0, mu_bound;
     int st, i, j, falling, local, converged = 1, nslip = 0;
 
     st = rr_creep_opts_check(o);
@@ -113,58 +106,71 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
     local = falling && o->slip_speed == RR_SLIP_LOCAL;
     mu_bound = falling && !local ? rr_friction_mu(fr, c->speed * hypot(c->cx, c->cy)) : fr->mu0;
 
-    /* Scale the pressure so that it sums to N over the element centres:
-     * p(i, j) = scale * strip(y_j) * profile(t_i), with the same t_i on
-     * every strip, so the sum factorises. */
+    /* Rows j at y_j = -b + (j + 1/2) dy.  RR_GRID_RECT: every row spans the
+     * ellipse's bounding box |x| <= a and elements outside the ellipse carry
+     * nothing (CONTACT's potential contact area); RR_GRID_STRIPS: row j spans
+     * its own chord |x| <= a_j (Kalker's strips).  Either way the pressure
+     * at a centre is scale * q or scale * sqrt(q), q = 1 - x^2/a^2 - y^2/b^2,
+     * with scale such that the pressure sums to N over the grid. */
     dy = 2.0 * c->b / ny;
-    for (i = 0; i < nx; i++)
-        qsum += profile(o->bound, 1.0 - (2.0 * i + 1.0) / nx);
     for (j = 0; j < ny; j++) {
         const double yh = -1.0 + (2.0 * j + 1.0) / ny, w2 = 1.0 - yh * yh;
-        const double strip = o->bound == RR_BOUND_PARABOLIC ? w2 : sqrt(w2);
-        S += strip * sqrt(w2);     /* times 2a/nx dy qsum, applied below */
+        const double half = o->grid == RR_GRID_STRIPS ? sqrt(w2) : 1.0;   /* a_j / a */
+        double row = 0.0;
+        for (i = 0; i < nx; i++) {
+            const double t = half * (1.0 - (2.0 * i + 1.0) / nx), q = w2 - t * t;
+            if (q > 0.0)
+                row += o->bound == RR_BOUND_PARABOLIC ? q : sqrt(q);
+        }
+        S += row * half;
     }
-    scale = c->N / (S * qsum * 2.0 * c->a / nx * dy);
+    scale = c->N / (S * 2.0 * c->a / nx * dy);
 
     for (j = 0; j < ny; j++) {
         const double yh = -1.0 + (2.0 * j + 1.0) / ny, w2 = 1.0 - yh * yh;
-        const double y = yh * c->b, aj = c->a * sqrt(w2), h = 2.0 * aj / nx;
-        const double pstrip = scale * (o->bound == RR_BOUND_PARABOLIC ? w2 : sqrt(w2));
+        const double y = yh * c->b;
+        const double aj = o->grid == RR_GRID_STRIPS ? c->a * sqrt(w2) : c->a;
+        const double h = 2.0 * aj / nx;
         /* rigid slip per unit length divided by the flexibility */
         const double gx = c->cx / fl.L1 - c->cphi * y / fl.L3;
         const double gy = c->cy / fl.L2, gphi = c->cphi / fl.L3;
-        /* Kalker's discretisation: every element adds the slip of a full
-         * element length to its upstream neighbour's traction, the first one
-         * from zero traction half an element ahead of the leading edge. */
-        double px = 0.0, py = 0.0, xprev = aj + 0.5 * h, sx = 0.0, sy = 0.0, sm = 0.0;
+        double px = 0.0, py = 0.0, sx = 0.0, sy = 0.0, sm = 0.0;
 
         for (i = 0; i < nx; i++) {
-            const double x = aj - (i + 0.5) * h;
-            const double pn = pstrip * profile(o->bound, x / aj);
-            const double tx = px - gx * h;
-            const double ty = py - (gy + gphi * 0.5 * (xprev + x)) * h;
-            const double m2 = tx * tx + ty * ty;
-            double g = mu_bound * pn;
-            int slip = m2 > g * g;
+            /* Kalker's explicit scheme: an element adds the rigid slip at its
+             * centre times one element length to its upstream neighbour's
+             * traction; the first element inside the contact starts from zero. */
+            const double x = aj - (i + 0.5) * h, t = x / c->a, q = w2 - t * t;
+            double pn = 0.0, g, tx, ty, m2;
+            int slip = 0;
 
-            if (slip) {
-                const double m = sqrt(m2);
-                if (local) {
-                    const double lx = fl.L1 * tx, ly = fl.L2 * ty;
-                    g = falling_bound(fr, c->speed, pn, m, sqrt(lx * lx + ly * ly) / (m * h),
-                                      &converged);
+            if (q > 0.0) {
+                pn = scale * (o->bound == RR_BOUND_PARABOLIC ? q : sqrt(q));
+                tx = px - gx * h;
+                ty = py - (gy + gphi * x) * h;
+                m2 = tx * tx + ty * ty;
+                g = mu_bound * pn;
+                slip = m2 > g * g;
+                if (slip) {
+                    const double m = sqrt(m2);
+                    if (local) {
+                        const double lx = fl.L1 * tx, ly = fl.L2 * ty;
+                        g = falling_bound(fr, c->speed, pn, m,
+                                          sqrt(lx * lx + ly * ly) / (m * h), &converged);
+                    }
+                    px = tx * (g / m);
+                    py = ty * (g / m);
+                    nslip++;
+                } else {
+                    px = tx;
+                    py = ty;
                 }
-                px = tx * (g / m);
-                py = ty * (g / m);
-                nslip++;
+                sx += px;
+                sy += py;
+                sm += x * py - y * px;
             } else {
-                px = tx;
-                py = ty;
+                px = py = 0.0;        /* outside the ellipse: no contact */
             }
-            sx += px;
-            sy += py;
-            sm += x * py - y * px;
-            xprev = x;
             if (field) {
                 const int idx = j * nx + (nx - 1 - i);
                 if (field->x) field->x[idx] = x;

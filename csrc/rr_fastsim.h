@@ -12,17 +12,20 @@
  *   traction vehicles based on the Fastsim algorithm", Vehicle System
  *   Dynamics 51 (2013) 1765-1783 (modified FASTSIM).
  *
- * Discretisation (Kalker 1982): ny strips of equal width 2b/ny; strip j at
- * y_j = -b + (j + 1/2) 2b/ny spans |x| <= a_j = a sqrt(1 - y_j^2/b^2) and is
- * cut into nx equal elements of length h_j, pressure and traction at their
- * centres.  The march goes from the leading edge x = +a_j: each element
- * adds the rigid slip over one element length to its upstream neighbour's
- * traction (the first one to zero traction), the spin's x-dependent slip
- * integrated exactly over that length.  This is Kalker's explicit scheme:
- * its initial slope exceeds the linear theory's by about 1/nx (first order
- * in the grid), as does CONTACT's FASTSIM.  The pressure at the element
- * centres is scaled so that it sums to N on the grid: full sliding then
- * gives exactly |F| = mu N.
+ * Discretisation: ny rows of width 2b/ny at y_j = -b + (j + 1/2) 2b/ny, each
+ * cut into nx equal elements of length h_j with pressure and traction at
+ * their centres.  o->grid chooses the rows' extent: RR_GRID_RECT, the
+ * ellipse's bounding box |x| <= a (elements outside the ellipse are empty;
+ * CONTACT's potential contact area), or RR_GRID_STRIPS, each row's own
+ * chord |x| <= a_j = a sqrt(1 - y_j^2/b^2) (Kalker's strips, which converge
+ * faster).  The march goes from the leading edge (x = +a): each element
+ * adds its rigid slip (taken at its centre) times one element length to
+ * its upstream neighbour's traction, the first element inside the contact
+ * to zero traction.  This is
+ * Kalker's explicit scheme: its initial slope exceeds the linear theory's
+ * by about 1/nx (first order in the grid), as CONTACT's FASTSIM does.  The
+ * pressure at the element centres is scaled so that it sums to N on the
+ * grid: full sliding then gives exactly |F| = mu N.
  *
  * Falling friction, o->slip_speed == RR_SLIP_LOCAL: in a slipping element
  * the slip displacement is L (p - p*), p* the adhesion trial traction, so
@@ -39,7 +42,8 @@
 /*
  * Optional traction field of one FASTSIM evaluation: every pointer either
  * NULL (not wanted) or an array of nx * ny elements.  Element (i, j) is
- * stored at j * nx + i, strips j along y, i along increasing x.
+ * stored at j * nx + i, rows j along y, i along increasing x; elements
+ * outside the ellipse have zero pressure and traction.
  */
 typedef struct {
     double *x, *y;        /* element centre [m] */

@@ -223,7 +223,7 @@ static void load_case(const input *in, npy_intp i, rr_contact_case *c, rr_fricti
 /* Options come as keywords; unknown values are caught by rr_creep_opts_check. */
 static int parse_opts(PyObject *kwargs, const char *func, rr_creep_opts *o)
 {
-    static const char *const keys[] = {"method", "nx", "ny", "bound", "slip_speed",
+    static const char *const keys[] = {"method", "nx", "ny", "bound", "slip_speed", "grid",
                                        "k0", "alpha_inf", "beta", "kA", "kS"};
     PyObject *v;
     int method = 0, k, st;
@@ -234,11 +234,11 @@ static int parse_opts(PyObject *kwargs, const char *func, rr_creep_opts *o)
             return -1;
     }
     rr_creep_opts_default(method, o);
-    for (k = 1; k < 10 && kwargs; k++) {
+    for (k = 1; k < 11 && kwargs; k++) {
         v = PyDict_GetItemString(kwargs, keys[k]);
         if (!v)
             continue;
-        if (k <= 4) {
+        if (k <= 5) {
             long x = PyLong_AsLong(v);
             if (PyErr_Occurred())
                 return -1;
@@ -247,15 +247,16 @@ static int parse_opts(PyObject *kwargs, const char *func, rr_creep_opts *o)
             if (k == 1) o->nx = (int)x;
             else if (k == 2) o->ny = (int)x;
             else if (k == 3) o->bound = (int)x;
-            else o->slip_speed = (int)x;
+            else if (k == 4) o->slip_speed = (int)x;
+            else o->grid = (int)x;
         } else {
             double x = PyFloat_AsDouble(v);
             if (PyErr_Occurred())
                 return -1;
-            if (k == 5) o->k0 = x;
-            else if (k == 6) o->alpha_inf = x;
-            else if (k == 7) o->beta = x;
-            else if (k == 8) o->kA = x;
+            if (k == 6) o->k0 = x;
+            else if (k == 7) o->alpha_inf = x;
+            else if (k == 8) o->beta = x;
+            else if (k == 9) o->kA = x;
             else o->kS = x;
         }
     }
@@ -396,7 +397,7 @@ static PyMethodDef core_methods[] = {
      "kalker(a_over_b, nu) -> (c11, c22, c23, status)"},
     {"creep_forces", (PyCFunction)(void (*)(void))py_creep_forces, METH_VARARGS | METH_KEYWORDS,
      "creep_forces(cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B, *, method, nx, ny, bound,"
-     " slip_speed, k0, alpha_inf, beta, kA, kS) -> (fx, fy, mz, status)"},
+     " slip_speed, grid, k0, alpha_inf, beta, kA, kS) -> (fx, fy, mz, status)"},
     {"fastsim_field", (PyCFunction)(void (*)(void))py_fastsim_field,
      METH_VARARGS | METH_KEYWORDS,
      "fastsim_field(<as creep_forces, one case>) -> (fx, fy, mz, status, x, y, pn, px, py, slip)"},
@@ -424,6 +425,8 @@ PyMODINIT_FUNC PyInit__core(void)
         || PyModule_AddIntConstant(m, "METHOD_POLACH", RR_METHOD_POLACH) < 0
         || PyModule_AddIntConstant(m, "BOUND_PARABOLIC", RR_BOUND_PARABOLIC) < 0
         || PyModule_AddIntConstant(m, "BOUND_ELLIPTIC", RR_BOUND_ELLIPTIC) < 0
+        || PyModule_AddIntConstant(m, "GRID_RECT", RR_GRID_RECT) < 0
+        || PyModule_AddIntConstant(m, "GRID_STRIPS", RR_GRID_STRIPS) < 0
         || PyModule_AddIntConstant(m, "SLIP_LOCAL", RR_SLIP_LOCAL) < 0
         || PyModule_AddIntConstant(m, "SLIP_RIGID", RR_SLIP_RIGID) < 0
         || PyModule_AddIntConstant(m, "FASTSIM_MAX_GRID", RR_FASTSIM_MAX_GRID) < 0

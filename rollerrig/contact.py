@@ -40,6 +40,7 @@ METHODS = {
 }
 BOUNDS = {"parabolic": _core.BOUND_PARABOLIC, "elliptic": _core.BOUND_ELLIPTIC}
 SLIP_SPEEDS = {"local": _core.SLIP_LOCAL, "rigid": _core.SLIP_RIGID}
+GRIDS = {"rect": _core.GRID_RECT, "strips": _core.GRID_STRIPS}
 
 
 @dataclass(frozen=True)
@@ -84,9 +85,9 @@ class CreepForces(NamedTuple):
 
 @dataclass(frozen=True)
 class TractionField:
-    """The FASTSIM traction field of one case; arrays of shape (ny, nx),
-    rows are strips (y), columns run along x from the trailing edge to the
-    leading edge."""
+    """The FASTSIM traction field of one case; arrays of shape (ny, nx), rows
+    at increasing y, columns along increasing x (the leading edge is the
+    last column); elements outside the ellipse have zero pressure."""
 
     x: np.ndarray      #: element centre, rolling direction [m]
     y: np.ndarray      #: element centre, lateral [m]
@@ -184,11 +185,13 @@ def kalker_coefficients(a_over_b, nu=0.28, *, errors=None):
                                        (c11, c22, c23), status, errors))
 
 
-def _options(func, method, nx, ny, bound, slip_speed, k0, alpha_inf, beta, kA, kS):
+def _options(func, method, nx, ny, bound, grid, slip_speed, k0, alpha_inf, beta, kA, kS):
     if method not in METHODS:
         raise RollerRigError(f"{func}: method must be one of {sorted(METHODS)}, got {method!r}")
     if bound not in BOUNDS:
         raise RollerRigError(f"{func}: bound must be 'parabolic' or 'elliptic', got {bound!r}")
+    if grid not in GRIDS:
+        raise RollerRigError(f"{func}: grid must be 'rect' or 'strips', got {grid!r}")
     if slip_speed is not None and slip_speed not in SLIP_SPEEDS:
         raise RollerRigError(f"{func}: slip_speed must be 'local', 'rigid' or None, "
                              f"got {slip_speed!r}")
@@ -207,6 +210,7 @@ def _options(func, method, nx, ny, bound, slip_speed, k0, alpha_inf, beta, kA, k
             bracket = "[" if lo_ok else "("
             raise RollerRigError(f"{func}: {name} must be in {bracket}{lo}, {hi}], got {v!r}")
     opts = dict(method=METHODS[method], nx=int(nx), ny=int(ny), bound=BOUNDS[bound],
+                grid=GRIDS[grid],
                 k0=float(k0), alpha_inf=float(alpha_inf), beta=float(beta), kA=float(kA),
                 kS=float(kS))
     if slip_speed is not None:
@@ -224,7 +228,7 @@ def _friction(func, friction):
 
 
 def creep_forces(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28,
-                 method="fastsim", nx=30, ny=30, bound="parabolic", speed=0.0,
+                 method="fastsim", nx=30, ny=30, bound="parabolic", grid="rect", speed=0.0,
                  friction=None, slip_speed=None, k0=0.54, alpha_inf=0.02, beta=0.62,
                  kA=1.0, kS=1.0, errors=None):
     """Creep forces and spin moment on the wheel of a Hertzian contact.
@@ -237,8 +241,11 @@ def creep_forces(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28,
              three to one, Vollebregt and Voltr 2023), "modified_fastsim"
              (Spiryagin, Polach and Cole 2013: k0, alpha_inf, beta),
              "polach" (Polach 1999/2005 with spin: kA, kS)
-    nx, ny:  FASTSIM elements per strip and strips (1 to FASTSIM_MAX_GRID)
+    nx, ny:  FASTSIM elements along x per row, and rows (1 to FASTSIM_MAX_GRID)
     bound:   FASTSIM traction bound, "parabolic" (Kalker's) or "elliptic"
+    grid:    FASTSIM rows spanning the ellipse's bounding box, outside
+             elements empty ("rect", CONTACT's grid) or each row's own chord
+             ("strips", Kalker's strips: converges faster in the grid)
     speed:   rolling speed [m/s]; falling friction needs it > 0
     friction: None (Coulomb) or FallingFriction(A, B)
     slip_speed: FASTSIM falling friction at each element's own slip speed
@@ -250,7 +257,8 @@ def creep_forces(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28,
     theory's C33 (Kalker's C33 is not in our table).
     """
     func = "creep_forces"
-    opts = _options(func, method, nx, ny, bound, slip_speed, k0, alpha_inf, beta, kA, kS)
+    opts = _options(func, method, nx, ny, bound, grid, slip_speed, k0, alpha_inf, beta, kA,
+                    kS)
     fA, fB = _friction(func, friction)
     named = dict(cx=cx, cy=cy, cphi=cphi, a=a, b=b, N=N, mu=mu, G=G, nu=nu, speed=speed)
     named["friction.A"] = fA
@@ -261,7 +269,7 @@ def creep_forces(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28,
 
 
 def fastsim_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28,
-                  method="fastsim", nx=30, ny=30, bound="parabolic", speed=0.0,
+                  method="fastsim", nx=30, ny=30, bound="parabolic", grid="rect", speed=0.0,
                   friction=None, slip_speed=None, k0=0.54, alpha_inf=0.02, beta=0.62):
     """The FASTSIM traction field of one case, for plots and checks.
 
@@ -272,7 +280,8 @@ def fastsim_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28,
     func = "fastsim_field"
     if method not in ("fastsim", "fastsim_blended", "modified_fastsim"):
         raise RollerRigError(f"{func}: method must be a FASTSIM variant, got {method!r}")
-    opts = _options(func, method, nx, ny, bound, slip_speed, k0, alpha_inf, beta, 1.0, 1.0)
+    opts = _options(func, method, nx, ny, bound, grid, slip_speed, k0, alpha_inf, beta, 1.0,
+                    1.0)
     del opts["kA"], opts["kS"]
     fA, fB = _friction(func, friction)
     named = dict(cx=cx, cy=cy, cphi=cphi, a=a, b=b, N=N, mu=mu, G=G, nu=nu, speed=speed)
@@ -283,9 +292,9 @@ def fastsim_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28,
         raise RollerRigError(f"{func}: one case at a time; got inputs of shape {shape}")
     fx, fy, mz, status, x, y, pn, px, py, slip = _core.fastsim_field(*flat, **opts)
     check_status(func, np.array(status, dtype=np.int8), full, "raise")
-    # strip j of width 2b/ny has nx elements of length 2 a_j / nx
+    # row j of width 2b/ny has nx elements of length 2 a_j / nx
     yh = -1.0 + (2.0 * np.arange(ny) + 1.0) / ny
-    a_j = float(a) * np.sqrt(1.0 - yh * yh)
+    a_j = float(a) * (np.sqrt(1.0 - yh * yh) if grid == "strips" else np.ones(ny))
     area = np.repeat((2.0 * a_j / nx * 2.0 * float(b) / ny)[:, None], nx, axis=1)
     return TractionField(x=x, y=y, pn=pn, px=px, py=py, slip=slip.astype(bool), area=area,
                          fx=fx, fy=fy, mz=mz, status=status)

@@ -1,0 +1,646 @@
+"""Pure-Python twin of parts of the rollerrig C core (slow, for tests).
+
+This module re-implements, with explicit loops and only the :mod:`math`
+module, Kalker's creep coefficients (``csrc/rr_kalker.c``), the friction
+laws (``csrc/rr_friction.c``), Kalker's linear theory and Polach's method
+(``csrc/rr_creep.c``) and FASTSIM with its blended and modified variants
+(``csrc/rr_fastsim.c``).  It is meant to be obviously correct rather than
+fast: it follows the C formulas and their order of floating-point operations
+wherever that matters for rounding (pressure normalisation, the strip march,
+the Newton iteration of falling friction with its start, stopping rule and
+step safeguard, the blending and modification of the flexibilities), so its
+results agree with the C core to about 1e-12 relative.
+
+Conventions (those of the C core, Kalker's and CONTACT's): SI units (m, s,
+N, Pa, rad); x is the rolling direction, y lateral, z the normal into the
+wheel; semi-axis ``a`` lies along x, ``b`` along y; material enters the
+contact patch at x = +a.  The creepages ``cx`` (xi), ``cy`` (eta) [-] and
+``cphi`` (phi) [rad/m] are the slip of the wheel relative to the roller (or
+rail) divided by the rolling speed; with spin the rigid slip at (x, y) is
+(cx - cphi y, cy + cphi x).  Forces act ON THE WHEEL: for small creepage
+fx = -G a b C11 cx; mz is the sum of (x py - y px) dA about the patch
+centre.
+
+Invalid input raises :class:`ValueError` naming the offending argument (where
+the C core returns an error status and NaN outputs).  A falling-friction
+Newton iteration that hits its cap (the C status RR_WARN_NOT_CONVERGED) is
+not reported: like the C core, the last iterate is used.
+
+References:
+
+* J. J. Kalker, Three-Dimensional Elastic Bodies in Rolling Contact,
+  Kluwer 1990, Table E.3 (creep coefficients), and the asymptotic formulas
+  for g -> 0 of Kalker's thesis (1967) as used by E. Vollebregt's CONTACT
+  (m_hertz.f90, linrol).
+* J. J. Kalker, "A fast algorithm for the simplified theory of rolling
+  contact", Vehicle System Dynamics 11 (1982) 1-13 (FASTSIM).
+* E. Vollebregt, P. Voltr, "Improved accuracy for FASTSIM using one or
+  three flexibility values", Vehicle System Dynamics 61 (2023) 309
+  (blended FASTSIM).
+* M. Spiryagin, O. Polach, C. Cole, "Creep force modelling for rail
+  traction vehicles based on the Fastsim algorithm", Vehicle System
+  Dynamics 51 (2013) 1765-1783 (modified FASTSIM).
+* O. Polach, "A fast wheel-rail forces calculation computer code", Vehicle
+  System Dynamics 33 Suppl. (1999) 728-739 (Polach's method with spin).
+* O. Polach, "Creep forces in simulations of traction vehicles running on
+  adhesion limit", Wear 258 (2005) 992-1000 (falling friction, reduction
+  factors kA, kS).
+"""
+import math
+
+__all__ = ["kalker", "friction_mu", "linear", "polach", "fastsim"]
+
+#: Largest FASTSIM grid dimension accepted (RR_FASTSIM_MAX_GRID).
+MAX_GRID = 4096
+
+#: Newton iterations for the falling-friction bound (FALLING_MAX_ITER).
+FALLING_MAX_ITER = 50
+
+# Kalker (1990) Table E.3: [half][row g = 0.1 * (i + 1)][C11, C22, C23][nu = 0, 0.25, 0.5].
+# half 0: a <= b (g = a/b); half 1: a >= b (g = b/a).  Row 9 (g = 1) is shared.
+_KALKER_TABLE = (
+    (   # a <= b
+        ((2.51, 3.31, 4.85), (2.51, 2.52, 2.53), (0.334, 0.473, 0.731)),
+        ((2.59, 3.37, 4.81), (2.59, 2.63, 2.66), (0.483, 0.603, 0.809)),
+        ((2.68, 3.44, 4.80), (2.68, 2.75, 2.81), (0.607, 0.715, 0.889)),
+        ((2.78, 3.53, 4.82), (2.78, 2.88, 2.98), (0.720, 0.823, 0.977)),
+        ((2.88, 3.62, 4.83), (2.88, 3.01, 3.14), (0.827, 0.929, 1.07)),
+        ((2.98, 3.72, 4.91), (2.98, 3.14, 3.31), (0.930, 1.03, 1.18)),
+        ((3.09, 3.81, 4.97), (3.09, 3.28, 3.48), (1.03, 1.14, 1.29)),
+        ((3.19, 3.91, 5.05), (3.19, 3.41, 3.65), (1.13, 1.25, 1.40)),
+        ((3.29, 4.01, 5.12), (3.29, 3.54, 3.82), (1.23, 1.36, 1.51)),
+        ((3.40, 4.12, 5.20), (3.40, 3.67, 3.98), (1.33, 1.47, 1.63)),
+    ),
+    (   # a >= b
+        ((10.7, 11.7, 12.9), (10.7, 12.8, 16.0), (12.2, 14.6, 18.0)),
+        ((6.96, 7.78, 8.82), (6.96, 8.14, 9.79), (5.72, 6.63, 7.89)),
+        ((5.57, 6.34, 7.34), (5.57, 6.40, 7.51), (3.79, 4.32, 5.01)),
+        ((4.84, 5.57, 6.57), (4.84, 5.48, 6.31), (2.88, 3.24, 3.70)),
+        ((4.37, 5.10, 6.11), (4.37, 4.90, 5.56), (2.35, 2.62, 2.96)),
+        ((4.06, 4.78, 5.80), (4.06, 4.50, 5.04), (2.01, 2.23, 2.50)),
+        ((3.82, 4.54, 5.58), (3.82, 4.21, 4.67), (1.76, 1.95, 2.18)),
+        ((3.65, 4.36, 5.42), (3.65, 3.99, 4.39), (1.58, 1.75, 1.94)),
+        ((3.51, 4.22, 5.30), (3.51, 3.81, 4.16), (1.44, 1.59, 1.77)),
+        ((3.40, 4.12, 5.20), (3.40, 3.67, 3.98), (1.33, 1.47, 1.63)),
+    ),
+)
+
+_VARIANTS = ("fastsim", "blended", "modified")
+_BOUNDS = ("parabolic", "elliptic")
+_SLIP_SPEEDS = ("local", "rigid")
+
+
+# ---------------------------------------------------------------------------
+# Input checks (the C core's rr_*_check functions, raising ValueError)
+# ---------------------------------------------------------------------------
+
+def _finite(name, value):
+    """Return ``value`` as a float; ValueError naming ``name`` unless finite."""
+    x = float(value)
+    if not math.isfinite(x):
+        raise ValueError(f"{name} must be finite, got {value!r}")
+    return x
+
+
+def _positive(name, value):
+    """Return ``value`` as a float; ValueError naming ``name`` unless finite and > 0."""
+    x = _finite(name, value)
+    if not x > 0.0:
+        raise ValueError(f"{name} must be > 0, got {value!r}")
+    return x
+
+
+def _in_range(name, value, lo, hi, lo_open=False, hi_open=False):
+    """Return ``value`` as a float; ValueError naming ``name`` unless in the interval."""
+    x = _finite(name, value)
+    if (x <= lo if lo_open else x < lo) or (x >= hi if hi_open else x > hi):
+        left = "(" if lo_open else "["
+        right = ")" if hi_open else "]"
+        raise ValueError(f"{name} must lie in {left}{lo}, {hi}{right}, got {value!r}")
+    return x
+
+
+def _check_nu(nu):
+    """Poisson ratio: 0 <= nu < 0.5 (RR_ERR_MATERIAL)."""
+    return _in_range("nu", nu, 0.0, 0.5, hi_open=True)
+
+
+def _check_contact(a, b, N, G, nu, cx, cy, cphi, speed):
+    """The contact case (rr_contact_check): finite inputs, a, b, N, G > 0,
+    0 <= nu < 0.5, speed >= 0.  Returns the inputs as floats."""
+    a = _positive("a", a)
+    b = _positive("b", b)
+    N = _positive("N", N)
+    G = _positive("G", G)
+    nu = _check_nu(nu)
+    cx = _finite("cx", cx)
+    cy = _finite("cy", cy)
+    cphi = _finite("cphi", cphi)
+    speed = _finite("speed", speed)
+    if speed < 0.0:
+        raise ValueError(f"speed must be >= 0, got {speed!r}")
+    return a, b, N, G, nu, cx, cy, cphi, speed
+
+
+def _check_friction(mu0, A, B):
+    """The friction law (rr_friction_check): mu0 > 0, 0 <= A <= 1, B >= 0."""
+    mu0 = _positive("mu0", mu0)
+    A = _in_range("A", A, 0.0, 1.0)
+    B = _finite("B", B)
+    if B < 0.0:
+        raise ValueError(f"B must be >= 0, got {B!r}")
+    return mu0, A, B
+
+
+def _check_falling_speed(A, B, speed):
+    """Falling friction needs a positive rolling speed (RR_ERR_SPEED)."""
+    if _is_falling(A, B) and not speed > 0.0:
+        raise ValueError(f"speed must be > 0 with falling friction (A < 1, B > 0), got {speed!r}")
+
+
+def _check_grid(name, n):
+    """A FASTSIM grid dimension: an integer in [1, MAX_GRID] (RR_ERR_GRID)."""
+    if isinstance(n, bool):
+        raise ValueError(f"{name} must be an integer, got {n!r}")
+    try:
+        k = int(n)
+    except (TypeError, ValueError, OverflowError):
+        raise ValueError(f"{name} must be an integer, got {n!r}") from None
+    if k != n:
+        raise ValueError(f"{name} must be an integer, got {n!r}")
+    if not 1 <= k <= MAX_GRID:
+        raise ValueError(f"{name} must lie in [1, {MAX_GRID}], got {n!r}")
+    return k
+
+
+def _check_choice(name, value, choices):
+    """One of a few named options (RR_ERR_METHOD)."""
+    if value not in choices:
+        raise ValueError(f"{name} must be one of {', '.join(map(repr, choices))}, got {value!r}")
+    return value
+
+
+# ---------------------------------------------------------------------------
+# Kalker's creep coefficients (rr_kalker.c)
+# ---------------------------------------------------------------------------
+
+def _nu_parabola(c, nu):
+    """Lagrange parabola through 1/C at nu = 0, 0.25, 0.5, evaluated at nu.
+
+    ``c`` holds C at the three tabulated Poisson ratios (Kalker 1990,
+    Table E.3); the parabola is in 1/C, and its value is inverted back."""
+    inv = (8.0 * (nu - 0.25) * (nu - 0.5) / c[0]
+           - 16.0 * nu * (nu - 0.5) / c[1]
+           + 8.0 * nu * (nu - 0.25) / c[2])
+    return 1.0 / inv
+
+
+def _kalker_asymptotic(half, g, nu):
+    """Kalker's asymptotes (thesis 1967, as in CONTACT's linrol) for
+    g = min(a/b, b/a) -> 0.  ``half`` 0: a << b (narrow in the rolling
+    direction); 1: a >> b (long in the rolling direction).
+    Returns (C11, C22, C23)."""
+    pi = math.pi
+    if half == 0:
+        c11 = pi * pi / (4.0 * (1.0 - nu))
+        c22 = pi * pi / 4.0
+        c23 = pi * math.sqrt(g) / (3.0 * (1.0 - nu)) * (1.0 + nu * (math.log(16.0 / g) - 5.0))
+    else:
+        lam = math.log(16.0 / (g * g))
+        d22 = (1.0 - nu) * lam + 2.0 * nu
+        c11 = (2.0 * pi / (g * (lam - 2.0 * nu))
+               * (1.0 + (3.0 - math.log(4.0)) / (lam - 2.0 * nu)))
+        c22 = 2.0 * pi / g * (1.0 + (1.0 - nu) * (3.0 - math.log(4.0)) / d22) / d22
+        c23 = 2.0 * pi / (3.0 * g * math.sqrt(g) * ((1.0 - nu) * lam - 2.0 + 4.0 * nu))
+    return c11, c22, c23
+
+
+def _kalker_tabulated(half, g, nu):
+    """Kalker (1990) Table E.3 for 0.1 <= g <= 1: linear interpolation in g
+    of C at each tabulated nu, then the parabola in 1/C over nu.
+    Returns (C11, C22, C23)."""
+    # rows are g = 0.1 (row 0) ... 1.0 (row 9); the last interval ends at row 9
+    pos = 10.0 * g - 1.0
+    row = int(pos)
+    if row > 8:
+        row = 8
+    frac = pos - row
+    coeffs = []
+    for k in range(3):              # C11, C22, C23
+        col = []
+        for j in range(3):          # nu = 0, 0.25, 0.5
+            c0 = _KALKER_TABLE[half][row][k][j]
+            c1 = _KALKER_TABLE[half][row + 1][k][j]
+            col.append(c0 if frac == 0.0 else c0 + frac * (c1 - c0))
+        coeffs.append(_nu_parabola(col, nu))
+    return tuple(coeffs)
+
+
+def kalker(a_over_b, nu):
+    """Kalker's creep coefficients (C11, C22, C23) of the linear theory.
+
+    Reference: J. J. Kalker, Three-Dimensional Elastic Bodies in Rolling
+    Contact, Kluwer 1990, Table E.3 (g = 0.1 ... 1; nu = 0, 0.25, 0.5), and
+    the asymptotic formulas for g -> 0 of Kalker's thesis (1967) as used by
+    E. Vollebregt's CONTACT (m_hertz.f90, linrol).
+
+    ``a_over_b`` is the semi-axis along the rolling direction over the
+    lateral one (> 0), g = min(a/b, b/a); ``nu`` the Poisson ratio,
+    0 <= nu < 0.5.  For 0.1 <= g <= 1 the table is interpolated linearly in
+    g on C at each tabulated nu, then a parabola through 1/C over nu; for
+    g < 0.1 Kalker's asymptotes are used.  The linear theory then reads
+    Fx = -G c^2 C11 xi, Fy = -G c^2 C22 eta - G c^3 C23 phi, c = sqrt(ab).
+
+    Raises ValueError naming the argument for invalid input.
+    """
+    a_over_b = _finite("a_over_b", a_over_b)
+    if a_over_b <= 0.0:
+        raise ValueError(f"a_over_b must be > 0, got {a_over_b!r}")
+    nu = _check_nu(nu)
+    half = 0 if a_over_b <= 1.0 else 1
+    g = a_over_b if half == 0 else 1.0 / a_over_b
+    if g < 0.1:
+        return _kalker_asymptotic(half, g, nu)
+    return _kalker_tabulated(half, g, nu)
+
+
+# ---------------------------------------------------------------------------
+# Friction laws (rr_friction.c): Coulomb and Polach's falling friction
+# ---------------------------------------------------------------------------
+
+def _is_falling(A, B):
+    """True if the coefficient falls with slip (A < 1 and B > 0)."""
+    return A < 1.0 and B > 0.0
+
+
+def _mu(w, mu0, A, B):
+    """Polach (2005): mu(w) = mu0 [(1 - A) exp(-B w) + A], unchecked."""
+    return mu0 * ((1.0 - A) * math.exp(-B * w) + A)
+
+
+def _dmu(w, mu0, A, B):
+    """d mu / d w of Polach's law [s/m], unchecked; <= 0."""
+    return -mu0 * (1.0 - A) * B * math.exp(-B * w)
+
+
+def friction_mu(w, mu0, A=1.0, B=0.0):
+    """Friction coefficient at slip speed ``w`` [m/s] >= 0.
+
+    Reference: O. Polach, "Creep forces in simulations of traction vehicles
+    running on adhesion limit", Wear 258 (2005) 992-1000:
+    mu(w) = mu0 [(1 - A) exp(-B w) + A].  A = 1 (or B = 0) is Coulomb
+    friction.  CONTACT's exponential law is the same curve with
+    mu_kin = A mu0, mu_exp = (1 - A) mu0, half-value slip speed ln 2 / B.
+
+    ``mu0`` > 0 is the static coefficient, 0 <= ``A`` <= 1 the ratio of the
+    limit at infinite slip to mu0, ``B`` >= 0 the decay rate [s/m].
+    Raises ValueError naming the argument for invalid input.
+    """
+    w = _finite("w", w)
+    if w < 0.0:
+        raise ValueError(f"w must be >= 0, got {w!r}")
+    mu0, A, B = _check_friction(mu0, A, B)
+    return _mu(w, mu0, A, B)
+
+
+# ---------------------------------------------------------------------------
+# Kalker's linear theory (rr_creep.c, rr_linear)
+# ---------------------------------------------------------------------------
+
+def linear(cx, cy, cphi, a, b, N, G, nu):
+    """Creep forces on the wheel by Kalker's linear theory: (fx, fy, mz).
+
+    Reference: J. J. Kalker, Three-Dimensional Elastic Bodies in Rolling
+    Contact, Kluwer 1990 (Table E.3 for C11, C22, C23):
+        fx = -G c^2 C11 cx,  fy = -G c^2 C22 cy - G c^3 C23 cphi,
+        mz = G c^3 C23 cy - G c^4 C33 cphi,  c = sqrt(ab).
+    C33 is not in the transcribed table; as in the C core it is taken from
+    the simplified theory with flexibility L3 (Kalker 1982),
+    C33 = 32/(15 pi) C23 (b/a)^(3/2).  N does not enter (no saturation) but
+    is checked like the C core does.
+    """
+    a, b, N, G, nu, cx, cy, cphi, _ = _check_contact(a, b, N, G, nu, cx, cy, cphi, 0.0)
+    c11, c22, c23 = kalker(a / b, nu)
+    ab = a * b
+    c3 = ab * math.sqrt(ab)
+    c33 = 32.0 / (15.0 * math.pi) * c23 * math.pow(b / a, 1.5)
+    fx = -G * ab * c11 * cx
+    fy = -G * (ab * c22 * cy + c3 * c23 * cphi)
+    mz = G * (c3 * c23 * cy - ab * ab * c33 * cphi)
+    return fx, fy, mz
+
+
+# ---------------------------------------------------------------------------
+# Polach's method (rr_creep.c, rr_polach)
+# ---------------------------------------------------------------------------
+
+def _polach_spin_force(a, b, N, G, mu, c23, syc, sc, cphi):
+    """Polach's (1999) lateral spin force F_yS through K_M.
+
+    eps_M = 8/3 G b c C23 |s_yC| / (N mu k_s), k_s = 1 + 6.3 (1 - exp(-a/b)),
+    delta = (eps_M^2 - 1)/(eps_M^2 + 1),
+    K_M = eps_M (delta^3/3 - delta^2/2 + 1/6) - sqrt((1 - delta^2)^3)/3,
+    F_yS = 9/16 a N mu K_M k_s cphi / s_C; its small-creepage limit (for
+    cx = 0) is Kalker's -G c^3 C23 cphi."""
+    ks = 1.0 + 6.3 * (1.0 - math.exp(-a / b))
+    epsm = 8.0 / 3.0 * G * b * math.sqrt(a * b) * c23 * abs(syc) / (N * mu * ks)
+    e2 = epsm * epsm
+    d = (e2 - 1.0) / (e2 + 1.0)
+    q = 1.0 - d * d
+    km = epsm * (d * d * d / 3.0 - d * d / 2.0 + 1.0 / 6.0) - math.sqrt(q * q * q) / 3.0
+    return 9.0 / 16.0 * a * N * mu * km * ks * cphi / sc
+
+
+def polach(cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0, kA=1.0, kS=1.0):
+    """Creep forces on the wheel by Polach's method with spin: (fx, fy, mz).
+
+    References: O. Polach, "A fast wheel-rail forces calculation computer
+    code", Vehicle System Dynamics 33 Suppl. (1999) 728-739; O. Polach,
+    Wear 258 (2005) 992-1000 (reduction factors kA, kS, falling friction).
+
+    With s_yC = cy + cphi a if that grows |cy| (else cy), s_C = |(cx, s_yC)|,
+    mu = mu(speed s_C) (``mu`` is the static mu0 of the friction law with
+    ``A``, ``B``), eps = pi G a b C s_C / (4 N mu),
+    C = |(C11 cx, C22 cy)| / |(cx, cy)|:
+        F = 2 N mu / pi [kA eps / (1 + (kA eps)^2) + atan(kS eps)],
+        fx = -F cx / s_C,  fy = -F cy / s_C + F_yS (Polach's spin force).
+    The method gives no spin moment: mz = 0.  0 < kA, kS <= 1; falling
+    friction (A < 1, B > 0) needs speed > 0.
+    """
+    a, b, N, G, nu, cx, cy, cphi, speed = _check_contact(a, b, N, G, nu, cx, cy, cphi, speed)
+    mu0, A, B = _check_friction(mu, A, B)
+    kA = _in_range("kA", kA, 0.0, 1.0, lo_open=True)
+    kS = _in_range("kS", kS, 0.0, 1.0, lo_open=True)
+    _check_falling_speed(A, B, speed)
+    c11, c22, c23 = kalker(a / b, nu)
+
+    fx = fy = mz = 0.0
+    # spin adds to the lateral creepage only where it increases it
+    syc = cy + cphi * a
+    if abs(syc) <= abs(cy):
+        syc = cy
+    sc = math.hypot(cx, syc)
+    if sc == 0.0:
+        return fx, fy, mz
+    s = math.hypot(cx, cy)
+    mu_c = _mu(speed * sc, mu0, A, B)
+    if s > 0.0:
+        cjj = math.hypot(c11 * cx, c22 * cy) / s
+        eps = math.pi * G * a * b * cjj * sc / (4.0 * N * mu_c)
+        F = 2.0 * N * mu_c / math.pi * (kA * eps / (1.0 + kA * eps * kA * eps) + math.atan(kS * eps))
+        fx = -F * cx / sc
+        fy = -F * cy / sc
+    if cphi != 0.0:
+        fy += _polach_spin_force(a, b, N, G, mu_c, c23, syc, sc, cphi)
+    return fx, fy, mz
+
+
+# ---------------------------------------------------------------------------
+# FASTSIM and its variants (rr_fastsim.c)
+# ---------------------------------------------------------------------------
+
+def _kalker_flexibilities(a, b, G, c11, c22, c23):
+    """Kalker's (1982) three flexibilities of the simplified theory [m/Pa]:
+    L1 = 8a/(3 C11 G), L2 = 8a/(3 C22 G), L3 = pi a sqrt(a/b)/(4 C23 G)."""
+    L1 = 8.0 * a / (3.0 * c11 * G)
+    L2 = 8.0 * a / (3.0 * c22 * G)
+    L3 = math.pi * a * math.sqrt(a / b) / (4.0 * c23 * G)
+    return L1, L2, L3
+
+
+def _blend_flexibilities(L1, L2, L3, cx, cy, cphi, a, b, N, G, mu0, c11, c22, c23):
+    """Blended FASTSIM (Vollebregt and Voltr 2023): move each L_i toward the
+    single flexibility L = (cx^2 + cy^2 + pe^2)/(cx^2/L1 + cy^2/L2 + pe^2/L3),
+    pe = 3 pi a cphi/32 (CONTACT's simpflex), with weight w = min(1, f/3),
+    f = |(cx/ch_x, cy/ch_y, cphi/ch_phi)| and the characteristic creepages
+    mu0 N/(G c^2 C11), mu0 N/(G c^2 C22), mu0 N/(G c^3 C23)."""
+    ab = a * b
+    cc = math.sqrt(ab)
+    sat = mu0 * N / G
+    fx = cx * ab * c11 / sat
+    fy = cy * ab * c22 / sat
+    fp = cphi * ab * cc * c23 / sat
+    w = math.sqrt(fx * fx + fy * fy + fp * fp) / 3.0
+    if w > 1.0:
+        w = 1.0
+    if w > 0.0:
+        pe = cphi * 3.0 * math.pi * a / 32.0
+        x2 = cx * cx
+        y2 = cy * cy
+        p2 = pe * pe
+        L = (x2 + y2 + p2) / (x2 / L1 + y2 / L2 + p2 / L3)
+        L1 += w * (L - L1)
+        L2 += w * (L - L2)
+        L3 += w * (L - L3)
+    return L1, L2, L3
+
+
+def _modify_flexibilities(L1, L2, L3, cx, cy, cphi, a, b, N, G, c11, mu_rigid,
+                          k0, alpha_inf, beta):
+    """Modified FASTSIM (Spiryagin, Polach and Cole 2013; CONTACT's
+    fastsim_params): divide every L_i by
+    k = k0 (alpha_inf + (1 - alpha_inf)/(1 + beta eps)),
+    eps = pi G a b k0 C11 |(cx, cy + a cphi)| / (4 mu N), the spin term kept
+    only where it grows |cy|, mu at the rigid slip speed."""
+    nphi = cy + cphi * a
+    if abs(nphi) < abs(cy):
+        nphi = cy
+    eps = math.pi * G * a * b * k0 * c11 * math.hypot(cx, nphi) / (4.0 * mu_rigid * N)
+    kf = k0 * (alpha_inf + (1.0 - alpha_inf) / (1.0 + beta * eps))
+    return L1 / kf, L2 / kf, L3 / kf
+
+
+def _profile(bound, t):
+    """Pressure profile along a strip at t = x/a_j, up to the strip factor:
+    1 - t^2 (Kalker's parabolic bound) or sqrt(1 - t^2) (Hertzian)."""
+    q = 1.0 - t * t
+    return q if bound == "parabolic" else math.sqrt(q)
+
+
+def _strip_coordinate(j, ny):
+    """Centre of strip j over b: y_j/b = -1 + (2 j + 1)/ny."""
+    return -1.0 + (2.0 * j + 1.0) / ny
+
+
+def _pressure_scale(a, b, N, nx, ny, bound):
+    """Scale of the pressure p(i, j) = scale * strip(y_j) * profile(t_i) so
+    that it sums to N over the element centres (Kalker 1982 grid; the sum
+    factorises because every strip uses the same t_i).  Full sliding then
+    gives exactly |F| = mu N."""
+    dy = 2.0 * b / ny
+    qsum = 0.0
+    for i in range(nx):
+        qsum += _profile(bound, 1.0 - (2.0 * i + 1.0) / nx)
+    S = 0.0
+    for j in range(ny):
+        yh = _strip_coordinate(j, ny)
+        w2 = 1.0 - yh * yh
+        strip = w2 if bound == "parabolic" else math.sqrt(w2)
+        S += strip * math.sqrt(w2)      # times 2a/nx dy qsum, applied below
+    return N / (S * qsum * 2.0 * a / nx * dy)
+
+
+def _falling_bound(speed, pn, m, leff_step, mu0, A, B):
+    """Traction bound g = mu(speed s) pn of a slipping element with falling
+    friction at its own slip speed (rr_fastsim.h, RR_SLIP_LOCAL).
+
+    The slip ratio s solves s = leff_step (m - mu(speed s) pn), m = |p*|
+    the adhesion trial traction.  The residual is convex and increasing past
+    its root; Newton's method from the kinetic bound (mu = A mu0) approaches
+    the root from above.  Safeguard: a step larger than s is halved to s/2;
+    stop when |ds| <= 1e-13 s or |f| <= 8e-16 leff_step m (rounding noise),
+    or after FALLING_MAX_ITER steps.  Returns (g, converged)."""
+    s = leff_step * (m - A * mu0 * pn)
+    for _ in range(FALLING_MAX_ITER):
+        v = speed * s
+        f = s - leff_step * (m - _mu(v, mu0, A, B) * pn)
+        df = 1.0 + leff_step * pn * speed * _dmu(v, mu0, A, B)
+        ds = f / df if df > 0.0 else 0.0
+        if ds > s:
+            ds = 0.5 * s        # never step below zero slip
+        s -= ds
+        if abs(ds) <= 1e-13 * s or abs(f) <= 8e-16 * leff_step * m:
+            return _mu(speed * s, mu0, A, B) * pn, True
+    return _mu(speed * s, mu0, A, B) * pn, False
+
+
+def _march_strip(j, nx, ny, a, b, bound, scale, L1, L2, L3, cx, cy, cphi,
+                 mu_bound, local, speed, mu0, A, B):
+    """Kalker's (1982) explicit march along strip j from the leading edge.
+
+    Each element adds the rigid slip over one element length h_j to its
+    upstream neighbour's traction (the first one from zero traction half an
+    element ahead of the leading edge), the spin's x-dependent slip
+    integrated exactly over that length; the trial traction is then limited
+    to the bound mu pn.  Returns the strip's sums (sx, sy, sm) of px, py and
+    x py - y px, its element length h, and its elements as a list, in march
+    order (x decreasing), of (x, y, pn, px, py, slip)."""
+    yh = _strip_coordinate(j, ny)
+    w2 = 1.0 - yh * yh
+    y = yh * b
+    aj = a * math.sqrt(w2)
+    h = 2.0 * aj / nx
+    pstrip = scale * (w2 if bound == "parabolic" else math.sqrt(w2))
+    # rigid slip per unit length divided by the flexibility
+    gx = cx / L1 - cphi * y / L3
+    gy = cy / L2
+    gphi = cphi / L3
+
+    px = 0.0
+    py = 0.0
+    xprev = aj + 0.5 * h
+    sx = sy = sm = 0.0
+    elements = []
+    for i in range(nx):
+        x = aj - (i + 0.5) * h
+        pn = pstrip * _profile(bound, x / aj)
+        tx = px - gx * h
+        ty = py - (gy + gphi * 0.5 * (xprev + x)) * h
+        m2 = tx * tx + ty * ty
+        g = mu_bound * pn
+        slip = m2 > g * g
+        if slip:
+            m = math.sqrt(m2)
+            if local:
+                lx = L1 * tx
+                ly = L2 * ty
+                g, _ = _falling_bound(speed, pn, m, math.sqrt(lx * lx + ly * ly) / (m * h),
+                                      mu0, A, B)
+            px = tx * (g / m)
+            py = ty * (g / m)
+        else:
+            px = tx
+            py = ty
+        sx += px
+        sy += py
+        sm += x * py - y * px
+        xprev = x
+        elements.append((x, y, pn, px, py, 1 if slip else 0))
+    return sx, sy, sm, h, elements
+
+
+def fastsim(cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0, nx=30, ny=30,
+            bound="parabolic", variant="fastsim", k0=0.54, alpha_inf=0.02, beta=0.62,
+            slip_speed=None, field=False):
+    """Creep forces on the wheel by FASTSIM: (fx, fy, mz), or with
+    ``field=True`` (fx, fy, mz, dict(x, y, pn, px, py, slip)).
+
+    References: J. J. Kalker, "A fast algorithm for the simplified theory of
+    rolling contact", Vehicle System Dynamics 11 (1982) 1-13 (three
+    flexibilities, parabolic traction bound, strip-wise march from the
+    leading edge); E. Vollebregt, P. Voltr, Vehicle System Dynamics 61
+    (2023) 309 (``variant="blended"``: from three flexibilities to one as
+    the creepage grows); M. Spiryagin, O. Polach, C. Cole, Vehicle System
+    Dynamics 51 (2013) 1765-1783 (``variant="modified"``: flexibilities
+    divided by k0 (alpha_inf + (1 - alpha_inf)/(1 + beta eps))); O. Polach,
+    Wear 258 (2005) 992-1000 (falling friction with ``A``, ``B``; ``mu`` is
+    its static mu0).
+
+    Grid: ``ny`` strips of width 2b/ny, each cut into ``nx`` equal elements,
+    pressure at the centres scaled to sum to N; ``bound`` "parabolic"
+    (Kalker's original) or "elliptic" (Hertzian).  With falling friction,
+    ``slip_speed`` "local" uses each slipping element's own slip speed
+    (Newton's method), "rigid" one mu at the rigid slip speed
+    |(cx, cy)| speed; None means "rigid" for the modified variant, else
+    "local".  ``k0``, ``alpha_inf``, ``beta`` are used (and checked) only
+    by the modified variant.
+
+    The field is given as nested lists [ny][nx], strips j along y and x
+    increasing along the inner index i (the C layout j * nx + i); ``slip``
+    holds 1 (slip) or 0 (adhesion).
+    """
+    variant = _check_choice("variant", variant, _VARIANTS)
+    bound = _check_choice("bound", bound, _BOUNDS)
+    if slip_speed is None:
+        slip_speed = "rigid" if variant == "modified" else "local"
+    slip_speed = _check_choice("slip_speed", slip_speed, _SLIP_SPEEDS)
+    nx = _check_grid("nx", nx)
+    ny = _check_grid("ny", ny)
+    if variant == "modified":
+        k0 = _in_range("k0", k0, 0.0, 1.0, lo_open=True)
+        alpha_inf = _in_range("alpha_inf", alpha_inf, 0.0, 1.0)
+        beta = _finite("beta", beta)
+        if beta < 0.0:
+            raise ValueError(f"beta must be >= 0, got {beta!r}")
+    a, b, N, G, nu, cx, cy, cphi, speed = _check_contact(a, b, N, G, nu, cx, cy, cphi, speed)
+    mu0, A, B = _check_friction(mu, A, B)
+    _check_falling_speed(A, B, speed)
+    c11, c22, c23 = kalker(a / b, nu)
+
+    falling = _is_falling(A, B)
+    L1, L2, L3 = _kalker_flexibilities(a, b, G, c11, c22, c23)
+    if variant == "blended":
+        L1, L2, L3 = _blend_flexibilities(L1, L2, L3, cx, cy, cphi, a, b, N, G, mu0,
+                                          c11, c22, c23)
+    elif variant == "modified":
+        mu_rigid = _mu(speed * math.hypot(cx, cy), mu0, A, B)
+        L1, L2, L3 = _modify_flexibilities(L1, L2, L3, cx, cy, cphi, a, b, N, G, c11,
+                                           mu_rigid, k0, alpha_inf, beta)
+
+    # local: mu from each element's own slip speed; rigid: one mu at the
+    # rigid slip speed |(cx, cy)| speed for the whole patch
+    local = falling and slip_speed == "local"
+    if falling and not local:
+        mu_bound = _mu(speed * math.hypot(cx, cy), mu0, A, B)
+    else:
+        mu_bound = mu0
+
+    scale = _pressure_scale(a, b, N, nx, ny, bound)
+    dy = 2.0 * b / ny
+    fx = fy = mz = 0.0
+    rows = []
+    for j in range(ny):
+        sx, sy, sm, h, elements = _march_strip(j, nx, ny, a, b, bound, scale, L1, L2, L3,
+                                               cx, cy, cphi, mu_bound, local, speed,
+                                               mu0, A, B)
+        fx += sx * h
+        fy += sy * h
+        mz += sm * h
+        rows.append(elements[::-1])     # x increasing along the row
+    forces = (fx * dy, fy * dy, mz * dy)
+    if not field:
+        return forces
+    names = ("x", "y", "pn", "px", "py", "slip")
+    out = {name: [[element[k] for element in row] for row in rows]
+           for k, name in enumerate(names)}
+    return forces + (out,)
