@@ -18,8 +18,7 @@
 enum rr_status {
     RR_OK = 0,
     /* warnings: results are usable but less certain */
-    RR_WARN_EXTRAPOLATED = 1,   /* Kalker coefficients outside 0.1 <= g */
-    RR_WARN_NOT_CONVERGED = 2,  /* an inner iteration hit its cap */
+    RR_WARN_NOT_CONVERGED = 1,  /* an inner iteration hit its cap */
     /* errors: outputs are NaN */
     RR_ERR_NONFINITE = -1,      /* an input is NaN or infinite */
     RR_ERR_LOAD = -2,           /* normal load not positive */
@@ -34,7 +33,7 @@ enum rr_status {
 };
 
 #define RR_STATUS_MIN (-10)
-#define RR_STATUS_MAX 2
+#define RR_STATUS_MAX 1
 
 /* Message of a status code; a fixed string, never NULL. */
 const char *rr_status_message(int status);

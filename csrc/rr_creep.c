@@ -79,23 +79,32 @@ int rr_linear(const rr_contact_case *c, rr_forces *out)
     return st;
 }
 
+int rr_creep_prepare(const rr_contact_case *c, const rr_friction *fr, rr_kalker_coeffs *k)
+{
+    int st = rr_contact_check(c);
+
+    if (st == RR_OK)
+        st = rr_friction_check(fr);
+    if (st == RR_OK && rr_friction_is_falling(fr) && !(c->speed > 0.0))
+        st = RR_ERR_SPEED;
+    if (st == RR_OK)
+        st = rr_kalker(c->a / c->b, c->nu, k);
+    return st;
+}
+
 int rr_polach(const rr_contact_case *c, const rr_friction *fr, double kA, double kS,
               rr_forces *out)
 {
     rr_kalker_coeffs k;
     double syc, sc, s, cjj, mu, eps, F;
-    int st = rr_contact_check(c);
+    int st = RR_OK;
 
-    if (st == RR_OK)
-        st = rr_friction_check(fr);
-    if (st == RR_OK && (!isfinite(kA) || !isfinite(kS)))
+    if (!isfinite(kA) || !isfinite(kS))
         st = RR_ERR_NONFINITE;
-    if (st == RR_OK && (kA <= 0.0 || kA > 1.0 || kS <= 0.0 || kS > 1.0))
+    else if (kA <= 0.0 || kA > 1.0 || kS <= 0.0 || kS > 1.0)
         st = RR_ERR_PARAM;
-    if (st == RR_OK && rr_friction_is_falling(fr) && !(c->speed > 0.0))
-        st = RR_ERR_SPEED;
-    if (st == RR_OK)
-        st = rr_kalker(c->a / c->b, c->nu, &k);
+    else
+        st = rr_creep_prepare(c, fr, &k);
     if (st < 0) {
         rr_forces_nan(out);
         return st;
@@ -119,8 +128,9 @@ int rr_polach(const rr_contact_case *c, const rr_friction *fr, double kA, double
         out->fy = -F * c->cy / sc;
     }
     if (c->cphi != 0.0) {
-        /* Polach 1999: spin force through K_M; its small-creepage limit is
-         * Kalker's -G c^3 C23 cphi (the 9/16 and 8/3 are chosen for that). */
+        /* Polach 1999: spin force through K_M; for cx = 0 its small-creepage
+         * limit is Kalker's -G c^3 C23 cphi (the 9/16 and 8/3 are chosen for
+         * that); with cx != 0 it is scaled by |s_yC| / s_C. */
         double ks = 1.0 + 6.3 * (1.0 - exp(-c->a / c->b));
         double epsm = 8.0 / 3.0 * c->G * c->b * sqrt(c->a * c->b) * k.c23 * fabs(syc)
                     / (c->N * mu * ks);

@@ -11,6 +11,7 @@
 
 #include "rr_contact.h"
 #include "rr_friction.h"
+#include "rr_kalker.h"
 
 enum rr_method {
     RR_METHOD_LINEAR = 0,           /* Kalker's linear theory: no saturation */
@@ -45,7 +46,7 @@ enum rr_slip_speed {
 
 typedef struct {
     int method;                   /* enum rr_method */
-    int nx, ny;                   /* FASTSIM: elements per strip, number of strips */
+    int nx, ny;                   /* FASTSIM: elements along x per row, number of rows */
     int bound;                    /* FASTSIM: enum rr_bound */
     int grid;                     /* FASTSIM: enum rr_grid */
     int slip_speed;               /* FASTSIM with falling friction: enum rr_slip_speed */
@@ -72,6 +73,14 @@ void rr_creep_opts_default(int method, rr_creep_opts *o);
  * kA or kS outside (0, 1]).  Only the fields the method uses are checked.
  */
 int rr_creep_opts_check(const rr_creep_opts *o);
+
+/*
+ * rr_creep_prepare - the checks every frictional method starts with, then
+ * Kalker's coefficients of the case.
+ *   status: rr_contact_check, rr_friction_check, RR_ERR_SPEED (falling
+ *   friction needs speed > 0), rr_kalker.
+ */
+int rr_creep_prepare(const rr_contact_case *c, const rr_friction *fr, rr_kalker_coeffs *k);
 
 /*
  * rr_linear - Kalker's linear theory.

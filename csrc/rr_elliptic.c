@@ -76,6 +76,14 @@ int rr_ellip_ke(double mc, double *K, double *E)
     }
     st = rr_carlson_rf_rd(0.0, mc, 1.0, &rf, &rd);
     *K = rf;
-    *E = rf - (1.0 - mc) / 3.0 * rd;
+    /* E = K - (m/3) R_D(0, mc, 1) cancels as m -> 1; DLMF 19.25.1's
+     * E = (mc/3) [R_D(0, mc, 1) + R_D(0, 1, mc)] has no difference */
+    if (mc < 0.5) {
+        double rf2, rd2;
+        rr_carlson_rf_rd(0.0, 1.0, mc, &rf2, &rd2);
+        *E = mc / 3.0 * (rd + rd2);
+    } else {
+        *E = rf - (1.0 - mc) / 3.0 * rd;
+    }
     return st;
 }

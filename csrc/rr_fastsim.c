@@ -88,19 +88,13 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
         && o->method != RR_METHOD_MODIFIED_FASTSIM)
         st = RR_ERR_METHOD;
     if (st == RR_OK)
-        st = rr_contact_check(c);
-    if (st == RR_OK)
-        st = rr_friction_check(fr);
-    falling = st == RR_OK && rr_friction_is_falling(fr);
-    if (falling && !(c->speed > 0.0))
-        st = RR_ERR_SPEED;
-    if (st == RR_OK)
-        st = rr_kalker(c->a / c->b, c->nu, &k);
+        st = rr_creep_prepare(c, fr, &k);
     if (st < 0) {
         rr_forces_nan(out);
         return st;
     }
     flexibilities(c, fr, o->method, o, &k, &fl);
+    falling = rr_friction_is_falling(fr);
     /* local: mu from each element's own slip speed; rigid: one mu at the
      * rigid slip speed |(cx, cy)| speed for the whole patch. */
     local = falling && o->slip_speed == RR_SLIP_LOCAL;
@@ -115,16 +109,19 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
     dy = 2.0 * c->b / ny;
     for (j = 0; j < ny; j++) {
         const double yh = -1.0 + (2.0 * j + 1.0) / ny, w2 = 1.0 - yh * yh;
-        const double half = o->grid == RR_GRID_STRIPS ? sqrt(w2) : 1.0;   /* a_j / a */
+        const double aj = o->grid == RR_GRID_STRIPS ? c->a * sqrt(w2) : c->a;
+        const double h = 2.0 * aj / nx;
         double row = 0.0;
+        /* the same arithmetic as the march below, so both agree on which
+         * elements lie inside the ellipse */
         for (i = 0; i < nx; i++) {
-            const double t = half * (1.0 - (2.0 * i + 1.0) / nx), q = w2 - t * t;
+            const double x = aj - (i + 0.5) * h, t = x / c->a, q = w2 - t * t;
             if (q > 0.0)
                 row += o->bound == RR_BOUND_PARABOLIC ? q : sqrt(q);
         }
-        S += row * half;
+        S += row * h;
     }
-    scale = c->N / (S * 2.0 * c->a / nx * dy);
+    scale = c->N / (S * dy);
 
     for (j = 0; j < ny; j++) {
         const double yh = -1.0 + (2.0 * j + 1.0) / ny, w2 = 1.0 - yh * yh;

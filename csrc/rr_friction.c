@@ -7,7 +7,7 @@ int rr_friction_check(const rr_friction *f)
 {
     if (!isfinite(f->mu0) || !isfinite(f->A) || !isfinite(f->B))
         return RR_ERR_NONFINITE;
-    if (f->mu0 <= 0.0 || f->A < 0.0 || f->A > 1.0 || f->B < 0.0)
+    if (f->mu0 <= 0.0 || f->A <= 0.0 || f->A > 1.0 || f->B < 0.0)
         return RR_ERR_FRICTION;
     return RR_OK;
 }

@@ -13,13 +13,14 @@
 
 typedef struct {
     double mu0;  /* static friction coefficient (at zero slip), > 0 */
-    double A;    /* ratio of the limit friction at infinite slip to mu0, 0 <= A <= 1 */
+    double A;    /* ratio of the limit friction at infinite slip to mu0, 0 < A <= 1 */
     double B;    /* exponential decay rate [s/m], >= 0 */
 } rr_friction;
 
 /*
  * rr_friction_check - 0 if the law is valid, else RR_ERR_NONFINITE or
- * RR_ERR_FRICTION (mu0 <= 0, A outside [0, 1], B < 0).
+ * RR_ERR_FRICTION (mu0 <= 0, A outside (0, 1], B < 0).  A > 0 keeps mu
+ * positive at any slip speed.
  */
 int rr_friction_check(const rr_friction *f);
 

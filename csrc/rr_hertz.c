@@ -49,6 +49,10 @@ int rr_hertz(double A, double B, double N, double estar, rr_hertz_result *out)
     }
     amin = A < B ? A : B;
     rho = (A < B ? B : A) / amin;
+    if (rho > 1e250) {               /* beyond the secant's bracket, k < 1e-150 */
+        set_nan(out);
+        return RR_ERR_GEOMETRY;
+    }
     lrho = log(rho);
 
     if (lrho < 1e-15) {
@@ -60,7 +64,7 @@ int rr_hertz(double A, double B, double N, double estar, rr_hertz_result *out)
          * from +inf as t -> -inf to -ln(rho) at t = 0.  Greenwood's
          * k ~ rho^(-2/3) starts a secant whose slope is about -3/2
          * everywhere; the bracket [t_lo, t_hi] catches a wild step. */
-        double t_lo = -300.0, t_hi = 0.0, t0, f0, t1, f1;
+        double t_lo = -350.0, t_hi = 0.0, t0, f0, t1, f1;
         int it;
 
         t0 = -2.0 / 3.0 * lrho;

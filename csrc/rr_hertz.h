@@ -28,7 +28,8 @@ double rr_estar(double E1, double nu1, double E2, double nu2);
  *            N     normal load [N], > 0
  *            estar contact modulus E* [Pa] (rr_estar), > 0
  *   returns: *out; the long axis lies along the smaller curvature sum
- *   status:  0 OK; RR_ERR_NONFINITE, RR_ERR_GEOMETRY (A or B <= 0),
+ *   status:  0 OK; RR_ERR_NONFINITE, RR_ERR_GEOMETRY (A or B <= 0, or a
+ *            ratio max/min above 1e250),
  *            RR_ERR_LOAD (N <= 0), RR_ERR_MATERIAL (E* <= 0 or NaN)
  *   The ellipticity k = minor/major solves
  *     max(A,B)/min(A,B) = (E(e)/k^2 - K(e)) / (K(e) - E(e)),  e^2 = 1 - k^2,

@@ -35,7 +35,10 @@ static const double kalker_table[2][10][3][3] = {
 /* Lagrange parabola through 1/C at nu = 0, 0.25, 0.5, evaluated at nu. */
 static double nu_parabola(const double c[3], double nu)
 {
-    double inv = 8.0 * (nu - 0.25) * (nu - 0.5) / c[0]
+    double inv;
+    if (nu == 0.0 || nu == 0.25)      /* a node: exactly its value */
+        return c[nu == 0.0 ? 0 : 1];
+    inv = 8.0 * (nu - 0.25) * (nu - 0.5) / c[0]
                - 16.0 * nu * (nu - 0.5) / c[1]
                + 8.0 * nu * (nu - 0.25) / c[2];
     return 1.0 / inv;
@@ -49,7 +52,7 @@ static void asymptotic(int half, double g, double nu, rr_kalker_coeffs *out)
         out->c22 = RR_PI * RR_PI / 4.0;
         out->c23 = RR_PI * sqrt(g) / (3.0 * (1.0 - nu)) * (1.0 + nu * (log(16.0 / g) - 5.0));
     } else {                    /* a >> b: long in the rolling direction */
-        double lam = log(16.0 / (g * g));
+        double lam = log(16.0) - 2.0 * log(g);     /* g * g may underflow */
         double d22 = (1.0 - nu) * lam + 2.0 * nu;
         out->c11 = 2.0 * RR_PI / (g * (lam - 2.0 * nu))
                  * (1.0 + (3.0 - log(4.0)) / (lam - 2.0 * nu));
@@ -84,6 +87,8 @@ int rr_kalker(double a_over_b, double nu, rr_kalker_coeffs *out)
     }
     /* rows are g = 0.1 (row 0) ... 1.0 (row 9); the last interval ends at row 9 */
     pos = 10.0 * g - 1.0;
+    if (fabs(pos - floor(pos + 0.5)) < 1e-12)
+        pos = floor(pos + 0.5);     /* 10 * 0.3 - 1 = 2.0000000000000004: a node */
     row = (int)pos;
     if (row > 8)
         row = 8;

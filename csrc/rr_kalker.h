@@ -27,8 +27,8 @@ typedef struct {
  *   Method: for 0.1 <= g <= 1, Table E.3 interpolated linearly in g on C at
  *   each tabulated nu, then a parabola through 1/C at nu = 0, 0.25, 0.5
  *   (exact at every node).  For g < 0.1, Kalker's asymptotic formulas; they
- *   meet the table at g = 0.1 within 2 % (C11 for a << b: 2.47 against 2.51
- *   at nu = 0).
+ *   meet the table at g = 0.1 within about 6 % (C23 for a << b as nu -> 0.5;
+ *   C11 for a << b at nu = 0: 2.47 against 2.51).
  */
 int rr_kalker(double a_over_b, double nu, rr_kalker_coeffs *out);
 

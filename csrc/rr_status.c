@@ -13,8 +13,7 @@ static const char *const rr_messages[] = {
     /*  -2 */ "normal load not positive",
     /*  -1 */ "input is NaN or infinite",
     /*   0 */ "ok",
-    /*   1 */ "Kalker coefficients extrapolated below g = 0.1 (asymptotic formulas)",
-    /*   2 */ "inner iteration did not converge"
+    /*   1 */ "inner iteration did not converge"
 };
 
 const char *rr_status_message(int status)

@@ -6,10 +6,12 @@ laws (``csrc/rr_friction.c``), Kalker's linear theory and Polach's method
 (``csrc/rr_creep.c``) and FASTSIM with its blended and modified variants
 (``csrc/rr_fastsim.c``).  It is meant to be obviously correct rather than
 fast: it follows the C formulas and their order of floating-point operations
-wherever that matters for rounding (pressure normalisation, the strip march,
-the Newton iteration of falling friction with its start, stopping rule and
-step safeguard, the blending and modification of the flexibilities), so its
-results agree with the C core to about 1e-12 relative.
+wherever that matters for rounding (pressure normalisation, the march along
+the rows, the Newton iteration of falling friction with its start, stopping
+rule and step safeguard, the blending and modification of the
+flexibilities), so its results agree with the C core to about 1e-12
+relative.  It follows the C core as of commit 9bf61b0 (FASTSIM with the
+"rect" or "strips" grid and the rigid slip taken at element centres).
 
 Conventions (those of the C core, Kalker's and CONTACT's): SI units (m, s,
 N, Pa, rad); x is the rolling direction, y lateral, z the normal into the
@@ -24,7 +26,11 @@ centre.
 Invalid input raises :class:`ValueError` naming the offending argument (where
 the C core returns an error status and NaN outputs).  A falling-friction
 Newton iteration that hits its cap (the C status RR_WARN_NOT_CONVERGED) is
-not reported: like the C core, the last iterate is used.
+not reported: like the C core, the last iterate is used.  A friction
+coefficient that underflows to exactly 0 (A = 0 with B w beyond about 745)
+raises ValueError in Polach's method, which divides by it (the C core
+returns NaN there); modified FASTSIM follows the C core (eps = inf) unless
+alpha_inf = 0 makes the reduction factor 0, which raises ValueError.
 
 References:
 
@@ -87,6 +93,7 @@ _KALKER_TABLE = (
 
 _VARIANTS = ("fastsim", "blended", "modified")
 _BOUNDS = ("parabolic", "elliptic")
+_GRIDS = ("rect", "strips")
 _SLIP_SPEEDS = ("local", "rigid")
 
 
@@ -143,9 +150,9 @@ def _check_contact(a, b, N, G, nu, cx, cy, cphi, speed):
 
 
 def _check_friction(mu0, A, B):
-    """The friction law (rr_friction_check): mu0 > 0, 0 <= A <= 1, B >= 0."""
+    """The friction law (rr_friction_check): mu0 > 0, 0 < A <= 1, B >= 0."""
     mu0 = _positive("mu0", mu0)
-    A = _in_range("A", A, 0.0, 1.0)
+    A = _in_range("A", A, 0.0, 1.0, lo_open=True)
     B = _finite("B", B)
     if B < 0.0:
         raise ValueError(f"B must be >= 0, got {B!r}")
@@ -158,7 +165,7 @@ def _check_falling_speed(A, B, speed):
         raise ValueError(f"speed must be > 0 with falling friction (A < 1, B > 0), got {speed!r}")
 
 
-def _check_grid(name, n):
+def _check_grid_size(name, n):
     """A FASTSIM grid dimension: an integer in [1, MAX_GRID] (RR_ERR_GRID)."""
     if isinstance(n, bool):
         raise ValueError(f"{name} must be an integer, got {n!r}")
@@ -188,7 +195,10 @@ def _nu_parabola(c, nu):
     """Lagrange parabola through 1/C at nu = 0, 0.25, 0.5, evaluated at nu.
 
     ``c`` holds C at the three tabulated Poisson ratios (Kalker 1990,
-    Table E.3); the parabola is in 1/C, and its value is inverted back."""
+    Table E.3); the parabola is in 1/C, and its value is inverted back.
+    At a tabulated nu the tabulated value itself is returned."""
+    if nu == 0.0 or nu == 0.25:
+        return c[0] if nu == 0.0 else c[1]
     inv = (8.0 * (nu - 0.25) * (nu - 0.5) / c[0]
            - 16.0 * nu * (nu - 0.5) / c[1]
            + 8.0 * nu * (nu - 0.25) / c[2])
@@ -206,7 +216,7 @@ def _kalker_asymptotic(half, g, nu):
         c22 = pi * pi / 4.0
         c23 = pi * math.sqrt(g) / (3.0 * (1.0 - nu)) * (1.0 + nu * (math.log(16.0 / g) - 5.0))
     else:
-        lam = math.log(16.0 / (g * g))
+        lam = math.log(16.0) - 2.0 * math.log(g)     # g * g may underflow
         d22 = (1.0 - nu) * lam + 2.0 * nu
         c11 = (2.0 * pi / (g * (lam - 2.0 * nu))
                * (1.0 + (3.0 - math.log(4.0)) / (lam - 2.0 * nu)))
@@ -221,6 +231,8 @@ def _kalker_tabulated(half, g, nu):
     Returns (C11, C22, C23)."""
     # rows are g = 0.1 (row 0) ... 1.0 (row 9); the last interval ends at row 9
     pos = 10.0 * g - 1.0
+    if abs(pos - math.floor(pos + 0.5)) < 1e-12:
+        pos = math.floor(pos + 0.5)     # 10 * 0.3 - 1 = 2.0000000000000004: a node
     row = int(pos)
     if row > 8:
         row = 8
@@ -384,6 +396,10 @@ def polach(cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0, kA=1.0, kS
         return fx, fy, mz
     s = math.hypot(cx, cy)
     mu_c = _mu(speed * sc, mu0, A, B)
+    if mu_c == 0.0:
+        raise ValueError("A, B: the friction coefficient at the rigid slip speed underflows "
+                         "to 0 (A = 0, B w > ~745); Polach's method divides by it (the C "
+                         "core returns NaN there)")
     if s > 0.0:
         cjj = math.hypot(c11 * cx, c22 * cy) / s
         eps = math.pi * G * a * b * cjj * sc / (4.0 * N * mu_c)
@@ -441,55 +457,72 @@ def _modify_flexibilities(L1, L2, L3, cx, cy, cphi, a, b, N, G, c11, mu_rigid,
     fastsim_params): divide every L_i by
     k = k0 (alpha_inf + (1 - alpha_inf)/(1 + beta eps)),
     eps = pi G a b k0 C11 |(cx, cy + a cphi)| / (4 mu N), the spin term kept
-    only where it grows |cy|, mu at the rigid slip speed."""
+    only where it grows |cy|, mu at the rigid slip speed.  A mu that
+    underflows to 0 (A = 0, B w beyond about 745) gives eps = inf, as the
+    C core's division does: the full reduction k = k0 alpha_inf."""
     nphi = cy + cphi * a
     if abs(nphi) < abs(cy):
         nphi = cy
-    eps = math.pi * G * a * b * k0 * c11 * math.hypot(cx, nphi) / (4.0 * mu_rigid * N)
+    if mu_rigid == 0.0:
+        eps = math.inf
+    else:
+        eps = math.pi * G * a * b * k0 * c11 * math.hypot(cx, nphi) / (4.0 * mu_rigid * N)
     kf = k0 * (alpha_inf + (1.0 - alpha_inf) / (1.0 + beta * eps))
+    if kf == 0.0:
+        raise ValueError("alpha_inf: the flexibility reduction factor k0 (alpha_inf + ...) is 0 "
+                         "(alpha_inf = 0 with mu at the rigid slip speed underflowing to 0)")
     return L1 / kf, L2 / kf, L3 / kf
 
 
-def _profile(bound, t):
-    """Pressure profile along a strip at t = x/a_j, up to the strip factor:
-    1 - t^2 (Kalker's parabolic bound) or sqrt(1 - t^2) (Hertzian)."""
-    q = 1.0 - t * t
+def _pressure_shape(bound, q):
+    """Pressure shape at q = 1 - x^2/a^2 - y^2/b^2 > 0: q (Kalker's
+    parabolic bound) or sqrt(q) (Hertzian, elliptic bound)."""
     return q if bound == "parabolic" else math.sqrt(q)
 
 
-def _strip_coordinate(j, ny):
-    """Centre of strip j over b: y_j/b = -1 + (2 j + 1)/ny."""
-    return -1.0 + (2.0 * j + 1.0) / ny
+def _row_geometry(j, ny, a, b, grid):
+    """Row j of the grid: (w2, y, aj) with y_j/b = -1 + (2 j + 1)/ny,
+    w2 = 1 - y_j^2/b^2, and aj the row's half-length: a ("rect", the
+    ellipse's bounding box) or a sqrt(w2) ("strips", the row's own chord)."""
+    yh = -1.0 + (2.0 * j + 1.0) / ny
+    w2 = 1.0 - yh * yh
+    y = yh * b
+    aj = a * math.sqrt(w2) if grid == "strips" else a
+    return w2, y, aj
 
 
-def _pressure_scale(a, b, N, nx, ny, bound):
-    """Scale of the pressure p(i, j) = scale * strip(y_j) * profile(t_i) so
-    that it sums to N over the element centres (Kalker 1982 grid; the sum
-    factorises because every strip uses the same t_i).  Full sliding then
-    gives exactly |F| = mu N."""
+def _pressure_scale(a, b, N, nx, ny, bound, grid):
+    """Scale of the pressure p = scale * shape(q) at the element centres so
+    that it sums to N over the grid (full sliding then gives exactly
+    |F| = mu N).  The sum runs over the element centres x = aj - (i + 1/2) h
+    of every row, computed as in the march, empty elements (q <= 0) left
+    out."""
     dy = 2.0 * b / ny
-    qsum = 0.0
-    for i in range(nx):
-        qsum += _profile(bound, 1.0 - (2.0 * i + 1.0) / nx)
     S = 0.0
     for j in range(ny):
-        yh = _strip_coordinate(j, ny)
-        w2 = 1.0 - yh * yh
-        strip = w2 if bound == "parabolic" else math.sqrt(w2)
-        S += strip * math.sqrt(w2)      # times 2a/nx dy qsum, applied below
-    return N / (S * qsum * 2.0 * a / nx * dy)
+        w2, _, aj = _row_geometry(j, ny, a, b, grid)
+        h = 2.0 * aj / nx
+        row = 0.0
+        for i in range(nx):
+            t = (aj - (i + 0.5) * h) / a
+            q = w2 - t * t
+            if q > 0.0:
+                row += _pressure_shape(bound, q)
+        S += row * h
+    return N / (S * dy)
 
 
 def _falling_bound(speed, pn, m, leff_step, mu0, A, B):
     """Traction bound g = mu(speed s) pn of a slipping element with falling
-    friction at its own slip speed (rr_fastsim.h, RR_SLIP_LOCAL).
+    friction at its own slip speed (rr_fastsim.h, RR_SLIP_LOCAL; friction
+    law of Polach 2005).
 
     The slip ratio s solves s = leff_step (m - mu(speed s) pn), m = |p*|
     the adhesion trial traction.  The residual is convex and increasing past
     its root; Newton's method from the kinetic bound (mu = A mu0) approaches
-    the root from above.  Safeguard: a step larger than s is halved to s/2;
-    stop when |ds| <= 1e-13 s or |f| <= 8e-16 leff_step m (rounding noise),
-    or after FALLING_MAX_ITER steps.  Returns (g, converged)."""
+    the root from above.  Safeguard: a step larger than s is replaced by
+    s/2; stop when |ds| <= 1e-13 s or |f| <= 8e-16 leff_step m (rounding
+    noise), else after FALLING_MAX_ITER steps.  Returns (g, converged)."""
     s = leff_step * (m - A * mu0 * pn)
     for _ in range(FALLING_MAX_ITER):
         v = speed * s
@@ -504,23 +537,20 @@ def _falling_bound(speed, pn, m, leff_step, mu0, A, B):
     return _mu(speed * s, mu0, A, B) * pn, False
 
 
-def _march_strip(j, nx, ny, a, b, bound, scale, L1, L2, L3, cx, cy, cphi,
-                 mu_bound, local, speed, mu0, A, B):
-    """Kalker's (1982) explicit march along strip j from the leading edge.
+def _march_row(j, nx, ny, a, b, bound, grid, scale, L1, L2, L3, cx, cy, cphi,
+               mu_bound, local, speed, mu0, A, B):
+    """Kalker's (1982) explicit march along row j from the leading edge.
 
-    Each element adds the rigid slip over one element length h_j to its
-    upstream neighbour's traction (the first one from zero traction half an
-    element ahead of the leading edge), the spin's x-dependent slip
-    integrated exactly over that length; the trial traction is then limited
-    to the bound mu pn.  Returns the strip's sums (sx, sy, sm) of px, py and
-    x py - y px, its element length h, and its elements as a list, in march
-    order (x decreasing), of (x, y, pn, px, py, slip)."""
-    yh = _strip_coordinate(j, ny)
-    w2 = 1.0 - yh * yh
-    y = yh * b
-    aj = a * math.sqrt(w2)
+    Each element inside the ellipse adds its rigid slip, taken at its
+    centre, divided by the flexibilities, times one element length h to its
+    upstream neighbour's traction (the first element inside the contact
+    starts from zero traction); the trial traction is then limited to the
+    bound mu pn.  Elements outside the ellipse (only on the "rect" grid)
+    carry no pressure or traction.  Returns the row's sums (sx, sy, sm) of
+    px, py and x py - y px, its element length h, and its elements as a
+    list, in march order (x decreasing), of (x, y, pn, px, py, slip)."""
+    w2, y, aj = _row_geometry(j, ny, a, b, grid)
     h = 2.0 * aj / nx
-    pstrip = scale * (w2 if bound == "parabolic" else math.sqrt(w2))
     # rigid slip per unit length divided by the flexibility
     gx = cx / L1 - cphi * y / L3
     gy = cy / L2
@@ -528,46 +558,52 @@ def _march_strip(j, nx, ny, a, b, bound, scale, L1, L2, L3, cx, cy, cphi,
 
     px = 0.0
     py = 0.0
-    xprev = aj + 0.5 * h
     sx = sy = sm = 0.0
     elements = []
     for i in range(nx):
         x = aj - (i + 0.5) * h
-        pn = pstrip * _profile(bound, x / aj)
-        tx = px - gx * h
-        ty = py - (gy + gphi * 0.5 * (xprev + x)) * h
-        m2 = tx * tx + ty * ty
-        g = mu_bound * pn
-        slip = m2 > g * g
-        if slip:
-            m = math.sqrt(m2)
-            if local:
-                lx = L1 * tx
-                ly = L2 * ty
-                g, _ = _falling_bound(speed, pn, m, math.sqrt(lx * lx + ly * ly) / (m * h),
-                                      mu0, A, B)
-            px = tx * (g / m)
-            py = ty * (g / m)
+        t = x / a
+        q = w2 - t * t
+        pn = 0.0
+        slip = False
+        if q > 0.0:
+            pn = scale * _pressure_shape(bound, q)
+            tx = px - gx * h
+            ty = py - (gy + gphi * x) * h
+            m2 = tx * tx + ty * ty
+            g = mu_bound * pn
+            slip = m2 > g * g
+            if slip:
+                m = math.sqrt(m2)
+                if local:
+                    lx = L1 * tx
+                    ly = L2 * ty
+                    g, _ = _falling_bound(speed, pn, m, math.sqrt(lx * lx + ly * ly) / (m * h),
+                                          mu0, A, B)
+                px = tx * (g / m)
+                py = ty * (g / m)
+            else:
+                px = tx
+                py = ty
+            sx += px
+            sy += py
+            sm += x * py - y * px
         else:
-            px = tx
-            py = ty
-        sx += px
-        sy += py
-        sm += x * py - y * px
-        xprev = x
+            px = py = 0.0       # outside the ellipse: no contact
         elements.append((x, y, pn, px, py, 1 if slip else 0))
     return sx, sy, sm, h, elements
 
 
 def fastsim(cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0, nx=30, ny=30,
             bound="parabolic", variant="fastsim", k0=0.54, alpha_inf=0.02, beta=0.62,
-            slip_speed=None, field=False):
+            slip_speed=None, field=False, grid="rect"):
     """Creep forces on the wheel by FASTSIM: (fx, fy, mz), or with
     ``field=True`` (fx, fy, mz, dict(x, y, pn, px, py, slip)).
 
     References: J. J. Kalker, "A fast algorithm for the simplified theory of
     rolling contact", Vehicle System Dynamics 11 (1982) 1-13 (three
-    flexibilities, parabolic traction bound, strip-wise march from the
+    flexibilities L1 = 8a/(3 C11 G), L2 = 8a/(3 C22 G),
+    L3 = pi a sqrt(a/b)/(4 C23 G), parabolic traction bound, march from the
     leading edge); E. Vollebregt, P. Voltr, Vehicle System Dynamics 61
     (2023) 309 (``variant="blended"``: from three flexibilities to one as
     the creepage grows); M. Spiryagin, O. Polach, C. Cole, Vehicle System
@@ -576,26 +612,31 @@ def fastsim(cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0, nx=30, ny
     Wear 258 (2005) 992-1000 (falling friction with ``A``, ``B``; ``mu`` is
     its static mu0).
 
-    Grid: ``ny`` strips of width 2b/ny, each cut into ``nx`` equal elements,
-    pressure at the centres scaled to sum to N; ``bound`` "parabolic"
-    (Kalker's original) or "elliptic" (Hertzian).  With falling friction,
-    ``slip_speed`` "local" uses each slipping element's own slip speed
-    (Newton's method), "rigid" one mu at the rigid slip speed
+    Grid: ``ny`` rows of width 2b/ny, each cut into ``nx`` equal elements,
+    pressure and traction at the centres, the pressure scaled to sum to N.
+    ``grid`` "rect" (the C default: rows span the ellipse's bounding box
+    |x| <= a, elements outside the ellipse empty, CONTACT's grid) or
+    "strips" (each row spans its own chord, Kalker's strips).  ``bound``
+    "parabolic" (Kalker's original) or "elliptic" (Hertzian).  With falling
+    friction, ``slip_speed`` "local" uses each slipping element's own slip
+    speed (Newton's method), "rigid" one mu at the rigid slip speed
     |(cx, cy)| speed; None means "rigid" for the modified variant, else
     "local".  ``k0``, ``alpha_inf``, ``beta`` are used (and checked) only
     by the modified variant.
 
-    The field is given as nested lists [ny][nx], strips j along y and x
+    The field is given as nested lists [ny][nx], rows j along y and x
     increasing along the inner index i (the C layout j * nx + i); ``slip``
-    holds 1 (slip) or 0 (adhesion).
+    holds 1 (slip) or 0 (adhesion); elements outside the ellipse have zero
+    pressure and traction.
     """
     variant = _check_choice("variant", variant, _VARIANTS)
     bound = _check_choice("bound", bound, _BOUNDS)
+    grid = _check_choice("grid", grid, _GRIDS)
     if slip_speed is None:
         slip_speed = "rigid" if variant == "modified" else "local"
     slip_speed = _check_choice("slip_speed", slip_speed, _SLIP_SPEEDS)
-    nx = _check_grid("nx", nx)
-    ny = _check_grid("ny", ny)
+    nx = _check_grid_size("nx", nx)
+    ny = _check_grid_size("ny", ny)
     if variant == "modified":
         k0 = _in_range("k0", k0, 0.0, 1.0, lo_open=True)
         alpha_inf = _in_range("alpha_inf", alpha_inf, 0.0, 1.0)
@@ -608,31 +649,27 @@ def fastsim(cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0, nx=30, ny
     c11, c22, c23 = kalker(a / b, nu)
 
     falling = _is_falling(A, B)
+    mu_rigid = _mu(speed * math.hypot(cx, cy), mu0, A, B)
     L1, L2, L3 = _kalker_flexibilities(a, b, G, c11, c22, c23)
     if variant == "blended":
         L1, L2, L3 = _blend_flexibilities(L1, L2, L3, cx, cy, cphi, a, b, N, G, mu0,
                                           c11, c22, c23)
     elif variant == "modified":
-        mu_rigid = _mu(speed * math.hypot(cx, cy), mu0, A, B)
         L1, L2, L3 = _modify_flexibilities(L1, L2, L3, cx, cy, cphi, a, b, N, G, c11,
                                            mu_rigid, k0, alpha_inf, beta)
 
     # local: mu from each element's own slip speed; rigid: one mu at the
     # rigid slip speed |(cx, cy)| speed for the whole patch
     local = falling and slip_speed == "local"
-    if falling and not local:
-        mu_bound = _mu(speed * math.hypot(cx, cy), mu0, A, B)
-    else:
-        mu_bound = mu0
+    mu_bound = mu_rigid if falling and not local else mu0
 
-    scale = _pressure_scale(a, b, N, nx, ny, bound)
+    scale = _pressure_scale(a, b, N, nx, ny, bound, grid)
     dy = 2.0 * b / ny
     fx = fy = mz = 0.0
     rows = []
     for j in range(ny):
-        sx, sy, sm, h, elements = _march_strip(j, nx, ny, a, b, bound, scale, L1, L2, L3,
-                                               cx, cy, cphi, mu_bound, local, speed,
-                                               mu0, A, B)
+        sx, sy, sm, h, elements = _march_row(j, nx, ny, a, b, bound, grid, scale, L1, L2, L3,
+                                             cx, cy, cphi, mu_bound, local, speed, mu0, A, B)
         fx += sx * h
         fy += sy * h
         mz += sm * h
