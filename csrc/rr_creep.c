@@ -52,7 +52,7 @@ int rr_creep_opts_check(const rr_creep_opts *o)
     if (o->method == RR_METHOD_POLACH) {
         if (!isfinite(o->kA) || !isfinite(o->kS))
             return RR_ERR_NONFINITE;
-        if (o->kA <= 0.0 || o->kA > 1.0 || o->kS <= 0.0 || o->kS > 1.0)
+        if (o->kS <= 0.0 || o->kS > o->kA || o->kA > 1.0)
             return RR_ERR_PARAM;
     }
     return RR_OK;
@@ -101,7 +101,7 @@ int rr_polach(const rr_contact_case *c, const rr_friction *fr, double kA, double
 
     if (!isfinite(kA) || !isfinite(kS))
         st = RR_ERR_NONFINITE;
-    else if (kA <= 0.0 || kA > 1.0 || kS <= 0.0 || kS > 1.0)
+    else if (kS <= 0.0 || kS > kA || kA > 1.0)
         st = RR_ERR_PARAM;
     else
         st = rr_creep_prepare(c, fr, &k);

@@ -70,7 +70,7 @@ void rr_creep_opts_default(int method, rr_creep_opts *o);
  * slip_speed unknown), RR_ERR_GRID (nx, ny outside [1, RR_FASTSIM_MAX_GRID]),
  * RR_ERR_NONFINITE,
  * RR_ERR_PARAM (k0 outside (0, 1], alpha_inf outside [0, 1], beta < 0,
- * kA or kS outside (0, 1]).  Only the fields the method uses are checked.
+ * not 0 < kS <= kA <= 1: Polach's condition, which keeps |F| <= mu N).  Only the fields the method uses are checked.
  */
 int rr_creep_opts_check(const rr_creep_opts *o);
 
@@ -103,8 +103,10 @@ int rr_linear(const rr_contact_case *c, rr_forces *out);
  *   C = |(C11 cx, C22 cy)| / |(cx, cy)|:
  *     F = 2 N mu / pi [kA eps / (1 + (kA eps)^2) + atan(kS eps)],
  *     fx = -F cx / s_C, fy = -F cy / s_C + F_yS (Polach's spin force).
- *   For small creepage it reproduces Kalker's linear theory times
- *   (kA + kS)/2.  The method gives no spin moment: mz = 0.
+ *   The force lies along (cx, cy); for small pure cx, pure cy or pure spin
+ *   it reproduces Kalker's linear theory times (kA + kS)/2 (with both cx
+ *   and cy only its magnitude does).  0 < kS <= kA <= 1 (Polach 2005).
+ *   The method gives no spin moment: mz = 0.
  *   status: rr_contact_check, rr_friction_check, RR_ERR_PARAM, RR_ERR_SPEED
  *   (falling friction with speed 0).
  */

@@ -20,28 +20,37 @@ def status_message(code):
     return _core.status_message(int(code))
 
 
-# Which arguments each error status is about, to name them in messages.
+def _positive(v):
+    return v > 0.0
+
+
+def _poisson(v):
+    return 0.0 <= v < 0.5
+
+
+# For each error status, the arguments it may be about and the test their
+# values must pass; a message names those that fail it.
 _STATUS_ARGS = {
-    -2: ("N",),
-    -3: ("A", "B", "a", "b", "a_over_b"),
-    -4: ("E", "nu", "E2", "nu2", "G"),
-    -5: ("mu", "friction.A", "friction.B"),
-    -7: ("speed",),
+    -2: {"N": _positive},
+    -3: {n: _positive for n in ("A", "B", "a", "b", "a_over_b")},
+    -4: {"E": _positive, "E2": _positive, "G": _positive, "nu": _poisson, "nu2": _poisson},
+    -5: {"mu": _positive, "friction.A": lambda v: 0.0 < v <= 1.0,
+         "friction.B": lambda v: v >= 0.0},
+    -7: {"speed": _positive},
 }
 
 
 def _culprits(code, args, index):
     """'name = value' for the arguments that explain status `code` at `index`."""
-    found = []
+    found, group = [], []
     for name, arr in args.items():
-        value = arr.reshape(-1)[index if arr.size > 1 else 0]
-        if code == -1:
-            bad = not np.isfinite(value)
-        else:
-            bad = name in _STATUS_ARGS.get(code, ())
-        if bad:
-            found.append(f"{name} = {float(value)!r}")
-    return ", ".join(found) or "(options)"
+        value = float(arr.reshape(-1)[index if arr.size > 1 else 0])
+        test = _STATUS_ARGS.get(code, {}).get(name)
+        if code == -1 or test is not None:
+            group.append(f"{name} = {value!r}")
+        if (code == -1 and not np.isfinite(value)) or (test is not None and not test(value)):
+            found.append(f"{name} = {value!r}")
+    return ", ".join(found or group) or "(options)"
 
 
 def check_status(func, status, args, errors):

@@ -48,7 +48,7 @@ class FallingFriction:
     """Polach's falling friction mu(w) = mu [(1 - A) exp(-B w) + A].
 
     mu is the static coefficient given to creep_forces; w the slip speed
-    [m/s]; A the ratio of the friction at infinite slip to mu (0..1); B the
+    [m/s]; A the ratio of the friction at infinite slip to mu (0 < A <= 1); B the
     decay rate [s/m].  Polach (Wear 258, 2005) fits dry rail with about
     A = 0.4, B = 0.6 s/m.  Falling friction needs the rolling speed.
     """
@@ -202,7 +202,7 @@ def _options(func, method, nx, ny, bound, grid, slip_speed, k0, alpha_inf, beta,
                                  f"{_core.FASTSIM_MAX_GRID}, got {n!r}")
     checks = (("k0", k0, 0.0, 1.0, False), ("alpha_inf", alpha_inf, 0.0, 1.0, True),
               ("beta", beta, 0.0, np.inf, True), ("kA", kA, 0.0, 1.0, False),
-              ("kS", kS, 0.0, 1.0, False))
+              ("kS", kS, 0.0, kA, False))
     for name, v, lo, hi, lo_ok in checks:
         ok = isinstance(v, (int, float, np.integer, np.floating)) and np.isfinite(v) \
             and (v >= lo if lo_ok else v > lo) and v <= hi
@@ -240,7 +240,8 @@ def creep_forces(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28,
              flexibilities), "fastsim_blended" (flexibilities blended from
              three to one, Vollebregt and Voltr 2023), "modified_fastsim"
              (Spiryagin, Polach and Cole 2013: k0, alpha_inf, beta),
-             "polach" (Polach 1999/2005 with spin: kA, kS)
+             "polach" (Polach 1999/2005 with spin: reduction factors
+             0 < kS <= kA <= 1)
     nx, ny:  FASTSIM elements along x per row, and rows (1 to FASTSIM_MAX_GRID)
     bound:   FASTSIM traction bound, "parabolic" (Kalker's) or "elliptic"
     grid:    FASTSIM rows spanning the ellipse's bounding box, outside

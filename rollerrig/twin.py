@@ -376,13 +376,13 @@ def polach(cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0, kA=1.0, kS
     C = |(C11 cx, C22 cy)| / |(cx, cy)|:
         F = 2 N mu / pi [kA eps / (1 + (kA eps)^2) + atan(kS eps)],
         fx = -F cx / s_C,  fy = -F cy / s_C + F_yS (Polach's spin force).
-    The method gives no spin moment: mz = 0.  0 < kA, kS <= 1; falling
+    The method gives no spin moment: mz = 0.  0 < kS <= kA <= 1; falling
     friction (A < 1, B > 0) needs speed > 0.
     """
     a, b, N, G, nu, cx, cy, cphi, speed = _check_contact(a, b, N, G, nu, cx, cy, cphi, speed)
     mu0, A, B = _check_friction(mu, A, B)
     kA = _in_range("kA", kA, 0.0, 1.0, lo_open=True)
-    kS = _in_range("kS", kS, 0.0, 1.0, lo_open=True)
+    kS = _in_range("kS", kS, 0.0, kA, lo_open=True)      # Polach: kS <= kA
     _check_falling_speed(A, B, speed)
     c11, c22, c23 = kalker(a / b, nu)
 

@@ -235,15 +235,15 @@ static void test_polach(void)
     c.cphi = 0.0;
     c.cx = 1e-9;
     c.cy = 0.0;
-    rr_polach(&c, &fr, 0.3, 0.8, &f);
+    rr_polach(&c, &fr, 0.8, 0.3, &f);
     rr_linear(&c, &fl);
     /* as above */
-    CHECK_CLOSE(f.fx, 0.55 * fl.fx, 0.0, 1e-6, "Polach kA = 0.3, kS = 0.8: fx = 0.55 linear");
+    CHECK_CLOSE(f.fx, 0.55 * fl.fx, 0.0, 1e-6, "Polach kA = 0.8, kS = 0.3: fx = 0.55 linear");
     c.cx = 0.0;
     c.cy = 1e-9;
-    rr_polach(&c, &fr, 0.3, 0.8, &f);
+    rr_polach(&c, &fr, 0.8, 0.3, &f);
     rr_linear(&c, &fl);
-    CHECK_CLOSE(f.fy, 0.55 * fl.fy, 0.0, 1e-6, "Polach kA = 0.3, kS = 0.8: fy = 0.55 linear");
+    CHECK_CLOSE(f.fy, 0.55 * fl.fy, 0.0, 1e-6, "Polach kA = 0.8, kS = 0.3: fy = 0.55 linear");
 
     /* combined cx, cy: Polach's force is along the creepage (cx, cy), with
      * the magnitude of the linear theory's |(C11 cx, C22 cy)| G c^2; the
@@ -307,11 +307,11 @@ static void test_polach(void)
         c.cx = 2e-3;
         c.cy = -1e-3;
         c.cphi = 0.8;
-        rr_polach(&c, &fr, 0.7, 0.9, &f);
+        rr_polach(&c, &fr, 0.9, 0.7, &f);
         c.cx = -c.cx;
         c.cy = -c.cy;
         c.cphi = -c.cphi;
-        rr_polach(&c, &fr, 0.7, 0.9, &fn);
+        rr_polach(&c, &fr, 0.9, 0.7, &fn);
         CHECK(fn.fx == -f.fx && fn.fy == -f.fy && fn.mz == -f.mz, "Polach odd symmetry");
     }
     /* moderate spin, beyond the linear range: Polach (1999) transcribed here
@@ -367,6 +367,8 @@ static void test_polach(void)
         CHECK_STATUS(st, RR_ERR_PARAM, "Polach kA = 0");
         st = rr_polach(&c, &fr, 1.0, 1.5, &f);
         CHECK_STATUS(st, RR_ERR_PARAM, "Polach kS = 1.5");
+        st = rr_polach(&c, &fr, 0.5, 0.6, &f);
+        CHECK_STATUS(st, RR_ERR_PARAM, "Polach kS > kA (Polach 2005: kS <= kA)");
         st = rr_polach(&c, &fr, NAN, 1.0, &f);
         CHECK_STATUS(st, RR_ERR_NONFINITE, "Polach kA NaN");
         CHECK(forces_nan(&f), "Polach kA NaN: NaN");
@@ -1203,10 +1205,10 @@ static void test_dispatch(void)
     {
         rr_creep_opts o;
         rr_creep_opts_default(RR_METHOD_POLACH, &o);
-        o.kA = 0.6;
-        o.kS = 0.9;
+        o.kA = 0.9;
+        o.kS = 0.6;
         st = rr_creep_forces(&c, &fr, &o, &f);
-        rr_polach(&c, &fr, 0.6, 0.9, &g);
+        rr_polach(&c, &fr, 0.9, 0.6, &g);
         CHECK(st == RR_OK && f.fx == g.fx && f.fy == g.fy && f.mz == g.mz,
               "dispatcher = rr_polach with the options' kA, kS");
     }
