@@ -12,5 +12,6 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DATA = os.path.join(ROOT, "tests", "data")
 
-if not glob.glob(os.path.join(ROOT, "rollerrig", "_core*")):
+_BUILT = ("_core*.so", "_core*.pyd")
+if not any(glob.glob(os.path.join(ROOT, "rollerrig", pattern)) for pattern in _BUILT):
     sys.path[:] = [p for p in sys.path if os.path.abspath(p or os.curdir) != ROOT]
