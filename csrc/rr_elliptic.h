@@ -26,4 +26,18 @@ int rr_carlson_rf_rd(double x, double y, double z, double *rf, double *rd);
  */
 int rr_ellip_ke(double mc, double *K, double *E);
 
+/*
+ * rr_ellip_agm - K and the two differences Hertz needs, by the arithmetic-
+ * geometric mean of 1 and the complementary modulus kc (Abramowitz and
+ * Stegun 17.6): with e^2 = 1 - kc^2 and S = sum_{n>=1} 2^(n-1) c_n^2,
+ *   K = pi / (2 AGM(1, kc)),
+ *   (K - E) / K = e^2/2 + S,   (E - kc^2 K) / K = e^2/2 - S,
+ * neither of which cancels as kc -> 1 (where K - E -> 0).  A handful of
+ * square roots, against some twenty for R_F and R_D together.
+ *   given:   0 < kc <= 1
+ *   returns: *K, *d_lo = (K - E)/K, *d_hi = (E - kc^2 K)/K
+ *   status:  0 OK; RR_ERR_NONFINITE or RR_ERR_GEOMETRY (kc outside (0, 1])
+ */
+int rr_ellip_agm(double kc, double *K, double *d_lo, double *d_hi);
+
 #endif

@@ -4,6 +4,11 @@
 #include "rr_kalker.h"
 #include "rr_fastsim.h"
 
+/* Rows marched side by side (see rr_fastsim). */
+#ifndef ROWS_AT_ONCE
+#define ROWS_AT_ONCE 2
+#endif
+
 /* Newton iterations for the falling-friction bound; it converges in a few. */
 #define FALLING_MAX_ITER 50
 
@@ -74,13 +79,100 @@ static double falling_bound(const rr_friction *fr, double speed, double pn, doub
     return rr_friction_mu(fr, speed * s) * pn;
 }
 
+/* What the march of every row shares. */
+typedef struct {
+    const rr_contact_case *c;
+    const rr_friction *fr;
+    const flex *fl;
+    double scale, mu_bound;     /* pressure scale [Pa]; bound's friction coefficient */
+    double inv_a;               /* 1/a: a product is cheaper than a quotient per element */
+    int parabolic, local;       /* traction bound; falling friction at local slip */
+    int converged, nslip;
+    rr_fastsim_field *field;
+    int nx;
+} march;
+
+/* One row of the grid and the state of its march. */
+typedef struct {
+    int j;
+    double y, w2, aj, h;        /* position, 1 - y^2/b^2, half-length, element length */
+    double gx, gy, gphi;        /* rigid slip per unit length over the flexibility */
+    double px, py;              /* traction of the last element */
+    double sx, sy, sm;          /* sums of px, py and x py - y px */
+} row;
+
+static void row_init(const march *m, const rr_creep_opts *o, int j, row *r)
+{
+    const rr_contact_case *c = m->c;
+    const double yh = -1.0 + (2.0 * j + 1.0) / o->ny;
+    r->j = j;
+    r->w2 = 1.0 - yh * yh;
+    r->y = yh * c->b;
+    r->aj = o->grid == RR_GRID_STRIPS ? c->a * sqrt(r->w2) : c->a;
+    r->h = 2.0 * r->aj / o->nx;
+    r->gx = c->cx / m->fl->L1 - c->cphi * r->y / m->fl->L3;
+    r->gy = c->cy / m->fl->L2;
+    r->gphi = c->cphi / m->fl->L3;
+    r->px = r->py = r->sx = r->sy = r->sm = 0.0;
+}
+
+/* Element i of a row.  Kalker's explicit scheme: an element adds the rigid
+ * slip at its centre times one element length to its upstream neighbour's
+ * traction; the first element inside the contact starts from zero. */
+static void element(march *m, row *r, int i)
+{
+    const double x = r->aj - (i + 0.5) * r->h, t = x * m->inv_a, q = r->w2 - t * t;
+    double pn = 0.0;
+    int slip = 0;
+
+    if (q > 0.0) {
+        const double tx = r->px - r->gx * r->h;
+        const double ty = r->py - (r->gy + r->gphi * x) * r->h;
+        const double m2 = tx * tx + ty * ty;
+        double g;
+        pn = m->scale * (m->parabolic ? q : sqrt(q));
+        g = m->mu_bound * pn;
+        slip = m2 > g * g;
+        if (slip) {
+            const double mag = sqrt(m2);
+            if (m->local) {
+                const double lx = m->fl->L1 * tx, ly = m->fl->L2 * ty;
+                g = falling_bound(m->fr, m->c->speed, pn, mag,
+                                  sqrt(lx * lx + ly * ly) / (mag * r->h), &m->converged);
+            }
+            r->px = tx * (g / mag);
+            r->py = ty * (g / mag);
+            m->nslip++;
+        } else {
+            r->px = tx;
+            r->py = ty;
+        }
+        r->sx += r->px;
+        r->sy += r->py;
+        r->sm += x * r->py - r->y * r->px;
+    } else {
+        r->px = r->py = 0.0;        /* outside the ellipse: no contact */
+    }
+    if (m->field) {
+        rr_fastsim_field *f = m->field;
+        const int idx = r->j * m->nx + (m->nx - 1 - i);
+        if (f->x) f->x[idx] = x;
+        if (f->y) f->y[idx] = r->y;
+        if (f->pn) f->pn[idx] = pn;
+        if (f->px) f->px[idx] = r->px;
+        if (f->py) f->py[idx] = r->py;
+        if (f->slip) f->slip[idx] = (signed char)slip;
+    }
+}
+
 int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_opts *o,
                rr_forces *out, rr_fastsim_field *field)
 {
     rr_kalker_coeffs k;
     flex fl;
+    march m;
     const int nx = o->nx, ny = o->ny;
-    double dy, S = 0.0, scale, fx = 0.0, fy = 0.0, mz = 0.0, mu_bound;
+    double dy, inv_a, S = 0.0, scale, fx = 0.0, fy = 0.0, mz = 0.0, mu_bound;
     int st, i, j, falling, local, converged = 1, nslip = 0;
 
     st = rr_creep_opts_check(o);
@@ -107,6 +199,7 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
      * at a centre is scale * q or scale * sqrt(q), q = 1 - x^2/a^2 - y^2/b^2,
      * with scale such that the pressure sums to N over the grid. */
     dy = 2.0 * c->b / ny;
+    inv_a = 1.0 / c->a;
     for (j = 0; j < ny; j++) {
         const double yh = -1.0 + (2.0 * j + 1.0) / ny, w2 = 1.0 - yh * yh;
         const double aj = o->grid == RR_GRID_STRIPS ? c->a * sqrt(w2) : c->a;
@@ -115,7 +208,7 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
         /* the same arithmetic as the march below, so both agree on which
          * elements lie inside the ellipse */
         for (i = 0; i < nx; i++) {
-            const double x = aj - (i + 0.5) * h, t = x / c->a, q = w2 - t * t;
+            const double x = aj - (i + 0.5) * h, t = x * inv_a, q = w2 - t * t;
             if (q > 0.0)
                 row += o->bound == RR_BOUND_PARABOLIC ? q : sqrt(q);
         }
@@ -123,65 +216,44 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
     }
     scale = c->N / (S * dy);
 
-    for (j = 0; j < ny; j++) {
-        const double yh = -1.0 + (2.0 * j + 1.0) / ny, w2 = 1.0 - yh * yh;
-        const double y = yh * c->b;
-        const double aj = o->grid == RR_GRID_STRIPS ? c->a * sqrt(w2) : c->a;
-        const double h = 2.0 * aj / nx;
-        /* rigid slip per unit length divided by the flexibility */
-        const double gx = c->cx / fl.L1 - c->cphi * y / fl.L3;
-        const double gy = c->cy / fl.L2, gphi = c->cphi / fl.L3;
-        double px = 0.0, py = 0.0, sx = 0.0, sy = 0.0, sm = 0.0;
-
-        for (i = 0; i < nx; i++) {
-            /* Kalker's explicit scheme: an element adds the rigid slip at its
-             * centre times one element length to its upstream neighbour's
-             * traction; the first element inside the contact starts from zero. */
-            const double x = aj - (i + 0.5) * h, t = x / c->a, q = w2 - t * t;
-            double pn = 0.0, g, tx, ty, m2;
-            int slip = 0;
-
-            if (q > 0.0) {
-                pn = scale * (o->bound == RR_BOUND_PARABOLIC ? q : sqrt(q));
-                tx = px - gx * h;
-                ty = py - (gy + gphi * x) * h;
-                m2 = tx * tx + ty * ty;
-                g = mu_bound * pn;
-                slip = m2 > g * g;
-                if (slip) {
-                    const double m = sqrt(m2);
-                    if (local) {
-                        const double lx = fl.L1 * tx, ly = fl.L2 * ty;
-                        g = falling_bound(fr, c->speed, pn, m,
-                                          sqrt(lx * lx + ly * ly) / (m * h), &converged);
-                    }
-                    px = tx * (g / m);
-                    py = ty * (g / m);
-                    nslip++;
-                } else {
-                    px = tx;
-                    py = ty;
-                }
-                sx += px;
-                sy += py;
-                sm += x * py - y * px;
-            } else {
-                px = py = 0.0;        /* outside the ellipse: no contact */
-            }
-            if (field) {
-                const int idx = j * nx + (nx - 1 - i);
-                if (field->x) field->x[idx] = x;
-                if (field->y) field->y[idx] = y;
-                if (field->pn) field->pn[idx] = pn;
-                if (field->px) field->px[idx] = px;
-                if (field->py) field->py[idx] = py;
-                if (field->slip) field->slip[idx] = (signed char)slip;
-            }
+    m.c = c;
+    m.fr = fr;
+    m.fl = &fl;
+    m.scale = scale;
+    m.inv_a = inv_a;
+    m.mu_bound = mu_bound;
+    m.parabolic = o->bound == RR_BOUND_PARABOLIC;
+    m.local = local;
+    m.converged = 1;
+    m.nslip = 0;
+    m.field = field;
+    m.nx = nx;
+    /* Rows are independent: marching several at once lets the processor overlap
+     * their serial chains (each element waits for its upstream neighbour);
+     * the sums are still added row by row, in order. */
+    for (j = 0; j < ny; j += ROWS_AT_ONCE) {
+        row r[ROWS_AT_ONCE];
+        const int nrow = ny - j < ROWS_AT_ONCE ? ny - j : ROWS_AT_ONCE;
+        int k;
+        for (k = 0; k < nrow; k++)
+            row_init(&m, o, j + k, &r[k]);
+        if (nrow == ROWS_AT_ONCE) {
+            for (i = 0; i < nx; i++)
+                for (k = 0; k < ROWS_AT_ONCE; k++)
+                    element(&m, &r[k], i);
+        } else {
+            for (k = 0; k < nrow; k++)
+                for (i = 0; i < nx; i++)
+                    element(&m, &r[k], i);
         }
-        fx += sx * h;
-        fy += sy * h;
-        mz += sm * h;
+        for (k = 0; k < nrow; k++) {
+            fx += r[k].sx * r[k].h;
+            fy += r[k].sy * r[k].h;
+            mz += r[k].sm * r[k].h;
+        }
     }
+    converged = m.converged;
+    nslip = m.nslip;
     out->fx = fx * dy;
     out->fy = fy * dy;
     out->mz = mz * dy;

@@ -14,12 +14,13 @@ double rr_estar(double E1, double nu1, double E2, double nu2)
 }
 
 /* ln of the curvature ratio max/min produced by ellipticity k = exp(t):
- * (E/k^2 - K)/(K - E) = (3 R_F / R_D - 1) / k^2 with R_* = R_*(0, k^2, 1). */
-static double log_ratio(double t, double *rf, double *rd)
+ * (E/k^2 - K)/(K - E) = (E - k^2 K) / (k^2 (K - E)), both differences from
+ * the AGM without cancellation (rr_ellip_agm). */
+static double log_ratio(double t, double *K, double *d_lo)
 {
-    double k2 = exp(2.0 * t);
-    rr_carlson_rf_rd(0.0, k2, 1.0, rf, rd);
-    return log(3.0 * *rf / *rd - 1.0) - 2.0 * t;
+    double k = exp(t), d_hi;
+    rr_ellip_agm(k, K, d_lo, &d_hi);
+    return log(d_hi / *d_lo) - 2.0 * t;
 }
 
 static void set_nan(rr_hertz_result *out)
@@ -29,7 +30,7 @@ static void set_nan(rr_hertz_result *out)
 
 int rr_hertz(double A, double B, double N, double estar, rr_hertz_result *out)
 {
-    double amin, rho, lrho, rf, rd, t, major, minor, k;
+    double amin, rho, lrho, K, d_lo, t, major, minor, k;
 
     if (!isfinite(A) || !isfinite(B) || !isfinite(N)) {
         set_nan(out);
@@ -57,8 +58,8 @@ int rr_hertz(double A, double B, double N, double estar, rr_hertz_result *out)
 
     if (lrho < 1e-15) {
         t = 0.0;                          /* circular contact */
-        rf = 0.5 * RR_PI;
-        rd = 0.75 * RR_PI;
+        K = 0.5 * RR_PI;
+        d_lo = 0.0;
     } else {
         /* f(t) = log_ratio(t) - ln(rho) falls monotonically in t = ln k,
          * from +inf as t -> -inf to -ln(rho) at t = 0.  Greenwood's
@@ -68,13 +69,13 @@ int rr_hertz(double A, double B, double N, double estar, rr_hertz_result *out)
         int it;
 
         t0 = -2.0 / 3.0 * lrho;
-        f0 = log_ratio(t0, &rf, &rd) - lrho;
+        f0 = log_ratio(t0, &K, &d_lo) - lrho;
         t1 = t0 + f0 / 1.5;
         for (it = 0; it < 200; it++) {
             double tn;
             if (!(t1 > t_lo && t1 < t_hi))
                 t1 = 0.5 * (t_lo + t_hi);
-            f1 = log_ratio(t1, &rf, &rd) - lrho;
+            f1 = log_ratio(t1, &K, &d_lo) - lrho;
             if (f1 > 0.0)
                 t_lo = t1;
             else
@@ -89,8 +90,12 @@ int rr_hertz(double A, double B, double N, double estar, rr_hertz_result *out)
         t = t1;
     }
     k = exp(t);
-    /* major^3 = 3N (K - E) / (2 pi E* e^2 A_min), K - E = (e^2/3) R_D */
-    major = cbrt(N * rd / (2.0 * RR_PI * estar * amin));
+    {
+        /* major^3 = 3N (K - E) / (2 pi E* e^2 A_min); (K - E)/e^2 -> pi/4 as e -> 0 */
+        const double e2 = (1.0 - k) * (1.0 + k);
+        const double kme_e2 = e2 > 0.0 ? K * d_lo / e2 : 0.25 * RR_PI;
+        major = cbrt(3.0 * N * kme_e2 / (2.0 * RR_PI * estar * amin));
+    }
     minor = k * major;
     if (A <= B) {
         out->a = major;
@@ -100,6 +105,6 @@ int rr_hertz(double A, double B, double N, double estar, rr_hertz_result *out)
         out->b = major;
     }
     out->p0 = 1.5 * N / (RR_PI * out->a * out->b);
-    out->delta = out->p0 * minor * rf / estar;   /* Johnson eq. (4.41), K = R_F */
+    out->delta = out->p0 * minor * K / estar;    /* Johnson eq. (4.41) */
     return RR_OK;
 }

@@ -191,8 +191,42 @@ static void test_monotone(void)
     CHECK(okKE, "E <= K");
 }
 
+/* The AGM path that Hertz uses against Carlson's integrals. */
+static void test_agm(void)
+{
+    static const double kcs[] = {1e-12, 1e-6, 1e-3, 0.05, 0.3, 0.7, 0.95, 0.999, 1.0 - 1e-9};
+    size_t i;
+    for (i = 0; i < sizeof kcs / sizeof kcs[0]; i++) {
+        const double kc = kcs[i], mc = kc * kc;
+        double K, E, Ka, d_lo, d_hi, e2 = (1.0 - kc) * (1.0 + kc);
+        int st = rr_ellip_agm(kc, &Ka, &d_lo, &d_hi);
+        rr_ellip_ke(mc, &K, &E);
+        CHECK_STATUS(st, RR_OK, "agm status");
+        /* two independent algorithms, both to ~1e-15: agree to 1e-14 */
+        CHECK_CLOSE(Ka, K, 0.0, 1e-14, "agm K = Carlson K");
+        /* the differences against their cancellation-free Carlson forms,
+         * K - E = (m/3) R_D and E - kc^2 K = m (R_F - R_D/3), m = e^2;
+         * 1e-13: two algorithms at ~1e-15 each, S summed over a few terms */
+        {
+            double rf, rd;
+            rr_carlson_rf_rd(0.0, mc, 1.0, &rf, &rd);
+            CHECK_CLOSE(d_lo * Ka, e2 / 3.0 * rd, 0.0, 1e-13, "agm (K - E)/K");
+            CHECK_CLOSE(d_hi * Ka, e2 * (rf - rd / 3.0), 0.0, 1e-13, "agm (E - kc^2 K)/K");
+        }
+        (void)E;
+    }
+    {
+        double K, d_lo, d_hi;
+        CHECK_STATUS(rr_ellip_agm(0.0, &K, &d_lo, &d_hi), RR_ERR_GEOMETRY, "agm kc = 0");
+        CHECK(K != K && d_lo != d_lo && d_hi != d_hi, "agm kc = 0: NaN");
+        CHECK_STATUS(rr_ellip_agm(1.5, &K, &d_lo, &d_hi), RR_ERR_GEOMETRY, "agm kc > 1");
+        CHECK_STATUS(rr_ellip_agm(NAN, &K, &d_lo, &d_hi), RR_ERR_NONFINITE, "agm NaN");
+    }
+}
+
 int main(void)
 {
+    test_agm();
     test_known_values();
     test_log_limit();
     test_legendre();
