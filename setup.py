@@ -8,8 +8,10 @@ import numpy
 from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
 
-# GCC/Clang-style flags; not applied when the compiler is MSVC.
-UNIX_COMPILE_ARGS = ["-std=c99", "-O3", "-Wall", "-Wextra"]
+# GCC/Clang-style flags; not applied when the compiler is MSVC.  Python's own
+# CFLAGS bring -fwrapv, which slows the FASTSIM march by ~15 %; the core never
+# relies on signed overflow (UndefinedBehaviorSanitizer checks it), so undo it.
+UNIX_COMPILE_ARGS = ["-std=c99", "-O3", "-fno-wrapv", "-Wall", "-Wextra"]
 
 
 class BuildExt(build_ext):

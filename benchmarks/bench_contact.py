@@ -1,0 +1,784 @@
+#!/usr/bin/env python3
+"""Speed benchmarks of rollerrig's contact functions, measured side by side.
+
+    python benchmarks/bench_contact.py            # full run (about 1-2 minutes)
+    python benchmarks/bench_contact.py --quick    # smoke run with small sizes
+
+Measures on this machine, in one run, with time.perf_counter and the best of
+several repeats (see benchmarks/README.md):
+
+1. one thread: Hertz, linear theory, Polach and FASTSIM (10x10, 20x20, 30x30
+   rect grid, blended 30x30, strips 30x30), each batched (one call on many
+   random realistic cases) and one call per case (a Python loop of scalar
+   calls), and the C kernel alone (benchmarks/bench_kernel.c, compiled here
+   into a temporary directory, timed with clock_gettime over the same cases,
+   and built a second time with the extension's own compiler flags); the
+   batch overhead per case is the batched per-case time minus the C kernel's;
+   the measurements of a row take turns, so a slow spell of the machine hits
+   them alike;
+2. the speed-up of two threads over one (concurrent.futures.ThreadPoolExecutor,
+   the binding releases the GIL) for a large FASTSIM 20x20 and Polach batch
+   split in two halves;
+3. the pure-Python twin (rollerrig.twin.fastsim) against the C batch on the
+   same FASTSIM 30x30 cases;
+4. a published reference figure for context (CONTACT, not measured here).
+
+Writes a Markdown report (benchmarks/RESULTS.md for a full run,
+benchmarks/out/RESULTS-quick.md for --quick, or --out PATH) and prints it.
+Timing is reported, never asserted: the exit status is 0 whether or not a
+goal is met.
+"""
+import argparse
+import concurrent.futures
+import datetime
+import gc
+import glob
+import inspect
+import json
+import math
+import os
+import platform
+import shlex
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+import rollerrig
+from rollerrig import contact
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+
+# Goals (a figure is compared with its goal in the report; nothing is asserted).
+GOAL_FASTSIM30_US = 10.0        # FASTSIM 30x30, batched, one thread: <= 10 us per case
+GOAL_RATE = 2e6                 # Polach and Hertz, batched, one thread: >= 2e6 cases/s
+GOAL_OVERHEAD_US = 0.2          # batch overhead: <= 0.2 us per case
+GOAL_THREADS = 1.8              # 2 threads >= 1.8x one
+
+# CONTACT (E. Vollebregt) through its Python interface: 0.33 ms per FASTSIM
+# case at 31x31 elements -- a published figure, not measured here.
+CONTACT_FASTSIM31_US = 330.0
+
+MU = 0.3
+G = 8.2e10
+NU = 0.28
+E_STEEL = 2.1e11
+
+SIZES = {
+    # cheap: batch size for Hertz / linear / Polach; fastsim_work: FASTSIM
+    # elements (cases x nx x ny) per batched call; loop: cases in the
+    # one-call-per-case loop; threads_*: cases split over the threads.
+    "full": dict(cheap=1_000_000, fastsim_work=36_000_000, loop=2000, repeats=5,
+                 fastsim_repeats=4, threads_fastsim=200_000, threads_polach=4_000_000,
+                 thread_repeats=5, twin_cases=20, twin_repeats=5, twin_tile=500),
+    "quick": dict(cheap=50_000, fastsim_work=1_500_000, loop=100, repeats=2,
+                  fastsim_repeats=2, threads_fastsim=10_000, threads_polach=200_000,
+                  thread_repeats=2, twin_cases=4, twin_repeats=1, twin_tile=50),
+}
+
+# name, method, nx, ny, grid (one-thread section, rows in this order)
+FASTSIM_ROWS = [
+    ("FASTSIM 10x10", "fastsim", 10, 10, "rect"),
+    ("FASTSIM 20x20", "fastsim", 20, 20, "rect"),
+    ("FASTSIM 30x30", "fastsim", 30, 30, "rect"),
+    ("FASTSIM blended 30x30", "fastsim_blended", 30, 30, "rect"),
+    ("FASTSIM 30x30 strips", "fastsim", 30, 30, "strips"),
+]
+
+
+def log(msg):
+    print(msg, file=sys.stderr, flush=True)
+
+
+# --------------------------------------------------------------------- cases
+
+def creep_cases(rng, n):
+    """Random realistic cases: a, b 2-10 mm, N 1-100 kN (log-uniform),
+    creepages cx, cy up to 1e-2, spin up to 1 rad/m (a cphi up to 1e-2)."""
+    return dict(
+        cx=rng.uniform(-1e-2, 1e-2, n),
+        cy=rng.uniform(-1e-2, 1e-2, n),
+        cphi=rng.uniform(-1.0, 1.0, n),
+        a=rng.uniform(2e-3, 10e-3, n),
+        b=rng.uniform(2e-3, 10e-3, n),
+        N=np.exp(rng.uniform(math.log(1e3), math.log(1e5), n)),
+    )
+
+
+def hertz_cases(rng, n):
+    """Curvature sums A, B and loads N (1-100 kN) giving a = 2-10 mm and
+    B/A between 1/3 and 3.  All lengths of a Hertz contact scale as
+    (curvature)^(-1/3), so A, B follow from one untimed call at A = 1."""
+    N = np.exp(rng.uniform(math.log(1e3), math.log(1e5), n))
+    ratio = np.exp(rng.uniform(-math.log(3.0), math.log(3.0), n))
+    a0 = contact.hertz(1.0, ratio, N, errors="raise").a
+    A = (a0 / rng.uniform(2e-3, 10e-3, n)) ** 3
+    return dict(A=A, B=ratio * A, N=N)
+
+
+def slice_cases(cases, start, stop):
+    return {k: v[start:stop] for k, v in cases.items()}
+
+
+def call_creep(cases, method, nx=30, ny=30, grid="rect"):
+    return contact.creep_forces(cases["cx"], cases["cy"], cases["cphi"], a=cases["a"],
+                                b=cases["b"], N=cases["N"], mu=MU, G=G, nu=NU,
+                                method=method, nx=nx, ny=ny, grid=grid)
+
+
+def call_hertz(cases):
+    return contact.hertz(cases["A"], cases["B"], cases["N"], E=E_STEEL, nu=NU)
+
+
+# -------------------------------------------------------------------- timing
+
+def calibration():
+    """A fixed pure-Python workload (about 20 ms), timed best of 3 before and
+    after every section: if the machine gets slower during the run (another
+    process, another virtual machine on the host, a lower clock), this
+    time grows even though the code has not changed."""
+    def work():
+        x = 0
+        for i in range(400_000):
+            x += i * i % 7
+        return x
+    return best_time(work, 3)
+
+
+def best_time(fn, repeats):
+    """Best wall time of `repeats` calls of fn() (garbage collector off)."""
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        best = math.inf
+        for _ in range(repeats):
+            t0 = time.perf_counter()
+            fn()
+            best = min(best, time.perf_counter() - t0)
+    finally:
+        if enabled:
+            gc.enable()
+    return best
+
+
+def creep_loop(cases, k, method, nx, ny, grid):
+    """A Python loop of k scalar creep_forces calls (inputs as Python floats)."""
+    cols = [cases[name][:k].tolist() for name in ("cx", "cy", "cphi", "a", "b", "N")]
+    rows = list(zip(*cols))
+    f = contact.creep_forces
+
+    def run():
+        for cx, cy, cphi, a, b, N in rows:
+            f(cx, cy, cphi, a=a, b=b, N=N, mu=MU, G=G, nu=NU, method=method, nx=nx, ny=ny,
+              grid=grid)
+    return run
+
+
+def hertz_loop(cases, k):
+    rows = list(zip(*(cases[name][:k].tolist() for name in ("A", "B", "N"))))
+    f = contact.hertz
+
+    def run():
+        for A, B, N in rows:
+            f(A, B, N, E=E_STEEL, nu=NU)
+    return run
+
+
+# ------------------------------------------------------------- C kernel loop
+
+def extension_flags():
+    """The flags setuptools compiles rollerrig._core with: Python's CFLAGS and
+    CCSHARED (sysconfig), then setup.py's -std=c99 -O3 (last wins)."""
+    import sysconfig
+    flags = shlex.split(sysconfig.get_config_var("CFLAGS") or "") \
+        + shlex.split(sysconfig.get_config_var("CCSHARED") or "")
+    return [f for f in flags if f.startswith(("-O", "-f", "-D", "-m", "-g"))] \
+        + ["-std=c99", "-O3"]
+
+
+class Kernel:
+    """benchmarks/bench_kernel.c compiled into a temporary directory, with
+    the plain command of the README (`flags` None) or with other flags."""
+
+    def __init__(self, tmpdir, flags=None, name="bench_kernel"):
+        self.tmpdir = tmpdir
+        self.exe = os.path.join(tmpdir, name)
+        cc = os.environ.get("CC", "cc")
+        sources = sorted(glob.glob(os.path.join("csrc", "rr_*.c")))
+        opts = ["-O3", "-std=c99"] if flags is None else list(flags)
+        self.command = [cc] + opts + ["-I", "csrc", os.path.join("benchmarks", "bench_kernel.c")] \
+            + sources + ["-lm", "-o", self.exe]
+        self.error = None
+        try:
+            proc = subprocess.run(self.command, cwd=ROOT, capture_output=True, text=True)
+            if proc.returncode != 0:
+                self.error = proc.stderr.strip() or f"{cc} exited with {proc.returncode}"
+        except OSError as exc:
+            self.error = str(exc)
+        try:
+            out = subprocess.run([cc, "--version"], capture_output=True, text=True)
+            self.cc_version = out.stdout.splitlines()[0] if out.stdout else cc
+        except OSError:
+            self.cc_version = "(no C compiler)"
+        self.command_text = shlex.join([cc] + opts + ["-I", "csrc", "benchmarks/bench_kernel.c"]) \
+            + " csrc/rr_*.c -lm"
+
+    @property
+    def ok(self):
+        return self.error is None
+
+    def run(self, path, repeats=1, method=None, nx=0, ny=0, grid=None):
+        """Time the kernel over the cases in `path` (write_cases); method None
+        for Hertz.  Returns bench_kernel's JSON line as a dict."""
+        args = ["hertz", path, str(repeats)] if method is None else \
+            ["creep", path, str(repeats), str(contact.METHODS[method]), str(nx), str(ny),
+             str(contact.GRIDS[grid])]
+        proc = subprocess.run([self.exe] + args, capture_output=True, text=True)
+        if proc.returncode != 0:
+            raise RuntimeError(f"bench_kernel failed: {proc.stderr.strip()}")
+        return json.loads(proc.stdout)
+
+
+def write_cases(tmpdir, cases, hertz):
+    """The case file of bench_kernel.c: the binding's argument order, constants
+    as length-1 columns (broadcast, as the binding does)."""
+    if hertz:
+        cols = [cases["A"], cases["B"], cases["N"], E_STEEL, NU, E_STEEL, NU]
+    else:
+        cols = [cases["cx"], cases["cy"], cases["cphi"], cases["a"], cases["b"], cases["N"],
+                MU, G, NU, 0.0, 1.0, 0.0]     # mu, G, nu, speed, friction A, B (Coulomb)
+    n = cols[0].size
+    path = os.path.join(tmpdir, "cases.bin")
+    with open(path, "wb") as fh:
+        np.array([n, len(cols)], dtype=np.int64).tofile(fh)
+        for col in cols:
+            col = np.ascontiguousarray(np.atleast_1d(np.asarray(col, dtype=np.float64)))
+            np.array([col.size], dtype=np.int64).tofile(fh)
+            col.tofile(fh)
+    return path
+
+
+def interleaved(fns, repeats):
+    """Best time of each function over `repeats` rounds, the functions taking
+    turns within a round so that a slow spell of the machine hits them all
+    alike.  Each function returns its own elapsed time in seconds."""
+    best = [math.inf] * len(fns)
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        for _ in range(repeats):
+            for k, fn in enumerate(fns):
+                best[k] = min(best[k], fn())
+    finally:
+        if enabled:
+            gc.enable()
+    return best
+
+
+def timed(fn):
+    def run():
+        t0 = time.perf_counter()
+        fn()
+        return time.perf_counter() - t0
+    return run
+
+
+def checksum(arrays, status):
+    ok = status >= 0
+    return float(sum(np.sum(a[ok]) for a in arrays))
+
+
+# ------------------------------------------------------------------ sections
+
+def one_thread(rng, sz, kernel, kernel_ext):
+    rows = []
+    cheap = creep_cases(rng, sz["cheap"])
+    hcases = hertz_cases(rng, sz["cheap"])
+    specs = [("Hertz", "hertz", 0, 0, "")] \
+        + [("Linear theory", "linear", 30, 30, "rect"), ("Polach", "polach", 30, 30, "rect")] \
+        + FASTSIM_ROWS
+    for name, method, nx, ny, grid in specs:
+        fast = method.startswith("fastsim")
+        if fast:
+            n = max(1000, int(sz["fastsim_work"] // (nx * ny)))
+            cases = creep_cases(rng, n)
+            repeats = sz["fastsim_repeats"]
+        else:
+            n = sz["cheap"]
+            cases = hcases if method == "hertz" else cheap
+            repeats = sz["repeats"]
+        loop_n = min(sz["loop"], n)
+        log(f"  {name}: {n} cases batched, {loop_n} in a loop ...")
+        if method == "hertz":
+            call_hertz(slice_cases(cases, 0, 100))              # warm-up
+            res = call_hertz(cases)
+            outs, status = (res.a, res.b, res.p0, res.delta), res.status
+            batch = timed(lambda: call_hertz(cases))
+            loop = hertz_loop(cases, loop_n)
+            kmethod = None
+        else:
+            call_creep(slice_cases(cases, 0, 100), method, nx, ny, grid)
+            res = call_creep(cases, method, nx, ny, grid)
+            outs, status = (res.fx, res.fy, res.mz), res.status
+            batch = timed(lambda: call_creep(cases, method, nx, ny, grid))
+            loop = creep_loop(cases, loop_n, method, nx, ny, grid)
+            kmethod = method
+        fns = [batch, timed(loop)]
+        kernels = [(key, kern) for key, kern in (("kernel_us", kernel),
+                                                  ("kernel_ext_us", kernel_ext)) if kern.ok]
+        last = {}
+        if kernels:
+            path = write_cases(kernel.tmpdir, cases, method == "hertz")
+            for key, kern in kernels:
+                def run_kernel(key=key, kern=kern):
+                    last[key] = kern.run(path, 1, kmethod, nx, ny, grid)
+                    return last[key]["best_s"]
+                fns.append(run_kernel)
+        times = interleaved(fns, repeats)
+        row = dict(name=name, method=method, nx=nx, ny=ny, grid=grid, n=n, loop_n=loop_n,
+                   repeats=repeats, batch_us=times[0] / n * 1e6,
+                   loop_us=times[1] / loop_n * 1e6, not_ok=int(np.count_nonzero(status)),
+                   kernel_us=None, kernel_ext_us=None, agree=None)
+        ref = checksum(outs, status)
+        for (key, _), t in zip(kernels, times[2:]):
+            row[key] = t / n * 1e6
+            k = last[key]
+            agree = abs(k["checksum"] - ref) <= 1e-9 * max(1.0, abs(ref)) \
+                and k["bad"] == int(np.count_nonzero(status < 0))
+            row["agree"] = agree if row["agree"] is None else row["agree"] and agree
+        rows.append(row)
+    return rows
+
+
+def threads(rng, sz):
+    results = []
+    for name, method, nx, n in (("FASTSIM 20x20", "fastsim", 20, sz["threads_fastsim"]),
+                                ("Polach", "polach", 30, sz["threads_polach"])):
+        log(f"  {name}: {n} cases in two halves, 1 and 2 threads ...")
+        cases = creep_cases(rng, n)
+        halves = [slice_cases(cases, 0, n // 2), slice_cases(cases, n // 2, n)]
+
+        def work(part, method=method, nx=nx):
+            return call_creep(part, method, nx, nx, "rect")
+
+        with concurrent.futures.ThreadPoolExecutor(1) as pool1, \
+                concurrent.futures.ThreadPoolExecutor(2) as pool2:
+            for pool in (pool1, pool2):                         # warm-up: start the workers
+                list(pool.map(work, [slice_cases(h, 0, 100) for h in halves]))
+            best = {1: math.inf, 2: math.inf}
+            cpu = {1: 0.0, 2: 0.0}
+            gc.disable()
+            try:
+                for _ in range(sz["thread_repeats"]):        # interleaved: same conditions
+                    for workers, pool in ((1, pool1), (2, pool2)):
+                        c0 = time.process_time()
+                        t0 = time.perf_counter()
+                        list(pool.map(work, halves))
+                        t = time.perf_counter() - t0
+                        if t < best[workers]:
+                            best[workers] = t
+                            cpu[workers] = (time.process_time() - c0) / t
+            finally:
+                gc.enable()
+        results.append(dict(name=name, n=n, t1=best[1], t2=best[2],
+                            speedup=best[1] / best[2], cpu2=cpu[2],
+                            repeats=sz["thread_repeats"]))
+    return results
+
+
+def twin_section(rng, sz):
+    """The pure-Python twin against the C batch on the same FASTSIM 30x30 cases."""
+    from rollerrig import twin
+    fn = twin.fastsim
+    params = inspect.signature(fn).parameters
+    has_grid = "grid" in params
+    grid = "rect" if has_grid else "strips"
+    k = sz["twin_cases"]
+    cases = creep_cases(rng, k)
+    fixed = dict(mu=MU, G=G, nu=NU, nx=30, ny=30, bound="parabolic", grid=grid,
+                 variant="fastsim", method="fastsim", speed=0.0, A=1.0, B=0.0)
+    accepts_any = any(p.kind is p.VAR_KEYWORD for p in params.values())
+    kwargs = {key: v for key, v in fixed.items() if key in params or
+              (accepts_any and key not in ("variant", "method"))}
+    per_case = [dict(kwargs, **{name: float(cases[name][i])
+                                for name in ("cx", "cy", "cphi", "a", "b", "N")})
+                for i in range(k)]
+    known = set(per_case[0])
+    missing = [p.name for p in params.values()
+               if p.default is p.empty and p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY)
+               and p.name not in known]
+    if missing:
+        raise RuntimeError(f"twin.fastsim needs arguments this benchmark does not know: "
+                           f"{missing}")
+    log(f"  twin.fastsim{inspect.signature(fn)}"[:200])
+    log(f"  twin: {k} cases, grid={grid!r} ...")
+    twin_out = [fn(**kw)[:3] for kw in per_case]               # also the warm-up
+    c_out = call_creep(cases, "fastsim", 30, 30, grid)
+    tiled = {name: np.tile(v, sz["twin_tile"]) for name, v in cases.items()}
+
+    def c_small():                    # one call on the few cases: best of 20
+        return min(timed(lambda: call_creep(cases, "fastsim", 30, 30, grid))()
+                   for _ in range(20))
+    t_twin, t_c, t_c_small = interleaved(
+        [timed(lambda: [fn(**kw) for kw in per_case]),
+         timed(lambda: call_creep(tiled, "fastsim", 30, 30, grid)), c_small],
+        sz["twin_repeats"])
+    scale = MU * cases["N"]
+    diff = max(math.hypot(tw[0] - fx, tw[1] - fy) / s
+               for tw, fx, fy, s in zip(twin_out, c_out.fx, c_out.fy, scale))
+    return dict(cases=k, grid=grid, has_grid=has_grid, signature=str(inspect.signature(fn)),
+                twin_us=t_twin / k * 1e6, c_us=t_c / (k * sz["twin_tile"]) * 1e6,
+                c_small_us=t_c_small / k * 1e6, tile=sz["twin_tile"],
+                repeats=sz["twin_repeats"], max_diff=diff)
+
+
+# -------------------------------------------------------------------- report
+
+class CpuMonitor:
+    """CPU time used by other processes while a section ran, from /proc/stat
+    (all CPUs' busy time) minus this process's own (and its children's).
+    On a shared machine this tells whether a figure was measured on a quiet
+    machine: 0 is quiet, 1.0 means another process kept one core busy."""
+
+    def __init__(self):
+        self.sections = []
+        calibration()                 # warm-up, not recorded
+        try:
+            self.tick = os.sysconf("SC_CLK_TCK")
+            self._busy()
+        except (OSError, ValueError, AttributeError):
+            self.tick = None
+
+    def _busy(self):
+        with open("/proc/stat") as fh:
+            fields = [int(v) for v in fh.readline().split()[1:9]]
+        user, nice, system, _idle, _iowait, irq, softirq, steal = fields
+        return (user + nice + system + irq + softirq + steal) / self.tick
+
+    def _snap(self):
+        t = os.times()
+        own = t.user + t.system + t.children_user + t.children_system
+        return time.perf_counter(), own, self._busy() if self.tick else math.nan
+
+    def section(self, name, fn, *args):
+        cal0 = calibration()
+        w0, own0, busy0 = self._snap()
+        result = fn(*args)
+        w1, own1, busy1 = self._snap()
+        cal1 = calibration()
+        wall = w1 - w0
+        own = (own1 - own0) / wall
+        other = max(0.0, (busy1 - busy0) - (own1 - own0)) / wall
+        self.sections.append(dict(name=name, wall=wall, own=own, other=other,
+                                  cal=(cal0, cal1)))
+        return result
+
+
+def code_state():
+    """The commit measured, and whether the C core or the package differ from it."""
+    try:
+        head = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT,
+                              capture_output=True, text=True, check=True).stdout.strip()
+        dirty = subprocess.run(["git", "status", "--porcelain", "--", "csrc", "rollerrig"],
+                               cwd=ROOT, capture_output=True, text=True,
+                               check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "not a git checkout"
+    return f"commit {head}" + (" with uncommitted changes in csrc/ or rollerrig/"
+                               if dirty else "")
+
+
+def machine_info(kernel):
+    model = "unknown"
+    try:
+        with open("/proc/cpuinfo") as fh:
+            for line in fh:
+                if line.startswith("model name"):
+                    model = line.split(":", 1)[1].strip()
+                    break
+    except OSError:
+        pass
+    try:
+        affinity = len(os.sched_getaffinity(0))
+    except AttributeError:
+        affinity = os.cpu_count()
+    return dict(nproc=affinity, cpu_count=os.cpu_count(), cpu=model,
+                python=platform.python_version(), numpy=np.__version__,
+                rollerrig=getattr(rollerrig, "__version__", "?"), cc=kernel.cc_version,
+                code=code_state(),
+                platform=platform.platform())
+
+
+def fmt(x, digits=3):
+    if x is None:
+        return "n/a"
+    if x == 0:
+        return "0"
+    ax = abs(x)
+    if ax >= 1e5 or ax < 1e-3:
+        return f"{x:.{digits - 1}e}"
+    return f"{x:.{max(0, digits - 1 - int(math.floor(math.log10(ax))))}f}"
+
+
+def verdict(ok):
+    return "n/a" if ok is None else ("pass" if ok else "**miss**")
+
+
+def twin_table(L, tw):
+    note = ("the twin has a `grid` parameter: both use grid=\"rect\"" if tw["has_grid"] else
+            "the twin has no `grid` parameter (it marches Kalker's strips), so the C side "
+            "uses grid=\"strips\" here")
+    L.append(f"rollerrig.twin.fastsim{tw['signature']} against creep_forces(method=\"fastsim\") "
+             f"at 30x30, parabolic bound, on the same {tw['cases']} cases; {note}. "
+             f"C batched: one call on the {tw['cases']} cases tiled {tw['tile']} times.")
+    L.append("")
+    L.append("| implementation | us/case | ratio twin / C |")
+    L.append("| --- | ---: | ---: |")
+    L.append(f"| twin (Python loop, best of {tw['repeats']}) | {fmt(tw['twin_us'])} | |")
+    L.append(f"| C batched ({tw['cases']} x {tw['tile']} cases) | {fmt(tw['c_us'])} | "
+             f"{tw['twin_us'] / tw['c_us']:.0f}x |")
+    L.append(f"| C, one call on the {tw['cases']} cases only | {fmt(tw['c_small_us'])} | "
+             f"{tw['twin_us'] / tw['c_small_us']:.0f}x |")
+    L.append("")
+    L.append(f"Largest difference twin - C on these cases: |dF| = {fmt(tw['max_diff'])} "
+             "mu N (information only; the twin may lag a change of the C core).")
+    L.append("")
+
+
+def report(args, info, load0, load1, date, rows, thr, tw, kernel, kernel_ext, mon, elapsed):
+    by = {r["name"]: r for r in rows}
+    L = []
+    L.append("# rollerrig speed benchmarks")
+    L.append("")
+    if args.quick:
+        L.append("**Quick smoke run (--quick): small sizes, figures indicative only.**")
+        L.append("")
+    L.append(f"- date: {date}")
+    L.append(f"- command: `{args.command}` (total {elapsed:.0f} s)")
+    L.append(f"- machine: {info['nproc']} cores available (os.cpu_count {info['cpu_count']}), "
+             f"CPU {info['cpu']}; {info['platform']}")
+    L.append(f"- python {info['python']}, numpy {info['numpy']}, rollerrig {info['rollerrig']}; "
+             f"C kernel built with `{kernel.command_text}` ({info['cc']}), and again "
+             f"with the extension's flags: `{kernel_ext.command_text}`")
+    L.append(f"- code: {info['code']}; the C kernel is compiled from the working tree, the "
+             "binding is the extension as last built (\"C = Python\" below checks that "
+             "they agree)")
+    L.append(f"- load average (1, 5, 15 min) at start {load0}, at end {load1}")
+    if mon.tick:
+        busy = ", ".join(f"{m['name']} {m['other']:.2f}" for m in mon.sections)
+        L.append(f"- other processes' CPU use during each section, in cores (0 = quiet "
+                 f"machine; from /proc/stat): {busy}")
+    if mon.sections:
+        ref = mon.sections[0]["cal"][0]
+        cal = ", ".join(f"{m['name']} {m['cal'][0] / ref:.2f} / {m['cal'][1] / ref:.2f}"
+                        for m in mon.sections)
+        cals = [c for m in mon.sections for c in m["cal"]]
+        spread = max(cals) / min(cals)
+        L.append(f"- machine speed check: a fixed {ref * 1e3:.0f} ms pure-Python loop timed "
+                 f"before / after each section, relative to the first: {cal}"
+                 + (f" -- **the machine's speed varied by {spread:.2f}x during this run; "
+                    "figures are less reliable**" if spread > 1.20
+                    else " (steady within this machine's usual jitter)"))
+    L.append("- every figure is the best of several repeats (time.perf_counter; the C kernel "
+             "with clock_gettime), all measured side by side in this one run; one thread "
+             "unless stated.")
+    L.append("")
+
+    # goals first, so that they are seen
+    goals = []
+    f30 = by.get("FASTSIM 30x30")
+    goals.append(("FASTSIM 30x30 (rect), batched", f"{fmt(f30['batch_us'])} us/case",
+                  f"<= {GOAL_FASTSIM30_US:g} us/case", f30["batch_us"] <= GOAL_FASTSIM30_US))
+    for name in ("Polach", "Hertz"):
+        rate = 1e6 / by[name]["batch_us"]
+        goals.append((f"{name}, batched", f"{fmt(rate)} cases/s", f">= {GOAL_RATE:.0e} cases/s",
+                      rate >= GOAL_RATE))
+    for name in ("Linear theory", "Polach", "Hertz"):
+        r = by[name]
+        if r["kernel_us"] is None:
+            goals.append((f"batch overhead, {name}", "not measured (no C kernel)",
+                          f"<= {GOAL_OVERHEAD_US} us/case", None))
+        else:
+            ov = r["batch_us"] - r["kernel_us"]
+            goals.append((f"batch overhead, {name}", f"{fmt(ov)} us/case",
+                          f"<= {GOAL_OVERHEAD_US} us/case", ov <= GOAL_OVERHEAD_US))
+    for t in thr:
+        goals.append((f"2 threads over 1, {t['name']}", f"{t['speedup']:.2f}x",
+                      f">= {GOAL_THREADS}x", t["speedup"] >= GOAL_THREADS))
+    L.append("## Goals")
+    L.append("")
+    L.append("| goal | measured | target | result |")
+    L.append("| --- | --- | --- | --- |")
+    for g in goals:
+        L.append(f"| {g[0]} | {g[1]} | {g[2]} | {verdict(g[3])} |")
+    L.append("")
+    if f30["kernel_us"] is not None and f30["kernel_ext_us"] is not None:
+        L.append(f"FASTSIM 30x30, the C kernel alone: {fmt(f30['kernel_us'])} us/case built with "
+                 f"the plain command, {fmt(f30['kernel_ext_us'])} us/case with the extension's "
+                 "flags (see the batch overhead below).")
+        L.append("")
+
+    L.append("## One thread: batched, one call per case, C kernel")
+    L.append("")
+    L.append("Batched: one call on n random cases (a, b 2-10 mm, N 1-100 kN, mu 0.3, "
+             "|cx|, |cy| <= 1e-2, |cphi| <= 1 rad/m; Hertz: A, B giving a = 2-10 mm, "
+             "B/A 1/3-3). One call per case: a Python loop of scalar calls on the first "
+             "cases. C kernel: benchmarks/bench_kernel.c looping over the same n cases as "
+             "the binding's inner loop does, built with the plain command; batch overhead = "
+             "batched - C kernel, per case (the goal's definition). The C kernel built with "
+             "the extension's own flags (Python's CFLAGS, which include -fwrapv, and -fPIC) "
+             "separates the cost of the Python call from that of different code generation: "
+             "Python overhead = batched - that kernel. "
+             "FASTSIM: parabolic bound, Coulomb friction.")
+    L.append("")
+    L.append("| method | grid | n batched | batched us/case | cases/s batched | "
+             "one call per case us | C kernel us/case | batch overhead us/case | "
+             "C kernel, extension's flags us/case | Python overhead us/case | "
+             "status != 0 | C = Python |")
+    L.append("| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |")
+    for r in rows:
+        grid = "-" if not r["method"].startswith("fastsim") else f"{r['nx']}x{r['ny']} {r['grid']}"
+        ov = None if r["kernel_us"] is None else r["batch_us"] - r["kernel_us"]
+        ov_ext = None if r["kernel_ext_us"] is None else r["batch_us"] - r["kernel_ext_us"]
+        agree = "n/a" if r["agree"] is None else ("yes" if r["agree"] else "**no**")
+        L.append(f"| {r['name']} | {grid} | {r['n']} | {fmt(r['batch_us'])} | "
+                 f"{fmt(1e6 / r['batch_us'])} | {fmt(r['loop_us'])} (n={r['loop_n']}) | "
+                 f"{fmt(r['kernel_us'])} | {fmt(ov)} | {fmt(r['kernel_ext_us'])} | "
+                 f"{fmt(ov_ext)} | {r['not_ok']} | {agree} |")
+    L.append("")
+    L.append("The batch overhead goal is about the cheap methods (Hertz, linear, Polach), "
+             "where the Python call's fixed and per-element costs would show; for FASTSIM the "
+             "difference between the two kernel builds is code generation, not Python.")
+    L.append("")
+    L.append(f"Repeats: {rows[0]['repeats']} (Hertz, linear, Polach), "
+             f"{rows[-1]['repeats']} (FASTSIM). \"C = Python\": the kernel's checksum of the "
+             "outputs equals the binding's (same cases, same results).")
+    if not kernel.ok:
+        L.append("")
+        L.append(f"C kernel not built: {kernel.error.splitlines()[0] if kernel.error else ''}")
+    L.append("")
+
+    L.append("## Two threads over one")
+    L.append("")
+    L.append("One batch split in two halves, both submitted to a "
+             "concurrent.futures.ThreadPoolExecutor with 1 worker, then with 2 workers "
+             "(runs interleaved). CPU/wall: process CPU time over wall time of the best "
+             "2-thread run (2.0 = both cores busy all along).")
+    L.append("")
+    L.append("| batch | n | 1 thread s | 2 threads s | speed-up | CPU/wall (2 threads) |")
+    L.append("| --- | ---: | ---: | ---: | ---: | ---: |")
+    for t in thr:
+        L.append(f"| {t['name']} | {t['n']} | {fmt(t['t1'])} | {fmt(t['t2'])} | "
+                 f"{t['speedup']:.2f}x | {t['cpu2']:.2f} |")
+    L.append("")
+
+    L.append("## Pure-Python twin")
+    L.append("")
+    if "error" in tw:
+        L.append(f"Not measured: rollerrig.twin.fastsim failed ({tw['error']}).")
+        L.append("")
+    else:
+        twin_table(L, tw)
+
+    L.append("## Reference (not measured here)")
+    L.append("")
+    L.append("| code | grid | us per FASTSIM case | source |")
+    L.append("| --- | --- | ---: | --- |")
+    L.append(f"| CONTACT through its Python interface | 31x31 | {CONTACT_FASTSIM31_US:.0f} | "
+             "published figure |")
+    L.append(f"| rollerrig, batched (this run) | 30x30 rect | {fmt(f30['batch_us'])} | measured |")
+    L.append(f"| rollerrig, one call per case (this run) | 30x30 rect | {fmt(f30['loop_us'])} | "
+             "measured |")
+    L.append("")
+    L.append(f"Ratio published CONTACT / rollerrig batched: "
+             f"{CONTACT_FASTSIM31_US / f30['batch_us']:.0f}x (different machine and a "
+             "31x31 grid: context only).")
+    L.append("")
+    return "\n".join(L)
+
+
+def accuracy_section():
+    """Accuracy of every method on CONTACT's 3220 exact cases (not a speed
+    figure, but kept beside them as the issue asks): tests/reference_cases.py."""
+    sys.path.insert(0, os.path.join(ROOT, "tests"))
+    from reference_cases import score_methods
+
+    lines = ["", "## Accuracy on the 3220 exact cases", "",
+             "|dF| / (mu N), dF the vector (dFx, dFy) against CONTACT's exact theory "
+             "(contact_test_table_mx11.csv: 11x11 grid, itself a few % off the "
+             "continuum). FASTSIM variants at 30x30, parabolic bound; "
+             "modified_fastsim with its defaults k0 = 0.54, alpha_inf = 0.02, "
+             "beta = 0.62 (a contaminated-rail model, so far from the clean exact "
+             "theory by design).", "",
+             "| method | grid | median | p95 | max |", "| --- | --- | ---: | ---: | ---: |"]
+    for grid in ("rect", "strips"):
+        methods = ("linear", "fastsim", "fastsim_blended", "modified_fastsim", "polach") \
+            if grid == "rect" else ("fastsim", "fastsim_blended")
+        for method, sc in score_methods(methods, grid=grid).items():
+            g = grid if "fastsim" in method else "-"
+            lines.append(f"| {method} | {g} | {sc['median']:.4f} | {sc['p95']:.4f} | "
+                         f"{sc['max']:.4f} |")
+    lines += ["", "Target for Kalker's FASTSIM at about 30x30 (an independent "
+              "implementation): median 0.028, p95 0.11, max 0.18, each within 0.01 "
+              "(tests/test_creep_reference.py).", ""]
+    return "\n".join(lines)
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--quick", action="store_true", help="small sizes: a smoke run")
+    parser.add_argument("--out", help="report path (default benchmarks/RESULTS.md, or "
+                        "benchmarks/out/RESULTS-quick.md with --quick)")
+    parser.add_argument("--seed", type=int, default=20240601)
+    args = parser.parse_args(argv)
+    script = os.path.relpath(os.path.abspath(sys.argv[0]), ROOT) \
+        if os.path.abspath(sys.argv[0]).startswith(ROOT + os.sep) else sys.argv[0]
+    args.command = shlex.join(["python", script] + (sys.argv[1:] if argv is None else argv))
+    if args.out:
+        out = os.path.abspath(args.out)
+    elif args.quick:      # a smoke run must not overwrite the real figures
+        out = os.path.join(HERE, "out", "RESULTS-quick.md")
+    else:
+        out = os.path.join(HERE, "RESULTS.md")
+    sz = SIZES["quick" if args.quick else "full"]
+    rng = np.random.default_rng(args.seed)
+    date = datetime.datetime.now().astimezone().isoformat(timespec="seconds")
+    load0 = tuple(round(x, 2) for x in os.getloadavg())
+    t_start = time.perf_counter()
+
+    with tempfile.TemporaryDirectory(prefix="rollerrig-bench-") as tmp:
+        log("compiling the C kernel benchmark ...")
+        mon = CpuMonitor()
+        kernel = Kernel(tmp)
+        kernel_ext = Kernel(tmp, extension_flags(), "bench_kernel_ext")
+        if not kernel.ok:
+            log(f"  C kernel not built ({kernel.error}); batch overhead not measured")
+        info = machine_info(kernel)
+        log("one thread ...")
+        rows = mon.section("one thread", one_thread, rng, sz, kernel, kernel_ext)
+        log("threads ...")
+        thr = mon.section("threads", threads, rng, sz)
+        log("pure-Python twin ...")
+        try:
+            tw = mon.section("twin", twin_section, rng, sz)
+        except Exception as exc:      # the twin is another module's work in progress
+            log(f"  twin not measured: {exc!r}")
+            tw = dict(error=f"{type(exc).__name__}: {exc}")
+
+    load1 = tuple(round(x, 2) for x in os.getloadavg())
+    text = report(args, info, load0, load1, date, rows, thr, tw, kernel, kernel_ext, mon,
+                  time.perf_counter() - t_start)
+    text += accuracy_section()
+    os.makedirs(os.path.dirname(out), exist_ok=True)
+    with open(out, "w") as fh:
+        fh.write(text)
+    print(text)
+    log(f"written {os.path.relpath(out, os.getcwd())}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
