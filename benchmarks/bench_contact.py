@@ -191,12 +191,12 @@ def hertz_loop(cases, k):
 
 def extension_flags():
     """The flags setuptools compiles rollerrig._core with: Python's CFLAGS and
-    CCSHARED (sysconfig), then setup.py's -std=c99 -O3 (last wins)."""
+    CCSHARED (sysconfig), then setup.py's -std=c99 -O3 -fno-wrapv (last wins)."""
     import sysconfig
     flags = shlex.split(sysconfig.get_config_var("CFLAGS") or "") \
         + shlex.split(sysconfig.get_config_var("CCSHARED") or "")
     return [f for f in flags if f.startswith(("-O", "-f", "-D", "-m", "-g"))] \
-        + ["-std=c99", "-O3"]
+        + ["-std=c99", "-O3", "-fno-wrapv"]
 
 
 class Kernel:
