@@ -91,17 +91,38 @@ static int parse_inputs(const char *func, PyObject *const *objs, const char *con
     return check_lengths(func, objs, names, count, *n);
 }
 
-/* New 1-D output arrays; returns 0 or -1 with an exception set. */
-static int new_outputs(npy_intp n, int ndouble, PyObject **dbl, PyObject **status)
+/* New 1-D outputs: ndouble float64 arrays, then the int8 status array at
+ * out[ndouble]; returns 0, or -1 with an exception set. */
+static int new_outputs(npy_intp n, int ndouble, PyObject **out)
 {
     int k;
-    for (k = 0; k < ndouble; k++) {
-        dbl[k] = PyArray_SimpleNew(1, &n, NPY_DOUBLE);
-        if (!dbl[k])
+    for (k = 0; k <= ndouble; k++) {
+        out[k] = PyArray_SimpleNew(1, &n, k < ndouble ? NPY_DOUBLE : NPY_INT8);
+        if (!out[k])
             return -1;
     }
-    *status = PyArray_SimpleNew(1, &n, NPY_INT8);
-    return *status ? 0 : -1;
+    return 0;
+}
+
+/* The outputs as a tuple, which takes over their references. */
+static PyObject *outputs_tuple(PyObject **out, int count)
+{
+    PyObject *t = PyTuple_New(count);
+    int k;
+    if (!t)
+        return NULL;
+    for (k = 0; k < count; k++) {
+        PyTuple_SET_ITEM(t, k, out[k]);
+        out[k] = NULL;
+    }
+    return t;
+}
+
+static void release(PyObject **out, int count)
+{
+    int k;
+    for (k = 0; k < count; k++)
+        Py_XDECREF(out[k]);
 }
 
 #define OUT(obj) ((double *)PyArray_DATA((PyArrayObject *)(obj)))
@@ -112,7 +133,7 @@ static int new_outputs(npy_intp n, int ndouble, PyObject **dbl, PyObject **statu
 static PyObject *py_hertz(PyObject *self, PyObject *args)
 {
     static const char *const names[] = {"A", "B", "N", "E1", "nu1", "E2", "nu2"};
-    PyObject *objs[7], *out[4] = {NULL, NULL, NULL, NULL}, *status = NULL, *res = NULL;
+    PyObject *objs[7], *out[5] = {NULL, NULL, NULL, NULL, NULL}, *res;
     input in[7];
     npy_intp n, start, i;
     (void)self;
@@ -120,12 +141,12 @@ static PyObject *py_hertz(PyObject *self, PyObject *args)
     if (!PyArg_ParseTuple(args, "OOOOOOO:hertz", &objs[0], &objs[1], &objs[2], &objs[3],
                           &objs[4], &objs[5], &objs[6]))
         return NULL;
-    if (parse_inputs("hertz", objs, names, 7, &n, in) < 0 || new_outputs(n, 4, out, &status) < 0)
+    if (parse_inputs("hertz", objs, names, 7, &n, in) < 0 || new_outputs(n, 4, out) < 0)
         goto fail;
     for (start = 0; start < n; start += CHUNK_WORK) {
         npy_intp stop = start + CHUNK_WORK < n ? start + CHUNK_WORK : n;
         double *a = OUT(out[0]), *b = OUT(out[1]), *p0 = OUT(out[2]), *delta = OUT(out[3]);
-        npy_int8 *st = OUT8(status);
+        npy_int8 *st = OUT8(out[4]);
         Py_BEGIN_ALLOW_THREADS
         for (i = start; i < stop; i++) {
             rr_hertz_result h;
@@ -147,14 +168,10 @@ static PyObject *py_hertz(PyObject *self, PyObject *args)
         if (PyErr_CheckSignals() < 0)
             goto fail;
     }
-    res = Py_BuildValue("(NNNNN)", out[0], out[1], out[2], out[3], status);
-    return res;
+    if ((res = outputs_tuple(out, 5)) != NULL)
+        return res;
 fail:
-    Py_XDECREF(out[0]);
-    Py_XDECREF(out[1]);
-    Py_XDECREF(out[2]);
-    Py_XDECREF(out[3]);
-    Py_XDECREF(status);
+    release(out, 5);
     return NULL;
 }
 
@@ -163,7 +180,7 @@ fail:
 static PyObject *py_kalker(PyObject *self, PyObject *args)
 {
     static const char *const names[] = {"a_over_b", "nu"};
-    PyObject *objs[2], *out[3] = {NULL, NULL, NULL}, *status = NULL;
+    PyObject *objs[2], *out[4] = {NULL, NULL, NULL, NULL}, *res;
     input in[2];
     npy_intp n, start, i;
     (void)self;
@@ -171,12 +188,12 @@ static PyObject *py_kalker(PyObject *self, PyObject *args)
     if (!PyArg_ParseTuple(args, "OO:kalker_coefficients", &objs[0], &objs[1]))
         return NULL;
     if (parse_inputs("kalker_coefficients", objs, names, 2, &n, in) < 0
-        || new_outputs(n, 3, out, &status) < 0)
+        || new_outputs(n, 3, out) < 0)
         goto fail;
     for (start = 0; start < n; start += CHUNK_WORK) {
         npy_intp stop = start + CHUNK_WORK < n ? start + CHUNK_WORK : n;
         double *c11 = OUT(out[0]), *c22 = OUT(out[1]), *c23 = OUT(out[2]);
-        npy_int8 *st = OUT8(status);
+        npy_int8 *st = OUT8(out[3]);
         Py_BEGIN_ALLOW_THREADS
         for (i = start; i < stop; i++) {
             rr_kalker_coeffs k;
@@ -189,12 +206,10 @@ static PyObject *py_kalker(PyObject *self, PyObject *args)
         if (PyErr_CheckSignals() < 0)
             goto fail;
     }
-    return Py_BuildValue("(NNNN)", out[0], out[1], out[2], status);
+    if ((res = outputs_tuple(out, 4)) != NULL)
+        return res;
 fail:
-    Py_XDECREF(out[0]);
-    Py_XDECREF(out[1]);
-    Py_XDECREF(out[2]);
-    Py_XDECREF(status);
+    release(out, 4);
     return NULL;
 }
 
@@ -270,7 +285,7 @@ static int parse_opts(PyObject *kwargs, const char *func, rr_creep_opts *o)
 
 static PyObject *py_creep_forces(PyObject *self, PyObject *args, PyObject *kwargs)
 {
-    PyObject *objs[NCASE], *out[3] = {NULL, NULL, NULL}, *status = NULL;
+    PyObject *objs[NCASE], *out[4] = {NULL, NULL, NULL, NULL}, *res;
     input in[NCASE];
     rr_creep_opts o;
     npy_intp n, start, i, chunk;
@@ -287,7 +302,7 @@ static PyObject *py_creep_forces(PyObject *self, PyObject *args, PyObject *kwarg
     if (parse_opts(kwargs, "creep_forces", &o) < 0)
         return NULL;
     if (parse_inputs("creep_forces", objs, case_names, NCASE, &n, in) < 0
-        || new_outputs(n, 3, out, &status) < 0)
+        || new_outputs(n, 3, out) < 0)
         goto fail;
     chunk = o.method == RR_METHOD_LINEAR || o.method == RR_METHOD_POLACH
                 ? CHUNK_WORK
@@ -295,7 +310,7 @@ static PyObject *py_creep_forces(PyObject *self, PyObject *args, PyObject *kwarg
     for (start = 0; start < n; start += chunk) {
         npy_intp stop = start + chunk < n ? start + chunk : n;
         double *fx = OUT(out[0]), *fy = OUT(out[1]), *mz = OUT(out[2]);
-        npy_int8 *st = OUT8(status);
+        npy_int8 *st = OUT8(out[3]);
         Py_BEGIN_ALLOW_THREADS
         for (i = start; i < stop; i++) {
             rr_contact_case c;
@@ -311,12 +326,10 @@ static PyObject *py_creep_forces(PyObject *self, PyObject *args, PyObject *kwarg
         if (PyErr_CheckSignals() < 0)
             goto fail;
     }
-    return Py_BuildValue("(NNNN)", out[0], out[1], out[2], status);
+    if ((res = outputs_tuple(out, 4)) != NULL)
+        return res;
 fail:
-    Py_XDECREF(out[0]);
-    Py_XDECREF(out[1]);
-    Py_XDECREF(out[2]);
-    Py_XDECREF(status);
+    release(out, 4);
     return NULL;
 }
 
@@ -374,8 +387,7 @@ static PyObject *py_fastsim_field(PyObject *self, PyObject *args, PyObject *kwar
     return Py_BuildValue("(dddiNNNNNN)", f.fx, f.fy, f.mz, st, arr[0], arr[1], arr[2], arr[3],
                          arr[4], arr[5]);
 fail:
-    for (k = 0; k < 6; k++)
-        Py_XDECREF(arr[k]);
+    release(arr, 6);
     return NULL;
 }
 
