@@ -11,6 +11,7 @@
  *   rr_contact.h   the contact case and the forces every method returns
  *   rr_creep.h     method options, linear theory, Polach, dispatcher
  *   rr_fastsim.h   FASTSIM, blended and modified, with its traction field
+ *   rr_creepage.h  kinematic creepages of a wheel on a roller
  */
 #ifndef ROLLERRIG_H
 #define ROLLERRIG_H
@@ -23,5 +24,6 @@
 #include "rr_contact.h"
 #include "rr_creep.h"
 #include "rr_fastsim.h"
+#include "rr_creepage.h"
 
 #endif
