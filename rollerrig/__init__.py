@@ -8,16 +8,25 @@ The contact core (C99, vectorised, GIL released):
     f = rr.creep_forces(cx, cy, cphi, a=..., b=..., N=..., mu=..., method="fastsim")
     t = rr.fastsim_field(cx, cy, cphi, a=..., b=..., N=..., mu=...)
 
-See rollerrig.contact for the conventions.
+Profiles (numpy only):
+
+    w = rr.Profile.s1002(); r = rr.Profile.uic60()
+    p = rr.read_profile("wheel.whl")           # .prw/.prr, .whl/.ban, .txt/.csv/.dat
+    p.z_at(y), p.slope(y), p.curvature(y)      # y, z in m; z downward
+
+See rollerrig.contact and rollerrig.profiles for the conventions.
 """
 from ._version import __version__
 from ._errors import RollerRigError, RollerRigWarning, status_message
 from .contact import (BOUNDS, METHODS, CreepForces, FallingFriction, HertzContact,
                       KalkerCoefficients, TractionField, creep_forces, fastsim_field, hertz,
                       kalker_coefficients)
+from . import profiles
+from .profiles import Profile, read_profile
 
 __all__ = [
     "__version__", "RollerRigError", "RollerRigWarning", "status_message", "METHODS",
     "BOUNDS", "FallingFriction", "HertzContact", "KalkerCoefficients", "CreepForces",
     "TractionField", "hertz", "kalker_coefficients", "creep_forces", "fastsim_field",
+    "profiles", "Profile", "read_profile",
 ]
