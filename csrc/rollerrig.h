@@ -12,6 +12,8 @@
  *   rr_creep.h     method options, linear theory, Polach, dispatcher
  *   rr_fastsim.h   FASTSIM, blended and modified, with its traction field
  *   rr_creepage.h  kinematic creepages of a wheel on a roller
+ *   rr_spline.h    natural cubic splines for profiles
+ *   rr_geometry.h  contact search, wheelset pose, contact tables
  */
 #ifndef ROLLERRIG_H
 #define ROLLERRIG_H
@@ -25,5 +27,7 @@
 #include "rr_creep.h"
 #include "rr_fastsim.h"
 #include "rr_creepage.h"
+#include "rr_spline.h"
+#include "rr_geometry.h"
 
 #endif

@@ -1,0 +1,302 @@
+/* rr_geometry.c - wheel-roller contact search, wheelset pose, contact tables. */
+#include <math.h>
+#include "rr_common.h"
+#include "rr_geometry.h"
+
+/* Newton iterations: the refinement and the pose converge in a few. */
+#define MAX_ITER 50
+
+void rr_search_opts_default(rr_search_opts *o)
+{
+    o->nsamples = 400;
+    o->two_point_tol = 1e-4;
+    o->two_point_sep = 2e-3;
+}
+
+/* A wheel profile point mapped into the rig, with the roller below it. */
+typedef struct {
+    double Y, Z;      /* rig coordinates of the wheel point */
+    double dY, dZ;    /* their derivatives along s */
+    double ddY, ddZ;
+    double zw1, zw2;  /* wheel slope and second derivative */
+    double sr;        /* roller coordinate below */
+    double zr, zr1, zr2;
+    double gap, g1, g2;   /* gap and its derivatives along s */
+} probe;
+
+/* Map wheel profile coordinate s; returns 0, or a status if s falls off
+ * either profile. */
+static int probe_at(const rr_wheel_roller *p, double y_ws, double z_ws, double c, double sn,
+                    double s, probe *q)
+{
+    double zw, dsr, ddsr;
+    int st = rr_spline_eval(&p->wheel, s, &zw, &q->zw1, &q->zw2);
+    if (st)
+        return st;
+    {
+        const double Yl = p->side * (p->wheel_y + s), Zl = -p->r0 + zw;
+        q->Y = y_ws + Yl * c - Zl * sn;
+        q->Z = z_ws + Yl * sn + Zl * c;
+        q->dY = p->side * c - q->zw1 * sn;
+        q->dZ = p->side * sn + q->zw1 * c;
+        q->ddY = -q->zw2 * sn;
+        q->ddZ = q->zw2 * c;
+    }
+    q->sr = p->side * q->Y - p->roller_y;
+    st = rr_spline_eval(&p->roller, q->sr, &q->zr, &q->zr1, &q->zr2);
+    if (st)
+        return st;
+    dsr = p->side * q->dY;
+    ddsr = p->side * q->ddY;
+    q->gap = q->Z - q->zr;
+    q->g1 = q->dZ - q->zr1 * dsr;
+    q->g2 = q->ddZ - q->zr2 * dsr * dsr - q->zr1 * ddsr;
+    return RR_OK;
+}
+
+static void point_nan(rr_contact_point *c)
+{
+    c->y = c->z = c->s_wheel = c->s_roller = c->r = c->R = c->delta = NAN;
+    c->A = c->B = c->gap = c->y2 = c->gap2 = NAN;
+    c->two_point = 0;
+}
+
+int rr_contact_search(const rr_wheel_roller *p, double y_ws, double z_ws, double roll,
+                      const rr_search_opts *o, rr_contact_point *out)
+{
+    const double c = cos(roll), sn = sin(roll);
+    const double s0 = p->wheel.s[0], s1 = p->wheel.s[p->wheel.n - 1];
+    const int ns = o->nsamples;
+    double best = INFINITY, second = INFINITY, sbest = 0.0, ybest = 0.0, ysecond = NAN;
+    double prev2 = INFINITY, prev1 = INFINITY, sprev1 = 0.0, yprev1 = 0.0;
+    double lo, hi, s, k_w, k_r;
+    probe q;
+    int i, ok = 0, it;
+
+    if (!isfinite(y_ws) || !isfinite(z_ws) || !isfinite(roll)) {
+        point_nan(out);
+        return RR_ERR_NONFINITE;
+    }
+    if (ns < 3 || !(o->two_point_tol >= 0.0) || !(o->two_point_sep >= 0.0)) {
+        point_nan(out);
+        return RR_ERR_PARAM;
+    }
+    /* coarse scan: the global minimum of the gap, and the deepest other
+     * local minimum at least two_point_sep away from it */
+    for (i = 0; i <= ns; i++) {
+        const double si = s0 + (s1 - s0) * i / ns;
+        double g = INFINITY, y = 0.0;
+        if (probe_at(p, y_ws, z_ws, c, sn, si, &q) == RR_OK) {
+            g = q.gap;
+            y = q.Y;
+            ok = 1;
+        }
+        /* the previous sample is a local minimum if below both neighbours */
+        if (i >= 1 && prev1 < prev2 && prev1 <= g) {
+            if (prev1 < best) {
+                if (fabs(yprev1 - ybest) > o->two_point_sep || best == INFINITY) {
+                    second = best;
+                    ysecond = ybest;
+                }
+                best = prev1;
+                sbest = sprev1;
+                ybest = yprev1;
+            } else if (prev1 < second && fabs(yprev1 - ybest) > o->two_point_sep) {
+                second = prev1;
+                ysecond = yprev1;
+            }
+        }
+        prev2 = prev1;
+        prev1 = g;
+        sprev1 = si;
+        yprev1 = y;
+    }
+    if (!ok || best == INFINITY) {
+        point_nan(out);
+        return RR_ERR_GEOMETRY;     /* the wheel is off its roller */
+    }
+    if (second < INFINITY && fabs(ysecond - ybest) <= o->two_point_sep)
+        second = INFINITY;
+
+    /* Newton on the gap's slope, kept inside the neighbouring samples */
+    lo = sbest - (s1 - s0) / ns;
+    hi = sbest + (s1 - s0) / ns;
+    if (lo < s0) lo = s0;
+    if (hi > s1) hi = s1;
+    s = sbest;
+    for (it = 0; it < MAX_ITER; it++) {
+        double ds, sn_;
+        if (probe_at(p, y_ws, z_ws, c, sn, s, &q) != RR_OK)
+            break;
+        if (!(q.g2 > 0.0))
+            break;                   /* not convex here: keep the sample */
+        ds = q.g1 / q.g2;
+        sn_ = s - ds;
+        if (sn_ < lo) sn_ = lo;
+        if (sn_ > hi) sn_ = hi;
+        if (fabs(sn_ - s) < 1e-15 * (1.0 + fabs(s))) {
+            s = sn_;
+            break;
+        }
+        s = sn_;
+    }
+    if (probe_at(p, y_ws, z_ws, c, sn, s, &q) != RR_OK) {
+        s = sbest;
+        probe_at(p, y_ws, z_ws, c, sn, s, &q);
+    }
+    out->y = q.Y;
+    out->z = q.zr;
+    out->s_wheel = s;
+    out->s_roller = q.sr;
+    out->gap = q.gap;
+    {
+        double zw;
+        rr_spline_eval(&p->wheel, s, &zw, 0, 0);
+        out->r = p->r0 - zw;
+    }
+    out->R = p->R0 + q.zr;
+    out->delta = atan(q.zr1);
+    /* profile curvatures, convex toward the other body positive */
+    k_w = q.zw2 / pow(1.0 + q.zw1 * q.zw1, 1.5);
+    k_r = -q.zr2 / pow(1.0 + q.zr1 * q.zr1, 1.5);
+    out->A = 0.5 * cos(out->delta) * (1.0 / out->r + 1.0 / out->R);
+    out->B = 0.5 * (k_w + k_r);
+    out->two_point = second - best <= o->two_point_tol;
+    out->y2 = out->two_point ? ysecond : NAN;
+    out->gap2 = out->two_point ? second : NAN;
+    if (!(out->B > 0.0) || !(out->r > 0.0) || !(out->R > 0.0))
+        return RR_ERR_GEOMETRY;
+    return RR_OK;
+}
+
+int rr_wheelset_contact(const rr_wheel_roller *left, const rr_wheel_roller *right, double y_ws,
+                        const rr_search_opts *o, rr_wheelset_pose *pose,
+                        rr_contact_point *cl, rr_contact_point *cr)
+{
+    double z = 0.5 * (left->r0 + right->r0), roll = 0.0;
+    int it, st = RR_OK;
+
+    /* Newton on (z, roll): a gap moves one-for-one with z and by the
+     * contact point's lateral arm a = y - y_ws with roll; the 2 x 2 system
+     * dz + a_l droll = -g_l, dz + a_r droll = -g_r is solved exactly.  A
+     * conformal point (B <= 0) still has a gap: only a missing gap stops. */
+    for (it = 0; it < MAX_ITER; it++) {
+        double droll;
+        st = rr_contact_search(left, y_ws, z, roll, o, cl);
+        if (!isfinite(cl->gap))
+            break;
+        st = rr_contact_search(right, y_ws, z, roll, o, cr);
+        if (!isfinite(cr->gap))
+            break;
+        if (fabs(cl->gap) < 1e-13 && fabs(cr->gap) < 1e-13)
+            break;
+        droll = -(cl->gap - cr->gap) / (cl->y - cr->y);
+        z += -cl->gap - (cl->y - y_ws) * droll;
+        roll += droll;
+    }
+    if (!isfinite(cl->gap) || !isfinite(cr->gap)) {
+        pose->z = pose->roll = NAN;
+        point_nan(cl);
+        point_nan(cr);
+        return st < 0 ? st : RR_ERR_GEOMETRY;
+    }
+    pose->z = z;
+    pose->roll = roll;
+    /* the points of the final pose */
+    st = rr_contact_search(left, y_ws, z, roll, o, cl);
+    if (st == RR_OK)
+        st = rr_contact_search(right, y_ws, z, roll, o, cr);
+    if (st < 0)
+        return st;
+    if (fabs(cl->gap) > 1e-9 || fabs(cr->gap) > 1e-9)
+        return RR_WARN_NOT_CONVERGED;
+    return RR_OK;
+}
+
+/* Quantities stored per side, in this order, then z and roll. */
+#define NSIDE 10
+#define ROW (2 * NSIDE + 2)
+
+long rr_contact_table_len(int n)
+{
+    return n > 0 ? (long)n * ROW : 0;
+}
+
+static void store(double *d, const rr_contact_point *c)
+{
+    d[0] = c->y; d[1] = c->z; d[2] = c->s_wheel; d[3] = c->s_roller; d[4] = c->r;
+    d[5] = c->R; d[6] = c->delta; d[7] = c->A; d[8] = c->B; d[9] = c->two_point;
+}
+
+static void load(const double *a, const double *b, double f, rr_contact_point *c)
+{
+    double v[NSIDE];
+    int k;
+    for (k = 0; k < NSIDE; k++)
+        v[k] = a[k] + f * (b[k] - a[k]);
+    c->y = v[0]; c->z = v[1]; c->s_wheel = v[2]; c->s_roller = v[3]; c->r = v[4];
+    c->R = v[5]; c->delta = v[6]; c->A = v[7]; c->B = v[8];
+    c->two_point = (f < 0.5 ? a[9] : b[9]) != 0.0;
+    c->gap = 0.0;
+    c->y2 = c->gap2 = NAN;
+}
+
+int rr_contact_table_build(const rr_wheel_roller *left, const rr_wheel_roller *right,
+                           const rr_search_opts *o, rr_contact_table *t, double *bad_y)
+{
+    int i;
+    if (!t->data)
+        return RR_ERR_WORKSPACE;
+    if (t->n < 2 || !(t->dy > 0.0) || !isfinite(t->y0) || !isfinite(t->dy))
+        return RR_ERR_PARAM;
+    for (i = 0; i < t->n; i++) {
+        const double y = t->y0 + i * t->dy;
+        double *row = t->data + (long)i * ROW;
+        rr_wheelset_pose pose;
+        rr_contact_point cl, cr;
+        int st = rr_wheelset_contact(left, right, y, o, &pose, &cl, &cr);
+        if (st < 0) {
+            if (bad_y)
+                *bad_y = y;
+            return st;
+        }
+        store(row, &cl);
+        store(row + NSIDE, &cr);
+        row[2 * NSIDE] = pose.z;
+        row[2 * NSIDE + 1] = pose.roll;
+    }
+    return RR_OK;
+}
+
+int rr_contact_table_lookup(const rr_contact_table *t, double y_ws, rr_wheelset_pose *pose,
+                            rr_contact_point *cl, rr_contact_point *cr)
+{
+    double pos, f;
+    int i;
+    const double *a, *b;
+
+    if (!isfinite(y_ws)) {
+        point_nan(cl);
+        point_nan(cr);
+        pose->z = pose->roll = NAN;
+        return RR_ERR_NONFINITE;
+    }
+    pos = (y_ws - t->y0) / t->dy;
+    if (pos < 0.0 || pos > t->n - 1) {
+        point_nan(cl);
+        point_nan(cr);
+        pose->z = pose->roll = NAN;
+        return RR_ERR_GEOMETRY;
+    }
+    i = (int)pos;
+    if (i > t->n - 2)
+        i = t->n - 2;
+    f = pos - i;
+    a = t->data + (long)i * ROW;
+    b = a + ROW;
+    load(a, b, f, cl);
+    load(a + NSIDE, b + NSIDE, f, cr);
+    pose->z = a[2 * NSIDE] + f * (b[2 * NSIDE] - a[2 * NSIDE]);
+    pose->roll = a[2 * NSIDE + 1] + f * (b[2 * NSIDE + 1] - a[2 * NSIDE + 1]);
+    return RR_OK;
+}

@@ -1,0 +1,65 @@
+/* rr_spline.c - natural cubic spline (de Boor 1978, ch. IV). */
+#include <math.h>
+#include "rr_common.h"
+#include "rr_spline.h"
+
+int rr_spline_init(int n, const double *s, const double *z, double *m, double *work)
+{
+    int i;
+
+    if (!m || !work)
+        return RR_ERR_WORKSPACE;
+    if (n < 2)
+        return RR_ERR_GEOMETRY;
+    for (i = 0; i < n; i++) {
+        if (!isfinite(s[i]) || !isfinite(z[i]))
+            return RR_ERR_NONFINITE;
+        if (i > 0 && !(s[i] > s[i - 1]))
+            return RR_ERR_GEOMETRY;
+    }
+    /* tridiagonal system for the interior second derivatives, solved by
+     * forward elimination (work holds the modified super-diagonal) */
+    m[0] = m[n - 1] = 0.0;
+    work[0] = 0.0;
+    for (i = 1; i < n - 1; i++) {
+        const double h0 = s[i] - s[i - 1], h1 = s[i + 1] - s[i];
+        const double rhs = 6.0 * ((z[i + 1] - z[i]) / h1 - (z[i] - z[i - 1]) / h0);
+        const double diag = 2.0 * (h0 + h1) - h0 * work[i - 1];
+        work[i] = h1 / diag;
+        m[i] = (rhs - h0 * m[i - 1]) / diag;
+    }
+    for (i = n - 2; i > 0; i--)
+        m[i] -= work[i] * m[i + 1];
+    return RR_OK;
+}
+
+int rr_spline_eval(const rr_spline *sp, double s, double *z, double *d1, double *d2)
+{
+    int lo = 0, hi = sp->n - 1;
+    double h, a, b;
+
+    if (!isfinite(s) || s < sp->s[0] || s > sp->s[sp->n - 1]) {
+        *z = NAN;
+        if (d1) *d1 = NAN;
+        if (d2) *d2 = NAN;
+        return isfinite(s) ? RR_ERR_GEOMETRY : RR_ERR_NONFINITE;
+    }
+    while (hi - lo > 1) {
+        const int mid = (lo + hi) / 2;
+        if (sp->s[mid] <= s)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    h = sp->s[hi] - sp->s[lo];
+    a = (sp->s[hi] - s) / h;
+    b = 1.0 - a;
+    *z = a * sp->z[lo] + b * sp->z[hi]
+       + ((a * a * a - a) * sp->m[lo] + (b * b * b - b) * sp->m[hi]) * h * h / 6.0;
+    if (d1)
+        *d1 = (sp->z[hi] - sp->z[lo]) / h
+            + ((1.0 - 3.0 * a * a) * sp->m[lo] + (3.0 * b * b - 1.0) * sp->m[hi]) * h / 6.0;
+    if (d2)
+        *d2 = a * sp->m[lo] + b * sp->m[hi];
+    return RR_OK;
+}

@@ -1,0 +1,38 @@
+/*
+ * rr_spline.h - natural cubic splines for profile curves z(s).
+ *
+ * A cubic spline has a continuous second derivative, so the profile
+ * curvature that the Hertz module needs is continuous along the profile;
+ * the seed paper's parabolic (piecewise quadratic) interpolation makes it
+ * jump at every point.  Reference: C. de Boor, A Practical Guide to
+ * Splines, 1978, ch. IV (natural end conditions: z'' = 0 at both ends).
+ */
+#ifndef RR_SPLINE_H
+#define RR_SPLINE_H
+
+typedef struct {
+    int n;             /* number of knots, >= 2 */
+    const double *s;   /* knots, strictly increasing [m] */
+    const double *z;   /* values at the knots [m] */
+    const double *m;   /* second derivatives at the knots (rr_spline_init) [1/m] */
+} rr_spline;
+
+/*
+ * rr_spline_init - second derivatives of the natural cubic spline.
+ *   given:   n >= 2 knots s (strictly increasing) and values z; work, a
+ *            caller buffer of n doubles
+ *   returns: m[n], the second derivatives at the knots
+ *   status:  0 OK; RR_ERR_NONFINITE, RR_ERR_GEOMETRY (n < 2 or s not
+ *            strictly increasing), RR_ERR_WORKSPACE (NULL buffer)
+ */
+int rr_spline_init(int n, const double *s, const double *z, double *m, double *work);
+
+/*
+ * rr_spline_eval - value and first two derivatives at s (binary search).
+ *   status:  0 OK; RR_ERR_GEOMETRY (s outside [s_0, s_(n-1)]: off the
+ *            profile), RR_ERR_NONFINITE; outputs NaN on error.
+ *   d1, d2 may be NULL.
+ */
+int rr_spline_eval(const rr_spline *sp, double s, double *z, double *d1, double *d2);
+
+#endif

@@ -1,0 +1,160 @@
+/* test_geometry.c - splines, contact search, wheelset pose and contact tables. */
+#include <math.h>
+#include <stdio.h>
+#include "rr_test.h"
+#include "rollerrig.h"
+
+#define NW 121
+#define NR 121
+
+static double ws_[NW], wz[NW], wm[NW], rs[NR], rz[NR], rm[NR], work[NW + NR];
+
+/* A conical wheel (z_w = s tan(alpha): the radius falls outward) on a roller
+ * whose crown is a circle of radius rho (z_r = sqrt(rho^2 - s^2) - rho). */
+static void conical_pair(double alpha, double rho, int side, rr_wheel_roller *p)
+{
+    int i;
+    for (i = 0; i < NW; i++) {
+        ws_[i] = -0.03 + 0.06 * i / (NW - 1);
+        wz[i] = ws_[i] * tan(alpha);
+    }
+    for (i = 0; i < NR; i++) {
+        rs[i] = -0.03 + 0.06 * i / (NR - 1);
+        rz[i] = sqrt(rho * rho - rs[i] * rs[i]) - rho;
+    }
+    rr_spline_init(NW, ws_, wz, wm, work);
+    rr_spline_init(NR, rs, rz, rm, work);
+    p->wheel.n = NW; p->wheel.s = ws_; p->wheel.z = wz; p->wheel.m = wm;
+    p->roller.n = NR; p->roller.s = rs; p->roller.z = rz; p->roller.m = rm;
+    p->r0 = 0.1;
+    p->R0 = 0.2;
+    p->wheel_y = 0.75;
+    p->roller_y = 0.75;
+    p->side = side;
+}
+
+static void test_spline(void)
+{
+    double s[9], z[9], m[9], w[9], v, d1, d2;
+    rr_spline sp;
+    int i;
+    for (i = 0; i < 9; i++) {
+        s[i] = 0.1 * i * i;                  /* uneven knots */
+        z[i] = 3.0 - 2.0 * s[i];
+    }
+    CHECK_STATUS(rr_spline_init(9, s, z, m, w), RR_OK, "spline init");
+    sp.n = 9; sp.s = s; sp.z = z; sp.m = m;
+    /* a straight line is reproduced exactly (to rounding) */
+    rr_spline_eval(&sp, 2.345, &v, &d1, &d2);
+    CHECK_CLOSE(v, 3.0 - 2.0 * 2.345, 1e-14, 0.0, "spline: line value");
+    CHECK_CLOSE(d1, -2.0, 1e-13, 0.0, "spline: line slope");
+    CHECK_CLOSE(d2, 0.0, 1e-12, 0.0, "spline: line curvature");
+    rr_spline_eval(&sp, s[4], &v, 0, 0);
+    CHECK(v == z[4] || fabs(v - z[4]) < 1e-15, "spline: exact at a knot");
+    CHECK_STATUS(rr_spline_eval(&sp, 7.0, &v, 0, 0), RR_ERR_GEOMETRY, "spline: off the end");
+    z[3] = NAN;
+    CHECK_STATUS(rr_spline_init(9, s, z, m, w), RR_ERR_NONFINITE, "spline: NaN value");
+    z[3] = 0.0;
+    s[3] = s[2];
+    CHECK_STATUS(rr_spline_init(9, s, z, m, w), RR_ERR_GEOMETRY, "spline: repeated knot");
+}
+
+static void test_conical(void)
+{
+    const double alpha = 0.05, rho = 0.1;
+    rr_wheel_roller l, r;
+    rr_search_opts o;
+    double y;
+    conical_pair(alpha, rho, +1, &l);
+    r = l;
+    r.side = -1;
+    rr_search_opts_default(&o);
+    for (y = -0.005; y <= 0.00501; y += 0.0025) {
+        rr_wheelset_pose pose;
+        rr_contact_point cl, cr;
+        int st = rr_wheelset_contact(&l, &r, y, &o, &pose, &cl, &cr);
+        char buf[120];
+        snprintf(buf, sizeof buf, "conical y = %g mm: status", y * 1e3);
+        CHECK_STATUS(st, RR_OK, buf);
+        /* both wheels touch: the pose solve drives the gaps below 1e-13 m */
+        CHECK(fabs(cl.gap) < 1e-12 && fabs(cr.gap) < 1e-12, "conical: both wheels touch");
+        /* rolling-radius difference 2 tan(alpha) y plus what the wheelset's
+         * roll phi adds: the contact points move on the crowns by
+         * rho (sin(alpha + phi) - sin(alpha - phi)) and on the wheels by
+         * r0 phi each (first order in phi); 2e-7 m: the second-order terms,
+         * phi s tan(alpha) with s up to 5 mm */
+        CHECK_CLOSE(cl.r - cr.r, tan(alpha) * (2.0 * y + 2.0 * l.r0 * pose.roll
+                    + rho * (sin(alpha + pose.roll) - sin(alpha - pose.roll))),
+                    2e-7, 0.0, "conical: r_l - r_r = 2 tan(alpha) y + roll terms");
+        /* the roll term is small: within 1.5 % of 2 tan(alpha) y */
+        CHECK_CLOSE(cl.r - cr.r, 2.0 * tan(alpha) * y, 1e-12, 0.015,
+                    "conical: r_l - r_r ~ 2 tan(alpha) y");
+        /* the contact angle is alpha tilted by the roll, +roll on the left and
+         * -roll on the right; their mean is alpha to the Newton tolerance */
+        CHECK_CLOSE(0.5 * (cl.delta + cr.delta), alpha, 1e-9, 0.0, "conical: mean contact angle");
+        CHECK_CLOSE(cl.delta - cr.delta, 2.0 * pose.roll, 1e-9, 0.0,
+                    "conical: contact angles differ by twice the roll");
+        CHECK(!cl.two_point && !cr.two_point, "conical: one contact point");
+        /* Hertz curvatures: the cone is straight, so B is half the crown's
+         * curvature 1/rho; 1e-4: the spline of the sampled circle */
+        CHECK_CLOSE(cl.B, 0.5 / rho, 0.0, 1e-4, "conical: B = 1/(2 rho)");
+        CHECK_CLOSE(cl.A, 0.5 * cos(cl.delta) * (1.0 / cl.r + 1.0 / cl.R), 0.0, 1e-14,
+                    "conical: A = cos(delta)(1/r + 1/R)/2");
+    }
+}
+
+static void test_table(void)
+{
+    const double alpha = 0.05, rho = 0.1;
+    rr_wheel_roller l, r;
+    rr_search_opts o;
+    static double data[201 * 22];
+    rr_contact_table t;
+    double y, worst = 0.0;
+    conical_pair(alpha, rho, +1, &l);
+    r = l;
+    r.side = -1;
+    rr_search_opts_default(&o);
+    CHECK(rr_contact_table_len(201) == 201 * 22, "table length");
+    t.y0 = -0.01; t.dy = 1e-4; t.n = 201; t.data = data;
+    CHECK_STATUS(rr_contact_table_build(&l, &r, &o, &t, 0), RR_OK, "table build");
+    for (y = -0.0099; y < 0.0099; y += 0.00037) {
+        rr_wheelset_pose p1, p2;
+        rr_contact_point a1, b1, a2, b2;
+        rr_wheelset_contact(&l, &r, y, &o, &p1, &a1, &b1);
+        rr_contact_table_lookup(&t, y, &p2, &a2, &b2);
+        if (fabs(a1.r - a2.r) > worst) worst = fabs(a1.r - a2.r);
+    }
+    /* linear interpolation of a smooth function at 0.1 mm spacing */
+    CHECK(worst < 1e-10, "table: rolling radius within 1e-10 m of the direct search");
+    {
+        rr_wheelset_pose p;
+        rr_contact_point a, b;
+        CHECK_STATUS(rr_contact_table_lookup(&t, 0.02, &p, &a, &b), RR_ERR_GEOMETRY,
+                     "table: outside its range");
+        CHECK(a.r != a.r, "table: outside gives NaN");
+    }
+}
+
+static void test_off_roller(void)
+{
+    rr_wheel_roller l;
+    rr_search_opts o;
+    rr_contact_point c;
+    conical_pair(0.05, 0.1, +1, &l);
+    rr_search_opts_default(&o);
+    /* shifted by 10 cm the wheel has left its 6 cm wide roller */
+    CHECK_STATUS(rr_contact_search(&l, 0.1, 0.1, 0.0, &o, &c), RR_ERR_GEOMETRY,
+                 "wheel off the roller");
+    CHECK(c.r != c.r, "off the roller: NaN");
+    CHECK_STATUS(rr_contact_search(&l, NAN, 0.1, 0.0, &o, &c), RR_ERR_NONFINITE, "NaN shift");
+}
+
+int main(void)
+{
+    test_spline();
+    test_conical();
+    test_table();
+    test_off_roller();
+    return rr_test_summary();
+}
