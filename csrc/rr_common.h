@@ -22,7 +22,7 @@ enum rr_status {
     /* errors: outputs are NaN */
     RR_ERR_NONFINITE = -1,      /* an input is NaN or infinite */
     RR_ERR_LOAD = -2,           /* normal load not positive */
-    RR_ERR_GEOMETRY = -3,       /* curvature or semi-axis not positive */
+    RR_ERR_GEOMETRY = -3,       /* curvature or semi-axis not positive; wheel off its roller */
     RR_ERR_MATERIAL = -4,       /* modulus not positive or nu outside [0, 0.5) */
     RR_ERR_FRICTION = -5,       /* mu not positive, or A, B of the falling law invalid */
     RR_ERR_GRID = -6,           /* grid size outside [1, RR_FASTSIM_MAX_GRID] */

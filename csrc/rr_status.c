@@ -9,7 +9,7 @@ static const char *const rr_messages[] = {
     /*  -6 */ "grid size out of range",
     /*  -5 */ "friction coefficient not positive or falling-law A, B invalid",
     /*  -4 */ "modulus not positive or Poisson ratio outside [0, 0.5)",
-    /*  -3 */ "curvature or semi-axis not positive",
+    /*  -3 */ "curvature or semi-axis not positive, or a wheel off its roller",
     /*  -2 */ "normal load not positive",
     /*  -1 */ "input is NaN or infinite",
     /*   0 */ "ok",

@@ -23,10 +23,13 @@ from .contact import (BOUNDS, METHODS, CreepForces, FallingFriction, HertzContac
                       kalker_coefficients)
 from . import profiles
 from .profiles import Profile, read_profile
+from .geometry import (ContactSide, ContactTable, RigGeometry, WheelsetContact, contact_table,
+                       wheelset_contact)
 
 __all__ = [
     "__version__", "RollerRigError", "RollerRigWarning", "status_message", "METHODS",
     "BOUNDS", "FallingFriction", "HertzContact", "KalkerCoefficients", "CreepForces",
     "TractionField", "hertz", "kalker_coefficients", "creep_forces", "fastsim_field",
-    "profiles", "Profile", "read_profile",
+    "profiles", "Profile", "read_profile", "RigGeometry", "ContactSide", "WheelsetContact",
+    "wheelset_contact", "ContactTable", "contact_table",
 ]

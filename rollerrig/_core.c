@@ -391,6 +391,153 @@ fail:
     return NULL;
 }
 
+
+/* ------------------------------------------------------- contact geometry */
+
+/* A 1-D contiguous float64 array of at least 2 elements, or NULL with an
+ * exception naming the argument. */
+static PyArrayObject *profile_array(PyObject *obj, const char *name)
+{
+    PyArrayObject *a = (PyArrayObject *)PyArray_FROMANY(obj, NPY_DOUBLE, 1, 1,
+                                                          NPY_ARRAY_IN_ARRAY);
+    if (!a)
+        return NULL;
+    if (PyArray_DIM(a, 0) < 2) {
+        PyErr_Format(PyExc_ValueError, "wheelset_contact: %s needs at least 2 points", name);
+        Py_DECREF(a);
+        return NULL;
+    }
+    return a;
+}
+
+#define NGEO 11   /* per side: y z s_wheel s_roller r R delta A B gap two_point */
+
+/* wheelset_contact(profiles (8 arrays), params (8 floats), y_ws, nsamples,
+ * two_point_tol, two_point_sep) -> (status, z, roll, left[NGEO, n], right[NGEO, n]) */
+static PyObject *py_wheelset_contact(PyObject *self, PyObject *args)
+{
+    static const char *const pnames[8] = {"wheel_left.s", "wheel_left.z", "roller_left.s",
+                                          "roller_left.z", "wheel_right.s", "wheel_right.z",
+                                          "roller_right.s", "roller_right.z"};
+    PyObject *pobj[8], *yobj, *out[5] = {NULL, NULL, NULL, NULL, NULL}, *res;
+    PyArrayObject *prof[8] = {NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL}, *yarr = NULL;
+    double par[8], *m[8] = {NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL}, *work = NULL;
+    rr_wheel_roller pair[2];
+    rr_search_opts o;
+    npy_intp n, i, dims[2];
+    int k, st = 0;
+    (void)self;
+
+    if (!PyArg_ParseTuple(args, "OOOOOOOO(dddddddd)Oidd:wheelset_contact", &pobj[0], &pobj[1],
+                          &pobj[2], &pobj[3], &pobj[4], &pobj[5], &pobj[6], &pobj[7], &par[0],
+                          &par[1], &par[2], &par[3], &par[4], &par[5], &par[6], &par[7], &yobj,
+                          &o.nsamples, &o.two_point_tol, &o.two_point_sep))
+        return NULL;
+    for (k = 0; k < 8; k++)
+        if (!(prof[k] = profile_array(pobj[k], pnames[k])))
+            goto fail;
+    for (k = 0; k < 8; k += 2)
+        if (PyArray_DIM(prof[k], 0) != PyArray_DIM(prof[k + 1], 0)) {
+            PyErr_Format(PyExc_ValueError, "wheelset_contact: %s and %s differ in length",
+                         pnames[k], pnames[k + 1]);
+            goto fail;
+        }
+    if (!(yarr = (PyArrayObject *)PyArray_FROMANY(yobj, NPY_DOUBLE, 1, 1, NPY_ARRAY_IN_ARRAY)))
+        goto fail;
+    /* spline coefficients and the solver's buffer: allocated here, so that
+     * the core itself allocates nothing */
+    {
+        npy_intp most = 0;
+        for (k = 0; k < 8; k += 2) {
+            npy_intp len = PyArray_DIM(prof[k], 0);
+            if (len > most) most = len;
+            if (!(m[k / 2] = PyMem_Malloc(len * sizeof(double))))
+                goto nomem;
+        }
+        if (!(work = PyMem_Malloc(most * sizeof(double))))
+            goto nomem;
+    }
+    for (k = 0; k < 4; k++) {
+        PyArrayObject *sa = prof[2 * k], *za = prof[2 * k + 1];
+        const int len = (int)PyArray_DIM(sa, 0);
+        rr_wheel_roller *p = &pair[k / 2];
+        rr_spline *sp = k % 2 == 0 ? &p->wheel : &p->roller;
+        st = rr_spline_init(len, (double *)PyArray_DATA(sa), (double *)PyArray_DATA(za), m[k], work);
+        if (st < 0) {
+            PyErr_Format(PyExc_ValueError, "wheelset_contact: %s: %s", pnames[2 * k],
+                         rr_status_message(st));
+            goto fail;
+        }
+        sp->n = len;
+        sp->s = (double *)PyArray_DATA(sa);
+        sp->z = (double *)PyArray_DATA(za);
+        sp->m = m[k];
+    }
+    for (k = 0; k < 2; k++) {
+        pair[k].r0 = par[4 * k];
+        pair[k].R0 = par[4 * k + 1];
+        pair[k].wheel_y = par[4 * k + 2];
+        pair[k].roller_y = par[4 * k + 3];
+        pair[k].side = k == 0 ? 1 : -1;
+    }
+    n = PyArray_DIM(yarr, 0);
+    dims[0] = NGEO;
+    dims[1] = n;
+    out[0] = PyArray_SimpleNew(1, &n, NPY_INT8);
+    out[1] = PyArray_SimpleNew(1, &n, NPY_DOUBLE);
+    out[2] = PyArray_SimpleNew(1, &n, NPY_DOUBLE);
+    out[3] = PyArray_SimpleNew(2, dims, NPY_DOUBLE);
+    out[4] = PyArray_SimpleNew(2, dims, NPY_DOUBLE);
+    for (k = 0; k < 5; k++)
+        if (!out[k])
+            goto fail;
+    {
+        const double *y = (const double *)PyArray_DATA(yarr);
+        npy_int8 *status = OUT8(out[0]);
+        double *z = OUT(out[1]), *roll = OUT(out[2]), *L = OUT(out[3]), *R = OUT(out[4]);
+        Py_BEGIN_ALLOW_THREADS
+        for (i = 0; i < n; i++) {
+            rr_wheelset_pose pose;
+            rr_contact_point c[2];
+            int side;
+            status[i] = (npy_int8)rr_wheelset_contact(&pair[0], &pair[1], y[i], &o, &pose,
+                                                      &c[0], &c[1]);
+            z[i] = pose.z;
+            roll[i] = pose.roll;
+            for (side = 0; side < 2; side++) {
+                double *d = side == 0 ? L : R;
+                const rr_contact_point *q = &c[side];
+                const double v[NGEO] = {q->y, q->z, q->s_wheel, q->s_roller, q->r, q->R,
+                                        q->delta, q->A, q->B, q->gap, (double)q->two_point};
+                for (k = 0; k < NGEO; k++)
+                    d[k * n + i] = v[k];
+            }
+        }
+        Py_END_ALLOW_THREADS
+    }
+    for (k = 0; k < 4; k++)
+        PyMem_Free(m[k]);
+    PyMem_Free(work);
+    for (k = 0; k < 8; k++)
+        Py_DECREF(prof[k]);
+    Py_DECREF(yarr);
+    if ((res = outputs_tuple(out, 5)) != NULL)
+        return res;
+    release(out, 5);
+    return NULL;
+nomem:
+    PyErr_NoMemory();
+fail:
+    for (k = 0; k < 4; k++)
+        PyMem_Free(m[k]);
+    PyMem_Free(work);
+    for (k = 0; k < 8; k++)
+        Py_XDECREF(prof[k]);
+    Py_XDECREF(yarr);
+    release(out, 5);
+    return NULL;
+}
+
 static PyObject *py_status_message(PyObject *self, PyObject *arg)
 {
     long code = PyLong_AsLong(arg);
@@ -413,6 +560,9 @@ static PyMethodDef core_methods[] = {
     {"fastsim_field", (PyCFunction)(void (*)(void))py_fastsim_field,
      METH_VARARGS | METH_KEYWORDS,
      "fastsim_field(<as creep_forces, one case>) -> (fx, fy, mz, status, x, y, pn, px, py, slip)"},
+    {"wheelset_contact", py_wheelset_contact, METH_VARARGS,
+     "wheelset_contact(8 profile arrays, 8 params, y_ws, nsamples, tol, sep)"
+     " -> (status, z, roll, left, right)"},
     {"status_message", py_status_message, METH_O, "status_message(code) -> str"},
     {NULL, NULL, 0, NULL}
 };

@@ -32,7 +32,8 @@ def _poisson(v):
 # values must pass; a message names those that fail it.
 _STATUS_ARGS = {
     -2: {"N": _positive},
-    -3: {n: _positive for n in ("A", "B", "a", "b", "a_over_b")},
+    -3: {**{n: _positive for n in ("A", "B", "a", "b", "a_over_b")},
+         "y_ws": lambda v: False},     # a shift that puts a wheel off its roller
     -4: {"E": _positive, "E2": _positive, "G": _positive, "nu": _poisson, "nu2": _poisson},
     -5: {"mu": _positive, "friction.A": lambda v: 0.0 < v <= 1.0,
          "friction.B": lambda v: v >= 0.0},

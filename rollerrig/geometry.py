@@ -1,0 +1,163 @@
+"""Contact geometry of the rig's wheelset on its two rollers.
+
+A wheel profile and a roller profile (rollerrig.profiles.Profile, y to the
+field side, z down) per side, the wheel's radius r0 and the roller's R0 at
+the profiles' origins (y = 0), and where those origins sit laterally: the
+C core (csrc/rr_geometry.h) finds on each side the point of least vertical
+gap between the surfaces, and the wheelset's height and roll that make both
+gaps zero, for any lateral shift of the wheelset.
+
+    g = rr.RigGeometry(wheel=rr.Profile.s1002(), roller=rr.Profile.uic60(),
+                       wheel_radius=0.46, roller_radius=0.46,
+                       wheel_y=0.75, roller_y=0.76053)
+    c = rr.wheelset_contact(g, np.linspace(-0.005, 0.005, 11))
+    c.left.r - c.right.r          # rolling-radius difference [m]
+
+Yaw is not modelled yet: the search is in the plane of the axle.
+"""
+from dataclasses import dataclass
+from typing import NamedTuple, Optional
+
+import numpy as np
+
+from . import _core
+from ._errors import RollerRigError, check_status
+from .profiles import Profile
+
+__all__ = ["RigGeometry", "ContactSide", "WheelsetContact", "wheelset_contact",
+           "ContactTable", "contact_table"]
+
+
+@dataclass(frozen=True)
+class RigGeometry:
+    """Profiles and placement of the wheel-roller pairs.
+
+    wheel, roller: profiles of the left side (y to the field side, z down);
+    the right side uses the same profiles mirrored unless wheel_right,
+    roller_right are given.  wheel_radius: the wheel's radius where its
+    profile has z = 0 at y = 0 [m]; roller_radius likewise for the roller.
+    wheel_y: lateral distance of the wheel profile's origin from the
+    wheelset's centre [m]; roller_y: of the roller profile's origin from the
+    rig's centre line [m].
+    """
+
+    wheel: Profile
+    roller: Profile
+    wheel_radius: float
+    roller_radius: float
+    wheel_y: float
+    roller_y: float
+    wheel_right: Optional[Profile] = None
+    roller_right: Optional[Profile] = None
+
+    def _arrays(self):
+        """The eight (s, height-up) arrays the core takes: heights up, so -z."""
+        def pair(p, kind):
+            if not isinstance(p, Profile):
+                raise RollerRigError(f"RigGeometry: {kind} must be a Profile, got {p!r:.60}")
+            return np.ascontiguousarray(p.y), np.ascontiguousarray(-p.z)
+        out = []
+        for w, r in ((self.wheel, self.roller),
+                     (self.wheel_right or self.wheel, self.roller_right or self.roller)):
+            out += [*pair(w, "wheel"), *pair(r, "roller")]
+        return out
+
+    def _params(self):
+        vals = dict(wheel_radius=self.wheel_radius, roller_radius=self.roller_radius,
+                    wheel_y=self.wheel_y, roller_y=self.roller_y)
+        for name, v in vals.items():
+            if not (isinstance(v, (int, float, np.floating)) and np.isfinite(v)) \
+                    or (name.endswith("radius") and v <= 0):
+                raise RollerRigError(f"RigGeometry: {name} must be a finite "
+                                     f"{'positive ' if name.endswith('radius') else ''}"
+                                     f"number, got {v!r}")
+        side = (float(self.wheel_radius), float(self.roller_radius), float(self.wheel_y),
+                float(self.roller_y))
+        return side + side
+
+
+class ContactSide(NamedTuple):
+    y: np.ndarray          #: lateral position of the contact point in the rig [m]
+    z: np.ndarray          #: its height above the nominal roller top [m]
+    s_wheel: np.ndarray    #: lateral profile coordinate on the wheel [m]
+    s_roller: np.ndarray   #: on the roller [m]
+    r: np.ndarray          #: wheel rolling radius [m]
+    R: np.ndarray          #: roller radius at the contact [m]
+    delta: np.ndarray      #: contact angle [rad], > 0 toward the flange
+    A: np.ndarray          #: Hertz curvature sums [1/m], rolling direction
+    B: np.ndarray          #: lateral
+    gap: np.ndarray        #: remaining gap [m] (0 after the pose solve)
+    two_point: np.ndarray  #: True where a second contact point was found
+
+
+class WheelsetContact(NamedTuple):
+    y_ws: np.ndarray       #: lateral shift of the wheelset [m]
+    z: np.ndarray          #: axle height [m]
+    roll: np.ndarray       #: roll angle [rad], positive lifting the left wheel
+    left: ContactSide
+    right: ContactSide
+    status: np.ndarray
+
+
+def _side(block):
+    fields = [block[k] for k in range(11)]
+    fields[10] = fields[10] != 0
+    return ContactSide(*fields)
+
+
+def wheelset_contact(geometry, y_ws, *, nsamples=400, two_point_tol=1e-4,
+                     two_point_sep=2e-3, errors=None):
+    """Direct contact search at the lateral shifts y_ws [m] (array or scalar).
+
+    nsamples: wheel samples of the coarse search; two_point_tol [m]: a second
+    gap minimum this close to the first counts as a second contact point,
+    if more than two_point_sep [m] away.  Returns WheelsetContact; shifts
+    where a wheel leaves its roller get NaN and a negative status.
+    """
+    func = "wheelset_contact"
+    y = np.atleast_1d(np.asarray(y_ws, dtype=float))
+    if y.ndim != 1 or y.size == 0:
+        raise RollerRigError(f"{func}: y_ws must be a number or a non-empty 1-D array")
+    if not (isinstance(nsamples, (int, np.integer)) and nsamples >= 3):
+        raise RollerRigError(f"{func}: nsamples must be an integer >= 3, got {nsamples!r}")
+    status, z, roll, left, right = _core.wheelset_contact(
+        *geometry._arrays(), geometry._params(), np.ascontiguousarray(y), int(nsamples),
+        float(two_point_tol), float(two_point_sep))
+    if errors is None:
+        errors = "raise" if np.ndim(y_ws) == 0 else "warn"
+    check_status(func, status, {"y_ws": y}, errors)
+    return WheelsetContact(y, z, roll, _side(left), _side(right), status)
+
+
+@dataclass(frozen=True)
+class ContactTable:
+    """wheelset_contact at equally spaced shifts, linearly interpolated."""
+
+    contact: WheelsetContact
+
+    def lookup(self, y_ws):
+        """The geometry at y_ws, interpolated linearly between the table's
+        rows (the two-point flag: the nearer row's).  Outside the table: NaN."""
+        yt = self.contact.y_ws
+        y = np.asarray(y_ws, dtype=float)
+
+        def interp(v):
+            return np.interp(y, yt, v, left=np.nan, right=np.nan)
+
+        def side(s):
+            vals = [interp(getattr(s, f)) for f in ContactSide._fields[:-1]]
+            idx = np.clip(np.rint((y - yt[0]) / (yt[1] - yt[0])), 0, yt.size - 1).astype(int)
+            return ContactSide(*vals, s.two_point[idx])
+        return WheelsetContact(y, interp(self.contact.z), interp(self.contact.roll),
+                               side(self.contact.left), side(self.contact.right),
+                               np.where(np.isfinite(interp(self.contact.z)), 0, -3).astype(np.int8))
+
+
+def contact_table(geometry, y_min, y_max, n=401, **search):
+    """Contact table over [y_min, y_max] with n rows (direct search per row)."""
+    if not (np.isfinite(y_min) and np.isfinite(y_max) and y_max > y_min):
+        raise RollerRigError(f"contact_table: need y_min < y_max, got {y_min!r}, {y_max!r}")
+    if not (isinstance(n, (int, np.integer)) and n >= 2):
+        raise RollerRigError(f"contact_table: n must be an integer >= 2, got {n!r}")
+    c = wheelset_contact(geometry, np.linspace(y_min, y_max, n), errors="raise", **search)
+    return ContactTable(c)

@@ -1,0 +1,113 @@
+"""Contact geometry of the wheelset on two rollers (rollerrig.geometry)."""
+import csv
+import os
+
+import numpy as np
+import pytest
+
+import rollerrig as rr
+from conftest import DATA
+
+
+def manchester_rows():
+    with open(os.path.join(DATA, "manchester_a22_contact.csv")) as f:
+        assert f.readline().startswith("#")
+        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+
+
+@pytest.fixture(scope="module")
+def manchester():
+    """S1002 on UIC60 as in the Manchester benchmark: wheel origins at 750 mm
+    from the wheelset centre, rail origins at 760.53 mm (gauge 1435 mm,
+    back-to-back 1360 mm, rail canted 1:40 in the profile), radius 460 mm."""
+    g = rr.RigGeometry(wheel=rr.Profile.s1002(), roller=rr.Profile.uic60(), wheel_radius=0.46,
+                       roller_radius=0.46, wheel_y=0.75, roller_y=0.76053)
+    rows = manchester_rows()
+    y = np.array([r["y_ws_mm"] for r in rows]) * 1e-3
+    # the benchmark's y_ws moves the wheelset to the right rail: our -Y
+    return rows, rr.wheelset_contact(g, -y, errors="ignore")
+
+
+def test_conical_wheel_on_crowned_roller():
+    alpha, rho = 0.05, 0.1
+    g = rr.RigGeometry(wheel=rr.Profile.conical(alpha, (-0.03, 0.03), r0=0.1),
+                       roller=rr.Profile.cylinder((-0.03, 0.03), crown_radius=rho),
+                       wheel_radius=0.1, roller_radius=0.2, wheel_y=0.75, roller_y=0.75)
+    y = np.linspace(-0.005, 0.005, 9)
+    c = rr.wheelset_contact(g, y)
+    assert np.all(c.status == 0)
+    # 2 tan(alpha) y, within 1.5 %: the wheelset's roll on the crowns moves the
+    # contact points (the C tests check that term exactly)
+    assert np.allclose(c.left.r - c.right.r, 2 * np.tan(alpha) * y, rtol=0.015, atol=1e-12)
+    # the mean contact angle is alpha; the roll tilts one up and one down
+    assert np.allclose(0.5 * (c.left.delta + c.right.delta), alpha, atol=1e-9)
+    assert not c.left.two_point.any() and not c.right.two_point.any()
+
+
+@pytest.mark.parametrize("i", range(2, 10))
+def test_manchester_tread_contact(manchester, i):
+    """1 to 4.5 mm: one contact point on the tread.  CONTACT's numbers carry the
+    benchmark's yaw (2.4 mrad/mm) and the elastic patch, which we leave out:
+    contact positions within 0.5 mm, contact angles within 0.4 degrees."""
+    rows, c = manchester
+    r = rows[i]
+    assert c.status[i] == 0
+    assert c.right.s_roller[i] * 1e3 == pytest.approx(r["right_ycp_rail_mm"], abs=0.5)
+    assert c.right.s_wheel[i] * 1e3 == pytest.approx(r["right_ycp_wheel_mm"], abs=0.5)
+    assert abs(c.right.delta[i]) == pytest.approx(abs(r["right_delta_rad"]),
+                                                  abs=np.radians(0.4))
+    assert abs(c.left.delta[i]) == pytest.approx(abs(r["left_delta_rad"]), abs=np.radians(0.4))
+
+
+def test_manchester_at_3mm_is_close(manchester):
+    """At 3 mm the geometric and the elastic contact points coincide within
+    0.05 mm and 0.05 degrees (measured: 0.01 mm, 0.01 degrees)."""
+    rows, c = manchester
+    i = 6
+    assert rows[i]["y_ws_mm"] == 3.0
+    assert c.right.s_roller[i] * 1e3 == pytest.approx(rows[i]["right_ycp_rail_mm"], abs=0.05)
+    assert c.right.s_wheel[i] * 1e3 == pytest.approx(rows[i]["right_ycp_wheel_mm"], abs=0.05)
+    assert abs(c.right.delta[i]) == pytest.approx(abs(rows[i]["right_delta_rad"]),
+                                                  abs=np.radians(0.05))
+    # the wheelset's roll, which the benchmark prescribes, within 3 %
+    assert c.roll[i] == pytest.approx(rows[i]["roll_rad"], rel=0.03)
+
+
+def test_manchester_jumps_and_flange(manchester):
+    """The contact point jumps where the profiles say so: onto the flange
+    root between 4.5 and 5 mm and onto the flange between 6 and 6.5 mm; the
+    flange contact angle is about 67 degrees (CONTACT: 66.4)."""
+    rows, c = manchester
+    s = c.right.s_roller * 1e3
+    assert s[10] - s[9] < -10.0            # 4.5 -> 5 mm: > 10 mm toward the gauge
+    assert s[13] - s[12] < -5.0            # 6 -> 6.5 mm: onto the flange
+    assert np.degrees(abs(c.right.delta[13])) == pytest.approx(66.4, abs=2.0)
+    for i in (10, 13):
+        assert s[i] == pytest.approx(rows[i]["right_ycp_rail_mm"], abs=0.7)
+    # CONTACT finds two patches at 0 mm; the search reports two-point contact
+    assert c.right.two_point[0] and c.left.two_point[0]
+
+
+def test_contact_table_matches_direct_search():
+    g = rr.RigGeometry(wheel=rr.Profile.s1002(), roller=rr.Profile.uic60(), wheel_radius=0.46,
+                       roller_radius=0.46, wheel_y=0.75, roller_y=0.76053)
+    t = rr.contact_table(g, -0.004, 0.004, 161)
+    y = np.linspace(-0.0039, 0.0039, 37)
+    direct = rr.wheelset_contact(g, y)
+    looked = t.lookup(y)
+    # away from jumps the tread geometry is smooth: linear interpolation at
+    # 0.05 mm spacing keeps the rolling radius within 1 micrometre
+    smooth = np.abs(y) > 0.0006
+    assert np.max(np.abs(looked.left.r - direct.left.r)[smooth]) < 1e-6
+    assert np.all(np.isnan(t.lookup(np.array([0.01])).z))
+
+
+def test_wheel_off_the_roller():
+    g = rr.RigGeometry(wheel=rr.Profile.s1002(), roller=rr.Profile.uic60(), wheel_radius=0.46,
+                       roller_radius=0.46, wheel_y=0.75, roller_y=0.76053)
+    with pytest.raises(rr.RollerRigError, match="y_ws"):
+        rr.wheelset_contact(g, 0.3)
+    with pytest.raises(rr.RollerRigError, match="wheel_radius"):
+        rr.wheelset_contact(rr.RigGeometry(wheel=g.wheel, roller=g.roller, wheel_radius=-1,
+                                           roller_radius=0.46, wheel_y=0.75, roller_y=0.76),
+                            0.0)
