@@ -411,67 +411,57 @@ static PyArrayObject *profile_array(PyObject *obj, const char *name)
 }
 
 #define NGEO 11   /* per side: y z s_wheel s_roller r R delta A B gap two_point */
+#define NPROF 12  /* knots, values, second derivatives of four profiles */
 
-/* wheelset_contact(profiles (8 arrays), params (8 floats), y_ws, nsamples,
- * two_point_tol, two_point_sep) -> (status, z, roll, left[NGEO, n], right[NGEO, n]) */
+/* wheelset_contact(12 profile arrays, params (8 floats), y_ws, nsamples,
+ * two_point_tol, two_point_sep) -> (status, z, roll, left[NGEO, n], right[NGEO, n]).
+ * Each profile comes as its spline (knots, values, second derivatives):
+ * the Profile's own spline, so that Python and C evaluate the same curve. */
 static PyObject *py_wheelset_contact(PyObject *self, PyObject *args)
 {
-    static const char *const pnames[8] = {"wheel_left.s", "wheel_left.z", "roller_left.s",
-                                          "roller_left.z", "wheel_right.s", "wheel_right.z",
-                                          "roller_right.s", "roller_right.z"};
-    PyObject *pobj[8], *yobj, *out[5] = {NULL, NULL, NULL, NULL, NULL}, *res;
-    PyArrayObject *prof[8] = {NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL}, *yarr = NULL;
-    double par[8], *m[8] = {NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL}, *work = NULL;
+    static const char *const pnames[4] = {"wheel_left", "roller_left", "wheel_right",
+                                          "roller_right"};
+    PyObject *pobj[NPROF], *yobj, *out[5] = {NULL, NULL, NULL, NULL, NULL}, *res;
+    PyArrayObject *prof[NPROF], *yarr = NULL;
+    double par[8];
     rr_wheel_roller pair[2];
     rr_search_opts o;
     npy_intp n, i, dims[2];
-    int k, st = 0;
+    int k;
     (void)self;
 
-    if (!PyArg_ParseTuple(args, "OOOOOOOO(dddddddd)Oidd:wheelset_contact", &pobj[0], &pobj[1],
-                          &pobj[2], &pobj[3], &pobj[4], &pobj[5], &pobj[6], &pobj[7], &par[0],
-                          &par[1], &par[2], &par[3], &par[4], &par[5], &par[6], &par[7], &yobj,
-                          &o.nsamples, &o.two_point_tol, &o.two_point_sep))
+    for (k = 0; k < NPROF; k++)
+        prof[k] = NULL;
+    if (!PyArg_ParseTuple(args, "OOOOOOOOOOOO(dddddddd)Oidd:wheelset_contact", &pobj[0],
+                          &pobj[1], &pobj[2], &pobj[3], &pobj[4], &pobj[5], &pobj[6], &pobj[7],
+                          &pobj[8], &pobj[9], &pobj[10], &pobj[11], &par[0], &par[1], &par[2],
+                          &par[3], &par[4], &par[5], &par[6], &par[7], &yobj, &o.nsamples,
+                          &o.two_point_tol, &o.two_point_sep))
         return NULL;
-    for (k = 0; k < 8; k++)
-        if (!(prof[k] = profile_array(pobj[k], pnames[k])))
+    for (k = 0; k < NPROF; k++)
+        if (!(prof[k] = profile_array(pobj[k], pnames[k / 3])))
             goto fail;
-    for (k = 0; k < 8; k += 2)
-        if (PyArray_DIM(prof[k], 0) != PyArray_DIM(prof[k + 1], 0)) {
-            PyErr_Format(PyExc_ValueError, "wheelset_contact: %s and %s differ in length",
-                         pnames[k], pnames[k + 1]);
-            goto fail;
-        }
-    if (!(yarr = (PyArrayObject *)PyArray_FROMANY(yobj, NPY_DOUBLE, 1, 1, NPY_ARRAY_IN_ARRAY)))
-        goto fail;
-    /* spline coefficients and the solver's buffer: allocated here, so that
-     * the core itself allocates nothing */
-    {
-        npy_intp most = 0;
-        for (k = 0; k < 8; k += 2) {
-            npy_intp len = PyArray_DIM(prof[k], 0);
-            if (len > most) most = len;
-            if (!(m[k / 2] = PyMem_Malloc(len * sizeof(double))))
-                goto nomem;
-        }
-        if (!(work = PyMem_Malloc(most * sizeof(double))))
-            goto nomem;
-    }
     for (k = 0; k < 4; k++) {
-        PyArrayObject *sa = prof[2 * k], *za = prof[2 * k + 1];
-        const int len = (int)PyArray_DIM(sa, 0);
+        const npy_intp len = PyArray_DIM(prof[3 * k], 0);
+        const double *sv = (const double *)PyArray_DATA(prof[3 * k]);
         rr_wheel_roller *p = &pair[k / 2];
         rr_spline *sp = k % 2 == 0 ? &p->wheel : &p->roller;
-        st = rr_spline_init(len, (double *)PyArray_DATA(sa), (double *)PyArray_DATA(za), m[k], work);
-        if (st < 0) {
-            PyErr_Format(PyExc_ValueError, "wheelset_contact: %s: %s", pnames[2 * k],
-                         rr_status_message(st));
+        npy_intp j;
+        if (PyArray_DIM(prof[3 * k + 1], 0) != len || PyArray_DIM(prof[3 * k + 2], 0) != len) {
+            PyErr_Format(PyExc_ValueError, "wheelset_contact: %s: knots, values and second "
+                         "derivatives differ in length", pnames[k]);
             goto fail;
         }
-        sp->n = len;
-        sp->s = (double *)PyArray_DATA(sa);
-        sp->z = (double *)PyArray_DATA(za);
-        sp->m = m[k];
+        for (j = 1; j < len; j++)
+            if (!(sv[j] > sv[j - 1])) {
+                PyErr_Format(PyExc_ValueError, "wheelset_contact: %s: knots not strictly "
+                             "increasing", pnames[k]);
+                goto fail;
+            }
+        sp->n = (int)len;
+        sp->s = sv;
+        sp->z = (const double *)PyArray_DATA(prof[3 * k + 1]);
+        sp->m = (const double *)PyArray_DATA(prof[3 * k + 2]);
     }
     for (k = 0; k < 2; k++) {
         pair[k].r0 = par[4 * k];
@@ -480,6 +470,8 @@ static PyObject *py_wheelset_contact(PyObject *self, PyObject *args)
         pair[k].roller_y = par[4 * k + 3];
         pair[k].side = k == 0 ? 1 : -1;
     }
+    if (!(yarr = (PyArrayObject *)PyArray_FROMANY(yobj, NPY_DOUBLE, 1, 1, NPY_ARRAY_IN_ARRAY)))
+        goto fail;
     n = PyArray_DIM(yarr, 0);
     dims[0] = NGEO;
     dims[1] = n;
@@ -515,24 +507,14 @@ static PyObject *py_wheelset_contact(PyObject *self, PyObject *args)
         }
         Py_END_ALLOW_THREADS
     }
-    for (k = 0; k < 4; k++)
-        PyMem_Free(m[k]);
-    PyMem_Free(work);
-    for (k = 0; k < 8; k++)
-        Py_DECREF(prof[k]);
+    release((PyObject **)prof, NPROF);
     Py_DECREF(yarr);
     if ((res = outputs_tuple(out, 5)) != NULL)
         return res;
     release(out, 5);
     return NULL;
-nomem:
-    PyErr_NoMemory();
 fail:
-    for (k = 0; k < 4; k++)
-        PyMem_Free(m[k]);
-    PyMem_Free(work);
-    for (k = 0; k < 8; k++)
-        Py_XDECREF(prof[k]);
+    release((PyObject **)prof, NPROF);
     Py_XDECREF(yarr);
     release(out, 5);
     return NULL;
@@ -561,7 +543,7 @@ static PyMethodDef core_methods[] = {
      METH_VARARGS | METH_KEYWORDS,
      "fastsim_field(<as creep_forces, one case>) -> (fx, fy, mz, status, x, y, pn, px, py, slip)"},
     {"wheelset_contact", py_wheelset_contact, METH_VARARGS,
-     "wheelset_contact(8 profile arrays, 8 params, y_ws, nsamples, tol, sep)"
+     "wheelset_contact(12 profile arrays (s, z, z'' each), 8 params, y_ws, nsamples, tol, sep)"
      " -> (status, z, roll, left, right)"},
     {"status_message", py_status_message, METH_O, "status_message(code) -> str"},
     {NULL, NULL, 0, NULL}

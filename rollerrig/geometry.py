@@ -51,15 +51,17 @@ class RigGeometry:
     roller_right: Optional[Profile] = None
 
     def _arrays(self):
-        """The eight (s, height-up) arrays the core takes: heights up, so -z."""
-        def pair(p, kind):
+        """The four profiles as the core takes them: each the Profile's own
+        spline (knots, values, second derivatives), heights up, so -z."""
+        def spline(p, kind):
             if not isinstance(p, Profile):
                 raise RollerRigError(f"RigGeometry: {kind} must be a Profile, got {p!r:.60}")
-            return np.ascontiguousarray(p.y), np.ascontiguousarray(-p.z)
+            return (np.ascontiguousarray(p.y), np.ascontiguousarray(-p.z),
+                    np.ascontiguousarray(-p.second_derivative(p.y)))
         out = []
         for w, r in ((self.wheel, self.roller),
                      (self.wheel_right or self.wheel, self.roller_right or self.roller)):
-            out += [*pair(w, "wheel"), *pair(r, "roller")]
+            out += [*spline(w, "wheel"), *spline(r, "roller")]
         return out
 
     def _params(self):

@@ -111,3 +111,16 @@ def test_wheel_off_the_roller():
         rr.wheelset_contact(rr.RigGeometry(wheel=g.wheel, roller=g.roller, wheel_radius=-1,
                                            roller_radius=0.46, wheel_y=0.75, roller_y=0.76),
                             0.0)
+
+
+def test_core_evaluates_the_profiles_own_spline():
+    """The core takes each Profile's spline (knots, values, second
+    derivatives), so its radii are the Profile's heights exactly."""
+    g = rr.RigGeometry(wheel=rr.Profile.s1002(), roller=rr.Profile.uic60(), wheel_radius=0.46,
+                       roller_radius=0.46, wheel_y=0.75, roller_y=0.76053)
+    c = rr.wheelset_contact(g, np.linspace(-0.006, 0.006, 41), errors="ignore")
+    ok = c.status >= 0
+    # the same cubic evaluated from the same coefficients: equal to rounding
+    assert np.allclose(c.left.r[ok], 0.46 + g.wheel.z_at(c.left.s_wheel[ok]), rtol=0, atol=1e-15)
+    assert np.allclose(c.right.R[ok], 0.46 - g.roller.z_at(c.right.s_roller[ok]), rtol=0,
+                       atol=1e-15)
