@@ -14,6 +14,7 @@
  *   rr_creepage.h  kinematic creepages of a wheel on a roller
  *   rr_spline.h    natural cubic splines for profiles
  *   rr_geometry.h  contact search, wheelset pose, contact tables
+ *   rr_rig_contact.h  one contact evaluation of the wheelset on the rollers
  */
 #ifndef ROLLERRIG_H
 #define ROLLERRIG_H
@@ -29,5 +30,6 @@
 #include "rr_creepage.h"
 #include "rr_spline.h"
 #include "rr_geometry.h"
+#include "rr_rig_contact.h"
 
 #endif

@@ -269,7 +269,7 @@ int rr_contact_table_build(const rr_wheel_roller *left, const rr_wheel_roller *r
 }
 
 int rr_contact_table_lookup(const rr_contact_table *t, double y_ws, rr_wheelset_pose *pose,
-                            rr_contact_point *cl, rr_contact_point *cr)
+                            rr_wheelset_pose *slope, rr_contact_point *cl, rr_contact_point *cr)
 {
     double pos, f;
     int i;
@@ -279,6 +279,8 @@ int rr_contact_table_lookup(const rr_contact_table *t, double y_ws, rr_wheelset_
         point_nan(cl);
         point_nan(cr);
         pose->z = pose->roll = NAN;
+        if (slope)
+            slope->z = slope->roll = NAN;
         return RR_ERR_NONFINITE;
     }
     pos = (y_ws - t->y0) / t->dy;
@@ -286,6 +288,8 @@ int rr_contact_table_lookup(const rr_contact_table *t, double y_ws, rr_wheelset_
         point_nan(cl);
         point_nan(cr);
         pose->z = pose->roll = NAN;
+        if (slope)
+            slope->z = slope->roll = NAN;
         return RR_ERR_GEOMETRY;
     }
     i = (int)pos;
@@ -298,5 +302,9 @@ int rr_contact_table_lookup(const rr_contact_table *t, double y_ws, rr_wheelset_
     load(a + NSIDE, b + NSIDE, f, cr);
     pose->z = a[2 * NSIDE] + f * (b[2 * NSIDE] - a[2 * NSIDE]);
     pose->roll = a[2 * NSIDE + 1] + f * (b[2 * NSIDE + 1] - a[2 * NSIDE + 1]);
+    if (slope) {
+        slope->z = (b[2 * NSIDE] - a[2 * NSIDE]) / t->dy;
+        slope->roll = (b[2 * NSIDE + 1] - a[2 * NSIDE + 1]) / t->dy;
+    }
     return RR_OK;
 }

@@ -18,8 +18,9 @@
  * method on the splines (where the two surfaces are parallel).  A second
  * local minimum of the gap within `two_point_tol` of the first and more
  * than `two_point_sep` away is reported as two-point contact.
- * The wheelset's yaw is not modelled here: the search is in the plane of
- * the axle.
+ * The search is in the plane of the axle: the wheelset's yaw, and its
+ * rotation about the roller axis, move the contact point around the
+ * roller (rr_rig_contact.h) and change the rest at second order only.
  */
 #ifndef RR_GEOMETRY_H
 #define RR_GEOMETRY_H
@@ -108,10 +109,14 @@ int rr_contact_table_build(const rr_wheel_roller *left, const rr_wheel_roller *r
 
 /*
  * rr_contact_table_lookup - interpolated geometry at lateral shift y_ws.
+ *   returns: *pose, both contact points; *slope (if not NULL) the
+ *            derivatives dz/dy_ws and droll/dy_ws of the interpolant, which
+ *            turn a lateral velocity into the vertical and roll rates the
+ *            contact constraint implies.
  *   The two-point flag is that of the nearer row.  No allocation, O(1).
  *   status:  0 OK; RR_ERR_GEOMETRY (y_ws outside the table), RR_ERR_NONFINITE
  */
 int rr_contact_table_lookup(const rr_contact_table *t, double y_ws, rr_wheelset_pose *pose,
-                            rr_contact_point *cl, rr_contact_point *cr);
+                            rr_wheelset_pose *slope, rr_contact_point *cl, rr_contact_point *cr);
 
 #endif

@@ -25,11 +25,14 @@ from . import profiles
 from .profiles import Profile, read_profile
 from .geometry import (ContactSide, ContactTable, RigGeometry, WheelsetContact, contact_table,
                        wheelset_contact)
+from .rig_contact import (LinearCreepages, RigContact, RigPose, WheelContact, linear_creepages,
+                          rig_contact)
 
 __all__ = [
     "__version__", "RollerRigError", "RollerRigWarning", "status_message", "METHODS",
     "BOUNDS", "FallingFriction", "HertzContact", "KalkerCoefficients", "CreepForces",
     "TractionField", "hertz", "kalker_coefficients", "creep_forces", "fastsim_field",
     "profiles", "Profile", "read_profile", "RigGeometry", "ContactSide", "WheelsetContact",
-    "wheelset_contact", "ContactTable", "contact_table",
+    "wheelset_contact", "ContactTable", "contact_table", "RigPose", "WheelContact",
+    "RigContact", "rig_contact", "LinearCreepages", "linear_creepages",
 ]

@@ -413,34 +413,20 @@ static PyArrayObject *profile_array(PyObject *obj, const char *name)
 #define NGEO 11   /* per side: y z s_wheel s_roller r R delta A B gap two_point */
 #define NPROF 12  /* knots, values, second derivatives of four profiles */
 
-/* wheelset_contact(12 profile arrays, params (8 floats), y_ws, nsamples,
- * two_point_tol, two_point_sep) -> (status, z, roll, left[NGEO, n], right[NGEO, n]).
- * Each profile comes as its spline (knots, values, second derivatives):
- * the Profile's own spline, so that Python and C evaluate the same curve. */
-static PyObject *py_wheelset_contact(PyObject *self, PyObject *args)
+/* The four profiles (each its spline: knots, values, second derivatives,
+ * the Profile's own, so that Python and C evaluate the same curve) and the
+ * eight placement parameters (r0, R0, wheel_y, roller_y per side) as the two
+ * wheel-roller pairs; prof[] keeps the arrays alive.  0, or -1 with an
+ * exception set. */
+static int parse_pairs(PyObject *const *pobj, const double *par, const char *func,
+                       PyArrayObject **prof, rr_wheel_roller *pair)
 {
     static const char *const pnames[4] = {"wheel_left", "roller_left", "wheel_right",
                                           "roller_right"};
-    PyObject *pobj[NPROF], *yobj, *out[5] = {NULL, NULL, NULL, NULL, NULL}, *res;
-    PyArrayObject *prof[NPROF], *yarr = NULL;
-    double par[8];
-    rr_wheel_roller pair[2];
-    rr_search_opts o;
-    npy_intp n, i, dims[2];
     int k;
-    (void)self;
-
-    for (k = 0; k < NPROF; k++)
-        prof[k] = NULL;
-    if (!PyArg_ParseTuple(args, "OOOOOOOOOOOO(dddddddd)Oidd:wheelset_contact", &pobj[0],
-                          &pobj[1], &pobj[2], &pobj[3], &pobj[4], &pobj[5], &pobj[6], &pobj[7],
-                          &pobj[8], &pobj[9], &pobj[10], &pobj[11], &par[0], &par[1], &par[2],
-                          &par[3], &par[4], &par[5], &par[6], &par[7], &yobj, &o.nsamples,
-                          &o.two_point_tol, &o.two_point_sep))
-        return NULL;
     for (k = 0; k < NPROF; k++)
         if (!(prof[k] = profile_array(pobj[k], pnames[k / 3])))
-            goto fail;
+            return -1;
     for (k = 0; k < 4; k++) {
         const npy_intp len = PyArray_DIM(prof[3 * k], 0);
         const double *sv = (const double *)PyArray_DATA(prof[3 * k]);
@@ -448,15 +434,15 @@ static PyObject *py_wheelset_contact(PyObject *self, PyObject *args)
         rr_spline *sp = k % 2 == 0 ? &p->wheel : &p->roller;
         npy_intp j;
         if (PyArray_DIM(prof[3 * k + 1], 0) != len || PyArray_DIM(prof[3 * k + 2], 0) != len) {
-            PyErr_Format(PyExc_ValueError, "wheelset_contact: %s: knots, values and second "
-                         "derivatives differ in length", pnames[k]);
-            goto fail;
+            PyErr_Format(PyExc_ValueError, "%s: %s: knots, values and second derivatives "
+                         "differ in length", func, pnames[k]);
+            return -1;
         }
         for (j = 1; j < len; j++)
             if (!(sv[j] > sv[j - 1])) {
-                PyErr_Format(PyExc_ValueError, "wheelset_contact: %s: knots not strictly "
-                             "increasing", pnames[k]);
-                goto fail;
+                PyErr_Format(PyExc_ValueError, "%s: %s: knots not strictly increasing", func,
+                             pnames[k]);
+                return -1;
             }
         sp->n = (int)len;
         sp->s = sv;
@@ -470,6 +456,44 @@ static PyObject *py_wheelset_contact(PyObject *self, PyObject *args)
         pair[k].roller_y = par[4 * k + 3];
         pair[k].side = k == 0 ? 1 : -1;
     }
+    return 0;
+}
+
+#define PAIR_FORMAT "OOOOOOOOOOOO(dddddddd)"
+#define PAIR_ARGS(pobj, par) &pobj[0], &pobj[1], &pobj[2], &pobj[3], &pobj[4], &pobj[5], \
+    &pobj[6], &pobj[7], &pobj[8], &pobj[9], &pobj[10], &pobj[11], &par[0], &par[1], &par[2], \
+    &par[3], &par[4], &par[5], &par[6], &par[7]
+
+/* One side's geometry into column i of a [NGEO, n] block. */
+static void store_geo(double *d, npy_intp n, npy_intp i, const rr_contact_point *q)
+{
+    const double v[NGEO] = {q->y, q->z, q->s_wheel, q->s_roller, q->r, q->R,
+                            q->delta, q->A, q->B, q->gap, (double)q->two_point};
+    int k;
+    for (k = 0; k < NGEO; k++)
+        d[k * n + i] = v[k];
+}
+
+/* wheelset_contact(12 profile arrays, params (8 floats), y_ws, nsamples,
+ * two_point_tol, two_point_sep) -> (status, z, roll, left[NGEO, n], right[NGEO, n]). */
+static PyObject *py_wheelset_contact(PyObject *self, PyObject *args)
+{
+    PyObject *pobj[NPROF], *yobj, *out[5] = {NULL, NULL, NULL, NULL, NULL}, *res;
+    PyArrayObject *prof[NPROF], *yarr = NULL;
+    double par[8];
+    rr_wheel_roller pair[2];
+    rr_search_opts o;
+    npy_intp n, i, dims[2];
+    int k;
+    (void)self;
+
+    for (k = 0; k < NPROF; k++)
+        prof[k] = NULL;
+    if (!PyArg_ParseTuple(args, PAIR_FORMAT "Oidd:wheelset_contact", PAIR_ARGS(pobj, par),
+                          &yobj, &o.nsamples, &o.two_point_tol, &o.two_point_sep))
+        return NULL;
+    if (parse_pairs(pobj, par, "wheelset_contact", prof, pair) < 0)
+        goto fail;
     if (!(yarr = (PyArrayObject *)PyArray_FROMANY(yobj, NPY_DOUBLE, 1, 1, NPY_ARRAY_IN_ARRAY)))
         goto fail;
     n = PyArray_DIM(yarr, 0);
@@ -491,19 +515,12 @@ static PyObject *py_wheelset_contact(PyObject *self, PyObject *args)
         for (i = 0; i < n; i++) {
             rr_wheelset_pose pose;
             rr_contact_point c[2];
-            int side;
             status[i] = (npy_int8)rr_wheelset_contact(&pair[0], &pair[1], y[i], &o, &pose,
                                                       &c[0], &c[1]);
             z[i] = pose.z;
             roll[i] = pose.roll;
-            for (side = 0; side < 2; side++) {
-                double *d = side == 0 ? L : R;
-                const rr_contact_point *q = &c[side];
-                const double v[NGEO] = {q->y, q->z, q->s_wheel, q->s_roller, q->r, q->R,
-                                        q->delta, q->A, q->B, q->gap, (double)q->two_point};
-                for (k = 0; k < NGEO; k++)
-                    d[k * n + i] = v[k];
-            }
+            store_geo(L, n, i, &c[0]);
+            store_geo(R, n, i, &c[1]);
         }
         Py_END_ALLOW_THREADS
     }
@@ -517,6 +534,267 @@ fail:
     release((PyObject **)prof, NPROF);
     Py_XDECREF(yarr);
     release(out, 5);
+    return NULL;
+}
+
+/* contact_table(12 profile arrays, params, y0, dy, n, nsamples, tol, sep)
+ * -> (data, status, bad_y): the C core's table rows, built with the GIL released. */
+static PyObject *py_contact_table(PyObject *self, PyObject *args)
+{
+    PyObject *pobj[NPROF], *data = NULL;
+    PyArrayObject *prof[NPROF];
+    double par[8], bad_y = NAN;
+    rr_wheel_roller pair[2];
+    rr_search_opts o;
+    rr_contact_table t;
+    npy_intp len;
+    int k, st;
+    (void)self;
+
+    for (k = 0; k < NPROF; k++)
+        prof[k] = NULL;
+    if (!PyArg_ParseTuple(args, PAIR_FORMAT "ddiidd:contact_table", PAIR_ARGS(pobj, par),
+                          &t.y0, &t.dy, &t.n, &o.nsamples, &o.two_point_tol, &o.two_point_sep))
+        return NULL;
+    if (parse_pairs(pobj, par, "contact_table", prof, pair) < 0)
+        goto fail;
+    if (t.n < 2 || t.n > 10000000) {
+        PyErr_Format(PyExc_ValueError, "contact_table: n must be in [2, 1e7], got %d", t.n);
+        goto fail;
+    }
+    len = (npy_intp)rr_contact_table_len(t.n);
+    if (!(data = PyArray_SimpleNew(1, &len, NPY_DOUBLE)))
+        goto fail;
+    t.data = OUT(data);
+    Py_BEGIN_ALLOW_THREADS
+    st = rr_contact_table_build(&pair[0], &pair[1], &o, &t, &bad_y);
+    Py_END_ALLOW_THREADS
+    release((PyObject **)prof, NPROF);
+    return Py_BuildValue("Nid", data, st, bad_y);
+fail:
+    release((PyObject **)prof, NPROF);
+    Py_XDECREF(data);
+    return NULL;
+}
+
+/* The table from its Python parts: rows as a 1-D float64 array. */
+static int parse_table(PyObject *obj, double y0, double dy, const char *func,
+                       rr_contact_table *t)
+{
+    PyArrayObject *a;
+    npy_intp rowlen = (npy_intp)rr_contact_table_len(1);
+    if (!PyArray_Check(obj) || PyArray_TYPE((PyArrayObject *)obj) != NPY_DOUBLE
+        || PyArray_NDIM((PyArrayObject *)obj) != 1
+        || !PyArray_IS_C_CONTIGUOUS((PyArrayObject *)obj)) {
+        PyErr_Format(PyExc_ValueError, "%s: the table data must be a contiguous 1-D float64 "
+                     "array", func);
+        return -1;
+    }
+    a = (PyArrayObject *)obj;
+    if (PyArray_DIM(a, 0) % rowlen != 0 || PyArray_DIM(a, 0) < 2 * rowlen
+        || PyArray_DIM(a, 0) / rowlen > INT_MAX) {
+        PyErr_Format(PyExc_ValueError, "%s: the table data has %zd values, not a whole number "
+                     "(>= 2) of %zd-value rows", func, (Py_ssize_t)PyArray_DIM(a, 0),
+                     (Py_ssize_t)rowlen);
+        return -1;
+    }
+    if (!(isfinite(y0) && isfinite(dy) && dy > 0.0)) {
+        PyErr_Format(PyExc_ValueError, "%s: table y0, dy must be finite with dy > 0, got %g, %g",
+                     func, y0, dy);
+        return -1;
+    }
+    t->y0 = y0;
+    t->dy = dy;
+    t->n = (int)(PyArray_DIM(a, 0) / rowlen);
+    t->data = (double *)PyArray_DATA(a);
+    return 0;
+}
+
+/* table_lookup(data, y0, dy, y) -> (status, z, roll, dz_dy, droll_dy, left, right) */
+static PyObject *py_table_lookup(PyObject *self, PyObject *args)
+{
+    PyObject *dobj, *yobj, *out[7] = {NULL, NULL, NULL, NULL, NULL, NULL, NULL}, *res;
+    PyArrayObject *yarr = NULL;
+    rr_contact_table t;
+    double y0, dy;
+    npy_intp n, i, dims[2];
+    int k;
+    (void)self;
+
+    if (!PyArg_ParseTuple(args, "OddO:table_lookup", &dobj, &y0, &dy, &yobj))
+        return NULL;
+    if (parse_table(dobj, y0, dy, "table_lookup", &t) < 0)
+        return NULL;
+    if (!(yarr = (PyArrayObject *)PyArray_FROMANY(yobj, NPY_DOUBLE, 1, 1, NPY_ARRAY_IN_ARRAY)))
+        return NULL;
+    n = PyArray_DIM(yarr, 0);
+    dims[0] = NGEO;
+    dims[1] = n;
+    out[0] = PyArray_SimpleNew(1, &n, NPY_INT8);
+    for (k = 1; k < 5; k++)
+        out[k] = PyArray_SimpleNew(1, &n, NPY_DOUBLE);
+    out[5] = PyArray_SimpleNew(2, dims, NPY_DOUBLE);
+    out[6] = PyArray_SimpleNew(2, dims, NPY_DOUBLE);
+    for (k = 0; k < 7; k++)
+        if (!out[k])
+            goto fail;
+    {
+        const double *y = (const double *)PyArray_DATA(yarr);
+        npy_int8 *status = OUT8(out[0]);
+        double *z = OUT(out[1]), *roll = OUT(out[2]), *dz = OUT(out[3]), *dr = OUT(out[4]);
+        double *L = OUT(out[5]), *R = OUT(out[6]);
+        Py_BEGIN_ALLOW_THREADS
+        for (i = 0; i < n; i++) {
+            rr_wheelset_pose pose, slope;
+            rr_contact_point c[2];
+            status[i] = (npy_int8)rr_contact_table_lookup(&t, y[i], &pose, &slope, &c[0],
+                                                          &c[1]);
+            z[i] = pose.z;
+            roll[i] = pose.roll;
+            dz[i] = slope.z;
+            dr[i] = slope.roll;
+            store_geo(L, n, i, &c[0]);
+            store_geo(R, n, i, &c[1]);
+        }
+        Py_END_ALLOW_THREADS
+    }
+    Py_DECREF(yarr);
+    if ((res = outputs_tuple(out, 7)) != NULL)
+        return res;
+fail:
+    Py_XDECREF(yarr);
+    release(out, 7);
+    return NULL;
+}
+
+/* ---------------------------------------------------- rig contact */
+
+#define NSTATE 10
+static const char *const state_names[NSTATE] = {"x", "y", "yaw", "vx", "vy", "yaw_rate",
+                                                "spin", "roller_spin", "N_left", "N_right"};
+#define NPOSE 11   /* c[3] roll beta v[3] w[3] */
+#define NWHEEL 35  /* see the Python side (rollerrig.rig_contact) for the order */
+
+static void store_wheel(double *d, npy_intp n, npy_intp i, const rr_wheel_contact *w)
+{
+    const double v[NWHEEL] = {
+        w->frame.p[0], w->frame.p[1], w->frame.p[2], w->theta,
+        w->frame.t1[0], w->frame.t1[1], w->frame.t1[2],
+        w->frame.t2[0], w->frame.t2[1], w->frame.t2[2], w->n[0], w->n[1], w->n[2],
+        w->creep.cx, w->creep.cy, w->creep.cphi, w->creep.V,
+        w->N, w->hertz.a, w->hertz.b, w->hertz.p0, w->f.fx, w->f.fy, w->f.mz,
+        w->force[0], w->force[1], w->force[2], w->moment[0], w->moment[1], w->moment[2],
+        w->geo.r, w->geo.R, w->geo.delta, w->geo.s_wheel, w->geo.s_roller};
+    int k;
+    for (k = 0; k < NWHEEL; k++)
+        d[k * n + i] = v[k];
+}
+
+/* rig_contact(data, y0, dy, (R0, estar, G, nu, mu0, A, B, vmin), 10 state arrays, *,
+ *             kinematics_only, <creep options>)
+ * -> (status, pose[NPOSE, n], left[NWHEEL, n], right[NWHEEL, n], left_status, right_status) */
+static PyObject *py_rig_contact(PyObject *self, PyObject *args, PyObject *kwargs)
+{
+    PyObject *dobj, *objs[NSTATE], *out[6] = {NULL, NULL, NULL, NULL, NULL, NULL}, *res, *v;
+    input in[NSTATE];
+    rr_contact_table t;
+    rr_rig_contact_model m;
+    double y0, dy;
+    npy_intp n, i, start, chunk, dims[2];
+    int k, kin_only = 0;
+    (void)self;
+
+    if (!PyArg_ParseTuple(args, "Odd(dddddddd)OOOOOOOOOO:rig_contact", &dobj, &y0, &dy, &m.R0,
+                          &m.estar, &m.G, &m.nu, &m.friction.mu0, &m.friction.A,
+                          &m.friction.B, &m.vmin, &objs[0], &objs[1], &objs[2], &objs[3],
+                          &objs[4], &objs[5], &objs[6], &objs[7], &objs[8], &objs[9]))
+        return NULL;
+    if (parse_table(dobj, y0, dy, "rig_contact", &t) < 0)
+        return NULL;
+    m.table = &t;
+    if (kwargs && (v = PyDict_GetItemString(kwargs, "kinematics_only")) != NULL) {
+        kin_only = PyObject_IsTrue(v);
+        if (kin_only < 0)
+            return NULL;
+    }
+    if (parse_opts(kwargs, "rig_contact", &m.creep) < 0)
+        return NULL;
+    {
+        int st = rr_rig_contact_check(&m);
+        if (st < 0) {
+            PyErr_Format(PyExc_ValueError, "rig_contact: invalid model: %s",
+                         rr_status_message(st));
+            return NULL;
+        }
+    }
+    if (parse_inputs("rig_contact", objs, state_names, NSTATE, &n, in) < 0)
+        return NULL;
+    dims[1] = n;
+    out[0] = PyArray_SimpleNew(1, &n, NPY_INT8);
+    dims[0] = NPOSE;
+    out[1] = PyArray_SimpleNew(2, dims, NPY_DOUBLE);
+    dims[0] = NWHEEL;
+    out[2] = PyArray_SimpleNew(2, dims, NPY_DOUBLE);
+    out[3] = PyArray_SimpleNew(2, dims, NPY_DOUBLE);
+    out[4] = PyArray_SimpleNew(1, &n, NPY_INT8);
+    out[5] = PyArray_SimpleNew(1, &n, NPY_INT8);
+    for (k = 0; k < 6; k++)
+        if (!out[k])
+            goto fail;
+    chunk = m.creep.method == RR_METHOD_LINEAR || m.creep.method == RR_METHOD_POLACH
+                ? CHUNK_WORK / 8
+                : CHUNK_WORK / (2 * (npy_intp)m.creep.nx * m.creep.ny) + 1;
+    for (start = 0; start < n; start += chunk) {
+        npy_intp stop = start + chunk < n ? start + chunk : n;
+        npy_int8 *status = OUT8(out[0]), *sl = OUT8(out[4]), *sr = OUT8(out[5]);
+        double *P = OUT(out[1]), *L = OUT(out[2]), *R = OUT(out[3]);
+        Py_BEGIN_ALLOW_THREADS
+        for (i = start; i < stop; i++) {
+            rr_rig_state s;
+            rr_rig_pose pose;
+            rr_wheel_contact w[2];
+            double N[2];
+            s.x = IN(in[0], i);
+            s.y = IN(in[1], i);
+            s.yaw = IN(in[2], i);
+            s.vx = IN(in[3], i);
+            s.vy = IN(in[4], i);
+            s.yaw_rate = IN(in[5], i);
+            s.spin = IN(in[6], i);
+            s.roller_spin = IN(in[7], i);
+            N[0] = IN(in[8], i);
+            N[1] = IN(in[9], i);
+            if (kin_only) {
+                status[i] = (npy_int8)rr_rig_kinematics(&m, &s, &pose, w);
+                for (k = 0; k < 2; k++) {
+                    w[k].N = w[k].hertz.a = w[k].hertz.b = w[k].hertz.p0 = NAN;
+                    w[k].f.fx = w[k].f.fy = w[k].f.mz = NAN;
+                    w[k].force[0] = w[k].force[1] = w[k].force[2] = NAN;
+                    w[k].moment[0] = w[k].moment[1] = w[k].moment[2] = NAN;
+                }
+            } else {
+                status[i] = (npy_int8)rr_rig_contact(&m, &s, N, &pose, w);
+            }
+            sl[i] = (npy_int8)w[0].status;
+            sr[i] = (npy_int8)w[1].status;
+            {
+                const double pv[NPOSE] = {pose.c[0], pose.c[1], pose.c[2], pose.roll,
+                                          pose.beta, pose.v[0], pose.v[1], pose.v[2],
+                                          pose.w[0], pose.w[1], pose.w[2]};
+                for (k = 0; k < NPOSE; k++)
+                    P[k * n + i] = pv[k];
+            }
+            store_wheel(L, n, i, &w[0]);
+            store_wheel(R, n, i, &w[1]);
+        }
+        Py_END_ALLOW_THREADS
+        if (PyErr_CheckSignals() < 0)
+            goto fail;
+    }
+    if ((res = outputs_tuple(out, 6)) != NULL)
+        return res;
+fail:
+    release(out, 6);
     return NULL;
 }
 
@@ -545,6 +823,15 @@ static PyMethodDef core_methods[] = {
     {"wheelset_contact", py_wheelset_contact, METH_VARARGS,
      "wheelset_contact(12 profile arrays (s, z, z'' each), 8 params, y_ws, nsamples, tol, sep)"
      " -> (status, z, roll, left, right)"},
+    {"contact_table", py_contact_table, METH_VARARGS,
+     "contact_table(12 profile arrays, 8 params, y0, dy, n, nsamples, tol, sep)"
+     " -> (data, status, bad_y)"},
+    {"table_lookup", py_table_lookup, METH_VARARGS,
+     "table_lookup(data, y0, dy, y) -> (status, z, roll, dz_dy, droll_dy, left, right)"},
+    {"rig_contact", (PyCFunction)(void (*)(void))py_rig_contact, METH_VARARGS | METH_KEYWORDS,
+     "rig_contact(data, y0, dy, (R0, estar, G, nu, mu0, A, B, vmin), x, y, yaw, vx, vy,"
+     " yaw_rate, spin, roller_spin, N_left, N_right, *, kinematics_only, <creep options>)"
+     " -> (status, pose, left, right, left_status, right_status)"},
     {"status_message", py_status_message, METH_O, "status_message(code) -> str"},
     {NULL, NULL, 0, NULL}
 };
@@ -574,6 +861,7 @@ PyMODINIT_FUNC PyInit__core(void)
         || PyModule_AddIntConstant(m, "SLIP_LOCAL", RR_SLIP_LOCAL) < 0
         || PyModule_AddIntConstant(m, "SLIP_RIGID", RR_SLIP_RIGID) < 0
         || PyModule_AddIntConstant(m, "FASTSIM_MAX_GRID", RR_FASTSIM_MAX_GRID) < 0
+        || PyModule_AddIntConstant(m, "TABLE_ROW", (int)rr_contact_table_len(1)) < 0
         || PyModule_AddIntConstant(m, "STATUS_MIN", RR_STATUS_MIN) < 0
         || PyModule_AddIntConstant(m, "STATUS_MAX", RR_STATUS_MAX) < 0) {
         Py_DECREF(m);

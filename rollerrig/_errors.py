@@ -31,9 +31,10 @@ def _poisson(v):
 # For each error status, the arguments it may be about and the test their
 # values must pass; a message names those that fail it.
 _STATUS_ARGS = {
-    -2: {"N": _positive},
+    -2: {"N": _positive, "N_left": _positive, "N_right": _positive},
     -3: {**{n: _positive for n in ("A", "B", "a", "b", "a_over_b")},
-         "y_ws": lambda v: False},     # a shift that puts a wheel off its roller
+         "y_ws": lambda v: False,      # a shift that puts a wheel off its roller
+         "y": lambda v: False, "x": lambda v: False},
     -4: {"E": _positive, "E2": _positive, "G": _positive, "nu": _poisson, "nu2": _poisson},
     -5: {"mu": _positive, "friction.A": lambda v: 0.0 < v <= 1.0,
          "friction.B": lambda v: v >= 0.0},

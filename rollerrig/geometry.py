@@ -13,7 +13,9 @@ gaps zero, for any lateral shift of the wheelset.
     c = rr.wheelset_contact(g, np.linspace(-0.005, 0.005, 11))
     c.left.r - c.right.r          # rolling-radius difference [m]
 
-Yaw is not modelled yet: the search is in the plane of the axle.
+The search is in the plane of the axle; rollerrig.rig_contact adds the
+wheelset's longitudinal shift and yaw, which move the contact points round
+the rollers (csrc/rr_rig_contact.h).
 """
 from dataclasses import dataclass
 from typing import NamedTuple, Optional
@@ -21,7 +23,7 @@ from typing import NamedTuple, Optional
 import numpy as np
 
 from . import _core
-from ._errors import RollerRigError, check_status
+from ._errors import RollerRigError, check_status, status_message
 from .profiles import Profile
 
 __all__ = ["RigGeometry", "ContactSide", "WheelsetContact", "wheelset_contact",
@@ -131,35 +133,73 @@ def wheelset_contact(geometry, y_ws, *, nsamples=400, two_point_tol=1e-4,
     return WheelsetContact(y, z, roll, _side(left), _side(right), status)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class ContactTable:
-    """wheelset_contact at equally spaced shifts, linearly interpolated."""
+    """The C core's contact table (csrc/rr_geometry.h): wheelset_contact at n
+    equally spaced shifts y0 + i dy, interpolated linearly in O(1).  Build
+    it with contact_table(); rig_contact() and the rig model read it."""
 
-    contact: WheelsetContact
+    geometry: RigGeometry
+    y0: float
+    dy: float
+    n: int
+    data: np.ndarray   #: the rows, as the core stores them (read-only)
 
-    def lookup(self, y_ws):
-        """The geometry at y_ws, interpolated linearly between the table's
-        rows (the two-point flag: the nearer row's).  Outside the table: NaN."""
-        yt = self.contact.y_ws
-        y = np.asarray(y_ws, dtype=float)
+    @property
+    def y_ws(self):
+        """The shifts of the rows [m]."""
+        return self.y0 + self.dy * np.arange(self.n)
 
-        def interp(v):
-            return np.interp(y, yt, v, left=np.nan, right=np.nan)
+    @property
+    def y_range(self):
+        return self.y0, self.y0 + self.dy * (self.n - 1)
 
-        def side(s):
-            vals = [interp(getattr(s, f)) for f in ContactSide._fields[:-1]]
-            idx = np.clip(np.rint((y - yt[0]) / (yt[1] - yt[0])), 0, yt.size - 1).astype(int)
-            return ContactSide(*vals, s.two_point[idx])
-        return WheelsetContact(y, interp(self.contact.z), interp(self.contact.roll),
-                               side(self.contact.left), side(self.contact.right),
-                               np.where(np.isfinite(interp(self.contact.z)), 0, -3).astype(np.int8))
+    def lookup(self, y_ws, *, errors=None):
+        """The geometry at y_ws [m], interpolated between rows (the two-point
+        flag: the nearer row's; gap: 0).  Outside the table: NaN with
+        status RR_ERR_GEOMETRY (the wheel off its roller)."""
+        func = "ContactTable.lookup"
+        y = np.atleast_1d(np.asarray(y_ws, dtype=float))
+        if y.ndim != 1 or y.size == 0:
+            raise RollerRigError(f"{func}: y_ws must be a number or a non-empty 1-D array")
+        status, z, roll, _, _, left, right = _core.table_lookup(self.data, self.y0, self.dy,
+                                                                 np.ascontiguousarray(y))
+        if errors is None:
+            errors = "raise" if np.ndim(y_ws) == 0 else "warn"
+        check_status(func, status, {"y_ws": y}, errors)
+        return WheelsetContact(y, z, roll, _side(left), _side(right), status)
+
+    def slopes(self, y_ws):
+        """d z / d y_ws and d roll / d y_ws of the interpolant at y_ws: the
+        constraint's rates per unit lateral velocity."""
+        y = np.ascontiguousarray(np.atleast_1d(np.asarray(y_ws, dtype=float)))
+        _, _, _, dz, droll, _, _ = _core.table_lookup(self.data, self.y0, self.dy, y)
+        return dz, droll
 
 
 def contact_table(geometry, y_min, y_max, n=401, **search):
-    """Contact table over [y_min, y_max] with n rows (direct search per row)."""
+    """Contact table over [y_min, y_max] with n rows (a direct search per row,
+    in C with the GIL released).  search: nsamples, two_point_tol,
+    two_point_sep as for wheelset_contact.  Raises RollerRigError naming the
+    first shift where a wheel leaves its roller."""
+    func = "contact_table"
     if not (np.isfinite(y_min) and np.isfinite(y_max) and y_max > y_min):
-        raise RollerRigError(f"contact_table: need y_min < y_max, got {y_min!r}, {y_max!r}")
+        raise RollerRigError(f"{func}: need y_min < y_max, got {y_min!r}, {y_max!r}")
     if not (isinstance(n, (int, np.integer)) and n >= 2):
-        raise RollerRigError(f"contact_table: n must be an integer >= 2, got {n!r}")
-    c = wheelset_contact(geometry, np.linspace(y_min, y_max, n), errors="raise", **search)
-    return ContactTable(c)
+        raise RollerRigError(f"{func}: n must be an integer >= 2, got {n!r}")
+    opts = dict(nsamples=400, two_point_tol=1e-4, two_point_sep=2e-3)
+    unknown = set(search) - set(opts)
+    if unknown:
+        raise RollerRigError(f"{func}: unknown option(s) {sorted(unknown)}")
+    opts.update(search)
+    if not (isinstance(opts["nsamples"], (int, np.integer)) and opts["nsamples"] >= 3):
+        raise RollerRigError(f"{func}: nsamples must be an integer >= 3, "
+                             f"got {opts['nsamples']!r}")
+    dy = (float(y_max) - float(y_min)) / (n - 1)
+    data, status, bad_y = _core.contact_table(
+        *geometry._arrays(), geometry._params(), float(y_min), dy, int(n),
+        int(opts["nsamples"]), float(opts["two_point_tol"]), float(opts["two_point_sep"]))
+    if status < 0:
+        raise RollerRigError(f"{func}: at y_ws = {bad_y!r}: {status_message(status)}")
+    data.setflags(write=False)
+    return ContactTable(geometry, float(y_min), dy, int(n), data)

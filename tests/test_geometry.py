@@ -99,7 +99,10 @@ def test_contact_table_matches_direct_search():
     # 0.05 mm spacing keeps the rolling radius within 1 micrometre
     smooth = np.abs(y) > 0.0006
     assert np.max(np.abs(looked.left.r - direct.left.r)[smooth]) < 1e-6
-    assert np.all(np.isnan(t.lookup(np.array([0.01])).z))
+    outside = t.lookup(np.array([0.01]), errors="ignore")
+    assert np.all(np.isnan(outside.z)) and outside.status[0] == -3
+    with pytest.raises(rr.RollerRigError, match="y_ws = 0.01"):
+        t.lookup(0.01)
 
 
 def test_wheel_off_the_roller():

@@ -122,7 +122,7 @@ static void test_table(void)
         rr_wheelset_pose p1, p2;
         rr_contact_point a1, b1, a2, b2;
         rr_wheelset_contact(&l, &r, y, &o, &p1, &a1, &b1);
-        rr_contact_table_lookup(&t, y, &p2, &a2, &b2);
+        rr_contact_table_lookup(&t, y, &p2, 0, &a2, &b2);
         if (fabs(a1.r - a2.r) > worst) worst = fabs(a1.r - a2.r);
     }
     /* linear interpolation of a smooth function at 0.1 mm spacing */
@@ -130,7 +130,7 @@ static void test_table(void)
     {
         rr_wheelset_pose p;
         rr_contact_point a, b;
-        CHECK_STATUS(rr_contact_table_lookup(&t, 0.02, &p, &a, &b), RR_ERR_GEOMETRY,
+        CHECK_STATUS(rr_contact_table_lookup(&t, 0.02, &p, 0, &a, &b), RR_ERR_GEOMETRY,
                      "table: outside its range");
         CHECK(a.r != a.r, "table: outside gives NaN");
     }

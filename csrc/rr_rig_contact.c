@@ -1,0 +1,245 @@
+/* rr_rig_contact.c - contact evaluation of the wheelset on the rig's rollers. */
+#include <math.h>
+#include "rr_common.h"
+#include "rr_rig_contact.h"
+
+int rr_rig_contact_check(const rr_rig_contact_model *m)
+{
+    if (!m->table || !m->table->data)
+        return RR_ERR_WORKSPACE;
+    if (!isfinite(m->R0) || !isfinite(m->estar) || !isfinite(m->G) || !isfinite(m->nu)
+        || !isfinite(m->vmin))
+        return RR_ERR_NONFINITE;
+    if (!(m->R0 > 0.0))
+        return RR_ERR_GEOMETRY;
+    if (!(m->estar > 0.0) || !(m->G > 0.0) || !(m->nu >= 0.0 && m->nu < 0.5))
+        return RR_ERR_MATERIAL;
+    if (!(m->vmin > 0.0))
+        return RR_ERR_SPEED;
+    {
+        int st = rr_friction_check(&m->friction);
+        if (st)
+            return st;
+    }
+    return rr_creep_opts_check(&m->creep);
+}
+
+static void vec_nan(double *v, int n)
+{
+    int i;
+    for (i = 0; i < n; i++)
+        v[i] = NAN;
+}
+
+static void wheel_nan(rr_wheel_contact *w, int status)
+{
+    w->theta = w->N = NAN;
+    vec_nan(w->frame.p, 3);
+    vec_nan(w->frame.t1, 3);
+    vec_nan(w->frame.t2, 3);
+    vec_nan(w->n, 3);
+    w->creep.cx = w->creep.cy = w->creep.cphi = w->creep.V = NAN;
+    vec_nan(w->creep.slip, 3);
+    w->hertz.a = w->hertz.b = w->hertz.p0 = w->hertz.delta = NAN;
+    rr_forces_nan(&w->f);
+    vec_nan(w->force, 3);
+    vec_nan(w->moment, 3);
+    w->status = status;
+}
+
+static void pose_nan(rr_rig_pose *p)
+{
+    vec_nan(p->c, 3);
+    vec_nan(p->v, 3);
+    vec_nan(p->w, 3);
+    p->roll = p->beta = NAN;
+}
+
+/* v turned by angle t about the Y axis, moving +Z toward +X. */
+static void turn_y(const double v[3], double t, double out[3])
+{
+    const double c = cos(t), s = sin(t);
+    out[0] = c * v[0] + s * v[2];
+    out[1] = v[1];
+    out[2] = -s * v[0] + c * v[2];
+}
+
+static void cross(const double a[3], const double b[3], double out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+int rr_rig_kinematics(const rr_rig_contact_model *m, const rr_rig_state *s, rr_rig_pose *pose,
+                      rr_wheel_contact w[2])
+{
+    rr_wheelset_pose tp, slope;
+    rr_motion wheel, roller;
+    double D = NAN, h, cy, sy, cr, sr, droll;
+    int k, st;
+
+    st = rr_rig_contact_check(m);
+    if (st == RR_OK && !(isfinite(s->x) && isfinite(s->y) && isfinite(s->yaw)
+                         && isfinite(s->vx) && isfinite(s->vy) && isfinite(s->yaw_rate)
+                         && isfinite(s->spin) && isfinite(s->roller_spin)))
+        st = RR_ERR_NONFINITE;
+    if (st == RR_OK)
+        st = rr_contact_table_lookup(m->table, s->y, &tp, &slope, &w[0].geo, &w[1].geo);
+    if (st == RR_OK) {
+        D = m->R0 + tp.z;          /* axle to roller axis, in the plane of the axle */
+        if (!(fabs(s->x) < 0.5 * D))
+            st = RR_ERR_GEOMETRY;  /* rolled a quarter of the way round: not a rig */
+    }
+    if (st < 0) {
+        pose_nan(pose);
+        wheel_nan(&w[0], st);
+        wheel_nan(&w[1], st);
+        return st;
+    }
+
+    /* the wheelset: centre on its circle about the roller axis, constrained rates */
+    h = sqrt(D * D - s->x * s->x);
+    pose->beta = asin(s->x / D);
+    pose->roll = tp.roll;
+    pose->c[0] = s->x;
+    pose->c[1] = s->y;
+    pose->c[2] = h - m->R0;
+    pose->v[0] = s->vx;
+    pose->v[1] = s->vy;
+    pose->v[2] = (D * slope.z * s->vy - s->x * s->vx) / h;
+    droll = slope.roll * s->vy;
+    cy = cos(s->yaw);
+    sy = sin(s->yaw);
+    cr = cos(tp.roll);
+    sr = sin(tp.roll);
+    /* spin about the axle R_z(yaw) R_x(roll) Y, roll about the yawed X, yaw about Z */
+    pose->w[0] = -s->spin * sy * cr + droll * cy;
+    pose->w[1] = s->spin * cy * cr + droll * sy;
+    pose->w[2] = s->spin * sr + s->yaw_rate;
+
+    wheel.c[0] = pose->c[0];
+    wheel.c[1] = pose->c[1];
+    wheel.c[2] = pose->c[2];
+    roller.c[0] = 0.0;
+    roller.c[1] = 0.0;
+    roller.c[2] = -m->R0;
+    for (k = 0; k < 3; k++) {
+        wheel.v[k] = pose->v[k];
+        wheel.w[k] = pose->w[k];
+        roller.v[k] = 0.0;
+    }
+    roller.w[0] = roller.w[2] = 0.0;
+    roller.w[1] = -s->roller_spin;
+
+    for (k = 0; k < 2; k++) {
+        rr_wheel_contact *c = &w[k];
+        const rr_contact_point *g = &c->geo;
+        const double sigma = k == 0 ? 1.0 : -1.0;
+        const double arm = g->y - s->y;
+        const double xj = s->x - arm * sy;
+        const double rR = g->r + g->R;
+        const double sd = sin(g->delta), cd = cos(g->delta);
+        /* the table's point and frame in the plane of the axle, about the roller axis */
+        const double p0[3] = {0.0, g->y, g->z + m->R0};
+        const double t10[3] = {1.0, 0.0, 0.0};
+        const double t20[3] = {0.0, cd, sigma * sd};
+        double p[3], mean;
+        int j;
+
+        if (!(fabs(xj) < 0.5 * rR)) {
+            wheel_nan(c, RR_ERR_GEOMETRY);
+            continue;
+        }
+        c->theta = asin(xj / rR) + sigma * g->r * tan(g->delta) * s->yaw / rR;
+        turn_y(p0, c->theta, p);
+        p[2] -= m->R0;
+        turn_y(t10, c->theta, c->frame.t1);
+        turn_y(t20, c->theta, c->frame.t2);
+        for (j = 0; j < 3; j++)
+            c->frame.p[j] = p[j];
+        /* material must enter at x = +a: t1 points where the contact travels
+         * relative to the material, against the mean material velocity */
+        {
+            double vw[3], vr[3], d[3];
+            for (j = 0; j < 3; j++)
+                d[j] = p[j] - wheel.c[j];
+            cross(wheel.w, d, vw);
+            for (j = 0; j < 3; j++)
+                d[j] = p[j] - roller.c[j];
+            cross(roller.w, d, vr);
+            mean = 0.0;
+            for (j = 0; j < 3; j++)
+                mean += (wheel.v[j] + vw[j] + vr[j]) * c->frame.t1[j];
+        }
+        if (mean > 0.0)
+            for (j = 0; j < 3; j++) {
+                c->frame.t1[j] = -c->frame.t1[j];
+                c->frame.t2[j] = -c->frame.t2[j];
+            }
+        cross(c->frame.t1, c->frame.t2, c->n);
+        st = rr_creepage(&wheel, &roller, &c->frame, m->vmin, &c->creep);
+        if (st < 0) {
+            wheel_nan(c, st);
+            continue;
+        }
+        c->status = st;
+    }
+    return w[0].status < 0 ? w[0].status
+         : w[1].status < 0 ? w[1].status
+         : (w[0].status > w[1].status ? w[0].status : w[1].status);
+}
+
+int rr_rig_contact(const rr_rig_contact_model *m, const rr_rig_state *s, const double N[2],
+                   rr_rig_pose *pose, rr_wheel_contact w[2])
+{
+    int k, st = rr_rig_kinematics(m, s, pose, w);
+    if (st < 0 && !isfinite(pose->c[0]))
+        return st;                  /* nothing valid: no pose */
+    for (k = 0; k < 2; k++) {
+        rr_wheel_contact *c = &w[k];
+        rr_contact_case cc;
+        double arm[3];
+        int j, sk;
+
+        if (c->status < 0)
+            continue;
+        c->N = N[k];
+        if (!isfinite(N[k])) {
+            wheel_nan(c, RR_ERR_NONFINITE);
+            continue;
+        }
+        sk = rr_hertz(c->geo.A, c->geo.B, N[k], m->estar, &c->hertz);
+        if (sk < 0) {
+            wheel_nan(c, sk);
+            continue;
+        }
+        cc.a = c->hertz.a;
+        cc.b = c->hertz.b;
+        cc.N = N[k];
+        cc.G = m->G;
+        cc.nu = m->nu;
+        cc.cx = c->creep.cx;
+        cc.cy = c->creep.cy;
+        cc.cphi = c->creep.cphi;
+        cc.speed = c->creep.V;
+        sk = rr_creep_forces(&cc, &m->friction, &m->creep, &c->f);
+        if (sk < 0) {
+            wheel_nan(c, sk);
+            continue;
+        }
+        if (sk > c->status)
+            c->status = sk;
+        for (j = 0; j < 3; j++) {
+            c->force[j] = c->f.fx * c->frame.t1[j] + c->f.fy * c->frame.t2[j] + N[k] * c->n[j];
+            arm[j] = c->frame.p[j] - pose->c[j];
+        }
+        cross(arm, c->force, c->moment);
+        for (j = 0; j < 3; j++)
+            c->moment[j] += c->f.mz * c->n[j];
+    }
+    st = w[0].status < 0 ? w[0].status
+       : w[1].status < 0 ? w[1].status
+       : (w[0].status > w[1].status ? w[0].status : w[1].status);
+    return st;
+}

@@ -1,0 +1,127 @@
+/*
+ * rr_rig_contact.h - one contact evaluation of the rig's wheelset on its two
+ * rollers: contact table lookup, the contact point and frame in the rig,
+ * the Hertz ellipse, the kinematic creepages and the creep forces, returned
+ * as forces and moments on the wheelset in the rig's coordinates.  Fixed
+ * cost, no allocation: what the time step calls twice per right-hand side.
+ *
+ * Rig frame (rr_geometry.h): X forward, Y left, Z up; Z = 0 at the top of
+ * a roller of radius R0; the rollers share one axis, the line (X, Z) =
+ * (0, -R0).  Motions: the wheelset turns about its axle (pointing left) at
+ * `spin` [rad/s], > 0 moving the bottoms of its wheels backward (rolling
+ * forward); the rollers turn at `roller_spin` [rad/s] with angular velocity
+ * -roller_spin Y, > 0 moving their tops backward.  Free rolling: spin r =
+ * roller_spin R at each contact.
+ *
+ * Placement.  The contact table gives, for the lateral shift y, the axle
+ * height z and roll with both wheels touching, and each contact point in
+ * the plane of the axle (x = 0).  Everything else follows from the rollers
+ * being bodies of revolution:
+ *   - a longitudinal shift x turns the wheelset about the roller axis by
+ *     beta = asin(x / (R0 + z)) (the tilt of the seed paper's eq. 5-6): the
+ *     centre sits at (x, y, sqrt((R0 + z)^2 - x^2) - R0), the geometry is
+ *     that of the table turned by beta;
+ *   - a yaw psi moves wheel j's centre to x_j = x - a_j sin psi (a_j its
+ *     contact point's lateral arm) and, on a coned profile, the point
+ *     around the wheel by sigma r tan(delta) psi: the contact point lies
+ *     at the angle theta_j = asin(x_j/(r+R)) + sigma r tan(delta) psi/(r+R)
+ *     around the roller axis (sigma = +1 left, -1 right), from the
+ *     tangency of the two surfaces to first order in psi.  On a rail
+ *     (R -> oo) the point leads the wheel centre by sigma r tan(delta) psi,
+ *     the classic result; on rollers the whole offset is scaled by R/(r+R).
+ *     Other quantities change at second order in psi.
+ * The contact frame is the table's frame turned by theta_j: t1 the
+ * roller's circumferential direction (reversed if the rig runs backward,
+ * so that material always enters at x = +a), n the common normal into the
+ * wheel, t2 = n x t1 (lateral, toward +Y when running forward).
+ *
+ * Constraint rates: the vertical velocity of the centre and the roll rate
+ * follow from vx, vy through the table's slopes dz/dy, droll/dy.
+ *
+ * Normal loads come from the caller (the rig model's normal contact).
+ */
+#ifndef RR_RIG_CONTACT_H
+#define RR_RIG_CONTACT_H
+
+#include "rr_creep.h"
+#include "rr_creepage.h"
+#include "rr_geometry.h"
+#include "rr_hertz.h"
+
+typedef struct {
+    const rr_contact_table *table;  /* geometry against lateral shift */
+    double R0;          /* roller radius at the rig's Z = 0 [m] */
+    double estar;       /* contact modulus E* [Pa] (rr_estar) */
+    double G, nu;       /* combined shear modulus [Pa] and Poisson ratio */
+    rr_friction friction;
+    rr_creep_opts creep;
+    double vmin;        /* least rolling speed for the creepages [m/s] (rr_creepage.h) */
+} rr_rig_contact_model;
+
+typedef struct {
+    double x, y;        /* wheelset centre: longitudinal and lateral position [m] */
+    double yaw;         /* about Z [rad] */
+    double vx, vy;      /* their rates [m/s] */
+    double yaw_rate;    /* [rad/s] */
+    double spin;        /* wheelset angular speed about its axle [rad/s] */
+    double roller_spin; /* rollers' angular speed [rad/s] */
+} rr_rig_state;
+
+typedef struct {
+    double c[3];        /* wheelset centre in the rig [m] */
+    double roll;        /* roll angle [rad], > 0 lifting the left wheel */
+    double beta;        /* turn about the roller axis [rad], > 0 forward */
+    double v[3];        /* centre velocity incl. the constrained vertical rate [m/s] */
+    double w[3];        /* angular velocity of the wheelset [rad/s] */
+} rr_rig_pose;
+
+typedef struct {
+    rr_contact_point geo;   /* the table's geometry (in the plane of the axle) */
+    double theta;           /* angle of the contact point around the roller axis [rad] */
+    rr_contact_frame frame; /* contact point, t1, t2 in the rig */
+    double n[3];            /* unit normal t1 x t2, into the wheel */
+    rr_creepages creep;     /* cx, cy, cphi, rolling speed V */
+    double N;               /* normal load [N] */
+    rr_hertz_result hertz;  /* a, b, p0 */
+    rr_forces f;            /* creep forces on the wheel along t1, t2; spin moment about n */
+    double force[3];        /* contact force on the wheelset, rig frame [N] */
+    double moment[3];       /* its moment about the wheelset centre [N m] */
+    int status;             /* this wheel's status */
+} rr_wheel_contact;
+
+/*
+ * rr_rig_contact_check - 0 if the model is usable, else RR_ERR_WORKSPACE
+ * (no table), RR_ERR_NONFINITE, RR_ERR_GEOMETRY (R0 <= 0), RR_ERR_MATERIAL,
+ * RR_ERR_FRICTION, RR_ERR_SPEED (vmin <= 0), rr_creep_opts_check.
+ */
+int rr_rig_contact_check(const rr_rig_contact_model *m);
+
+/*
+ * rr_rig_kinematics - pose, contact points and frames, creepages (no loads).
+ *   given:   m the model; s the wheelset and roller state
+ *   returns: *pose; w[0] left, w[1] right wheel: geo, theta, frame, n, creep
+ *            (the load fields are left untouched)
+ *   status:  0 OK; RR_ERR_NONFINITE (a NaN or infinite state),
+ *            RR_ERR_GEOMETRY (y outside the table: a wheel off its roller;
+ *            |x| too large), errors of rr_creepage.  Outputs NaN on error.
+ */
+int rr_rig_kinematics(const rr_rig_contact_model *m, const rr_rig_state *s, rr_rig_pose *pose,
+                      rr_wheel_contact w[2]);
+
+/*
+ * rr_rig_contact - the whole contact evaluation of both wheels.
+ *   given:   m; s; N[0], N[1] the normal loads of the left and right
+ *            wheel [N]
+ *   returns: *pose, w[0..1] complete: Hertz ellipse from the table's
+ *            curvature sums, creep forces by m->creep's method, and the
+ *            force and moment on the wheelset,
+ *            force = fx t1 + fy t2 + N n, moment = (p - c) x force + mz n.
+ *   status:  the worse of the two wheels' (errors < 0 before warnings);
+ *            each wheel's own in w[k].status, so one bad wheel leaves the
+ *            other's results valid.  rr_rig_kinematics, rr_hertz
+ *            (RR_ERR_LOAD for N <= 0), rr_creep_forces.
+ */
+int rr_rig_contact(const rr_rig_contact_model *m, const rr_rig_state *s, const double N[2],
+                   rr_rig_pose *pose, rr_wheel_contact w[2]);
+
+#endif

@@ -1,0 +1,218 @@
+"""One contact evaluation of the rig's wheelset on its two rollers.
+
+From the wheelset and roller state and the normal load of each wheel to the
+contact points and frames, the Hertz ellipses, the creepages and the creep
+forces, returned as forces and moments on the wheelset in the rig's
+coordinates (csrc/rr_rig_contact.h, the same C function the time step
+calls):
+
+    g = rr.RigGeometry(...)
+    table = rr.contact_table(g, -0.01, 0.01, 401)
+    c = rr.rig_contact(table, y=0.002, spin=5 / 0.46, roller_spin=5 / 0.46 * 0.999,
+                       N_left=1e4, N_right=1e4)
+    c.left.cx, c.left.fx, c.left.force      # creepage, creep force, force on the wheelset
+
+Rig frame: X forward, Y left, Z up, Z = 0 at the roller top of radius R0
+(RigGeometry.roller_radius), the rollers' common axis at (X, Z) = (0, -R0).
+spin > 0 rolls the wheelset forward (bottoms of the wheels moving
+backward); roller_spin > 0 moves the rollers' tops backward; free rolling:
+spin r = roller_spin R at each contact.  Creepages and forces follow the
+contact core (Kalker's sign, forces on the wheel): a braked wheelset has
+cx > 0, fx < 0.
+
+The wheelset's height and roll come from the contact table at its lateral
+shift y; its longitudinal shift x turns it about the roller axis (the seed
+paper's tilt beta), and its yaw moves each wheel's contact point round the
+roller (see csrc/rr_rig_contact.h for the first-order law and its
+reference).  linear_creepages() gives the seed paper's linearised eq. 7-9
+for comparison.
+"""
+from typing import NamedTuple
+
+import numpy as np
+
+from . import _core
+from ._errors import RollerRigError
+from .contact import _broadcast, _finish, _friction, _options
+from .geometry import ContactTable
+
+__all__ = ["RigPose", "WheelContact", "RigContact", "rig_contact", "LinearCreepages",
+           "linear_creepages"]
+
+
+class RigPose(NamedTuple):
+    c: np.ndarray        #: wheelset centre (X, Y, Z) [m], shape (3, ...)
+    roll: np.ndarray     #: roll angle [rad], > 0 lifting the left wheel
+    beta: np.ndarray     #: turn about the roller axis [rad], > 0 forward
+    v: np.ndarray        #: centre velocity incl. the constrained vertical rate [m/s], (3, ...)
+    w: np.ndarray        #: wheelset angular velocity [rad/s], (3, ...)
+
+
+class WheelContact(NamedTuple):
+    p: np.ndarray        #: contact point in the rig [m], (3, ...)
+    theta: np.ndarray    #: its angle round the roller axis from the top [rad]
+    t1: np.ndarray       #: rolling direction (unit, rig frame), (3, ...)
+    t2: np.ndarray       #: lateral direction in the contact plane, (3, ...)
+    n: np.ndarray        #: normal t1 x t2, into the wheel, (3, ...)
+    cx: np.ndarray       #: longitudinal creepage [-]
+    cy: np.ndarray       #: lateral creepage [-]
+    cphi: np.ndarray     #: spin creepage [rad/m]
+    V: np.ndarray        #: rolling speed used for the creepages [m/s]
+    N: np.ndarray        #: normal load [N]
+    a: np.ndarray        #: contact ellipse semi-axis along t1 [m]
+    b: np.ndarray        #: along t2 [m]
+    p0: np.ndarray       #: peak pressure [Pa]
+    fx: np.ndarray       #: creep force on the wheel along t1 [N]
+    fy: np.ndarray       #: along t2 [N]
+    mz: np.ndarray       #: spin moment on the wheel about n [N m]
+    force: np.ndarray    #: contact force on the wheelset, rig frame [N], (3, ...)
+    moment: np.ndarray   #: its moment about the wheelset centre [N m], (3, ...)
+    r: np.ndarray        #: wheel rolling radius [m]
+    R: np.ndarray        #: roller radius at the contact [m]
+    delta: np.ndarray    #: contact angle [rad]
+    s_wheel: np.ndarray  #: profile coordinates of the contact point [m]
+    s_roller: np.ndarray
+    status: np.ndarray   #: this wheel's status
+
+
+class RigContact(NamedTuple):
+    pose: RigPose
+    left: WheelContact
+    right: WheelContact
+    status: np.ndarray   #: the worse of the two wheels' statuses
+
+
+# rows of the binding's per-wheel block (rollerrig/_core.c, store_wheel)
+_VECTORS = {"p": 0, "t1": 4, "t2": 7, "n": 10, "force": 24, "moment": 27}
+_SCALARS = {"theta": 3, "cx": 13, "cy": 14, "cphi": 15, "V": 16, "N": 17, "a": 18, "b": 19,
+            "p0": 20, "fx": 21, "fy": 22, "mz": 23, "r": 30, "R": 31, "delta": 32,
+            "s_wheel": 33, "s_roller": 34}
+
+
+def _wheel(block, status, shape):
+    vals = {}
+    for name, k in _VECTORS.items():
+        vals[name] = block[k:k + 3].reshape((3,) + shape)
+    for name, k in _SCALARS.items():
+        vals[name] = block[k].reshape(shape)
+    return WheelContact(**vals, status=status.reshape(shape))
+
+
+def _check_table(func, table):
+    if not isinstance(table, ContactTable):
+        raise RollerRigError(f"{func}: table must be a ContactTable (rr.contact_table), "
+                             f"got {table!r:.60}")
+
+
+def _model(func, table, mu, E, nu, vmin, friction):
+    g = table.geometry
+    for name, v, ok in (("mu", mu, mu > 0), ("E", E, E > 0), ("nu", nu, 0 <= nu < 0.5),
+                        ("vmin", vmin, vmin > 0)):
+        if not (np.isscalar(v) and np.isfinite(v) and ok):
+            raise RollerRigError(f"{func}: {name} must be a finite number "
+                                 f"{'in [0, 0.5)' if name == 'nu' else '> 0'}, got {v!r}")
+    fA, fB = _friction(func, friction)
+    estar = E / (2.0 * (1.0 - nu * nu))     # two steel bodies of the same material
+    G = E / (2.0 * (1.0 + nu))
+    return (float(g.roller_radius), estar, G, float(nu), float(mu), fA, fB, float(vmin))
+
+
+def rig_contact(table, *, x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spin,
+                roller_spin, N_left, N_right, mu=0.4, friction=None, E=2.1e11, nu=0.28,
+                vmin=1e-3, method="fastsim", nx=20, ny=20, bound="parabolic", grid="rect",
+                slip_speed=None, k0=0.54, alpha_inf=0.02, beta=0.62, kA=1.0, kS=1.0,
+                kinematics_only=False, errors=None):
+    """Contact of both wheels for wheelset states (numpy-broadcast arrays).
+
+    table:     ContactTable of the rig's wheel/roller pair
+    x, y:      wheelset centre's longitudinal and lateral position [m]
+    yaw:       [rad] about Z; vx, vy [m/s], yaw_rate [rad/s] their rates
+    spin:      wheelset angular speed about its axle [rad/s]
+    roller_spin: the rollers' angular speed [rad/s]
+    N_left, N_right: normal loads [N]
+    mu, friction: static friction coefficient; None (Coulomb) or a FallingFriction
+    E, nu:     Young's modulus [Pa] and Poisson ratio of wheel and roller steel
+    vmin:      least rolling speed for the creepages [m/s] (standstill)
+    method, nx, ny, ...: the creep-force method and its options, as for
+               creep_forces (default FASTSIM on a 20 x 20 grid)
+    kinematics_only: skip Hertz and the forces (their fields are NaN)
+    Returns RigContact(pose, left, right, status); one wheel's error leaves
+    the other's results valid (see each wheel's status).
+    """
+    func = "rig_contact"
+    _check_table(func, table)
+    opts = _options(func, method, nx, ny, bound, grid, slip_speed, k0, alpha_inf, beta, kA,
+                    kS)
+    model = _model(func, table, mu, E, nu, vmin, friction)
+    named = dict(x=x, y=y, yaw=yaw, vx=vx, vy=vy, yaw_rate=yaw_rate, spin=spin,
+                 roller_spin=roller_spin, N_left=N_left, N_right=N_right)
+    shape, scalar, full, flat = _broadcast(func, named)
+    status, pose, left, right, sl, sr = _core.rig_contact(
+        table.data, table.y0, table.dy, model, *flat, kinematics_only=bool(kinematics_only),
+        **opts)
+    if kinematics_only:
+        # no loads were used: do not let a placeholder load be blamed
+        full = {k: v for k, v in full.items() if not k.startswith("N_")}
+    _finish(func, shape, scalar, full, (), status, errors)
+    status = status.reshape(shape)
+    p = RigPose(pose[0:3].reshape((3,) + shape), pose[3].reshape(shape),
+                pose[4].reshape(shape), pose[5:8].reshape((3,) + shape),
+                pose[8:11].reshape((3,) + shape))
+    res = RigContact(p, _wheel(left, sl, shape), _wheel(right, sr, shape), status)
+    if scalar:
+        res = _scalarise(res)
+    return res
+
+
+def _scalarise(t):
+    """0-d arrays of a scalar call as numpy scalars; 3-vectors stay arrays."""
+    return type(t)(*(_scalarise(v) if isinstance(v, tuple) else v[()] for v in t))
+
+
+class LinearCreepages(NamedTuple):
+    cx: np.ndarray
+    cy: np.ndarray
+    cphi: np.ndarray
+
+
+def linear_creepages(table, *, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spin,
+                     roller_spin):
+    """The seed paper's linearised creepages (eq. 7-9) at the table geometry.
+
+    In this library's conventions (Kalker's sign, a_j the signed lateral arm
+    of contact j from the wheelset centre, sigma = +1 left, -1 right),
+    with V = roller_spin R0 the roller surface speed and w0 = V/r0:
+
+        cx = (r0 - r)/r0 + (R - R0)/R0 + vx/V - (spin - w0) r0/V - a yaw_rate/V   (7)
+        cy = -yaw + (1 + A0 (r + sigma delta a)) vy / V                          (8)
+        cphi = -sigma delta (1/r0 + 1/R0)                                        (9)
+
+    A0 = d roll / d y is the paper's geometric parameter (the table's slope).
+    Eq. 7's first term is (r0 - r)(r0 + R0)/(r0 R0) in the paper, which is
+    ours when R - R0 = r0 - r (the wheelset at constant height); eq. 9 omits
+    the yaw rate's spin, yaw_rate cos(delta)/V, as does the paper.  Returns
+    (left, right) LinearCreepages.
+    """
+    func = "linear_creepages"
+    _check_table(func, table)
+    g = table.geometry
+    r0, R0 = float(g.wheel_radius), float(g.roller_radius)
+    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in
+                                   (y, yaw, vx, vy, yaw_rate, spin, roller_spin)))
+    y, yaw, vx, vy, yaw_rate, spin, roller_spin = arrays
+    V = roller_spin * R0
+    if np.any(~(np.abs(V) > 0)):
+        raise RollerRigError(f"{func}: roller_spin must be non-zero (V_n = 0 needs the exact "
+                             f"creepages), got {roller_spin!r:.60}")
+    w0 = V / r0
+    geo = table.lookup(y.reshape(-1), errors="raise")
+    A0 = table.slopes(y.reshape(-1))[1].reshape(y.shape)
+    out = []
+    for side, sigma in ((geo.left, 1.0), (geo.right, -1.0)):
+        r, R, delta = (getattr(side, f).reshape(y.shape) for f in ("r", "R", "delta"))
+        a = side.y.reshape(y.shape) - y
+        cx = (r0 - r) / r0 + (R - R0) / R0 + vx / V - (spin - w0) * r0 / V - a * yaw_rate / V
+        cy = -yaw + (1.0 + A0 * (r + sigma * delta * a)) * vy / V
+        cphi = -sigma * delta * (1.0 / r0 + 1.0 / R0)
+        out.append(LinearCreepages(cx, cy, cphi))
+    return tuple(out)
