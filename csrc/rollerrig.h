@@ -15,6 +15,7 @@
  *   rr_spline.h    natural cubic splines for profiles
  *   rr_geometry.h  contact search, wheelset pose, contact tables
  *   rr_rig_contact.h  one contact evaluation of the wheelset on the rollers
+ *   rr_control.h   PI speed controllers, drive lag, encoders, creepage controller
  */
 #ifndef ROLLERRIG_H
 #define ROLLERRIG_H
@@ -31,5 +32,6 @@
 #include "rr_spline.h"
 #include "rr_geometry.h"
 #include "rr_rig_contact.h"
+#include "rr_control.h"
 
 #endif

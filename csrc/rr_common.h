@@ -28,7 +28,8 @@ enum rr_status {
     RR_ERR_GRID = -6,           /* grid size outside [1, RR_FASTSIM_MAX_GRID] */
     RR_ERR_SPEED = -7,          /* falling friction needs a positive rolling speed */
     RR_ERR_METHOD = -8,         /* unknown method or traction bound */
-    RR_ERR_PARAM = -9,          /* method parameter out of range (k0, alpha_inf, beta, kA, kS) */
+    RR_ERR_PARAM = -9,          /* parameter out of range: method option (k0, alpha_inf, beta,
+                                   kA, kS), search option, controller setting */
     RR_ERR_WORKSPACE = -10      /* caller-supplied buffer missing or too small */
 };
 

@@ -3,7 +3,7 @@
 
 static const char *const rr_messages[] = {
     /* -10 */ "caller-supplied buffer missing or too small",
-    /*  -9 */ "method parameter out of range (k0, alpha_inf, beta, kA, kS)",
+    /*  -9 */ "parameter out of range (a method option, a controller or search setting)",
     /*  -8 */ "unknown method or traction bound",
     /*  -7 */ "falling friction needs a positive rolling speed",
     /*  -6 */ "grid size out of range",

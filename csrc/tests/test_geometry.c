@@ -150,11 +150,91 @@ static void test_off_roller(void)
     CHECK_STATUS(rr_contact_search(&l, NAN, 0.1, 0.0, &o, &c), RR_ERR_NONFINITE, "NaN shift");
 }
 
+/* The whole evaluation on the conical pair: free rolling, braking, bad input. */
+static void test_rig_contact(void)
+{
+    const double alpha = 0.05, rho = 0.1, V = 5.0;
+    rr_wheel_roller l, r;
+    rr_search_opts o;
+    static double data[101 * 22];
+    rr_contact_table t;
+    rr_rig_contact_model m;
+    rr_rig_state s;
+    rr_rig_pose pose;
+    rr_wheel_contact w[2];
+    rr_wheelset_pose tp;
+    rr_contact_point cl, cr;
+    double N[2] = {1000.0, 1000.0};
+    int k;
+
+    conical_pair(alpha, rho, +1, &l);
+    r = l;
+    r.side = -1;
+    rr_search_opts_default(&o);
+    t.y0 = -0.005; t.dy = 1e-4; t.n = 101; t.data = data;
+    CHECK_STATUS(rr_contact_table_build(&l, &r, &o, &t, 0), RR_OK, "rig: table");
+    rr_contact_table_lookup(&t, 0.0, &tp, 0, &cl, &cr);
+    m.table = &t;
+    m.R0 = 0.2;
+    m.estar = rr_estar(2.1e11, 0.28, 2.1e11, 0.28);
+    m.G = 2.1e11 / 2.56;
+    m.nu = 0.28;
+    m.friction.mu0 = 0.4; m.friction.A = 1.0; m.friction.B = 0.0;
+    rr_creep_opts_default(RR_METHOD_FASTSIM, &m.creep);
+    m.creep.nx = m.creep.ny = 20;
+    m.vmin = 1e-3;
+    CHECK_STATUS(rr_rig_contact_check(&m), RR_OK, "rig: model");
+
+    s.x = s.y = s.yaw = s.vx = s.vy = s.yaw_rate = 0.0;
+    s.spin = V / cl.r;
+    s.roller_spin = V / cl.R;
+    CHECK_STATUS(rr_rig_contact(&m, &s, N, &pose, w), RR_OK, "rig: free rolling");
+    for (k = 0; k < 2; k++) {
+        CHECK(fabs(w[k].creep.cx) < 1e-12 && fabs(w[k].creep.cy) < 1e-12,
+              "rig: free rolling has no creepage");
+        CHECK(fabs(w[k].f.fx) < 1e-9, "rig: free rolling has no longitudinal force");
+        /* the normal force is N along n, n into the wheel (upward) */
+        CHECK_CLOSE(w[k].force[2], N[k] * w[k].n[2] + w[k].f.fy * w[k].frame.t2[2], 1e-9, 0.0,
+                    "rig: vertical force");
+    }
+    CHECK(fabs(w[0].force[1] + w[1].force[1]) < 1e-9, "rig: spin forces cancel");
+
+    s.spin *= 0.98;     /* braked */
+    CHECK_STATUS(rr_rig_contact(&m, &s, N, &pose, w), RR_OK, "rig: braked");
+    CHECK(w[0].creep.cx > 0.0 && w[0].f.fx < 0.0 && w[0].force[0] < 0.0,
+          "rig: braking pushes the wheel back");
+    CHECK(w[0].moment[1] + w[1].moment[1] > 0.0, "rig: and spins it up");
+
+    N[0] = -1.0;
+    CHECK_STATUS(rr_rig_contact(&m, &s, N, &pose, w), RR_ERR_LOAD, "rig: negative load");
+    CHECK(w[0].status == RR_ERR_LOAD && w[0].force[0] != w[0].force[0],
+          "rig: the bad wheel is NaN");
+    CHECK(w[1].status == RR_OK && isfinite(w[1].force[0]), "rig: the other wheel is valid");
+    N[0] = 1000.0;
+    s.y = 0.01;
+    CHECK_STATUS(rr_rig_contact(&m, &s, N, &pose, w), RR_ERR_GEOMETRY, "rig: off the table");
+    CHECK(pose.c[2] != pose.c[2] && w[1].creep.cx != w[1].creep.cx, "rig: NaN pose");
+    s.y = 0.0;
+    s.yaw_rate = NAN;
+    CHECK_STATUS(rr_rig_contact(&m, &s, N, &pose, w), RR_ERR_NONFINITE, "rig: NaN state");
+    s.yaw_rate = 0.0;
+    s.x = 0.2;
+    CHECK_STATUS(rr_rig_contact(&m, &s, N, &pose, w), RR_ERR_GEOMETRY,
+                 "rig: far round the roller");
+    s.x = 0.0;
+    m.vmin = 0.0;
+    CHECK_STATUS(rr_rig_contact(&m, &s, N, &pose, w), RR_ERR_SPEED, "rig: vmin = 0");
+    m.vmin = 1e-3;
+    m.table = 0;
+    CHECK_STATUS(rr_rig_contact_check(&m), RR_ERR_WORKSPACE, "rig: no table");
+}
+
 int main(void)
 {
     test_spline();
     test_conical();
     test_table();
     test_off_roller();
+    test_rig_contact();
     return rr_test_summary();
 }
