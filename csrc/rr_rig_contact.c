@@ -64,6 +64,14 @@ static void turn_y(const double v[3], double t, double out[3])
     out[2] = -s * v[0] + c * v[2];
 }
 
+/* The worse of two statuses: any error before any warning. */
+static int worse(int a, int b)
+{
+    if (a < 0 || b < 0)
+        return a < b ? a : b;
+    return a > b ? a : b;
+}
+
 static void cross(const double a[3], const double b[3], double out[3])
 {
     out[0] = a[1] * b[2] - a[2] * b[1];
@@ -185,17 +193,13 @@ int rr_rig_kinematics(const rr_rig_contact_model *m, const rr_rig_state *s, rr_r
         }
         c->status = st;
     }
-    return w[0].status < 0 ? w[0].status
-         : w[1].status < 0 ? w[1].status
-         : (w[0].status > w[1].status ? w[0].status : w[1].status);
+    return worse(w[0].status, w[1].status);
 }
 
-int rr_rig_contact(const rr_rig_contact_model *m, const rr_rig_state *s, const double N[2],
-                   rr_rig_pose *pose, rr_wheel_contact w[2])
+int rr_rig_contact_loads(const rr_rig_contact_model *m, const double N[2], const rr_rig_pose *pose,
+                         rr_wheel_contact w[2])
 {
-    int k, st = rr_rig_kinematics(m, s, pose, w);
-    if (st < 0 && !isfinite(pose->c[0]))
-        return st;                  /* nothing valid: no pose */
+    int k;
     for (k = 0; k < 2; k++) {
         rr_wheel_contact *c = &w[k];
         rr_contact_case cc;
@@ -238,8 +242,14 @@ int rr_rig_contact(const rr_rig_contact_model *m, const rr_rig_state *s, const d
         for (j = 0; j < 3; j++)
             c->moment[j] += c->f.mz * c->n[j];
     }
-    st = w[0].status < 0 ? w[0].status
-       : w[1].status < 0 ? w[1].status
-       : (w[0].status > w[1].status ? w[0].status : w[1].status);
-    return st;
+    return worse(w[0].status, w[1].status);
+}
+
+int rr_rig_contact(const rr_rig_contact_model *m, const rr_rig_state *s, const double N[2],
+                   rr_rig_pose *pose, rr_wheel_contact w[2])
+{
+    int st = rr_rig_kinematics(m, s, pose, w);
+    if (st < 0 && !isfinite(pose->c[0]))
+        return st;                  /* nothing valid: no pose */
+    return rr_rig_contact_loads(m, N, pose, w);
 }

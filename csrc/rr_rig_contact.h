@@ -124,4 +124,14 @@ int rr_rig_kinematics(const rr_rig_contact_model *m, const rr_rig_state *s, rr_r
 int rr_rig_contact(const rr_rig_contact_model *m, const rr_rig_state *s, const double N[2],
                    rr_rig_pose *pose, rr_wheel_contact w[2]);
 
+/*
+ * rr_rig_contact_loads - the second half of rr_rig_contact: Hertz, creep
+ * forces, force and moment for the wheels of a finished rr_rig_kinematics
+ * (wheels with an error status are skipped), so that a caller can choose
+ * the loads from the contact frames (the rig model's normal-load balance).
+ *   status:  as rr_rig_contact
+ */
+int rr_rig_contact_loads(const rr_rig_contact_model *m, const double N[2], const rr_rig_pose *pose,
+                         rr_wheel_contact w[2]);
+
 #endif
