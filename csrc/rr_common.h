@@ -30,10 +30,11 @@ enum rr_status {
     RR_ERR_METHOD = -8,         /* unknown method or traction bound */
     RR_ERR_PARAM = -9,          /* parameter out of range: method option (k0, alpha_inf, beta,
                                    kA, kS), search option, controller setting */
-    RR_ERR_WORKSPACE = -10      /* caller-supplied buffer missing or too small */
+    RR_ERR_WORKSPACE = -10,     /* caller-supplied buffer missing or too small */
+    RR_ERR_SINGULAR = -11       /* a linear system (e.g. I - gamma h J) is singular */
 };
 
-#define RR_STATUS_MIN (-10)
+#define RR_STATUS_MIN (-11)
 #define RR_STATUS_MAX 1
 
 /* Message of a status code; a fixed string, never NULL. */

@@ -2,6 +2,7 @@
 #include "rr_common.h"
 
 static const char *const rr_messages[] = {
+    /* -11 */ "matrix singular to working precision (e.g. I - gamma h J)",
     /* -10 */ "caller-supplied buffer missing or too small",
     /*  -9 */ "parameter out of range (a method option, a controller or search setting)",
     /*  -8 */ "unknown method or traction bound",
