@@ -1,16 +1,9 @@
 /* rr_fastsim.c - FASTSIM (Kalker 1982) with blended and modified variants. */
+#include <float.h>
 #include <math.h>
 #include "rr_common.h"
 #include "rr_kalker.h"
 #include "rr_fastsim.h"
-
-/* Rows marched side by side (see rr_fastsim). */
-#ifndef ROWS_AT_ONCE
-#define ROWS_AT_ONCE 2
-#endif
-
-/* Newton iterations for the falling-friction bound; it converges in a few. */
-#define FALLING_MAX_ITER 50
 
 typedef struct {
     double L1, L2, L3;   /* flexibilities [m/Pa] after blending and modification */
@@ -53,115 +46,437 @@ static void flexibilities(const rr_contact_case *c, const rr_friction *fr, int m
     }
 }
 
+/* Newton iterations for the falling-friction bound; it converges in a few. */
+#define FALLING_MAX_ITER 50
+
+/* The friction law with its constants hoisted: mu(w) and dmu/dw(w) share one
+ * exp and round exactly as rr_friction_mu and rr_friction_dmu do. */
+typedef struct {
+    double mu0, A, c1, nB, dk, Amu0, speed;
+} law;
+
+static void law_init(const rr_friction *fr, double speed, law *l)
+{
+    l->mu0 = fr->mu0;
+    l->A = fr->A;
+    l->c1 = 1.0 - fr->A;
+    l->nB = -fr->B;
+    l->dk = -fr->mu0 * (1.0 - fr->A) * fr->B;
+    l->Amu0 = fr->A * fr->mu0;
+    l->speed = speed;
+}
+
 /* Falling friction: the slip speed v = speed * s in a slipping element solves
  *   s = (Leff/step) (m - mu(speed s) pn),  m = |p*|.
  * The residual is convex and increasing past its root; Newton's method from
- * the kinetic bound (mu = A mu0) approaches the root from above. */
-static double falling_bound(const rr_friction *fr, double speed, double pn, double m,
-                            double leff_step, int *converged)
-{
-    double s = leff_step * (m - fr->A * fr->mu0 * pn);
+ * the kinetic bound (mu = A mu0) approaches the root from above.  The state
+ * of one element's iteration, so that the elements of several rows can
+ * iterate side by side. */
+typedef struct {
+    double s, ls, lps, pn, m, ftol;   /* s; Leff/step; Leff/step pn speed; pn; m; |f| tolerance */
+    double g;                         /* result: the bound mu pn */
     int it;
+} newton;
 
-    for (it = 0; it < FALLING_MAX_ITER; it++) {
-        const double v = speed * s;
-        const double f = s - leff_step * (m - rr_friction_mu(fr, v) * pn);
-        const double df = 1.0 + leff_step * pn * speed * rr_friction_dmu(fr, v);
-        double ds = df > 0.0 ? f / df : 0.0;
-        if (ds > s)
-            ds = 0.5 * s;     /* never step below zero slip */
-        s -= ds;
-        /* f carries rounding noise of about eps * leff_step * m */
-        if (fabs(ds) <= 1e-13 * s || fabs(f) <= 8e-16 * leff_step * m)
-            return rr_friction_mu(fr, speed * s) * pn;
-    }
-    *converged = 0;
-    return rr_friction_mu(fr, speed * s) * pn;
+static void newton_init(const law *l, double pn, double m, double leff_step, newton *n)
+{
+    n->s = leff_step * (m - l->Amu0 * pn);
+    n->ls = leff_step;
+    n->lps = leff_step * pn * l->speed;
+    n->pn = pn;
+    n->m = m;
+    n->ftol = 8e-16 * leff_step * m;
+    n->it = 0;
 }
+
+/* One Newton step; 1 when done (n->g set), 0 to go on; *converged cleared
+ * at the iteration cap. */
+static int newton_step(const law *l, newton *n, int *converged)
+{
+    const double v = l->speed * n->s, e = exp(l->nB * v);
+    const double mu = l->mu0 * (l->c1 * e + l->A);
+    const double f = n->s - n->ls * (n->m - mu * n->pn);
+    const double df = 1.0 + n->lps * (l->dk * e);
+    double ds = df > 0.0 ? f / df : 0.0;
+    int done;
+    if (ds > n->s)
+        ds = 0.5 * n->s;     /* never step below zero slip */
+    n->s -= ds;
+    /* f carries rounding noise of about eps * leff_step * m */
+    done = fabs(ds) <= 1e-13 * n->s || fabs(f) <= n->ftol;
+    if (!done && ++n->it < FALLING_MAX_ITER)
+        return 0;
+    if (!done)
+        *converged = 0;
+    /* the bound at the new s; with s unchanged, mu is the one at hand */
+    n->g = (ds == 0.0 ? mu : l->mu0 * (l->c1 * exp(l->nB * (l->speed * n->s)) + l->A)) * n->pn;
+    return 1;
+}
+
+/* Rows are marched in groups of up to GROUP side by side: each element waits
+ * for its upstream neighbour, so a row is one serial chain (through a square
+ * root and a division where the element slips), and independent rows in lock
+ * step let the processor overlap their chains and share vector instructions.
+ * Every row still gets exactly the arithmetic of a march on its own, and all
+ * sums are added row by row, in order. */
+#define GROUP 10
+
+/* Groups set up once for both passes (the first 80 rows); further ones twice. */
+#define GROUP_CACHE 8
 
 /* What the march of every row shares. */
 typedef struct {
     const rr_contact_case *c;
-    const rr_friction *fr;
     const flex *fl;
+    law lw;
     double scale, mu_bound;     /* pressure scale [Pa]; bound's friction coefficient */
     double inv_a;               /* 1/a: a product is cheaper than a quotient per element */
-    int parabolic, local;       /* traction bound; falling friction at local slip */
-    int converged, nslip;
-    rr_fastsim_field *field;
-    int nx;
+    double gx0, gy, gphi;       /* rigid slip per unit length over the flexibility */
+    double h_rect;              /* element length on the rectangular grid */
+    int nx, ny, strips, parabolic;
 } march;
 
-/* One row of the grid and the state of its march. */
+/* Rows j0 .. j0 + nr - 1 in lanes 0 .. nr - 1 (the lanes up to the group's
+ * width past nr idle: outside the ellipse everywhere), and the range
+ * [lo, hi) of elements outside which every row of the group is outside the
+ * ellipse (such elements carry nothing: the march skips them). */
 typedef struct {
-    int j;
-    double y, w2, aj, h;        /* position, 1 - y^2/b^2, half-length, element length */
-    double gx, gy, gphi;        /* rigid slip per unit length over the flexibility */
-    double px, py;              /* traction of the last element */
-    double sx, sy, sm;          /* sums of px, py and x py - y px */
-} row;
+    int j0, nr, width, lo, hi;
+    double y[GROUP], w2[GROUP], aj[GROUP], h[GROUP], gxh[GROUP];
+} group;
 
-static void row_init(const march *m, const rr_creep_opts *o, int j, row *r)
+/* Element i of row k: centre x and q = 1 - x^2/a^2 - y^2/b^2, inside if
+ * q > 0.  The vector code below does the very same operations. */
+static double elem_q(const march *m, const group *g, int k, int i, double *x)
 {
-    const rr_contact_case *c = m->c;
-    const double yh = -1.0 + (2.0 * j + 1.0) / o->ny;
-    r->j = j;
-    r->w2 = 1.0 - yh * yh;
-    r->y = yh * c->b;
-    r->aj = o->grid == RR_GRID_STRIPS ? c->a * sqrt(r->w2) : c->a;
-    r->h = 2.0 * r->aj / o->nx;
-    r->gx = c->cx / m->fl->L1 - c->cphi * r->y / m->fl->L3;
-    r->gy = c->cy / m->fl->L2;
-    r->gphi = c->cphi / m->fl->L3;
-    r->px = r->py = r->sx = r->sy = r->sm = 0.0;
+    const double xc = g->aj[k] - (i + 0.5) * g->h[k], t = xc * m->inv_a;
+    *x = xc;
+    return g->w2[k] - t * t;
 }
 
-/* Element i of a row.  Kalker's explicit scheme: an element adds the rigid
- * slip at its centre times one element length to its upstream neighbour's
- * traction; the first element inside the contact starts from zero. */
-static void element(march *m, row *r, int i)
+static int any_inside(const march *m, const group *g, int i)
 {
-    const double x = r->aj - (i + 0.5) * r->h, t = x * m->inv_a, q = r->w2 - t * t;
-    double pn = 0.0;
-    int slip = 0;
-
-    if (q > 0.0) {
-        const double tx = r->px - r->gx * r->h;
-        const double ty = r->py - (r->gy + r->gphi * x) * r->h;
-        const double m2 = tx * tx + ty * ty;
-        double g;
-        pn = m->scale * (m->parabolic ? q : sqrt(q));
-        g = m->mu_bound * pn;
-        slip = m2 > g * g;
-        if (slip) {
-            const double mag = sqrt(m2);
-            if (m->local) {
-                const double lx = m->fl->L1 * tx, ly = m->fl->L2 * ty;
-                g = falling_bound(m->fr, m->c->speed, pn, mag,
-                                  sqrt(lx * lx + ly * ly) / (mag * r->h), &m->converged);
-            }
-            r->px = tx * (g / mag);
-            r->py = ty * (g / mag);
-            m->nslip++;
-        } else {
-            r->px = tx;
-            r->py = ty;
-        }
-        r->sx += r->px;
-        r->sy += r->py;
-        r->sm += x * r->py - r->y * r->px;
-    } else {
-        r->px = r->py = 0.0;        /* outside the ellipse: no contact */
+    int k;
+    for (k = 0; k < g->nr; k++) {
+        double x;
+        if (elem_q(m, g, k, i, &x) > 0.0)
+            return 1;
     }
-    if (m->field) {
-        rr_fastsim_field *f = m->field;
-        const int idx = r->j * m->nx + (m->nx - 1 - i);
-        if (f->x) f->x[idx] = x;
-        if (f->y) f->y[idx] = r->y;
-        if (f->pn) f->pn[idx] = pn;
-        if (f->px) f->px[idx] = r->px;
-        if (f->py) f->py[idx] = r->py;
-        if (f->slip) f->slip[idx] = (signed char)slip;
+    return 0;
+}
+
+/* The group of rows from j0: as many as fit, in a width of 10, 8, 6, 4 or 2
+ * lanes (9 rows go in 10 lanes, one of them idle, etc.). */
+static void group_init(const march *m, int j0, group *g)
+{
+    const rr_contact_case *c = m->c;
+    const int left = m->ny - j0;
+    int k;
+    g->j0 = j0;
+    g->width = left >= 9 ? 10 : left >= 7 ? 8 : left >= 5 ? 6 : left >= 3 ? 4 : 2;
+    g->nr = left < g->width ? left : g->width;
+    for (k = 0; k < g->width; k++) {
+        const int j = k < g->nr ? j0 + k : j0;
+        const double yh = -1.0 + (2.0 * j + 1.0) / m->ny, w2 = 1.0 - yh * yh;
+        const double aj = m->strips ? c->a * sqrt(w2) : c->a;
+        g->y[k] = yh * c->b;
+        g->w2[k] = k < g->nr ? w2 : -1.0;
+        g->aj[k] = aj;
+        g->h[k] = m->strips ? 2.0 * aj / m->nx : m->h_rect;
+        g->gxh[k] = (m->gx0 - c->cphi * g->y[k] / m->fl->L3) * g->h[k];
+    }
+    for (g->lo = 0; g->lo < m->nx && !any_inside(m, g, g->lo); g->lo++)
+        ;
+    for (g->hi = m->nx; g->hi > g->lo && !any_inside(m, g, g->hi - 1); g->hi--)
+        ;
+}
+
+/* ---- two lanes at once ----------------------------------------------------
+ * v2: a pair of doubles, SSE2 where the compiler has it (any x86-64), else
+ * a struct; both do the same IEEE operations, lane by lane, so the results
+ * do not depend on which one is compiled (RR_FASTSIM_NO_SSE2 forces the
+ * struct, for testing). */
+#if !defined(RR_FASTSIM_NO_SSE2) \
+    && (defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2))
+#include <emmintrin.h>
+typedef __m128d v2;
+#define v_set1 _mm_set1_pd
+#define v_add _mm_add_pd
+#define v_sub _mm_sub_pd
+#define v_mul _mm_mul_pd
+#define v_div _mm_div_pd
+#define v_sqrt _mm_sqrt_pd
+#define v_max _mm_max_pd        /* a > b ? a : b */
+static v2 v_load(const double *p) { return _mm_loadu_pd(p); }
+static void v_store(double *p, v2 a) { _mm_storeu_pd(p, a); }
+#else
+typedef struct { double a, b; } v2;
+static v2 v_mk(double a, double b) { v2 r; r.a = a; r.b = b; return r; }
+static v2 v_set1(double a) { return v_mk(a, a); }
+static v2 v_add(v2 x, v2 y) { return v_mk(x.a + y.a, x.b + y.b); }
+static v2 v_sub(v2 x, v2 y) { return v_mk(x.a - y.a, x.b - y.b); }
+static v2 v_mul(v2 x, v2 y) { return v_mk(x.a * y.a, x.b * y.b); }
+static v2 v_div(v2 x, v2 y) { return v_mk(x.a / y.a, x.b / y.b); }
+static v2 v_sqrt(v2 x) { return v_mk(sqrt(x.a), sqrt(x.b)); }
+static v2 v_load(const double *p) { return v_mk(p[0], p[1]); }
+static void v_store(double *p, v2 x) { p[0] = x.a; p[1] = x.b; }
+static v2 v_max(v2 x, v2 y) { return v_mk(x.a > y.a ? x.a : y.a, x.b > y.b ? x.b : y.b); }
+#endif
+
+/* Element positions of a step i for nv pairs of rows: x, (x/a)^2 and the
+ * rigid slip (gy + gphi x) h.  On the rectangular grid every row has the
+ * same elements (aj = a, h = 2a/nx), so the first pair's serve all. */
+static inline void step_geometry(const march *m, const v2 *aj, const v2 *h, int nv, int rect,
+                                 int slip_too, int i, v2 *x, v2 *tt, v2 *vy)
+{
+    const v2 xi = v_set1(i + 0.5), inv_a = v_set1(m->inv_a);
+    const v2 gy = v_set1(m->gy), gphi = v_set1(m->gphi);
+    int v;
+    for (v = 0; v < (rect ? 1 : nv); v++) {
+        const v2 xv = v_sub(aj[v], v_mul(xi, h[v])), t = v_mul(xv, inv_a);
+        x[v] = xv;
+        tt[v] = v_mul(t, t);
+        if (slip_too)
+            vy[v] = v_mul(v_add(gy, v_mul(gphi, xv)), h[v]);
+    }
+    for (; v < nv; v++) {
+        x[v] = x[0];
+        tt[v] = tt[0];
+        if (slip_too)
+            vy[v] = vy[0];
+    }
+}
+
+/* Sum of q (parabolic) or sqrt(q) over the inside elements of each row of
+ * the group, for the pressure scale.  An element outside adds +0, which
+ * changes no sum (a sum that starts at +0 never becomes -0). */
+static inline void group_pressure(const march *m, const group *g, int nv, int rect,
+                                  double *rows)
+{
+    v2 aj[GROUP / 2], h[GROUP / 2], w2[GROUP / 2], acc[GROUP / 2];
+    const v2 zero = v_set1(0.0);
+    int i, v;
+    for (v = 0; v < nv; v++) {
+        aj[v] = v_load(g->aj + 2 * v);
+        h[v] = v_load(g->h + 2 * v);
+        w2[v] = v_load(g->w2 + 2 * v);
+        acc[v] = zero;
+    }
+    for (i = g->lo; i < g->hi; i++) {
+        v2 x[GROUP / 2], tt[GROUP / 2];
+        step_geometry(m, aj, h, nv, rect, 0, i, x, tt, 0);
+        for (v = 0; v < nv; v++) {
+            const v2 q = v_max(v_sub(w2[v], tt[v]), zero);
+            acc[v] = v_add(acc[v], m->parabolic ? q : v_sqrt(q));
+        }
+    }
+    for (v = 0; v < nv; v++)
+        v_store(rows + 2 * v, acc[v]);
+}
+
+/* Sums of one group per row, before the factor h dy. */
+typedef struct {
+    double sx[GROUP], sy[GROUP], sm[GROUP];
+    int nslip, converged;
+} sums;
+
+/* The march of a group with one friction coefficient over the patch
+ * (Coulomb, or falling friction at the rigid slip speed), nv pairs of rows
+ * side by side, without a branch or a comparison; the element count nslip
+ * is not kept.  With g = mu pn and t* the trial traction, the element's
+ * traction is t* g / max(|t*|, g): for |t*|^2 > g^2 (the march's test for
+ * slip) that is t* g/|t*|, the very quotient of group_march, and otherwise
+ * t* g/g = t* exactly, because sqrt(g*g) == g in binary floating point
+ * (sqrt and * correctly rounded; g*g neither underflows nor overflows, which
+ * coulomb_exact guarantees).  Outside the ellipse max(q, 0) = 0 makes g = 0
+ * and the traction +-0: that adds +-0 to the sums, which changes none of
+ * them (a sum that starts at +0 never becomes -0), and enters the next
+ * element's trial traction only as a zero; so each row adds exactly what
+ * its own march adds. */
+static inline void group_coulomb(const march *m, const group *g, int nv, int rect, sums *s)
+{
+    v2 aj[GROUP / 2], h[GROUP / 2], w2[GROUP / 2], y[GROUP / 2], gxh[GROUP / 2];
+    v2 px[GROUP / 2], py[GROUP / 2], sx[GROUP / 2], sy[GROUP / 2], sm[GROUP / 2];
+    const v2 zero = v_set1(0.0), tiny = v_set1(DBL_MIN);
+    const v2 scale = v_set1(m->scale), mu = v_set1(m->mu_bound);
+    int i, v;
+    for (v = 0; v < nv; v++) {
+        aj[v] = v_load(g->aj + 2 * v);
+        h[v] = v_load(g->h + 2 * v);
+        w2[v] = v_load(g->w2 + 2 * v);
+        y[v] = v_load(g->y + 2 * v);
+        gxh[v] = v_load(g->gxh + 2 * v);
+        px[v] = py[v] = sx[v] = sy[v] = sm[v] = zero;
+    }
+    for (i = g->lo; i < g->hi; i++) {
+        v2 x[GROUP / 2], tt[GROUP / 2], vy[GROUP / 2];
+        step_geometry(m, aj, h, nv, rect, 1, i, x, tt, vy);
+        for (v = 0; v < nv; v++) {
+            const v2 q = v_max(v_sub(w2[v], tt[v]), zero);
+            const v2 gb = v_mul(mu, v_mul(scale, m->parabolic ? q : v_sqrt(q)));
+            const v2 tx = v_sub(px[v], gxh[v]), ty = v_sub(py[v], vy[v]);
+            const v2 mag = v_sqrt(v_add(v_mul(tx, tx), v_mul(ty, ty)));
+            /* max(g, DBL_MIN): no 0/0 outside the ellipse */
+            const v2 r = v_div(gb, v_max(mag, v_max(gb, tiny)));
+            px[v] = v_mul(tx, r);
+            py[v] = v_mul(ty, r);
+            sx[v] = v_add(sx[v], px[v]);
+            sy[v] = v_add(sy[v], py[v]);
+            sm[v] = v_add(sm[v], v_sub(v_mul(x[v], py[v]), v_mul(y[v], px[v])));
+        }
+    }
+    for (v = 0; v < nv; v++) {
+        v_store(s->sx + 2 * v, sx[v]);
+        v_store(s->sy + 2 * v, sy[v]);
+        v_store(s->sm + 2 * v, sm[v]);
+    }
+    s->nslip = 0;
+    s->converged = 1;
+}
+
+/* group_coulomb's condition.  Inside the ellipse q >= 2^-65 = 2.7e-20:
+ * w2 >= 4.8e-4 > 2^-12 (at most 4096 rows), and q = w2 - t^2 > 0 is either
+ * >= w2/2 or, by Sterbenz's lemma, the exact difference of two doubles
+ * >= 2^-13, a multiple of 2^-65.  So with mu scale in [1e-80, 1e100] the
+ * bound g = mu scale q (or sqrt(q)) lies in [2e-100, 1e100]: g*g is a
+ * normal number and g > DBL_MIN. */
+static int coulomb_exact(const march *m)
+{
+    const double ms = m->mu_bound * m->scale;
+    return ms >= 1e-80 && ms <= 1e100;
+}
+
+/* The vector kernels for the group's width and grid, each compiled for its
+ * own fixed number of pairs. */
+static void pressure_dispatch(const march *m, const group *g, double *rows)
+{
+    if (g->width == 10) {
+        if (m->strips) group_pressure(m, g, 5, 0, rows); else group_pressure(m, g, 5, 1, rows);
+    } else if (g->width == 8) {
+        if (m->strips) group_pressure(m, g, 4, 0, rows); else group_pressure(m, g, 4, 1, rows);
+    } else if (g->width == 6) {
+        if (m->strips) group_pressure(m, g, 3, 0, rows); else group_pressure(m, g, 3, 1, rows);
+    } else if (g->width == 4) {
+        if (m->strips) group_pressure(m, g, 2, 0, rows); else group_pressure(m, g, 2, 1, rows);
+    } else {
+        if (m->strips) group_pressure(m, g, 1, 0, rows); else group_pressure(m, g, 1, 1, rows);
+    }
+}
+
+static void coulomb_dispatch(const march *m, const group *g, sums *s)
+{
+    if (g->width == 10) {
+        if (m->strips) group_coulomb(m, g, 5, 0, s); else group_coulomb(m, g, 5, 1, s);
+    } else if (g->width == 8) {
+        if (m->strips) group_coulomb(m, g, 4, 0, s); else group_coulomb(m, g, 4, 1, s);
+    } else if (g->width == 6) {
+        if (m->strips) group_coulomb(m, g, 3, 0, s); else group_coulomb(m, g, 3, 1, s);
+    } else if (g->width == 4) {
+        if (m->strips) group_coulomb(m, g, 2, 0, s); else group_coulomb(m, g, 2, 1, s);
+    } else {
+        if (m->strips) group_coulomb(m, g, 1, 0, s); else group_coulomb(m, g, 1, 1, s);
+    }
+}
+
+/* The march of a group, one element of each row at a time: any friction law,
+ * optionally the traction field.  Kalker's explicit scheme: an element adds
+ * the rigid slip at its centre times one element length to its upstream
+ * neighbour's traction; the first element inside the contact starts from
+ * zero. */
+static void group_march(const march *m, const group *g, int local, rr_fastsim_field *field,
+                        sums *s)
+{
+    double px[GROUP], py[GROUP];
+    const int nr = g->nr;
+    int i, k;
+    for (k = 0; k < nr; k++)
+        px[k] = py[k] = s->sx[k] = s->sy[k] = s->sm[k] = 0.0;
+    s->nslip = 0;
+    s->converged = 1;
+    for (i = g->lo; i < g->hi; i++) {
+        double tx[GROUP], ty[GROUP], pn[GROUP], gb[GROUP], mag[GROUP], xs[GROUP];
+        int slip[GROUP], in[GROUP];
+        newton nw[GROUP];
+        unsigned pending = 0;
+        for (k = 0; k < nr; k++) {
+            const double q = elem_q(m, g, k, i, &xs[k]);
+            in[k] = q > 0.0;
+            slip[k] = 0;
+            pn[k] = 0.0;
+            if (in[k]) {
+                double m2;
+                tx[k] = px[k] - g->gxh[k];
+                ty[k] = py[k] - (m->gy + m->gphi * xs[k]) * g->h[k];
+                m2 = tx[k] * tx[k] + ty[k] * ty[k];
+                pn[k] = m->scale * (m->parabolic ? q : sqrt(q));
+                gb[k] = m->mu_bound * pn[k];
+                slip[k] = m2 > gb[k] * gb[k];
+                if (slip[k]) {
+                    mag[k] = sqrt(m2);
+                    if (local) {
+                        const double lx = m->fl->L1 * tx[k], ly = m->fl->L2 * ty[k];
+                        newton_init(&m->lw, pn[k], mag[k],
+                                    sqrt(lx * lx + ly * ly) / (mag[k] * g->h[k]), &nw[k]);
+                        pending |= 1u << k;
+                    }
+                }
+            }
+        }
+        /* the Newton iterations of the slipping elements, side by side */
+        while (pending)
+            for (k = 0; k < nr; k++)
+                if ((pending >> k & 1u) && newton_step(&m->lw, &nw[k], &s->converged)) {
+                    gb[k] = nw[k].g;
+                    pending &= ~(1u << k);
+                }
+        for (k = 0; k < nr; k++) {
+            if (in[k]) {
+                if (slip[k]) {
+                    px[k] = tx[k] * (gb[k] / mag[k]);
+                    py[k] = ty[k] * (gb[k] / mag[k]);
+                    s->nslip++;
+                } else {
+                    px[k] = tx[k];
+                    py[k] = ty[k];
+                }
+                s->sx[k] += px[k];
+                s->sy[k] += py[k];
+                s->sm[k] += xs[k] * py[k] - g->y[k] * px[k];
+                if (field) {
+                    const int idx = (g->j0 + k) * m->nx + (m->nx - 1 - i);
+                    if (field->pn) field->pn[idx] = pn[k];
+                    if (field->px) field->px[idx] = px[k];
+                    if (field->py) field->py[idx] = py[k];
+                    if (field->slip) field->slip[idx] = (signed char)slip[k];
+                }
+            } else {
+                px[k] = py[k] = 0.0;        /* outside the ellipse: no contact */
+            }
+        }
+    }
+}
+
+/* The field as if no element lay inside: positions, zero pressure and
+ * traction; the march overwrites the inside. */
+static void field_fill(const march *m, rr_fastsim_field *f)
+{
+    int j, i, k;
+    for (j = 0; j < m->ny; j += k) {
+        group g;
+        group_init(m, j, &g);
+        for (k = 0; k < g.nr; k++)
+            for (i = 0; i < m->nx; i++) {
+                const int idx = (j + k) * m->nx + (m->nx - 1 - i);
+                double x;
+                elem_q(m, &g, k, i, &x);
+                if (f->x) f->x[idx] = x;
+                if (f->y) f->y[idx] = g.y[k];
+                if (f->pn) f->pn[idx] = 0.0;
+                if (f->px) f->px[idx] = 0.0;
+                if (f->py) f->py[idx] = 0.0;
+                if (f->slip) f->slip[idx] = 0;
+            }
+        k = g.nr;
     }
 }
 
@@ -171,9 +486,10 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
     rr_kalker_coeffs k;
     flex fl;
     march m;
+    group cache[GROUP_CACHE], tmp, *g;    /* the groups of the first rows, set up once */
     const int nx = o->nx, ny = o->ny;
-    double dy, inv_a, S = 0.0, scale, fx = 0.0, fy = 0.0, mz = 0.0, mu_bound;
-    int st, i, j, falling, local, converged = 1, nslip = 0;
+    double dy, S = 0.0, fx = 0.0, fy = 0.0, mz = 0.0;
+    int st, j, n, falling, local, converged = 1, nslip = 0;
 
     st = rr_creep_opts_check(o);
     if (st == RR_OK && o->method != RR_METHOD_FASTSIM && o->method != RR_METHOD_FASTSIM_BLENDED
@@ -190,7 +506,20 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
     /* local: mu from each element's own slip speed; rigid: one mu at the
      * rigid slip speed |(cx, cy)| speed for the whole patch. */
     local = falling && o->slip_speed == RR_SLIP_LOCAL;
-    mu_bound = falling && !local ? rr_friction_mu(fr, c->speed * hypot(c->cx, c->cy)) : fr->mu0;
+
+    m.c = c;
+    m.fl = &fl;
+    law_init(fr, c->speed, &m.lw);
+    m.mu_bound = falling && !local ? rr_friction_mu(fr, c->speed * hypot(c->cx, c->cy)) : fr->mu0;
+    m.inv_a = 1.0 / c->a;
+    m.gx0 = c->cx / fl.L1;
+    m.gy = c->cy / fl.L2;
+    m.gphi = c->cphi / fl.L3;
+    m.h_rect = 2.0 * c->a / nx;
+    m.nx = nx;
+    m.ny = ny;
+    m.strips = o->grid == RR_GRID_STRIPS;
+    m.parabolic = o->bound == RR_BOUND_PARABOLIC;
 
     /* Rows j at y_j = -b + (j + 1/2) dy.  RR_GRID_RECT: every row spans the
      * ellipse's bounding box |x| <= a and elements outside the ellipse carry
@@ -199,61 +528,40 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
      * at a centre is scale * q or scale * sqrt(q), q = 1 - x^2/a^2 - y^2/b^2,
      * with scale such that the pressure sums to N over the grid. */
     dy = 2.0 * c->b / ny;
-    inv_a = 1.0 / c->a;
-    for (j = 0; j < ny; j++) {
-        const double yh = -1.0 + (2.0 * j + 1.0) / ny, w2 = 1.0 - yh * yh;
-        const double aj = o->grid == RR_GRID_STRIPS ? c->a * sqrt(w2) : c->a;
-        const double h = 2.0 * aj / nx;
-        double row = 0.0;
-        /* the same arithmetic as the march below, so both agree on which
-         * elements lie inside the ellipse */
-        for (i = 0; i < nx; i++) {
-            const double x = aj - (i + 0.5) * h, t = x * inv_a, q = w2 - t * t;
-            if (q > 0.0)
-                row += o->bound == RR_BOUND_PARABOLIC ? q : sqrt(q);
-        }
-        S += row * h;
+    for (j = 0, n = 0; j < ny; j += g->nr, n++) {
+        double rows[GROUP];
+        int r;
+        g = n < GROUP_CACHE ? &cache[n] : &tmp;
+        group_init(&m, j, g);
+        pressure_dispatch(&m, g, rows);
+        for (r = 0; r < g->nr; r++)
+            S += rows[r] * g->h[r];
     }
-    scale = c->N / (S * dy);
+    m.scale = c->N / (S * dy);
 
-    m.c = c;
-    m.fr = fr;
-    m.fl = &fl;
-    m.scale = scale;
-    m.inv_a = inv_a;
-    m.mu_bound = mu_bound;
-    m.parabolic = o->bound == RR_BOUND_PARABOLIC;
-    m.local = local;
-    m.converged = 1;
-    m.nslip = 0;
-    m.field = field;
-    m.nx = nx;
-    /* Rows are independent: marching several at once lets the processor overlap
-     * their serial chains (each element waits for its upstream neighbour);
-     * the sums are still added row by row, in order. */
-    for (j = 0; j < ny; j += ROWS_AT_ONCE) {
-        row r[ROWS_AT_ONCE];
-        const int nrow = ny - j < ROWS_AT_ONCE ? ny - j : ROWS_AT_ONCE;
-        int k;
-        for (k = 0; k < nrow; k++)
-            row_init(&m, o, j + k, &r[k]);
-        if (nrow == ROWS_AT_ONCE) {
-            for (i = 0; i < nx; i++)
-                for (k = 0; k < ROWS_AT_ONCE; k++)
-                    element(&m, &r[k], i);
+    if (field)
+        field_fill(&m, field);
+    for (j = 0, n = 0; j < ny; j += g->nr, n++) {
+        sums s;
+        int r;
+        if (n < GROUP_CACHE) {
+            g = &cache[n];
         } else {
-            for (k = 0; k < nrow; k++)
-                for (i = 0; i < nx; i++)
-                    element(&m, &r[k], i);
+            g = &tmp;
+            group_init(&m, j, g);
         }
-        for (k = 0; k < nrow; k++) {
-            fx += r[k].sx * r[k].h;
-            fy += r[k].sy * r[k].h;
-            mz += r[k].sm * r[k].h;
+        if (local || field || !coulomb_exact(&m))
+            group_march(&m, g, local, field, &s);
+        else
+            coulomb_dispatch(&m, g, &s);
+        for (r = 0; r < g->nr; r++) {
+            fx += s.sx[r] * g->h[r];
+            fy += s.sy[r] * g->h[r];
+            mz += s.sm[r] * g->h[r];
         }
+        nslip += s.nslip;
+        converged &= s.converged;
     }
-    converged = m.converged;
-    nslip = m.nslip;
     out->fx = fx * dy;
     out->fy = fy * dy;
     out->mz = mz * dy;
