@@ -23,8 +23,10 @@ several repeats (see benchmarks/README.md):
    same FASTSIM 30x30 cases;
 4. a published reference figure for context (CONTACT, not measured here).
 
-Writes a Markdown report (benchmarks/RESULTS.md for a full run,
-benchmarks/out/RESULTS-quick.md for --quick, or --out PATH) and prints it.
+Writes its Markdown report as the "contact" section of benchmarks/RESULTS.md
+(full run), benchmarks/out/RESULTS-quick.md (--quick) or --out PATH, leaving
+the other sections of that file (bench_rig_contact.py's) as they are, and
+prints it.
 Timing is reported, never asserted: the exit status is 0 whether or not a
 goal is met.
 """
@@ -32,13 +34,10 @@ import argparse
 import concurrent.futures
 import datetime
 import gc
-import glob
 import inspect
 import json
 import math
 import os
-import platform
-import shlex
 import subprocess
 import sys
 import tempfile
@@ -46,11 +45,11 @@ import time
 
 import numpy as np
 
-import rollerrig
 from rollerrig import contact
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.dirname(HERE)
+from _bench_common import (ROOT, CProgram, CpuMonitor, command_text, conditions_lines,
+                           extension_flags, fmt, interleaved, load_average, log, machine_info,
+                           machine_line, report_path, timed, verdict, write_section)
 
 # Goals (a figure is compared with its goal in the report; nothing is asserted).
 GOAL_FASTSIM30_US = 10.0        # FASTSIM 30x30, batched, one thread: <= 10 us per case
@@ -87,10 +86,6 @@ FASTSIM_ROWS = [
     ("FASTSIM blended 30x30", "fastsim_blended", 30, 30, "rect"),
     ("FASTSIM 30x30 strips", "fastsim", 30, 30, "strips"),
 ]
-
-
-def log(msg):
-    print(msg, file=sys.stderr, flush=True)
 
 
 # --------------------------------------------------------------------- cases
@@ -135,35 +130,6 @@ def call_hertz(cases):
 
 # -------------------------------------------------------------------- timing
 
-def calibration():
-    """A fixed pure-Python workload (about 20 ms), timed best of 3 before and
-    after every section: if the machine gets slower during the run (another
-    process, another virtual machine on the host, a lower clock), this
-    time grows even though the code has not changed."""
-    def work():
-        x = 0
-        for i in range(400_000):
-            x += i * i % 7
-        return x
-    return best_time(work, 3)
-
-
-def best_time(fn, repeats):
-    """Best wall time of `repeats` calls of fn() (garbage collector off)."""
-    enabled = gc.isenabled()
-    gc.disable()
-    try:
-        best = math.inf
-        for _ in range(repeats):
-            t0 = time.perf_counter()
-            fn()
-            best = min(best, time.perf_counter() - t0)
-    finally:
-        if enabled:
-            gc.enable()
-    return best
-
-
 def creep_loop(cases, k, method, nx, ny, grid):
     """A Python loop of k scalar creep_forces calls (inputs as Python floats)."""
     cols = [cases[name][:k].tolist() for name in ("cx", "cy", "cphi", "a", "b", "N")]
@@ -189,46 +155,12 @@ def hertz_loop(cases, k):
 
 # ------------------------------------------------------------- C kernel loop
 
-def extension_flags():
-    """The flags setuptools compiles rollerrig._core with: Python's CFLAGS and
-    CCSHARED (sysconfig), then setup.py's -std=c99 -O3 -fno-wrapv (last wins)."""
-    import sysconfig
-    flags = shlex.split(sysconfig.get_config_var("CFLAGS") or "") \
-        + shlex.split(sysconfig.get_config_var("CCSHARED") or "")
-    return [f for f in flags if f.startswith(("-O", "-f", "-D", "-m", "-g"))] \
-        + ["-std=c99", "-O3", "-fno-wrapv"]
-
-
-class Kernel:
+class Kernel(CProgram):
     """benchmarks/bench_kernel.c compiled into a temporary directory, with
     the plain command of the README (`flags` None) or with other flags."""
 
     def __init__(self, tmpdir, flags=None, name="bench_kernel"):
-        self.tmpdir = tmpdir
-        self.exe = os.path.join(tmpdir, name)
-        cc = os.environ.get("CC", "cc")
-        sources = sorted(glob.glob(os.path.join("csrc", "rr_*.c")))
-        opts = ["-O3", "-std=c99"] if flags is None else list(flags)
-        self.command = [cc] + opts + ["-I", "csrc", os.path.join("benchmarks", "bench_kernel.c")] \
-            + sources + ["-lm", "-o", self.exe]
-        self.error = None
-        try:
-            proc = subprocess.run(self.command, cwd=ROOT, capture_output=True, text=True)
-            if proc.returncode != 0:
-                self.error = proc.stderr.strip() or f"{cc} exited with {proc.returncode}"
-        except OSError as exc:
-            self.error = str(exc)
-        try:
-            out = subprocess.run([cc, "--version"], capture_output=True, text=True)
-            self.cc_version = out.stdout.splitlines()[0] if out.stdout else cc
-        except OSError:
-            self.cc_version = "(no C compiler)"
-        self.command_text = shlex.join([cc] + opts + ["-I", "csrc", "benchmarks/bench_kernel.c"]) \
-            + " csrc/rr_*.c -lm"
-
-    @property
-    def ok(self):
-        return self.error is None
+        super().__init__(tmpdir, "bench_kernel.c", ["-O3", "-std=c99"], flags, name)
 
     def run(self, path, repeats=1, method=None, nx=0, ny=0, grid=None):
         """Time the kernel over the cases in `path` (write_cases); method None
@@ -259,31 +191,6 @@ def write_cases(tmpdir, cases, hertz):
             np.array([col.size], dtype=np.int64).tofile(fh)
             col.tofile(fh)
     return path
-
-
-def interleaved(fns, repeats):
-    """Best time of each function over `repeats` rounds, the functions taking
-    turns within a round so that a slow spell of the machine hits them all
-    alike.  Each function returns its own elapsed time in seconds."""
-    best = [math.inf] * len(fns)
-    enabled = gc.isenabled()
-    gc.disable()
-    try:
-        for _ in range(repeats):
-            for k, fn in enumerate(fns):
-                best[k] = min(best[k], fn())
-    finally:
-        if enabled:
-            gc.enable()
-    return best
-
-
-def timed(fn):
-    def run():
-        t0 = time.perf_counter()
-        fn()
-        return time.perf_counter() - t0
-    return run
 
 
 def checksum(arrays, status):
@@ -437,96 +344,6 @@ def twin_section(rng, sz):
 
 # -------------------------------------------------------------------- report
 
-class CpuMonitor:
-    """CPU time used by other processes while a section ran, from /proc/stat
-    (all CPUs' busy time) minus this process's own (and its children's).
-    On a shared machine this tells whether a figure was measured on a quiet
-    machine: 0 is quiet, 1.0 means another process kept one core busy."""
-
-    def __init__(self):
-        self.sections = []
-        calibration()                 # warm-up, not recorded
-        try:
-            self.tick = os.sysconf("SC_CLK_TCK")
-            self._busy()
-        except (OSError, ValueError, AttributeError):
-            self.tick = None
-
-    def _busy(self):
-        with open("/proc/stat") as fh:
-            fields = [int(v) for v in fh.readline().split()[1:9]]
-        user, nice, system, _idle, _iowait, irq, softirq, steal = fields
-        return (user + nice + system + irq + softirq + steal) / self.tick
-
-    def _snap(self):
-        t = os.times()
-        own = t.user + t.system + t.children_user + t.children_system
-        return time.perf_counter(), own, self._busy() if self.tick else math.nan
-
-    def section(self, name, fn, *args):
-        cal0 = calibration()
-        w0, own0, busy0 = self._snap()
-        result = fn(*args)
-        w1, own1, busy1 = self._snap()
-        cal1 = calibration()
-        wall = w1 - w0
-        own = (own1 - own0) / wall
-        other = max(0.0, (busy1 - busy0) - (own1 - own0)) / wall
-        self.sections.append(dict(name=name, wall=wall, own=own, other=other,
-                                  cal=(cal0, cal1)))
-        return result
-
-
-def code_state():
-    """The commit measured, and whether the C core or the package differ from it."""
-    try:
-        head = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT,
-                              capture_output=True, text=True, check=True).stdout.strip()
-        dirty = subprocess.run(["git", "status", "--porcelain", "--", "csrc", "rollerrig"],
-                               cwd=ROOT, capture_output=True, text=True,
-                               check=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return "not a git checkout"
-    return f"commit {head}" + (" with uncommitted changes in csrc/ or rollerrig/"
-                               if dirty else "")
-
-
-def machine_info(kernel):
-    model = "unknown"
-    try:
-        with open("/proc/cpuinfo") as fh:
-            for line in fh:
-                if line.startswith("model name"):
-                    model = line.split(":", 1)[1].strip()
-                    break
-    except OSError:
-        pass
-    try:
-        affinity = len(os.sched_getaffinity(0))
-    except AttributeError:
-        affinity = os.cpu_count()
-    return dict(nproc=affinity, cpu_count=os.cpu_count(), cpu=model,
-                python=platform.python_version(), numpy=np.__version__,
-                rollerrig=getattr(rollerrig, "__version__", "?"), cc=kernel.cc_version,
-                code=code_state(),
-                platform=platform.platform())
-
-
-def fmt(x, digits=3):
-    if x is None:
-        return "n/a"
-    if x == 0:
-        return "0"
-    ax = abs(x)
-    if ax >= 1e5 or ax < 1e-3:
-        return f"{x:.{digits - 1}e}"
-    return f"{x:.{max(0, digits - 1 - int(math.floor(math.log10(ax))))}f}"
-
-
-def verdict(ok):
-    return "n/a" if ok is None else ("pass" if ok else "**miss**")
-
-
 def twin_table(L, tw):
     note = ("the twin has a `grid` parameter: both use grid=\"rect\"" if tw["has_grid"] else
             "the twin has no `grid` parameter (it marches Kalker's strips), so the C side "
@@ -558,30 +375,14 @@ def report(args, info, load0, load1, date, rows, thr, tw, kernel, kernel_ext, mo
         L.append("")
     L.append(f"- date: {date}")
     L.append(f"- command: `{args.command}` (total {elapsed:.0f} s)")
-    L.append(f"- machine: {info['nproc']} cores available (os.cpu_count {info['cpu_count']}), "
-             f"CPU {info['cpu']}; {info['platform']}")
+    L.append(machine_line(info))
     L.append(f"- python {info['python']}, numpy {info['numpy']}, rollerrig {info['rollerrig']}; "
              f"C kernel built with `{kernel.command_text}` ({info['cc']}), and again "
              f"with the extension's flags: `{kernel_ext.command_text}`")
     L.append(f"- code: {info['code']}; the C kernel is compiled from the working tree, the "
              "binding is the extension as last built (\"C = Python\" below checks that "
              "they agree)")
-    L.append(f"- load average (1, 5, 15 min) at start {load0}, at end {load1}")
-    if mon.tick:
-        busy = ", ".join(f"{m['name']} {m['other']:.2f}" for m in mon.sections)
-        L.append(f"- other processes' CPU use during each section, in cores (0 = quiet "
-                 f"machine; from /proc/stat): {busy}")
-    if mon.sections:
-        ref = mon.sections[0]["cal"][0]
-        cal = ", ".join(f"{m['name']} {m['cal'][0] / ref:.2f} / {m['cal'][1] / ref:.2f}"
-                        for m in mon.sections)
-        cals = [c for m in mon.sections for c in m["cal"]]
-        spread = max(cals) / min(cals)
-        L.append(f"- machine speed check: a fixed {ref * 1e3:.0f} ms pure-Python loop timed "
-                 f"before / after each section, relative to the first: {cal}"
-                 + (f" -- **the machine's speed varied by {spread:.2f}x during this run; "
-                    "figures are less reliable**" if spread > 1.20
-                    else " (steady within this machine's usual jitter)"))
+    L += conditions_lines(load0, load1, mon)
     L.append("- every figure is the best of several repeats (time.perf_counter; the C kernel "
              "with clock_gettime), all measured side by side in this one run; one thread "
              "unless stated.")
@@ -734,19 +535,12 @@ def main(argv=None):
                         "benchmarks/out/RESULTS-quick.md with --quick)")
     parser.add_argument("--seed", type=int, default=20240601)
     args = parser.parse_args(argv)
-    script = os.path.relpath(os.path.abspath(sys.argv[0]), ROOT) \
-        if os.path.abspath(sys.argv[0]).startswith(ROOT + os.sep) else sys.argv[0]
-    args.command = shlex.join(["python", script] + (sys.argv[1:] if argv is None else argv))
-    if args.out:
-        out = os.path.abspath(args.out)
-    elif args.quick:      # a smoke run must not overwrite the real figures
-        out = os.path.join(HERE, "out", "RESULTS-quick.md")
-    else:
-        out = os.path.join(HERE, "RESULTS.md")
+    args.command = command_text(argv)
+    out = report_path(args)
     sz = SIZES["quick" if args.quick else "full"]
     rng = np.random.default_rng(args.seed)
     date = datetime.datetime.now().astimezone().isoformat(timespec="seconds")
-    load0 = tuple(round(x, 2) for x in os.getloadavg())
+    load0 = load_average()
     t_start = time.perf_counter()
 
     with tempfile.TemporaryDirectory(prefix="rollerrig-bench-") as tmp:
@@ -756,7 +550,7 @@ def main(argv=None):
         kernel_ext = Kernel(tmp, extension_flags(), "bench_kernel_ext")
         if not kernel.ok:
             log(f"  C kernel not built ({kernel.error}); batch overhead not measured")
-        info = machine_info(kernel)
+        info = machine_info(kernel.cc_version)
         log("one thread ...")
         rows = mon.section("one thread", one_thread, rng, sz, kernel, kernel_ext)
         log("threads ...")
@@ -768,13 +562,11 @@ def main(argv=None):
             log(f"  twin not measured: {exc!r}")
             tw = dict(error=f"{type(exc).__name__}: {exc}")
 
-    load1 = tuple(round(x, 2) for x in os.getloadavg())
+    load1 = load_average()
     text = report(args, info, load0, load1, date, rows, thr, tw, kernel, kernel_ext, mon,
                   time.perf_counter() - t_start)
     text += accuracy_section()
-    os.makedirs(os.path.dirname(out), exist_ok=True)
-    with open(out, "w") as fh:
-        fh.write(text)
+    write_section(out, "contact", text)
     print(text)
     log(f"written {os.path.relpath(out, os.getcwd())}")
     return 0
