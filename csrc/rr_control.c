@@ -206,7 +206,7 @@ int rr_creepctl_check(const rr_creepctl_params *p)
 
 static void creepctl_set_nan(rr_creepctl_state *s)
 {
-    s->w_ref = s->xi_est = s->dxi = NAN;
+    s->K = s->w_ref = s->xi_est = s->dxi = NAN;
 }
 
 int rr_creepctl_init(const rr_creepctl_params *p, rr_creepctl_state *s, double K,
@@ -222,45 +222,29 @@ int rr_creepctl_init(const rr_creepctl_params *p, rr_creepctl_state *s, double K
         creepctl_set_nan(s);
         return st;
     }
+    s->K = K;
     s->w_ref = K * p->r_r / p->r_w * w_roller;
     s->xi_est = s->dxi = 0.0;
     return RR_OK;
 }
 
-int rr_creepctl_reset(const rr_creepctl_params *p, rr_creepctl_state *s, double w_ref)
-{
-    int st = rr_creepctl_check(p);
-
-    if (st == RR_OK && !isfinite(w_ref))
-        st = RR_ERR_NONFINITE;
-    if (st != RR_OK) {
-        creepctl_set_nan(s);
-        return st;
-    }
-    s->w_ref = w_ref;
-    s->xi_est = s->dxi = 0.0;
-    return RR_OK;
-}
-
-/* Eq. (16) in the sense; *V the guarded denominator.  Parameters checked. */
-static double creepage(const rr_creepctl_params *p, double w_wheelset, double w_roller,
-                       double *V)
+/* Eq. (16) in the sense, with the guarded denominator.  Parameters checked. */
+static double creepage(const rr_creepctl_params *p, double w_wheelset, double w_roller)
 {
     double v = w_roller * p->r_r, d = v;
 
     /* standstill: a named floor instead of eq. (16)'s w_roller != 0, only in
      * the denominator, so that the slip itself is kept and the estimate is
-     * 0 at rest; the sign is kept so that the direction of travel is known */
+     * 0 at rest; the sign is kept so that running backward gives the same
+     * creepage as running forward */
     if (fabs(d) < p->vmin)
         d = d < 0.0 ? -p->vmin : p->vmin;
-    *V = d;
     return p->sense * (w_wheelset * p->r_w - v) / d;
 }
 
 int rr_creepctl_xi(const rr_creepctl_params *p, double w_wheelset, double w_roller,
                    double *xi)
 {
-    double V;
     int st = rr_creepctl_check(p);
 
     if (st == RR_OK && (!isfinite(w_wheelset) || !isfinite(w_roller)))
@@ -269,33 +253,36 @@ int rr_creepctl_xi(const rr_creepctl_params *p, double w_wheelset, double w_roll
         *xi = NAN;
         return st;
     }
-    *xi = creepage(p, w_wheelset, w_roller, &V);
+    *xi = creepage(p, w_wheelset, w_roller);
     return RR_OK;
 }
 
 int rr_creepctl_update(const rr_creepctl_params *p, rr_creepctl_state *s, double xi_ref,
                        double w_wheelset, double w_roller, double *w_ref)
 {
-    double V, xi, dxi, dir;
+    double xi, dxi, K;
     int st = rr_creepctl_check(p);
 
     if (st == RR_OK && (!isfinite(xi_ref) || !isfinite(w_wheelset) || !isfinite(w_roller)
-                        || !isfinite(s->w_ref)))
+                        || !isfinite(s->K)))
         st = RR_ERR_NONFINITE;
     if (st != RR_OK) {
         *w_ref = NAN;
         return st;
     }
-    xi = creepage(p, w_wheelset, w_roller, &V);
+    xi = creepage(p, w_wheelset, w_roller);
     dxi = xi_ref - xi;
-    /* more creepage in the sense means moving the wheel's surface speed away
-     * from the roller's: up for traction, down for braking, and mirrored
-     * when the rig runs backward */
-    dir = p->sense * (V < 0.0 ? -1.0 : 1.0);
+    /* K = 1 + sense xi for the kinematic creepage xi: more creepage in the
+     * sense moves K by +sense, less by -sense; eq. (15) then carries the
+     * roller's sign, so running backward needs no extra factor */
     if (dxi >= 0.0)
-        s->w_ref += dir * p->alpha * dxi;
+        K = s->K + p->sense * p->alpha * dxi;
     else
-        s->w_ref -= dir * p->beta;
+        K = s->K - p->sense * p->beta;
+    if (K < 0.0)
+        K = 0.0;
+    s->K = K;
+    s->w_ref = K * p->r_r / p->r_w * w_roller;
     s->xi_est = xi;
     s->dxi = dxi;
     *w_ref = s->w_ref;

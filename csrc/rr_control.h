@@ -8,8 +8,9 @@
  *
  * Each element is a pair: a const parameter struct and a state struct, both
  * owned by the caller.  *_check validates the parameters, *_init puts the
- * state at rest, *_reset at a given operating point, *_update advances it
- * by one sample (the lag: by any step h).  The sampled-data arrangement
+ * state at rest, *_reset at a given operating point (the creepage
+ * controller has only *_init, which takes its operating point), *_update
+ * advances it by one sample (the lag: by any step h).  The sampled-data arrangement
  * (domain notes section 6): the controllers and the encoder are updated
  * once per sample T, their outputs are held until the next sample, and the
  * plant (with the lag) is integrated in between.
@@ -230,6 +231,19 @@ int rr_encoder_update(const rr_encoder_params *p, rr_encoder_state *s, double th
 /* ---- creepage controller (eq. 13-16) --------------------------------------- */
 
 /*
+ * Reading of eq. (13)-(15).  Eq. (15) sets the wheelset's speed reference
+ * from the roller's speed, w_ref = K (r_r/r_w) w_roller, "where K is a
+ * coefficient (0 <= K <= 1), which is to be adapted to the desired value of
+ * the longitudinal creepage"; eq. (13)-(14) are that adaptation.  They are
+ * applied here to the dimensionless K, not to w_ref in rad/s: with the
+ * paper's alpha = 0.01 and beta = 0.002 a step on w_ref in rad/s would be
+ * alpha dxi ~ 4e-4 rad/s per sample on a wheel turning at ~54 rad/s (5 m/s),
+ * a time constant of ~5000 samples, and a recovery step of 4e-5 in
+ * creepage, too small to do anything; on K, alpha = 0.01 is a proportional
+ * gain on the creepage error with a time constant of 100 samples and beta
+ * = 0.002 a recovery step of 0.002 in creepage per sample: sensible values.
+ * The reference then follows the measured roller speed at every sample.
+ *
  * Sign convention.  Angular speeds are taken each in its own rolling sense,
  * so that at free rolling w_wheelset r_w = w_roller r_r (wheel and roller
  * physically turn in opposite directions; the rig passes both as positive
@@ -240,22 +254,30 @@ int rr_encoder_update(const rr_encoder_params *p, rr_encoder_state *s, double th
  * controller has a sense s = +1 (traction) or -1 (braking) and works with
  *     xi_est = s (w_wheelset r_w - w_roller r_r) / (w_roller r_r),
  * braking: xi_est = (w_roller r_r - w_wheelset r_w)/(w_roller r_r) > 0 when
- * the wheel is slower than the roller.  With dxi = xi_ref - xi_est and
- * d = sign(w_roller r_r) (the direction of travel), eq. (13)-(14) become
- *     dxi >= 0:  w_ref += s d alpha dxi   (too little creepage: move the
- *                                          wheel away from the roller's speed)
- *     dxi <  0:  w_ref -= s d beta        (too much: recover with a fixed step
- *                                          toward the roller's speed)
- * which for traction, forward, is eq. (13)-(14) literally.  The asymmetry
- * is the paper's: creepage beyond the target risks passing the adhesion
- * peak into macro-slip, so it is undone fast; below the target the
- * approach is proportional and slow.  For braking that means the recovery
- * step raises the wheelset speed (applying eq. (14) literally with a
- * negative braking target would lower it, driving the wheel toward lock).
- * With an ideal speed loop (w_wheelset = w_ref) the deficit contracts by
- * 1 - alpha r_w/|w_roller r_r| per sample: the approach is monotone if
- * alpha r_w < |w_roller r_r|.  w_roller r_r is never smaller in magnitude
- * than vmin in the denominator (eq. (16) requires w_roller != 0).
+ * the wheel is slower than the roller.  A wheel at the reference of eq. (15)
+ * has the kinematic creepage xi = s (K - 1), i.e. K = 1 + s xi (braking
+ * K = 1 - xi, traction K = 1 + xi), whatever the direction of travel: w_ref
+ * carries w_roller's sign, so running backward mirrors the reference with
+ * no extra factor.  With dxi = xi_ref - xi_est, eq. (13)-(14) become
+ *     dxi >= 0:  K += s alpha dxi   (too little creepage: move the wheel
+ *                                    away from the roller's speed)
+ *     dxi <  0:  K -= s beta        (too much: recover with a fixed step
+ *                                    toward the roller's speed)
+ *     w_ref = K (r_r/r_w) w_roller                                (15)
+ * which for traction is eq. (13)-(14) literally.  K is kept >= 0 (the
+ * wheel is not driven backward against the roller; braking K = 0 is the
+ * locked wheel, xi = 1); it is not capped at 1, since traction needs K > 1.
+ * The asymmetry is the paper's: creepage beyond the target risks passing
+ * the adhesion peak into macro-slip, so it is undone fast; below the target
+ * the approach is proportional and slow.  For braking the recovery step
+ * raises the wheelset speed (applying eq. (14) literally with a negative
+ * braking target would lower it, driving the wheel toward lock).  With an
+ * ideal speed loop (the wheel at w_ref by the next sample) and a steady
+ * roller, xi_est = s (K - 1): below the target the deficit contracts by the
+ * factor (1 - alpha) per sample, monotonically if alpha <= 1; above it each
+ * recovery step lowers the creepage by exactly beta.  w_roller r_r is never
+ * smaller in magnitude than vmin in the denominator (eq. (16) requires
+ * w_roller != 0); below vmin the estimate is s (K - 1) |w_roller r_r|/vmin.
  */
 enum rr_creepctl_sense {
     RR_CREEPCTL_TRACTION = 1,
@@ -265,15 +287,20 @@ enum rr_creepctl_sense {
 typedef struct {
     double r_w;    /* wheel rolling radius [m], > 0 */
     double r_r;    /* roller rolling radius [m], > 0 */
-    double alpha;  /* eq. (13) gain [rad/s per unit creepage, per sample], >= 0 */
-    double beta;   /* eq. (14) recovery step [rad/s per sample], >= 0 */
+    double alpha;  /* eq. (13) gain on K [per unit creepage error, per sample,
+                      dimensionless], >= 0: K moves by s alpha dxi */
+    double beta;   /* eq. (14) recovery step on K [per sample, dimensionless],
+                      >= 0: the creepage drops by beta per sample */
     double vmin;   /* smallest roller surface speed |w_roller r_r| used as the
                       creepage's denominator [m/s], > 0 */
     int sense;     /* RR_CREEPCTL_TRACTION or RR_CREEPCTL_BRAKING */
 } rr_creepctl_params;
 
 typedef struct {
-    double w_ref;   /* wheelset speed reference [rad/s], for the wheelset's PI */
+    double K;       /* eq. (15) coefficient [-], >= 0, adapted by eq. (13)-(14);
+                       1 + sense xi for the kinematic creepage xi */
+    double w_ref;   /* wheelset speed reference K (r_r/r_w) w_roller [rad/s] of
+                       the last init/update, for the wheelset's PI */
     double xi_est;  /* creepage estimated at the last update, in the sense [-] */
     double dxi;     /* xi_ref - xi_est at the last update [-] */
 } rr_creepctl_state;
@@ -288,25 +315,19 @@ typedef struct {
 int rr_creepctl_check(const rr_creepctl_params *p);
 
 /*
- * rr_creepctl_init - initial wheelset speed reference by eq. (15),
- *   w_ref = K (r_r/r_w) w_roller.
+ * rr_creepctl_init - the controller at coefficient K, with the initial
+ * wheelset speed reference by eq. (15), w_ref = K (r_r/r_w) w_roller.
  *   given:   p; K >= 0 [-]; w_roller the roller speed now [rad/s]
- *   returns: *s with w_ref set, xi_est and dxi 0
+ *   returns: *s with K and w_ref set, xi_est and dxi 0
  *   status:  as rr_creepctl_check, RR_ERR_NONFINITE (K, w_roller),
  *            RR_ERR_PARAM (K < 0); on error *s is NaN
  *   The paper asks 0 <= K <= 1, adapted to the target: K = 1 - xi_ref
  *   braking (1 + xi_ref traction, which needs K > 1, so K is not capped at
- *   1) puts the kinematic creepage on the target at once.
+ *   1) puts the kinematic creepage on the target at once; K = 1 starts at
+ *   free rolling.
  */
 int rr_creepctl_init(const rr_creepctl_params *p, rr_creepctl_state *s, double K,
                      double w_roller);
-
-/*
- * rr_creepctl_reset - set the wheelset speed reference to w_ref [rad/s].
- *   returns: *s;  status: as rr_creepctl_check, RR_ERR_NONFINITE (w_ref);
- *   on error *s is NaN
- */
-int rr_creepctl_reset(const rr_creepctl_params *p, rr_creepctl_state *s, double w_ref);
 
 /*
  * rr_creepctl_xi - estimated creepage, eq. (16), in the controller's sense.
@@ -321,21 +342,30 @@ int rr_creepctl_xi(const rr_creepctl_params *p, double w_wheelset, double w_roll
                    double *xi);
 
 /*
- * rr_creepctl_update - one sample of eq. (13)-(14).
- *   given:   p; s; xi_ref the target creepage in the sense [-] (the paper's
- *            positive numbers); w_wheelset, w_roller measured speeds [rad/s]
- *   returns: *w_ref, the new wheelset speed reference w_ref(t+1) [rad/s];
- *            *s advanced (xi_est, dxi of this sample)
+ * rr_creepctl_update - one sample of eq. (13)-(15) on K.
+ *   given:   p; s from rr_creepctl_init/update; xi_ref the target creepage
+ *            in the sense [-] (the paper's positive numbers); w_wheelset,
+ *            w_roller measured speeds [rad/s]
+ *   returns: *w_ref = K (r_r/r_w) w_roller with the adapted K, the new
+ *            wheelset speed reference w_ref(t+1) [rad/s]; *s advanced (K,
+ *            w_ref, and xi_est, dxi of this sample)
  *   status:  0 OK; errors as rr_creepctl_check, RR_ERR_NONFINITE (inputs or
  *            state); on error *w_ref is NaN and *s unchanged
  *   alpha and beta act per sample, as in the paper: a different sample time
- *   needs them rescaled.  w_ref is not bounded: if the drive cannot follow
- *   (its torque saturated) the reference keeps moving, as in the paper.
- *   Noise biases the rule: a negative dxi of any size fires the full step
- *   beta, a positive one moves only alpha dxi, so with a noisy speed
- *   estimate (encoder quantisation, one count per sample) the creepage is
- *   held below the target by about the noise of xi_est.
- *   reference: eq. (13), (14), (16)
+ *   needs them rescaled.  K is bounded below by 0 only: if the drive cannot
+ *   follow (its torque saturated) K keeps moving, as in the paper.  The
+ *   reference carries the roller's measured speed, so the roller encoder's
+ *   noise enters it directly.
+ *   The rule is biased low: a negative dxi of any size (a count of encoder
+ *   noise, a slight overshoot of the speed loop) fires the full step beta,
+ *   a positive one moves only alpha dxi.  Each firing drops the creepage by
+ *   beta, from where it climbs back with the factor (1 - alpha) per
+ *   sample, so the held creepage is a sawtooth up to one beta deep below
+ *   the target and its mean lies below the target by a fraction of beta
+ *   (with the paper's values and a 2^22-count encoder, in the closed-loop
+ *   test of tests/test_control.c: 0.2 - 0.25 beta = 4 - 5e-4, 1.3 - 2.7 %
+ *   of the paper's targets); a smaller beta shrinks it in proportion.
+ *   reference: eq. (13), (14), (15), (16)
  */
 int rr_creepctl_update(const rr_creepctl_params *p, rr_creepctl_state *s, double xi_ref,
                        double w_wheelset, double w_roller, double *w_ref);

@@ -9,6 +9,7 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include "rr_common.h"
 #include "rr_control.h"
 #include "rr_test.h"
@@ -436,7 +437,7 @@ static rr_creepctl_params creepctl_paper(int sense)
 static void test_creepctl_bad(void)
 {
     rr_creepctl_params p = creepctl_paper(RR_CREEPCTL_BRAKING), b;
-    rr_creepctl_state s;
+    rr_creepctl_state s, s0;
     double w = 0.0;
 
     CHECK_STATUS(rr_creepctl_check(&p), RR_OK, "creepctl good params");
@@ -457,38 +458,65 @@ static void test_creepctl_bad(void)
     b = p; b.vmin = 0.0;
     CHECK_STATUS(rr_creepctl_check(&b), RR_ERR_SPEED, "creepctl vmin = 0");
     CHECK_STATUS(rr_creepctl_init(&b, &s, 1.0, 50.0), RR_ERR_SPEED, "creepctl init vmin = 0");
-    CHECK(isnan(s.w_ref), "creepctl init error: NaN state");
+    CHECK(isnan(s.K) && isnan(s.w_ref) && isnan(s.xi_est) && isnan(s.dxi),
+          "creepctl init error: NaN state");
     CHECK_STATUS(rr_creepctl_update(&b, &s, 0.04, 50.0, 50.0, &w), RR_ERR_SPEED,
                  "creepctl update vmin = 0");
     CHECK(isnan(w), "creepctl update error: NaN out");
     CHECK_STATUS(rr_creepctl_init(&p, &s, -0.5, 50.0), RR_ERR_PARAM, "creepctl init K < 0");
+    CHECK(isnan(s.K) && isnan(s.w_ref), "creepctl init K < 0: NaN state");
+    CHECK_STATUS(rr_creepctl_init(&p, &s, NAN, 50.0), RR_ERR_NONFINITE, "creepctl init K NaN");
+    CHECK(isnan(s.K) && isnan(s.w_ref), "creepctl init K NaN: NaN state");
+    CHECK_STATUS(rr_creepctl_init(&p, &s, INFINITY, 50.0), RR_ERR_NONFINITE,
+                 "creepctl init K inf");
     CHECK_STATUS(rr_creepctl_init(&p, &s, 1.0, NAN), RR_ERR_NONFINITE,
                  "creepctl init w_roller NaN");
     CHECK_STATUS(rr_creepctl_update(&p, &s, 0.04, 50.0, 50.0, &w), RR_ERR_NONFINITE,
                  "creepctl update on a NaN state");
-    rr_creepctl_reset(&p, &s, 50.0);
+    CHECK(isnan(w), "creepctl update on a NaN state: NaN out");
+    CHECK_STATUS(rr_creepctl_init(&p, &s, 0.0, 50.0), RR_OK, "creepctl init K = 0 is valid");
+    CHECK(s.K == 0.0 && s.w_ref == 0.0, "creepctl init K = 0: w_ref = 0");
+    rr_creepctl_init(&p, &s, 0.97, 50.0);
+    rr_creepctl_update(&p, &s, 0.04, 45.0, 50.0, &w);
+    s0 = s;
     CHECK_STATUS(rr_creepctl_update(&p, &s, NAN, 50.0, 50.0, &w), RR_ERR_NONFINITE,
                  "creepctl xi_ref NaN");
-    CHECK(isnan(w) && s.w_ref == 50.0, "creepctl xi_ref NaN: NaN out, state kept");
+    CHECK(isnan(w) && s.K == s0.K && s.w_ref == s0.w_ref && s.xi_est == s0.xi_est
+          && s.dxi == s0.dxi, "creepctl xi_ref NaN: NaN out, state kept");
+    CHECK_STATUS(rr_creepctl_update(&p, &s, 0.04, 50.0, -INFINITY, &w), RR_ERR_NONFINITE,
+                 "creepctl w_roller -inf");
+    CHECK(isnan(w) && s.K == s0.K && s.w_ref == s0.w_ref, "creepctl w_roller -inf: state kept");
+    CHECK_STATUS(rr_creepctl_update(&p, &s, 0.04, NAN, 50.0, &w), RR_ERR_NONFINITE,
+                 "creepctl w_wheelset NaN");
+    CHECK(s.K == s0.K, "creepctl w_wheelset NaN: state kept");
     CHECK_STATUS(rr_creepctl_xi(&p, INFINITY, 50.0, &w), RR_ERR_NONFINITE,
                  "creepctl_xi w_wheelset inf");
     CHECK(isnan(w), "creepctl_xi error: NaN out");
 }
 
-/* Eq. (15), eq. (16) in both senses, the standstill guard, the step directions. */
+/*
+ * Eq. (15), eq. (16) in both senses, the standstill guard, and one step of
+ * eq. (13)-(14) on K in each case, with the exact K and w_ref expected.  The
+ * wheel is measured 4 % slower than the roller, so dxi is the target minus
+ * 0.04 (braking) or minus -0.04 (traction) up to a few ulps, which move K
+ * by alpha times that, far below K's ulp: K is expected to 1e-15.
+ */
 static void test_creepctl_unit(void)
 {
     rr_creepctl_params pb = creepctl_paper(RR_CREEPCTL_BRAKING);
     rr_creepctl_params pt = creepctl_paper(RR_CREEPCTL_TRACTION);
     rr_creepctl_state s;
-    const double wr = V_ROLLER / R_R;
+    const double wr = V_ROLLER / R_R, g = R_R / R_W;
     double xi, w, ww = 0.96 * V_ROLLER / R_W;  /* wheel 4 % slower than the roller */
 
     CHECK_STATUS(rr_creepctl_init(&pb, &s, 0.96, wr), RR_OK, "creepctl init");
+    CHECK(s.K == 0.96 && s.xi_est == 0.0 && s.dxi == 0.0, "creepctl init: K set, xi_est, dxi 0");
     /* K r_r/r_w w_roller, the same three products: a couple of ulps */
-    CHECK_CLOSE(s.w_ref, 0.96 * R_R / R_W * wr, 0.0, 1e-15, "eq. 15: w_ref = K r_r/r_w w_roller");
+    CHECK_CLOSE(s.w_ref, 0.96 * g * wr, 0.0, 1e-15, "eq. 15: w_ref = K r_r/r_w w_roller");
     rr_creepctl_xi(&pb, ww, wr, &xi);
     CHECK_CLOSE(xi, 0.04, 1e-15, 0.0, "braking creepage of a wheel 4 % slow = +0.04");
+    rr_creepctl_xi(&pb, s.w_ref, wr, &xi);
+    CHECK_CLOSE(xi, 0.04, 1e-15, 0.0, "braking: a wheel at eq. 15's w_ref has xi = 1 - K");
     rr_creepctl_xi(&pt, ww, wr, &xi);
     CHECK_CLOSE(xi, -0.04, 1e-15, 0.0, "traction creepage (eq. 16) of a wheel 4 % slow = -0.04");
     /* both running backward: the same creepages */
@@ -500,92 +528,210 @@ static void test_creepctl_unit(void)
     rr_creepctl_xi(&pb, -0.001, 0.0, &xi);
     CHECK_CLOSE(xi, 0.001 * R_W / pb.vmin, 1e-15, 0.0, "creepctl_xi below vmin uses vmin");
 
-    /* braking, creepage below target: slow the wheel by alpha dxi */
-    rr_creepctl_reset(&pb, &s, ww);
-    rr_creepctl_update(&pb, &s, 0.05, ww, wr, &w);
+    /* braking, creepage below target (0.04 < 0.05): K -= alpha dxi, the
+     * wheel slows: K = 0.96 - 0.01 * 0.01 = 0.9599 */
+    rr_creepctl_init(&pb, &s, 0.96, wr);
+    CHECK_STATUS(rr_creepctl_update(&pb, &s, 0.05, ww, wr, &w), RR_OK, "creepctl update");
+    CHECK_CLOSE(s.xi_est, 0.04, 1e-15, 0.0, "creepctl xi_est = eq. 16 in the sense");
     CHECK_CLOSE(s.dxi, 0.01, 1e-15, 0.0, "creepctl dxi = xi_ref - xi_est");
-    CHECK_CLOSE(w, ww - pb.alpha * 0.01, 1e-13, 0.0, "braking, dxi > 0: w_ref -= alpha dxi");
-    /* braking, creepage above target: recover by raising the wheel speed by beta */
-    rr_creepctl_reset(&pb, &s, ww);
+    CHECK_CLOSE(s.K, 0.9599, 1e-15, 0.0, "braking, dxi > 0: K -= alpha dxi");
+    CHECK_CLOSE(w, 0.9599 * g * wr, 0.0, 2e-15, "braking, dxi > 0: w_ref = K r_r/r_w w_roller");
+    CHECK(w == s.w_ref, "creepctl update: the returned w_ref is the stored one");
+    /* braking, creepage above target (0.04 > 0.03): recover, K += beta */
+    rr_creepctl_init(&pb, &s, 0.96, wr);
     rr_creepctl_update(&pb, &s, 0.03, ww, wr, &w);
-    CHECK_CLOSE(w, ww + pb.beta, 1e-13, 0.0, "braking, dxi < 0: w_ref += beta (recovery)");
-    /* traction is eq. (13)-(14) literally */
-    rr_creepctl_reset(&pt, &s, ww);
+    CHECK_CLOSE(s.K, 0.962, 1e-15, 0.0, "braking, dxi < 0: K += beta (recovery)");
+    CHECK_CLOSE(w, 0.962 * g * wr, 0.0, 2e-15, "braking, dxi < 0: w_ref rises");
+    /* the reference follows the measured roller speed of the sample */
+    rr_creepctl_init(&pb, &s, 0.96, wr);
+    rr_creepctl_update(&pb, &s, 0.03, 0.5 * ww, 0.5 * wr, &w);
+    CHECK_CLOSE(w, 0.962 * g * 0.5 * wr, 0.0, 2e-15, "eq. 15 uses this sample's roller speed");
+    /* traction is eq. (13)-(14) literally: creepage -0.04 below 0, K += alpha 0.04 */
+    rr_creepctl_init(&pt, &s, 0.96, wr);
     rr_creepctl_update(&pt, &s, 0.0, ww, wr, &w);
-    CHECK_CLOSE(w, ww + pt.alpha * 0.04, 1e-13, 0.0, "traction, dxi > 0: w_ref += alpha dxi");
-    rr_creepctl_reset(&pt, &s, ww);
+    CHECK_CLOSE(s.K, 0.9604, 1e-15, 0.0, "traction, dxi > 0: K += alpha dxi");
+    CHECK_CLOSE(w, 0.9604 * g * wr, 0.0, 2e-15, "traction, dxi > 0: w_ref rises");
+    rr_creepctl_init(&pt, &s, 0.96, wr);
     rr_creepctl_update(&pt, &s, -0.05, ww, wr, &w);
-    CHECK_CLOSE(w, ww - pt.beta, 1e-13, 0.0, "traction, dxi < 0: w_ref -= beta");
-    /* braking backward: mirrored */
-    rr_creepctl_reset(&pb, &s, -ww);
+    CHECK_CLOSE(s.K, 0.958, 1e-15, 0.0, "traction, dxi < 0: K -= beta");
+    CHECK_CLOSE(w, 0.958 * g * wr, 0.0, 2e-15, "traction, dxi < 0: w_ref falls");
+    /* running backward: K moves as forward, w_ref mirrors with w_roller */
+    rr_creepctl_init(&pb, &s, 0.96, -wr);
+    CHECK_CLOSE(s.w_ref, -0.96 * g * wr, 0.0, 1e-15, "eq. 15 backward: w_ref < 0");
     rr_creepctl_update(&pb, &s, 0.03, -ww, -wr, &w);
-    CHECK_CLOSE(w, -ww - pb.beta, 1e-13, 0.0, "braking backward, dxi < 0: toward the roller");
+    CHECK_CLOSE(s.K, 0.962, 1e-15, 0.0, "braking backward, dxi < 0: K += beta");
+    CHECK_CLOSE(w, -0.962 * g * wr, 0.0, 2e-15,
+                "braking backward, dxi < 0: |w_ref| rises toward the roller's");
+    rr_creepctl_init(&pb, &s, 0.96, -wr);
+    rr_creepctl_update(&pb, &s, 0.05, -ww, -wr, &w);
+    CHECK_CLOSE(s.K, 0.9599, 1e-15, 0.0, "braking backward, dxi > 0: K -= alpha dxi");
+    CHECK_CLOSE(w, -0.9599 * g * wr, 0.0, 2e-15, "braking backward, dxi > 0: |w_ref| falls");
+    rr_creepctl_init(&pt, &s, 0.96, -wr);
+    rr_creepctl_update(&pt, &s, 0.0, -ww, -wr, &w);
+    CHECK_CLOSE(w, -0.9604 * g * wr, 0.0, 2e-15, "traction backward, dxi > 0: |w_ref| rises");
+    /* K is kept >= 0: traction K = 0.001 at creepage -0.999, target -1:
+     * 0.001 - beta clips at 0; braking with alpha = 1, K = 0.01 and a wheel
+     * at 0.02 of the roller's speed (xi 0.98) short of the target 1:
+     * 0.01 - 0.02 clips at 0 */
+    rr_creepctl_init(&pt, &s, 0.001, wr);
+    rr_creepctl_update(&pt, &s, -1.0, s.w_ref, wr, &w);
+    CHECK(s.K == 0.0 && w == 0.0, "traction recovery step clips K at 0");
+    pb.alpha = 1.0;
+    rr_creepctl_init(&pb, &s, 0.01, wr);
+    rr_creepctl_update(&pb, &s, 1.0, 0.02 * g * wr, wr, &w);
+    CHECK(s.K == 0.0 && w == 0.0, "braking gain step clips K at 0");
 }
 
 /*
  * Static wheel-roller model: the wheelset's speed loop is ideal, so the
- * measured wheel speed at each sample is the last reference.  The paper's
- * scenario: braking, roller 5 m/s, alpha = 0.01, beta = 0.002, targets 0.04,
- * 0.015, 0.02, 0.03.  Below the target the deficit contracts by
- * 1 - alpha r_w/V = 1 - 1.8e-4 per sample, so 1 % takes ~2.5e4 samples;
- * above it each beta step moves the creepage by beta r_w/V = 3.7e-5.
+ * measured wheel speed at each sample is the last reference, and the roller
+ * turns steadily at 5 m/s.  Then xi_est = sense (K - 1) (up to rounding),
+ * and with the paper's alpha = 0.01, beta = 0.002 the rule is, in creepage,
+ *     below the target:  xi += alpha (xi_ref - xi)  (deficit x (1 - alpha))
+ *     above it:          xi -= beta.
+ * The paper's scenario: braking, targets 0.04, 0.015, 0.02, 0.03 in turn.
+ * Predicted samples to within 1 % (and staying there): from a deficit d0,
+ * ceil(ln(0.01 xi_ref/d0)/ln(1 - alpha)); coming down, first
+ * ceil((xi_prev - xi_ref)/beta) recovery steps, then the approach from the
+ * undershoot.  0.04 from free rolling: 459 samples; 0.015 from 0.04: 13 steps
+ * to 0.014, then 0.001 -> 1.5e-4: 13 + 189; 0.02 from 0.015: 321; 0.03 from
+ * 0.02: 349.  The count is checked against the prediction (+-1 for
+ * rounding at the threshold) and against 500 samples.  Each target is held
+ * 1500 samples (the deficit falls to 3e-7 of itself, far above rounding,
+ * which could otherwise tip a converged xi_est over the target and fire a
+ * recovery step).
  */
+static int static_run(const rr_creepctl_params *p, rr_creepctl_state *s, double wr,
+                      double xref, int nsamp, double *w, double *xi_end, double *over,
+                      double *under, int *stays)
+{
+    int n, nconv = -1, below = 0;
+    double xi = 0.0;
+
+    *over = *under = 0.0;
+    *stays = 1;
+    for (n = 1; n <= nsamp; n++) {
+        rr_creepctl_update(p, s, xref, *w, wr, w);
+        rr_creepctl_xi(p, *w, wr, &xi);
+        if (!below && xi <= xref) {
+            below = 1;
+            *under = xref - xi;
+        }
+        if (below && xi - xref > *over)
+            *over = xi - xref;
+        if (fabs(xi - xref) <= 0.01 * xref) {
+            if (nconv < 0)
+                nconv = n;
+        } else if (nconv >= 0)
+            *stays = 0;
+    }
+    *xi_end = xi;
+    if (!below)
+        *over = INFINITY;
+    return nconv;
+}
+
+static int predicted_samples(double xprev, double xref, double alpha, double beta)
+{
+    int m = 0;
+    double d;
+    while (xprev > xref) {
+        xprev -= beta;
+        m++;
+    }
+    d = xref - xprev;
+    if (d <= 0.01 * xref)
+        return m;
+    return m + (int)ceil(log(0.01 * xref / d) / log(1.0 - alpha));
+}
+
 static void test_creepctl_static(void)
 {
     static const double targets[] = {0.04, 0.015, 0.02, 0.03};
-    const int nsamp = 40000;
+    const int nsamp = 1500, nbound = 500;
     rr_creepctl_params p = creepctl_paper(RR_CREEPCTL_BRAKING);
     rr_creepctl_state s;
-    const double wr = V_ROLLER / R_R, step = p.beta * R_W / V_ROLLER;
-    double w, xi = 0.0;
+    const double wr = V_ROLLER / R_R;
+    double w, xi = 0.0, xprev = 0.0, over, under;
     unsigned i;
-    char buf[120];
+    int nconv, npred, stays, dir;
+    char buf[160];
 
     rr_creepctl_init(&p, &s, 1.0, wr);  /* start at free rolling */
     w = s.w_ref;
     for (i = 0; i < sizeof targets / sizeof targets[0]; i++) {
-        double xref = targets[i], over = 0.0, under = 0.0;
-        int n, below = 0;
-        for (n = 0; n < nsamp; n++) {
-            rr_creepctl_update(&p, &s, xref, w, wr, &w);
-            rr_creepctl_xi(&p, w, wr, &xi);
-            if (!below && xi <= xref) {
-                below = 1;
-                under = xref - xi;
-            }
-            if (below && xi - xref > over)
-                over = xi - xref;
-        }
+        double xref = targets[i];
+        nconv = static_run(&p, &s, wr, xref, nsamp, &w, &xi, &over, &under, &stays);
+        npred = predicted_samples(xprev, xref, p.alpha, p.beta);
+        printf("  static braking %.3f: within 1 %% after %d samples (predicted %d), "
+               "error at the end %.1e\n", xref, nconv, npred, xi / xref - 1.0);
         snprintf(buf, sizeof buf, "static braking: creepage %g reached within 1 %%", xref);
         CHECK_CLOSE(xi, xref, 0.0, 0.01, buf);
+        snprintf(buf, sizeof buf, "static braking %g: within 1 %% after %d samples "
+                 "(predicted %d, bound %d), and stays", xref, nconv, npred, nbound);
+        CHECK(nconv > 0 && abs(nconv - npred) <= 1 && nconv <= nbound && stays, buf);
         /* from below the approach is monotone (each step closes the fraction
-         * alpha r_w/V < 1 of the deficit), so once at or below the target the
+         * alpha < 1 of the deficit), so once at or below the target the
          * creepage never exceeds it (1e-12: rounding); coming down from a
-         * higher target the last beta step undershoots by less than one step */
+         * higher target the last beta step undershoots by at most beta */
         snprintf(buf, sizeof buf, "static braking %g: never above the target once below it",
                  xref);
-        CHECK(below && over <= 1e-12, buf);
-        if (i > 0 && targets[i - 1] > xref) {
-            snprintf(buf, sizeof buf, "static braking %g: first undershoot below one beta step",
-                     xref);
-            CHECK(under > 0.0 && under <= step, buf);
+        CHECK(over <= 1e-12, buf);
+        if (xprev > xref) {
+            snprintf(buf, sizeof buf, "static braking %g: first undershoot at most one beta "
+                     "step", xref);
+            CHECK(under > 0.0 && under <= p.beta + 1e-12, buf);
         }
-        snprintf(buf, sizeof buf, "static braking %g: wheel slower than the roller", xref);
-        CHECK(w * R_W < V_ROLLER, buf);
+        snprintf(buf, sizeof buf, "static braking %g: wheel slower than the roller, "
+                 "K = 1 - xi", xref);
+        CHECK(w * R_W < V_ROLLER && fabs(s.K - (1.0 - xi)) < 1e-12, buf);
+        xprev = xref;
     }
 
-    /* traction mirrors it: target 0.02, the wheel ends faster than the roller */
-    p.sense = RR_CREEPCTL_TRACTION;
-    rr_creepctl_init(&p, &s, 1.0, wr);
+    /* traction mirrors it, and so does running backward (w_ref carries the
+     * roller's sign): target 0.02 from free rolling, 459 samples predicted */
+    for (dir = 1; dir >= -1; dir -= 2) {
+        int sense;
+        for (sense = -1; sense <= 1; sense += 2) {
+            const double xref = 0.02;
+            double wrd = dir * wr;
+            p.sense = sense;
+            rr_creepctl_init(&p, &s, 1.0, wrd);
+            w = s.w_ref;
+            nconv = static_run(&p, &s, wrd, xref, nsamp, &w, &xi, &over, &under, &stays);
+            npred = predicted_samples(0.0, xref, p.alpha, p.beta);
+            snprintf(buf, sizeof buf, "static %s %s: creepage 0.02 within 1 %% after %d "
+                     "samples (predicted %d), and stays",
+                     sense > 0 ? "traction" : "braking", dir > 0 ? "forward" : "backward",
+                     nconv, npred);
+            CHECK(nconv > 0 && abs(nconv - npred) <= 1 && stays, buf);
+            CHECK_CLOSE(xi, xref, 0.0, 0.01, buf);
+            snprintf(buf, sizeof buf, "static %s %s: wheel %s than the roller, same "
+                     "direction", sense > 0 ? "traction" : "braking",
+                     dir > 0 ? "forward" : "backward", sense > 0 ? "faster" : "slower");
+            CHECK(w * wrd > 0.0
+                  && (sense > 0 ? fabs(w) * R_W > V_ROLLER : fabs(w) * R_W < V_ROLLER), buf);
+        }
+    }
+
+    /* coming down with the recovery step: each step lowers the creepage by
+     * beta exactly (up to rounding) */
+    p.sense = RR_CREEPCTL_BRAKING;
+    rr_creepctl_init(&p, &s, 1.0 - 0.04, wr);
     w = s.w_ref;
     {
-        int n;
-        for (n = 0; n < nsamp; n++)
-            rr_creepctl_update(&p, &s, 0.02, w, wr, &w);
+        int n, ok = 1;
+        double x0, x1;
+        rr_creepctl_xi(&p, w, wr, &x0);
+        for (n = 0; n < 10; n++) {
+            rr_creepctl_update(&p, &s, 0.015, w, wr, &w);
+            rr_creepctl_xi(&p, w, wr, &x1);
+            if (fabs(x0 - x1 - p.beta) > 1e-14)
+                ok = 0;
+            x0 = x1;
+        }
+        CHECK(ok, "static braking above the target: creepage falls by beta per sample");
     }
-    rr_creepctl_xi(&p, w, wr, &xi);
-    CHECK_CLOSE(xi, 0.02, 0.0, 0.01, "static traction: creepage 0.02 within 1 %");
-    CHECK(w * R_W > V_ROLLER, "static traction: wheel faster than the roller");
 }
 
 /* ---- closed loop ------------------------------------------------------------------------- */
@@ -600,17 +746,30 @@ static void test_creepctl_static(void)
  * torque; the creepage controller sets the wheelset's speed reference from
  * the two encoder speeds.  The plant is integrated by classical RK4 with 20
  * sub-steps per sample, far below its fastest time constant (~10 ms).
- * Targets 0.04 then 0.015 (the paper's first two); with alpha raised to 1
- * so that the test runs in seconds rather than minutes of rig time (the
- * paper's 0.01 is shown in the static test).
- * The encoders have 2^22 counts (a sin/cos encoder with interpolation):
- * eq. (13)-(14) are biased by measurement noise, because any negative dxi,
- * however small, fires the full recovery step beta while a positive one
- * only moves alpha dxi; the held creepage then sits below the target by
- * about the noise of the estimate, one count per sample,
- * 2 pi r_w/(counts T V) = 2.7e-5 here.  Measured with this model: mean
- * creepage low by 0.3 % at 0.015 with 2^22 counts, 0.9 % with 2^20, 4 %
- * with 2^16 at alpha = 0.3.
+ * The paper's scenario with its alpha = 0.01 and beta = 0.002: braking,
+ * targets 0.04, 0.015, 0.02, 0.03, each held 3 s.  The encoders have 2^22
+ * counts (a sin/cos encoder with interpolation).
+ * From free rolling the creepage reaches 0.04 within 1 % after 458 samples,
+ * as the ideal-loop prediction (459): the speed loop (~10 ms) is much faster
+ * than the adaptation of K (100 samples).  Held, it is biased low, because
+ * any negative dxi, however small, fires the full recovery step beta while
+ * a positive one only moves alpha dxi.  A count of encoder noise (one count
+ * per sample is 2 pi r_w/(counts T V) = 2.7e-5 in creepage) or a slight
+ * overshoot of the speed loop tips xi_est over the target every few hundred
+ * samples; each time the creepage drops by beta and climbs back with the
+ * factor (1 - alpha) per sample: a sawtooth one beta deep below the target.
+ * Measured with this model (mean of the last second): 0.2 - 0.25 beta =
+ * 4 - 5e-4 low, i.e. 1.3 % at 0.04, 2.7 % at 0.015, 2.4 % at 0.02, 1.6 % at
+ * 0.03; in the last second the creepage stays below each target (at best
+ * 0.05 % below) and dips at most 1.2 beta below it.  The bias is set by the
+ * size of the recovery step more than by the noise: essentially noise-free
+ * (2^30 counts) it is still 0.1 beta = 2e-4 (0.5 - 1.3 %), with 2^16 counts
+ * 1.1 - 1.5 beta (5 - 15 %), and with beta/100 at 2^22 counts only
+ * 0.1 - 0.25 %.  With the
+ * earlier reading (eq. 13-14 on w_ref in rad/s, where beta = 0.002 rad/s
+ * was a creepage step of 3.7e-5) the test needed alpha raised to 1 rad/s
+ * and was 0.3 % low at 0.015: the noise bias is larger now, because the
+ * paper's recovery step, read on K, is 54 times larger.
  */
 typedef struct {
     double Jr, Jw, cr, mu, N, xi0;
@@ -648,26 +807,40 @@ static void rk4(const plant *m, double y[4], double h)
     for (i = 0; i < 4; i++) y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
 }
 
-static void test_closed_loop(void)
+/*
+ * One closed-loop run: the paper's braking scenario, targets in turn, each
+ * held nsamp samples; per target the mean and the extremes of the true
+ * creepage over the last navg samples, the mean roller surface speed, and
+ * the number of samples until the true creepage first came within 1 % of
+ * the target.  Returns the OR of every status.
+ */
+typedef struct {
+    double mean, lo, hi, v_roller, Tw_end;
+    int nconv;
+} cl_result;
+
+static int closed_loop_run(int counts, double alpha, double beta, const double *targets,
+                           int ntargets, int nsamp, int navg, cl_result *res, double *Fmax)
 {
     const double T = 1e-3, wr0 = V_ROLLER / R_R;
     const int nsub = 20;
-    static const double targets[] = {0.04, 0.015};
     plant m = {3.0, 1.0, 0.05, 0.4, 900.85, 0.01, 0.0, 0.0};
     rr_pi_params pir = {1e-3, 300.0, 2.0, 150.0}, piw = {1e-3, 100.0, 2.0, 60.0};
     rr_lag_params lag = {5e-3};
-    rr_encoder_params enc = {1e-3, 1 << 22};
+    rr_encoder_params enc;
     rr_creepctl_params cc = creepctl_paper(RR_CREEPCTL_BRAKING);
     rr_pi_state sr, sw;
     rr_lag_state lr, lw;
     rr_encoder_state er, ew;
     rr_creepctl_state sc;
-    double y[4], wref_w, Fmax = 0.0;
-    unsigned i;
-    int st = 0;
-    char buf[120];
+    double y[4], wref_w;
+    int i, st = 0;
 
-    cc.alpha = 1.0;
+    enc.T = T;
+    enc.counts = counts;
+    cc.alpha = alpha;
+    cc.beta = beta;
+    *Fmax = 0.0;
     y[0] = wr0;
     y[1] = wr0 * R_R / R_W;
     y[2] = y[3] = 0.0;
@@ -679,15 +852,16 @@ static void test_closed_loop(void)
     st |= rr_encoder_reset(&enc, &er, y[0]);
     st |= rr_encoder_reset(&enc, &ew, y[1]);
     st |= rr_creepctl_init(&cc, &sc, 1.0, wr0);
-    CHECK_STATUS(st, RR_OK, "closed loop: initialisation");
     wref_w = sc.w_ref;
 
-    for (i = 0; i < sizeof targets / sizeof targets[0]; i++) {
-        const int nsamp = 8000, navg = 2000;
+    for (i = 0; i < ntargets; i++) {
         double xsum = 0.0, wrsum = 0.0;
         int n, k;
+        res[i].lo = INFINITY;
+        res[i].hi = -INFINITY;
+        res[i].nconv = -1;
         for (n = 0; n < nsamp; n++) {
-            double wmr, wmw, ur, uw;
+            double wmr, wmw, ur, uw, xi, F;
             /* sample: encoders, creepage controller, PIs; outputs held */
             st |= rr_encoder_update(&enc, &er, y[2], &wmr);
             st |= rr_encoder_update(&enc, &ew, y[3], &wmw);
@@ -699,25 +873,70 @@ static void test_closed_loop(void)
                 st |= rr_lag_update(&lag, &lw, uw, T / nsub, &m.Tw);
                 rk4(&m, y, T / nsub);
             }
-            if (fabs(creep_force(&m, y[0], y[1])) > Fmax)
-                Fmax = fabs(creep_force(&m, y[0], y[1]));
+            F = fabs(creep_force(&m, y[0], y[1]));
+            if (F > *Fmax)
+                *Fmax = F;
+            xi = (y[0] * R_R - y[1] * R_W) / (y[0] * R_R);
+            if (res[i].nconv < 0 && fabs(xi - targets[i]) <= 0.01 * targets[i])
+                res[i].nconv = n + 1;
             if (n >= nsamp - navg) {
-                xsum += (y[0] * R_R - y[1] * R_W) / (y[0] * R_R);
+                xsum += xi;
                 wrsum += y[0];
+                if (xi < res[i].lo)
+                    res[i].lo = xi;
+                if (xi > res[i].hi)
+                    res[i].hi = xi;
             }
         }
-        CHECK_STATUS(st, RR_OK, "closed loop: every update OK");
-        snprintf(buf, sizeof buf, "closed loop braking: creepage %g held within 1 %% "
-                 "(mean of the last 2 s)", targets[i]);
-        CHECK_CLOSE(xsum / navg, targets[i], 0.0, 0.01, buf);
-        snprintf(buf, sizeof buf, "closed loop, target %g: roller held at 5 m/s (0.1 %%)",
-                 targets[i]);
-        CHECK_CLOSE(wrsum / navg * R_R, V_ROLLER, 0.0, 1e-3, buf);
-        snprintf(buf, sizeof buf, "closed loop, target %g: wheelset drive brakes",
-                 targets[i]);
-        CHECK(m.Tw < 0.0, buf);
+        res[i].mean = xsum / navg;
+        res[i].v_roller = wrsum / navg * R_R;
+        res[i].Tw_end = m.Tw;
     }
-    CHECK(Fmax <= m.mu * m.N, "closed loop: creep force never above mu N");
+    return st;
+}
+
+static void test_closed_loop(void)
+{
+    static const double targets[] = {0.04, 0.015, 0.02, 0.03};
+    const int nt = 4, nsamp = 3000, navg = 1000, npred = 459;
+    const double mu_N = 0.4 * 900.85, beta = 0.002;
+    cl_result r[4];
+    double Fmax;
+    int i, st;
+    char buf[160];
+
+    st = closed_loop_run(1 << 22, 0.01, beta, targets, nt, nsamp, navg, r, &Fmax);
+    CHECK_STATUS(st, RR_OK, "closed loop: every update OK");
+    snprintf(buf, sizeof buf, "closed loop: 0.04 first reached within 1 %% after %d samples "
+             "(ideal speed loop: %d)", r[0].nconv, npred);
+    CHECK(r[0].nconv > 0 && abs(r[0].nconv - npred) <= 10, buf);
+    for (i = 0; i < nt; i++) {
+        const double x = targets[i];
+        printf("  closed loop %.3f: mean creepage %+.2f %% (%+.1e) of the target, "
+               "range %+.1f .. %+.2f %%\n", x, 100.0 * (r[i].mean / x - 1.0), r[i].mean - x,
+               100.0 * (r[i].lo / x - 1.0), 100.0 * (r[i].hi / x - 1.0));
+        snprintf(buf, sizeof buf, "closed loop braking %g: mean creepage of the last 1 s "
+                 "below the target by less than 0.3 beta", x);
+        CHECK(r[i].mean <= x && r[i].mean >= x - 0.3 * beta, buf);
+        snprintf(buf, sizeof buf, "closed loop braking %g: never above the target by more "
+                 "than 0.2 %%, never below by more than 1.3 beta", x);
+        CHECK(r[i].hi <= 1.002 * x && r[i].lo >= x - 1.3 * beta, buf);
+        snprintf(buf, sizeof buf, "closed loop, target %g: roller held at 5 m/s (0.1 %%)", x);
+        CHECK_CLOSE(r[i].v_roller, V_ROLLER, 0.0, 1e-3, buf);
+        snprintf(buf, sizeof buf, "closed loop, target %g: wheelset drive brakes", x);
+        CHECK(r[i].Tw_end < 0.0, buf);
+    }
+    CHECK(Fmax <= mu_N, "closed loop: creep force never above mu N");
+
+    /* the bias is the recovery step's: with beta / 100 the mean is within
+     * 0.5 % of every target (measured: 0.10 .. 0.25 % low) */
+    st = closed_loop_run(1 << 22, 0.01, beta / 100.0, targets, nt, nsamp, navg, r, &Fmax);
+    CHECK_STATUS(st, RR_OK, "closed loop, beta/100: every update OK");
+    for (i = 0; i < nt; i++) {
+        snprintf(buf, sizeof buf, "closed loop, beta/100: creepage %g held within 0.5 %% "
+                 "(mean of the last 1 s)", targets[i]);
+        CHECK_CLOSE(r[i].mean, targets[i], 0.0, 5e-3, buf);
+    }
 }
 
 int main(void)
