@@ -16,6 +16,8 @@
  *   rr_geometry.h  contact search, wheelset pose, contact tables
  *   rr_rig_contact.h  one contact evaluation of the wheelset on the rollers
  *   rr_control.h   PI speed controllers, drive lag, encoders, creepage controller
+ *   rr_ode.h       fixed-step L-stable integrators (ROS2, TR-BDF2, lin. Euler)
+ *   rr_rig.h       the rig in time: plant, normal loads, sampled-data control
  */
 #ifndef ROLLERRIG_H
 #define ROLLERRIG_H
@@ -33,5 +35,7 @@
 #include "rr_geometry.h"
 #include "rr_rig_contact.h"
 #include "rr_control.h"
+#include "rr_ode.h"
+#include "rr_rig.h"
 
 #endif

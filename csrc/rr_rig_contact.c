@@ -52,7 +52,7 @@ static void pose_nan(rr_rig_pose *p)
     vec_nan(p->c, 3);
     vec_nan(p->v, 3);
     vec_nan(p->w, 3);
-    p->roll = p->beta = NAN;
+    p->roll = p->roll_rate = p->beta = NAN;
 }
 
 /* v turned by angle t about the Y axis, moving +Z toward +X. */
@@ -117,6 +117,7 @@ int rr_rig_kinematics(const rr_rig_contact_model *m, const rr_rig_state *s, rr_r
     pose->v[1] = s->vy;
     pose->v[2] = (D * slope.z * s->vy - s->x * s->vx) / h;
     droll = slope.roll * s->vy;
+    pose->roll_rate = droll;
     cy = cos(s->yaw);
     sy = sin(s->yaw);
     cr = cos(tp.roll);

@@ -70,6 +70,7 @@ typedef struct {
 typedef struct {
     double c[3];        /* wheelset centre in the rig [m] */
     double roll;        /* roll angle [rad], > 0 lifting the left wheel */
+    double roll_rate;   /* its rate, from the constraint [rad/s] */
     double beta;        /* turn about the roller axis [rad], > 0 forward */
     double v[3];        /* centre velocity incl. the constrained vertical rate [m/s] */
     double w[3];        /* angular velocity of the wheelset [rad/s] */

@@ -13,6 +13,9 @@
 #include <Python.h>
 #include <numpy/arrayobject.h>
 
+#include <stddef.h>
+#include <string.h>
+
 #include "rollerrig.h"
 
 /* Work per GIL release: about this many FASTSIM elements, or cases for the
@@ -798,6 +801,309 @@ fail:
     return NULL;
 }
 
+/* ------------------------------------------------------------- the rig */
+
+/* A rig in time: rr_rig_params and rr_rig, with the contact table it reads. */
+typedef struct {
+    PyObject_HEAD
+    PyObject *data;            /* the table's rows, kept alive */
+    rr_contact_table table;
+    rr_rig_params p;
+    rr_rig rig;
+} RigObject;
+
+/* Named float and int fields of rr_rig_params, read from a dict. */
+typedef struct {
+    const char *name;
+    size_t offset;
+    int is_int;
+} field;
+
+#define DFIELD(name, member) {name, offsetof(rr_rig_params, member), 0}
+#define IFIELD(name, member) {name, offsetof(rr_rig_params, member), 1}
+static const field rig_fields[] = {
+    DFIELD("mass", mass), DFIELD("Iyy", Iyy), DFIELD("Izz", Izz), DFIELD("axlebox_y", axlebox_y),
+    DFIELD("kx", kx), DFIELD("ky", ky), DFIELD("kz", kz), DFIELD("cx", cx), DFIELD("cy", cy), DFIELD("cz", cz),
+    DFIELD("preload", preload), DFIELD("g", g), DFIELD("roller_inertia", roller_inertia),
+    DFIELD("R0", contact.R0), DFIELD("G", contact.G), DFIELD("nu", contact.nu), DFIELD("estar", contact.estar),
+    DFIELD("mu0", contact.friction.mu0), DFIELD("A", contact.friction.A), DFIELD("B", contact.friction.B),
+    DFIELD("vmin", contact.vmin), DFIELD("T", T), IFIELD("nsub", nsub), IFIELD("ode_method", method),
+    DFIELD("roller_Kp", roller_pi.Kp), DFIELD("roller_KI", roller_pi.KI),
+    DFIELD("roller_Tmax", roller_pi.Tmax), DFIELD("wheelset_Kp", wheelset_pi.Kp),
+    DFIELD("wheelset_KI", wheelset_pi.KI), DFIELD("wheelset_Tmax", wheelset_pi.Tmax),
+    DFIELD("roller_tau", roller_tau), DFIELD("wheelset_tau", wheelset_tau),
+    IFIELD("roller_counts", roller_enc.counts), IFIELD("wheelset_counts", wheelset_enc.counts),
+    DFIELD("r_w", creepctl.r_w), DFIELD("r_r", creepctl.r_r), DFIELD("ctl_alpha", creepctl.alpha),
+    DFIELD("ctl_beta", creepctl.beta), DFIELD("ctl_vmin", creepctl.vmin), IFIELD("sense", creepctl.sense),
+};
+#undef DFIELD
+#undef IFIELD
+#define NFIELDS ((int)(sizeof rig_fields / sizeof rig_fields[0]))
+
+static int rig_params_from(PyObject *d, rr_rig_params *p)
+{
+    int k;
+    if (!PyDict_Check(d)) {
+        PyErr_SetString(PyExc_TypeError, "Rig: params must be a dict");
+        return -1;
+    }
+    if (PyDict_Size(d) != NFIELDS) {
+        PyErr_Format(PyExc_ValueError, "Rig: params must have exactly %d entries, got %zd",
+                     NFIELDS, PyDict_Size(d));
+        return -1;
+    }
+    for (k = 0; k < NFIELDS; k++) {
+        PyObject *v = PyDict_GetItemString(d, rig_fields[k].name);
+        char *at = (char *)p + rig_fields[k].offset;
+        if (!v) {
+            PyErr_Format(PyExc_ValueError, "Rig: params lacks '%s'", rig_fields[k].name);
+            return -1;
+        }
+        if (rig_fields[k].is_int) {
+            long x = PyLong_AsLong(v);
+            if (x == -1 && PyErr_Occurred())
+                return -1;
+            *(int *)at = (int)(x < INT_MIN ? INT_MIN : x > INT_MAX ? INT_MAX : x);
+        } else {
+            double x = PyFloat_AsDouble(v);
+            if (x == -1.0 && PyErr_Occurred())
+                return -1;
+            *(double *)at = x;
+        }
+    }
+    /* one sample time for every sampled element */
+    p->roller_pi.T = p->wheelset_pi.T = p->roller_enc.T = p->wheelset_enc.T = p->T;
+    return 0;
+}
+
+static void Rig_dealloc(RigObject *self)
+{
+    Py_XDECREF(self->data);
+    Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+/* Rig(data, y0, dy, params, creep, roller_speed) */
+static int Rig_init(RigObject *self, PyObject *args, PyObject *kwargs)
+{
+    PyObject *dobj, *params, *creep;
+    double y0, dy, roller_speed;
+    int st;
+    (void)kwargs;
+    if (!PyArg_ParseTuple(args, "OddO!O!d:Rig", &dobj, &y0, &dy, &PyDict_Type, &params,
+                          &PyDict_Type, &creep, &roller_speed))
+        return -1;
+    if (parse_table(dobj, y0, dy, "Rig", &self->table) < 0)
+        return -1;
+    memset(&self->p, 0, sizeof self->p);
+    if (rig_params_from(params, &self->p) < 0)
+        return -1;
+    if (parse_opts(creep, "Rig", &self->p.contact.creep) < 0)
+        return -1;
+    self->p.contact.table = &self->table;
+    Py_INCREF(dobj);
+    Py_XSETREF(self->data, dobj);
+    st = rr_rig_init(&self->p, roller_speed, &self->rig);
+    if (st < 0) {
+        PyErr_Format(PyExc_ValueError, "Rig: %s", rr_status_message(st));
+        return -1;
+    }
+    return 0;
+}
+
+static PyObject *new_record(double **rec)
+{
+    npy_intp n = RR_REC_COUNT;
+    PyObject *a = PyArray_SimpleNew(1, &n, NPY_DOUBLE);
+    if (a)
+        *rec = OUT(a);
+    return a;
+}
+
+/* run(roller_ref, xi_ref) -> (records[n, RR_REC_COUNT], status): one sample per
+ * element; stops at the first error (the remaining rows are NaN). */
+static PyObject *Rig_run(RigObject *self, PyObject *args)
+{
+    PyObject *objs[2], *out = NULL;
+    static const char *const names[2] = {"roller_ref", "xi_ref"};
+    input in[2];
+    npy_intp n, i, start, dims[2];
+    int st = RR_OK;
+
+    if (!PyArg_ParseTuple(args, "OO:run", &objs[0], &objs[1]))
+        return NULL;
+    if (parse_inputs("Rig.run", objs, names, 2, &n, in) < 0)
+        return NULL;
+    dims[0] = n;
+    dims[1] = RR_REC_COUNT;
+    if (!(out = PyArray_SimpleNew(2, dims, NPY_DOUBLE)))
+        return NULL;
+    {
+        double *rec = OUT(out);
+        for (i = 0; i < n * RR_REC_COUNT; i++)
+            rec[i] = NAN;
+        for (start = 0; start < n && st >= 0; start += 256) {
+            const npy_intp stop = start + 256 < n ? start + 256 : n;
+            Py_BEGIN_ALLOW_THREADS
+            for (i = start; i < stop; i++) {
+                st = rr_rig_step(&self->rig, IN(in[0], i), IN(in[1], i), rec + i * RR_REC_COUNT);
+                if (st < 0)
+                    break;
+            }
+            Py_END_ALLOW_THREADS
+            if (PyErr_CheckSignals() < 0) {
+                Py_DECREF(out);
+                return NULL;
+            }
+        }
+    }
+    return Py_BuildValue("Ni", out, st);
+}
+
+static PyObject *Rig_sample(RigObject *self, PyObject *args)
+{
+    double roller_ref, xi_ref;
+    if (!PyArg_ParseTuple(args, "dd:sample", &roller_ref, &xi_ref))
+        return NULL;
+    return PyLong_FromLong(rr_rig_sample(&self->rig, roller_ref, xi_ref));
+}
+
+static PyObject *Rig_advance(RigObject *self, PyObject *noargs)
+{
+    double *rec;
+    PyObject *a = new_record(&rec);
+    int st;
+    (void)noargs;
+    if (!a)
+        return NULL;
+    st = rr_rig_advance(&self->rig, rec);
+    return Py_BuildValue("Ni", a, st);
+}
+
+static PyObject *Rig_record(RigObject *self, PyObject *noargs)
+{
+    double *rec;
+    PyObject *a = new_record(&rec);
+    int st;
+    (void)noargs;
+    if (!a)
+        return NULL;
+    st = rr_rig_record(&self->rig, rec);
+    return Py_BuildValue("Ni", a, st);
+}
+
+static int state_vector(PyObject *obj, double *y)
+{
+    PyArrayObject *a = (PyArrayObject *)PyArray_FROMANY(obj, NPY_DOUBLE, 1, 1,
+                                                          NPY_ARRAY_IN_ARRAY);
+    int j;
+    if (!a)
+        return -1;
+    if (PyArray_DIM(a, 0) != RR_RIG_NSTATE) {
+        PyErr_Format(PyExc_ValueError, "Rig: the state has %d values, got %zd", RR_RIG_NSTATE,
+                     (Py_ssize_t)PyArray_DIM(a, 0));
+        Py_DECREF(a);
+        return -1;
+    }
+    for (j = 0; j < RR_RIG_NSTATE; j++)
+        y[j] = ((const double *)PyArray_DATA(a))[j];
+    Py_DECREF(a);
+    return 0;
+}
+
+/* rhs(t, y) -> (dydt, status); jac(t, y) -> (J, status): the plant with the held references. */
+static PyObject *Rig_rhs(RigObject *self, PyObject *args)
+{
+    PyObject *yobj, *out;
+    double t, y[RR_RIG_NSTATE];
+    npy_intp n = RR_RIG_NSTATE;
+    int st;
+    if (!PyArg_ParseTuple(args, "dO:rhs", &t, &yobj) || state_vector(yobj, y) < 0)
+        return NULL;
+    if (!(out = PyArray_SimpleNew(1, &n, NPY_DOUBLE)))
+        return NULL;
+    st = rr_rig_rhs(&self->rig, t, y, OUT(out));
+    return Py_BuildValue("Ni", out, st);
+}
+
+static PyObject *Rig_jac(RigObject *self, PyObject *args)
+{
+    PyObject *yobj, *out;
+    double t, y[RR_RIG_NSTATE];
+    npy_intp dims[2] = {RR_RIG_NSTATE, RR_RIG_NSTATE};
+    int st;
+    if (!PyArg_ParseTuple(args, "dO:jac", &t, &yobj) || state_vector(yobj, y) < 0)
+        return NULL;
+    if (!(out = PyArray_SimpleNew(2, dims, NPY_DOUBLE)))
+        return NULL;
+    st = rr_rig_jac(&self->rig, t, y, OUT(out));
+    return Py_BuildValue("Ni", out, st);
+}
+
+static PyObject *Rig_set_state(RigObject *self, PyObject *args)
+{
+    PyObject *yobj;
+    double t, y[RR_RIG_NSTATE];
+    if (!PyArg_ParseTuple(args, "dO:set_state", &t, &yobj) || state_vector(yobj, y) < 0)
+        return NULL;
+    return PyLong_FromLong(rr_rig_set_state(&self->rig, t, y));
+}
+
+static PyObject *Rig_get_t(RigObject *self, void *closure)
+{
+    (void)closure;
+    return PyFloat_FromDouble(self->rig.t);
+}
+
+static PyObject *Rig_get_y(RigObject *self, void *closure)
+{
+    npy_intp n = RR_RIG_NSTATE;
+    PyObject *a = PyArray_SimpleNew(1, &n, NPY_DOUBLE);
+    (void)closure;
+    if (a)
+        memcpy(OUT(a), self->rig.y, sizeof self->rig.y);
+    return a;
+}
+
+static PyObject *Rig_get_status(RigObject *self, void *closure)
+{
+    (void)closure;
+    return PyLong_FromLong(self->rig.status);
+}
+
+static PyMethodDef Rig_methods[] = {
+    {"run", (PyCFunction)Rig_run, METH_VARARGS,
+     "run(roller_ref, xi_ref) -> (records, status): one sample per element"},
+    {"sample", (PyCFunction)Rig_sample, METH_VARARGS,
+     "sample(roller_ref, xi_ref) -> status: encoders and controllers at this instant"},
+    {"advance", (PyCFunction)Rig_advance, METH_NOARGS,
+     "advance() -> (record, status): the plant over one sample"},
+    {"record", (PyCFunction)Rig_record, METH_NOARGS, "record() -> (record, status)"},
+    {"rhs", (PyCFunction)Rig_rhs, METH_VARARGS, "rhs(t, y) -> (dydt, status)"},
+    {"jac", (PyCFunction)Rig_jac, METH_VARARGS, "jac(t, y) -> (J, status)"},
+    {"set_state", (PyCFunction)Rig_set_state, METH_VARARGS, "set_state(t, y) -> status"},
+    {NULL, NULL, 0, NULL}
+};
+
+static PyGetSetDef Rig_getset[] = {
+    {"t", (getter)Rig_get_t, NULL, "time [s]", NULL},
+    {"y", (getter)Rig_get_y, NULL, "plant state (a copy)", NULL},
+    {"status", (getter)Rig_get_status, NULL, "status of the last sample", NULL},
+    {NULL, NULL, NULL, NULL, NULL}
+};
+
+static PyTypeObject RigType = {
+    PyVarObject_HEAD_INIT(NULL, 0)
+    .tp_name = "rollerrig._core.Rig",
+    .tp_basicsize = sizeof(RigObject),
+    .tp_dealloc = (destructor)Rig_dealloc,
+    .tp_flags = Py_TPFLAGS_DEFAULT,
+    .tp_doc = "Rig(data, y0, dy, params, creep, roller_speed): the C rig (rr_rig.h)",
+    .tp_methods = Rig_methods,
+    .tp_getset = Rig_getset,
+    .tp_init = (initproc)Rig_init,
+    .tp_new = PyType_GenericNew,
+};
+
 static PyObject *py_status_message(PyObject *self, PyObject *arg)
 {
     long code = PyLong_AsLong(arg);
@@ -846,9 +1152,17 @@ PyMODINIT_FUNC PyInit__core(void)
 {
     PyObject *m;
     import_array();
+    if (PyType_Ready(&RigType) < 0)
+        return NULL;
     m = PyModule_Create(&core_module);
     if (!m)
         return NULL;
+    Py_INCREF(&RigType);
+    if (PyModule_AddObject(m, "Rig", (PyObject *)&RigType) < 0) {
+        Py_DECREF(&RigType);
+        Py_DECREF(m);
+        return NULL;
+    }
     if (PyModule_AddIntConstant(m, "METHOD_LINEAR", RR_METHOD_LINEAR) < 0
         || PyModule_AddIntConstant(m, "METHOD_FASTSIM", RR_METHOD_FASTSIM) < 0
         || PyModule_AddIntConstant(m, "METHOD_FASTSIM_BLENDED", RR_METHOD_FASTSIM_BLENDED) < 0
@@ -862,6 +1176,11 @@ PyMODINIT_FUNC PyInit__core(void)
         || PyModule_AddIntConstant(m, "SLIP_RIGID", RR_SLIP_RIGID) < 0
         || PyModule_AddIntConstant(m, "FASTSIM_MAX_GRID", RR_FASTSIM_MAX_GRID) < 0
         || PyModule_AddIntConstant(m, "TABLE_ROW", (int)rr_contact_table_len(1)) < 0
+        || PyModule_AddIntConstant(m, "RIG_NSTATE", RR_RIG_NSTATE) < 0
+        || PyModule_AddIntConstant(m, "REC_COUNT", RR_REC_COUNT) < 0
+        || PyModule_AddIntConstant(m, "ODE_ROS2", RR_ODE_ROS2) < 0
+        || PyModule_AddIntConstant(m, "ODE_TRBDF2", RR_ODE_TRBDF2) < 0
+        || PyModule_AddIntConstant(m, "ODE_LINEULER", RR_ODE_LINEULER) < 0
         || PyModule_AddIntConstant(m, "STATUS_MIN", RR_STATUS_MIN) < 0
         || PyModule_AddIntConstant(m, "STATUS_MAX", RR_STATUS_MAX) < 0) {
         Py_DECREF(m);

@@ -1,0 +1,200 @@
+/*
+ * rr_rig.h - the roller rig in time: a suspended wheelset on two rigidly
+ * joined rollers, the roller and wheelset drives with their PI speed
+ * controllers and encoders, and the creepage controller, stepped in
+ * real time (the seed paper's mechatronic model, sections 3-5).
+ *
+ * Plant (rig frame of rr_rig_contact.h: X forward, Y left, Z up):
+ *   wheelset: longitudinal x (round the rollers: the tilt beta of eq. 5-6),
+ *     lateral y, yaw, spin angle chi, with their rates vx, vy, yaw_rate,
+ *     spin; its height and roll follow the contact constraint (the
+ *     contact table); each axle box hangs on springs and dampers in x, y, z
+ *     from the fixed frame, the vertical ones preloaded;
+ *   rollers: one angle theta_r and speed (roller_spin), both rollers on
+ *     one shaft with the roller motor;
+ *   drives: the motor torques follow their references through a first-
+ *     order lag (inverter and drive), T' = (T_ref - T)/tau.
+ * Normal loads: the vertical force and the roll moment on the wheelset
+ * balance at every instant (its vertical and roll accelerations, which
+ * the constraint makes second order small, are left out):
+ *     sum_j N_j n_j,z + tangential_z = preload + m g + 2 kz (z - z_ref) + 2 cz vz
+ *     sum_j (arm_j x (N_j n_j + tangential_j))_x = 2 b^2 (kz roll + cz roll')
+ * solved for N_left, N_right: the 3-D form of the paper's eq. 3-6 (the sec
+ * alpha, sec beta and F_y tan alpha terms come from the contact frames).
+ * The tangential forces enter through their ratio to the load at the
+ * first solution, so each right-hand side costs one contact evaluation
+ * per wheel.  A wheel that would need a negative load lifts off: an error.
+ *
+ * Equations of motion (sums over both contacts, forces of rr_rig_contact):
+ *   m x''  = F_x - 2 kx x - 2 cx vx
+ *   m y''  = F_y - 2 ky y - 2 cy vy
+ *   Izz yaw'' = M_z - 2 b^2 (kx yaw + cx yaw_rate)
+ *   Iyy spin' = M . axle + T_wheelset
+ *   J_r roller_spin' = T_roller + sum_j ((p_j - O_r) x F_j)_y
+ * with b the axle boxes' lateral half-spacing, O_r a point of the roller
+ * axis.  Gyroscopic terms are left out.
+ *
+ * Sampled-data control (period T): at each sample the encoders read the
+ * angles, the creepage controller (eq. 13-16) sets the wheelset speed
+ * reference, the PI controllers (eq. 10-11) set the torque references,
+ * held until the next sample; the plant is then integrated over T in nsub
+ * equal steps of a fixed-step L-stable method (rr_ode.h) with an
+ * approximate Jacobian (springs exact, creep forces by the linear theory
+ * scaled to the current saturation): every step costs the same.
+ */
+#ifndef RR_RIG_H
+#define RR_RIG_H
+
+#include "rr_control.h"
+#include "rr_ode.h"
+#include "rr_rig_contact.h"
+
+/* Plant state, in this order. */
+enum rr_rig_state_index {
+    RR_RIG_X = 0, RR_RIG_Y, RR_RIG_YAW, RR_RIG_CHI, RR_RIG_THETA_R,
+    RR_RIG_VX, RR_RIG_VY, RR_RIG_YAW_RATE, RR_RIG_SPIN, RR_RIG_ROLLER_SPIN,
+    RR_RIG_T_ROLLER, RR_RIG_T_WHEELSET,
+    RR_RIG_NSTATE
+};
+
+typedef struct {
+    /* wheelset */
+    double mass;             /* [kg] */
+    double Iyy;              /* spin inertia with the braking drive referred to the axle [kg m^2] */
+    double Izz;              /* yaw inertia [kg m^2] */
+    double axlebox_y;        /* lateral half-spacing b of the axle boxes [m] */
+    double kx, ky, kz;       /* spring stiffness per axle box [N/m] */
+    double cx, cy, cz;       /* damping per axle box [N s/m] */
+    double preload;          /* vertical spring preload, both boxes together [N] */
+    double g;                /* gravity [m/s^2] */
+    /* rollers */
+    double roller_inertia;   /* both rollers, shaft and motor [kg m^2] */
+    /* contact: table, R0, material, friction, creep method, vmin */
+    rr_rig_contact_model contact;
+    /* drives and control */
+    double T;                /* sample time of controllers and encoders [s] */
+    int nsub;                /* plant steps per sample, >= 1 */
+    int method;              /* enum rr_ode_method */
+    rr_pi_params roller_pi, wheelset_pi;      /* their T must equal T */
+    double roller_tau, wheelset_tau;          /* drive lags [s], > 0 */
+    rr_encoder_params roller_enc, wheelset_enc;
+    rr_creepctl_params creepctl;              /* radii, alpha, beta, vmin, sense */
+} rr_rig_params;
+
+/* The quantities recorded at the end of each sample, in this order. */
+enum rr_rig_record_index {
+    RR_REC_T = 0,          /* time [s] */
+    RR_REC_CREEPAGE,       /* longitudinal creepage, mean of both contacts (cx, Kalker's sign:
+                              > 0 braking) [-] */
+    RR_REC_XI_EST,         /* the controller's estimate (eq. 16, in its sense) [-] */
+    RR_REC_XI_REF,         /* the target [-] */
+    RR_REC_ROLLER_SPEED,   /* roller surface speed roller_spin R0 [m/s] */
+    RR_REC_WHEELSET_SPEED, /* wheel surface speed spin r0 [m/s] */
+    RR_REC_FX,             /* longitudinal creep force on the wheelset, sum of fx [N] */
+    RR_REC_FY,             /* lateral creep force on the wheelset, sum of fy [N] */
+    RR_REC_N_LEFT,         /* normal loads [N] */
+    RR_REC_N_RIGHT,
+    RR_REC_ADHESION,       /* |sum fx| / sum N [-] */
+    RR_REC_T_ROLLER,       /* drive torques [N m] */
+    RR_REC_T_WHEELSET,
+    RR_REC_W_REF,          /* wheelset speed reference [rad/s] */
+    RR_REC_X, RR_REC_Y, RR_REC_YAW,   /* wheelset position [m], [m], [rad] */
+    RR_REC_CX_LEFT, RR_REC_CX_RIGHT,  /* each contact's longitudinal creepage */
+    RR_REC_TREF_ROLLER,    /* torque references held over the sample [N m] */
+    RR_REC_TREF_WHEELSET,
+    RR_REC_STATUS,         /* the sample's status */
+    RR_REC_COUNT
+};
+
+typedef struct {
+    const rr_rig_params *p;
+    double t;                      /* time [s] */
+    double y[RR_RIG_NSTATE];       /* plant state */
+    double z_ref;                  /* axle height at which the springs carry the preload [m] */
+    /* references held between samples */
+    double roller_ref;             /* roller speed reference [rad/s] */
+    double xi_ref;                 /* creepage target [-] */
+    double Tref_roller, Tref_wheelset;
+    int creep_control;             /* 1 while eq. 13-14 steer the wheelset */
+    rr_pi_state roller_pi, wheelset_pi;
+    rr_encoder_state roller_enc, wheelset_enc;
+    rr_creepctl_state creepctl;
+    rr_ode ode;
+    /* the last contact evaluation, reused when the state is unchanged */
+    double cache_y[RR_RIG_NSTATE];
+    int cache_ok;
+    rr_rig_pose pose;
+    rr_wheel_contact w[2];
+    int status;                    /* of the last step; < 0 stops stepping */
+} rr_rig;
+
+/*
+ * rr_rig_check - 0 if the parameters are usable, else RR_ERR_NONFINITE,
+ * RR_ERR_PARAM (a mass, inertia, stiffness, damping, preload, sample time,
+ * nsub or lag out of range, or a controller's T differs from T), or the
+ * status of the contact model, controller or encoder checks.
+ */
+int rr_rig_check(const rr_rig_params *p);
+
+/*
+ * rr_rig_init - the rig at rest-free rolling: centred wheelset, rollers at
+ * roller_speed [rad/s], the wheelset rolling freely on them, drives
+ * holding the torques that balance the steady state, controllers primed
+ * with these speeds, no creepage control (target 0) until rr_rig_step
+ * gets a target.
+ *   given:   p (kept by pointer: it must outlive the rig); roller_speed
+ *   returns: *rig
+ *   status:  rr_rig_check; errors of the contact evaluation
+ */
+int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig);
+
+/*
+ * rr_rig_step - one sample: rr_rig_sample, then rr_rig_advance.
+ *   given:   rig; roller_ref the roller speed reference [rad/s]; xi_ref the
+ *            creepage target (controller's sense, the paper's positive
+ *            numbers); when control starts, eq. 15's K is set to the
+ *            present speed ratio, and eq. 13-14 move it to each target
+ *            from there; xi_ref NaN: no creepage control (the wheelset is
+ *            held at free rolling speed)
+ *   returns: rec[RR_REC_COUNT], the state at the end of the sample
+ *   status:  0, a warning, or an error (wheel off its roller, lift-off,
+ *            NaN): the rig keeps its last good state and refuses to step on.
+ */
+int rr_rig_step(rr_rig *rig, double roller_ref, double xi_ref, double *rec);
+
+/*
+ * rr_rig_sample - the sampling instant alone: encoders read the angles,
+ * the creepage controller and the PI controllers set the references the
+ * drives hold until the next sample.  On error nothing changes.
+ */
+int rr_rig_sample(rr_rig *rig, double roller_ref, double xi_ref);
+
+/*
+ * rr_rig_advance - the plant over one sample (nsub fixed steps) with the
+ * held references; rec as rr_rig_step.  On error the state is that of the
+ * sample's start and the rig refuses to go on (rig->status < 0).
+ */
+int rr_rig_advance(rr_rig *rig, double *rec);
+
+/* rr_rig_record - the record of the current state (one contact evaluation). */
+int rr_rig_record(rr_rig *rig, double *rec);
+
+/*
+ * rr_rig_set_state - put the plant at (t, y) (e.g. the end of a sample
+ * integrated by another solver); the controllers keep their states.
+ *   status: 0, RR_ERR_NONFINITE
+ */
+int rr_rig_set_state(rr_rig *rig, double t, const double *y);
+
+/*
+ * rr_rig_rhs - the plant's right-hand side at (t, y) with the rig's held
+ * torque references: dydt[RR_RIG_NSTATE]; for verification (e.g. against an
+ * adaptive stiff solver between samples).  Contact outputs of the
+ * evaluation in rig->pose, rig->w.
+ */
+int rr_rig_rhs(rr_rig *rig, double t, const double *y, double *dydt);
+
+/* rr_rig_jac - the approximate Jacobian the integrator uses, J[n*n], n = RR_RIG_NSTATE. */
+int rr_rig_jac(rr_rig *rig, double t, const double *y, double *J);
+
+#endif
