@@ -52,6 +52,47 @@ class RigGeometry:
     wheel_right: Optional[Profile] = None
     roller_right: Optional[Profile] = None
 
+    @classmethod
+    def standard(cls, wheel=None, roller=None, *, wheel_radius=0.46, roller_radius=0.46,
+                 gauge=1.435, back_to_back=1.360, flange_back=-0.070, gauge_depth=0.014,
+                 inclination=0.0):
+        """A wheelset on rollers placed as on track by gauge and back-to-back
+        distance [m].  wheel, roller: profiles (default S1002 and the UIC60
+        head, which is already canted 1:40); flange_back: the wheel profile's
+        y of the flange back (S1002: the taping line, its origin, lies 70 mm
+        from it); the gauge is measured gauge_depth below the roller's top
+        (EN 13848-1: 14 mm); inclination: a cant applied to the roller
+        profile (Profile.canted) before placing it.  The Manchester
+        benchmark's placement is RigGeometry.standard()."""
+        func = "RigGeometry.standard"
+        wheel = Profile.s1002() if wheel is None else wheel
+        roller = Profile.uic60() if roller is None else roller
+        vals = dict(gauge=gauge, back_to_back=back_to_back, flange_back=flange_back,
+                    gauge_depth=gauge_depth, inclination=inclination)
+        for name, v in vals.items():
+            if not (isinstance(v, (int, float, np.floating)) and np.isfinite(v)):
+                raise RollerRigError(f"{func}: {name} must be a finite number, got {v!r}")
+        if not (gauge > 0 and back_to_back > 0 and gauge_depth > 0):
+            raise RollerRigError(f"{func}: gauge, back_to_back, gauge_depth must be > 0, got "
+                                 f"{gauge!r}, {back_to_back!r}, {gauge_depth!r}")
+        if inclination:
+            roller = roller.canted(inclination)
+        # the gauge point: on the gauge side (y below the top), gauge_depth below it
+        y = np.linspace(roller.y_min, roller.y_max, 20001)
+        z = roller.z_at(y)
+        top = int(np.argmin(z))
+        side = np.flatnonzero(z[:top + 1] >= z[top] + gauge_depth)
+        if side.size == 0:
+            raise RollerRigError(f"{func}: the roller profile does not reach {gauge_depth!r} m "
+                                 "below its top on the gauge side")
+        i = side[-1]
+        # linear interpolation between the last point below and the first above the depth
+        f = (z[top] + gauge_depth - z[i]) / (z[i + 1] - z[i])
+        y_gauge = y[i] + f * (y[i + 1] - y[i])
+        return cls(wheel=wheel, roller=roller, wheel_radius=wheel_radius,
+                   roller_radius=roller_radius, wheel_y=back_to_back / 2 - flange_back,
+                   roller_y=gauge / 2 - y_gauge)
+
     def _arrays(self):
         """The four profiles as the core takes them: each the Profile's own
         spline (knots, values, second derivatives), heights up, so -z."""

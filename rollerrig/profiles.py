@@ -597,6 +597,24 @@ class Profile:
         return self._derived(self._y + dy, self._z_input + dz, self._name,
                              f"shifted by dy = {dy!r} m, dz = {dz!r} m")
 
+    def canted(self, inclination):
+        """The profile turned about its origin as a rail or roller head canted
+        inward by `inclination` (a slope, e.g. 1/40): the field side drops,
+        y' = y cos c - z sin c, z' = y sin c + z cos c, c = atan(inclination).
+        Points where the turn folds the curve back (a steep face) are an
+        error; keep |inclination| small (<= 0.1)."""
+        func = "Profile.canted"
+        inc = _check_number(func, "inclination", inclination)
+        if not abs(inc) <= 0.1:
+            raise RollerRigError(f"{func}: inclination must be within [-0.1, 0.1], got {inc!r}")
+        c = math.atan(inc)
+        y = self._y * math.cos(c) - self._z_input * math.sin(c)
+        z = self._y * math.sin(c) + self._z_input * math.cos(c)
+        if not np.all(np.diff(y) > 0):
+            raise RollerRigError(f"{func}: canting by {inc!r} folds the profile back "
+                                 "(a face steeper than the cant)")
+        return self._derived(y, z, self._name, f"canted by {inc!r}")
+
     def mirrored(self):
         """The mirror image y -> -y: the same profile for the other side of the
         track (field side positive again there).  Smoothing commutes with it."""

@@ -127,3 +127,22 @@ def test_core_evaluates_the_profiles_own_spline():
     assert np.allclose(c.left.r[ok], 0.46 + g.wheel.z_at(c.left.s_wheel[ok]), rtol=0, atol=1e-15)
     assert np.allclose(c.right.R[ok], 0.46 - g.roller.z_at(c.right.s_roller[ok]), rtol=0,
                        atol=1e-15)
+
+
+def test_standard_placement_is_the_manchester_benchmark():
+    """Gauge 1435 mm (14 mm below the top), back-to-back 1360 mm, taping
+    line 70 mm from the flange back: the benchmark's rail origins at
+    760.53 mm (its input) to 0.01 mm, the wheel origins at 750 mm."""
+    g = rr.RigGeometry.standard()
+    assert g.wheel_y == pytest.approx(0.75, abs=1e-12)
+    assert g.roller_y == pytest.approx(0.76053, abs=1e-5)
+    # a wider gauge moves the rollers out by half the difference
+    assert rr.RigGeometry.standard(gauge=1.445).roller_y == pytest.approx(g.roller_y + 0.005,
+                                                                          abs=1e-9)
+    # canting the (already canted) head further turns its top toward the track centre
+    canted = rr.Profile.uic60().canted(1 / 40)
+    assert canted.slope(0.0) > rr.Profile.uic60().slope(0.0)
+    with pytest.raises(rr.RollerRigError, match="inclination"):
+        rr.Profile.uic60().canted(0.5)
+    with pytest.raises(rr.RollerRigError, match="gauge"):
+        rr.RigGeometry.standard(gauge=float("nan"))
