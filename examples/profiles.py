@@ -33,13 +33,6 @@ MM = 1e-3
 DATA = rr.profiles.DATA_DIR
 
 
-def y_at_depth(rail, depth):
-    """Lateral position of the rail's gauge face (the side y < top) at a depth below the top."""
-    lo, hi = rail.y_min, float(rail.y[np.argmin(rail.z)])
-    for _ in range(100):
-        mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if rail.z_at(mid) > depth else (lo, mid)
-    return 0.5 * (lo + hi)
 
 
 def seat(wheel, rail, dy):
@@ -72,7 +65,7 @@ def main(outdir="."):
 
     # S1002 over UIC60, centred wheelset on standard track
     wheel, rail = rr.Profile.s1002(), rr.Profile.uic60()
-    y_gauge = y_at_depth(rail, 14 * MM)
+    y_gauge = rail.gauge_point(14 * MM)
     dy = y_gauge + (1360 / 2 + 70 - 1435 / 2) * MM
     placed, yc = seat(wheel, rail, dy)
     print(f"S1002 on UIC60: gauge point y = {y_gauge / MM:.2f} mm, taping line at "
@@ -90,7 +83,7 @@ def main(outdir="."):
                                         smoothing=2 * MM)
         mwheel_smooth = rr.read_profile(os.path.join(DATA, "left-wheel-v1-pre-dry.whl"),
                                         smoothing=2 * MM)
-    y_gauge = y_at_depth(roller, roller.meta["RailGaugePoint"] * MM)
+    y_gauge = roller.gauge_point(roller.meta["RailGaugePoint"] * MM)
     dy = y_gauge + (1347.0 / 2 - roller.meta["Gauge"] / 2) * MM
     placed, yc = seat(mwheel, roller, dy)
     tape = mwheel.meta["WheelDiameterTaperline"]

@@ -967,28 +967,26 @@ static PyObject *Rig_sample(RigObject *self, PyObject *args)
     return PyLong_FromLong(rr_rig_sample(&self->rig, roller_ref, xi_ref));
 }
 
-static PyObject *Rig_advance(RigObject *self, PyObject *noargs)
+/* A fresh record filled by fn (rr_rig_advance or rr_rig_record), with its status. */
+static PyObject *record_call(RigObject *self, int (*fn)(rr_rig *, double *))
 {
     double *rec;
     PyObject *a = new_record(&rec);
-    int st;
-    (void)noargs;
     if (!a)
         return NULL;
-    st = rr_rig_advance(&self->rig, rec);
-    return Py_BuildValue("Ni", a, st);
+    return Py_BuildValue("Ni", a, fn(&self->rig, rec));
+}
+
+static PyObject *Rig_advance(RigObject *self, PyObject *noargs)
+{
+    (void)noargs;
+    return record_call(self, rr_rig_advance);
 }
 
 static PyObject *Rig_record(RigObject *self, PyObject *noargs)
 {
-    double *rec;
-    PyObject *a = new_record(&rec);
-    int st;
     (void)noargs;
-    if (!a)
-        return NULL;
-    st = rr_rig_record(&self->rig, rec);
-    return Py_BuildValue("Ni", a, st);
+    return record_call(self, rr_rig_record);
 }
 
 static int state_vector(PyObject *obj, double *y)

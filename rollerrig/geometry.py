@@ -77,18 +77,7 @@ class RigGeometry:
                                  f"{gauge!r}, {back_to_back!r}, {gauge_depth!r}")
         if inclination:
             roller = roller.canted(inclination)
-        # the gauge point: on the gauge side (y below the top), gauge_depth below it
-        y = np.linspace(roller.y_min, roller.y_max, 20001)
-        z = roller.z_at(y)
-        top = int(np.argmin(z))
-        side = np.flatnonzero(z[:top + 1] >= z[top] + gauge_depth)
-        if side.size == 0:
-            raise RollerRigError(f"{func}: the roller profile does not reach {gauge_depth!r} m "
-                                 "below its top on the gauge side")
-        i = side[-1]
-        # linear interpolation between the last point below and the first above the depth
-        f = (z[top] + gauge_depth - z[i]) / (z[i + 1] - z[i])
-        y_gauge = y[i] + f * (y[i + 1] - y[i])
+        y_gauge = roller.gauge_point(gauge_depth)
         return cls(wheel=wheel, roller=roller, wheel_radius=wheel_radius,
                    roller_radius=roller_radius, wheel_y=back_to_back / 2 - flange_back,
                    roller_y=gauge / 2 - y_gauge)

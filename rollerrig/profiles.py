@@ -597,6 +597,22 @@ class Profile:
         return self._derived(self._y + dy, self._z_input + dz, self._name,
                              f"shifted by dy = {dy!r} m, dz = {dz!r} m")
 
+    def gauge_point(self, depth=0.014):
+        """Lateral position [m] of a rail's (or roller's) gauge face at `depth`
+        below z = 0, the top of the head in rail profiles (the gauge is
+        measured there: 14 mm, EN 13848-1), on the gauge side of the top;
+        bisection on the spline."""
+        func = "Profile.gauge_point"
+        depth = _check_number(func, "depth", depth, positive=True)
+        lo, hi = self.y_min, float(self._y[np.argmin(self._z)])
+        if not self.z_at(lo) >= depth:
+            raise RollerRigError(f"{func}: the profile does not reach {depth!r} m below z = 0 "
+                                 "on the gauge side")
+        for _ in range(100):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if self.z_at(mid) > depth else (lo, mid)
+        return 0.5 * (lo + hi)
+
     def canted(self, inclination):
         """The profile turned about its origin as a rail or roller head canted
         inward by `inclination` (a slope, e.g. 1/40): the field side drops,

@@ -240,13 +240,6 @@ FLANGE_BACKS = 1.347         #: [m] same case (FBDIST); an assumption for these 
 SMOOTHING = 2e-3             #: [m] as examples/profiles.py shows the curvature
 
 
-def gauge_face(rail, depth):
-    """Lateral position of a rail's gauge face at `depth` below its top (bisection)."""
-    lo, hi = rail.y_min, float(rail.y[np.argmin(rail.z)])
-    for _ in range(100):
-        mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if rail.z_at(mid) > depth else (lo, mid)
-    return 0.5 * (lo + hi)
 
 
 def measured_rig():
@@ -268,7 +261,7 @@ def measured_rig():
             "left-wheel-v1-pre-dry.whl", "right-wheel-v1-pre-dry.whl",
             "left-roller-v1-pre-dry.ban", "right-roller-v1-pre-dry.ban"))
     gauge = 0.5 * (rl.meta["Gauge"] + rrr.meta["Gauge"]) * MM
-    gl, gr = (gauge_face(r, r.meta["RailGaugePoint"] * MM) for r in (rl, rrr))
+    gl, gr = (r.gauge_point(r.meta["RailGaugePoint"] * MM) for r in (rl, rrr))
     tape = wl.meta["WheelDiameterTaperline"] * MM
     r0 = 0.5 * wl.meta["DiameterTaperline"] * MM - wl.z_at(tape)
     dz_right = 0.5 * wr.meta["DiameterTaperline"] * MM - r0 - wr.z_at(tape)
