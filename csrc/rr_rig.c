@@ -324,6 +324,11 @@ int rr_rig_record(rr_rig *rig, double *rec)
     rec[RR_REC_CX_RIGHT] = r->creep.cx;
     rec[RR_REC_TREF_ROLLER] = rig->Tref_roller;
     rec[RR_REC_TREF_WHEELSET] = rig->Tref_wheelset;
+    rec[RR_REC_VX] = y[RR_RIG_VX];
+    rec[RR_REC_VY] = y[RR_RIG_VY];
+    rec[RR_REC_YAW_RATE] = y[RR_RIG_YAW_RATE];
+    rec[RR_REC_SPIN] = y[RR_RIG_SPIN];
+    rec[RR_REC_ROLLER_SPIN] = y[RR_RIG_ROLLER_SPIN];
     rec[RR_REC_STATUS] = status;
     return status;
 }

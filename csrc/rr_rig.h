@@ -102,6 +102,9 @@ enum rr_rig_record_index {
     RR_REC_CX_LEFT, RR_REC_CX_RIGHT,  /* each contact's longitudinal creepage */
     RR_REC_TREF_ROLLER,    /* torque references held over the sample [N m] */
     RR_REC_TREF_WHEELSET,
+    RR_REC_VX, RR_REC_VY, RR_REC_YAW_RATE,   /* the wheelset's rates [m/s], [m/s], [rad/s] */
+    RR_REC_SPIN, RR_REC_ROLLER_SPIN,         /* angular speeds [rad/s]: with x, y, yaw the
+                                                kinematics a contact model needs (replay) */
     RR_REC_STATUS,         /* the sample's status */
     RR_REC_COUNT
 };

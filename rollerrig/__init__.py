@@ -26,7 +26,8 @@ from .profiles import Profile, read_profile
 from .geometry import (ContactSide, ContactTable, RigGeometry, WheelsetContact, contact_table,
                        wheelset_contact)
 from .conicity import equivalent_conicity, rolling_radius_difference
-from .rig import RigResult, build_rig, default_parameters, load_parameters, simulate
+from .rig import (RigResult, build_rig, default_parameters, load_parameters, replay,
+                  simulate)
 from .rig_contact import (LinearCreepages, RigContact, RigPose, WheelContact, linear_creepages,
                           rig_contact)
 
@@ -38,5 +39,5 @@ __all__ = [
     "wheelset_contact", "ContactTable", "contact_table", "RigPose", "WheelContact",
     "RigContact", "rig_contact", "LinearCreepages", "linear_creepages",
     "equivalent_conicity", "rolling_radius_difference", "simulate", "RigResult",
-    "default_parameters", "load_parameters", "build_rig",
+    "default_parameters", "load_parameters", "build_rig", "replay",
 ]

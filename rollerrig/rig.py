@@ -37,8 +37,8 @@ try:
 except ImportError:                                     # Python < 3.11
     import tomli as tomllib
 
-__all__ = ["default_parameters", "load_parameters", "build_rig", "simulate", "RigResult",
-           "RECORD_FIELDS"]
+__all__ = ["default_parameters", "load_parameters", "build_rig", "simulate", "replay",
+           "RigResult", "RECORD_FIELDS"]
 
 DEFAULTS_PATH = os.path.join(os.path.dirname(__file__), "data", "rig_default.toml")
 
@@ -47,7 +47,8 @@ RECORD_FIELDS = ("time", "creepage", "xi_est", "xi_ref", "roller_speed", "wheels
                  "fx", "fy", "normal_load_left", "normal_load_right", "adhesion",
                  "torque_roller", "torque_wheelset", "w_ref", "x", "y", "yaw",
                  "creepage_left", "creepage_right", "torque_ref_roller",
-                 "torque_ref_wheelset", "sample_status")
+                 "torque_ref_wheelset", "vx", "vy", "yaw_rate", "spin", "roller_spin",
+                 "sample_status")
 
 ODE_METHODS = {"ros2": _core.ODE_ROS2, "trbdf2": _core.ODE_TRBDF2,
                "lineuler": _core.ODE_LINEULER}
@@ -375,3 +376,29 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
         sys.stderr.write("\n")
     message = "ok" if status >= 0 else f"stopped at t = {rig.t:.4f} s: {status_message(status)}"
     return RigResult(out, P, targets, target_times, dt, int(status), message)
+
+
+def replay(res, *, method=None, nx=None, ny=None, **creep):
+    """The seed paper's Fig. 9 procedure: the kinematics recorded in a run
+    (a RigResult, e.g. an offline high-accuracy run kept as a database) fed
+    sample by sample through a contact model (the real-time one by default:
+    the parameters' method and grid) with the recorded normal loads.
+    Returns rollerrig.RigContact for every sample; compare its
+    left.fx + right.fx with res.fx."""
+    from .rig_contact import rig_contact
+    from .contact import FallingFriction
+
+    P = res.params
+    C = P["contact"]
+    friction = (FallingFriction(A=C["polach_A"], B=C["polach_B_s_per_m"])
+                if C["friction_law"] == "polach_falling" else None)
+    opts = dict(method=method or C["creep_method"], nx=nx or C["fastsim_nx"],
+                ny=ny or C["fastsim_ny"], slip_speed=C["fastsim_slip_speed"],
+                kA=C["polach_kA"], kS=C["polach_kS"])
+    opts.update(creep)
+    return rig_contact(_geometry(P), x=res.x, y=res.y, yaw=res.yaw, vx=res.vx, vy=res.vy,
+                       yaw_rate=res.yaw_rate, spin=res.spin, roller_spin=res.roller_spin,
+                       N_left=res.normal_load_left, N_right=res.normal_load_right,
+                       mu=P["scenario"]["mu0"], friction=friction,
+                       E=C["youngs_modulus_Pa"], nu=C["poisson_ratio"],
+                       vmin=C["min_rolling_speed_m_s"], **opts)
