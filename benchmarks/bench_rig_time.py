@@ -1,0 +1,172 @@
+"""Speed of the rig in time (issue 4): the real-time factor of the paper's
+scenario, the cost of one step for each integrator and contact method, and
+the worst-case step of the C real-time program in its fixed-rate loop.
+
+    python benchmarks/bench_rig_time.py            # writes the rig_time section of RESULTS.md
+    python benchmarks/bench_rig_time.py --quick    # a smoke run into benchmarks/out/
+
+Timings are the best of several repeats (time.perf_counter), side by side in
+one run; the C program's step times come from its own clock_gettime.
+"""
+import argparse
+import datetime
+import os
+import re
+import subprocess
+import sys
+
+import numpy as np
+
+import rollerrig as rr
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from _bench_common import (ROOT, CpuMonitor, best_time, code_state,  # noqa: E402
+                           compiler_version, conditions_lines, fmt, load_average, log,
+                           machine_info, machine_line, report_path, command_text, verdict,
+                           write_section)
+
+GOAL_RTF = 1000.0          # simulated time over wall time at the 4 ms step
+GOAL_WORST_US = 100.0      # worst-case step of the real-time program
+
+VARIANTS = [               # (label, build_rig keywords)
+    ("TR-BDF2, FASTSIM 20x20 (default)", {}),
+    ("ROS2, FASTSIM 20x20", dict(ode="ros2")),
+    ("linearly implicit Euler, FASTSIM 20x20", dict(ode="lineuler")),
+    ("TR-BDF2, FASTSIM 10x10", dict(nx=10, ny=10)),
+    ("ROS2, FASTSIM 10x10", dict(ode="ros2", nx=10, ny=10)),
+    ("TR-BDF2, Polach", dict(method="polach")),
+    ("ROS2, Polach", dict(ode="ros2", method="polach")),
+    ("TR-BDF2, FASTSIM 20x20, friction at the local slip speed",
+     dict(slip_speed="local")),
+]
+
+
+def scenario_schedule(P, dt):
+    S = P["scenario"]
+    n = int(round(S["duration_s"] / dt))
+    t = np.arange(n) * dt
+    idx = np.searchsorted(np.asarray(S["target_start_s"]), t, side="right") - 1
+    xi = np.asarray(S["targets"], dtype=float)[idx]
+    return np.full(n, S["roller_speed_m_s"] / P["roller"]["radius_m"]), xi
+
+
+def step_cost(kw, repeats, quick):
+    """Seconds per step of rig.run over the paper's schedule (table built
+    outside the timing), and the simulated duration."""
+    rig0, P, _ = rr.build_rig(**kw)
+    dt = P["scenario"]["control_sample_time_s"]
+    roller_ref, xi = scenario_schedule(P, dt)
+    if quick:
+        roller_ref, xi = roller_ref[:500], xi[:500]
+    rigs = [rr.build_rig(**kw)[0] for _ in range(repeats)]
+    it = iter(rigs)
+
+    def run():
+        rec, st = next(it).run(roller_ref, xi)
+        assert st >= 0, st
+    best = best_time(run, repeats)
+    return best / len(xi), len(xi) * dt
+
+
+def whole_call(repeats, quick):
+    """rr.simulate() as a user calls it: table build, stepping, result."""
+    kw = dict(duration=2.0) if quick else {}
+    return best_time(lambda: rr.simulate(**kw), repeats), (2.0 if quick else
+                                                            rr.default_parameters()
+                                                            ["scenario"]["duration_s"])
+
+
+def c_program(quick):
+    """make -C csrc example; run it fixed-rate at 4 ms and at 1 ms."""
+    out = {}
+    proc = subprocess.run(["make", "-C", os.path.join(ROOT, "csrc"), "example"],
+                          capture_output=True, text=True)
+    if proc.returncode != 0:
+        return {"error": proc.stdout[-500:] + proc.stderr[-500:]}
+    exe = os.path.join(ROOT, "csrc", "build", "rig_realtime")
+    for period, seconds in ((4, 2 if quick else 20), (1, 1 if quick else 5)):
+        p = subprocess.run([exe, str(period), str(seconds)], capture_output=True, text=True)
+        m = re.search(r"(\d+) steps of ([\d.]+) ms .*min ([\d.]+) us, median ([\d.]+) us, "
+                      r"p99 ([\d.]+) us, max ([\d.]+) us", p.stdout)
+        if p.returncode != 0 or not m:
+            out[period] = {"error": p.stdout[-300:] + p.stderr[-300:]}
+            continue
+        out[period] = dict(steps=int(m.group(1)), min=float(m.group(3)),
+                           median=float(m.group(4)), p99=float(m.group(5)),
+                           max=float(m.group(6)))
+    return out
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--quick", action="store_true", help="small sizes: a smoke run")
+    parser.add_argument("--out", help="report path (default benchmarks/RESULTS.md, or "
+                        "benchmarks/out/RESULTS-quick.md with --quick)")
+    args = parser.parse_args(argv)
+    repeats = 2 if args.quick else 3
+    date = datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds")
+    load0 = load_average()
+    mon = CpuMonitor()
+    log("whole rr.simulate() ...")
+    whole, simulated = mon.section("simulate", whole_call, repeats, args.quick)
+    costs = []
+    for label, kw in VARIANTS:
+        log(f"{label} ...")
+        costs.append((label, *mon.section(label, step_cost, kw, repeats, args.quick)))
+    log("C real-time program ...")
+    cprog = mon.section("C program", c_program, args.quick)
+    load1 = load_average()
+
+    info = machine_info(compiler_version())
+    default_step = costs[0][1]
+    dt = rr.default_parameters()["scenario"]["control_sample_time_s"]
+    rtf = dt / default_step
+    L = ["# The rig in time (issue 4)", "",
+         f"- date: {date}", f"- command: `{command_text(argv)}`", machine_line(info),
+         f"- python {sys.version.split()[0]}, numpy {np.__version__}, rollerrig "
+         f"{rr.__version__}; {code_state()}"]
+    L += conditions_lines(load0, load1, mon)
+    L += ["", "## Goals", "", "| goal | measured | target | result |", "| --- | --- | --- | --- |"]
+    L.append(f"| real-time factor, paper's scenario, 4 ms step, default (TR-BDF2, FASTSIM "
+             f"20x20) | {rtf:.0f} (stepping alone) | >= {GOAL_RTF:.0f} | "
+             f"{verdict(rtf >= GOAL_RTF)} |")
+    for period in (4, 1):
+        c = cprog.get(period, {}) if isinstance(cprog, dict) else {}
+        if "max" in c:
+            L.append(f"| worst-case step of the C program, {period} ms fixed-rate loop | "
+                     f"{fmt(c['max'])} us (p99 {fmt(c['p99'])} us) | <= {GOAL_WORST_US:g} us | "
+                     f"{verdict(c['max'] <= GOAL_WORST_US)} |")
+    L += ["", f"rr.simulate() on the defaults, as a user calls it (contact table built, "
+          f"{simulated:g} s simulated): {fmt(whole)} s wall, real-time factor "
+          f"{simulated / whole:.0f}; the table build is a fixed cost of a few tenths of a "
+          "second.", "", "## One step, by integrator and contact method", "",
+          "rig.run over the paper's schedule (targets 0.04, 0.015, 0.02, 0.03), 4 ms steps, "
+          "one plant step per sample, table built outside the timing; best of "
+          f"{repeats}.", "", "| variant | us per step | real-time factor |",
+          "| --- | ---: | ---: |"]
+    for label, sec, _ in costs:
+        L.append(f"| {label} | {fmt(sec * 1e6)} | {dt / sec:.0f} |")
+    L += ["", "## The C real-time program", "",
+          "`make -C csrc example`; `csrc/build/rig_realtime PERIOD SECONDS`: the rig stepped "
+          "in a loop paced by clock_nanosleep (TIMER_ABSTIME), each step timed with "
+          "clock_gettime (defaults of rig_default.toml: TR-BDF2, FASTSIM 20x20).", "",
+          "| period | steps | min us | median us | p99 us | max us |",
+          "| --- | ---: | ---: | ---: | ---: | ---: |"]
+    for period in (4, 1):
+        c = cprog.get(period, {}) if isinstance(cprog, dict) else {}
+        if "max" in c:
+            L.append(f"| {period} ms | {c['steps']} | {fmt(c['min'])} | {fmt(c['median'])} | "
+                     f"{fmt(c['p99'])} | {fmt(c['max'])} |")
+        else:
+            L.append(f"| {period} ms | failed: {c.get('error', cprog)!r:.200} | | | | |")
+    L += ["", "The worst case on this shared 2-core virtual machine includes the host's "
+          "scheduling; the median and p99 are the code's."]
+    path = report_path(args)
+    write_section(path, "rig_time", "\n".join(L))
+    print("\n".join(L))
+    log(f"written {os.path.relpath(path)}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
