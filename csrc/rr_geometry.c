@@ -2,6 +2,7 @@
 #include <math.h>
 #include "rr_common.h"
 #include "rr_geometry.h"
+#include "rr_hertz.h"
 
 /* Newton iterations: the refinement and the pose converge in a few. */
 #define MAX_ITER 50
@@ -58,6 +59,7 @@ static void point_nan(rr_contact_point *c)
 {
     c->y = c->z = c->s_wheel = c->s_roller = c->r = c->R = c->delta = NAN;
     c->A = c->B = c->gap = c->y2 = c->gap2 = NAN;
+    c->ha = c->hb = c->hd = NAN;
     c->two_point = 0;
 }
 
@@ -164,8 +166,17 @@ int rr_contact_search(const rr_wheel_roller *p, double y_ws, double z_ws, double
     out->two_point = second - best <= o->two_point_tol;
     out->y2 = out->two_point ? ysecond : NAN;
     out->gap2 = out->two_point ? second : NAN;
+    out->ha = out->hb = out->hd = NAN;
     if (!(out->B > 0.0) || !(out->r > 0.0) || !(out->R > 0.0))
         return RR_ERR_GEOMETRY;
+    {
+        rr_hertz_result h;
+        if (rr_hertz(out->A, out->B, 1.0, 1.0, &h) != RR_OK)
+            return RR_ERR_GEOMETRY;
+        out->ha = h.a;
+        out->hb = h.b;
+        out->hd = h.delta;
+    }
     return RR_OK;
 }
 
@@ -214,8 +225,11 @@ int rr_wheelset_contact(const rr_wheel_roller *left, const rr_wheel_roller *righ
 }
 
 /* Quantities stored per side, in this order, then z and roll. */
-#define NSIDE 10
+#define NSIDE 13
 #define ROW (2 * NSIDE + 2)
+#if ROW != RR_CONTACT_TABLE_ROW
+#error "RR_CONTACT_TABLE_ROW does not match the row layout"
+#endif
 
 long rr_contact_table_len(int n)
 {
@@ -226,6 +240,7 @@ static void store(double *d, const rr_contact_point *c)
 {
     d[0] = c->y; d[1] = c->z; d[2] = c->s_wheel; d[3] = c->s_roller; d[4] = c->r;
     d[5] = c->R; d[6] = c->delta; d[7] = c->A; d[8] = c->B; d[9] = c->two_point;
+    d[10] = c->ha; d[11] = c->hb; d[12] = c->hd;
 }
 
 static void load(const double *a, const double *b, double f, rr_contact_point *c)
@@ -236,6 +251,7 @@ static void load(const double *a, const double *b, double f, rr_contact_point *c
         v[k] = a[k] + f * (b[k] - a[k]);
     c->y = v[0]; c->z = v[1]; c->s_wheel = v[2]; c->s_roller = v[3]; c->r = v[4];
     c->R = v[5]; c->delta = v[6]; c->A = v[7]; c->B = v[8];
+    c->ha = v[10]; c->hb = v[11]; c->hd = v[12];
     c->two_point = (f < 0.5 ? a[9] : b[9]) != 0.0;
     c->gap = 0.0;
     c->y2 = c->gap2 = NAN;

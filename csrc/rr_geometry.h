@@ -56,6 +56,11 @@ typedef struct {
     double A, B;          /* Hertz curvature sums [1/m]: A = (cos delta/r + cos delta/R)/2
                              rolling direction, B = (k_wheel + k_roller)/2 lateral */
     double gap;           /* the vertical gap there [m]; < 0: interference */
+    double ha, hb, hd;    /* the Hertz ellipse per unit load and modulus: semi-axes
+                             a = ha (N/E*)^(1/3), b = hb (N/E*)^(1/3), approach
+                             hd (N/E*)^(2/3); they depend on A and B alone, so the
+                             table carries them and the time step needs no
+                             elliptic integrals (rr_hertz at N = E* = 1) */
     int two_point;        /* 1 if a second contact point was found */
     double y2, gap2;      /* the second point's lateral position and gap */
 } rr_contact_point;
@@ -98,6 +103,10 @@ typedef struct {
 } rr_contact_table;
 
 long rr_contact_table_len(int n);
+
+/* Doubles per table row (rr_contact_table_len(n) = n RR_CONTACT_TABLE_ROW),
+ * for callers sizing static storage. */
+#define RR_CONTACT_TABLE_ROW 28
 
 /*
  * rr_contact_table_build - fill the table (calls rr_wheelset_contact n times).

@@ -214,10 +214,21 @@ int rr_rig_contact_loads(const rr_rig_contact_model *m, const double N[2], const
             wheel_nan(c, RR_ERR_NONFINITE);
             continue;
         }
-        sk = rr_hertz(c->geo.A, c->geo.B, N[k], m->estar, &c->hertz);
-        if (sk < 0) {
-            wheel_nan(c, sk);
+        if (!(N[k] > 0.0)) {
+            wheel_nan(c, RR_ERR_LOAD);
             continue;
+        }
+        if (!(c->geo.ha > 0.0 && c->geo.hb > 0.0)) {
+            wheel_nan(c, RR_ERR_GEOMETRY);
+            continue;
+        }
+        {
+            /* Hertz from the table's ellipse per unit load: a ~ (N/E*)^(1/3) */
+            const double s = cbrt(N[k] / m->estar);
+            c->hertz.a = c->geo.ha * s;
+            c->hertz.b = c->geo.hb * s;
+            c->hertz.delta = c->geo.hd * s * s;
+            c->hertz.p0 = 1.5 * N[k] / (RR_PI * c->hertz.a * c->hertz.b);
         }
         cc.a = c->hertz.a;
         cc.b = c->hertz.b;

@@ -29,7 +29,7 @@
 #define MAXSTEPS 200000
 
 static double ws[NPROF], wz[NPROF], wm[NPROF], rs[NPROF], rz[NPROF], rm[NPROF];
-static double work[NPROF], table_data[NROWS * 22];
+static double work[NPROF], table_data[NROWS * RR_CONTACT_TABLE_ROW];
 static double step_us[MAXSTEPS];
 
 /* Conical wheel, tan(alpha) = 1:20, r0 = 0.092 m; roller R0 = 0.16 m with a

@@ -100,8 +100,14 @@ def test_evaluation_is_the_sum_of_its_parts(s1002):
     assert np.all(c.status == 0)
     geo = s1002.lookup(y)
     for w, side, load in ((c.left, geo.left, N), (c.right, geo.right, N[::-1])):
+        # the table carries the ellipse per unit load (a ~ (N/E*)^(1/3)) and
+        # interpolates it: within 1e-4 of Hertz at the interpolated A, B
+        # (1e-6 typically), except across the two-point jump near y = 0.2 mm
         h = rr.hertz(side.A, side.B, load, E=2.1e11, nu=0.28)
-        assert np.allclose(w.a, h.a, rtol=1e-14) and np.allclose(w.b, h.b, rtol=1e-14)
+        smooth = ~(geo.left.two_point | geo.right.two_point)
+        assert np.allclose(w.a[smooth], h.a[smooth], rtol=1e-4)
+        assert np.allclose(w.b[smooth], h.b[smooth], rtol=1e-4)
+        assert np.allclose(w.p0, 1.5 * load / (np.pi * w.a * w.b), rtol=1e-14)
         f = rr.creep_forces(w.cx, w.cy, w.cphi, a=w.a, b=w.b, N=load, mu=0.4,
                             G=2.1e11 / 2.56, nu=0.28, speed=w.V, friction=friction, nx=20,
                             ny=20)

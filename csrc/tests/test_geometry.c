@@ -108,14 +108,14 @@ static void test_table(void)
     const double alpha = 0.05, rho = 0.1;
     rr_wheel_roller l, r;
     rr_search_opts o;
-    static double data[201 * 22];
+    static double data[201 * RR_CONTACT_TABLE_ROW];
     rr_contact_table t;
     double y, worst = 0.0;
     conical_pair(alpha, rho, +1, &l);
     r = l;
     r.side = -1;
     rr_search_opts_default(&o);
-    CHECK(rr_contact_table_len(201) == 201 * 22, "table length");
+    CHECK(rr_contact_table_len(201) == 201 * RR_CONTACT_TABLE_ROW, "table length");
     t.y0 = -0.01; t.dy = 1e-4; t.n = 201; t.data = data;
     CHECK_STATUS(rr_contact_table_build(&l, &r, &o, &t, 0), RR_OK, "table build");
     for (y = -0.0099; y < 0.0099; y += 0.00037) {
@@ -156,7 +156,7 @@ static void test_rig_contact(void)
     const double alpha = 0.05, rho = 0.1, V = 5.0;
     rr_wheel_roller l, r;
     rr_search_opts o;
-    static double data[101 * 22];
+    static double data[101 * RR_CONTACT_TABLE_ROW];
     rr_contact_table t;
     rr_rig_contact_model m;
     rr_rig_state s;

@@ -9,7 +9,7 @@
 #define NROWS 201
 
 static double ws[NP], wz[NP], wm[NP], rs[NP], rz[NP], rm[NP], work[NP];
-static double table_data[NROWS * 22];
+static double table_data[NROWS * RR_CONTACT_TABLE_ROW];
 
 /* The default rig (rollerrig/data/rig_default.toml): 1:20 cone, r0 0.092 m,
  * on a roller R0 0.16 m with a 60 mm crown, contacts 0.15 m out. */
