@@ -263,10 +263,10 @@ class RigResult:
 
     def summary(self, tol=0.05, window=0.25):
         """Per target: the creepage held (mean over the last 80 % of its
-        interval), settling time (after which the creepage's running mean
-        over `window` seconds stays within tol of the target: eq. 14's
-        recovery steps make a sawtooth), the adhesion coefficient held, and
-        the peak |fx| / (mu0 N) over the interval."""
+        interval), settling time (when the creepage's running mean over
+        `window` seconds first comes within tol of the target; eq. 14's
+        recovery steps then make a small sawtooth about it), the adhesion
+        coefficient held, and the peak |fx| / (mu0 N) over the interval."""
         mu0 = self.params["scenario"]["mu0"]
         rows = []
         t = self.time
@@ -281,13 +281,8 @@ class RigResult:
             ts, cr = t[sel], self.creepage[sel]
             held = ts >= ts[0] + 0.2 * (ts[-1] - ts[0])
             mean = np.convolve(cr, np.ones(k) / k, mode="valid")   # ends at ts[k-1:]
-            off = np.abs(mean - xi) > tol * abs(xi)
-            if not off.any():
-                settle = ts[k - 1] - t0
-            elif off[-1]:
-                settle = np.nan
-            else:
-                settle = ts[k - 1 + np.flatnonzero(off)[-1] + 1] - t0
+            inside = np.flatnonzero(np.abs(mean - xi) <= tol * abs(xi))
+            settle = ts[k - 1 + inside[0]] - t0 if inside.size else np.nan
             peak = np.max(np.abs(self.fx[sel]) / (mu0 * self.normal_load[sel]))
             rows.append(dict(target=xi, reached=float(np.mean(cr[held])),
                              settling_s=float(settle),
