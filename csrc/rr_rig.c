@@ -510,6 +510,25 @@ int rr_rig_step(rr_rig *rig, double roller_ref, double xi_ref, double *rec)
     return rr_rig_advance(rig, rec);
 }
 
+long rr_rig_run(rr_rig *rig, long n, const double *roller_ref, const double *xi_ref,
+                double *rec, int *status)
+{
+    long k;
+    int worst = RR_OK;
+    for (k = 0; k < n; k++) {
+        const int st = rr_rig_step(rig, roller_ref[k], xi_ref[k], rec + k * RR_REC_COUNT);
+        if (st < 0) {
+            worst = st;
+            break;
+        }
+        if (st > worst)
+            worst = st;
+    }
+    if (status)
+        *status = worst;
+    return k;
+}
+
 int rr_rig_set_state(rr_rig *rig, double t, const double *y)
 {
     int j;

@@ -140,7 +140,7 @@ typedef struct {
 int rr_rig_check(const rr_rig_params *p);
 
 /*
- * rr_rig_init - the rig at rest-free rolling: centred wheelset, rollers at
+ * rr_rig_init - (re)start the rig at free rolling: centred wheelset, rollers at
  * roller_speed [rad/s], the wheelset rolling freely on them, drives
  * holding the torques that balance the steady state, controllers primed
  * with these speeds, no creepage control (target 0) until rr_rig_step
@@ -164,6 +164,16 @@ int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig);
  *            NaN): the rig keeps its last good state and refuses to step on.
  */
 int rr_rig_step(rr_rig *rig, double roller_ref, double xi_ref, double *rec);
+
+/*
+ * rr_rig_run - n samples with the references roller_ref[k], xi_ref[k]
+ * into the caller's buffer rec[n * RR_REC_COUNT] (row k: sample k).
+ *   returns: the number of samples done (n, or fewer: the run stopped at
+ *            an error, whose record is row k = returned count); *status the
+ *            worst status met (may be NULL)
+ */
+long rr_rig_run(rr_rig *rig, long n, const double *roller_ref, const double *xi_ref,
+                double *rec, int *status);
 
 /*
  * rr_rig_sample - the sampling instant alone: encoders read the angles,

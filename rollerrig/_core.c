@@ -919,44 +919,57 @@ static PyObject *new_record(double **rec)
     return a;
 }
 
-/* run(roller_ref, xi_ref) -> (records[n, RR_REC_COUNT], status): one sample per
- * element; stops at the first error (the remaining rows are NaN). */
+/* run(roller_ref, xi_ref) -> (records[n, RR_REC_COUNT], status): rr_rig_run, one
+ * sample per element, in chunks (GIL released, Ctrl-C noticed between
+ * them); stops at the first error (its row has the status, the rest NaN). */
 static PyObject *Rig_run(RigObject *self, PyObject *args)
 {
-    PyObject *objs[2], *out = NULL;
-    static const char *const names[2] = {"roller_ref", "xi_ref"};
-    input in[2];
+    PyObject *robj, *xobj, *out = NULL;
+    PyArrayObject *r = NULL, *x = NULL;
     npy_intp n, i, start, dims[2];
     int st = RR_OK;
 
-    if (!PyArg_ParseTuple(args, "OO:run", &objs[0], &objs[1]))
+    if (!PyArg_ParseTuple(args, "OO:run", &robj, &xobj))
         return NULL;
-    if (parse_inputs("Rig.run", objs, names, 2, &n, in) < 0)
-        return NULL;
+    r = (PyArrayObject *)PyArray_FROMANY(robj, NPY_DOUBLE, 1, 1, NPY_ARRAY_IN_ARRAY);
+    x = (PyArrayObject *)PyArray_FROMANY(xobj, NPY_DOUBLE, 1, 1, NPY_ARRAY_IN_ARRAY);
+    if (!r || !x)
+        goto fail;
+    n = PyArray_DIM(r, 0);
+    if (PyArray_DIM(x, 0) != n) {
+        PyErr_Format(PyExc_ValueError, "Rig.run: roller_ref and xi_ref differ in length "
+                     "(%zd, %zd)", (Py_ssize_t)n, (Py_ssize_t)PyArray_DIM(x, 0));
+        goto fail;
+    }
     dims[0] = n;
     dims[1] = RR_REC_COUNT;
     if (!(out = PyArray_SimpleNew(2, dims, NPY_DOUBLE)))
-        return NULL;
+        goto fail;
     {
         double *rec = OUT(out);
+        const double *rr = (const double *)PyArray_DATA(r), *xr = (const double *)PyArray_DATA(x);
         for (i = 0; i < n * RR_REC_COUNT; i++)
             rec[i] = NAN;
         for (start = 0; start < n && st >= 0; start += 256) {
-            const npy_intp stop = start + 256 < n ? start + 256 : n;
+            const long len = (long)(start + 256 < n ? 256 : n - start);
+            long done;
             Py_BEGIN_ALLOW_THREADS
-            for (i = start; i < stop; i++) {
-                st = rr_rig_step(&self->rig, IN(in[0], i), IN(in[1], i), rec + i * RR_REC_COUNT);
-                if (st < 0)
-                    break;
-            }
+            done = rr_rig_run(&self->rig, len, rr + start, xr + start,
+                              rec + start * RR_REC_COUNT, &st);
             Py_END_ALLOW_THREADS
-            if (PyErr_CheckSignals() < 0) {
-                Py_DECREF(out);
-                return NULL;
-            }
+            (void)done;
+            if (PyErr_CheckSignals() < 0)
+                goto fail;
         }
     }
+    Py_DECREF(r);
+    Py_DECREF(x);
     return Py_BuildValue("Ni", out, st);
+fail:
+    Py_XDECREF(r);
+    Py_XDECREF(x);
+    Py_XDECREF(out);
+    return NULL;
 }
 
 static PyObject *Rig_sample(RigObject *self, PyObject *args)
