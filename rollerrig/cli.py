@@ -45,7 +45,8 @@ def _simulate(args):
         for p in plot_run(res, args.out):
             print(f"wrote {p}")
     except ImportError:
-        print("matplotlib is not installed: no figures (pip install 'rollerrig[plot]')")
+        print("matplotlib is not importable: no figures (it is a dependency of rollerrig; "
+              "pip install matplotlib)")
     if res.status < 0:
         print(f"rollerrig simulate: {res.message}", file=sys.stderr)
         return 1
