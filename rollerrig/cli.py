@@ -23,7 +23,7 @@ def _simulate(args):
     try:
         t0 = time.perf_counter()
         res = rig.simulate(duration=args.duration, dt=args.dt, params=params,
-                           progress=not args.quiet, **kw)
+                           progress=not args.quiet and sys.stderr.isatty(), **kw)
         wall = time.perf_counter() - t0
     except (RollerRigError, OSError, ValueError) as e:
         print(f"rollerrig simulate: {e}", file=sys.stderr)
