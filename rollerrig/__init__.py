@@ -28,6 +28,7 @@ from .geometry import (ContactSide, ContactTable, RigGeometry, WheelsetContact, 
 from .conicity import equivalent_conicity, rolling_radius_difference
 from .rig import (RigResult, build_rig, default_parameters, load_parameters, replay,
                   simulate)
+from .fit import FitResult, fit_modified_fastsim, fit_polach
 from .rig_contact import (LinearCreepages, RigContact, RigPose, WheelContact, linear_creepages,
                           rig_contact)
 
@@ -39,5 +40,6 @@ __all__ = [
     "wheelset_contact", "ContactTable", "contact_table", "RigPose", "WheelContact",
     "RigContact", "rig_contact", "LinearCreepages", "linear_creepages",
     "equivalent_conicity", "rolling_radius_difference", "simulate", "RigResult",
-    "default_parameters", "load_parameters", "build_rig", "replay",
+    "default_parameters", "load_parameters", "build_rig", "replay", "fit_polach",
+    "fit_modified_fastsim", "FitResult",
 ]

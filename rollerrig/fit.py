@@ -1,0 +1,496 @@
+"""Fit Polach's method or modified FASTSIM to measured creep-force curves.
+
+    import rollerrig as rr
+    from rollerrig.fit import fit_polach
+    res = fit_polach([cx_5, cx_10], [fx_5, fx_10], speed=[5.0, 10.0],
+                     a=6.3e-3, b=12.6e-3, N=106.7e3)
+    res.params            # {'mu0': ..., 'A': ..., 'B': ..., 'kA': ..., 'kS': ...}
+    res.stderr            # standard errors of the fitted ones
+    res.predict(cx, speed=10.0)
+
+The data
+    cx, force: one curve (1-D arrays) or several (lists of 1-D arrays, one
+    per speed); force is the longitudinal force fx [N] at the longitudinal
+    creepage cx, with cy and cphi held at the given values (scalars, shared
+    by all curves).  speed [m/s] is a scalar or one value per curve: the
+    curves are fitted at once, with one set of parameters.
+
+Sign
+    The library's forces act on the wheel and oppose the creepage (Kalker's
+    sign: fx < 0 for cx > 0).  The fit uses the data's sign as given.  If
+    the data point the other way (sum of force * sign(cx) > 0: forces on the
+    roller, or magnitudes), they are negated for the fit, FitResult.sign is
+    -1, the message says so, and predict() and the residuals are in the
+    data's sign.
+
+What the data determine
+    Polach's mu0, kA and kS come from the shape of one curve: the initial
+    slope fixes kA + kS, the curvature of the rise their split, the peak
+    mu0.  The falling friction mu(w) = mu0 [(1 - A) exp(-B w) + A] depends
+    on the slip speed w = speed * |creepage|, so A and B are only
+    identifiable where the data reach well past the peak into the falling
+    branch, and B (the speed scale of the fall) only robustly with several
+    speeds: at one speed B trades off against kA, kS and mu0.  A parameter
+    the data cannot fix shows as a large standard error (NaN where the
+    Jacobian is singular); hold it with `fit` and `x0` instead.
+
+The fit
+    scipy.optimize.least_squares ('trf', bounds) on the residuals
+    r = weights * (model - force) / F_ref, F_ref the data's peak |force|, with
+    a robust loss (default soft_l1) whose f_scale (default 0.05: five per
+    cent of the peak force) is the residual beyond which a point counts as
+    an outlier.  Bounds: mu0 > 0, 0 < A <= 1, B >= 0, 0 < kS <= kA <= 1
+    (kS is fitted as the ratio kS/kA in (0, 1], so the order holds);
+    modified FASTSIM: 0 < k0 <= 1, 0 <= alpha_inf <= 1, beta >= 0.  `bounds`
+    narrows them: {name: (lo, hi)}; for the ratio, key "kS/kA".
+    Standard errors: the Jacobian J of the unweighted-loss residuals at the
+    solution (central differences), cov = (J^T J)^-1 s^2 with
+    s^2 = sum r^2 / (m - p), m points, p fitted parameters; kS's from the
+    ratio's by the delta method.  They assume independent errors of equal
+    variance (after weighting) and a model that fits: for a model that does
+    not fit the data exactly they measure how well the misfit pins the
+    parameters, not the physics.
+
+scipy is needed here only (pip install scipy).
+"""
+from dataclasses import dataclass, field
+import math
+
+import numpy as np
+
+from ._errors import RollerRigError
+from .contact import FallingFriction, creep_forces
+
+__all__ = ["FitResult", "fit_polach", "fit_modified_fastsim", "POLACH_PARAMETERS",
+           "MODIFIED_FASTSIM_PARAMETERS", "LOSSES"]
+
+_TINY = 1e-6      # stands in for an open lower bound at 0 (all parameters are O(0.1 - 1))
+_INF = np.inf
+
+# name: (default, lower, upper, lower bound open, upper bound open); default None: the
+# data's peak |force| / N.  Polach 2005, dry rail: A = 0.4, B = 0.6 s/m, kA = 1, kS = 0.4.
+POLACH_PARAMETERS = {
+    "mu0": (None, 0.0, _INF, True, True),
+    "A": (0.4, 0.0, 1.0, True, False),
+    "B": (0.6, 0.0, _INF, False, True),
+    "kA": (1.0, 0.0, 1.0, True, False),
+    "kS": (0.4, 0.0, 1.0, True, False),
+}
+# Spiryagin, Polach and Cole 2013 as in CONTACT's example: k0 0.54, alpha_inf 0.02, beta 0.62
+MODIFIED_FASTSIM_PARAMETERS = {
+    "mu0": (None, 0.0, _INF, True, True),
+    "A": (0.4, 0.0, 1.0, True, False),
+    "B": (0.6, 0.0, _INF, False, True),
+    "k0": (0.54, 0.0, 1.0, True, False),
+    "alpha_inf": (0.02, 0.0, 1.0, False, False),
+    "beta": (0.62, 0.0, _INF, False, True),
+}
+LOSSES = ("linear", "soft_l1", "huber", "cauchy", "arctan")
+_RATIO = "kS/kA"
+
+
+@dataclass
+class FitResult:
+    """The result of fit_polach or fit_modified_fastsim.
+
+    params:    every parameter of the model, fitted or held {name: value}
+    stderr:    standard error of each fitted parameter (NaN where the
+               Jacobian is singular or there are no more points than
+               parameters)
+    fitted:    the names fitted
+    residuals: model - data [N], in the data's sign; a list of arrays if
+               the data were a list of curves
+    rms:       root mean square of the residuals [N]
+    cost:      least_squares' cost, 0.5 sum loss(r^2), r = weights (model -
+               data) / F_ref
+    success, message, nfev: from least_squares (message also says when the
+               data's sign was flipped)
+    sign:      +1, or -1 if the data were negated for the fit
+    at_bound:  the fitted parameters that ended on a bound (kS: kS = kA);
+               their standard errors mean little
+    """
+
+    model: str
+    params: dict
+    stderr: dict
+    fitted: tuple
+    residuals: object
+    rms: float
+    cost: float
+    success: bool
+    message: str
+    nfev: int
+    sign: int
+    at_bound: tuple = ()
+    settings: dict = field(repr=False, default_factory=dict)
+
+    def predict(self, cx, speed=None, *, cy=None, cphi=None):
+        """The fitted model's force at creepage cx [N], in the data's sign.
+
+        speed defaults to the fit's speed if it had one; cy, cphi to the
+        fit's.  Arguments broadcast as in creep_forces."""
+        s = self.settings
+        if speed is None:
+            if len(s["speeds"]) != 1:
+                raise RollerRigError(f"predict: the fit had speeds {list(s['speeds'])}; "
+                                     "give speed")
+            speed = s["speeds"][0]
+        cy = s["cy"] if cy is None else cy
+        cphi = s["cphi"] if cphi is None else cphi
+        f = _model(self.model, self.params, s, np.asarray(cx, dtype=float), speed, cy, cphi,
+                   errors=None)
+        return self.sign * f
+
+
+# ------------------------------------------------------------------ the models
+
+def _model(model, p, s, cx, speed, cy, cphi, errors="ignore"):
+    """fx of the model with parameters p at (cx, speed); settings s."""
+    friction = FallingFriction(A=p["A"], B=p["B"])
+    common = dict(a=s["a"], b=s["b"], N=s["N"], mu=p["mu0"], G=s["G"], nu=s["nu"],
+                  speed=speed, friction=friction, errors=errors)
+    if model == "polach":
+        f = creep_forces(cx, cy, cphi, method="polach", kA=p["kA"], kS=p["kS"], **common)
+    else:
+        f = creep_forces(cx, cy, cphi, method="modified_fastsim", k0=p["k0"],
+                         alpha_inf=p["alpha_inf"], beta=p["beta"], nx=s["nx"], ny=s["ny"],
+                         grid=s["grid"], bound=s["bound"], slip_speed=s["slip_speed"],
+                         **common)
+    return f.fx
+
+
+# ------------------------------------------------------------------ input checks
+
+def _fail(func, msg):
+    raise RollerRigError(f"{func}: {msg}")
+
+
+def _curve_array(func, name, value):
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        _fail(func, f"{name} must be real numbers, got {value!r:.60}")
+    if arr.ndim != 1:
+        _fail(func, f"{name} must be one-dimensional, got shape {arr.shape}")
+    if arr.size == 0:
+        _fail(func, f"{name} is empty")
+    bad = np.flatnonzero(~np.isfinite(arr))
+    if bad.size:
+        i = int(bad[0])
+        _fail(func, f"{name}[{i}] = {float(arr[i])!r} is not finite")
+    return arr
+
+
+def _curves(func, name, value):
+    """A list of 1-D float arrays and whether the input was a list of curves."""
+    if isinstance(value, (list, tuple)) and value and all(
+            isinstance(v, (list, tuple, np.ndarray)) for v in value):
+        return [_curve_array(func, f"{name}[{k}]", v) for k, v in enumerate(value)], True
+    if isinstance(value, (list, tuple)) and not value:
+        _fail(func, f"{name} is empty")
+    return [_curve_array(func, name, value)], False
+
+
+def _data(func, cx, force, speed, weights):
+    cxs, many = _curves(func, "cx", cx)
+    fs, many_f = _curves(func, "force", force)
+    if many != many_f or len(cxs) != len(fs):
+        _fail(func, f"cx has {len(cxs) if many else 'one'} curve(s) but force has "
+                    f"{len(fs) if many_f else 'one'}")
+    for k, (c, f) in enumerate(zip(cxs, fs)):
+        tag = f"[{k}]" if many else ""
+        if c.size != f.size:
+            _fail(func, f"force{tag} has {f.size} points but cx{tag} has {c.size}")
+    n = len(cxs)
+    sp = np.asarray(speed, dtype=float) if speed is not None else None
+    if sp is None or sp.ndim > 1 or (sp.ndim == 1 and sp.size != n):
+        _fail(func, f"speed must be a scalar or one value per curve ({n}), got {speed!r}")
+    sp = np.broadcast_to(sp, (n,)).astype(float)
+    for k, v in enumerate(sp):
+        if not (np.isfinite(v) and v > 0.0):
+            tag = f"[{k}]" if sp.size > 1 else ""
+            _fail(func, f"speed{tag} must be > 0, got {float(v)!r}")
+    if weights is None:
+        ws = [np.ones_like(c) for c in cxs]
+    else:
+        ws, many_w = _curves(func, "weights", weights)
+        if many_w != many or len(ws) != n:
+            _fail(func, "weights must have the shape of cx (one array per curve)")
+        for k, (w, c) in enumerate(zip(ws, cxs)):
+            tag = f"[{k}]" if many else ""
+            if w.size != c.size:
+                _fail(func, f"weights{tag} has {w.size} points but cx{tag} has {c.size}")
+            if np.any(w < 0) or not np.any(w > 0):
+                _fail(func, f"weights{tag} must be >= 0 and not all 0, got {w!r:.60}")
+    return cxs, fs, sp, ws, many
+
+
+def _scalar(func, name, v, positive=True):
+    if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)) \
+            or not math.isfinite(v) or (positive and v <= 0):
+        shown = float(v) if isinstance(v, (np.integer, np.floating)) else v
+        _fail(func, f"{name} must be a finite {'positive ' if positive else ''}number, "
+                    f"got {shown!r}")
+    return float(v)
+
+
+def _interval(lo, hi, lo_open, hi_open):
+    return f"{'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
+
+
+def _in(v, lo, hi, lo_open, hi_open):
+    return (v > lo if lo_open else v >= lo) and (v < hi if hi_open else v <= hi)
+
+
+def _setup(func, spec, fit, x0, bounds, mu0_default):
+    """Natural start values, the internal names fitted and their bounds."""
+    names = tuple(spec)
+    if isinstance(fit, str):
+        fit = (fit,)
+    fit = tuple(fit)
+    if not fit:
+        _fail(func, "fit names no parameter")
+    for n in fit:
+        if n not in spec:
+            _fail(func, f"unknown parameter {n!r} in fit; choose from {names}")
+    if len(set(fit)) != len(fit):
+        _fail(func, f"fit names a parameter twice: {fit!r}")
+    fit = tuple(n for n in names if n in fit)          # the model's order
+    x0 = {} if x0 is None else dict(x0)
+    for n, v in x0.items():
+        if n not in spec:
+            _fail(func, f"unknown parameter {n!r} in x0; choose from {names}")
+        _scalar(func, f"x0[{n!r}]", v, positive=False)
+    start = {}
+    for n, (default, lo, hi, lo_open, hi_open) in spec.items():
+        v = float(x0.get(n, mu0_default if default is None else default))
+        if not _in(v, lo, hi, lo_open, hi_open):
+            _fail(func, f"x0[{n!r}] = {v!r} is outside {_interval(lo, hi, lo_open, hi_open)}")
+        start[n] = v
+    if "kS" in spec and start["kS"] > start["kA"]:
+        _fail(func, f"x0['kS'] = {start['kS']!r} is above x0['kA'] = {start['kA']!r}; "
+                    "Polach's method needs kS <= kA")
+
+    # internal variables: kS is fitted as the ratio kS/kA
+    inner = [(_RATIO if n == "kS" else n) for n in fit]
+    bounds = {} if bounds is None else dict(bounds)
+    for n in bounds:
+        if n == "kS":
+            _fail(func, "bounds: kS is fitted as the ratio kS/kA; bound 'kS/kA' instead")
+        if n not in inner:
+            _fail(func, f"bounds given for {n!r}, which is not fitted ({inner})")
+    lo_v, hi_v = [], []
+    for n in inner:
+        if n == _RATIO:
+            lo, hi, lo_open, hi_open = 0.0, 1.0, True, False
+            v0 = start["kS"] / start["kA"]
+        else:
+            _, lo, hi, lo_open, hi_open = spec[n]
+            v0 = start[n]
+        if n == "kA" and "kS" not in fit:           # kS held: kA >= kS keeps the order
+            lo, lo_open = start["kS"], False
+        if n in bounds:
+            try:
+                blo, bhi = (float(x) for x in bounds[n])
+            except (TypeError, ValueError):
+                _fail(func, f"bounds[{n!r}] must be (lo, hi), got {bounds[n]!r}")
+            if not (blo < bhi) or math.isnan(blo) or math.isnan(bhi):
+                _fail(func, f"bounds[{n!r}] = {bounds[n]!r}: need lo < hi")
+            if blo > lo or (blo == lo and not lo_open):
+                lo, lo_open = blo, False
+            if bhi < hi or (bhi == hi and not hi_open):
+                hi, hi_open = bhi, False
+            if not _in(v0, lo, hi, lo_open, hi_open):
+                what = "x0['kS'] / x0['kA']" if n == _RATIO else f"x0[{n!r}]"
+                _fail(func, f"{what} = {v0!r} is outside bounds[{n!r}] = "
+                            f"{_interval(lo, hi, lo_open, hi_open)}")
+        if lo_open:
+            lo = max(lo, _TINY) if lo == 0.0 else lo * (1.0 + _TINY) + _TINY
+        if lo >= hi:
+            _fail(func, f"bounds for {n!r} leave no room: [{lo!r}, {hi!r}]")
+        lo_v.append(lo)
+        hi_v.append(hi)
+    return start, fit, inner, np.array(lo_v), np.array(hi_v)
+
+
+def _natural(start, inner, theta):
+    p = dict(start)
+    for n, v in zip(inner, theta):
+        if n != _RATIO:
+            p[n] = float(v)
+    if _RATIO in inner:
+        p["kS"] = p["kA"] * float(theta[inner.index(_RATIO)])
+    return p
+
+
+def _jacobian(fun, theta, lo, hi):
+    """Central differences, one-sided against a bound."""
+    theta = np.asarray(theta, dtype=float)
+    f0 = fun(theta)
+    J = np.empty((f0.size, theta.size))
+    for j in range(theta.size):
+        h = 1e-5 * max(abs(theta[j]), 0.1)
+        up, dn = theta.copy(), theta.copy()
+        if theta[j] + h <= hi[j] and theta[j] - h >= lo[j]:
+            up[j] += h
+            dn[j] -= h
+            J[:, j] = (fun(up) - fun(dn)) / (2.0 * h)
+        elif theta[j] + h <= hi[j]:
+            up[j] += h
+            J[:, j] = (fun(up) - f0) / h
+        else:
+            dn[j] -= h
+            J[:, j] = (f0 - fun(dn)) / h
+    return J
+
+
+def _covariance(J, r):
+    """(J^T J)^-1 s^2, NaN in the rows and columns of ill-determined parameters."""
+    m, p = J.shape
+    if m <= p:
+        return np.full((p, p), np.nan)
+    s2 = float(r @ r) / (m - p)
+    _, sv, vt = np.linalg.svd(J, full_matrices=False)
+    keep = sv > np.sqrt(np.finfo(float).eps) * sv[0] if sv[0] > 0 else np.zeros_like(sv, bool)
+    cov = (vt[keep].T / sv[keep] ** 2) @ vt[keep] * s2
+    bad = np.zeros(p, bool)
+    for k in np.flatnonzero(~keep):
+        bad |= np.abs(vt[k]) > 1e-3
+    cov[bad, :] = np.nan
+    cov[:, bad] = np.nan
+    return cov
+
+
+# ------------------------------------------------------------------ the fit
+
+def _fit(func, model, spec, cx, force, a, b, N, G, nu, speed, cy, cphi, fit, x0, bounds,
+         loss, f_scale, weights, extra):
+    try:
+        from scipy.optimize import least_squares
+    except ImportError as e:        # pragma: no cover - scipy is in the test extra
+        raise ImportError(f"{func} needs scipy: pip install scipy") from e
+    cxs, fs, speeds, ws, many = _data(func, cx, force, speed, weights)
+    settings = dict(a=_scalar(func, "a", a), b=_scalar(func, "b", b), N=_scalar(func, "N", N),
+                    G=_scalar(func, "G", G), nu=_scalar(func, "nu", nu, positive=False),
+                    cy=_scalar(func, "cy", cy, positive=False),
+                    cphi=_scalar(func, "cphi", cphi, positive=False),
+                    speeds=tuple(float(v) for v in speeds), **extra)
+    if loss not in LOSSES:
+        _fail(func, f"loss must be one of {LOSSES}, got {loss!r}")
+    f_scale = 0.05 if f_scale is None else _scalar(func, "f_scale", f_scale)
+
+    c_all = np.concatenate(cxs)
+    f_all = np.concatenate(fs)
+    w_all = np.concatenate(ws)
+    v_all = np.concatenate([np.full(c.size, v) for c, v in zip(cxs, speeds)])
+    sign = -1 if float(np.sum(f_all * np.sign(c_all))) > 0.0 else 1
+    target = sign * f_all
+    f_ref = float(np.max(np.abs(f_all)))
+    if f_ref == 0.0:
+        _fail(func, "force is zero everywhere; nothing to fit")
+
+    start, fit, inner, lo, hi = _setup(func, spec, fit, x0, bounds, f_ref / settings["N"])
+    # the start point through the library's own checks: a bad a, b, N, G, nu raises here,
+    # naming the argument
+    _model(model, start, settings, c_all, v_all, settings["cy"], settings["cphi"],
+           errors="raise")
+
+    def residuals(theta):
+        p = _natural(start, inner, theta)
+        f = _model(model, p, settings, c_all, v_all, settings["cy"], settings["cphi"])
+        r = w_all * (f - target) / f_ref
+        if not np.all(np.isfinite(r)):
+            raise RollerRigError(f"{func}: the model failed at {p}")
+        return r
+
+    theta0 = np.array([start["kS"] / start["kA"] if n == _RATIO else start[n] for n in inner])
+    sol = least_squares(residuals, theta0, bounds=(lo, hi), loss=loss, f_scale=f_scale,
+                        x_scale="jac", method="trf")
+    params = _natural(start, inner, sol.x)
+
+    # standard errors from the plain (not loss-weighted) Jacobian at the solution
+    r = residuals(sol.x)
+    J = _jacobian(residuals, sol.x, lo, hi)
+    cov = _covariance(J, r)
+    T = np.eye(len(inner))                      # d natural / d internal
+    if _RATIO in inner:
+        i = inner.index(_RATIO)
+        T[i, i] = params["kA"]
+        if "kA" in inner:
+            T[i, inner.index("kA")] = sol.x[i]
+    cov = T @ cov @ T.T
+    stderr = {n: float(np.sqrt(cov[k, k])) if np.isfinite(cov[k, k]) else math.nan
+              for k, n in enumerate(fit)}
+
+    near = 1e-6 * np.maximum(1.0, np.abs(sol.x))
+    at_bound = tuple("kS" if n == _RATIO else n for n, x, l, h, d in
+                     zip(inner, sol.x, lo, hi, near) if x - l <= d or h - x <= d)
+    at_bound = tuple(n for n in fit if n in at_bound)
+    model_f = _model(model, params, settings, c_all, v_all, settings["cy"], settings["cphi"])
+    res_all = sign * model_f - f_all
+    if many:
+        cuts = np.cumsum([c.size for c in cxs])[:-1]
+        res_out = np.split(res_all, cuts)
+    else:
+        res_out = res_all
+    message = sol.message
+    if sign < 0:
+        message = ("force points the other way to the library's (Kalker's sign: fx < 0 "
+                   "for cx > 0); fitted -force, and predict() returns the data's sign. "
+                   + message)
+    return FitResult(model=model, params=params, stderr=stderr, fitted=fit,
+                     residuals=res_out, rms=float(np.sqrt(np.mean(res_all ** 2))),
+                     cost=float(sol.cost), success=bool(sol.success), message=message,
+                     nfev=int(sol.nfev), sign=sign, at_bound=at_bound,
+                     settings=settings)
+
+
+def fit_polach(cx, force, *, a, b, N, G=8.2e10, nu=0.28, speed, cy=0.0, cphi=0.0,
+               fit=("mu0", "A", "B", "kA", "kS"), x0=None, bounds=None, loss="soft_l1",
+               f_scale=None, weights=None):
+    """Fit Polach's method (creep_forces(method="polach")) to creep curves.
+
+    cx, force: longitudinal creepage [-] and force fx [N]: 1-D arrays (one
+               curve) or lists of them (one per speed); see the module notes
+               on the sign
+    a, b, N, G, nu: the contact (scalars, shared by the curves)
+    speed:     rolling speed [m/s], a scalar or one per curve
+    cy, cphi:  lateral creepage and spin, held (scalars)
+    fit:       the parameters fitted, of mu0, A, B, kA, kS; the others are
+               held at x0
+    x0:        {name: start or held value}; defaults mu0 = the data's peak
+               |force| / N, A = 0.4, B = 0.6 s/m, kA = 1, kS = 0.4 (Polach
+               2005, dry rail)
+    bounds:    {name: (lo, hi)} narrowing the physical bounds; the ratio
+               kS/kA is bounded as "kS/kA"
+    loss, f_scale: least_squares' robust loss and its scale, a fraction of
+               the data's peak |force| (default 0.05)
+    weights:   per-point weights, shaped as cx
+    A and B need data in the falling branch, B preferably at several speeds
+    (module notes).  Returns a FitResult.
+    """
+    return _fit("fit_polach", "polach", POLACH_PARAMETERS, cx, force, a, b, N, G, nu,
+                speed, cy, cphi, fit, x0, bounds, loss, f_scale, weights, {})
+
+
+def fit_modified_fastsim(cx, force, *, a, b, N, G=8.2e10, nu=0.28, speed, cy=0.0, cphi=0.0,
+                         fit=("k0", "alpha_inf", "beta"), x0=None, bounds=None,
+                         loss="soft_l1", f_scale=None, weights=None, nx=20, ny=20,
+                         grid="rect", bound="parabolic", slip_speed=None):
+    """Fit modified FASTSIM (Spiryagin, Polach and Cole 2013) to creep curves.
+
+    As fit_polach, with the parameters mu0, A, B (falling friction) and
+    k0, alpha_inf, beta (the slope reduction k = k0 (alpha_inf + (1 -
+    alpha_inf) / (1 + beta eps))).  By default only k0, alpha_inf, beta are
+    fitted and the friction law is held at x0 (mu0 = the data's peak
+    |force| / N, A = 0.4, B = 0.6 s/m): give the measured friction law in x0,
+    or add "mu0", "A", "B" to fit.  Defaults of the others: k0 = 0.54,
+    alpha_inf = 0.02, beta = 0.62 (CONTACT's example).  nx, ny, grid, bound,
+    slip_speed go to creep_forces (slip_speed None: the method's default,
+    the rigid slip speed).  Each evaluation runs FASTSIM on every point, so
+    a fit takes a few hundred calls on the data.
+    """
+    extra = dict(nx=nx, ny=ny, grid=grid, bound=bound, slip_speed=slip_speed)
+    return _fit("fit_modified_fastsim", "modified_fastsim", MODIFIED_FASTSIM_PARAMETERS, cx,
+                force, a, b, N, G, nu, speed, cy, cphi, fit, x0, bounds, loss, f_scale,
+                weights, extra)
