@@ -1,0 +1,527 @@
+"""Parameter sweeps: a vectorised function or the rig over a Cartesian grid.
+
+    import numpy as np, rollerrig as rr
+    ds = rr.sweep("creep_forces", {"cx": np.linspace(0, 0.01, 200),
+                                   "mu": [0.2, 0.3, 0.4]},
+                  a=4e-3, b=4e-3, N=500.0, nx=20, ny=20)
+    ds.fx.sel(mu=0.3)                     # xarray: dims ("cx", "mu"), units in attrs
+
+    ds = rr.sweep_rig({"scenario.mu0": [0.3, 0.4], "method": ["fastsim", "polach"]},
+                      duration=4.0)
+    ds.reached                            # dims ("scenario.mu0", "method", "target")
+
+The grid's axes are named after the function's arguments (for sweep) or
+parameter paths (for sweep_rig), in the order of the dimensions; every
+other keyword argument is passed unchanged to each call.  The flattened
+grid is cut into chunks run on a thread pool (the C loops release the GIL),
+a Dask client, or serially; every case's result is independent of the
+chunking, so all backends give bitwise the same numbers.  The result is an
+xarray.Dataset, or without xarray the dict {"coords", "data", "dims",
+"units"} of plain numpy arrays shaped like the grid.
+"""
+import copy
+import inspect
+import math
+import numbers
+import os
+import uuid
+from concurrent.futures import FIRST_COMPLETED, ThreadPoolExecutor, wait
+from functools import partial
+
+import numpy as np
+
+from . import contact
+from ._errors import RollerRigError, check_status
+from .rig import _merge, default_parameters, simulate
+
+__all__ = ["sweep", "sweep_rig", "UNITS", "FUNCTIONS"]
+
+#: the vectorised functions that sweep takes by name
+FUNCTIONS = {"creep_forces": contact.creep_forces, "hertz": contact.hertz,
+             "kalker_coefficients": contact.kalker_coefficients}
+
+#: units of the names used across the library (inputs and outputs), for the
+#: Dataset's attrs; "-" is dimensionless
+UNITS = {
+    "cx": "-", "cy": "-", "cphi": "rad/m", "a": "m", "b": "m", "N": "N", "mu": "-",
+    "G": "Pa", "nu": "-", "speed": "m/s", "fx": "N", "fy": "N", "mz": "N m",
+    "A": "1/m", "B": "1/m", "E": "Pa", "E2": "Pa", "nu2": "-", "p0": "Pa", "delta": "m",
+    "a_over_b": "-", "c11": "-", "c22": "-", "c23": "-",
+    "k0": "-", "alpha_inf": "-", "beta": "-", "kA": "-", "kS": "-",
+    # sweep_rig: simulate's arguments, the summary metrics, dimensionless parameters
+    "duration": "s", "dt": "s", "roller_speed": "m/s", "nx": "-", "ny": "-",
+    "substeps": "-", "target": "-", "reached": "-", "settling_s": "s", "adhesion": "-",
+    "peak_force_over_muN": "-", "mu0": "-", "conicity": "-", "poisson_ratio": "-",
+    "alpha": "-", "polach_A": "-", "polach_kA": "-", "polach_kS": "-", "fastsim_nx": "-",
+    "fastsim_ny": "-", "table_rows": "-", "gear_ratio": "-",
+}
+
+# unit suffixes of the parameter file's keys (rig_default.toml), longest first
+_SUFFIXES = (("_N_m_s_per_rad", "N m s/rad"), ("_N_s_per_m", "N s/m"), ("_N_per_m", "N/m"),
+             ("_s_per_m", "s/m"), ("_kg_m2", "kg m^2"), ("_m_s2", "m/s^2"), ("_m_s", "m/s"),
+             ("_N_m", "N m"), ("_rad", "rad"), ("_kg", "kg"), ("_Pa", "Pa"), ("_N", "N"),
+             ("_m", "m"), ("_s", "s"))
+
+_STATUS_ATTRS = {"long_name": "C status per case: 0 OK, > 0 warning, < 0 error (result NaN)"}
+_RIG_STATUS_ATTRS = {"long_name": "run status: 0 OK, < 0 the run stopped (see message)"}
+
+CHUNK_CASES = 100_000      # cases per chunk by default: ~0.15 s of FASTSIM 20 x 20
+
+
+def _units(name):
+    """The units of a name or parameter path, or None when unknown."""
+    leaf = str(name).rsplit(".", 1)[-1]
+    if leaf in UNITS:
+        return UNITS[leaf]
+    for suffix, unit in _SUFFIXES:
+        if leaf.endswith(suffix):
+            return unit
+    return None
+
+
+def _axes(func, grid, numeric):
+    """Check the grid: a non-empty dict of non-empty 1-D axes.  Returns (names, axes)."""
+    if not isinstance(grid, dict) or not grid:
+        raise RollerRigError(f"{func}: grid must be a non-empty dict name -> 1-D array, "
+                             f"got {grid!r:.60}")
+    names, axes = [], []
+    for name, values in grid.items():
+        if not isinstance(name, str) or not name:
+            raise RollerRigError(f"{func}: grid names must be non-empty strings, got {name!r}")
+        arr = np.asarray(values)
+        if arr.ndim != 1:
+            raise RollerRigError(f"{func}: grid axis '{name}' must be 1-D, got shape "
+                                 f"{arr.shape}")
+        if arr.size == 0:
+            raise RollerRigError(f"{func}: grid axis '{name}' is empty")
+        if numeric and arr.dtype.kind not in "iuf":
+            raise RollerRigError(f"{func}: grid axis '{name}' must be real numbers, got dtype "
+                                 f"{arr.dtype} ({values!r:.60})")
+        names.append(name)
+        axes.append(arr)
+    return tuple(names), tuple(axes)
+
+
+def _check_options(func, backend, workers, client, progress):
+    """The backend actually used ("serial", "threads" or "dask") and the worker count."""
+    if backend not in ("threads", "serial", "dask"):
+        raise RollerRigError(f"{func}: backend must be 'threads', 'serial' or 'dask', "
+                             f"got {backend!r}")
+    if client is not None:
+        if backend == "serial":
+            raise RollerRigError(f"{func}: a Dask client was given with backend='serial'")
+        backend = "dask"
+    elif backend == "dask":
+        try:
+            from distributed import get_client
+            client = get_client()
+        except (ImportError, ValueError):
+            raise RollerRigError(f"{func}: backend='dask' needs a dask.distributed Client "
+                                 f"(client=...), and none is running") from None
+    if workers is not None:
+        if backend != "threads":
+            raise RollerRigError(f"{func}: workers is for backend='threads' (a Dask client has "
+                                 f"its own workers), got workers={workers!r} with "
+                                 f"backend={backend!r}")
+        if isinstance(workers, bool) or not isinstance(workers, numbers.Integral) \
+                or workers < 1:
+            raise RollerRigError(f"{func}: workers must be an integer >= 1, got {workers!r}")
+    if not isinstance(progress, bool):
+        raise RollerRigError(f"{func}: progress must be True or False, got {progress!r}")
+    if backend == "threads":
+        slots = int(workers) if workers is not None else (os.cpu_count() or 1)
+    elif backend == "dask":
+        slots = max(1, sum(client.nthreads().values()))
+    else:
+        slots = 1
+    return backend, slots, client
+
+
+def _progress_bar(enabled, total, desc, unit):
+    """A tqdm bar when asked for and tqdm is installed, else a silent stand-in."""
+    if enabled:
+        try:
+            from tqdm.auto import tqdm
+        except ImportError:
+            pass
+        else:
+            return tqdm(total=total, desc=desc, unit=unit, dynamic_ncols=True)
+
+    class _Silent:
+        def update(self, n):
+            pass
+
+        def close(self):
+            pass
+    return _Silent()
+
+
+def _execute(label, task, items, sizes, describe, store, common, *, backend, slots, client,
+             progress, unit):
+    """Run task(item, **common) for every item and store(k, result) in this
+    thread as each finishes.  A failing task raises RollerRigError naming
+    describe(k); Ctrl-C cancels what has not started and raises
+    KeyboardInterrupt."""
+    n = len(items)
+    bar = _progress_bar(progress, int(sum(sizes)), label, unit)
+    done = 0
+
+    def fail(k, exc):
+        return RollerRigError(f"{label}: {describe(k)} failed: {type(exc).__name__}: {exc}")
+
+    def interrupted(cancelled):
+        return KeyboardInterrupt(f"{label} interrupted: {done} of {n} tasks done, "
+                                 f"{cancelled} cancelled")
+    try:
+        if backend == "serial":
+            for k, item in enumerate(items):
+                try:
+                    res = task(item, **common)
+                except Exception as exc:
+                    raise fail(k, exc) from exc
+                except KeyboardInterrupt:
+                    raise interrupted(n - done - 1) from None
+                store(k, res)
+                done += 1
+                bar.update(sizes[k])
+        elif backend == "threads":
+            pool = ThreadPoolExecutor(max_workers=min(slots, n),
+                                      thread_name_prefix="rollerrig-sweep")
+            futures = {}
+            try:
+                futures = {pool.submit(task, item, **common): k for k, item in enumerate(items)}
+                pending = set(futures)
+                while pending:
+                    finished, pending = wait(pending, return_when=FIRST_COMPLETED)
+                    for fut in sorted(finished, key=futures.get):
+                        k = futures[fut]
+                        try:
+                            res = fut.result()
+                        except Exception as exc:
+                            raise fail(k, exc) from exc
+                        store(k, res)
+                        done += 1
+                        bar.update(sizes[k])
+            except KeyboardInterrupt:
+                cancelled = sum(f.cancel() for f in futures)
+                raise interrupted(cancelled) from None
+            finally:
+                # pending chunks are dropped; running ones (C loops that
+                # cannot be stopped from here) end before we return
+                pool.shutdown(wait=True, cancel_futures=True)
+        else:
+            from distributed import as_completed
+            tag = f"rollerrig-{label.replace('(', '-').rstrip(')')}-{uuid.uuid4().hex[:8]}"
+            futures = client.map(partial(task, **common), items,
+                                 key=[f"{tag}-{k}" for k in range(n)], pure=False)
+            index = {f.key: k for k, f in enumerate(futures)}
+            try:
+                for fut in as_completed(futures):
+                    k = index[fut.key]
+                    try:
+                        res = fut.result()
+                    except Exception as exc:
+                        raise fail(k, exc) from exc
+                    store(k, res)
+                    fut.release()
+                    done += 1
+                    bar.update(sizes[k])
+            except KeyboardInterrupt:
+                client.cancel(futures)
+                raise interrupted(n - done) from None
+            except BaseException:
+                client.cancel(futures)
+                raise
+    finally:
+        bar.close()
+
+
+# ---------------------------------------------------------------- sweep
+
+def _resolve(func):
+    """(name, callable, known) for a function name or a callable."""
+    if isinstance(func, str):
+        if func not in FUNCTIONS:
+            raise RollerRigError(f"sweep: unknown function {func!r}; give one of "
+                                 f"{sorted(FUNCTIONS)} or a callable")
+        return func, FUNCTIONS[func], True
+    if not callable(func):
+        raise RollerRigError(f"sweep: func must be a function name or a callable, "
+                             f"got {func!r:.60}")
+    for name, f in FUNCTIONS.items():
+        if func is f:
+            return name, f, True
+    return getattr(func, "__name__", "func"), func, False
+
+
+def _chunk(bounds, func, names, axes, fixed):
+    """One chunk: the cases start <= i < stop of the flattened grid, as a
+    dict of 1-D arrays (module level, so that Dask can send it)."""
+    start, stop = bounds
+    fn = FUNCTIONS[func] if isinstance(func, str) else func
+    index = np.unravel_index(np.arange(start, stop), tuple(ax.size for ax in axes))
+    kwargs = {name: ax[i] for name, ax, i in zip(names, axes, index)}
+    out = fn(**kwargs, **fixed)
+    if hasattr(out, "_asdict"):
+        out = out._asdict()
+    elif not isinstance(out, dict):
+        raise RollerRigError(f"sweep: the function must return a NamedTuple (or dict) of "
+                             f"arrays, got {type(out).__name__}")
+    n = stop - start
+    res = {}
+    for field, value in out.items():
+        arr = np.asarray(value)
+        if arr.size == 1 and n != 1:
+            arr = np.full(n, arr.reshape(()))           # a field independent of the case
+        if arr.size != n:
+            raise RollerRigError(f"sweep: output field '{field}' has shape {arr.shape}; "
+                                 f"expected one value per case ({n})")
+        res[field] = arr.reshape(n)
+    return res
+
+
+def _grid_index(shape, i):
+    return tuple(int(k) for k in np.unravel_index(i, shape))
+
+
+def _as_attr(value):
+    """A fixed argument as a netCDF-friendly attribute value."""
+    if isinstance(value, (bool, np.bool_)) or value is None:
+        return str(value)
+    if isinstance(value, (numbers.Integral, numbers.Real, str)):
+        return value
+    return repr(value)
+
+
+def sweep(func, grid, *, chunk=None, backend="threads", workers=None, client=None,
+          progress=True, **fixed):
+    """Evaluate a vectorised function over the Cartesian grid of named axes.
+
+    func:    "creep_forces", "hertz", "kalker_coefficients", or a callable
+             taking keyword arrays (one value per case) and returning a
+             NamedTuple (or dict) of arrays, as rr.creep_forces does
+    grid:    dict name -> 1-D array: the axes, in the order of the dimensions
+    chunk:   cases per chunk (default: 100 000, fewer when that keeps a worker idle)
+    backend: "threads" (a ThreadPoolExecutor of `workers` threads, default
+             os.cpu_count()), "serial", or "dask" (the client given or the
+             running one); giving `client` selects Dask
+    progress: a tqdm progress bar (when tqdm is installed)
+    fixed:   every other keyword argument, passed unchanged to each call
+             (e.g. a=..., b=..., N=..., mu=..., method="fastsim", nx=20)
+    Returns an xarray.Dataset with the axes as coordinates and one variable
+    per output field (status as int8), units in attrs, the fixed arguments
+    in the Dataset's attrs; without xarray the dict {"coords": {name: axis},
+    "data": {field: array shaped like the grid}, "dims", "units"}.
+    For the library's functions, failed cases are NaN with a negative
+    status and one RollerRigWarning is given for the whole grid (or pass
+    errors="raise" / "ignore").  An exception in a chunk raises
+    RollerRigError naming the chunk's index range, the original as its cause.
+    """
+    name, fn, known = _resolve(func)
+    where = f"sweep({name})"
+    names, axes = _axes("sweep", grid, numeric=known)
+    backend, slots, client = _check_options("sweep", backend, workers, client, progress)
+    clash = sorted(set(names) & set(fixed))
+    if clash:
+        raise RollerRigError(f"sweep: {clash} given both as a grid axis and as a fixed argument")
+    try:
+        params = inspect.signature(fn).parameters
+    except (TypeError, ValueError):
+        params = None
+    if params is not None:
+        try:
+            inspect.signature(fn).bind(**{n: 0.0 for n in names}, **fixed)
+        except TypeError as exc:
+            raise RollerRigError(f"sweep: {name}: {exc}") from None
+    if known:
+        for key, value in fixed.items():
+            if np.ndim(value) > 0:
+                raise RollerRigError(f"sweep: fixed argument '{key}' must be a scalar (sweep "
+                                     f"it as a grid axis), got shape {np.shape(value)}")
+    shape = tuple(ax.size for ax in axes)
+    total = math.prod(shape)
+    if chunk is None:
+        chunk = max(1, min(CHUNK_CASES, -(-total // slots)))
+    elif isinstance(chunk, bool) or not isinstance(chunk, numbers.Integral) or chunk < 1:
+        raise RollerRigError(f"sweep: chunk must be an integer >= 1 (cases per chunk), "
+                             f"got {chunk!r}")
+    chunk = int(chunk)
+    bounds = [(s, min(total, s + chunk)) for s in range(0, total, chunk)]
+    sizes = [b - a for a, b in bounds]
+
+    # the library's functions: no warning per chunk, one for the grid (below)
+    errors = fixed.get("errors")
+    call_fixed = dict(fixed)
+    if known and errors is None:
+        call_fixed["errors"] = "ignore"
+
+    data = {}
+
+    def store(k, res):
+        start, stop = bounds[k]
+        for field, arr in res.items():
+            if field not in data:
+                dtype = np.int8 if field == "status" else arr.dtype
+                data[field] = np.empty(total, dtype=dtype)
+            data[field][start:stop] = arr
+
+    def describe(k):
+        start, stop = bounds[k]
+        return (f"chunk {k} of {len(bounds)} (cases {start} to {stop - 1}, grid index "
+                f"{_grid_index(shape, start)} to {_grid_index(shape, stop - 1)})")
+
+    common = dict(func=name if known else fn, names=names, axes=axes, fixed=call_fixed)
+    _execute(where, _chunk, bounds, sizes, describe, store, common, backend=backend,
+             slots=slots, client=client, progress=progress, unit="case")
+    data = {field: arr.reshape(shape) for field, arr in data.items()}
+
+    if known and errors is None and "status" in data:
+        args = {n: np.broadcast_to(ax.astype(float).reshape(
+            [-1 if j == i else 1 for j in range(len(shape))]), shape)
+            for i, (n, ax) in enumerate(zip(names, axes))}
+        args.update({k: np.asarray(v, dtype=float) for k, v in fixed.items()
+                     if isinstance(v, numbers.Real) and not isinstance(v, bool)})
+        check_status(name, data["status"], args, "warn")
+
+    attrs = {"function": name, **{k: _as_attr(v) for k, v in fixed.items()}}
+    return _package(dict(zip(names, axes)), {f: names for f in data}, data, attrs,
+                    {"status": _STATUS_ATTRS})
+
+
+def _package(coords, var_dims, data, attrs, extra_attrs):
+    """An xarray.Dataset, or the plain-dict fallback when xarray is missing."""
+    units = {n: _units(n) for n in list(coords) + list(data)}
+    units = {n: u for n, u in units.items() if u is not None and n != "status"}
+    try:
+        import xarray as xr
+    except ImportError:
+        return {"coords": coords, "data": data, "dims": {n: var_dims[n] for n in data},
+                "units": units}
+    return xr.Dataset(
+        {n: (var_dims[n], arr, dict(extra_attrs.get(n, {}),
+                                    **({"units": units[n]} if n in units else {})))
+         for n, arr in data.items()},
+        coords={n: (n, ax, {"units": units[n]} if n in units else {})
+                for n, ax in coords.items()},
+        attrs=attrs)
+
+
+# ---------------------------------------------------------------- sweep_rig
+
+_RIG_METRICS = ("reached", "settling_s", "adhesion", "peak_force_over_muN")
+_NOT_SWEPT = ("params", "targets", "target_times", "progress")
+
+
+def _rig_point(k, names, axes, base, options):
+    """Run simulate at flat grid point k (module level, so that Dask can send it).
+    Returns (targets, metrics [len(targets) x 4], status, message)."""
+    shape = tuple(ax.size for ax in axes)
+    index = np.unravel_index(k, shape)
+    params = copy.deepcopy(base)
+    kwargs = dict(options)
+    for name, ax, i in zip(names, axes, index):
+        value = ax[i].item()          # plain Python numbers: the rig checks int/float types
+        if "." in name:
+            *path, leaf = name.split(".")
+            node = params
+            for part in path:
+                node = node.setdefault(part, {})
+            node[leaf] = value
+        else:
+            kwargs[name] = value
+    res = simulate(params=params, progress=False, **kwargs)
+    rows = res.summary()
+    metrics = np.array([[row[m] for m in _RIG_METRICS] for row in rows], dtype=float)
+    return res.targets, metrics, res.status, res.message
+
+
+def sweep_rig(grid, *, backend="threads", workers=None, client=None, progress=True,
+              **simulate_kwargs):
+    """Run rr.simulate at every point of a Cartesian grid of rig parameters.
+
+    grid:    dict name -> 1-D array; a name is a dotted parameter path of the
+             parameter file ("scenario.mu0", "wheelset.mass_kg") or one of
+             simulate's own arguments ("dt", "method", "roller_speed", "nx",
+             "ode", "k0", ...)
+    backend, workers, client, progress: as for sweep; one run per task
+             (the C time stepping releases the GIL, so threads scale)
+    simulate_kwargs: passed to every run (duration, targets, params as the
+             base that the grid's paths override, ...)
+    Returns an xarray.Dataset with dims (grid axes..., "target") and the
+    variables reached, settling_s, adhesion, peak_force_over_muN (as
+    RigResult.summary()), plus per point the run status (int8) and message;
+    without xarray the plain dict as for sweep.  A run that stops (status
+    < 0) gives NaN for the targets it did not reach; a run that raises
+    (e.g. a parameter out of range) raises RollerRigError naming the point.
+    """
+    names, axes = _axes("sweep_rig", grid, numeric=False)
+    backend, slots, client = _check_options("sweep_rig", backend, workers, client, progress)
+    sim_args = set(inspect.signature(simulate).parameters) - {"creep"}
+    creep_args = {"bound", "grid", "slip_speed", "k0", "alpha_inf", "beta", "kA", "kS"}
+    base = copy.deepcopy(simulate_kwargs.pop("params", None) or {})
+    full = default_parameters()
+    _merge(full, copy.deepcopy(base))
+    for name in names:
+        if "." in name:
+            node, parts = full, name.split(".")
+            for depth, part in enumerate(parts):
+                if not isinstance(node, dict) or part not in node:
+                    raise RollerRigError(f"sweep_rig: unknown parameter '{name}' (no "
+                                         f"'{'.'.join(parts[:depth + 1])}' in the parameter "
+                                         f"file)")
+                node = node[part]
+            if isinstance(node, (dict, list)):
+                raise RollerRigError(f"sweep_rig: '{name}' is not a single value; sweep its "
+                                     f"entries")
+        elif name in _NOT_SWEPT or name not in (sim_args | creep_args):
+            raise RollerRigError(f"sweep_rig: '{name}' is neither a parameter path "
+                                 f"('section.key') nor a simulate argument that takes one "
+                                 f"value ({sorted((sim_args | creep_args) - set(_NOT_SWEPT))})")
+        if name in simulate_kwargs:
+            raise RollerRigError(f"sweep_rig: '{name}' given both as a grid axis and as a "
+                                 f"fixed argument")
+    if "progress" in simulate_kwargs:
+        raise RollerRigError("sweep_rig: progress is the sweep's (a bar over the runs)")
+
+    shape = tuple(ax.size for ax in axes)
+    total = math.prod(shape)
+    found = {}
+
+    def store(k, res):
+        targets, metrics, status, message = res
+        if "targets" not in found:
+            found["targets"] = targets
+            found["metrics"] = np.full((total, len(targets), len(_RIG_METRICS)), np.nan)
+            found["status"] = np.zeros(total, dtype=np.int8)
+            found["message"] = np.empty(total, dtype=object)
+        if tuple(targets) != tuple(found["targets"]):
+            raise RollerRigError(f"sweep_rig: the targets differ between runs "
+                                 f"({found['targets']} and {targets})")
+        found["metrics"][k] = metrics
+        found["status"][k] = status
+        found["message"][k] = message
+
+    def describe(k):
+        index = _grid_index(shape, k)
+        point = ", ".join(f"{n} = {ax[i].item()!r}" for n, ax, i in zip(names, axes, index))
+        return f"run {k} (grid index {index}: {point})"
+
+    common = dict(names=names, axes=axes, base=base, options=simulate_kwargs)
+    _execute("sweep_rig", _rig_point, list(range(total)), [1] * total, describe, store, common,
+             backend=backend, slots=slots, client=client, progress=progress, unit="run")
+
+    ntarget = len(found["targets"])
+    data = {m: found["metrics"][:, :, j].reshape(shape + (ntarget,))
+            for j, m in enumerate(_RIG_METRICS)}
+    data["status"] = found["status"].reshape(shape)
+    data["message"] = found["message"].astype(str).reshape(shape)
+    coords = dict(zip(names, axes))
+    coords["target"] = np.asarray(found["targets"], dtype=float)
+    var_dims = {m: names + ("target",) for m in _RIG_METRICS}
+    var_dims.update(status=names, message=names)
+    attrs = {"function": "simulate",
+             **{k: _as_attr(v) for k, v in simulate_kwargs.items()}}
+    if base:
+        attrs["params"] = repr(base)
+    return _package(coords, var_dims, data, attrs,
+                    {"status": _RIG_STATUS_ATTRS})

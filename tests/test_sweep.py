@@ -1,0 +1,252 @@
+"""Parameter sweeps (rollerrig.sweep): grid order, backends, output, errors."""
+import _thread
+import sys
+import time
+
+import numpy as np
+import pytest
+
+import rollerrig as rr
+from rollerrig.sweep import sweep, sweep_rig
+
+# a small FASTSIM case on the rig's scale (a ~ b ~ 4 mm, N ~ 500 N)
+FIXED = dict(a=4e-3, b=3.5e-3, G=8.2e10, nu=0.28, method="fastsim", nx=20, ny=20)
+GRID = {"cx": np.linspace(0.0, 0.01, 41), "N": np.array([200.0, 500.0, 1000.0]),
+        "mu": np.array([0.2, 0.3, 0.4])}
+FIELDS = ("fx", "fy", "mz", "status")
+
+
+def direct():
+    """The same cases by one broadcast call: the reference."""
+    return rr.creep_forces(GRID["cx"][:, None, None], N=GRID["N"][None, :, None],
+                           mu=GRID["mu"][None, None, :], **FIXED)
+
+
+def values(res, field):
+    """A field of a Dataset or of the plain-dict fallback."""
+    return res["data"][field] if isinstance(res, dict) else res[field].values
+
+
+def assert_bitwise(res, ref):
+    for field in FIELDS:
+        a, b = values(res, field), np.asarray(getattr(ref, field))
+        assert a.shape == b.shape and a.dtype == b.dtype, field
+        # bitwise: every case is computed on its own, whatever the chunking
+        assert np.array_equal(a.view(np.uint8), b.view(np.uint8)), field
+
+
+@pytest.fixture(scope="module")
+def dask_client():
+    """A local Dask cluster: two worker processes of one thread each."""
+    distributed = pytest.importorskip("distributed")
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                       dashboard_address=None)
+    client = distributed.Client(cluster)
+    yield client
+    client.close()
+    cluster.close()
+
+
+# (1) the grid in order, the same bits on every backend
+
+@pytest.mark.parametrize("backend, chunk", [("serial", None), ("serial", 17),
+                                            ("threads", None), ("threads", 50)])
+def test_creep_forces_sweep_equals_broadcast_call(backend, chunk):
+    res = sweep("creep_forces", GRID, backend=backend, chunk=chunk, progress=False, **FIXED)
+    assert_bitwise(res, direct())
+
+
+def test_threads_with_one_or_several_workers_agree():
+    one = sweep("creep_forces", GRID, workers=1, chunk=40, progress=False, **FIXED)
+    four = sweep("creep_forces", GRID, workers=4, chunk=40, progress=False, **FIXED)
+    assert one.identical(four)
+
+
+def test_hertz_sweep_in_grid_order():
+    grid = {"A": np.array([5.0, 8.0, 12.0]), "N": np.geomspace(100.0, 1e4, 5)}
+    res = sweep("hertz", grid, backend="serial", progress=False, B=20.0)
+    ref = rr.hertz(grid["A"][:, None], 20.0, grid["N"][None, :])
+    for field in ("a", "b", "p0", "delta", "status"):
+        assert np.array_equal(res[field].values, getattr(ref, field)), field
+    assert res["a"].dims == ("A", "N")
+
+
+# (2) a Dask cluster of two worker processes
+
+def test_dask_cluster_matches_threads_bitwise(dask_client):
+    threads = sweep("creep_forces", GRID, progress=False, **FIXED)
+    dask = sweep("creep_forces", GRID, client=dask_client, chunk=60, progress=False, **FIXED)
+    assert dask.identical(threads)
+    assert_bitwise(dask, direct())
+
+
+def test_dask_runs_a_callable_and_rig_sweeps(dask_client):
+    def ratio(cx, mu):
+        f = rr.creep_forces(cx, a=4e-3, b=4e-3, N=500.0, mu=mu, nx=10, ny=10)
+        return {"force_over_muN": -f.fx / (mu * 500.0), "status": f.status}
+    grid = {"cx": np.linspace(0, 0.02, 30), "mu": [0.25, 0.4]}
+    assert sweep(ratio, grid, client=dask_client, chunk=7, progress=False).identical(
+        sweep(ratio, grid, backend="serial", progress=False))
+    grid = {"scenario.mu0": [0.3, 0.4]}
+    assert sweep_rig(grid, client=dask_client, duration=0.5, progress=False).identical(
+        sweep_rig(grid, duration=0.5, progress=False))
+
+
+# (3) output: xarray with names and units, or plain numpy
+
+def test_dataset_has_named_dims_coords_and_units():
+    xr = pytest.importorskip("xarray")
+    ds = sweep("creep_forces", GRID, progress=False, **FIXED)
+    assert isinstance(ds, xr.Dataset)
+    assert dict(ds.sizes) == {"cx": 41, "N": 3, "mu": 3}
+    for name, axis in GRID.items():
+        assert np.array_equal(ds[name].values, axis)
+    assert ds.fx.dims == ("cx", "N", "mu") and ds.status.dtype == np.int8
+    units = {n: ds[n].attrs.get("units") for n in ("cx", "N", "mu", "fx", "fy", "mz")}
+    assert units == {"cx": "-", "N": "N", "mu": "-", "fx": "N", "fy": "N", "mz": "N m"}
+    assert ds.attrs["function"] == "creep_forces" and ds.attrs["a"] == 4e-3
+    assert ds.attrs["method"] == "fastsim"
+    # selection by value works: fx at cx = 0.01, N = 500, mu = 0.3 is that call's
+    one = rr.creep_forces(0.01, N=500.0, mu=0.3, **FIXED)
+    assert float(ds.fx.sel(cx=0.01, N=500.0, mu=0.3)) == one.fx
+
+
+def test_numpy_fallback_without_xarray(monkeypatch):
+    with_xr = sweep("creep_forces", GRID, progress=False, **FIXED)
+    monkeypatch.setitem(sys.modules, "xarray", None)      # import xarray now fails
+    plain = sweep("creep_forces", GRID, progress=False, **FIXED)
+    assert isinstance(plain, dict) and set(plain) >= {"coords", "data"}
+    assert list(plain["coords"]) == ["cx", "N", "mu"]
+    for name, axis in GRID.items():
+        assert np.array_equal(plain["coords"][name], axis)
+    for field in FIELDS:
+        assert np.array_equal(plain["data"][field], with_xr[field].values)
+        assert plain["data"][field].shape == (41, 3, 3)
+    assert plain["units"]["fx"] == "N" and plain["dims"]["fx"] == ("cx", "N", "mu")
+    assert_bitwise(plain, direct())
+
+
+def test_progress_bar_is_optional(monkeypatch):
+    monkeypatch.setitem(sys.modules, "tqdm", None)
+    monkeypatch.setitem(sys.modules, "tqdm.auto", None)
+    res = sweep("creep_forces", GRID, progress=True, **FIXED)
+    assert_bitwise(res, direct())
+
+
+# (4) rig-parameter sweeps
+
+def test_sweep_rig_over_mu0():
+    ds = sweep_rig({"scenario.mu0": [0.3, 0.4]}, duration=1.0, targets=[0.01, 0.02],
+                   progress=False)
+    metrics = ("reached", "settling_s", "adhesion", "peak_force_over_muN")
+    for m in metrics:
+        assert ds[m].dims == ("scenario.mu0", "target")
+    assert list(ds.target.values) == [0.01, 0.02]
+    assert ds.status.dtype == np.int8 and list(ds.status.values) == [0, 0]
+    assert ds.settling_s.attrs["units"] == "s" and ds["scenario.mu0"].attrs["units"] == "-"
+    # each point is the summary of its own run
+    for mu0 in (0.3, 0.4):
+        rows = rr.simulate(duration=1.0, targets=[0.01, 0.02],
+                           params={"scenario": {"mu0": mu0}}).summary()
+        for m in metrics:
+            np.testing.assert_array_equal(ds[m].sel({"scenario.mu0": mu0}).values,
+                                          [r[m] for r in rows])
+    # the adhesion held scales with mu0
+    assert np.all(ds.adhesion.sel({"scenario.mu0": 0.4}) > ds.adhesion.sel(
+        {"scenario.mu0": 0.3}))
+
+
+def test_sweep_rig_takes_simulate_arguments_and_base_params():
+    ds = sweep_rig({"method": ["fastsim", "polach"], "wheelset.mass_kg": [12.0, 15.0]},
+                   duration=0.4, targets=[0.02], params={"scenario": {"mu0": 0.35}},
+                   backend="serial", progress=False)
+    assert ds.reached.dims == ("method", "wheelset.mass_kg", "target")
+    assert ds["wheelset.mass_kg"].attrs["units"] == "kg"
+    assert list(ds.method.values) == ["fastsim", "polach"]
+    ref = rr.simulate(duration=0.4, targets=[0.02], method="polach",
+                      params={"scenario": {"mu0": 0.35}, "wheelset": {"mass_kg": 15.0}})
+    assert ds.adhesion.sel({"method": "polach", "wheelset.mass_kg": 15.0}).values[0] \
+        == ref.summary()[0]["adhesion"]
+
+
+# (5) bad input names what is wrong; failures carry their place in the grid
+
+@pytest.mark.parametrize("grid, match", [
+    ({"cx": []}, "grid axis 'cx' is empty"),
+    ({"cx": np.zeros((2, 2))}, r"grid axis 'cx' must be 1-D, got shape \(2, 2\)"),
+    ({"cx": ["a", "b"]}, "grid axis 'cx' must be real numbers"),
+    ({}, "grid must be a non-empty dict"),
+])
+def test_bad_grid(grid, match):
+    with pytest.raises(rr.RollerRigError, match=match):
+        sweep("creep_forces", grid, progress=False, **FIXED)
+
+
+def test_bad_function_backend_and_arguments():
+    with pytest.raises(rr.RollerRigError, match="unknown function 'creep_force'"):
+        sweep("creep_force", GRID, **FIXED)
+    with pytest.raises(rr.RollerRigError, match="backend must be .* got 'processes'"):
+        sweep("creep_forces", GRID, backend="processes", **FIXED)
+    with pytest.raises(rr.RollerRigError, match="creep_forces: missing a required argument"):
+        sweep("creep_forces", GRID, b=4e-3)
+    with pytest.raises(rr.RollerRigError, match="'mu'.* both as a grid axis and as a fixed"):
+        sweep("creep_forces", GRID, **dict(FIXED, mu=0.3))
+    with pytest.raises(rr.RollerRigError, match="fixed argument 'b' must be a scalar"):
+        sweep("creep_forces", GRID, **dict(FIXED, b=[1e-3, 2e-3]))
+    with pytest.raises(rr.RollerRigError, match=r"chunk must be an integer >= 1 .*, got 0"):
+        sweep("creep_forces", GRID, chunk=0, **FIXED)
+    with pytest.raises(rr.RollerRigError, match="workers must be an integer >= 1, got 0"):
+        sweep("creep_forces", GRID, workers=0, **FIXED)
+    with pytest.raises(rr.RollerRigError, match="unknown parameter 'scenario.mu'"):
+        sweep_rig({"scenario.mu": [0.3]})
+    with pytest.raises(rr.RollerRigError, match="'mu0' is neither a parameter path"):
+        sweep_rig({"mu0": [0.3]})
+    with pytest.raises(rr.RollerRigError, match="'scenario.targets' is not a single value"):
+        sweep_rig({"scenario.targets": [0.3]})
+
+
+def test_bad_cases_warn_once_for_the_grid():
+    grid = {"cx": [0.001, 0.002], "mu": [0.3, -0.1]}
+    with pytest.warns(rr.RollerRigWarning, match=r"mu = -0.1 at index \(0, 1\).*"
+                                                 r"\(2 of 4 elements failed"):
+        res = sweep("creep_forces", grid, chunk=1, progress=False, N=500.0, **FIXED)
+    assert np.isnan(res.fx.values[:, 1]).all() and (res.status.values[:, 1] < 0).all()
+
+
+def test_exception_in_a_chunk_names_its_cases():
+    def boom(x):
+        if np.any(x == 25.0):
+            raise ZeroDivisionError("no twenty-five")
+        return {"y": x * 2}
+    for backend in ("serial", "threads"):
+        with pytest.raises(rr.RollerRigError,
+                           match=r"chunk 2 of 5 \(cases 20 to 29, grid index \(20,\) to "
+                                 r"\(29,\)\) failed: ZeroDivisionError: no twenty-five") as e:
+            sweep(boom, {"x": np.arange(50.0)}, chunk=10, backend=backend, progress=False)
+        assert isinstance(e.value.__cause__, ZeroDivisionError)
+    # the library's own errors, when asked to raise
+    with pytest.raises(rr.RollerRigError, match=r"grid index \(0, 1\).*mu = -0.1"):
+        sweep("creep_forces", {"cx": [0.001], "mu": [0.3, -0.1]}, chunk=1, progress=False,
+              N=500.0, errors="raise", **FIXED)
+    # a run that raises is named by its parameters
+    with pytest.raises(rr.RollerRigError, match=r"run 1 \(grid index \(1,\): scenario.mu0 = "
+                                                r"-0.2\) failed.*mu0 must be a finite"):
+        sweep_rig({"scenario.mu0": [0.3, -0.2]}, duration=0.2, progress=False)
+
+
+def test_ctrl_c_cancels_pending_chunks():
+    started = []
+
+    def slow(x):
+        started.append(x[0])
+        if x[0] == 0:
+            _thread.interrupt_main()     # as Ctrl-C would, while the main thread waits
+        time.sleep(0.05)
+        return {"y": x}
+    with pytest.raises(KeyboardInterrupt, match="sweep.* interrupted: .* cancelled"):
+        sweep(slow, {"x": np.arange(100.0)}, chunk=1, workers=2, progress=False)
+    # the pending chunks were dropped, and nothing runs on after the interrupt
+    n = len(started)
+    assert n < 100
+    time.sleep(0.2)
+    assert len(started) == n
