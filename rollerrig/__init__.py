@@ -30,6 +30,7 @@ from .rig import (RigResult, build_rig, default_parameters, load_parameters, rep
                   simulate)
 from .fit import FitResult, fit_modified_fastsim, fit_polach
 from .sweep import sweep, sweep_rig
+from . import reference
 from .rig_contact import (LinearCreepages, RigContact, RigPose, WheelContact, linear_creepages,
                           rig_contact)
 
@@ -42,5 +43,5 @@ __all__ = [
     "RigContact", "rig_contact", "LinearCreepages", "linear_creepages",
     "equivalent_conicity", "rolling_radius_difference", "simulate", "RigResult",
     "default_parameters", "load_parameters", "build_rig", "replay", "fit_polach",
-    "fit_modified_fastsim", "FitResult", "sweep", "sweep_rig",
+    "fit_modified_fastsim", "FitResult", "sweep", "sweep_rig", "reference",
 ]

@@ -1,0 +1,521 @@
+"""Any creep-force method against CONTACT's exact theory: scores and error maps.
+
+Two sets of reference numbers ship in rollerrig/data/reference (copies of
+tests/data; each CSV's first line names its source):
+
+- contact_test_table_mx11.csv: the 3220 cases of CONTACT's test_table
+  (Vollebregt's statistical evaluation of contact methods): 5 ellipticities
+  a/b x 4 spin levels x 7 creepage directions x 23 creepage magnitudes,
+  exact steady rolling on an 11 x 11 grid (itself a few % off the continuum).
+- creep_curves_exact_vs_fastsim.csv: CONTACT's creep-curve example
+  (Polach's Eurosprinter wheel) in four series: exact theory with Coulomb
+  friction, exact theory with falling friction and an interfacial layer,
+  CONTACT's FASTSIM, and CONTACT's modified FASTSIM.
+
+    import rollerrig.reference as ref
+    r = ref.score("fastsim", nx=30, ny=30)     # r.error: |dF|/(mu N) per case
+    r.overall["median"], r.by_spin[0.5]["p95"]
+    print(ref.table([r, ref.score("fastsim_blended")]))
+    ref.error_map(r)                           # one panel per spin level
+    ref.score_curves("fastsim", nx=48, ny=44)[3].rms
+
+Errors are the vector |(dFx, dFy)| / (mu N) and |dMz| / (mu N cp), cp the
+table's length scale per a/b; forces on the wheel, CONTACT's convention and
+ours alike.  The method's options are those of rollerrig.creep_forces, which
+checks them (RollerRigError).
+"""
+import csv
+import functools
+import inspect
+import math
+import os
+import re
+import warnings
+from typing import NamedTuple, Optional
+
+import numpy as np
+
+from ._errors import RollerRigError
+from .contact import FallingFriction, creep_forces
+
+__all__ = ["ExactCases", "ScoreResult", "CreepCurve", "CurveScore", "exact_cases", "score",
+           "table", "error_map", "creep_curves", "score_curves", "DATA_DIR", "TABLE_FILE",
+           "CURVES_FILE"]
+
+DATA_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", "reference")
+TABLE_FILE = "contact_test_table_mx11.csv"
+CURVES_FILE = "creep_curves_exact_vs_fastsim.csv"
+
+MM = 1e-3          # m per mm
+N_PER_MM2 = 1e6    # Pa per N/mm^2
+
+
+def read_csv(name, folder=DATA_DIR):
+    """(the # source line without '#', list of row dicts) of a reference CSV."""
+    path = os.path.join(folder, name)
+    with open(path, newline="") as f:
+        comment = f.readline()
+        if not comment.startswith("#"):
+            raise RollerRigError(f"{path}: the first line should be a # source comment")
+        rows = list(csv.DictReader(f))
+    return comment[1:].strip(), rows
+
+
+def _header_number(comment, pattern, what, name):
+    m = re.search(pattern, comment)
+    if m is None:
+        raise RollerRigError(f"{name}: cannot read {what} from the header line")
+    return m.groups() if len(m.groups()) > 1 else m.group(1)
+
+
+def _frozen(arr):
+    arr = np.asarray(arr, dtype=float)
+    arr.setflags(write=False)
+    return arr
+
+
+# --------------------------------------------------------------------------
+# the 3220 cases of CONTACT's test_table
+# --------------------------------------------------------------------------
+
+class ExactCases(NamedTuple):
+    """The test table in SI.  Arrays have one element per case (3220)."""
+
+    cx: np.ndarray          #: longitudinal creepage [-]
+    cy: np.ndarray          #: lateral creepage [-]
+    cphi: np.ndarray        #: spin [rad/m]
+    a: np.ndarray           #: semi-axis along the rolling direction [m]
+    b: np.ndarray           #: lateral semi-axis [m]
+    cp: np.ndarray          #: the table's length scale of the case's a/b [m]
+    Fx: np.ndarray          #: exact FX / (mu N), on the wheel
+    Fy: np.ndarray          #: exact FY / (mu N)
+    Mz: np.ndarray          #: exact MZ / (mu N cp)
+    pct_slip: np.ndarray    #: exact share of the area in slip [%]
+    a_over_b: np.ndarray    #: ellipticity (0.2, 0.5, 1, 2, 5)
+    spin: np.ndarray        #: normalised spin level (0, 0.5, 1, 2)
+    angle: np.ndarray       #: creepage direction atan2(cy, cx) [rad] (-pi/2 .. pi/2)
+    magnitude: np.ndarray   #: normalised creepage magnitude (0 .. 12)
+    N: float                #: normal load [N]
+    mu: float               #: friction coefficient
+    G: float                #: shear modulus [Pa]
+    nu: float               #: Poisson's ratio
+    source: str             #: the CSV's source line
+
+
+def _table_header_params(comment):
+    """{a/b: (rho [mm], cp [mm])} from the header line of the test table."""
+    found = re.findall(r"a/b=\s*([0-9.]+):\s*rho=\s*([0-9.]+)\s*,\s*cp=\s*([0-9.]+)", comment)
+    params = {float(aob): (float(rho), float(cp)) for aob, rho, cp in found}
+    if len(params) != 5:
+        raise RollerRigError(f"{TABLE_FILE}: cannot read rho, cp per a/b from the header "
+                             f"line (found {found})")
+    return params
+
+
+@functools.lru_cache(maxsize=None)
+def exact_cases():
+    """The 3220 exact cases decoded as the CSV's header line says, in SI (cached;
+    the arrays are read-only).
+
+    cx = m mu cos(ang) cp/rho, cy = m mu sin(ang) cp/rho, cphi = mu s / rho,
+    with m the magnitude, ang the direction, s the spin level and rho, cp
+    (mm) per a/b from the header; a = aa, b = aa / (a/b); G = 82000 N/mm^2,
+    N = 82000 N, mu = 0.3, nu = 0.28 (test_table.f90's settings).
+    """
+    comment, rows = read_csv(TABLE_FILE)
+    name = TABLE_FILE
+    G = float(_header_number(comment, r"\bG=\s*([0-9.]+)", "G", name)) * N_PER_MM2
+    nu = float(_header_number(comment, r"\bnu=\s*([0-9.]+)", "nu", name))
+    mu = float(_header_number(comment, r"\bmu=\s*([0-9.]+)", "mu", name))
+    N = float(_header_number(comment, r"\bFN=\S*?([0-9.]+) N", "FN", name))
+    params = _table_header_params(comment)
+    col = {k: np.array([float(r[k]) for r in rows])
+           for k in ("a_over_b", "aa_mm", "spin_norm", "creep_angle_rad", "creep_mgn",
+                     "Fx", "Fy", "Mz", "pct_slip")}
+    aob = col["a_over_b"]
+    rho = np.array([params[v][0] for v in aob])       # mm
+    cp = np.array([params[v][1] for v in aob])        # mm
+    mgn, ang = col["creep_mgn"], col["creep_angle_rad"]
+    return ExactCases(
+        cx=_frozen(mgn * mu * np.cos(ang) * cp / rho),
+        cy=_frozen(mgn * mu * np.sin(ang) * cp / rho),
+        cphi=_frozen(mu * col["spin_norm"] / rho / MM),      # rad/mm -> rad/m
+        a=_frozen(col["aa_mm"] * MM), b=_frozen(col["aa_mm"] / aob * MM), cp=_frozen(cp * MM),
+        Fx=_frozen(col["Fx"]), Fy=_frozen(col["Fy"]), Mz=_frozen(col["Mz"]),
+        pct_slip=_frozen(col["pct_slip"]), a_over_b=_frozen(aob),
+        spin=_frozen(col["spin_norm"]), angle=_frozen(ang), magnitude=_frozen(mgn),
+        N=N, mu=mu, G=G, nu=nu, source=comment)
+
+
+# --------------------------------------------------------------------------
+# scoring a method
+# --------------------------------------------------------------------------
+
+#: creep_forces arguments that the reference cases set
+_CASE_ARGS = ("cx", "cy", "cphi", "a", "b", "N", "mu", "G", "nu")
+_OPTION_ARGS = tuple(p for p in inspect.signature(creep_forces).parameters
+                     if p not in _CASE_ARGS)
+
+
+def _check_options(func, options, fixed):
+    for k in options:
+        if k in fixed:
+            raise RollerRigError(f"{func}: {k} is set by the reference cases, not an option")
+        if k not in _OPTION_ARGS:
+            raise RollerRigError(f"{func}: unknown option {k!r}; creep_forces takes "
+                                 f"{', '.join(o for o in _OPTION_ARGS if o != 'method')}")
+
+
+def _stats(err):
+    """{"median", "p95", "max", "n", "n_failed"} of the finite errors."""
+    err = np.asarray(err, dtype=float)
+    ok = np.isfinite(err)
+    good = err[ok]
+    if good.size == 0:
+        return dict(median=math.nan, p95=math.nan, max=math.nan, n=0,
+                    n_failed=int(err.size))
+    return dict(median=float(np.median(good)), p95=float(np.percentile(good, 95)),
+                max=float(np.max(good)), n=int(good.size), n_failed=int(err.size - good.size))
+
+
+class ScoreResult(NamedTuple):
+    """A method's errors on the 3220 exact cases.
+
+    Statistics are dicts {"median", "p95", "max", "n", "n_failed"} of the
+    force error |(dFx, dFy)| / (mu N) over the cases that did not fail;
+    mz_* the same of |dMz| / (mu N cp) (the Polach method has no spin
+    moment, so its Mz error is the exact |Mz|)."""
+
+    method: str
+    options: dict           #: the creep_forces options given
+    cases: ExactCases
+    fx: np.ndarray          #: the method's FX / (mu N) per case
+    fy: np.ndarray
+    mz: np.ndarray          #: the method's MZ / (mu N cp)
+    status: np.ndarray      #: creep_forces status per case
+    error: np.ndarray       #: |(dFx, dFy)| / (mu N) per case (NaN where the method failed)
+    mz_error: np.ndarray    #: |dMz| / (mu N cp) per case
+    overall: dict
+    by_spin: dict           #: {spin level: statistics}
+    by_ellipticity: dict    #: {a/b: statistics}
+    mz_overall: dict
+    mz_by_spin: dict
+    mz_by_ellipticity: dict
+
+    @property
+    def label(self):
+        """The method and its options, e.g. "fastsim (nx=20, ny=20)"."""
+        shown = {k: v for k, v in self.options.items() if k != "errors"}
+        if not shown:
+            return self.method
+        return f"{self.method} ({', '.join(f'{k}={v!r}' for k, v in shown.items())})"
+
+    def table(self):
+        """A text table of the statistics, overall and split by spin and a/b."""
+        return table(self)
+
+
+def score(method="fastsim", *, cases=None, **creep_options):
+    """Score a creep-force method against the 3220 exact cases.
+
+    method: a name of rollerrig.METHODS; creep_options: any other keyword
+    of creep_forces (nx, ny, grid, bound, k0, kA, friction, ...; errors
+    defaults to "raise", "warn" or "ignore" keeps the failed cases as NaN,
+    counted in n_failed).  cases: an ExactCases (default exact_cases()).
+    Returns a ScoreResult.  Unknown methods or options raise RollerRigError.
+    """
+    func = "score"
+    _check_options(func, creep_options, _CASE_ARGS)
+    t = exact_cases() if cases is None else cases
+    opts = dict(creep_options)
+    opts.setdefault("errors", "raise")
+    f = creep_forces(t.cx, t.cy, t.cphi, a=t.a, b=t.b, N=t.N, mu=t.mu, G=t.G, nu=t.nu,
+                     method=method, **opts)
+    scale = t.mu * t.N
+    fx, fy, mz = f.fx / scale, f.fy / scale, f.mz / (scale * t.cp)
+    err = np.hypot(fx - t.Fx, fy - t.Fy)
+    mz_err = np.abs(mz - t.Mz)
+
+    def split(e, key):
+        return {float(v): _stats(e[key == v]) for v in np.unique(key)}
+
+    return ScoreResult(
+        method=method, options=dict(creep_options), cases=t, fx=fx, fy=fy, mz=mz,
+        status=f.status, error=err, mz_error=mz_err,
+        overall=_stats(err), by_spin=split(err, t.spin),
+        by_ellipticity=split(err, t.a_over_b), mz_overall=_stats(mz_err),
+        mz_by_spin=split(mz_err, t.spin), mz_by_ellipticity=split(mz_err, t.a_over_b))
+
+
+def table(results, split=True):
+    """A text table of one or more ScoreResults (a result, a list, or a dict
+    of them): per method the overall row, then (split=True) a row per spin
+    level and per a/b.  Columns: median, p95, max of |dF|/(mu N), the number
+    of cases, and median, p95 of |dMz|/(mu N cp)."""
+    if isinstance(results, ScoreResult):
+        results = [results]
+    elif isinstance(results, dict):
+        results = list(results.values())
+    results = list(results)
+    width = max([len(r.label) for r in results] + [len("method")]) + 2
+    head = (f"{'method':<{width}}{'cases':<10}{'median':>9}{'p95':>9}{'max':>9}{'n':>10}"
+            f"{'Mz med':>9}{'Mz p95':>9}")
+    lines = [head, "-" * len(head)]
+    for r in results:
+        rows = [("all", r.overall, r.mz_overall)]
+        if split:
+            rows += [(f"spin {k:g}", s, r.mz_by_spin[k]) for k, s in r.by_spin.items()]
+            rows += [(f"a/b {k:g}", s, r.mz_by_ellipticity[k])
+                     for k, s in r.by_ellipticity.items()]
+        for i, (name, s, m) in enumerate(rows):
+            label = r.label if i == 0 else ""
+            n = f"{s['n']}" + (f"+{s['n_failed']}!" if s["n_failed"] else "")
+            lines.append(f"{label:<{width}}{name:<10}{s['median']:>9.4f}{s['p95']:>9.4f}"
+                         f"{s['max']:>9.4f}{n:>10}{m['median']:>9.4f}{m['p95']:>9.4f}")
+    lines.append("|dF|/(mu N) against CONTACT's exact theory (11 x 11 grid); "
+                 "Mz: |dMz|/(mu N cp)" + (""
+                 if not any(r.overall["n_failed"] for r in results)
+                 else "; n+k!: k cases failed (NaN), left out"))
+    return "\n".join(lines)
+
+
+def _map_grid(result, spin, quantity, reduce, ellipticity):
+    """(angles, magnitudes, values[n_mag, n_ang]) of one spin level."""
+    t = result.cases
+    err = result.error if quantity == "force" else result.mz_error
+    sel = t.spin == spin
+    if ellipticity is not None:
+        sel &= t.a_over_b == ellipticity
+    angles, magnitudes = np.unique(t.angle), np.unique(t.magnitude)
+    ia = np.searchsorted(angles, t.angle[sel])
+    im = np.searchsorted(magnitudes, t.magnitude[sel])
+    stack = np.full((magnitudes.size, angles.size, np.unique(t.a_over_b).size), np.nan)
+    count = np.zeros((magnitudes.size, angles.size), dtype=int)
+    for i, j, e in zip(im, ia, err[sel]):
+        stack[i, j, count[i, j]] = e
+        count[i, j] += 1
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)      # all-NaN cells stay NaN
+        values = {"max": np.nanmax, "median": np.nanmedian, "mean": np.nanmean}[reduce](
+            stack, axis=2)
+    return angles, magnitudes, values
+
+
+def error_map(result, ax=None, *, spin=None, quantity="force", reduce="max",
+              ellipticity=None, vmax=None, cmap="viridis", colorbar=None, title=True):
+    """Draw a ScoreResult's error over the creepage direction / magnitude plane.
+
+    One panel per spin level (ax None: a new figure; or a sequence of as many
+    axes), or the one level `spin` on the axes `ax`.  x: the direction of
+    the creepage atan2(cy, cx) in degrees; y: its normalised magnitude (one
+    row per table value, not to scale).  Each cell shows the error of the
+    5 ellipticities reduced by `reduce` ("max", "median" or "mean"), or of
+    the one a/b `ellipticity`.  quantity: "force" (|dF|/(mu N)) or "mz"
+    (|dMz|/(mu N cp)).  vmax: top of the colour scale (default the largest
+    value drawn).  colorbar: add one (default: when a figure is made here).
+    Returns the axes (an array for several panels).  Needs matplotlib.
+    """
+    func = "error_map"
+    import matplotlib.pyplot as plt
+
+    if not isinstance(result, ScoreResult):
+        raise RollerRigError(f"{func}: result must be a ScoreResult from score(), "
+                             f"got {type(result).__name__}")
+    if quantity not in ("force", "mz"):
+        raise RollerRigError(f"{func}: quantity must be 'force' or 'mz', got {quantity!r}")
+    if reduce not in ("max", "median", "mean"):
+        raise RollerRigError(f"{func}: reduce must be 'max', 'median' or 'mean', "
+                             f"got {reduce!r}")
+    t = result.cases
+    levels = [float(v) for v in np.unique(t.spin)]
+    if ellipticity is not None and float(ellipticity) not in set(t.a_over_b.tolist()):
+        raise RollerRigError(f"{func}: ellipticity must be one of "
+                             f"{sorted(set(t.a_over_b.tolist()))}, got {ellipticity!r}")
+    if spin is not None:
+        if float(spin) not in levels:
+            raise RollerRigError(f"{func}: spin must be one of {levels}, got {spin!r}")
+        levels = [float(spin)]
+    made = ax is None
+    if made:
+        fig, axes = plt.subplots(1, len(levels), figsize=(2.6 * len(levels) + 1.2, 4.4),
+                                 sharey=True, squeeze=False, constrained_layout=True)
+        axes = axes[0]
+    else:
+        axes = np.atleast_1d(np.asarray(ax, dtype=object)).ravel()
+        if axes.size != len(levels):
+            raise RollerRigError(f"{func}: {len(levels)} spin level(s) to draw but "
+                                 f"{axes.size} axes given; pass spin= for one panel")
+        fig = axes[0].figure
+    grids = [_map_grid(result, s, quantity, reduce, ellipticity) for s in levels]
+    top = vmax if vmax is not None else max(np.nanmax(g[2]) for g in grids)
+    mesh = None
+    for axi, s, (angles, magnitudes, values) in zip(axes, levels, grids):
+        deg = np.degrees(angles)
+        step = deg[1] - deg[0] if deg.size > 1 else 30.0
+        xe = np.concatenate([deg - step / 2, [deg[-1] + step / 2]])
+        ye = np.arange(magnitudes.size + 1) - 0.5
+        mesh = axi.pcolormesh(xe, ye, values, cmap=cmap, vmin=0.0, vmax=top, shading="flat")
+        axi.set_xticks(deg[::max(1, deg.size // 4)] if deg.size > 7 else deg)
+        axi.set_xticklabels([f"{d:.0f}" for d in axi.get_xticks()])
+        show = [i for i, m in enumerate(magnitudes) if m in (0, 0.5, 1.1, 2, 3, 5, 8, 12)] \
+            or list(range(0, magnitudes.size, 3))
+        axi.set_yticks(show)
+        axi.set_yticklabels([f"{magnitudes[i]:g}" for i in show])
+        axi.set_xlabel("creepage direction [deg]")
+        if title:
+            sel = t.spin == s
+            if ellipticity is not None:
+                sel = sel & (t.a_over_b == float(ellipticity))
+            e = (result.error if quantity == "force" else result.mz_error)[sel]
+            st = _stats(e)
+            axi.set_title(f"spin {s:g}: median {st['median']:.3f}\n"
+                          f"p95 {st['p95']:.3f}, max {st['max']:.3f}", fontsize=9)
+    if made or axes[0].get_subplotspec() is None or axes[0].get_subplotspec().is_first_col():
+        axes[0].set_ylabel("creepage magnitude (normalised)")
+    if colorbar or (colorbar is None and made):
+        what = "|dF| / (mu N)" if quantity == "force" else "|dMz| / (mu N cp)"
+        how = f"a/b = {ellipticity:g}" if ellipticity is not None else f"{reduce} over a/b"
+        fig.colorbar(mesh, ax=list(axes), label=f"{what}, {how}", shrink=0.9)
+    if made and title:
+        fig.suptitle(f"{result.label} against CONTACT's exact theory", fontsize=10)
+    return axes[0] if len(axes) == 1 else axes
+
+
+# --------------------------------------------------------------------------
+# creep curves (CONTACT's tractcurv example)
+# --------------------------------------------------------------------------
+
+class CreepCurve(NamedTuple):
+    """One series of creep_curves_exact_vs_fastsim.csv in SI.
+
+    case: the creep_forces arguments of the physical case (a, b, N, mu, G,
+    nu, speed, friction: CONTACT's static coefficient and its falling
+    friction law as FallingFriction(A = FKIN/mu, B = ln 2/SABSH1));
+    method, options: the rollerrig method and options that reproduce how
+    CONTACT computed the series (method None for the exact theory, whose
+    options are only the grid); options hold the series' grid nx, ny, read
+    from the header."""
+
+    series: int
+    description: str
+    cx: np.ndarray          #: longitudinal creepage [-] (cy = cphi = 0)
+    fx: np.ndarray          #: FX [N] on the wheel
+    fx_n: np.ndarray        #: FX / (mu N), mu the series' static coefficient
+    case: dict
+    method: Optional[str]
+    options: dict
+    note: str               #: what rollerrig does not model of the series, if anything
+
+
+def _curve_settings(comment):
+    name = CURVES_FILE
+    a, b = _header_number(comment, r"\(a=([0-9.]+), b=([0-9.]+) mm\)", "a, b", name)
+    nx, ny = _header_number(comment, r"grid (\d+)x(\d+)", "the grid", name)
+    case = dict(a=float(a) * MM, b=float(b) * MM,
+                N=float(_header_number(comment, r"FN=([0-9.]+) N", "FN", name)),
+                G=float(_header_number(comment, r"G=([0-9.]+) N/mm\^2", "G", name)) * N_PER_MM2,
+                nu=float(_header_number(comment, r"nu=([0-9.]+)", "nu", name)),
+                speed=float(_header_number(comment, r"V=([0-9.]+) m/s", "V", name)))
+    coulomb = float(_header_number(comment, r"static friction coefficient: ([0-9.]+) in",
+                                   "FSTAT", name))
+    falling = {int(s): (float(k), float(e), float(h)) for s, k, e, h in re.findall(
+        r"series (\d) uses (?:exponential falling friction )?FKIN=([0-9.]+), "
+        r"FEXP1=([0-9.]+), SABSH1=([0-9.]+) mm/s", comment)}
+    k0, alpha, beta = _header_number(
+        comment, r"K0_MF=([0-9.]+), ALFAMF=([0-9.]+), BETAMF=([0-9.]+)",
+        "the modified FASTSIM parameters", name)
+    layer = _header_number(comment, r"(interfacial layer [^;]*)", "the layer", name)
+    return (case, dict(nx=int(nx), ny=int(ny), grid="rect", bound="parabolic"), coulomb,
+            falling, dict(k0=float(k0), alpha_inf=float(alpha), beta=float(beta)), layer)
+
+
+@functools.lru_cache(maxsize=None)
+def _creep_curves():
+    comment, rows = read_csv(CURVES_FILE)
+    case0, grid, coulomb, falling, modified, layer = _curve_settings(comment)
+    out = {}
+    for k in sorted({int(r["series"]) for r in rows}):
+        sel = [r for r in rows if int(r["series"]) == k]
+        desc = sel[0]["series_description"]
+        case = dict(case0, mu=coulomb, friction=None)
+        if k in falling:
+            fkin, fexp, sabsh = falling[k]
+            mu0 = fkin + fexp
+            case.update(mu=mu0, friction=FallingFriction(A=fkin / mu0,
+                                                         B=math.log(2.0) / (sabsh * MM)))
+        low = desc.lower()
+        note = ""
+        if low.startswith("exact"):
+            method, options = None, dict(nx=grid["nx"], ny=grid["ny"])
+            if "layer" in low:
+                note = f"{layer}: not modelled by rollerrig"
+        elif "modified fastsim" in low:
+            method, options = "modified_fastsim", dict(grid, **modified)
+        elif "fastsim" in low:
+            method, options = "fastsim", dict(grid)
+        else:
+            raise RollerRigError(f"{CURVES_FILE}: series {k}: unknown method {desc!r}")
+        out[k] = CreepCurve(
+            series=k, description=desc,
+            cx=_frozen([float(r["cksi"]) for r in sel]),
+            fx=_frozen([float(r["FX"]) for r in sel]),
+            fx_n=_frozen([float(r["fx_n"]) for r in sel]),
+            case=case, method=method, options=options, note=note)
+    return out
+
+
+def creep_curves():
+    """{series number: CreepCurve} of CONTACT's creep-curve example: 1 exact
+    theory, Coulomb mu = 0.33; 2 exact theory with falling friction and an
+    interfacial layer (mu0 = 0.33); 3 CONTACT's FASTSIM (parabolic bound,
+    three flexibilities), mu = 0.33; 4 CONTACT's modified FASTSIM (k0, alpha_inf,
+    beta) with falling friction, mu0 = 0.36.  a = 6.304 mm, b = 12.61 mm,
+    N = 106.7 kN, G = 82 GPa, nu = 0.28, V = 10 m/s; all read from the header."""
+    return dict(_creep_curves())
+
+
+class CurveScore(NamedTuple):
+    series: int
+    description: str
+    cx: np.ndarray
+    reference: np.ndarray   #: CONTACT's FX / (mu N)
+    model: np.ndarray       #: the method's FX / (mu N)
+    error: np.ndarray       #: |dFx| / (mu N) per point
+    rms: float
+    max: float
+
+
+def score_curves(method="fastsim", series=None, **opts):
+    """Compare a method with each creep-curve series.
+
+    Each series is computed with its physical case (CreepCurve.case: load,
+    ellipse, static friction, falling friction law, speed) and the method's
+    options opts (creep_forces keywords; defaults are creep_forces', not
+    the series' grid: pass nx, ny from CreepCurve.options for that).
+    series: a series number or a list (default all).  Returns {series:
+    CurveScore} with the RMS and max of |dFx| / (mu N) over the series'
+    points, mu the series' static coefficient.
+    """
+    func = "score_curves"
+    _check_options(func, opts, ("cx", "cy", "cphi", "a", "b", "N", "mu", "G", "nu"))
+    curves = _creep_curves()
+    if series is None:
+        wanted = sorted(curves)
+    else:
+        wanted = [series] if isinstance(series, (int, np.integer)) else list(series)
+        bad = [s for s in wanted if s not in curves]
+        if bad:
+            raise RollerRigError(f"{func}: series must be among {sorted(curves)}, got {bad}")
+    out = {}
+    for k in wanted:
+        c = curves[k]
+        kw = dict(c.case)
+        kw.update(opts)
+        kw.setdefault("errors", "raise")
+        f = creep_forces(c.cx, method=method, **kw)
+        model = f.fx / (c.case["mu"] * c.case["N"])
+        err = np.abs(model - c.fx_n)
+        out[k] = CurveScore(series=k, description=c.description, cx=c.cx,
+                            reference=c.fx_n, model=model, error=err,
+                            rms=float(np.sqrt(np.mean(err ** 2))), max=float(np.max(err)))
+    return out
