@@ -23,15 +23,17 @@ typedef struct {
     double sr;        /* roller coordinate below */
     double zr, zr1, zr2;
     double gap, g1, g2;   /* gap and its derivatives along s */
+    int kw, kr;           /* spline interval hints */
 } probe;
 
 /* Map wheel profile coordinate s; returns 0, or a status if s falls off
- * either profile. */
+ * either profile.  q->kw, q->kr carry the spline intervals from call to
+ * call (a scan along s finds them in O(1)). */
 static int probe_at(const rr_wheel_roller *p, double y_ws, double z_ws, double c, double sn,
                     double s, probe *q)
 {
     double zw, dsr, ddsr;
-    int st = rr_spline_eval(&p->wheel, s, &zw, &q->zw1, &q->zw2);
+    int st = rr_spline_eval_at(&p->wheel, s, &q->kw, &zw, &q->zw1, &q->zw2);
     if (st)
         return st;
     {
@@ -44,7 +46,7 @@ static int probe_at(const rr_wheel_roller *p, double y_ws, double z_ws, double c
         q->ddZ = q->zw2 * c;
     }
     q->sr = p->side * q->Y - p->roller_y;
-    st = rr_spline_eval(&p->roller, q->sr, &q->zr, &q->zr1, &q->zr2);
+    st = rr_spline_eval_at(&p->roller, q->sr, &q->kr, &q->zr, &q->zr1, &q->zr2);
     if (st)
         return st;
     dsr = p->side * q->dY;
@@ -75,6 +77,7 @@ int rr_contact_search(const rr_wheel_roller *p, double y_ws, double z_ws, double
     probe q;
     int i, ok = 0, it;
 
+    q.kw = q.kr = -1;
     if (!isfinite(y_ws) || !isfinite(z_ws) || !isfinite(roll)) {
         point_nan(out);
         return RR_ERR_NONFINITE;

@@ -35,6 +35,12 @@ int rr_spline_init(int n, const double *s, const double *z, double *m, double *w
 
 int rr_spline_eval(const rr_spline *sp, double s, double *z, double *d1, double *d2)
 {
+    int k = -1;
+    return rr_spline_eval_at(sp, s, &k, z, d1, d2);
+}
+
+int rr_spline_eval_at(const rr_spline *sp, double s, int *k, double *z, double *d1, double *d2)
+{
     int lo = 0, hi = sp->n - 1;
     double h, a, b;
 
@@ -44,6 +50,17 @@ int rr_spline_eval(const rr_spline *sp, double s, double *z, double *d1, double 
         if (d2) *d2 = NAN;
         return isfinite(s) ? RR_ERR_GEOMETRY : RR_ERR_NONFINITE;
     }
+    /* the hinted interval or its right neighbour (a scan moving on), else bisect */
+    if (*k >= 0 && *k < sp->n - 1 && sp->s[*k] <= s) {
+        /* strict upper bounds: the interval bisection would pick */
+        if (s < sp->s[*k + 1]) {
+            lo = *k;
+            hi = lo + 1;
+        } else if (*k + 2 < sp->n && s < sp->s[*k + 2]) {
+            lo = *k + 1;
+            hi = lo + 1;
+        }
+    }
     while (hi - lo > 1) {
         const int mid = (lo + hi) / 2;
         if (sp->s[mid] <= s)
@@ -51,6 +68,7 @@ int rr_spline_eval(const rr_spline *sp, double s, double *z, double *d1, double 
         else
             hi = mid;
     }
+    *k = lo;
     h = sp->s[hi] - sp->s[lo];
     a = (sp->s[hi] - s) / h;
     b = 1.0 - a;
