@@ -210,13 +210,12 @@ def _execute(label, task, items, sizes, describe, store, common, *, backend, slo
                 # cannot be stopped from here) end before we return
                 pool.shutdown(wait=True, cancel_futures=True)
         else:
-            from distributed import as_completed
             tag = f"rollerrig-{label.replace('(', '-').rstrip(')')}-{uuid.uuid4().hex[:8]}"
             futures = client.map(partial(task, **common), items,
                                  key=[f"{tag}-{k}" for k in range(n)], pure=False)
             index = {f.key: k for k, f in enumerate(futures)}
             try:
-                for fut in as_completed(futures):
+                for fut in _completed(client, futures):
                     k = index[fut.key]
                     try:
                         res = fut.result()
@@ -291,6 +290,13 @@ def _as_attr(value):
     if isinstance(value, (numbers.Integral, numbers.Real, str)):
         return value
     return repr(value)
+
+
+def _completed(client, futures):
+    """dask's as_completed on `client`, which need not be the default client."""
+    from distributed import as_completed
+    with client.as_current():
+        yield from as_completed(futures)
 
 
 def sweep(func, grid, *, chunk=None, backend="threads", workers=None, client=None,

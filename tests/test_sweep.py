@@ -80,6 +80,17 @@ def test_dask_cluster_matches_threads_bitwise(dask_client):
     assert_bitwise(dask, direct())
 
 
+def test_dask_client_need_not_be_the_default(dask_client):
+    """A second client on the same cluster, not set as default, is the one used."""
+    distributed = pytest.importorskip("distributed")
+    other = distributed.Client(dask_client.cluster, set_as_default=False)
+    try:
+        res = sweep("creep_forces", GRID, client=other, progress=False, **FIXED)
+        assert_bitwise(res, direct())
+    finally:
+        other.close()
+
+
 def test_dask_runs_a_callable_and_rig_sweeps(dask_client):
     def ratio(cx, mu):
         f = rr.creep_forces(cx, a=4e-3, b=4e-3, N=500.0, mu=mu, nx=10, ny=10)
