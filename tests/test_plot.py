@@ -1,0 +1,272 @@
+"""rollerrig.plot: every function draws the expected artists on a new figure
+or on the axes given, and rejects bad input with RollerRigError."""
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import rollerrig as rr
+
+matplotlib = pytest.importorskip("matplotlib")
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.axes import Axes  # noqa: E402
+from matplotlib.collections import LineCollection, PolyCollection  # noqa: E402
+from matplotlib.quiver import Quiver  # noqa: E402
+
+from rollerrig import plot as rp  # noqa: E402
+
+from conftest import ROOT  # noqa: E402
+
+CASE = dict(a=6.304e-3, b=12.61e-3, N=106.7e3, G=8.2e10, nu=0.28, speed=10.0)
+MU = 0.33
+
+
+@pytest.fixture(autouse=True)
+def _close_figures():
+    yield
+    plt.close("all")
+
+
+@pytest.fixture(scope="module")
+def run():
+    return rr.simulate(duration=2.0, targets=[0.03], target_times=[0.0])
+
+
+@pytest.fixture(scope="module")
+def polach_fit():
+    s2 = rr.reference.creep_curves()[2]
+    kw = {k: v for k, v in s2.case.items() if k not in ("mu", "friction")}
+    return rr.fit_polach(s2.cx, s2.fx, **kw), s2
+
+
+def labels(ax):
+    return [line.get_label() for line in ax.get_lines()]
+
+
+def test_matplotlib_is_imported_on_use_only():
+    code = ("import sys, rollerrig, rollerrig.plot; "
+            "print('matplotlib' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         cwd=os.path.join(ROOT, "tests"), check=True).stdout
+    assert out.strip() == "False"
+
+
+# ------------------------------------------------------------------ creep curves
+
+def test_creep_curves_with_reference_normalises_by_its_mu_N():
+    cx = np.geomspace(1e-5, 0.25, 100)
+    ref = rr.reference.creep_curves()[1]
+    forces = {m: rr.creep_forces(cx, method=m, mu=MU, **CASE) for m in ("fastsim", "polach")}
+    ax = rp.creep_curves(cx, forces, reference=ref, title="Coulomb")
+    assert isinstance(ax, Axes)
+    assert labels(ax) == ["fastsim", "polach", "exact theory (CONTACT), series 1"]
+    assert ax.get_xscale() == "log"
+    assert ax.get_ylabel() == "-fx / (mu N)"
+    assert ax.get_legend() is not None and ax.get_title() == "Coulomb"
+    y = ax.get_lines()[0].get_ydata()
+    np.testing.assert_allclose(y, -forces["fastsim"].fx / (MU * CASE["N"]))
+    np.testing.assert_allclose(ax.get_lines()[2].get_ydata(), -ref.fx / (MU * CASE["N"]))
+
+
+def test_creep_curves_on_given_axes_and_units():
+    fig, (a1, a2) = plt.subplots(1, 2)
+    cx = np.linspace(-0.01, 0.01, 41)
+    f = rr.creep_forces(cx, method="polach", mu=MU, **CASE)
+    out = rp.creep_curves(cx, {"polach": f.fx, "again": f}, ax=a2)
+    assert out is a2 and len(a1.get_lines()) == 0 and len(a2.get_lines()) == 2
+    assert a2.get_xscale() == "linear" and a2.get_ylabel() == "-fx [N]"
+    out = rp.creep_curves(cx, f, N=CASE["N"], sign=1, ax=a1, component="|f|")
+    assert out is a1 and a1.get_ylabel() == "|f| / N" and a1.get_legend() is None
+
+
+def test_creep_curve_single_line():
+    cx = np.geomspace(1e-4, 0.1, 20)
+    f = rr.creep_forces(cx, method="fastsim", mu=MU, **CASE)
+    ax = rp.creep_curve(cx, f, label="fastsim", mu=MU, N=CASE["N"], color="r")
+    assert labels(ax) == ["fastsim"] and ax.get_lines()[0].get_color() == "r"
+    ax2 = rp.creep_curve(cx, f.fx, ax=ax, label="again")
+    assert ax2 is ax and len(ax.get_lines()) == 2
+    assert ax.get_ylabel() == "-fx / (mu N)"                 # the first call's labels stay
+
+
+@pytest.mark.parametrize("call", [
+    lambda: rp.creep_curves([1e-3, 2e-3], {"x": [1.0]}),                  # length
+    lambda: rp.creep_curves([1e-3], {"x": "abc"}),                        # type
+    lambda: rp.creep_curves([1e-3], {}),                                  # empty
+    lambda: rp.creep_curves([1e-3], [1.0], mu=0.3),                       # mu without N
+    lambda: rp.creep_curves([1e-3], [1.0], N=-1.0),
+    lambda: rp.creep_curves([1e-3], [1.0], reference=[1, 2]),
+    lambda: rp.creep_curves([1e-3], [1.0], component="mz"),
+    lambda: rp.creep_curves([1e-3], [1.0], ax="axes"),
+    lambda: rp.creep_curve([1e-3], [1.0], sign=0),
+    lambda: rp.creep_curve([[1e-3]], [1.0]),
+])
+def test_creep_curves_bad_input(call):
+    with pytest.raises(rr.RollerRigError):
+        call()
+
+
+# ------------------------------------------------------------------ traction field
+
+def test_traction_field_artists():
+    t = rr.fastsim_field(1.0e-3, 0.5e-3, 0.3, mu=MU, nx=20, ny=20, **CASE)
+    ax = rp.traction_field(t)
+    kinds = [type(c) for c in ax.collections]
+    assert kinds == [PolyCollection, PolyCollection, LineCollection, Quiver]
+    assert [c.get_label() for c in ax.collections] == [
+        "elements", "slip area", "adhesion/slip boundary", "tractions"]
+    inside = t.pn > 0
+    cells = ax.collections[0]
+    assert len(cells.get_paths()) == np.count_nonzero(inside)
+    np.testing.assert_allclose(np.sort(cells.get_array()),
+                               np.sort(np.hypot(t.px, t.py)[inside] * 1e-6))
+    assert len(ax.collections[1].get_paths()) == np.count_nonzero(inside & t.slip)
+    assert len(ax.collections[2].get_segments()) > 0
+    assert [h.get_text() for h in ax.get_legend().get_texts()] == ["adhesion", "slip"]
+    assert len(ax.figure.axes) == 2                      # the colour bar
+    assert "slip area" in ax.get_title()
+
+
+def test_traction_field_on_given_axes_without_slip_or_arrows():
+    t = rr.fastsim_field(2e-4, 0.0, 0.0, mu=MU, nx=12, ny=10, grid="strips", **CASE)
+    fig, ax = plt.subplots()
+    out = rp.traction_field(t, ax=ax, quantity="slip", show_slip=False, arrows=False)
+    assert out is ax and len(ax.collections) == 1 and ax.get_legend() is None
+    assert len(fig.axes) == 1                            # no colour bar on given axes
+    # all elements adhere at a tiny creepage: no slip hatch, boundary still drawn
+    t0 = rr.fastsim_field(1e-7, 0.0, 0.0, mu=MU, nx=12, ny=10, **CASE)
+    ax = rp.traction_field(t0, quantity="px", colorbar=False)
+    assert [c.get_label() for c in ax.collections] == [
+        "elements", "adhesion/slip boundary", "tractions"]
+
+
+@pytest.mark.parametrize("call", [
+    lambda t: rp.traction_field(rr.creep_forces(1e-3, mu=MU, **CASE)),
+    lambda t: rp.traction_field(t, quantity="shear"),
+    lambda t: rp.traction_field(t, ax=plt.figure()),
+])
+def test_traction_field_bad_input(call):
+    t = rr.fastsim_field(1e-3, mu=MU, nx=8, ny=8, **CASE)
+    with pytest.raises(rr.RollerRigError):
+        call(t)
+
+
+# ------------------------------------------------------------------ the rig run
+
+def test_rig_history_and_force(run):
+    axes = rp.rig_history(run)
+    assert isinstance(axes, np.ndarray) and axes.shape == (2,)
+    assert labels(axes[0]) == ["creepage (contact model)",
+                               "estimate from the encoders (eq. 16)", "target"]
+    assert labels(axes[1]) == ["roller surface speed", "wheel surface speed"]
+    assert axes[1].get_xlabel() == "time [s]"
+    np.testing.assert_array_equal(axes[0].get_lines()[0].get_xdata(), run.time)
+    ax = rp.rig_force(run)
+    assert labels(ax) == ["adhesion (braking) force, both wheels", "mu0 N"]
+    np.testing.assert_allclose(ax.get_lines()[0].get_ydata(), -run.fx)
+
+
+def test_rig_plots_on_given_axes(run):
+    fig, axs = plt.subplots(1, 3)
+    out = rp.rig_history(run, axes=axs[:2])
+    assert out[0] is axs[0] and out[1] is axs[1]
+    assert rp.rig_force(run, ax=axs[2]) is axs[2]
+    assert [len(a.get_lines()) for a in axs] == [3, 2, 2]
+
+
+def test_rig_plots_bad_input(run):
+    with pytest.raises(rr.RollerRigError):
+        rp.rig_history(run.records)
+    with pytest.raises(rr.RollerRigError):
+        rp.rig_force({"fx": 1.0})
+    _, ax = plt.subplots()
+    with pytest.raises(rr.RollerRigError):
+        rp.rig_history(run, axes=ax)                       # needs two
+    with pytest.raises(rr.RollerRigError):
+        rp.plot_run("result", "out")
+
+
+def test_plot_run_writes_both_figures(run, tmp_path):
+    paths = rp.plot_run(run, str(tmp_path / "out"))
+    assert [os.path.basename(p) for p in paths] == ["rig_creepage.png", "rig_force.png"]
+    assert all(os.path.getsize(p) > 1000 for p in paths)
+    assert plt.get_fignums() == []
+
+
+# ------------------------------------------------------------------ profiles
+
+def test_profiles_draws_roller_wheels_and_contact_points():
+    g = rr.RigGeometry.standard()
+    shifts = (0.0, 0.002, 0.004)
+    ax = rp.profiles(g, y_ws=shifts)
+    lab = labels(ax)
+    assert lab[0] == "roller" and len(ax.get_lines()) == 1 + 2 * len(shifts)
+    points = [lbl for lbl in lab if lbl.startswith("y_ws")]
+    assert len(points) == 3 and "+2 mm" in points[1] and "contact angle" in points[1]
+    c = rr.wheelset_contact(g, list(shifts))
+    marker = ax.get_lines()[-1]
+    np.testing.assert_allclose(marker.get_ydata(), [c.left.z[2] * 1e3])
+    np.testing.assert_allclose(marker.get_xdata(), [(c.left.y[2] - g.roller_y) * 1e3])
+    assert len(ax.collections) == 1                          # the roller's fill
+
+
+def test_profiles_right_side_on_given_axes_some_wheels():
+    g = rr.RigGeometry.standard()
+    fig, ax = plt.subplots()
+    out = rp.profiles(g, y_ws=[0.0, -0.004], ax=ax, side="right", wheels=[-0.004],
+                      window=(-60, 30, -35, 10), legend=False)
+    assert out is ax and len(ax.get_lines()) == 1 + 1 + 2 and ax.get_legend() is None
+    assert ax.get_xlim() == (-60.0, 30.0)
+    c = rr.wheelset_contact(g, [0.0, -0.004])
+    np.testing.assert_allclose(ax.get_lines()[-2].get_xdata(),
+                               [(-c.right.y[0] - g.roller_y) * 1e3])
+
+
+@pytest.mark.parametrize("kw", [dict(geometry="S1002"), dict(side="middle"),
+                                dict(y_ws="zero"), dict(y_ws=[]), dict(window=(1, 2))])
+def test_profiles_bad_input(kw):
+    args = dict(geometry=rr.RigGeometry.standard())
+    args.update(kw)
+    with pytest.raises(rr.RollerRigError):
+        rp.profiles(**args)
+
+
+# ------------------------------------------------------------------ fits
+
+def test_fit_plot(polach_fit):
+    res, s2 = polach_fit
+    ax = rp.fit(res, s2.cx, s2.fx, mu=MU)
+    assert isinstance(ax, Axes) and len(ax.get_lines()) == 2
+    assert labels(ax)[0] == "data" and labels(ax)[1].startswith("polach fit: mu0")
+    assert ax.get_ylabel() == "-fx / (mu N)"
+    np.testing.assert_allclose(ax.get_lines()[0].get_ydata(), -s2.fx / (MU * CASE["N"]))
+    line = ax.get_lines()[1]
+    np.testing.assert_allclose(line.get_ydata(),
+                               -res.predict(line.get_xdata()) / (MU * CASE["N"]))
+
+
+def test_fit_plot_with_residuals_on_given_axes(polach_fit):
+    res, s2 = polach_fit
+    fig, axs = plt.subplots(2, 1)
+    out = rp.fit(res, s2.cx, s2.fx, ax=axs, residuals=True, label="Polach")
+    assert out[0] is axs[0] and out[1] is axs[1]
+    assert labels(axs[0]) == ["data", "Polach"]
+    assert len(axs[1].get_lines()) == 2                      # residuals and the zero line
+    np.testing.assert_allclose(axs[1].get_lines()[0].get_ydata(),
+                               -res.residuals / CASE["N"], atol=1e-12)
+
+
+def test_fit_plot_bad_input(polach_fit):
+    res, s2 = polach_fit
+    with pytest.raises(rr.RollerRigError):
+        rp.fit(res.params, s2.cx, s2.fx)
+    with pytest.raises(rr.RollerRigError):
+        rp.fit(res, s2.cx[:-1], s2.fx)
+    with pytest.raises(rr.RollerRigError):
+        rp.fit(res, [s2.cx, s2.cx], [s2.fx, s2.fx])          # one speed fitted
+    _, ax = plt.subplots()
+    with pytest.raises(rr.RollerRigError):
+        rp.fit(res, s2.cx, s2.fx, ax=ax, residuals=True)     # needs two axes
