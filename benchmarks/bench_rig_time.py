@@ -138,8 +138,8 @@ def main(argv=None):
                      f"{verdict(c['max'] <= GOAL_WORST_US)} |")
     L += ["", f"rr.simulate() on the defaults, as a user calls it (contact table built, "
           f"{simulated:g} s simulated): {fmt(whole)} s wall, real-time factor "
-          f"{simulated / whole:.0f}; the table build is a fixed cost of a few tenths of a "
-          "second.", "", "## One step, by integrator and contact method", "",
+          f"{simulated / whole:.0f}; the contact table's build is a fixed cost per call "
+          "(not per step).", "", "## One step, by integrator and contact method", "",
           "rig.run over the paper's schedule (targets 0.04, 0.015, 0.02, 0.03), 4 ms steps, "
           "one plant step per sample, table built outside the timing; best of "
           f"{repeats}.", "", "| variant | us per step | real-time factor |",
