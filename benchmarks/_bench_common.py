@@ -316,3 +316,22 @@ def write_section(path, name, text, legacy="contact"):
     os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, "w") as fh:
         fh.write(new)
+
+
+def bench_args(doc, argv=None):
+    """The command line every benchmark script takes: --quick, --out."""
+    import argparse
+    parser = argparse.ArgumentParser(description=doc.split("\n\n")[0])
+    parser.add_argument("--quick", action="store_true", help="small sizes: a smoke run")
+    parser.add_argument("--out", help="report path (default benchmarks/RESULTS.md, or "
+                        "benchmarks/out/RESULTS-quick.md with --quick)")
+    return parser.parse_args(argv)
+
+
+def publish(args, name, lines):
+    """Write the report `lines` as section `name` of the report file, print it."""
+    path = report_path(args)
+    write_section(path, name, "\n".join(lines))
+    print("\n".join(lines))
+    log(f"written {os.path.relpath(path)}")
+    return 0

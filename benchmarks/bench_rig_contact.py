@@ -27,7 +27,6 @@ or --out PATH, leaving the other sections of that file (bench_contact.py's)
 as they are, and prints it.  Timing is reported, never asserted: the exit
 status is 0 whether or not a goal is met.
 """
-import argparse
 import datetime
 import json
 import math
@@ -44,7 +43,8 @@ import rollerrig as rr
 
 from _bench_common import (ROOT, CProgram, CpuMonitor, command_text, conditions_lines,
                            extension_flags, fmt, interleaved, load_average, log, machine_info,
-                           machine_line, report_path, timed, verdict, write_section)
+                           machine_line, report_path, timed, verdict, write_section,
+                           bench_args)
 
 # Goals of issue 3 (compared in the report; nothing is asserted).
 GOAL_LOOKUP_US = 0.2            # table lookup: <= 0.2 us (per wheel)
@@ -440,11 +440,7 @@ def report(args, info, load0, load1, date, params, toml, bad_params, c, py, kern
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--quick", action="store_true", help="small sizes: a smoke run")
-    parser.add_argument("--out", help="report path (default benchmarks/RESULTS.md, or "
-                        "benchmarks/out/RESULTS-quick.md with --quick)")
-    args = parser.parse_args(argv)
+    args = bench_args(__doc__, argv)
     args.command = command_text(argv)
     out = report_path(args)
     sz = SIZES["quick" if args.quick else "full"]

@@ -8,7 +8,6 @@ the worst-case step of the C real-time program in its fixed-rate loop.
 Timings are the best of several repeats (time.perf_counter), side by side in
 one run; the C program's step times come from its own clock_gettime.
 """
-import argparse
 import datetime
 import os
 import re
@@ -22,8 +21,8 @@ import rollerrig as rr
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from _bench_common import (ROOT, CpuMonitor, best_time, code_state,  # noqa: E402
                            compiler_version, conditions_lines, fmt, load_average, log,
-                           machine_info, machine_line, report_path, command_text, verdict,
-                           write_section)
+                           machine_info, machine_line, command_text, verdict, bench_args,
+                           publish)
 
 GOAL_RTF = 1000.0          # simulated time over wall time at the 4 ms step
 GOAL_WORST_US = 100.0      # worst-case step of the real-time program
@@ -98,11 +97,7 @@ def c_program(quick):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--quick", action="store_true", help="small sizes: a smoke run")
-    parser.add_argument("--out", help="report path (default benchmarks/RESULTS.md, or "
-                        "benchmarks/out/RESULTS-quick.md with --quick)")
-    args = parser.parse_args(argv)
+    args = bench_args(__doc__, argv)
     repeats = 2 if args.quick else 3
     date = datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds")
     load0 = load_average()
@@ -161,11 +156,7 @@ def main(argv=None):
             L.append(f"| {period} ms | failed: {c.get('error', cprog)!r:.200} | | | | |")
     L += ["", "The worst case on this shared 2-core virtual machine includes the host's "
           "scheduling; the median and p99 are the code's."]
-    path = report_path(args)
-    write_section(path, "rig_time", "\n".join(L))
-    print("\n".join(L))
-    log(f"written {os.path.relpath(path)}")
-    return 0
+    return publish(args, "rig_time", L)
 
 
 if __name__ == "__main__":

@@ -14,7 +14,6 @@ their start-up time reported separately.  Every backend's result must be
 bitwise the reference call's.  Timing is reported, never asserted: the exit
 status is 0 whether or not a goal is met.
 """
-import argparse
 import datetime
 import logging
 import os
@@ -30,8 +29,8 @@ from rollerrig.sweep import CHUNK_CASES
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from _bench_common import (CpuMonitor, code_state, command_text,  # noqa: E402
                            compiler_version, conditions_lines, fmt, interleaved,
-                           load_average, log, machine_info, machine_line, report_path,
-                           verdict, write_section)
+                           load_average, log, machine_info, machine_line, verdict,
+                           bench_args, publish)
 
 GOAL_EFFICIENCY = 0.9      # 2-thread scaling efficiency t1 / (2 t2)
 REPEATS = 3
@@ -160,11 +159,7 @@ def bitwise_equal(a, b):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--quick", action="store_true", help="1e5 cases: a smoke run")
-    parser.add_argument("--out", help="report path (default benchmarks/RESULTS.md, or "
-                        "benchmarks/out/RESULTS-quick.md with --quick)")
-    args = parser.parse_args(argv)
+    args = bench_args(__doc__, argv)
     date = datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds")
     grid = make_grid(args.quick)
     total = int(np.prod([v.size for v in grid.values()]))
@@ -265,11 +260,7 @@ def main(argv=None):
                      f"{fmt((d.best - t2.best) / nchunks * 1e3)} |")
     else:
         L += ["", f"Dask not measured: {dask_error}."]
-    path = report_path(args)
-    write_section(path, "sweep", "\n".join(L))
-    print("\n".join(L))
-    log(f"written {os.path.relpath(path)}")
-    return 0
+    return publish(args, "sweep", L)
 
 
 if __name__ == "__main__":
