@@ -13,10 +13,14 @@
  * time's min, median, p99 and max.  The parameters are those of
  * rollerrig/data/rig_default.toml (conical 1:20 wheel on a crowned roller,
  * FASTSIM 20 x 20 with falling friction at the rigid slip speed, TR-BDF2),
- * set in rig_defaults() below.
+ * set in rig_defaults() below.  As a real-time task it locks its memory
+ * (mlockall) and asks for the SCHED_FIFO policy; where that is not allowed
+ * it says so and runs as an ordinary process.
  */
 #define _POSIX_C_SOURCE 200112L
 #include <math.h>
+#include <sched.h>
+#include <sys/mman.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -159,6 +163,14 @@ int main(int argc, char **argv)
         fprintf(stderr, "rig: %s\n", rr_status_message(st));
         return 1;
     }
+    {
+        /* real-time task: no page faults, not preempted by ordinary processes */
+        struct sched_param sp;
+        const int locked = mlockall(MCL_CURRENT | MCL_FUTURE) == 0;
+        sp.sched_priority = sched_get_priority_max(SCHED_FIFO) - 1;
+        printf("memory %slocked, SCHED_FIFO %s\n", locked ? "" : "not ",
+               sched_setscheduler(0, SCHED_FIFO, &sp) == 0 ? "on" : "refused");
+    }
     clock_gettime(CLOCK_MONOTONIC, &next);
     for (n = 0; n < nsteps; n++) {
         const int target = (int)(n * period / (seconds / 4.0));
@@ -185,6 +197,13 @@ int main(int argc, char **argv)
         printf("%6.3f  %8.5f  %8.4f  %10.4f  %9.4f\n", targets[k], last[k][RR_REC_CREEPAGE],
                last[k][RR_REC_ADHESION], last[k][RR_REC_ROLLER_SPEED],
                last[k][RR_REC_WHEELSET_SPEED]);
+    {
+        long kmax = 0;
+        for (k = 1; k < nsteps; k++)
+            if (step_us[k] > step_us[kmax])
+                kmax = k;
+        printf("slowest step: number %ld (t = %.3f s)\n", kmax, (kmax + 1) * period);
+    }
     qsort(step_us, (size_t)nsteps, sizeof step_us[0], cmp);
     printf("%ld steps of %.1f ms%s: step time min %.1f us, median %.1f us, p99 %.1f us, "
            "max %.1f us\n", nsteps, period * 1e3, sleep_on ? " (fixed-rate loop)" : " (free run)",
