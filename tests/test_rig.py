@@ -210,3 +210,10 @@ def test_extreme_targets():
     row = res.summary()[0]
     assert row["reached"] > 0.3 and row["peak_force_over_muN"] <= 1.0
     assert row["adhesion"] < 0.25      # deep on the falling branch: mu -> A mu0 = 0.16
+
+
+def test_to_dataframe(paper):
+    pd = pytest.importorskip("pandas")
+    df = paper.to_dataframe()
+    assert isinstance(df, pd.DataFrame) and list(df.columns) == list(rr.rig.RECORD_FIELDS)
+    assert len(df) == len(paper) and np.array_equal(df["fx"].to_numpy(), paper.fx)
