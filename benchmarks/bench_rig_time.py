@@ -42,11 +42,8 @@ VARIANTS = [               # (label, build_rig keywords)
 
 def scenario_schedule(P, dt):
     S = P["scenario"]
-    n = int(round(S["duration_s"] / dt))
-    t = np.arange(n) * dt
-    idx = np.searchsorted(np.asarray(S["target_start_s"]), t, side="right") - 1
-    xi = np.asarray(S["targets"], dtype=float)[idx]
-    return np.full(n, S["roller_speed_m_s"] / P["roller"]["radius_m"]), xi
+    return rr.rig.schedule(P, S["duration_s"], dt, S["targets"], S["target_start_s"],
+                           S["roller_speed_m_s"])
 
 
 def step_cost(kw, repeats, quick):

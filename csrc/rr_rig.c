@@ -362,7 +362,6 @@ int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig)
         rig->y[j] = 0.0;
     rig->y[RR_RIG_SPIN] = spin;
     rig->y[RR_RIG_ROLLER_SPIN] = roller_speed;
-    rig->roller_ref = roller_speed;
     rig->xi_ref = NAN;
     rig->creep_control = 0;
     if ((st = rr_ode_init(&rig->ode, NS, p->method)) != RR_OK
@@ -458,7 +457,6 @@ int rr_rig_sample(rr_rig *rig, double roller_ref, double xi_ref)
         rig->xi_ref = xr;
         return st;
     }
-    rig->roller_ref = roller_ref;
     return RR_OK;
 }
 

@@ -115,7 +115,6 @@ typedef struct {
     double y[RR_RIG_NSTATE];       /* plant state */
     double z_ref;                  /* axle height at which the springs carry the preload [m] */
     /* references held between samples */
-    double roller_ref;             /* roller speed reference [rad/s] */
     double xi_ref;                 /* creepage target [-] */
     double Tref_roller, Tref_wheelset;
     int creep_control;             /* 1 while eq. 13-14 steer the wheelset */

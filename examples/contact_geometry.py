@@ -22,7 +22,6 @@ Positive y_ws moves the wheelset to the left, towards the left flange.
 """
 import os
 import sys
-import warnings
 
 import matplotlib
 
@@ -44,22 +43,8 @@ def manchester():
 
 
 def measured():
-    """The measured pair on the rig, as tests/test_conicity.py places it."""
-    D = rr.profiles.DATA_DIR
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", rr.RollerRigWarning)      # the rollers' gauge-face folds
-        wl, wr, rl, rrr = (rr.read_profile(os.path.join(D, f), smoothing=2 * MM) for f in (
-            "left-wheel-v1-pre-dry.whl", "right-wheel-v1-pre-dry.whl",
-            "left-roller-v1-pre-dry.ban", "right-roller-v1-pre-dry.ban"))
-    gauge = 0.5 * (rl.meta["Gauge"] + rrr.meta["Gauge"]) * MM
-    gl, gr = (r.gauge_point(r.meta["RailGaugePoint"] * MM) for r in (rl, rrr))
-    tape = wl.meta["WheelDiameterTaperline"] * MM
-    r0 = 0.5 * wl.meta["DiameterTaperline"] * MM - wl.z_at(tape)
-    dz_right = 0.5 * wr.meta["DiameterTaperline"] * MM - r0 - wr.z_at(tape)
-    return rr.RigGeometry(wheel=wl, roller=rl, wheel_right=wr.shifted(0.0, dz_right),
-                          roller_right=rrr.shifted(gl - gr, 0.0), wheel_radius=r0,
-                          roller_radius=0.80010 + rl.z.min(), wheel_y=1.347 / 2,
-                          roller_y=gauge / 2 - gl)
+    """The measured pair on the rig (RigGeometry.measured_pair)."""
+    return rr.RigGeometry.measured_pair()
 
 
 def wheel_in_rig(g, c, i):
@@ -141,7 +126,7 @@ def main(outdir="."):
         lam = {m: equivalent_conicity(g, 0.003, m) for m in ("harmonic", "klingel")}
         label = (f"{short}: tan $\\gamma_e$(3 mm) = {lam['harmonic']:.3f} (harmonic), "
                  f"{lam['klingel']:.3f} (Klingel)")
-        print(f"  equivalent conicity at 3 mm: " + ", ".join(
+        print("  equivalent conicity at 3 mm: " + ", ".join(
             f"{m} {v:.4f}" for m, v in lam.items())
               + f", simple {equivalent_conicity(g, 0.003, 'simple'):.4f}")
         dr = (c.left.r - c.right.r) / MM

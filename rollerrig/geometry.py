@@ -17,14 +17,16 @@ The search is in the plane of the axle; rollerrig.rig_contact adds the
 wheelset's longitudinal shift and yaw, which move the contact points round
 the rollers (csrc/rr_rig_contact.h).
 """
+import os
+import warnings
 from dataclasses import dataclass
 from typing import NamedTuple, Optional
 
 import numpy as np
 
 from . import _core
-from ._errors import RollerRigError, check_status, status_message
-from .profiles import Profile
+from ._errors import RollerRigError, RollerRigWarning, check_status, status_message
+from .profiles import DATA_DIR, Profile, read_profile
 
 __all__ = ["RigGeometry", "ContactSide", "WheelsetContact", "wheelset_contact",
            "ContactTable", "contact_table"]
@@ -81,6 +83,43 @@ class RigGeometry:
         return cls(wheel=wheel, roller=roller, wheel_radius=wheel_radius,
                    roller_radius=roller_radius, wheel_y=back_to_back / 2 - flange_back,
                    roller_y=gauge / 2 - y_gauge)
+
+    @classmethod
+    def measured_pair(cls, *, roller_radius=0.80010, back_to_back=1.347, smoothing=2e-3):
+        """The measured wheels on the measured rollers shipped in
+        rollerrig/data/profiles (MiniProf .whl/.ban of a full-scale
+        single-wheelset roller rig), left and right each their own.
+
+        Gauge: the mean of the two .ban headers (1436.91 and 1437.52 mm, at
+        RailGaugePoint = 14 mm below the top); each roller's gauge face at half
+        of it from the centre line (the right roller's profile moved by the
+        0.27 mm its gauge point differs).  Flange backs `back_to_back` apart
+        (1347 mm, CONTACT's roller-rig case dry_10mph_13750lbs: an assumption
+        for these profiles).  Wheel radii from the .whl headers'
+        DiameterTaperline (719.19 mm left, 720.11 mm right, at 70 mm from the
+        flange back), so r0 = 0.35930 m and the right wheel 0.46 mm larger.
+        Roller: `roller_radius` at the top of the left roller's crown (0.80010
+        m, the nominal radius of the same CONTACT case).  Profiles smoothed
+        over `smoothing` [m]: read raw, their curvature jitter makes the
+        contact search reject shifts near -2.5 mm (B <= 0, no Hertz ellipse).
+        """
+        mm = 1e-3
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RollerRigWarning)   # the rollers' gauge-face folds
+            wl, wr, rl, rrr = (read_profile(os.path.join(DATA_DIR, f), smoothing=smoothing)
+                               for f in ("left-wheel-v1-pre-dry.whl",
+                                         "right-wheel-v1-pre-dry.whl",
+                                         "left-roller-v1-pre-dry.ban",
+                                         "right-roller-v1-pre-dry.ban"))
+        gauge = 0.5 * (rl.meta["Gauge"] + rrr.meta["Gauge"]) * mm
+        gl, gr = (r.gauge_point(r.meta["RailGaugePoint"] * mm) for r in (rl, rrr))
+        tape = wl.meta["WheelDiameterTaperline"] * mm
+        r0 = 0.5 * wl.meta["DiameterTaperline"] * mm - wl.z_at(tape)
+        dz_right = 0.5 * wr.meta["DiameterTaperline"] * mm - r0 - wr.z_at(tape)
+        return cls(wheel=wl, roller=rl, wheel_right=wr.shifted(0.0, dz_right),
+                   roller_right=rrr.shifted(gl - gr, 0.0), wheel_radius=r0,
+                   roller_radius=roller_radius + rl.z.min(), wheel_y=back_to_back / 2,
+                   roller_y=gauge / 2 - gl)
 
     def _arrays(self):
         """The four profiles as the core takes them: each the Profile's own

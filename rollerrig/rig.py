@@ -17,18 +17,17 @@ samples by a fixed-step L-stable method.  Default parameters:
 rollerrig/data/rig_default.toml, every value with its origin
 (docs/parameters.md).
 """
-import copy
 import math
 import os
 import sys
 from dataclasses import dataclass
-from typing import Optional
 
 import numpy as np
 
 from . import _core
 from ._errors import RollerRigError, status_message
 from .contact import _options
+from .rig_contact import elastic_constants
 from .geometry import RigGeometry, contact_table
 from .profiles import Profile
 
@@ -132,7 +131,7 @@ def _c_params(P, dt, substeps, ode):
         "g": n(P, "scenario", "g_m_s2", nonneg=True),
         "roller_inertia": n(P, "roller", "inertia_kg_m2", positive=True),
         "R0": n(P, "roller", "radius_m", positive=True),
-        "G": E / (2.0 * (1.0 + nu)), "nu": nu, "estar": E / (2.0 * (1.0 - nu * nu)),
+        **dict(zip(("estar", "G"), elastic_constants(E, nu))), "nu": nu,
         "mu0": n(P, "scenario", "mu0", positive=True), "A": A, "B": B,
         "vmin": n(P, "contact", "min_rolling_speed_m_s", positive=True),
         "T": float(dt), "nsub": int(substeps), "ode_method": ODE_METHODS[ode],
@@ -173,6 +172,33 @@ def _geometry(P):
     return contact_table(g, -reach, reach, int(rows))
 
 
+def _creep_options(func, P, method, nx, ny, creep):
+    """The creep-force method and its options: the parameters' contact
+    section, overridden by the caller's (method, nx, ny, and `creep`:
+    bound, grid, slip_speed, k0, alpha_inf, beta, kA, kS)."""
+    C = P["contact"]
+    opts = dict(method=method if method is not None else C["creep_method"],
+                nx=nx if nx is not None else C["fastsim_nx"],
+                ny=ny if ny is not None else C["fastsim_ny"], bound="parabolic", grid="rect",
+                slip_speed=C["fastsim_slip_speed"], k0=0.54, alpha_inf=0.02, beta=0.62,
+                kA=C["polach_kA"], kS=C["polach_kS"])
+    unknown = set(creep) - set(opts)
+    if unknown:
+        raise RollerRigError(f"{func}: unknown option(s) {sorted(unknown)}")
+    opts.update(creep)
+    return opts
+
+
+def schedule(P, duration, dt, targets, target_times, roller_speed):
+    """The references of each sample: roller speed [rad/s] and creepage
+    target (NaN before the first target's start)."""
+    n = int(round(duration / dt))
+    idx = np.searchsorted(np.asarray(target_times), np.arange(n) * dt, side="right") - 1
+    xi_ref = np.where(idx >= 0, np.asarray(targets, dtype=float)[np.clip(idx, 0, None)],
+                      np.nan)
+    return np.full(n, roller_speed / P["roller"]["radius_m"]), xi_ref
+
+
 def build_rig(params=None, *, dt=None, method=None, substeps=None, ode=None, nx=None, ny=None,
               roller_speed=None, start="rolling", **creep):
     """The C rig (rollerrig._core.Rig) and the merged parameters, for
@@ -190,18 +216,7 @@ def build_rig(params=None, *, dt=None, method=None, substeps=None, ode=None, nx=
     ode = ode if ode is not None else I["method"]
     if ode not in ODE_METHODS:
         raise RollerRigError(f"simulate: ode must be one of {sorted(ODE_METHODS)}, got {ode!r}")
-    method = method if method is not None else P["contact"]["creep_method"]
-    nx = nx if nx is not None else P["contact"]["fastsim_nx"]
-    ny = ny if ny is not None else P["contact"]["fastsim_ny"]
-    kA = creep.pop("kA", P["contact"]["polach_kA"])
-    kS = creep.pop("kS", P["contact"]["polach_kS"])
-    opts = _options("simulate", method, nx, ny, creep.pop("bound", "parabolic"),
-                    creep.pop("grid", "rect"),
-                    creep.pop("slip_speed", P["contact"]["fastsim_slip_speed"]),
-                    creep.pop("k0", 0.54), creep.pop("alpha_inf", 0.02),
-                    creep.pop("beta", 0.62), kA, kS)
-    if creep:
-        raise RollerRigError(f"simulate: unknown option(s) {sorted(creep)}")
+    opts = _options("simulate", **_creep_options("simulate", P, method, nx, ny, creep))
     V = roller_speed if roller_speed is not None else S["roller_speed_m_s"]
     if not (isinstance(V, (int, float)) and math.isfinite(V)):
         raise RollerRigError(f"simulate: roller_speed must be a finite number, got {V!r}")
@@ -347,11 +362,8 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
         raise RollerRigError(f"simulate: target_times must be increasing, one per target, "
                              f"got {target_times!r}")
     V = roller_speed if roller_speed is not None else S["roller_speed_m_s"]
-    n = int(round(duration / dt))
-    t_start = np.arange(n) * dt                  # each sample's instant
-    idx = np.searchsorted(np.asarray(target_times), t_start, side="right") - 1
-    xi_ref = np.where(idx >= 0, np.asarray(targets)[np.clip(idx, 0, None)], np.nan)
-    roller_ref = np.full(n, V / P["roller"]["radius_m"])
+    roller_ref, xi_ref = schedule(P, duration, dt, targets, target_times, V)
+    n = xi_ref.size
     out = np.full((n, len(RECORD_FIELDS)), np.nan)
     chunk = max(1, n // 50)
     status = 0
@@ -387,10 +399,7 @@ def replay(res, *, method=None, nx=None, ny=None, **creep):
     C = P["contact"]
     friction = (FallingFriction(A=C["polach_A"], B=C["polach_B_s_per_m"])
                 if C["friction_law"] == "polach_falling" else None)
-    opts = dict(method=method or C["creep_method"], nx=nx or C["fastsim_nx"],
-                ny=ny or C["fastsim_ny"], slip_speed=C["fastsim_slip_speed"],
-                kA=C["polach_kA"], kS=C["polach_kS"])
-    opts.update(creep)
+    opts = _creep_options("replay", P, method, nx, ny, creep)
     return rig_contact(_geometry(P), x=res.x, y=res.y, yaw=res.yaw, vx=res.vx, vy=res.vy,
                        yaw_rate=res.yaw_rate, spin=res.spin, roller_spin=res.roller_spin,
                        N_left=res.normal_load_left, N_right=res.normal_load_right,

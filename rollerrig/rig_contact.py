@@ -104,6 +104,12 @@ def _check_table(func, table):
                              f"got {table!r:.60}")
 
 
+def elastic_constants(E, nu):
+    """(E*, G) of wheel and roller of the same material: the contact modulus
+    E* = E / (2 (1 - nu^2)) and the shear modulus G = E / (2 (1 + nu))."""
+    return E / (2.0 * (1.0 - nu * nu)), E / (2.0 * (1.0 + nu))
+
+
 def _model(func, table, mu, E, nu, vmin, friction):
     g = table.geometry
     for name, v, ok in (("mu", mu, mu > 0), ("E", E, E > 0), ("nu", nu, 0 <= nu < 0.5),
@@ -112,8 +118,7 @@ def _model(func, table, mu, E, nu, vmin, friction):
             raise RollerRigError(f"{func}: {name} must be a finite number "
                                  f"{'in [0, 0.5)' if name == 'nu' else '> 0'}, got {v!r}")
     fA, fB = _friction(func, friction)
-    estar = E / (2.0 * (1.0 - nu * nu))     # two steel bodies of the same material
-    G = E / (2.0 * (1.0 + nu))
+    estar, G = elastic_constants(E, nu)
     return (float(g.roller_radius), estar, G, float(nu), float(mu), fA, fB, float(vmin))
 
 

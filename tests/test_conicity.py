@@ -9,7 +9,6 @@ on full-scale rollers and its contact path is checked for the features the profi
 import csv
 import math
 import os
-import warnings
 
 import numpy as np
 import pytest
@@ -235,40 +234,10 @@ def test_klingel_without_a_kinematic_oscillation_is_nan():
 
 # ------------------------------------------------------------ the measured pair on rollers
 
-ROLLER_RADIUS = 0.80010      #: [m] CONTACT's roller-rig case dry_10mph_13750lbs (NOMRAD)
-FLANGE_BACKS = 1.347         #: [m] same case (FBDIST); an assumption for these profiles
-SMOOTHING = 2e-3             #: [m] as examples/profiles.py shows the curvature
-
-
-
-
 def measured_rig():
-    """The measured left/right wheels on the measured left/right rollers.
-
-    Gauge: the mean of the two .ban headers (1436.91 and 1437.52 mm, at RailGaugePoint =
-    14 mm below the top); each roller's gauge face put at half of it from the centre line
-    (the right roller's profile moved by the 0.27 mm its gauge point differs).  Flange backs
-    1347 mm apart (assumed, as in examples/profiles.py).  Wheel radii: the .whl headers'
-    DiameterTaperline (719.19 mm left, 720.11 mm right, at y = 70 mm from the flange back),
-    so r0 = 0.35930 m and the right wheel 0.46 mm larger.  Roller: 0.80010 m at the top of
-    the left roller's crown, the nominal radius of CONTACT's roller-rig case.  Profiles
-    smoothed over 2 mm: read raw, their curvature jitter makes the contact search reject 7
-    shifts between -2.7 and -2.3 mm with B <= 0 (no Hertz ellipse)."""
-    D = rr.profiles.DATA_DIR
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", RollerRigWarning)       # the rollers' gauge-face folds
-        wl, wr, rl, rrr = (rr.read_profile(os.path.join(D, f), smoothing=SMOOTHING) for f in (
-            "left-wheel-v1-pre-dry.whl", "right-wheel-v1-pre-dry.whl",
-            "left-roller-v1-pre-dry.ban", "right-roller-v1-pre-dry.ban"))
-    gauge = 0.5 * (rl.meta["Gauge"] + rrr.meta["Gauge"]) * MM
-    gl, gr = (r.gauge_point(r.meta["RailGaugePoint"] * MM) for r in (rl, rrr))
-    tape = wl.meta["WheelDiameterTaperline"] * MM
-    r0 = 0.5 * wl.meta["DiameterTaperline"] * MM - wl.z_at(tape)
-    dz_right = 0.5 * wr.meta["DiameterTaperline"] * MM - r0 - wr.z_at(tape)
-    return rr.RigGeometry(wheel=wl, roller=rl, wheel_right=wr.shifted(0.0, dz_right),
-                          roller_right=rrr.shifted(gl - gr, 0.0), wheel_radius=r0,
-                          roller_radius=ROLLER_RADIUS + rl.z.min(),
-                          wheel_y=FLANGE_BACKS / 2, roller_y=gauge / 2 - gl)
+    """The measured pair as rollerrig ships it (RigGeometry.measured_pair: 0.8001 m
+    rollers, flange backs 1347 mm apart, profiles smoothed over 2 mm)."""
+    return rr.RigGeometry.measured_pair()
 
 
 @pytest.fixture(scope="module")
