@@ -92,8 +92,10 @@ static int settings_check(const rr_ode *s)
     if (s->method != RR_ODE_ROS2 && s->method != RR_ODE_TRBDF2
         && s->method != RR_ODE_LINEULER)
         return RR_ERR_METHOD;
+    if (s->nq < 0 || 2 * s->nq > s->n)
+        return RR_ERR_PARAM;
     if (s->method == RR_ODE_TRBDF2
-        && (s->newton_iters < 1 || s->newton_iters > RR_ODE_MAX_NEWTON
+        && (s->newton_iters < 0 || s->newton_iters > RR_ODE_MAX_NEWTON
             || !(s->newton_tol > 0.0)))
         return RR_ERR_PARAM;
     for (i = 0; i < s->n; i++)
@@ -112,6 +114,7 @@ int rr_ode_init(rr_ode *s, int n, int method)
     s->method = method;
     s->newton_iters = 2;
     s->newton_tol = 1e-6;
+    s->nq = 0;
     for (i = 0; i < RR_ODE_MAXN; i++)
         s->ytyp[i] = 1.0;
     s->nfev = 0;
@@ -192,17 +195,59 @@ static int jacobian(rr_ode *s, rr_ode_rhs f, rr_ode_jac jac, void *ctx, double t
     return RR_OK;
 }
 
-/* s->W <- LU of I - g J, J being in s->W. */
+/* The LU factors of the iteration matrix I - g J, J being in s->W.
+ * Without structure (nq = 0) W itself is factored in place.  With nq
+ * positions whose derivatives are the next nq states (rows q_i' = y_{nq+i}
+ * of J are [0 I 0] by assumption, whatever jac wrote there), W d = r splits
+ * into d_q = r_q + g d_v and a system in the other m = n - nq unknowns,
+ *     M d_u = r_u + g J_uq r_q,   M = I - g J_uu - g^2 J_uq P,
+ * P moving the q columns onto their v columns (the special structure of
+ * Hairer and Wanner's RADAU5, its M1 = M2 = nq): an m x m LU instead of an
+ * n x n one; J stays in W for the solves. */
 static int iteration_matrix(rr_ode *s, double g)
 {
-    const int n = s->n;
-    int i;
+    const int n = s->n, nq = s->nq, m = n - nq;
+    int i, j;
 
-    for (i = 0; i < n * n; i++)
-        s->W[i] *= -g;
-    for (i = 0; i < n; i++)
-        s->W[i * n + i] += 1.0;
-    return rr_lu_factor(n, s->W, s->piv);
+    s->g = g;
+    if (nq == 0) {
+        for (i = 0; i < n * n; i++)
+            s->W[i] *= -g;
+        for (i = 0; i < n; i++)
+            s->W[i * n + i] += 1.0;
+        return rr_lu_factor(n, s->W, s->piv);
+    }
+    for (i = 0; i < m; i++) {
+        const double *Ju = s->W + (nq + i) * n;
+        for (j = 0; j < m; j++)
+            s->M[i * m + j] = -g * Ju[nq + j];
+        for (j = 0; j < nq; j++)
+            s->M[i * m + j] -= g * g * Ju[j];
+        s->M[i * m + i] += 1.0;
+    }
+    return rr_lu_factor(m, s->M, s->piv);
+}
+
+/* b <- (I - g J)^-1 b with the factors of iteration_matrix. */
+static void solve(const rr_ode *s, double *b)
+{
+    const int n = s->n, nq = s->nq, m = n - nq;
+    int i, j;
+
+    if (nq == 0) {
+        rr_lu_solve(n, s->W, s->piv, b);
+        return;
+    }
+    for (i = 0; i < m; i++) {
+        const double *Ju = s->W + (nq + i) * n;
+        double sum = 0.0;
+        for (j = 0; j < nq; j++)
+            sum += Ju[j] * b[j];
+        b[nq + i] += s->g * sum;
+    }
+    rr_lu_solve(m, s->M, s->piv, b + nq);
+    for (j = 0; j < nq; j++)
+        b[j] += s->g * b[nq + j];
 }
 
 /* max_i |dz_i| / (|z_i| + ytyp_i) */
@@ -253,13 +298,15 @@ static int newton_stage(rr_ode *s, rr_ode_rhs f, void *ctx, double tz, double hd
         /* r <- -G(z) = base + hd f(z) - z */
         for (i = 0; i < n; i++)
             s->r[i] = base[i] + hd * s->r[i] - z[i];
-        rr_lu_solve(n, s->W, s->piv, s->r);
+        solve(s, s->r);
         for (i = 0; i < n; i++)
             z[i] += s->r[i];
         prev = cur;
         cur = scaled_norm(s, s->r, z);
     }
-    if (s->newton_iters == 1 || cur == 0.0)
+    if (s->newton_iters == 0)
+        *err = 0.0;     /* linearly implicit: nothing iterated, nothing to estimate */
+    else if (s->newton_iters == 1 || cur == 0.0)
         *err = cur;
     else {
         /* corrections below newton_tol/1000 are rounding noise, not a rate */
@@ -277,7 +324,7 @@ static int step_ros2(rr_ode *s, rr_ode_rhs f, void *ctx, double t, double h, int
 
     for (i = 0; i < n; i++)
         s->k1[i] = s->f0[i];
-    rr_lu_solve(n, s->W, s->piv, s->k1);
+    solve(s, s->k1);
     for (i = 0; i < n; i++)
         s->z[i] = s->y0[i] + h * s->k1[i];
     st = call_f(s, f, ctx, t + h, s->z, s->k2, warn);
@@ -285,7 +332,7 @@ static int step_ros2(rr_ode *s, rr_ode_rhs f, void *ctx, double t, double h, int
         return st;
     for (i = 0; i < n; i++)
         s->k2[i] -= 2.0 * s->k1[i];
-    rr_lu_solve(n, s->W, s->piv, s->k2);
+    solve(s, s->k2);
     for (i = 0; i < n; i++)
         s->z[i] = s->y0[i] + h * (1.5 * s->k1[i] + 0.5 * s->k2[i]);
     return RR_OK;
@@ -366,7 +413,7 @@ int rr_ode_step(rr_ode *s, rr_ode_rhs f, rr_ode_jac jac, void *ctx, double t, do
     default:
         for (i = 0; i < n; i++)
             s->k1[i] = s->f0[i];
-        rr_lu_solve(n, s->W, s->piv, s->k1);
+        solve(s, s->k1);
         for (i = 0; i < n; i++)
             s->z[i] = s->y0[i] + h * s->k1[i];
         st = RR_OK;

@@ -6,7 +6,7 @@
  * fixed number of f evaluations (below), at most one Jacobian, one dense LU
  * factorisation with partial pivoting of W = I - gamma h J and a fixed number
  * of triangular solves.  No step size control, no allocation (all work
- * arrays are inside the caller-owned rr_ode, about 10 kB), no globals.
+ * arrays are inside the caller-owned rr_ode, about 18 kB), no globals.
  *
  * Methods (gamma multiplies h J in the iteration matrix W = I - gamma h J):
  *
@@ -40,7 +40,13 @@
  *     Both stages share W = I - d h J.  Each stage starts with a
  *     predictor correction that needs no f evaluation (z2: from y with
  *     f(t, y); z3: from z2 with f2), then takes exactly s->newton_iters
- *     simplified-Newton iterations with the true residual; f2 =
+ *     simplified-Newton iterations with the true residual.  With
+ *     newton_iters = 0 the step is linearly implicit: TR-BDF2 applied to
+ *     the linearisation f(t, y) + J (z - y), one f evaluation per step,
+ *     the stability function of TR-BDF2 (L-stable with the exact J) and
+ *     order 2 with the exact Jacobian of an autonomous f (the dropped
+ *     terms are O(|z - y|^2) = O(h^2) inside an O(h) stage), 1 otherwise;
+ *     newton_err is then 0.  f2 =
  *     (z2 - y)/(d h) - f(t, y) is the derivative implied by the trapezoidal
  *     equation (Hosea & Shampine), not a fresh f(z2).  The step warns if
  *     the estimated error left in a stage, newton_err, exceeds newton_tol
@@ -49,6 +55,12 @@
  *     h |lambda| = 50 the iteration diverges (and warns); ROS2 does not.
  *     Cost: 1 + 2 newton_iters f + 1 Jacobian + 1 LU + 2 (newton_iters + 1)
  *     solves.
+ *
+ * Second-order structure: with s->nq > 0 the first nq states are positions
+ * whose derivatives are the next nq states, y_i' = y_{nq+i} (i < nq), as in
+ * mechanics (RADAU5's M1 = M2 = nq).  Those rows of J are then taken as
+ * exactly [0 I 0] and the linear algebra works on n - nq unknowns: the LU
+ * costs ((n - nq)/n)^3 of the full one (12 states, nq = 5: 0.2).
  *
  *   RR_ODE_LINEULER - linearly implicit Euler, W k = f(t, y), y1 = y + h k,
  *     gamma = 1: order 1 for any J, L-stable with the exact Jacobian
@@ -92,10 +104,13 @@ typedef struct {
     int n;                       /* dimension, 1..RR_ODE_MAXN */
     int method;                  /* enum rr_ode_method */
     int newton_iters;            /* TR-BDF2: f-evaluating iterations per stage,
-                                  * 1..RR_ODE_MAX_NEWTON (default 2); with 1,
-                                  * newton_err is the last correction itself */
+                                  * 0..RR_ODE_MAX_NEWTON (default 2); with 1,
+                                  * newton_err is the last correction itself;
+                                  * 0: linearly implicit (see above) */
     double newton_tol;           /* TR-BDF2: bound on newton_err, else the step
                                   * warns (default 1e-6) */
+    int nq;                      /* second-order structure: y_i' = y_{nq+i} for
+                                  * i < nq, 0 <= 2 nq <= n (default 0: none) */
     double ytyp[RR_ODE_MAXN];    /* typical magnitude of each y_i (> 0, in y's
                                   * units; default 1): finite-difference
                                   * increment floor and Newton test scale */
@@ -108,7 +123,9 @@ typedef struct {
                                   * larger of the two stages (inf if the
                                   * iteration does not contract); else 0 */
     /* work arrays */
-    double W[RR_ODE_MAXN * RR_ODE_MAXN];  /* J, then its LU factors */
+    double W[RR_ODE_MAXN * RR_ODE_MAXN];  /* J, then its LU factors (nq = 0) */
+    double M[RR_ODE_MAXN * RR_ODE_MAXN];  /* nq > 0: LU factors of the reduced matrix */
+    double g;                    /* gamma h of the factored matrix */
     double y0[RR_ODE_MAXN];      /* copy of y at the start of the step */
     double f0[RR_ODE_MAXN];      /* f(t, y0) */
     double k1[RR_ODE_MAXN];
@@ -120,7 +137,7 @@ typedef struct {
 
 /*
  * rr_ode_init - set up *s for n equations with the given method and the
- * default settings (newton_iters 2, newton_tol 1e-6, ytyp 1).
+ * default settings (newton_iters 2, newton_tol 1e-6, nq 0, ytyp 1).
  *   status:  0 OK; RR_ERR_PARAM (n outside 1..RR_ODE_MAXN, or s NULL),
  *            RR_ERR_METHOD (unknown method).  On error *s is not usable.
  */
@@ -146,7 +163,7 @@ int rr_ode_nfev(const rr_ode *s, int jac_given);
  *            errors, with y left unchanged (not NaN: it is the integrator's
  *            state, and the caller may retry with a smaller h):
  *            RR_ERR_PARAM (s, f or y NULL, h not > 0, or bad settings:
- *            n, newton_iters, newton_tol <= 0, ytyp <= 0), RR_ERR_METHOD,
+ *            n, newton_iters, newton_tol <= 0, nq, ytyp <= 0), RR_ERR_METHOD,
  *            RR_ERR_NONFINITE (t, h or y not finite, or f, J, W or the
  *            new y not finite), RR_ERR_SINGULAR (W = I - gamma h J singular to
  *            working precision), or the status < 0 returned by f or jac.

@@ -75,6 +75,8 @@ typedef struct {
     double T;                /* sample time of controllers and encoders [s] */
     int nsub;                /* plant steps per sample, >= 1 */
     int method;              /* enum rr_ode_method */
+    int newton_iters;        /* TR-BDF2's Newton iterations per stage, 0..RR_ODE_MAX_NEWTON
+                              * (0: linearly implicit, one contact evaluation per step) */
     rr_pi_params roller_pi, wheelset_pi;      /* their T must equal T */
     double roller_tau, wheelset_tau;          /* drive lags [s], > 0 */
     rr_encoder_params roller_enc, wheelset_enc;

@@ -88,6 +88,14 @@ def _number(params, section, key, positive=False, nonneg=False):
     return float(v)
 
 
+def _newton_iterations(P):
+    k = P["integration"]["newton_iterations"]
+    if isinstance(k, bool) or not isinstance(k, int) or not 0 <= k <= 10:
+        raise RollerRigError(f"params: integration.newton_iterations must be an integer "
+                             f"from 0 to 10, got {k!r}")
+    return k
+
+
 def _c_params(P, dt, substeps, ode):
     """The C rig's parameter dict (rollerrig/_core.c, rig_fields) from a nested dict."""
     n = _number
@@ -135,6 +143,7 @@ def _c_params(P, dt, substeps, ode):
         "mu0": n(P, "scenario", "mu0", positive=True), "A": A, "B": B,
         "vmin": n(P, "contact", "min_rolling_speed_m_s", positive=True),
         "T": float(dt), "nsub": int(substeps), "ode_method": ODE_METHODS[ode],
+        "newton_iters": _newton_iterations(P),
         "roller_Kp": n(P, "roller_drive", "kp_N_m_s_per_rad", nonneg=True),
         "roller_KI": n(P, "roller_drive", "ki_N_m_s_per_rad", nonneg=True),
         "roller_Tmax": n(P, "roller_drive", "torque_limit_N_m", positive=True),

@@ -74,17 +74,27 @@ def test_methods_and_named_arrays():
         assert res.fx.shape == res.time.shape == res.normal_load.shape == (250,)
 
 
-def test_unbounded_linear_theory_stops_cleanly():
-    """The linear theory does not saturate: braked to 2 % creepage its
-    force exceeds what the load can carry and the normal balance asks a
-    wheel to pull on its roller.  The run stops with a status and keeps
-    the history up to the last good sample (no NaN)."""
+def test_unbounded_linear_theory_is_held_by_the_torque_limit():
+    """The linear theory does not saturate: braked toward 2 % creepage its
+    force grows with the creepage until the wheelset drive's torque limit
+    binds (Tmax / r, 1.5 mu N).  The run stays stable and clean; the force
+    exceeding mu N is the linear theory's known flaw, and the table reports
+    the target as not reached."""
     res = rr.simulate(duration=1.0, targets=[0.02], method="linear")
-    assert res.status == -2 and "normal load not positive" in res.message
-    assert 0 < len(res) < 250
-    assert np.all(np.isfinite(res.fx)) and np.all(res.sample_status >= 0)
-    assert set(res.summary()[0]) == {"target", "reached", "settling_s", "adhesion",
-                                     "peak_force_over_muN"}
+    P = rr.default_parameters()
+    assert res.status == 0 and np.all(np.isfinite(res.fx))
+    row = res.summary()[0]
+    assert row["reached"] < 0.2 * 0.02 and row["peak_force_over_muN"] > 1.3
+    held = np.abs(res.fx[res.time > 0.5])
+    # the drive's torque over the rolling radius of the centred wheelset;
+    # 3 %: at 1.5 mu N the normal loads double and the wheelset moves along
+    # the rollers, which Tmax / r ignores (measured 2.1 %; 0.05 % in the
+    # paper's scenario, test above)
+    _, _, table = rr.build_rig()
+    radius = float(table.lookup(0.0).left.r[0])
+    limit = P["wheelset_drive"]["torque_limit_N_m"] / radius
+    assert held.max() - held.min() < 1e-3 * held.max()
+    assert held.mean() == pytest.approx(limit, rel=0.03)
 
 
 def reference_run(duration, targets, rtol=1e-7):
@@ -113,10 +123,12 @@ def reference_run(duration, targets, rtol=1e-7):
 
 
 def test_fixed_step_agrees_with_an_adaptive_stiff_solver():
-    """The fixed 4 ms L-stable step (ROS2, approximate Jacobian) against
+    """The default fixed 4 ms step (linearly implicit TR-BDF2 with the
+    analytic, approximate Jacobian: one contact evaluation per step) against
     Radau at rtol 1e-7 on the same right-hand side and the same sampled
     controllers, over a target switch: creepage and force histories within
-    1 % of their range; ten plant steps per sample move them by less."""
+    1 % of their range (measured 0.23 % and 0.50 %); ten plant steps per
+    sample come closer and move them by less than 1 %."""
     duration, targets = 1.2, [0.04, 0.015]
     ref = reference_run(duration, targets)
     fields = rr.rig.RECORD_FIELDS

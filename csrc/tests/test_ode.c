@@ -255,8 +255,10 @@ static int vdp_j(void *v, double t, const double *y, double *J)
     return 0;
 }
 
-/* y(T) with N steps; returns the worst status */
-static int vdp_run(int m, const double *pj, double j11, int N, double T, double *y)
+/* y(T) with N steps; newton: TR-BDF2's iterations (-1: the default); nq:
+ * 1 to use the second-order structure y1' = y2; returns the worst status */
+static int vdp_run(int m, int newton, int nq, const double *pj, double j11, int N, double T,
+                   double *y)
 {
     rr_ode s;
     vdp_ctx c;
@@ -269,6 +271,9 @@ static int vdp_run(int m, const double *pj, double j11, int N, double T, double 
     y[0] = 2.0;
     y[1] = -0.66;
     st = rr_ode_init(&s, 2, m);
+    if (newton >= 0)
+        s.newton_iters = newton;
+    s.nq = nq;
     for (k = 0; k < N && st >= 0; k++) {
         st = rr_ode_step(&s, vdp_f, vdp_j, &c, k * (T / N), T / N, y);
         if (st != RR_OK && (worst == RR_OK || st < 0))
@@ -277,8 +282,8 @@ static int vdp_run(int m, const double *pj, double j11, int N, double T, double 
     return worst;
 }
 
-static void check_order(const char *what, int m, const double *pj, double j11,
-                        const double *ref, double pmin, double pmax)
+static void check_order(const char *what, int m, int newton, int nq, const double *pj,
+                        double j11, const double *ref, double pmin, double pmax)
 {
     const double T = 0.5;
     double prev = 0.0;
@@ -287,7 +292,7 @@ static void check_order(const char *what, int m, const double *pj, double j11,
 
     for (N = 50; N <= 800; N *= 2) {
         double y[2], e;
-        int st = vdp_run(m, pj, j11, N, T, y);
+        int st = vdp_run(m, newton, nq, pj, j11, N, T, y);
         snprintf(buf, sizeof buf, "%s, N = %d: status", what, N);
         CHECK_STATUS(st, RR_OK, buf);
         e = fabs(y[0] - ref[0]);
@@ -317,9 +322,9 @@ static void test_order(void)
     /* reference: TR-BDF2 with 100000 steps (h = 5e-6; its error at
      * h = 6.25e-4 is 2.2e-8, so here ~1.5e-12), confirmed by ROS2 (error
      * 2.0e-7 at h = 6.25e-4, so ~1.3e-11 here) */
-    st = vdp_run(RR_ODE_TRBDF2, exact, 0.0, 100000, 0.5, ref);
+    st = vdp_run(RR_ODE_TRBDF2, -1, 0, exact, 0.0, 100000, 0.5, ref);
     CHECK_STATUS(st, RR_OK, "van der Pol reference run");
-    st = vdp_run(RR_ODE_ROS2, exact, 0.0, 100000, 0.5, ref2);
+    st = vdp_run(RR_ODE_ROS2, -1, 0, exact, 0.0, 100000, 0.5, ref2);
     CHECK_STATUS(st, RR_OK, "van der Pol ROS2 fine run");
     CHECK_CLOSE(ref2[0], ref[0], 1e-10, 0.0, "van der Pol y1(0.5): ROS2 and TR-BDF2 agree");
     CHECK_CLOSE(ref2[1], ref[1], 1e-10, 0.0, "van der Pol y2(0.5): ROS2 and TR-BDF2 agree");
@@ -329,16 +334,97 @@ static void test_order(void)
     /* N = 50..800 (h |J22| = 3e4..2e3: stiff throughout).  Measured orders
      * are 1.99-2.04 and 0.99-1.00: the windows [1.8, 2.2] / [0.9, 1.1]
      * separate them from the neighbouring integers with margin */
-    check_order("van der Pol ROS2", RR_ODE_ROS2, exact, 0.0, ref, 1.8, 2.2);
-    check_order("van der Pol TRBDF2", RR_ODE_TRBDF2, exact, 0.0, ref, 1.8, 2.2);
-    check_order("van der Pol LINEULER", RR_ODE_LINEULER, exact, 0.0, ref, 0.9, 1.1);
-    check_order("van der Pol ROS2, J halved (W-method)", RR_ODE_ROS2, halved, 0.0, ref,
+    check_order("van der Pol ROS2", RR_ODE_ROS2, -1, 0, exact, 0.0, ref, 1.8, 2.2);
+    check_order("van der Pol TRBDF2", RR_ODE_TRBDF2, -1, 0, exact, 0.0, ref, 1.8, 2.2);
+    check_order("van der Pol LINEULER", RR_ODE_LINEULER, -1, 0, exact, 0.0, ref, 0.9, 1.1);
+    /* linearly implicit TR-BDF2 (no Newton iteration): order 2 with the
+     * exact Jacobian of this autonomous problem (rr_ode.h); measured 2.00-2.02 */
+    check_order("van der Pol TRBDF2, newton_iters 0", RR_ODE_TRBDF2, 0, 0, exact, 0.0, ref,
                 1.8, 2.2);
-    check_order("van der Pol ROS2, J21 * 1.5, J11 = 0.5 (W-method)", RR_ODE_ROS2, coupling,
+    /* the second-order structure (y1' = y2) changes only rounding */
+    check_order("van der Pol TRBDF2, nq 1", RR_ODE_TRBDF2, -1, 1, exact, 0.0, ref, 1.8, 2.2);
+    check_order("van der Pol TRBDF2, newton_iters 0, nq 1", RR_ODE_TRBDF2, 0, 1, exact, 0.0,
+                ref, 1.8, 2.2);
+    check_order("van der Pol ROS2, nq 1", RR_ODE_ROS2, -1, 1, exact, 0.0, ref, 1.8, 2.2);
+    check_order("van der Pol ROS2, J halved (W-method)", RR_ODE_ROS2, -1, 0, halved, 0.0, ref,
+                1.8, 2.2);
+    check_order("van der Pol ROS2, J21 * 1.5, J11 = 0.5 (W-method)", RR_ODE_ROS2, -1, 0, coupling,
                 0.5, ref, 1.8, 2.2);
     /* the limitation, pinned down: measured 1.02-1.14, and stable */
-    check_order("van der Pol ROS2, J22 * 1.2 (order reduction)", RR_ODE_ROS2, stiffblock,
+    check_order("van der Pol ROS2, J22 * 1.2 (order reduction)", RR_ODE_ROS2, -1, 0, stiffblock,
                 0.0, ref, 0.9, 1.3);
+}
+
+/* ---- second-order structure --------------------------------------------
+ * Two masses on nonlinear springs and dampers, driven through a lag T:
+ * y = (q1, q2, v1, v2, T), q' = v.  The reduced solve (nq = 2) must give
+ * the full solve's step to rounding, for every method and Newton count. */
+
+static int chain_f(void *v, double t, const double *y, double *d)
+{
+    (void)v;
+    (void)t;
+    d[0] = y[2];
+    d[1] = y[3];
+    d[2] = -4e4 * y[0] - 3e3 * y[0] * y[0] * y[0] + 2e4 * (y[1] - y[0]) - 50.0 * y[2] + y[4];
+    d[3] = -2e4 * (y[1] - y[0]) - 800.0 * (y[3] - y[2]) * (1.0 + y[3] * y[3]);
+    d[4] = (1.0 - y[4]) / 1e-4;
+    return 0;
+}
+
+static int chain_j(void *v, double t, const double *y, double *J)
+{
+    int i;
+    (void)v;
+    (void)t;
+    for (i = 0; i < 25; i++)
+        J[i] = 0.0;
+    J[0 * 5 + 2] = J[1 * 5 + 3] = 1.0;
+    J[2 * 5 + 0] = -4e4 - 9e3 * y[0] * y[0] - 2e4;
+    J[2 * 5 + 1] = 2e4;
+    J[2 * 5 + 2] = -50.0;
+    J[2 * 5 + 4] = 1.0;
+    J[3 * 5 + 0] = 2e4;
+    J[3 * 5 + 1] = -2e4;
+    J[3 * 5 + 2] = 800.0 * (1.0 + y[3] * y[3]);
+    J[3 * 5 + 3] = -800.0 * (1.0 + 3.0 * y[3] * y[3]) + 1600.0 * y[2] * y[3];
+    J[4 * 5 + 4] = -1e4;
+    return 0;
+}
+
+static void test_structure(void)
+{
+    static const int iters[] = {0, 1, 2};
+    int m, q, k, i;
+    char buf[160];
+
+    for (m = 0; m < 3; m++)
+        for (q = 0; q < (m == RR_ODE_TRBDF2 ? 3 : 1); q++) {
+            rr_ode full, red;
+            double yf[5] = {0.01, -0.02, 0.3, -0.1, 0.0}, yr[5], dmax = 0.0;
+            int stf = rr_ode_init(&full, 5, m), str = rr_ode_init(&red, 5, m);
+            for (i = 0; i < 5; i++)
+                yr[i] = yf[i];
+            full.newton_iters = red.newton_iters = iters[q];
+            red.nq = 2;
+            for (k = 0; k < 200 && stf >= 0 && str >= 0; k++) {
+                stf = rr_ode_step(&full, chain_f, chain_j, 0, k * 1e-3, 1e-3, yf);
+                str = rr_ode_step(&red, chain_f, chain_j, 0, k * 1e-3, 1e-3, yr);
+                for (i = 0; i < 5; i++) {
+                    double d = fabs(yr[i] - yf[i]) / (fabs(yf[i]) + 1e-3);
+                    if (d > dmax)
+                        dmax = d;
+                }
+            }
+            snprintf(buf, sizeof buf, "chain %s newton_iters %d: statuses", method_name[m],
+                     iters[q]);
+            CHECK(stf >= 0 && str >= 0 && stf == str, buf);
+            /* two LUs of one well-conditioned system (cond(W) ~ 1e2 at h
+             * |J| ~ 40): rounding, ~1e-14 per step, 200 steps; 1e-11 */
+            snprintf(buf, sizeof buf, "chain %s newton_iters %d: nq = 2 equals nq = 0 (%.1e)",
+                     method_name[m], iters[q], dmax);
+            CHECK(dmax < 1e-11, buf);
+        }
 }
 
 /* ---- Prothero-Robinson with a nonlinear term ---------------------------
@@ -493,13 +579,13 @@ static int cnt_j(void *v, double t, const double *y, double *J)
 
 static void test_cost(void)
 {
-    static const int iters[] = {2, 1, 5, RR_ODE_MAX_NEWTON};
+    static const int iters[] = {2, 1, 0, 5, RR_ODE_MAX_NEWTON};
     int m, usej, q, k;
     char buf[160];
 
     for (m = 0; m < 3; m++)
         for (usej = 1; usej >= 0; usej--)
-            for (q = 0; q < (m == RR_ODE_TRBDF2 ? 4 : 1); q++) {
+            for (q = 0; q < (m == RR_ODE_TRBDF2 ? 5 : 1); q++) {
                 rr_ode s;
                 count_ctx c = {0, 0};
                 double y[3] = {0.3, -0.2, 0.5};
@@ -698,8 +784,16 @@ static void test_errors(void)
         s.ytyp[1] = NAN;
         STEP(err_j, 0.0, 0.1, RR_ERR_PARAM, "ytyp[1] NaN");
         s.ytyp[1] = 1.0;
+        s.newton_iters = -1;
+        STEP(err_j, 0.0, 0.1, m == RR_ODE_TRBDF2 ? RR_ERR_PARAM : RR_OK, "newton_iters = -1");
         s.newton_iters = 0;
-        STEP(err_j, 0.0, 0.1, m == RR_ODE_TRBDF2 ? RR_ERR_PARAM : RR_OK, "newton_iters = 0");
+        STEP(err_j, 0.0, 0.1, RR_OK, "newton_iters = 0 (linearly implicit)");
+        s.newton_iters = 2;
+        s.nq = -1;
+        STEP(err_j, 0.0, 0.1, RR_ERR_PARAM, "nq = -1");
+        s.nq = 2;
+        STEP(err_j, 0.0, 0.1, RR_ERR_PARAM, "nq = 2 > n/2");
+        s.nq = 0;
         s.newton_iters = RR_ODE_MAX_NEWTON + 1;
         STEP(err_j, 0.0, 0.1, m == RR_ODE_TRBDF2 ? RR_ERR_PARAM : RR_OK,
              "newton_iters > max");
@@ -729,6 +823,7 @@ int main(void)
     test_linear();
     test_lstable();
     test_order();
+    test_structure();
     test_prothero_robinson();
     test_cost();
     test_errors();

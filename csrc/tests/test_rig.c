@@ -50,7 +50,7 @@ static void setup(rr_contact_table *t, rr_rig_params *p)
     p->contact.creep.nx = p->contact.creep.ny = 20;
     p->contact.creep.slip_speed = RR_SLIP_RIGID;
     p->contact.vmin = 0.01;
-    p->T = 0.004; p->nsub = 1; p->method = RR_ODE_TRBDF2;
+    p->T = 0.004; p->nsub = 1; p->method = RR_ODE_TRBDF2; p->newton_iters = 0;
     p->roller_pi.T = p->wheelset_pi.T = p->roller_enc.T = p->wheelset_enc.T = p->T;
     p->roller_pi.Kp = 300; p->roller_pi.KI = 2; p->roller_pi.Tmax = 100;
     p->wheelset_pi.Kp = 100; p->wheelset_pi.KI = 2; p->wheelset_pi.Tmax = 60;
