@@ -113,15 +113,32 @@ static int newton_step(const law *l, newton *n, int *converged)
     return 1;
 }
 
-/* Rows are marched in groups of up to GROUP side by side: each element waits
- * for its upstream neighbour, so a row is one serial chain (through a square
- * root and a division where the element slips), and independent rows in lock
- * step let the processor overlap their chains and share vector instructions.
+/* Rows are marched in groups side by side: each element waits for its
+ * upstream neighbour, so a row is one serial chain (through a square root
+ * and a division where the element slips), and independent rows in lock
+ * step let the processor overlap their chains and share vector
+ * instructions: up to GROUP_VECS vectors of 2 (SSE2) or 4 (AVX) rows.
  * Every row still gets exactly the arithmetic of a march on its own, and all
- * sums are added row by row, in order. */
-#define GROUP 10
+ * sums are added row by row, in order, so the grouping changes no result. */
+#define GROUP_VECS 5       /* rr_fastsim_kernel.h has a kernel for each of 1 .. 5 */
 
-/* Groups set up once for both passes (the first 80 rows); further ones twice. */
+/* AVX: 4 rows per vector, compiled with a function-level target (no build
+ * flag needed) and used where the processor and the system support it
+ * (__builtin_cpu_supports checks both).  Only with SSE2 and doubles
+ * evaluated as doubles, as the scalar march does; RR_FASTSIM_NO_AVX (or
+ * RR_FASTSIM_NO_SSE2) leaves it out, for testing. */
+#if !defined(RR_FASTSIM_NO_AVX) && !defined(RR_FASTSIM_NO_SSE2) && defined(__GNUC__) \
+    && (defined(__x86_64__) || defined(__i386__)) && defined(__SSE2__) \
+    && defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD == 0
+#define RR_FASTSIM_AVX 1
+#define GROUP (4 * GROUP_VECS)
+#else
+#define RR_FASTSIM_AVX 0
+#define GROUP (2 * GROUP_VECS)
+#endif
+
+/* Groups set up once for both passes (the first 8 groups); further ones
+ * twice. */
 #define GROUP_CACHE 8
 
 /* What the march of every row shares. */
@@ -134,6 +151,7 @@ typedef struct {
     double gx0, gy, gphi;       /* rigid slip per unit length over the flexibility */
     double h_rect;              /* element length on the rectangular grid */
     int nx, ny, strips, parabolic;
+    int lanes;                  /* rows per vector: 4 with AVX, else 2 */
 } march;
 
 /* Rows j0 .. j0 + nr - 1 in lanes 0 .. nr - 1 (the lanes up to the group's
@@ -165,15 +183,16 @@ static int any_inside(const march *m, const group *g, int i)
     return 0;
 }
 
-/* The group of rows from j0: as many as fit, in a width of 10, 8, 6, 4 or 2
- * lanes (9 rows go in 10 lanes, one of them idle, etc.). */
+/* The group of rows from j0: as many as fit in up to GROUP_VECS vectors
+ * (with 2 lanes 9 rows go in 10 lanes, one of them idle; with 4 lanes 9
+ * rows go in 12, etc.). */
 static void group_init(const march *m, int j0, group *g)
 {
     const rr_contact_case *c = m->c;
-    const int left = m->ny - j0;
+    const int left = m->ny - j0, nv = (left + m->lanes - 1) / m->lanes;
     int k;
     g->j0 = j0;
-    g->width = left >= 9 ? 10 : left >= 7 ? 8 : left >= 5 ? 6 : left >= 3 ? 4 : 2;
+    g->width = m->lanes * (nv < GROUP_VECS ? nv : GROUP_VECS);
     g->nr = left < g->width ? left : g->width;
     for (k = 0; k < g->width; k++) {
         const int j = k < g->nr ? j0 + k : j0;
@@ -191,88 +210,38 @@ static void group_init(const march *m, int j0, group *g)
         ;
 }
 
-/* ---- two lanes at once ----------------------------------------------------
+/* ---- vectors of rows --------------------------------------------------------
  * v2: a pair of doubles, SSE2 where the compiler has it (any x86-64), else
- * a struct; both do the same IEEE operations, lane by lane, so the results
- * do not depend on which one is compiled (RR_FASTSIM_NO_SSE2 forces the
- * struct, for testing). */
+ * a struct; v4: four doubles, AVX (its target brings no fused multiply-add).
+ * All do the same IEEE operations, lane by lane, so the results do not
+ * depend on which one runs (RR_FASTSIM_NO_SSE2 forces the struct, for
+ * testing). */
 #if !defined(RR_FASTSIM_NO_SSE2) \
     && (defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2))
 #include <emmintrin.h>
 typedef __m128d v2;
-#define v_set1 _mm_set1_pd
-#define v_add _mm_add_pd
-#define v_sub _mm_sub_pd
-#define v_mul _mm_mul_pd
-#define v_div _mm_div_pd
-#define v_sqrt _mm_sqrt_pd
-#define v_max _mm_max_pd        /* a > b ? a : b */
-static v2 v_load(const double *p) { return _mm_loadu_pd(p); }
-static void v_store(double *p, v2 a) { _mm_storeu_pd(p, a); }
+#define v2_set1 _mm_set1_pd
+#define v2_add _mm_add_pd
+#define v2_sub _mm_sub_pd
+#define v2_mul _mm_mul_pd
+#define v2_div _mm_div_pd
+#define v2_sqrt _mm_sqrt_pd
+#define v2_max _mm_max_pd        /* a > b ? a : b */
+static v2 v2_load(const double *p) { return _mm_loadu_pd(p); }
+static void v2_store(double *p, v2 a) { _mm_storeu_pd(p, a); }
 #else
 typedef struct { double a, b; } v2;
-static v2 v_mk(double a, double b) { v2 r; r.a = a; r.b = b; return r; }
-static v2 v_set1(double a) { return v_mk(a, a); }
-static v2 v_add(v2 x, v2 y) { return v_mk(x.a + y.a, x.b + y.b); }
-static v2 v_sub(v2 x, v2 y) { return v_mk(x.a - y.a, x.b - y.b); }
-static v2 v_mul(v2 x, v2 y) { return v_mk(x.a * y.a, x.b * y.b); }
-static v2 v_div(v2 x, v2 y) { return v_mk(x.a / y.a, x.b / y.b); }
-static v2 v_sqrt(v2 x) { return v_mk(sqrt(x.a), sqrt(x.b)); }
-static v2 v_load(const double *p) { return v_mk(p[0], p[1]); }
-static void v_store(double *p, v2 x) { p[0] = x.a; p[1] = x.b; }
-static v2 v_max(v2 x, v2 y) { return v_mk(x.a > y.a ? x.a : y.a, x.b > y.b ? x.b : y.b); }
+static v2 v2_mk(double a, double b) { v2 r; r.a = a; r.b = b; return r; }
+static v2 v2_set1(double a) { return v2_mk(a, a); }
+static v2 v2_add(v2 x, v2 y) { return v2_mk(x.a + y.a, x.b + y.b); }
+static v2 v2_sub(v2 x, v2 y) { return v2_mk(x.a - y.a, x.b - y.b); }
+static v2 v2_mul(v2 x, v2 y) { return v2_mk(x.a * y.a, x.b * y.b); }
+static v2 v2_div(v2 x, v2 y) { return v2_mk(x.a / y.a, x.b / y.b); }
+static v2 v2_sqrt(v2 x) { return v2_mk(sqrt(x.a), sqrt(x.b)); }
+static v2 v2_load(const double *p) { return v2_mk(p[0], p[1]); }
+static void v2_store(double *p, v2 x) { p[0] = x.a; p[1] = x.b; }
+static v2 v2_max(v2 x, v2 y) { return v2_mk(x.a > y.a ? x.a : y.a, x.b > y.b ? x.b : y.b); }
 #endif
-
-/* Element positions of a step i for nv pairs of rows: x, (x/a)^2 and the
- * rigid slip (gy + gphi x) h.  On the rectangular grid every row has the
- * same elements (aj = a, h = 2a/nx), so the first pair's serve all. */
-static inline void step_geometry(const march *m, const v2 *aj, const v2 *h, int nv, int rect,
-                                 int slip_too, int i, v2 *x, v2 *tt, v2 *vy)
-{
-    const v2 xi = v_set1(i + 0.5), inv_a = v_set1(m->inv_a);
-    const v2 gy = v_set1(m->gy), gphi = v_set1(m->gphi);
-    int v;
-    for (v = 0; v < (rect ? 1 : nv); v++) {
-        const v2 xv = v_sub(aj[v], v_mul(xi, h[v])), t = v_mul(xv, inv_a);
-        x[v] = xv;
-        tt[v] = v_mul(t, t);
-        if (slip_too)
-            vy[v] = v_mul(v_add(gy, v_mul(gphi, xv)), h[v]);
-    }
-    for (; v < nv; v++) {
-        x[v] = x[0];
-        tt[v] = tt[0];
-        if (slip_too)
-            vy[v] = vy[0];
-    }
-}
-
-/* Sum of q (parabolic) or sqrt(q) over the inside elements of each row of
- * the group, for the pressure scale.  An element outside adds +0, which
- * changes no sum (a sum that starts at +0 never becomes -0). */
-static inline void group_pressure(const march *m, const group *g, int nv, int rect,
-                                  double *rows)
-{
-    v2 aj[GROUP / 2], h[GROUP / 2], w2[GROUP / 2], acc[GROUP / 2];
-    const v2 zero = v_set1(0.0);
-    int i, v;
-    for (v = 0; v < nv; v++) {
-        aj[v] = v_load(g->aj + 2 * v);
-        h[v] = v_load(g->h + 2 * v);
-        w2[v] = v_load(g->w2 + 2 * v);
-        acc[v] = zero;
-    }
-    for (i = g->lo; i < g->hi; i++) {
-        v2 x[GROUP / 2], tt[GROUP / 2];
-        step_geometry(m, aj, h, nv, rect, 0, i, x, tt, 0);
-        for (v = 0; v < nv; v++) {
-            const v2 q = v_max(v_sub(w2[v], tt[v]), zero);
-            acc[v] = v_add(acc[v], m->parabolic ? q : v_sqrt(q));
-        }
-    }
-    for (v = 0; v < nv; v++)
-        v_store(rows + 2 * v, acc[v]);
-}
 
 /* Sums of one group per row, before the factor h dy. */
 typedef struct {
@@ -280,58 +249,76 @@ typedef struct {
     int nslip, converged;
 } sums;
 
-/* The march of a group with one friction coefficient over the patch
- * (Coulomb, or falling friction at the rigid slip speed), nv pairs of rows
- * side by side, without a branch or a comparison; the element count nslip
- * is not kept.  With g = mu pn and t* the trial traction, the element's
- * traction is t* g / max(|t*|, g): for |t*|^2 > g^2 (the march's test for
- * slip) that is t* g/|t*|, the very quotient of group_march, and otherwise
- * t* g/g = t* exactly, because sqrt(g*g) == g in binary floating point
- * (sqrt and * correctly rounded; g*g neither underflows nor overflows, which
- * coulomb_exact guarantees).  Outside the ellipse max(q, 0) = 0 makes g = 0
- * and the traction +-0: that adds +-0 to the sums, which changes none of
- * them (a sum that starts at +0 never becomes -0), and enters the next
- * element's trial traction only as a zero; so each row adds exactly what
- * its own march adds. */
-static inline void group_coulomb(const march *m, const group *g, int nv, int rect, sums *s)
+/* A kernel inlined into its dispatcher, for each fixed width and grid: at
+ * -O2 GCC would otherwise compile one kernel for all widths, its vectors in
+ * memory (some 15 % slower at 20 x 20). */
+#if defined(__GNUC__)
+#define RR_FASTSIM_INLINE inline __attribute__((always_inline))
+#else
+#define RR_FASTSIM_INLINE inline
+#endif
+
+#define V v2
+#define V_LANES 2
+#define V_FN static
+#include "rr_fastsim_kernel.h"
+#undef V
+#undef V_LANES
+#undef V_FN
+
+#if RR_FASTSIM_AVX
+#include <immintrin.h>
+typedef __m256d v4;
+#define v4_set1 _mm256_set1_pd
+#define v4_add _mm256_add_pd
+#define v4_sub _mm256_sub_pd
+#define v4_mul _mm256_mul_pd
+#define v4_div _mm256_div_pd
+#define v4_sqrt _mm256_sqrt_pd
+#define v4_max _mm256_max_pd     /* a > b ? a : b, as _mm_max_pd */
+#define v4_load _mm256_loadu_pd
+#define v4_store _mm256_storeu_pd
+
+#define V v4
+#define V_LANES 4
+#define V_FN static __attribute__((target("avx")))
+#include "rr_fastsim_kernel.h"
+#undef V
+#undef V_LANES
+#undef V_FN
+#endif
+
+/* 4 lanes where the processor and the system run AVX, else 2. */
+static int fastsim_lanes(void)
 {
-    v2 aj[GROUP / 2], h[GROUP / 2], w2[GROUP / 2], y[GROUP / 2], gxh[GROUP / 2];
-    v2 px[GROUP / 2], py[GROUP / 2], sx[GROUP / 2], sy[GROUP / 2], sm[GROUP / 2];
-    const v2 zero = v_set1(0.0), tiny = v_set1(DBL_MIN);
-    const v2 scale = v_set1(m->scale), mu = v_set1(m->mu_bound);
-    int i, v;
-    for (v = 0; v < nv; v++) {
-        aj[v] = v_load(g->aj + 2 * v);
-        h[v] = v_load(g->h + 2 * v);
-        w2[v] = v_load(g->w2 + 2 * v);
-        y[v] = v_load(g->y + 2 * v);
-        gxh[v] = v_load(g->gxh + 2 * v);
-        px[v] = py[v] = sx[v] = sy[v] = sm[v] = zero;
+#if RR_FASTSIM_AVX
+    return __builtin_cpu_supports("avx") ? 4 : 2;
+#else
+    return 2;
+#endif
+}
+
+/* The kernels of the march's vector width. */
+static void pressure_dispatch(const march *m, const group *g, double *rows)
+{
+#if RR_FASTSIM_AVX
+    if (m->lanes == 4) {
+        pressure_dispatch_v4(m, g, rows);
+        return;
     }
-    for (i = g->lo; i < g->hi; i++) {
-        v2 x[GROUP / 2], tt[GROUP / 2], vy[GROUP / 2];
-        step_geometry(m, aj, h, nv, rect, 1, i, x, tt, vy);
-        for (v = 0; v < nv; v++) {
-            const v2 q = v_max(v_sub(w2[v], tt[v]), zero);
-            const v2 gb = v_mul(mu, v_mul(scale, m->parabolic ? q : v_sqrt(q)));
-            const v2 tx = v_sub(px[v], gxh[v]), ty = v_sub(py[v], vy[v]);
-            const v2 mag = v_sqrt(v_add(v_mul(tx, tx), v_mul(ty, ty)));
-            /* max(g, DBL_MIN): no 0/0 outside the ellipse */
-            const v2 r = v_div(gb, v_max(mag, v_max(gb, tiny)));
-            px[v] = v_mul(tx, r);
-            py[v] = v_mul(ty, r);
-            sx[v] = v_add(sx[v], px[v]);
-            sy[v] = v_add(sy[v], py[v]);
-            sm[v] = v_add(sm[v], v_sub(v_mul(x[v], py[v]), v_mul(y[v], px[v])));
-        }
+#endif
+    pressure_dispatch_v2(m, g, rows);
+}
+
+static void coulomb_dispatch(const march *m, const group *g, sums *s)
+{
+#if RR_FASTSIM_AVX
+    if (m->lanes == 4) {
+        coulomb_dispatch_v4(m, g, s);
+        return;
     }
-    for (v = 0; v < nv; v++) {
-        v_store(s->sx + 2 * v, sx[v]);
-        v_store(s->sy + 2 * v, sy[v]);
-        v_store(s->sm + 2 * v, sm[v]);
-    }
-    s->nslip = 0;
-    s->converged = 1;
+#endif
+    coulomb_dispatch_v2(m, g, s);
 }
 
 /* group_coulomb's condition.  Inside the ellipse q >= 2^-65 = 2.7e-20:
@@ -344,38 +331,6 @@ static int coulomb_exact(const march *m)
 {
     const double ms = m->mu_bound * m->scale;
     return ms >= 1e-80 && ms <= 1e100;
-}
-
-/* The vector kernels for the group's width and grid, each compiled for its
- * own fixed number of pairs. */
-static void pressure_dispatch(const march *m, const group *g, double *rows)
-{
-    if (g->width == 10) {
-        if (m->strips) group_pressure(m, g, 5, 0, rows); else group_pressure(m, g, 5, 1, rows);
-    } else if (g->width == 8) {
-        if (m->strips) group_pressure(m, g, 4, 0, rows); else group_pressure(m, g, 4, 1, rows);
-    } else if (g->width == 6) {
-        if (m->strips) group_pressure(m, g, 3, 0, rows); else group_pressure(m, g, 3, 1, rows);
-    } else if (g->width == 4) {
-        if (m->strips) group_pressure(m, g, 2, 0, rows); else group_pressure(m, g, 2, 1, rows);
-    } else {
-        if (m->strips) group_pressure(m, g, 1, 0, rows); else group_pressure(m, g, 1, 1, rows);
-    }
-}
-
-static void coulomb_dispatch(const march *m, const group *g, sums *s)
-{
-    if (g->width == 10) {
-        if (m->strips) group_coulomb(m, g, 5, 0, s); else group_coulomb(m, g, 5, 1, s);
-    } else if (g->width == 8) {
-        if (m->strips) group_coulomb(m, g, 4, 0, s); else group_coulomb(m, g, 4, 1, s);
-    } else if (g->width == 6) {
-        if (m->strips) group_coulomb(m, g, 3, 0, s); else group_coulomb(m, g, 3, 1, s);
-    } else if (g->width == 4) {
-        if (m->strips) group_coulomb(m, g, 2, 0, s); else group_coulomb(m, g, 2, 1, s);
-    } else {
-        if (m->strips) group_coulomb(m, g, 1, 0, s); else group_coulomb(m, g, 1, 1, s);
-    }
 }
 
 /* The march of a group, one element of each row at a time: any friction law,
@@ -397,7 +352,7 @@ static void group_march(const march *m, const group *g, int local, rr_fastsim_fi
         double tx[GROUP], ty[GROUP], pn[GROUP], gb[GROUP], mag[GROUP], xs[GROUP];
         int slip[GROUP], in[GROUP];
         newton nw[GROUP];
-        unsigned pending = 0;
+        unsigned long pending = 0;
         for (k = 0; k < nr; k++) {
             const double q = elem_q(m, g, k, i, &xs[k]);
             in[k] = q > 0.0;
@@ -417,7 +372,7 @@ static void group_march(const march *m, const group *g, int local, rr_fastsim_fi
                         const double lx = m->fl->L1 * tx[k], ly = m->fl->L2 * ty[k];
                         newton_init(&m->lw, pn[k], mag[k],
                                     sqrt(lx * lx + ly * ly) / (mag[k] * g->h[k]), &nw[k]);
-                        pending |= 1u << k;
+                        pending |= 1ul << k;
                     }
                 }
             }
@@ -425,9 +380,9 @@ static void group_march(const march *m, const group *g, int local, rr_fastsim_fi
         /* the Newton iterations of the slipping elements, side by side */
         while (pending)
             for (k = 0; k < nr; k++)
-                if ((pending >> k & 1u) && newton_step(&m->lw, &nw[k], &s->converged)) {
+                if ((pending >> k & 1ul) && newton_step(&m->lw, &nw[k], &s->converged)) {
                     gb[k] = nw[k].g;
-                    pending &= ~(1u << k);
+                    pending &= ~(1ul << k);
                 }
         for (k = 0; k < nr; k++) {
             if (in[k]) {
@@ -520,6 +475,7 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
     m.ny = ny;
     m.strips = o->grid == RR_GRID_STRIPS;
     m.parabolic = o->bound == RR_BOUND_PARABOLIC;
+    m.lanes = fastsim_lanes();
 
     /* Rows j at y_j = -b + (j + 1/2) dy.  RR_GRID_RECT: every row spans the
      * ellipse's bounding box |x| <= a and elements outside the ellipse carry

@@ -8,6 +8,7 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 #include "rr_common.h"
 #include "rr_kalker.h"
 #include "rr_friction.h"
@@ -1181,6 +1182,67 @@ static void test_field(void)
     }
 }
 
+static int same_bits(double a, double b)
+{
+    return memcmp(&a, &b, sizeof a) == 0;
+}
+
+/* With one friction coefficient over the patch and no field, FASTSIM runs
+ * its vector kernel (4 rows per AVX vector where the processor has AVX,
+ * else 2); with a field, the scalar march.  Both must give the same bits
+ * for any number of rows: groups of any width, idle lanes, groups past the
+ * ones set up once (more than 80 rows with 2 lanes, 160 with 4). */
+static void test_vector_kernel(void)
+{
+    static const int methods[3] = {RR_METHOD_FASTSIM, RR_METHOD_FASTSIM_BLENDED,
+                                   RR_METHOD_MODIFIED_FASTSIM};
+    static const int many_rows[4] = {81, 99, 161, 170};
+    int t, rep, ok = 1, st_ok = 1, n = 0;
+    char buf[160];
+
+    /* 1 .. 40 rows, then a few more (the field of 170 x 37 fits MAXEL) */
+    for (t = 0; t < 44; t++)
+        for (rep = 0; rep < 8; rep++) {
+            const int ny = t < 40 ? t + 1 : many_rows[t - 40];
+            const int nx = 1 + (int)((ny <= 40 ? 40 : 37) * lcg());
+            const int grid = rep & 1 ? RR_GRID_STRIPS : RR_GRID_RECT;
+            const int bound = rep & 2 ? RR_BOUND_ELLIPTIC : RR_BOUND_PARABOLIC;
+            rr_contact_case c = base_case();
+            rr_friction fr = rep & 4 ? falling(lcg_range(0.1, 0.6), lcg_range(0.2, 0.9),
+                                               lcg_range(0.1, 2.0))
+                                     : coulomb(lcg_range(0.1, 0.6));
+            rr_creep_opts o = opts(methods[(int)(3 * lcg())], nx, ny, bound, grid);
+            rr_fastsim_field fld = {0, 0, 0, 0, 0, 0, 0};
+            rr_forces f, f0;
+            int st, st0;
+            o.slip_speed = RR_SLIP_RIGID;
+            c.a = lcg_range(1e-3, 8e-3);
+            c.b = c.a * lcg_range(0.2, 5.0);
+            c.N = lcg_range(1e2, 1e5);
+            c.cx = lcg_creep(5e-2);
+            c.cy = lcg() < 0.2 ? 0.0 : lcg_creep(5e-3);
+            c.cphi = lcg() < 0.2 ? 0.0 : lcg_creep(2.0);
+            c.speed = lcg_range(0.5, 30.0);
+            fld.px = fld_px;
+            st = rr_fastsim(&c, &fr, &o, &f, 0);
+            st0 = rr_fastsim(&c, &fr, &o, &f0, &fld);
+            if (st != RR_OK || st0 != RR_OK)
+                st_ok = 0;
+            if (!same_bits(f.fx, f0.fx) || !same_bits(f.fy, f0.fy) || !same_bits(f.mz, f0.mz)) {
+                if (ok) {
+                    snprintf(buf, sizeof buf, "vector kernel = scalar march, first at %dx%d %s %s",
+                             nx, ny, grid_name[grid], bound_name[bound]);
+                    CHECK(0, buf);
+                }
+                ok = 0;
+            }
+            n++;
+        }
+    snprintf(buf, sizeof buf, "vector kernel = scalar march, bit for bit, on %d cases", n);
+    CHECK(ok, buf);
+    CHECK(st_ok, "vector kernel cases: status OK");
+}
+
 /* The dispatcher calls the chosen method. */
 static void test_dispatch(void)
 {
@@ -1237,6 +1299,7 @@ int main(void)
     test_blended();
     test_modified();
     test_field();
+    test_vector_kernel();
     test_dispatch();
     return rr_test_summary();
 }
