@@ -29,8 +29,10 @@ def _simulate(args):
         print(f"rollerrig simulate: {e}", file=sys.stderr)
         return 2
     simulated = len(res) * res.dt
-    print(f"rollerrig {__version__}: {simulated:g} s simulated in {wall:.2f} s of wall time "
-          f"(real-time factor {simulated / wall:.0f}), dt = {res.dt * 1e3:g} ms, "
+    run = res.wall["run"]
+    print(f"rollerrig {__version__}: {simulated:g} s simulated in {run:.3f} s "
+          f"(real-time factor {simulated / run:.0f}; set-up {res.wall['setup']:.3f} s, "
+          f"all {wall:.2f} s), dt = {res.dt * 1e3:g} ms, "
           f"{res.params['contact']['creep_method'] if not args.method else args.method}")
     print(res.table())
     os.makedirs(args.out, exist_ok=True)

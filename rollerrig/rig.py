@@ -17,9 +17,12 @@ samples by a fixed-step L-stable method.  Default parameters:
 rollerrig/data/rig_default.toml, every value with its origin
 (docs/parameters.md).
 """
+import copy
+import functools
 import math
 import os
 import sys
+import time
 from dataclasses import dataclass
 
 import numpy as np
@@ -59,9 +62,14 @@ def load_parameters(path):
         return tomllib.load(fh)
 
 
+@functools.lru_cache(maxsize=1)
+def _defaults():
+    return load_parameters(DEFAULTS_PATH)
+
+
 def default_parameters():
     """The default parameter set (a fresh nested dict: change it freely)."""
-    return load_parameters(DEFAULTS_PATH)
+    return copy.deepcopy(_defaults())
 
 
 def _merge(base, over, where=""):
@@ -173,12 +181,20 @@ def _geometry(P):
     alpha = math.atan(_number(P, "wheelset", "conicity", nonneg=True))
     crown = _number(P, "roller", "crown_radius_m", positive=True)
     span = _number(P, "wheelset", "contact_half_spacing_m", positive=True)
+    reach = _number(P, "integration", "table_half_range_m", positive=True)
+    rows = P["integration"]["table_rows"]
+    return _rig_table(r0, R0, hw, alpha, crown, span, reach, int(rows))
+
+
+# The table is a pure function of these numbers and read-only, so runs on the
+# same geometry (a sweep over controller or friction settings, a notebook
+# re-running a cell) share one build instead of repeating its ~50 ms.
+@functools.lru_cache(maxsize=8)
+def _rig_table(r0, R0, hw, alpha, crown, span, reach, rows):
     g = RigGeometry(wheel=Profile.conical(alpha, (-hw, hw), r0=r0, n=121),
                     roller=Profile.cylinder((-hw, hw), crown_radius=crown, n=121),
                     wheel_radius=r0, roller_radius=R0, wheel_y=span, roller_y=span)
-    reach = _number(P, "integration", "table_half_range_m", positive=True)
-    rows = P["integration"]["table_rows"]
-    return contact_table(g, -reach, reach, int(rows))
+    return contact_table(g, -reach, reach, rows)
 
 
 def _creep_options(func, P, method, nx, ny, creep):
@@ -265,6 +281,9 @@ class RigResult:
     dt: float
     status: int
     message: str
+    #: wall-clock seconds: "setup" (parameters, contact table: a one-off,
+    #: as the paper's offline database) and "run" (the stepping loop)
+    wall: dict = None
 
     def __getattr__(self, name):
         if name in RECORD_FIELDS:
@@ -349,6 +368,7 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     NaN) stops cleanly: the result holds the history so far, its status
     and message say why.
     """
+    t0 = time.perf_counter()
     rig, P, _ = build_rig(params, dt=dt, method=method, substeps=substeps, ode=ode, nx=nx,
                           ny=ny, roller_speed=roller_speed, start=start, **creep)
     S = P["scenario"]
@@ -376,6 +396,7 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     out = np.full((n, len(RECORD_FIELDS)), np.nan)
     chunk = max(1, n // 50)
     status = 0
+    t1 = time.perf_counter()
     for start in range(0, n, chunk):
         stop = min(n, start + chunk)
         rec, status = rig.run(roller_ref[start:stop], xi_ref[start:stop])
@@ -388,10 +409,11 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
             good = np.isfinite(rec[:, 0]) & (rec[:, -1] >= 0)
             out = out[:start + int(np.count_nonzero(good))]
             break
+    wall = {"setup": t1 - t0, "run": time.perf_counter() - t1}
     if progress:
         sys.stderr.write("\n")
     message = "ok" if status >= 0 else f"stopped at t = {rig.t:.4f} s: {status_message(status)}"
-    return RigResult(out, P, targets, target_times, dt, int(status), message)
+    return RigResult(out, P, targets, target_times, dt, int(status), message, wall)
 
 
 def replay(res, *, method=None, nx=None, ny=None, **creep):

@@ -72,6 +72,8 @@ def test_methods_and_named_arrays():
         res = rr.simulate(duration=1.0, targets=[0.02], method=method)
         assert res.status == 0, method
         assert res.fx.shape == res.time.shape == res.normal_load.shape == (250,)
+        # wall-clock split: set-up (the contact table, cached) and stepping
+        assert set(res.wall) == {"setup", "run"} and min(res.wall.values()) > 0
 
 
 def test_unbounded_linear_theory_is_held_by_the_torque_limit():
