@@ -3,21 +3,25 @@
  * fixed-rate loop as on a real-time target.
  *
  *   make -C csrc example              # builds csrc/build/rig_realtime
- *   csrc/build/rig_realtime [period_ms [seconds [free]]]
+ *   csrc/build/rig_realtime [period_ms [seconds [free|floor]]]
  *
  * period_ms: the loop period and control sample time (default 4, the
  * paper's real-time step); seconds: simulated time (default 20, the
- * paper's four creepage targets of 5 s each); "free": run as fast as
- * possible instead of sleeping to the next period (clock_nanosleep,
- * TIMER_ABSTIME).  Prints the creepage reached per target and the step
+ * paper's four creepage targets of 5 s each).  The loop sleeps to the next
+ * period (clock_nanosleep, TIMER_ABSTIME); "free" runs as fast as possible
+ * instead; "floor" keeps the loop but replaces the rig's step by a fixed
+ * amount of arithmetic lasting about as long, so its step times show the
+ * machine's own jitter (interrupts, a virtual machine's host) that any code
+ * run there would see.  Prints the creepage reached per target and the step
  * time's min, median, p99 and max.  The parameters are those of
  * rollerrig/data/rig_default.toml (conical 1:20 wheel on a crowned roller,
  * FASTSIM 20 x 20 with falling friction at the rigid slip speed, TR-BDF2),
  * set in rig_defaults() below.  As a real-time task it locks its memory
- * (mlockall) and asks for the SCHED_FIFO policy; where that is not allowed
- * it says so and runs as an ordinary process.
+ * (mlockall), asks for the SCHED_FIFO policy and, on Linux, stays on the
+ * last processor; where that is not allowed it says so and runs as an
+ * ordinary process.
  */
-#define _POSIX_C_SOURCE 200112L
+#define _GNU_SOURCE       /* sched_setaffinity (Linux); the rest is POSIX */
 #include <math.h>
 #include <sched.h>
 #include <sys/mman.h>
@@ -25,6 +29,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "rollerrig.h"
 
@@ -118,6 +123,17 @@ static double now_us(void)
     return 1e6 * (double)ts.tv_sec + 1e-3 * (double)ts.tv_nsec;
 }
 
+/* Fixed work for the "floor" mode: n dependent multiply-adds through a
+ * volatile, which the compiler can neither fold nor drop. */
+static double busy(long n, double x)
+{
+    volatile double v = x;
+    long i;
+    for (i = 0; i < n; i++)
+        v = v * 0.999999 + 1e-6;
+    return v;
+}
+
 static int cmp(const void *a, const void *b)
 {
     const double x = *(const double *)a, y = *(const double *)b;
@@ -129,7 +145,8 @@ int main(int argc, char **argv)
     static const double targets[4] = {0.04, 0.015, 0.02, 0.03};
     const double period = (argc > 1 ? atof(argv[1]) : 4.0) * 1e-3;
     const double seconds = argc > 2 ? atof(argv[2]) : 20.0;
-    const int sleep_on = !(argc > 3 && strcmp(argv[3], "free") == 0);
+    const char *mode = argc > 3 ? argv[3] : "sleep";
+    const int sleep_on = strcmp(mode, "free") != 0, floor_on = strcmp(mode, "floor") == 0;
     const double V = 5.0, R0 = 0.160;
     rr_wheel_roller pair[2];
     rr_contact_table table;
@@ -137,11 +154,13 @@ int main(int argc, char **argv)
     static rr_rig rig;
     double rec[RR_REC_COUNT], last[4][RR_REC_COUNT];
     struct timespec next;
-    long n, k, nsteps;
+    long n, k, nsteps, nbusy = 0;
+    double sink = 1.0;
     int st;
 
-    if (!(period > 0.0) || !(seconds > 0.0)) {
-        fprintf(stderr, "usage: %s [period_ms [seconds [free]]]\n", argv[0]);
+    if (!(period > 0.0) || !(seconds > 0.0)
+        || (strcmp(mode, "sleep") != 0 && sleep_on && !floor_on)) {
+        fprintf(stderr, "usage: %s [period_ms [seconds [free|floor]]]\n", argv[0]);
         return 2;
     }
     nsteps = (long)(seconds / period + 0.5);
@@ -165,12 +184,34 @@ int main(int argc, char **argv)
         return 1;
     }
     {
-        /* real-time task: no page faults, not preempted by ordinary processes */
+        /* real-time task: no page faults, not preempted by ordinary processes,
+         * not moved between processors */
         struct sched_param sp;
         const int locked = mlockall(MCL_CURRENT | MCL_FUTURE) == 0;
+        int pinned = 0;
+#ifdef __linux__
+        cpu_set_t cpus;
+        const long ncpu = sysconf(_SC_NPROCESSORS_ONLN);
+        CPU_ZERO(&cpus);
+        CPU_SET(ncpu > 1 ? (int)ncpu - 1 : 0, &cpus);
+        pinned = sched_setaffinity(0, sizeof cpus, &cpus) == 0;
+#endif
         sp.sched_priority = sched_get_priority_max(SCHED_FIFO) - 1;
-        printf("memory %slocked, SCHED_FIFO %s\n", locked ? "" : "not ",
-               sched_setscheduler(0, SCHED_FIFO, &sp) == 0 ? "on" : "refused");
+        printf("memory %slocked, SCHED_FIFO %s, %s\n", locked ? "" : "not ",
+               sched_setscheduler(0, SCHED_FIFO, &sp) == 0 ? "on" : "refused",
+               pinned ? "pinned to the last processor" : "not pinned");
+    }
+    if (floor_on) {
+        /* as long as the rig's median step: calibrate on the step itself */
+        double t0 = now_us(), t_step, t_busy;
+        for (k = 0; k < 200; k++)
+            rr_rig_step(&rig, V / R0, targets[0], rec);
+        t_step = (now_us() - t0) / 200.0;
+        rr_rig_init(&p, V / R0, &rig);
+        t0 = now_us();
+        sink = busy(1000000, sink);
+        t_busy = (now_us() - t0) / 1e6;
+        nbusy = (long)(t_step / t_busy);
     }
     clock_gettime(CLOCK_MONOTONIC, &next);
     for (n = 0; n < nsteps; n++) {
@@ -185,7 +226,10 @@ int main(int argc, char **argv)
             clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, NULL);
         }
         t0 = now_us();
-        st = rr_rig_step(&rig, V / R0, targets[target < 4 ? target : 3], rec);
+        if (floor_on)
+            sink = busy(nbusy, sink);
+        else
+            st = rr_rig_step(&rig, V / R0, targets[target < 4 ? target : 3], rec);
         step_us[n] = now_us() - t0;
         if (st < 0) {
             fprintf(stderr, "t = %.3f s: %s\n", rig.t, rr_status_message(st));
@@ -193,8 +237,9 @@ int main(int argc, char **argv)
         }
         memcpy(last[target < 4 ? target : 3], rec, sizeof rec);
     }
-    printf("target  creepage  adhesion  roller m/s  wheel m/s   (end of each target's interval)\n");
-    for (k = 0; k < 4; k++)
+    if (!floor_on)
+        printf("target  creepage  adhesion  roller m/s  wheel m/s   (end of each target's interval)\n");
+    for (k = 0; k < 4 && !floor_on; k++)
         printf("%6.3f  %8.5f  %8.4f  %10.4f  %9.4f\n", targets[k], last[k][RR_REC_CREEPAGE],
                last[k][RR_REC_ADHESION], last[k][RR_REC_ROLLER_SPEED],
                last[k][RR_REC_WHEELSET_SPEED]);
@@ -203,11 +248,15 @@ int main(int argc, char **argv)
         for (k = 1; k < nsteps; k++)
             if (step_us[k] > step_us[kmax])
                 kmax = k;
+        if (floor_on)
+            printf("floor: %ld multiply-adds per step in place of the rig (%g)\n", nbusy,
+                   sink);
         printf("slowest step: number %ld (t = %.3f s)\n", kmax, (kmax + 1) * period);
     }
     qsort(step_us, (size_t)nsteps, sizeof step_us[0], cmp);
     printf("%ld steps of %.1f ms%s: step time min %.1f us, median %.1f us, p99 %.1f us, "
-           "max %.1f us\n", nsteps, period * 1e3, sleep_on ? " (fixed-rate loop)" : " (free run)",
+           "max %.1f us\n", nsteps, period * 1e3, floor_on ? " (fixed-rate loop, fixed work: the floor)"
+           : sleep_on ? " (fixed-rate loop)" : " (free run)",
            step_us[0], step_us[nsteps / 2], step_us[(long)(0.99 * (nsteps - 1))],
            step_us[nsteps - 1]);
     return 0;
