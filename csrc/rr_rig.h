@@ -40,7 +40,12 @@
  * held until the next sample; the plant is then integrated over T in nsub
  * equal steps of a fixed-step L-stable method (rr_ode.h) with an
  * approximate Jacobian (springs exact, creep forces by the linear theory
- * scaled to the current saturation): every step costs the same.
+ * scaled to the current saturation, the linear theory's own for it): every
+ * step costs the same.  The positions x, y, yaw, chi, theta_r are the
+ * integrals of the next five states, which the integrator's linear algebra
+ * exploits (rr_ode nq = 5: 7 unknowns instead of 12).  TR-BDF2 with
+ * newton_iters = 0, linearly implicit, needs one contact evaluation per
+ * step.
  */
 #ifndef RR_RIG_H
 #define RR_RIG_H
@@ -135,7 +140,7 @@ typedef struct {
 /*
  * rr_rig_check - 0 if the parameters are usable, else RR_ERR_NONFINITE,
  * RR_ERR_PARAM (a mass, inertia, stiffness, damping, preload, sample time,
- * nsub or lag out of range, or a controller's T differs from T), or the
+ * nsub, newton_iters or lag out of range, or a controller's T differs from T), or the
  * status of the contact model, controller or encoder checks.
  */
 int rr_rig_check(const rr_rig_params *p);
