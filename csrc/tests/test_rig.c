@@ -163,6 +163,10 @@ static void test_errors(const rr_rig_params *good)
     CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "no sub-steps");
     p = *good; p.method = 7;
     CHECK_STATUS(rr_rig_check(&p), RR_ERR_METHOD, "unknown integrator");
+    p = *good; p.newton_iters = -1;
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "negative Newton count");
+    p = *good; p.newton_iters = RR_ODE_MAX_NEWTON + 1;
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "Newton count above the maximum");
     CHECK_STATUS(rr_rig_init(good, NAN, &rig), RR_ERR_NONFINITE, "NaN speed");
     /* a wheel off its roller: a clean stop at the sample's start */
     CHECK_STATUS(rr_rig_init(good, 31.25, &rig), RR_OK, "init");
