@@ -92,7 +92,7 @@ static int settings_check(const rr_ode *s)
     if (s->method != RR_ODE_ROS2 && s->method != RR_ODE_TRBDF2
         && s->method != RR_ODE_LINEULER)
         return RR_ERR_METHOD;
-    if (s->nq < 0 || 2 * s->nq > s->n)
+    if (s->nq < 0 || 2 * s->nq > s->n || (s->linear_tr != 0 && s->linear_tr != 1))
         return RR_ERR_PARAM;
     if (s->method == RR_ODE_TRBDF2
         && (s->newton_iters < 0 || s->newton_iters > RR_ODE_MAX_NEWTON
@@ -115,6 +115,7 @@ int rr_ode_init(rr_ode *s, int n, int method)
     s->newton_iters = 2;
     s->newton_tol = 1e-6;
     s->nq = 0;
+    s->linear_tr = 0;
     for (i = 0; i < RR_ODE_MAXN; i++)
         s->ytyp[i] = 1.0;
     s->nfev = 0;
@@ -134,7 +135,7 @@ int rr_ode_nfev(const rr_ode *s, int jac_given)
     case RR_ODE_ROS2:
         return 2 + fd;
     case RR_ODE_TRBDF2:
-        return 1 + 2 * s->newton_iters + fd;
+        return 1 + (s->linear_tr ? 1 : 2) * s->newton_iters + fd;
     default:
         return 1 + fd;
     }
@@ -280,13 +281,13 @@ static double scaled_norm(const rr_ode *s, const double *dz, const double *z)
  */
 static int newton_stage(rr_ode *s, rr_ode_rhs f, void *ctx, double tz, double hd,
                         const double *base, const double *fz0, double *z, double *err,
-                        int *warn)
+                        int *warn, int iters)
 {
     const int n = s->n;
     double prev = 0.0, cur = 0.0, theta;
     int it, i, st;
 
-    for (it = 0; it <= s->newton_iters; it++) {
+    for (it = 0; it <= iters; it++) {
         if (it == 0) {
             for (i = 0; i < n; i++)
                 s->r[i] = fz0[i];
@@ -304,9 +305,9 @@ static int newton_stage(rr_ode *s, rr_ode_rhs f, void *ctx, double tz, double hd
         prev = cur;
         cur = scaled_norm(s, s->r, z);
     }
-    if (s->newton_iters == 0)
+    if (iters == 0)
         *err = 0.0;     /* linearly implicit: nothing iterated, nothing to estimate */
-    else if (s->newton_iters == 1 || cur == 0.0)
+    else if (iters == 1 || cur == 0.0)
         *err = cur;
     else {
         /* corrections below newton_tol/1000 are rounding noise, not a rate */
@@ -350,7 +351,8 @@ static int step_trbdf2(rr_ode *s, rr_ode_rhs f, void *ctx, double t, double h, i
         s->k1[i] = s->y0[i] + hd * s->f0[i];   /* base of the TR stage */
         s->z[i] = s->y0[i];
     }
-    st = newton_stage(s, f, ctx, t + trbdf2_c2 * h, hd, s->k1, s->f0, s->z, &err2, warn);
+    st = newton_stage(s, f, ctx, t + trbdf2_c2 * h, hd, s->k1, s->f0, s->z, &err2, warn,
+                      s->linear_tr ? 0 : s->newton_iters);
     if (st < 0)
         return st;
     /* f2 implied by the trapezoidal equation, then the BDF2 stage's base */
@@ -359,7 +361,7 @@ static int step_trbdf2(rr_ode *s, rr_ode_rhs f, void *ctx, double t, double h, i
         s->k1[i] = s->y0[i] + trbdf2_w * h * (s->f0[i] + s->k2[i]);
     }
     /* BDF2 stage from z = z2, with f2 standing for f(t + h, z2) */
-    st = newton_stage(s, f, ctx, t + h, hd, s->k1, s->k2, s->z, &err3, warn);
+    st = newton_stage(s, f, ctx, t + h, hd, s->k1, s->k2, s->z, &err3, warn, s->newton_iters);
     if (st < 0)
         return st;
     s->newton_err = err2 > err3 ? err2 : err3;

@@ -46,15 +46,21 @@
  *     the stability function of TR-BDF2 (L-stable with the exact J) and
  *     order 2 with the exact Jacobian of an autonomous f (the dropped
  *     terms are O(|z - y|^2) = O(h^2) inside an O(h) stage), 1 otherwise;
- *     newton_err is then 0.  f2 =
+ *     newton_err is then 0.  It is fragile where f has a sharp knee (a
+ *     creep force saturating): a step that crosses the knee trusts the
+ *     slope on its near side and may oscillate about it.  With linear_tr =
+ *     1 only the trapezoidal stage is taken linearly, and the BDF2 stage,
+ *     which gives y1, iterates newton_iters times with the true f: that
+ *     sees such a knee at 1 + newton_iters evaluations.  f2 =
  *     (z2 - y)/(d h) - f(t, y) is the derivative implied by the trapezoidal
  *     equation (Hosea & Shampine), not a fresh f(z2).  The step warns if
  *     the estimated error left in a stage, newton_err, exceeds newton_tol
  *     (the "last correction not small" test).  The fixed iteration count
  *     needs a good J on the stiff modes: with J off by a factor 2 at
  *     h |lambda| = 50 the iteration diverges (and warns); ROS2 does not.
- *     Cost: 1 + 2 newton_iters f + 1 Jacobian + 1 LU + 2 (newton_iters + 1)
- *     solves.
+ *     Cost: 1 + 2 newton_iters f (1 + newton_iters with linear_tr) + 1
+ *     Jacobian + 1 LU + 2 (newton_iters + 1) solves (1 fewer per TR stage
+ *     iteration left out).
  *
  * Second-order structure: with s->nq > 0 the first nq states are positions
  * whose derivatives are the next nq states, y_i' = y_{nq+i} (i < nq), as in
@@ -109,6 +115,8 @@ typedef struct {
                                   * 0: linearly implicit (see above) */
     double newton_tol;           /* TR-BDF2: bound on newton_err, else the step
                                   * warns (default 1e-6) */
+    int linear_tr;               /* TR-BDF2: 1 = no Newton iteration in the
+                                  * trapezoidal stage (default 0) */
     int nq;                      /* second-order structure: y_i' = y_{nq+i} for
                                   * i < nq, 0 <= 2 nq <= n (default 0: none) */
     double ytyp[RR_ODE_MAXN];    /* typical magnitude of each y_i (> 0, in y's
@@ -137,7 +145,8 @@ typedef struct {
 
 /*
  * rr_ode_init - set up *s for n equations with the given method and the
- * default settings (newton_iters 2, newton_tol 1e-6, nq 0, ytyp 1).
+ * default settings (newton_iters 2, newton_tol 1e-6, linear_tr 0, nq 0,
+ * ytyp 1).
  *   status:  0 OK; RR_ERR_PARAM (n outside 1..RR_ODE_MAXN, or s NULL),
  *            RR_ERR_METHOD (unknown method).  On error *s is not usable.
  */
@@ -163,7 +172,7 @@ int rr_ode_nfev(const rr_ode *s, int jac_given);
  *            errors, with y left unchanged (not NaN: it is the integrator's
  *            state, and the caller may retry with a smaller h):
  *            RR_ERR_PARAM (s, f or y NULL, h not > 0, or bad settings:
- *            n, newton_iters, newton_tol <= 0, nq, ytyp <= 0), RR_ERR_METHOD,
+ *            n, newton_iters, newton_tol <= 0, linear_tr, nq, ytyp <= 0), RR_ERR_METHOD,
  *            RR_ERR_NONFINITE (t, h or y not finite, or f, J, W or the
  *            new y not finite), RR_ERR_SINGULAR (W = I - gamma h J singular to
  *            working precision), or the status < 0 returned by f or jac.

@@ -34,7 +34,8 @@ int rr_rig_check(const rr_rig_params *p)
         return RR_ERR_PARAM;
     if (p->method != RR_ODE_ROS2 && p->method != RR_ODE_TRBDF2 && p->method != RR_ODE_LINEULER)
         return RR_ERR_METHOD;
-    if (p->newton_iters < 0 || p->newton_iters > RR_ODE_MAX_NEWTON)
+    if (p->newton_iters < 0 || p->newton_iters > RR_ODE_MAX_NEWTON
+        || (p->linear_tr != 0 && p->linear_tr != 1))
         return RR_ERR_PARAM;
     if ((st = rr_rig_contact_check(&p->contact)) != RR_OK
         || (st = rr_pi_check(&p->roller_pi)) != RR_OK
@@ -376,6 +377,7 @@ int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig)
         || (st = rr_creepctl_init(&p->creepctl, &rig->creepctl, 1.0, roller_speed)) != RR_OK)
         return rig->status = st;
     rig->ode.newton_iters = p->newton_iters;
+    rig->ode.linear_tr = p->linear_tr;
     /* x, y, yaw, chi, theta_r are integrals of the next five states */
     rig->ode.nq = RR_RIG_VX;
     /* a warning flags a stage left off by more than 0.1 % of its typical

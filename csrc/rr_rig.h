@@ -43,9 +43,11 @@
  * scaled to the current saturation, the linear theory's own for it): every
  * step costs the same.  The positions x, y, yaw, chi, theta_r are the
  * integrals of the next five states, which the integrator's linear algebra
- * exploits (rr_ode nq = 5: 7 unknowns instead of 12).  TR-BDF2 with
- * newton_iters = 0, linearly implicit, needs one contact evaluation per
- * step.
+ * exploits (rr_ode nq = 5: 7 unknowns instead of 12).  TR-BDF2 with a
+ * linearly implicit trapezoidal stage and one Newton iteration in the BDF2
+ * stage needs two contact evaluations per step and sees the creep force's
+ * saturation knee; with no iteration at all (one evaluation) a step that
+ * crosses the knee may oscillate about it.
  */
 #ifndef RR_RIG_H
 #define RR_RIG_H
@@ -82,6 +84,7 @@ typedef struct {
     int method;              /* enum rr_ode_method */
     int newton_iters;        /* TR-BDF2's Newton iterations per stage, 0..RR_ODE_MAX_NEWTON
                               * (0: linearly implicit, one contact evaluation per step) */
+    int linear_tr;           /* 1: TR-BDF2's trapezoidal stage without them (rr_ode.h) */
     rr_pi_params roller_pi, wheelset_pi;      /* their T must equal T */
     double roller_tau, wheelset_tau;          /* drive lags [s], > 0 */
     rr_encoder_params roller_enc, wheelset_enc;

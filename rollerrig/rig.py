@@ -96,6 +96,13 @@ def _number(params, section, key, positive=False, nonneg=False):
     return float(v)
 
 
+def _flag(P, section, key):
+    v = P[section][key]
+    if not isinstance(v, bool):
+        raise RollerRigError(f"params: {section}.{key} must be true or false, got {v!r}")
+    return v
+
+
 def _newton_iterations(P):
     k = P["integration"]["newton_iterations"]
     if isinstance(k, bool) or not isinstance(k, int) or not 0 <= k <= 10:
@@ -152,6 +159,7 @@ def _c_params(P, dt, substeps, ode):
         "vmin": n(P, "contact", "min_rolling_speed_m_s", positive=True),
         "T": float(dt), "nsub": int(substeps), "ode_method": ODE_METHODS[ode],
         "newton_iters": _newton_iterations(P),
+        "linear_tr": int(_flag(P, "integration", "linear_first_stage")),
         "roller_Kp": n(P, "roller_drive", "kp_N_m_s_per_rad", nonneg=True),
         "roller_KI": n(P, "roller_drive", "ki_N_m_s_per_rad", nonneg=True),
         "roller_Tmax": n(P, "roller_drive", "torque_limit_N_m", positive=True),

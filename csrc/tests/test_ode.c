@@ -255,7 +255,8 @@ static int vdp_j(void *v, double t, const double *y, double *J)
     return 0;
 }
 
-/* y(T) with N steps; newton: TR-BDF2's iterations (-1: the default); nq:
+/* y(T) with N steps; newton: TR-BDF2's iterations (-1: the default; 100 +
+ * k: k in the BDF2 stage only, linear_tr); nq:
  * 1 to use the second-order structure y1' = y2; returns the worst status */
 static int vdp_run(int m, int newton, int nq, const double *pj, double j11, int N, double T,
                    double *y)
@@ -271,8 +272,13 @@ static int vdp_run(int m, int newton, int nq, const double *pj, double j11, int 
     y[0] = 2.0;
     y[1] = -0.66;
     st = rr_ode_init(&s, 2, m);
-    if (newton >= 0)
+    if (newton >= 100) {          /* 100 + k: k iterations, trapezoidal stage linear */
+        s.newton_iters = newton - 100;
+        s.linear_tr = 1;
+        s.newton_tol = 1e-2;      /* one iteration: newton_err is the whole correction */
+    } else if (newton >= 0) {
         s.newton_iters = newton;
+    }
     s.nq = nq;
     for (k = 0; k < N && st >= 0; k++) {
         st = rr_ode_step(&s, vdp_f, vdp_j, &c, k * (T / N), T / N, y);
@@ -343,6 +349,11 @@ static void test_order(void)
                 1.8, 2.2);
     /* the second-order structure (y1' = y2) changes only rounding */
     check_order("van der Pol TRBDF2, nq 1", RR_ODE_TRBDF2, -1, 1, exact, 0.0, ref, 1.8, 2.2);
+    /* the rig's setting: a linear trapezoidal stage, one iteration in the
+     * BDF2 stage; 2.21 at the coarsest pair (N = 50 -> 100), so a window
+     * of [1.8, 2.35], still clear of 1 and 3 */
+    check_order("van der Pol TRBDF2, linear TR stage, 1 iteration", RR_ODE_TRBDF2, 101, 0,
+                exact, 0.0, ref, 1.8, 2.35);
     check_order("van der Pol TRBDF2, newton_iters 0, nq 1", RR_ODE_TRBDF2, 0, 1, exact, 0.0,
                 ref, 1.8, 2.2);
     check_order("van der Pol ROS2, nq 1", RR_ODE_ROS2, -1, 1, exact, 0.0, ref, 1.8, 2.2);
@@ -593,6 +604,7 @@ static void test_cost(void)
 
                 rr_ode_init(&s, 3, m);
                 s.newton_iters = iters[q];
+                s.linear_tr = m == RR_ODE_TRBDF2 && q % 2;
                 want = rr_ode_nfev(&s, usej);
                 for (k = 0; k < 20; k++) {
                     double h = 1e-4 * (1 + k % 7);   /* varying h, t and y */
@@ -602,8 +614,9 @@ static void test_cost(void)
                         same = 0;
                 }
                 snprintf(buf, sizeof buf,
-                         "%s %s newton_iters %d: %d f calls in every one of 20 steps",
-                         method_name[m], usej ? "analytic J" : "FD J", s.newton_iters, want);
+                         "%s %s newton_iters %d linear_tr %d: %d f calls in every one of 20 "
+                         "steps", method_name[m], usej ? "analytic J" : "FD J", s.newton_iters,
+                         s.linear_tr, want);
                 CHECK(same, buf);
             }
     /* the documented counts */
@@ -616,6 +629,10 @@ static void test_cost(void)
               "TRBDF2, 2 iterations: 5 f (+ n for FD)");
         s.newton_iters = 1;
         CHECK(rr_ode_nfev(&s, 1) == 3, "TRBDF2, 1 iteration: 3 f");
+        s.linear_tr = 1;
+        CHECK(rr_ode_nfev(&s, 1) == 2, "TRBDF2, linear TR stage, 1 iteration: 2 f");
+        s.newton_iters = 0;
+        CHECK(rr_ode_nfev(&s, 1) == 1, "TRBDF2, linearly implicit: 1 f");
         rr_ode_init(&s, 12, RR_ODE_LINEULER);
         CHECK(rr_ode_nfev(&s, 1) == 1 && rr_ode_nfev(&s, 0) == 13,
               "LINEULER: 1 f (+ n for FD)");
@@ -789,6 +806,9 @@ static void test_errors(void)
         s.newton_iters = 0;
         STEP(err_j, 0.0, 0.1, RR_OK, "newton_iters = 0 (linearly implicit)");
         s.newton_iters = 2;
+        s.linear_tr = 2;
+        STEP(err_j, 0.0, 0.1, RR_ERR_PARAM, "linear_tr = 2");
+        s.linear_tr = 0;
         s.nq = -1;
         STEP(err_j, 0.0, 0.1, RR_ERR_PARAM, "nq = -1");
         s.nq = 2;

@@ -50,7 +50,8 @@ static void setup(rr_contact_table *t, rr_rig_params *p)
     p->contact.creep.nx = p->contact.creep.ny = 20;
     p->contact.creep.slip_speed = RR_SLIP_RIGID;
     p->contact.vmin = 0.01;
-    p->T = 0.004; p->nsub = 1; p->method = RR_ODE_TRBDF2; p->newton_iters = 0;
+    p->T = 0.004; p->nsub = 1; p->method = RR_ODE_TRBDF2; p->newton_iters = 1;
+    p->linear_tr = 1;
     p->roller_pi.T = p->wheelset_pi.T = p->roller_enc.T = p->wheelset_enc.T = p->T;
     p->roller_pi.Kp = 300; p->roller_pi.KI = 2; p->roller_pi.Tmax = 100;
     p->wheelset_pi.Kp = 100; p->wheelset_pi.KI = 2; p->wheelset_pi.Tmax = 60;
@@ -167,6 +168,8 @@ static void test_errors(const rr_rig_params *good)
     CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "negative Newton count");
     p = *good; p.newton_iters = RR_ODE_MAX_NEWTON + 1;
     CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "Newton count above the maximum");
+    p = *good; p.linear_tr = 2;
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "linear_tr neither 0 nor 1");
     CHECK_STATUS(rr_rig_init(good, NAN, &rig), RR_ERR_NONFINITE, "NaN speed");
     /* a wheel off its roller: a clean stop at the sample's start */
     CHECK_STATUS(rr_rig_init(good, 31.25, &rig), RR_OK, "init");
