@@ -94,12 +94,19 @@ def timed(fn):
 
 def extension_flags():
     """The flags setuptools compiles rollerrig._core with: Python's CFLAGS and
-    CCSHARED (sysconfig), then setup.py's -std=c99 -O3 -fno-wrapv (last wins)."""
+    CCSHARED (sysconfig), then setup.py's UNIX_COMPILE_ARGS (last wins), read
+    from setup.py itself so that the two cannot drift apart."""
+    import ast
     import sysconfig
     flags = shlex.split(sysconfig.get_config_var("CFLAGS") or "") \
         + shlex.split(sysconfig.get_config_var("CCSHARED") or "")
+    with open(os.path.join(ROOT, "setup.py")) as fh:
+        tree = ast.parse(fh.read())
+    ours = next(ast.literal_eval(node.value) for node in tree.body
+                if isinstance(node, ast.Assign)
+                and any(getattr(t, "id", None) == "UNIX_COMPILE_ARGS" for t in node.targets))
     return [f for f in flags if f.startswith(("-O", "-f", "-D", "-m", "-g"))] \
-        + ["-std=c99", "-O3", "-fno-wrapv"]
+        + list(ours)
 
 
 class CProgram:
@@ -224,6 +231,24 @@ def machine_info(cc_version):
 def machine_line(info):
     return (f"- machine: {info['nproc']} cores available (os.cpu_count {info['cpu_count']}), "
             f"CPU {info['cpu']}; {info['platform']}")
+
+
+def kernel_report_head(title, args, info, date, elapsed, kernel, kernel_ext):
+    """The opening lines of a report that times a C kernel (built twice:
+    plain and with the extension's flags) beside the Python binding."""
+    L = [f"# {title}", ""]
+    if args.quick:
+        L += ["**Quick smoke run (--quick): small sizes, figures indicative only.**", ""]
+    L.append(f"- date: {date}")
+    L.append(f"- command: `{args.command}` (total {elapsed:.0f} s)")
+    L.append(machine_line(info))
+    L.append(f"- python {info['python']}, numpy {info['numpy']}, rollerrig {info['rollerrig']}; "
+             f"C kernel built with `{kernel.command_text}` ({info['cc']}), and again "
+             f"with the extension's flags: `{kernel_ext.command_text}`")
+    L.append(f"- code: {info['code']}; the C kernel is compiled from the working tree, the "
+             "binding is the extension as last built (\"C = Python\" below checks that "
+             "they agree)")
+    return L
 
 
 def conditions_lines(load0, load1, mon):

@@ -49,7 +49,7 @@ from rollerrig import contact
 
 from _bench_common import (ROOT, CProgram, CpuMonitor, command_text, conditions_lines,
                            extension_flags, fmt, interleaved, load_average, log, machine_info,
-                           machine_line, report_path, timed, verdict, write_section)
+                           kernel_report_head, report_path, timed, verdict, write_section)
 
 # Goals (a figure is compared with its goal in the report; nothing is asserted).
 GOAL_FASTSIM30_US = 10.0        # FASTSIM 30x30, batched, one thread: <= 10 us per case
@@ -367,21 +367,8 @@ def twin_table(L, tw):
 
 def report(args, info, load0, load1, date, rows, thr, tw, kernel, kernel_ext, mon, elapsed):
     by = {r["name"]: r for r in rows}
-    L = []
-    L.append("# rollerrig speed benchmarks")
-    L.append("")
-    if args.quick:
-        L.append("**Quick smoke run (--quick): small sizes, figures indicative only.**")
-        L.append("")
-    L.append(f"- date: {date}")
-    L.append(f"- command: `{args.command}` (total {elapsed:.0f} s)")
-    L.append(machine_line(info))
-    L.append(f"- python {info['python']}, numpy {info['numpy']}, rollerrig {info['rollerrig']}; "
-             f"C kernel built with `{kernel.command_text}` ({info['cc']}), and again "
-             f"with the extension's flags: `{kernel_ext.command_text}`")
-    L.append(f"- code: {info['code']}; the C kernel is compiled from the working tree, the "
-             "binding is the extension as last built (\"C = Python\" below checks that "
-             "they agree)")
+    L = kernel_report_head("rollerrig speed benchmarks", args, info, date, elapsed, kernel,
+                           kernel_ext)
     L += conditions_lines(load0, load1, mon)
     L.append("- every figure is the best of several repeats (time.perf_counter; the C kernel "
              "with clock_gettime), all measured side by side in this one run; one thread "

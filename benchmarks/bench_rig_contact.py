@@ -43,7 +43,7 @@ import rollerrig as rr
 
 from _bench_common import (ROOT, CProgram, CpuMonitor, command_text, conditions_lines,
                            extension_flags, fmt, interleaved, load_average, log, machine_info,
-                           machine_line, report_path, timed, verdict, write_section,
+                           kernel_report_head, report_path, timed, verdict, write_section,
                            bench_args)
 
 # Goals of issue 3 (compared in the report; nothing is asserted).
@@ -261,21 +261,8 @@ def report(args, info, load0, load1, date, params, toml, bad_params, c, py, kern
     n = c["states"]
     placement = d["placement_wheelset_us"]
     py_by = {r["item"]: r for r in py["rows"]} if py else {}
-    L = []
-    L.append("# Contact evaluation on the rig (issue 3)")
-    L.append("")
-    if args.quick:
-        L.append("**Quick smoke run (--quick): small sizes, figures indicative only.**")
-        L.append("")
-    L.append(f"- date: {date}")
-    L.append(f"- command: `{args.command}` (total {elapsed:.0f} s)")
-    L.append(machine_line(info))
-    L.append(f"- python {info['python']}, numpy {info['numpy']}, rollerrig {info['rollerrig']}; "
-             f"C kernel built with `{kernel.command_text}` ({info['cc']}), and again with the "
-             f"extension's flags: `{kernel_ext.command_text}`")
-    L.append(f"- code: {info['code']}; the C kernel is compiled from the working tree, the "
-             "binding is the extension as last built (\"C = Python\" below checks that they "
-             "agree)")
+    L = kernel_report_head("Contact evaluation on the rig (issue 3)", args, info, date,
+                           elapsed, kernel, kernel_ext)
     L += conditions_lines(load0, load1, mon)
     L.append(f"- C kernel: best of {c['repeats']} passes (clock_gettime), the items taking "
              f"turns within a round; Python: best of {sz['py_repeats']} (FASTSIM) or "
