@@ -116,9 +116,11 @@ int rr_ode_init(rr_ode *s, int n, int method)
     s->newton_tol = 1e-6;
     s->nq = 0;
     s->linear_tr = 0;
+    s->model = NULL;
     for (i = 0; i < RR_ODE_MAXN; i++)
         s->ytyp[i] = 1.0;
     s->nfev = 0;
+    s->nmev = 0;
     s->njev = 0;
     s->newton_err = 0.0;
     return settings_check(s);
@@ -135,7 +137,7 @@ int rr_ode_nfev(const rr_ode *s, int jac_given)
     case RR_ODE_ROS2:
         return 2 + fd;
     case RR_ODE_TRBDF2:
-        return 1 + (s->linear_tr ? 1 : 2) * s->newton_iters + fd;
+        return 1 + (s->model ? 0 : (s->linear_tr ? 1 : 2) * s->newton_iters) + fd;
     default:
         return 1 + fd;
     }
@@ -156,6 +158,25 @@ static int call_f(rr_ode *s, rr_ode_rhs f, void *ctx, double t, const double *y,
     for (i = 0; i < s->n; i++)
         if (!isfinite(dydt[i]))
             return RR_ERR_NONFINITE;
+    return RR_OK;
+}
+
+/* s->r <- f(t0, y0) + model(t, y0, z), counted and checked as call_f. */
+static int call_model(rr_ode *s, void *ctx, double t, const double *z, int *warn)
+{
+    int i, st;
+
+    s->nmev++;
+    st = s->model(ctx, t, s->y0, z, s->r);
+    if (st < 0)
+        return st;
+    if (st > *warn)
+        *warn = st;
+    for (i = 0; i < s->n; i++) {
+        s->r[i] += s->f0[i];
+        if (!isfinite(s->r[i]))
+            return RR_ERR_NONFINITE;
+    }
     return RR_OK;
 }
 
@@ -291,6 +312,10 @@ static int newton_stage(rr_ode *s, rr_ode_rhs f, void *ctx, double tz, double hd
         if (it == 0) {
             for (i = 0; i < n; i++)
                 s->r[i] = fz0[i];
+        } else if (s->model) {
+            st = call_model(s, ctx, tz, z, warn);
+            if (st < 0)
+                return st;
         } else {
             st = call_f(s, f, ctx, tz, z, s->r, warn);
             if (st < 0)
@@ -380,6 +405,7 @@ int rr_ode_step(rr_ode *s, rr_ode_rhs f, rr_ode_jac jac, void *ctx, double t, do
     if (st != RR_OK)
         return st;
     s->nfev = 0;
+    s->nmev = 0;
     s->njev = 0;
     s->newton_err = 0.0;
     if (f == NULL || y == NULL)

@@ -58,9 +58,16 @@
  *     (the "last correction not small" test).  The fixed iteration count
  *     needs a good J on the stiff modes: with J off by a factor 2 at
  *     h |lambda| = 50 the iteration diverges (and warns); ROS2 does not.
- *     Cost: 1 + 2 newton_iters f (1 + newton_iters with linear_tr) + 1
- *     Jacobian + 1 LU + 2 (newton_iters + 1) solves (1 fewer per TR stage
- *     iteration left out).
+ *     With a model (s->model, see rr_ode_model) the iterations take
+ *     f(t, z) = f(t0, y0) + model(t, y0, z) in place of f: a simplified
+ *     Newton with a cheap residual, which sees a knee the model has (the
+ *     rig: the simplified theory's creep curve anchored at the full
+ *     method's value at y0) at one f evaluation per step.  The stages then
+ *     solve the model's equations, not f's: the step is as accurate as the
+ *     model's change over it.
+ *     Cost: 1 + 2 newton_iters f (1 + newton_iters with linear_tr; 1 with a
+ *     model, plus as many model calls) + 1 Jacobian + 1 LU + 2
+ *     (newton_iters + 1) solves (1 fewer per TR stage iteration left out).
  *
  * Second-order structure: with s->nq > 0 the first nq states are positions
  * whose derivatives are the next nq states, y_i' = y_{nq+i} (i < nq), as in
@@ -101,6 +108,14 @@ typedef int (*rr_ode_rhs)(void *ctx, double t, const double *y, double *dydt);
 typedef int (*rr_ode_jac)(void *ctx, double t, const double *y, double *J);
 
 /*
+ * A cheap model of f's change over a step (TR-BDF2, optional): df ~
+ * f(t, z) - f(t0, y0), y0 being the state at the step's start t0.  Same
+ * status convention as f.
+ */
+typedef int (*rr_ode_model)(void *ctx, double t, const double *y0, const double *z,
+                            double *df);
+
+/*
  * Integrator state, owned by the caller (stack, static or embedded in a
  * larger struct).  rr_ode_init sets every field; the settings may be
  * changed between steps, the rest is private.
@@ -119,11 +134,15 @@ typedef struct {
                                   * trapezoidal stage (default 0) */
     int nq;                      /* second-order structure: y_i' = y_{nq+i} for
                                   * i < nq, 0 <= 2 nq <= n (default 0: none) */
+    rr_ode_model model;          /* TR-BDF2: NULL (default), or the Newton
+                                  * iterations take f(t, z) = f(t0, y0) +
+                                  * model(t, y0, z): one f per step (above) */
     double ytyp[RR_ODE_MAXN];    /* typical magnitude of each y_i (> 0, in y's
                                   * units; default 1): finite-difference
                                   * increment floor and Newton test scale */
     /* statistics of the last step (also after an error) */
     int nfev;                    /* f evaluations */
+    int nmev;                    /* model calls */
     int njev;                    /* jac calls (0 or 1) */
     double newton_err;           /* TR-BDF2: estimated error left in the stage
                                   * values after the last iteration, in the
@@ -146,7 +165,7 @@ typedef struct {
 /*
  * rr_ode_init - set up *s for n equations with the given method and the
  * default settings (newton_iters 2, newton_tol 1e-6, linear_tr 0, nq 0,
- * ytyp 1).
+ * model NULL, ytyp 1).
  *   status:  0 OK; RR_ERR_PARAM (n outside 1..RR_ODE_MAXN, or s NULL),
  *            RR_ERR_METHOD (unknown method).  On error *s is not usable.
  */

@@ -35,7 +35,8 @@ int rr_rig_check(const rr_rig_params *p)
     if (p->method != RR_ODE_ROS2 && p->method != RR_ODE_TRBDF2 && p->method != RR_ODE_LINEULER)
         return RR_ERR_METHOD;
     if (p->newton_iters < 0 || p->newton_iters > RR_ODE_MAX_NEWTON
-        || (p->linear_tr != 0 && p->linear_tr != 1))
+        || (p->linear_tr != 0 && p->linear_tr != 1)
+        || (p->newton_model != 0 && p->newton_model != 1))
         return RR_ERR_PARAM;
     if ((st = rr_rig_contact_check(&p->contact)) != RR_OK
         || (st = rr_pi_check(&p->roller_pi)) != RR_OK
@@ -206,16 +207,13 @@ int rr_rig_rhs(rr_rig *rig, double t, const double *y, double *dydt)
     return st;
 }
 
-int rr_rig_jac(rr_rig *rig, double t, const double *y, double *J)
+/* The Jacobian's part that does not depend on the state: the kinematic
+ * rows, the springs and dampers, the drive torques and their lags. */
+static void jac_const(const rr_rig_params *p, double *J)
 {
-    const rr_rig_params *p = rig->p;
     const double b2 = p->axlebox_y * p->axlebox_y;
-    int k, j, st;
-    (void)t;
+    int j;
 
-    st = contact_eval(rig, y);
-    if (st < 0)
-        return st;
     for (j = 0; j < NS * NS; j++)
         J[j] = 0.0;
 #define JJ(row, col) J[(row) * NS + (col)]
@@ -234,19 +232,76 @@ int rr_rig_jac(rr_rig *rig, double t, const double *y, double *J)
     JJ(RR_RIG_ROLLER_SPIN, RR_RIG_T_ROLLER) = 1.0 / p->roller_inertia;
     JJ(RR_RIG_T_ROLLER, RR_RIG_T_ROLLER) = -1.0 / p->roller_tau;
     JJ(RR_RIG_T_WHEELSET, RR_RIG_T_WHEELSET) = -1.0 / p->wheelset_tau;
+#undef JJ
+}
 
-    /* creep forces f = -D c with D the tangent of Kalker's simplified
-     * theory (the cubic law F = mu N (1 - (1 - eps)^3), eps = |(f11 cx,
-     * f22 cy)| / (3 mu N), f11 = G a b C11: FASTSIM's creep curve to a few
-     * per cent) with the falling friction's slope at the rigid slip speed,
-     * and the creepages' derivatives of the linearised eq. 7-8.  A secant
-     * would put a spurious stiff mode in the saturated contact and slow
-     * the braking transients at the 4 ms step. */
+/*
+ * Creep forces of Kalker's simplified theory, the cubic law
+ *     f = -F u/|u|,  F = mu N (1 - (1 - eps)^3),  eps = |u| / (3 mu N),
+ * u = (f11 cx, f22 cy), with the falling friction mu at the rigid slip
+ * speed |c| V (FASTSIM's creep curve to a few per cent); the linear theory
+ * f = -u never saturates.  D (may be NULL): the tangent d f / d c,
+ * row-major 2 x 2: along u the curve's slope, across it F/|u| (a saturated
+ * contact turns its force with the slip, it does not stiffen).
+ */
+static void simplified_forces(const rr_rig_params *p, const rr_rig_creep_lin *l, double cx,
+                              double cy, double f[2], double D[4])
+{
+    const double ux = l->f11 * cx, uy = l->f22 * cy, u = hypot(ux, uy), c = hypot(cx, cy);
+    const double fc[2] = {l->f11, l->f22}, cc[2] = {cx, cy};
+    double mu, dmu, e, s2, g3, F, dS[2], uh[2];
+    int i, j;
+
+    if (p->contact.creep.method == RR_METHOD_LINEAR || !(u > 0.0)) {
+        f[0] = -ux;
+        f[1] = -uy;
+        if (D) {
+            D[0] = -l->f11;
+            D[3] = -l->f22;
+            D[1] = D[2] = 0.0;
+        }
+        return;
+    }
+    mu = rr_friction_mu(&p->contact.friction, c * l->V);
+    e = u / (3.0 * mu * l->N);
+    s2 = e < 1.0 ? (1.0 - e) * (1.0 - e) : 0.0;
+    g3 = e < 1.0 ? 1.0 - s2 * (1.0 - e) : 1.0;
+    F = mu * l->N * g3;
+    uh[0] = ux / u;
+    uh[1] = uy / u;
+    f[0] = -F * uh[0];
+    f[1] = -F * uh[1];
+    if (!D)
+        return;
+    /* dF/dc_j = s2 uh_j f_jj + N V mu' (c_j/|c|) (g3 - 3 eps s2) */
+    dmu = rr_friction_dmu(&p->contact.friction, c * l->V);
+    for (j = 0; j < 2; j++)
+        dS[j] = s2 * uh[j] * fc[j] + l->N * l->V * dmu * (cc[j] / c) * (g3 - 3.0 * e * s2);
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++)
+            D[2 * i + j] = -(dS[j] * uh[i] + F / u * ((i == j) - uh[i] * uh[j]) * fc[j]);
+}
+
+/* The creep forces linearised at y into rig->lin (cached on y). */
+static int linearise(rr_rig *rig, const double *y)
+{
+    const rr_rig_params *p = rig->p;
+    int k, st;
+
+    if (rig->lin_ok && memcmp(rig->lin_y, y, sizeof rig->lin_y) == 0)
+        return RR_OK;
+    rig->lin_ok = 0;
+    st = contact_eval(rig, y);
+    if (st < 0)
+        return st;
     for (k = 0; k < 2; k++) {
         const rr_wheel_contact *w = &rig->w[k];
+        rr_rig_creep_lin *l = &rig->lin[k];
         rr_kalker_coeffs kc;
-        double gab, f11, f22, d11, d22, V, a, r, R, c, mu, eps, s2, g3;
-        if (rr_kalker(w->hertz.a / w->hertz.b, p->contact.nu, &kc) < 0)
+        double gab, f[2];
+
+        l->ok = rr_kalker(w->hertz.a / w->hertz.b, p->contact.nu, &kc) == RR_OK;
+        if (!l->ok)
             continue;
         /* the methods' own initial slopes: Polach's (kA + kS)/2 of the
          * linear theory, modified FASTSIM's k0 */
@@ -255,45 +310,112 @@ int rr_rig_jac(rr_rig *rig, double t, const double *y, double *J)
                    ? 0.5 * (p->contact.creep.kA + p->contact.creep.kS)
                    : p->contact.creep.method == RR_METHOD_MODIFIED_FASTSIM
                          ? p->contact.creep.k0 : 1.0);
-        f11 = gab * kc.c11;
-        f22 = gab * kc.c22;
-        c = hypot(w->creep.cx, w->creep.cy);
-        mu = rr_friction_mu(&p->contact.friction, c * w->creep.V);
-        /* the linear theory never saturates: its tangent is f11, f22 everywhere */
-        eps = p->contact.creep.method == RR_METHOD_LINEAR
-                  ? 0.0 : hypot(f11 * w->creep.cx, f22 * w->creep.cy) / (3.0 * mu * w->N);
-        s2 = eps < 1.0 ? (1.0 - eps) * (1.0 - eps) : 0.0;
-        g3 = eps < 1.0 ? 1.0 - s2 * (1.0 - eps) : 1.0;
-        d11 = f11 * s2;
-        d22 = f22 * s2;
-        if (c > 0.0) {
-            const double fall = w->N * g3 * w->creep.V
-                              * rr_friction_dmu(&p->contact.friction, c * w->creep.V);
-            d11 += fall * (w->creep.cx / c) * (w->creep.cx / c);
-            d22 += fall * (w->creep.cy / c) * (w->creep.cy / c);
-        }
-        V = w->creep.V;
-        a = w->frame.p[1] - rig->pose.c[1];
-        r = w->geo.r;
-        R = w->geo.R;
-        /* d fx = -d11 (d vx - r d spin - a d yaw_rate + R d roller_spin) / V */
-        {
-            const int cols[4] = {RR_RIG_VX, RR_RIG_SPIN, RR_RIG_YAW_RATE, RR_RIG_ROLLER_SPIN};
-            const double dc[4] = {1.0 / V, -r / V, -a / V, R / V};
-            int c;
-            for (c = 0; c < 4; c++) {
-                const double dfx = -d11 * dc[c];
-                JJ(RR_RIG_VX, cols[c]) += dfx / p->mass;
-                JJ(RR_RIG_YAW_RATE, cols[c]) += -a * dfx / p->Izz;
-                JJ(RR_RIG_SPIN, cols[c]) += -r * dfx / p->Iyy;
-                JJ(RR_RIG_ROLLER_SPIN, cols[c]) += R * dfx / p->roller_inertia;
-            }
-        }
-        /* d fy = -d22 (d vy / V - d yaw) */
-        JJ(RR_RIG_VY, RR_RIG_VY) += -d22 / V / p->mass;
-        JJ(RR_RIG_VY, RR_RIG_YAW) += d22 / p->mass;
+        l->f11 = gab * kc.c11;
+        l->f22 = gab * kc.c22;
+        l->N = w->N;
+        l->V = w->creep.V;
+        l->cx = w->creep.cx;
+        l->cy = w->creep.cy;
+        l->a = w->frame.p[1] - rig->pose.c[1];
+        l->r = w->geo.r;
+        l->R = w->geo.R;
+        simplified_forces(p, l, l->cx, l->cy, f, NULL);
+        l->fx = f[0];
+        l->fy = f[1];
     }
-#undef JJ
+    memcpy(rig->lin_y, y, sizeof rig->lin_y);
+    rig->lin_ok = 1;
+    return RR_OK;
+}
+
+/* The creepages' change for a change d of the state (linearised eq. 7-8). */
+static void creepage_change(const rr_rig_creep_lin *l, const double *d, double *dcx, double *dcy)
+{
+    *dcx = (d[RR_RIG_VX] - l->r * d[RR_RIG_SPIN] - l->a * d[RR_RIG_YAW_RATE]
+            + l->R * d[RR_RIG_ROLLER_SPIN]) / l->V;
+    *dcy = d[RR_RIG_VY] / l->V - d[RR_RIG_YAW];
+}
+
+/* Adds the change (dfx, dfy) of a contact's creep forces to the rates' rows. */
+static void add_force(const rr_rig_params *p, const rr_rig_creep_lin *l, double dfx, double dfy,
+                      double *df)
+{
+    df[RR_RIG_VX] += dfx / p->mass;
+    df[RR_RIG_YAW_RATE] += -l->a * dfx / p->Izz;
+    df[RR_RIG_SPIN] += -l->r * dfx / p->Iyy;
+    df[RR_RIG_ROLLER_SPIN] += l->R * dfx / p->roller_inertia;
+    df[RR_RIG_VY] += dfy / p->mass;
+}
+
+int rr_rig_jac(rr_rig *rig, double t, const double *y, double *J)
+{
+    const rr_rig_params *p = rig->p;
+    int k, i, j, st;
+    (void)t;
+
+    st = linearise(rig, y);
+    if (st < 0)
+        return st;
+    memcpy(J, rig->J0, sizeof rig->J0);
+    /* the creep forces' change d f = D d c, D the simplified theory's
+     * tangent (the falling friction's slope included), d c from the
+     * linearised eq. 7-8 (creepage_change), per unit change of each rate
+     * the creepages depend on.  A secant would put a spurious stiff mode in
+     * the saturated contact and slow the braking transients at the 4 ms
+     * step. */
+    for (k = 0; k < 2; k++) {
+        static const int cols[6] = {RR_RIG_VX, RR_RIG_SPIN, RR_RIG_YAW_RATE,
+                                    RR_RIG_ROLLER_SPIN, RR_RIG_VY, RR_RIG_YAW};
+        const rr_rig_creep_lin *l = &rig->lin[k];
+        double f[2], D[4];
+        if (!l->ok)
+            continue;
+        simplified_forces(p, l, l->cx, l->cy, f, D);
+        for (j = 0; j < 6; j++) {
+            double d[NS] = {0.0}, col[NS] = {0.0}, dcx, dcy;
+            d[cols[j]] = 1.0;
+            creepage_change(l, d, &dcx, &dcy);
+            add_force(p, l, D[0] * dcx + D[1] * dcy, D[2] * dcx + D[3] * dcy, col);
+            for (i = RR_RIG_VX; i <= RR_RIG_ROLLER_SPIN; i++)
+                J[i * NS + cols[j]] += col[i];
+        }
+    }
+    return RR_OK;
+}
+
+/* The integrator's model (rr_ode_model): the state's change d = z - y0
+ * through the constant part of J, and the creep forces' change from the
+ * simplified theory at the creepages moved by the linearised eq. 7-8, the
+ * geometry and normal loads held at y0.  Exact for the linear rows; the
+ * full method's forces at y0 carry the rest (rr_ode adds f(y0)). */
+static int model_cb(void *ctx, double t, const double *y0, const double *z, double *df)
+{
+    rr_rig *rig = (rr_rig *)ctx;
+    const rr_rig_params *p = rig->p;
+    double d[NS];
+    int i, j, k, st;
+    (void)t;
+
+    st = linearise(rig, y0);
+    if (st < 0)
+        return st;
+    for (j = 0; j < NS; j++)
+        d[j] = z[j] - y0[j];
+    for (i = 0; i < NS; i++) {
+        double sum = 0.0;
+        for (j = 0; j < NS; j++)
+            sum += rig->J0[i * NS + j] * d[j];
+        df[i] = sum;
+    }
+    for (k = 0; k < 2; k++) {
+        const rr_rig_creep_lin *l = &rig->lin[k];
+        double dcx, dcy, f[2];
+        if (!l->ok)
+            continue;
+        creepage_change(l, d, &dcx, &dcy);
+        simplified_forces(p, l, l->cx + dcx, l->cy + dcy, f, NULL);
+        add_force(p, l, f[0] - l->fx, f[1] - l->fy, df);
+    }
     return RR_OK;
 }
 
@@ -378,6 +500,8 @@ int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig)
         return rig->status = st;
     rig->ode.newton_iters = p->newton_iters;
     rig->ode.linear_tr = p->linear_tr;
+    rig->ode.model = p->newton_model ? model_cb : NULL;
+    jac_const(p, rig->J0);
     /* x, y, yaw, chi, theta_r are integrals of the next five states */
     rig->ode.nq = RR_RIG_VX;
     /* a warning flags a stage left off by more than 0.1 % of its typical
@@ -495,7 +619,7 @@ int rr_rig_advance(rr_rig *rig, double *rec)
     /* a failed sample: back to its start, and no further stepping */
     memcpy(rig->y, ysave, sizeof ysave);
     rig->t = t0;
-    rig->cache_ok = 0;
+    rig->cache_ok = rig->lin_ok = 0;
     rr_rig_record(rig, rec);
     rig->status = st;
     rec[RR_REC_STATUS] = st;
@@ -542,6 +666,6 @@ int rr_rig_set_state(rr_rig *rig, double t, const double *y)
             return RR_ERR_NONFINITE;
     rig->t = t;
     memcpy(rig->y, y, sizeof rig->y);
-    rig->cache_ok = 0;
+    rig->cache_ok = rig->lin_ok = 0;
     return RR_OK;
 }

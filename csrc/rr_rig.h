@@ -85,6 +85,9 @@ typedef struct {
     int newton_iters;        /* TR-BDF2's Newton iterations per stage, 0..RR_ODE_MAX_NEWTON
                               * (0: linearly implicit, one contact evaluation per step) */
     int linear_tr;           /* 1: TR-BDF2's trapezoidal stage without them (rr_ode.h) */
+    int newton_model;        /* 1: the iterations take the creep forces' change over the step
+                              * from the simplified theory (the integrator's model, rr_ode.h):
+                              * one contact evaluation per step */
     rr_pi_params roller_pi, wheelset_pi;      /* their T must equal T */
     double roller_tau, wheelset_tau;          /* drive lags [s], > 0 */
     rr_encoder_params roller_enc, wheelset_enc;
@@ -119,6 +122,18 @@ enum rr_rig_record_index {
     RR_REC_COUNT
 };
 
+/* A contact's creep forces linearised at a state: the simplified theory's
+ * coefficients and the creepages' dependence on the rates (rr_rig_jac). */
+typedef struct {
+    double f11, f22;               /* initial slopes G a b C11, G a b C22 [N] */
+    double N, V;                   /* normal load [N], rolling speed [m/s] */
+    double cx, cy;                 /* creepages there */
+    double fx, fy;                 /* the simplified theory's forces there [N] */
+    double a, r, R;                /* lateral arm to the wheelset centre, wheel and
+                                    * roller radii [m] */
+    int ok;                        /* 0: the contact has no usable coefficients */
+} rr_rig_creep_lin;
+
 typedef struct {
     const rr_rig_params *p;
     double t;                      /* time [s] */
@@ -137,6 +152,11 @@ typedef struct {
     int cache_ok;
     rr_rig_pose pose;
     rr_wheel_contact w[2];
+    /* the Jacobian's constant part, and the creep forces linearised at lin_y */
+    double J0[RR_RIG_NSTATE * RR_RIG_NSTATE];
+    rr_rig_creep_lin lin[2];
+    double lin_y[RR_RIG_NSTATE];
+    int lin_ok;
     int status;                    /* of the last step; < 0 stops stepping */
 } rr_rig;
 

@@ -829,6 +829,7 @@ static const field rig_fields[] = {
     DFIELD("mu0", contact.friction.mu0), DFIELD("A", contact.friction.A), DFIELD("B", contact.friction.B),
     DFIELD("vmin", contact.vmin), DFIELD("T", T), IFIELD("nsub", nsub), IFIELD("ode_method", method),
     IFIELD("newton_iters", newton_iters), IFIELD("linear_tr", linear_tr),
+    IFIELD("newton_model", newton_model),
     DFIELD("roller_Kp", roller_pi.Kp), DFIELD("roller_KI", roller_pi.KI),
     DFIELD("roller_Tmax", roller_pi.Tmax), DFIELD("wheelset_Kp", wheelset_pi.Kp),
     DFIELD("wheelset_KI", wheelset_pi.KI), DFIELD("wheelset_Tmax", wheelset_pi.Tmax),

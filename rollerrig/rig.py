@@ -160,6 +160,7 @@ def _c_params(P, dt, substeps, ode):
         "T": float(dt), "nsub": int(substeps), "ode_method": ODE_METHODS[ode],
         "newton_iters": _newton_iterations(P),
         "linear_tr": int(_flag(P, "integration", "linear_first_stage")),
+        "newton_model": int(_flag(P, "integration", "newton_model")),
         "roller_Kp": n(P, "roller_drive", "kp_N_m_s_per_rad", nonneg=True),
         "roller_KI": n(P, "roller_drive", "ki_N_m_s_per_rad", nonneg=True),
         "roller_Tmax": n(P, "roller_drive", "torque_limit_N_m", positive=True),

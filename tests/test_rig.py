@@ -126,52 +126,77 @@ def reference_run(duration, targets, rtol=1e-7):
 
 def test_fixed_step_agrees_with_an_adaptive_stiff_solver():
     """The default fixed 4 ms step (TR-BDF2, its trapezoidal stage linearly
-    implicit, one Newton iteration in the BDF2 stage, the analytic,
-    approximate Jacobian: two contact evaluations per step) against Radau at
-    rtol 1e-7 on the same right-hand side and the same sampled controllers,
-    over a target switch: creepage and force histories within 1 % of their
-    range (measured 0.21 % and 0.40 %); ten plant steps per sample come
-    closer and move them by less than 1 %.  One Newton iteration in both
-    stages (three evaluations) is as close (0.20 %, 0.36 %)."""
+    implicit, one Newton iteration in the BDF2 stage on the simplified
+    theory's change of the creep forces, the analytic, approximate
+    Jacobian: one FASTSIM evaluation per step) against Radau at rtol 1e-7
+    on the same right-hand side and the same sampled controllers, over a
+    target switch: creepage and force histories within 1 % of their range
+    (measured 0.20 % and 0.56 %); ten plant steps per sample come closer
+    and move them by less than 1 %.  The iteration on FASTSIM itself (two
+    evaluations per step) is as close (0.22 %, 0.40 %)."""
     duration, targets = 1.2, [0.04, 0.015]
     ref = reference_run(duration, targets)
     fields = rr.rig.RECORD_FIELDS
     res = rr.simulate(duration=duration, targets=targets)
     fine = rr.simulate(duration=duration, targets=targets, substeps=10)
-    newton = rr.simulate(duration=duration, targets=targets,
-                         params={"integration": {"linear_first_stage": False}})
+    exact = rr.simulate(duration=duration, targets=targets,
+                        params={"integration": {"newton_model": False}})
     for name in ("creepage", "fx"):
         r = ref[:, fields.index(name)]
         span = np.ptp(r)
         err = np.max(np.abs(getattr(res, name) - r)) / span
         err_fine = np.max(np.abs(getattr(fine, name) - r)) / span
         change = np.max(np.abs(getattr(fine, name) - getattr(res, name))) / span
+        err_exact = np.max(np.abs(getattr(exact, name) - r)) / span
         assert err < 0.01, (name, err)
         assert err_fine < err and change < 0.01, (name, err_fine, change)
-        assert np.max(np.abs(getattr(newton, name) - r)) / span < 0.01, name
+        assert err_exact < 0.01, (name, err_exact)
 
 
-@pytest.mark.parametrize("targets", [[0.01, 0.03], [0.007, 0.012], [0.04, 0.006]])
+def shift_tolerant_error(a, ref, window=10):
+    """max_i min_{|j - i| <= window} |a_i - ref_j|: the error of a history
+    whose discrete events may come a few samples earlier or later."""
+    n = len(a)
+    best = np.full(n, np.inf)
+    for s in range(-window, window + 1):
+        best = np.minimum(best, np.abs(a - ref[np.clip(np.arange(n) + s, 0, n - 1)]))
+    return best.max()
+
+
+@pytest.mark.parametrize("targets", [[0.01, 0.03], [0.007, 0.012], [0.04, 0.006],
+                                     [0.006, 0.009, 0.005, 0.012]])
 def test_targets_near_the_saturation_knee(targets):
     """Near the creep force's knee (saturation at a creepage of about
-    0.005) a step may cross it.  The default step iterates its final stage
-    on the true force, so it follows a reference of ten steps per sample
-    with two Newton iterations in both stages: within 5 % of the range
-    (measured 0.1-0.6 %, and 3.2 % where the controller's step back of
-    eq. 14 comes one 4 ms sample apart: a discrete event, which moves the
-    4-step reference by 6.6 % as well).  Without any iteration
-    (newton_iterations = 0) the step trusts the slope on the knee's near
-    side and chatters about it: the check that this test can fail
-    (measured 41-230 % of the range)."""
+    0.005) a step may cross it.  The default step (its Newton iteration on
+    the simplified theory's forces) and the iteration on FASTSIM itself
+    follow a reference of ten steps per sample with two Newton iterations
+    in both stages within 5 % of the range (measured 0.05-3.2 %), the
+    linearly implicit step within 10 % (measured up to 8.2 %), allowing the controller's events 10 samples
+    (40 ms) of play: eq. 14's step back comes when the creepage, creeping
+    up on its target, crosses it, which the 4 and 10-step references
+    already place 17 ms apart.  Neither chatters: the creepage's total
+    variation is within 10 % of the reference's (measured 0.99-1.06).  A
+    Jacobian without the lateral creep stiffness of a saturated contact
+    (F/|u| f22, which the old tangent of the cubic law set to 0) made the
+    linearly implicit step chatter: total variation 1.1-7.7 times the
+    reference's, 8-78 % of the range off."""
     kw = dict(duration=2.0, targets=targets)
     ref = rr.simulate(substeps=10, params={"integration": {"newton_iterations": 2,
-                                                           "linear_first_stage": False}}, **kw)
-    res = rr.simulate(**kw)
-    bare = rr.simulate(params={"integration": {"newton_iterations": 0}}, **kw)
-    for name in ("creepage", "fx"):
-        r = getattr(ref, name)
-        assert np.max(np.abs(getattr(res, name) - r)) < 0.05 * np.ptp(r), name
-    assert np.max(np.abs(bare.creepage - ref.creepage)) > 0.3 * np.ptp(ref.creepage)
+                                                           "linear_first_stage": False,
+                                                           "newton_model": False}}, **kw)
+    # (integration settings, bound on the error as a fraction of the range)
+    variants = {"default": ({}, 0.05),
+                "FASTSIM in the iteration": ({"newton_model": False}, 0.05),
+                "linearly implicit": ({"newton_iterations": 0}, 0.10)}
+    tv_ref = np.sum(np.abs(np.diff(ref.creepage)))
+    for label, (integration, bound) in variants.items():
+        res = rr.simulate(params={"integration": integration}, **kw)
+        for name in ("creepage", "fx"):
+            r = getattr(ref, name)
+            err = shift_tolerant_error(getattr(res, name), r) / np.ptp(r)
+            assert err < bound, (label, name, err)
+        tv = np.sum(np.abs(np.diff(res.creepage))) / tv_ref
+        assert 0.9 < tv < 1.1, (label, tv)
 
 
 def test_bad_parameters_give_clear_errors():
@@ -198,6 +223,8 @@ def test_bad_parameters_give_clear_errors():
             rr.simulate(duration=0.1, params={"integration": {"newton_iterations": bad}})
     with pytest.raises(rr.RollerRigError, match="integration.linear_first_stage"):
         rr.simulate(duration=0.1, params={"integration": {"linear_first_stage": 1}})
+    with pytest.raises(rr.RollerRigError, match="integration.newton_model"):
+        rr.simulate(duration=0.1, params={"integration": {"newton_model": "yes"}})
 
 
 def test_a_wheel_off_its_roller_stops_cleanly():

@@ -641,6 +641,146 @@ static void test_cost(void)
     }
 }
 
+/* ---- a model in the Newton iterations ----------------------------------- */
+
+typedef struct {
+    vdp_ctx vdp;
+    int linear;       /* 1: the model is f's linearisation at y0 */
+    int status;       /* returned by the model (0, a warning or an error) */
+    int nan;          /* 1: the model returns a NaN */
+    int nm;
+} model_ctx;
+
+/* van der Pol's f without counting */
+static void vdp_eval(const vdp_ctx *c, const double *y, double *d)
+{
+    d[0] = y[1];
+    d[1] = ((1.0 - y[0] * y[0]) * y[1] - y[0]) / c->eps;
+}
+
+static int vdp_model(void *v, double t, const double *y0, const double *z, double *df)
+{
+    model_ctx *c = v;
+    double f0[2], fz[2];
+    (void)t;
+    c->nm++;
+    if (c->linear) {
+        const double J10 = (-2.0 * y0[0] * y0[1] - 1.0) / c->vdp.eps;
+        const double J11 = (1.0 - y0[0] * y0[0]) / c->vdp.eps;
+        df[0] = z[1] - y0[1];
+        df[1] = J10 * (z[0] - y0[0]) + J11 * (z[1] - y0[1]);
+    } else {
+        vdp_eval(&c->vdp, y0, f0);
+        vdp_eval(&c->vdp, z, fz);
+        df[0] = fz[0] - f0[0];
+        df[1] = fz[1] - f0[1];
+    }
+    if (c->nan)
+        df[1] = NAN;
+    return c->status;
+}
+
+/* y(0.5) on van der Pol with N TR-BDF2 steps; model 0: none, 1: f's exact
+ * change, 2: f's linearisation; returns the worst status */
+static int vdp_model_run(int model, int iters, int linear_tr, int N, double *y, int *nf_step,
+                         int *nm_step)
+{
+    const double T = 0.5, pj[4] = {1.0, 1.0, 1.0, 1.0};
+    rr_ode s;
+    model_ctx c;
+    int k, st, worst = RR_OK;
+
+    memset(&c, 0, sizeof c);
+    c.vdp.eps = 1e-6;
+    memcpy(c.vdp.pj, pj, sizeof pj);
+    c.linear = model == 2;
+    y[0] = 2.0;
+    y[1] = -0.66;
+    rr_ode_init(&s, 2, RR_ODE_TRBDF2);
+    s.newton_iters = iters;
+    s.linear_tr = linear_tr;
+    s.newton_tol = 1e-2;
+    s.model = model ? vdp_model : NULL;
+    *nf_step = *nm_step = -1;
+    for (k = 0; k < N; k++) {
+        int nf0 = c.vdp.nf, nm0 = c.nm;
+        st = rr_ode_step(&s, vdp_f, vdp_j, &c, k * (T / N), T / N, y);
+        if (st < 0)
+            return st;
+        if (st > worst)
+            worst = st;
+        /* every step the same count, else -2 */
+        if (*nf_step == -1 || (*nf_step == c.vdp.nf - nf0 && *nm_step == c.nm - nm0)) {
+            *nf_step = c.vdp.nf - nf0;
+            *nm_step = c.nm - nm0;
+        } else {
+            *nf_step = *nm_step = -2;
+        }
+        if (s.nfev != *nf_step || s.nmev != *nm_step)
+            *nf_step = -3;
+    }
+    return worst;
+}
+
+static void test_model(void)
+{
+    static const int cases[][2] = {{1, 1}, {2, 1}, {2, 0}, {0, 1}};
+    char buf[160];
+    int q;
+
+    for (q = 0; q < 4; q++) {
+        const int iters = cases[q][0], ltr = cases[q][1];
+        double yf[2], ym[2], yl[2], y0[2];
+        int nf, nm, nf2, nm2, st;
+        rr_ode s;
+
+        /* a model that is f's exact change: the very iteration on f, at one f
+         * per step (differences at rounding level of f's values, 1e6 here) */
+        st = vdp_model_run(0, iters, ltr, 200, yf, &nf, &nm);
+        st |= vdp_model_run(1, iters, ltr, 200, ym, &nf2, &nm2);
+        snprintf(buf, sizeof buf, "model = f's change, %d iterations, linear_tr %d: y(0.5) as "
+                 "without (%.3g, %.3g), 1 f and %d model calls per step (%d, %d)", iters, ltr,
+                 ym[0] - yf[0], ym[1] - yf[1], iters * (ltr ? 1 : 2), nf2, nm2);
+        CHECK(st >= 0 && fabs(ym[0] - yf[0]) < 1e-9 && fabs(ym[1] - yf[1]) < 1e-9 * 1e2
+              && nf2 == 1 && nm2 == iters * (ltr ? 1 : 2), buf);
+        rr_ode_init(&s, 2, RR_ODE_TRBDF2);
+        s.newton_iters = iters;
+        s.linear_tr = ltr;
+        s.model = vdp_model;
+        CHECK(rr_ode_nfev(&s, 1) == 1 && rr_ode_nfev(&s, 0) == 3,
+              "rr_ode_nfev with a model: 1 (+ n for FD)");
+
+        /* a model that is f's linearisation: the linearly implicit step */
+        st = vdp_model_run(2, iters, ltr, 200, yl, &nf, &nm);
+        st |= vdp_model_run(0, 0, 0, 200, y0, &nf2, &nm2);
+        snprintf(buf, sizeof buf, "model = f's linearisation, %d iterations, linear_tr %d: the "
+                 "linearly implicit step (%.3g, %.3g)", iters, ltr, yl[0] - y0[0], yl[1] - y0[1]);
+        CHECK(st >= 0 && fabs(yl[0] - y0[0]) < 1e-9 && fabs(yl[1] - y0[1]) < 1e-9 * 1e2, buf);
+    }
+    /* the model's status: a warning passes on, an error or a NaN stops the step */
+    {
+        const int want[3] = {RR_WARN_NOT_CONVERGED, RR_ERR_LOAD, RR_ERR_NONFINITE};
+        int k;
+        for (k = 0; k < 3; k++) {
+            rr_ode s;
+            model_ctx c;
+            double y[2] = {2.0, -0.66};
+            int st;
+            memset(&c, 0, sizeof c);
+            c.vdp.eps = 1.0;
+            c.status = k == 0 ? RR_WARN_NOT_CONVERGED : k == 1 ? RR_ERR_LOAD : 0;
+            c.nan = k == 2;
+            rr_ode_init(&s, 2, RR_ODE_TRBDF2);
+            s.model = vdp_model;
+            st = rr_ode_step(&s, vdp_f, vdp_j, &c, 0.0, 1e-3, y);
+            snprintf(buf, sizeof buf, "model status %d: step %d, y %s", c.status, st,
+                     k ? "unchanged" : "advanced");
+            CHECK(st == want[k] && (k == 0 ? y[0] != 2.0 : (y[0] == 2.0 && y[1] == -0.66)),
+                  buf);
+        }
+    }
+}
+
 /* ---- error paths -------------------------------------------------------- */
 
 typedef struct {
@@ -846,6 +986,7 @@ int main(void)
     test_structure();
     test_prothero_robinson();
     test_cost();
+    test_model();
     test_errors();
     return rr_test_summary();
 }
