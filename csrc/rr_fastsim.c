@@ -190,19 +190,20 @@ static void group_init(const march *m, int j0, group *g)
 {
     const rr_contact_case *c = m->c;
     const int left = m->ny - j0, nv = (left + m->lanes - 1) / m->lanes;
+    const double inv_ny = 1.0 / m->ny;     /* products, not a quotient per row */
     int k;
     g->j0 = j0;
     g->width = m->lanes * (nv < GROUP_VECS ? nv : GROUP_VECS);
     g->nr = left < g->width ? left : g->width;
     for (k = 0; k < g->width; k++) {
         const int j = k < g->nr ? j0 + k : j0;
-        const double yh = -1.0 + (2.0 * j + 1.0) / m->ny, w2 = 1.0 - yh * yh;
+        const double yh = -1.0 + (2.0 * j + 1.0) * inv_ny, w2 = 1.0 - yh * yh;
         const double aj = m->strips ? c->a * sqrt(w2) : c->a;
         g->y[k] = yh * c->b;
         g->w2[k] = k < g->nr ? w2 : -1.0;
         g->aj[k] = aj;
         g->h[k] = m->strips ? 2.0 * aj / m->nx : m->h_rect;
-        g->gxh[k] = (m->gx0 - c->cphi * g->y[k] / m->fl->L3) * g->h[k];
+        g->gxh[k] = (m->gx0 - m->gphi * g->y[k]) * g->h[k];
     }
     for (g->lo = 0; g->lo < m->nx && !any_inside(m, g, g->lo); g->lo++)
         ;

@@ -53,7 +53,9 @@ V_FN RR_FASTSIM_INLINE void V_NAME(step_geometry)(const march *m, const vec *aj,
 
 /* Sum of q (parabolic) or sqrt(q) over the inside elements of each row of
  * the group, for the pressure scale.  An element outside adds +0, which
- * changes no sum (a sum that starts at +0 never becomes -0). */
+ * changes no sum (a sum that starts at +0 never becomes -0).  Elements i
+ * and nx - 1 - i lie symmetrically about the row's centre: the left half's
+ * values are taken twice (the right half's differ in rounding only). */
 V_FN RR_FASTSIM_INLINE void V_NAME(group_pressure)(const march *m, const group *g, int nv,
                                                    int rect, double *rows)
 {
@@ -66,12 +68,13 @@ V_FN RR_FASTSIM_INLINE void V_NAME(group_pressure)(const march *m, const group *
         w2[v] = v_load(g->w2 + V_LANES * v);
         acc[v] = zero;
     }
-    for (i = g->lo; i < g->hi; i++) {
+    const int lo = g->lo < m->nx - g->hi ? g->lo : m->nx - g->hi, mid = m->nx / 2;
+    for (i = lo; i < mid + m->nx % 2; i++) {
         vec x[GROUP_VECS], tt[GROUP_VECS];
         V_NAME(step_geometry)(m, aj, h, nv, rect, 0, i, x, tt, 0);
         for (v = 0; v < nv; v++) {
-            const vec q = v_max(v_sub(w2[v], tt[v]), zero);
-            acc[v] = v_add(acc[v], m->parabolic ? q : v_sqrt(q));
+            const vec q = v_max(v_sub(w2[v], tt[v]), zero), r = m->parabolic ? q : v_sqrt(q);
+            acc[v] = v_add(acc[v], i < mid ? v_add(r, r) : r);
         }
     }
     for (v = 0; v < nv; v++)

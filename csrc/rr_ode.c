@@ -48,6 +48,7 @@ int rr_lu_factor(int n, double *A, int *piv)
                 A[p * n + j] = tmp;
             }
         inv = 1.0 / A[k * n + k];
+        A[k * n + k] = inv;    /* the solve multiplies: no division in its chain */
         for (i = k + 1; i < n; i++) {
             double l = A[i * n + k] * inv;
             A[i * n + k] = l;
@@ -69,17 +70,18 @@ void rr_lu_solve(int n, const double *LU, const int *piv, double *b)
             b[k] = b[piv[k]];
             b[piv[k]] = tmp;
         }
-    for (i = 1; i < n; i++) {
-        double sum = b[i];
-        for (j = 0; j < i; j++)
-            sum -= LU[i * n + j] * b[j];
-        b[i] = sum;
+    /* column by column: the updates of one column are independent, so the
+     * dependent chain is n long, not n^2/2 */
+    for (j = 0; j < n; j++) {
+        const double bj = b[j];
+        for (i = j + 1; i < n; i++)
+            b[i] -= LU[i * n + j] * bj;
     }
-    for (i = n - 1; i >= 0; i--) {
-        double sum = b[i];
-        for (j = i + 1; j < n; j++)
-            sum -= LU[i * n + j] * b[j];
-        b[i] = sum / LU[i * n + i];
+    for (j = n - 1; j >= 0; j--) {
+        const double bj = b[j] * LU[j * n + j];
+        b[j] = bj;
+        for (i = 0; i < j; i++)
+            b[i] -= LU[i * n + j] * bj;
     }
 }
 
@@ -193,9 +195,14 @@ static int jacobian(rr_ode *s, rr_ode_rhs f, rr_ode_jac jac, void *ctx, double t
             return st;
         if (st > *warn)
             *warn = st;
-        for (i = 0; i < n * n; i++)
-            if (!isfinite(s->W[i]))
+        {
+            /* one test at the end, no branch per entry (NaN fails <=) */
+            int bad = 0;
+            for (i = 0; i < n * n; i++)
+                bad |= !(fabs(s->W[i]) <= DBL_MAX);
+            if (bad)
                 return RR_ERR_NONFINITE;
+        }
         return RR_OK;
     }
     for (i = 0; i < n; i++)

@@ -202,7 +202,7 @@ int rr_ode_step(rr_ode *s, rr_ode_rhs f, rr_ode_jac jac, void *ctx, double t, do
 /*
  * rr_lu_factor, rr_lu_solve - dense LU with partial pivoting, in place.
  *   A is n x n row-major; on return it holds L (unit diagonal, below) and
- *   U; piv[k] is the row swapped with row k at elimination step k.
+ *   U, U's diagonal as its reciprocals; piv[k] is the row swapped with row k at elimination step k.
  *   rr_lu_factor status: 0 OK; RR_ERR_SINGULAR if a pivot is not larger than
  *   n DBL_EPSILON times the largest |A_ij| (or A is zero); RR_ERR_NONFINITE.
  *   rr_lu_solve overwrites b (n values) with the solution of A x = b.

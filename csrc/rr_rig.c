@@ -316,9 +316,24 @@ static int linearise(rr_rig *rig, const double *y)
         l->V = w->creep.V;
         l->cx = w->creep.cx;
         l->cy = w->creep.cy;
-        l->a = w->frame.p[1] - rig->pose.c[1];
-        l->r = w->geo.r;
-        l->R = w->geo.R;
+        {
+            /* a: lateral arm to the wheelset centre; r, R: wheel and roller radii */
+            const double a = w->frame.p[1] - rig->pose.c[1], r = w->geo.r, R = w->geo.R;
+            int j;
+            for (j = 0; j < NS; j++)
+                l->dcx[j] = l->dcy[j] = l->rx[j] = l->ry[j] = 0.0;
+            l->dcx[RR_RIG_VX] = 1.0 / l->V;
+            l->dcx[RR_RIG_SPIN] = -r / l->V;
+            l->dcx[RR_RIG_YAW_RATE] = -a / l->V;
+            l->dcx[RR_RIG_ROLLER_SPIN] = R / l->V;
+            l->dcy[RR_RIG_VY] = 1.0 / l->V;
+            l->dcy[RR_RIG_YAW] = -1.0;
+            l->rx[RR_RIG_VX] = 1.0 / p->mass;
+            l->rx[RR_RIG_YAW_RATE] = -a / p->Izz;
+            l->rx[RR_RIG_SPIN] = -r / p->Iyy;
+            l->rx[RR_RIG_ROLLER_SPIN] = R / p->roller_inertia;
+            l->ry[RR_RIG_VY] = 1.0 / p->mass;
+        }
         simplified_forces(p, l, l->cx, l->cy, f, NULL);
         l->fx = f[0];
         l->fy = f[1];
@@ -326,25 +341,6 @@ static int linearise(rr_rig *rig, const double *y)
     memcpy(rig->lin_y, y, sizeof rig->lin_y);
     rig->lin_ok = 1;
     return RR_OK;
-}
-
-/* The creepages' change for a change d of the state (linearised eq. 7-8). */
-static void creepage_change(const rr_rig_creep_lin *l, const double *d, double *dcx, double *dcy)
-{
-    *dcx = (d[RR_RIG_VX] - l->r * d[RR_RIG_SPIN] - l->a * d[RR_RIG_YAW_RATE]
-            + l->R * d[RR_RIG_ROLLER_SPIN]) / l->V;
-    *dcy = d[RR_RIG_VY] / l->V - d[RR_RIG_YAW];
-}
-
-/* Adds the change (dfx, dfy) of a contact's creep forces to the rates' rows. */
-static void add_force(const rr_rig_params *p, const rr_rig_creep_lin *l, double dfx, double dfy,
-                      double *df)
-{
-    df[RR_RIG_VX] += dfx / p->mass;
-    df[RR_RIG_YAW_RATE] += -l->a * dfx / p->Izz;
-    df[RR_RIG_SPIN] += -l->r * dfx / p->Iyy;
-    df[RR_RIG_ROLLER_SPIN] += l->R * dfx / p->roller_inertia;
-    df[RR_RIG_VY] += dfy / p->mass;
 }
 
 int rr_rig_jac(rr_rig *rig, double t, const double *y, double *J)
@@ -359,25 +355,24 @@ int rr_rig_jac(rr_rig *rig, double t, const double *y, double *J)
     memcpy(J, rig->J0, sizeof rig->J0);
     /* the creep forces' change d f = D d c, D the simplified theory's
      * tangent (the falling friction's slope included), d c from the
-     * linearised eq. 7-8 (creepage_change), per unit change of each rate
+     * linearised eq. 7-8 (lin->dcx, dcy), per unit change of each rate
      * the creepages depend on.  A secant would put a spurious stiff mode in
      * the saturated contact and slow the braking transients at the 4 ms
      * step. */
     for (k = 0; k < 2; k++) {
-        static const int cols[6] = {RR_RIG_VX, RR_RIG_SPIN, RR_RIG_YAW_RATE,
-                                    RR_RIG_ROLLER_SPIN, RR_RIG_VY, RR_RIG_YAW};
         const rr_rig_creep_lin *l = &rig->lin[k];
         double f[2], D[4];
         if (!l->ok)
             continue;
         simplified_forces(p, l, l->cx, l->cy, f, D);
-        for (j = 0; j < 6; j++) {
-            double d[NS] = {0.0}, col[NS] = {0.0}, dcx, dcy;
-            d[cols[j]] = 1.0;
-            creepage_change(l, d, &dcx, &dcy);
-            add_force(p, l, D[0] * dcx + D[1] * dcy, D[2] * dcx + D[3] * dcy, col);
+        for (j = 0; j < NS; j++) {
+            /* the forces' change per unit change of y_j */
+            const double dfx = D[0] * l->dcx[j] + D[1] * l->dcy[j];
+            const double dfy = D[2] * l->dcx[j] + D[3] * l->dcy[j];
+            if (dfx == 0.0 && dfy == 0.0)
+                continue;
             for (i = RR_RIG_VX; i <= RR_RIG_ROLLER_SPIN; i++)
-                J[i * NS + cols[j]] += col[i];
+                J[i * NS + j] += l->rx[i] * dfx + l->ry[i] * dfy;
         }
     }
     return RR_OK;
@@ -409,12 +404,16 @@ static int model_cb(void *ctx, double t, const double *y0, const double *z, doub
     }
     for (k = 0; k < 2; k++) {
         const rr_rig_creep_lin *l = &rig->lin[k];
-        double dcx, dcy, f[2];
+        double dcx = 0.0, dcy = 0.0, f[2];
         if (!l->ok)
             continue;
-        creepage_change(l, d, &dcx, &dcy);
+        for (j = 0; j < NS; j++) {
+            dcx += l->dcx[j] * d[j];
+            dcy += l->dcy[j] * d[j];
+        }
         simplified_forces(p, l, l->cx + dcx, l->cy + dcy, f, NULL);
-        add_force(p, l, f[0] - l->fx, f[1] - l->fy, df);
+        for (i = 0; i < NS; i++)
+            df[i] += l->rx[i] * (f[0] - l->fx) + l->ry[i] * (f[1] - l->fy);
     }
     return RR_OK;
 }

@@ -129,8 +129,10 @@ typedef struct {
     double N, V;                   /* normal load [N], rolling speed [m/s] */
     double cx, cy;                 /* creepages there */
     double fx, fy;                 /* the simplified theory's forces there [N] */
-    double a, r, R;                /* lateral arm to the wheelset centre, wheel and
-                                    * roller radii [m] */
+    double dcx[RR_RIG_NSTATE];     /* d cx / d y, d cy / d y (linearised eq. 7-8) */
+    double dcy[RR_RIG_NSTATE];
+    double rx[RR_RIG_NSTATE];      /* d (dy/dt) per unit fx, fy on this contact */
+    double ry[RR_RIG_NSTATE];
     int ok;                        /* 0: the contact has no usable coefficients */
 } rr_rig_creep_lin;
 
