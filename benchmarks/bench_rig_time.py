@@ -32,9 +32,12 @@ def _integration(**kw):
 
 
 VARIANTS = [               # (label, build_rig keywords)
-    ("TR-BDF2, 1 Newton iteration in the BDF2 stage, FASTSIM 20x20 (default)", {}),
-    ("TR-BDF2, 1 Newton iteration in both stages, FASTSIM 20x20",
-     _integration(linear_first_stage=False)),
+    ("TR-BDF2, 1 Newton iteration in the BDF2 stage on the simplified theory's change, "
+     "FASTSIM 20x20 (default)", {}),
+    ("TR-BDF2, 1 Newton iteration in the BDF2 stage on FASTSIM, FASTSIM 20x20",
+     _integration(newton_model=False)),
+    ("TR-BDF2, 1 Newton iteration in both stages on FASTSIM, FASTSIM 20x20",
+     _integration(newton_model=False, linear_first_stage=False)),
     ("TR-BDF2 linearly implicit (no iteration), FASTSIM 20x20",
      _integration(newton_iterations=0)),
     ("ROS2, FASTSIM 20x20", dict(ode="ros2")),
@@ -141,9 +144,11 @@ def main(argv=None):
          f"{rr.__version__}; {code_state()}"]
     L += conditions_lines(load0, load1, mon)
     L += ["", "## Goals", "", "| goal | measured | target | result |", "| --- | --- | --- | --- |"]
+    rtf_whole = simulated / warm
     L.append(f"| real-time factor, paper's scenario, 4 ms step, default (TR-BDF2, "
-             f"FASTSIM 20x20) | {rtf:.0f} (stepping) | >= {GOAL_RTF:.0f} | "
-             f"{verdict(rtf >= GOAL_RTF)} |")
+             f"FASTSIM 20x20) | {rtf:.0f} stepping; {rtf_whole:.0f} whole rr.simulate() "
+             f"call (table cached) | >= {GOAL_RTF:.0f} | "
+             f"{verdict(min(rtf, rtf_whole) >= GOAL_RTF)} |")
     crows = cprog if isinstance(cprog, list) else []
     for period in (4, 1):
         runs = [c for c in crows if c["period"] == period and c["mode"] == "sleep" and "max" in c]
@@ -169,7 +174,7 @@ def main(argv=None):
           "`make -C csrc example`; `csrc/build/rig_realtime PERIOD SECONDS [floor]`: the rig "
           "stepped in a loop paced by clock_nanosleep (TIMER_ABSTIME), each step timed with "
           "clock_gettime (defaults of rig_default.toml: TR-BDF2 with one Newton iteration in "
-          "its BDF2 stage, FASTSIM 20x20); memory locked, SCHED_FIFO, pinned to one processor where allowed"
+          "its BDF2 stage on the simplified theory's change, FASTSIM 20x20); memory locked, SCHED_FIFO, pinned to one processor where allowed"
           + (f" (here: {crows[0]['setup']})" if crows else "") + ".  \"floor\" runs the same "
           "loop with a fixed amount of arithmetic in place of the step, as long as a warm "
           "step: its spread is the machine's, not the code's.", "",

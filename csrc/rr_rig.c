@@ -334,7 +334,7 @@ static int linearise(rr_rig *rig, const double *y)
             l->rx[RR_RIG_ROLLER_SPIN] = R / p->roller_inertia;
             l->ry[RR_RIG_VY] = 1.0 / p->mass;
         }
-        simplified_forces(p, l, l->cx, l->cy, f, NULL);
+        simplified_forces(p, l, l->cx, l->cy, f, l->D);
         l->fx = f[0];
         l->fy = f[1];
     }
@@ -345,7 +345,6 @@ static int linearise(rr_rig *rig, const double *y)
 
 int rr_rig_jac(rr_rig *rig, double t, const double *y, double *J)
 {
-    const rr_rig_params *p = rig->p;
     int k, i, j, st;
     (void)t;
 
@@ -361,10 +360,9 @@ int rr_rig_jac(rr_rig *rig, double t, const double *y, double *J)
      * step. */
     for (k = 0; k < 2; k++) {
         const rr_rig_creep_lin *l = &rig->lin[k];
-        double f[2], D[4];
+        const double *D = l->D;
         if (!l->ok)
             continue;
-        simplified_forces(p, l, l->cx, l->cy, f, D);
         for (j = 0; j < NS; j++) {
             /* the forces' change per unit change of y_j */
             const double dfx = D[0] * l->dcx[j] + D[1] * l->dcy[j];

@@ -129,6 +129,7 @@ typedef struct {
     double N, V;                   /* normal load [N], rolling speed [m/s] */
     double cx, cy;                 /* creepages there */
     double fx, fy;                 /* the simplified theory's forces there [N] */
+    double D[4];                   /* and their tangent d f / d c (row-major 2 x 2) [N] */
     double dcx[RR_RIG_NSTATE];     /* d cx / d y, d cy / d y (linearised eq. 7-8) */
     double dcy[RR_RIG_NSTATE];
     double rx[RR_RIG_NSTATE];      /* d (dy/dt) per unit fx, fy on this contact */

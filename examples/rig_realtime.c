@@ -103,7 +103,7 @@ static void rig_defaults(rr_rig_params *p, const rr_contact_table *t, double T)
     p->method = RR_ODE_TRBDF2;
     p->newton_iters = 1;          /* in the BDF2 stage; */
     p->linear_tr = 1;             /* none in the trapezoidal stage */
-    p->newton_model = 1;
+    p->newton_model = 1;          /* iterated on the simplified theory: one FASTSIM per step */
     p->roller_pi.T = T; p->roller_pi.Kp = 300.0; p->roller_pi.KI = 2.0; p->roller_pi.Tmax = 100.0;
     p->wheelset_pi.T = T; p->wheelset_pi.Kp = 100.0; p->wheelset_pi.KI = 2.0;
     p->wheelset_pi.Tmax = 60.0;
