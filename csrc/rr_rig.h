@@ -39,15 +39,17 @@
  * reference, the PI controllers (eq. 10-11) set the torque references,
  * held until the next sample; the plant is then integrated over T in nsub
  * equal steps of a fixed-step L-stable method (rr_ode.h) with an
- * approximate Jacobian (springs exact, creep forces by the linear theory
- * scaled to the current saturation, the linear theory's own for it): every
- * step costs the same.  The positions x, y, yaw, chi, theta_r are the
- * integrals of the next five states, which the integrator's linear algebra
- * exploits (rr_ode nq = 5: 7 unknowns instead of 12).  TR-BDF2 with a
- * linearly implicit trapezoidal stage and one Newton iteration in the BDF2
- * stage needs two contact evaluations per step and sees the creep force's
- * saturation knee; with no iteration at all (one evaluation) a step that
- * crosses the knee may oscillate about it.
+ * approximate Jacobian (springs exact, creep forces by the 2 x 2 tangent
+ * of Kalker's simplified theory, the cubic law with falling friction; the
+ * linear theory's own for it): every step costs the same.  The positions
+ * x, y, yaw, chi, theta_r are the integrals of the next five states, which
+ * the integrator's linear algebra exploits (rr_ode nq = 5: 7 unknowns
+ * instead of 12).  TR-BDF2 with a linearly implicit trapezoidal stage and
+ * one Newton iteration in the BDF2 stage sees the creep force's saturation
+ * knee; with newton_model the iteration takes the simplified theory's
+ * change of the forces over the step (the integrator's model), anchored at
+ * the full method's forces at the step's start: one contact evaluation per
+ * step (two with the full method in the iteration).
  */
 #ifndef RR_RIG_H
 #define RR_RIG_H
