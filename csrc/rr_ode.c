@@ -145,41 +145,41 @@ int rr_ode_nfev(const rr_ode *s, int jac_given)
     }
 }
 
-/* One call of f, counted, its status merged into *warn and its output checked. */
-static int call_f(rr_ode *s, rr_ode_rhs f, void *ctx, double t, const double *y,
-                  double *dydt, int *warn)
+/* A callback's status st merged into *warn (an error passed on) and its n
+ * outputs v checked. */
+static int merge(const rr_ode *s, int st, const double *v, int *warn)
 {
-    int i, st;
+    int i;
 
-    s->nfev++;
-    st = f(ctx, t, y, dydt);
     if (st < 0)
         return st;
     if (st > *warn)
         *warn = st;
     for (i = 0; i < s->n; i++)
-        if (!isfinite(dydt[i]))
+        if (!isfinite(v[i]))
             return RR_ERR_NONFINITE;
     return RR_OK;
 }
 
-/* s->r <- f(t0, y0) + model(t, y0, z), counted and checked as call_f. */
+/* One call of f, counted. */
+static int call_f(rr_ode *s, rr_ode_rhs f, void *ctx, double t, const double *y,
+                  double *dydt, int *warn)
+{
+    s->nfev++;
+    return merge(s, f(ctx, t, y, dydt), dydt, warn);
+}
+
+/* s->r <- f(t0, y0) + model(t, y0, z), counted. */
 static int call_model(rr_ode *s, void *ctx, double t, const double *z, int *warn)
 {
     int i, st;
 
     s->nmev++;
     st = s->model(ctx, t, s->y0, z, s->r);
-    if (st < 0)
-        return st;
-    if (st > *warn)
-        *warn = st;
-    for (i = 0; i < s->n; i++) {
-        s->r[i] += s->f0[i];
-        if (!isfinite(s->r[i]))
-            return RR_ERR_NONFINITE;
-    }
-    return RR_OK;
+    if (st >= 0)
+        for (i = 0; i < s->n; i++)
+            s->r[i] += s->f0[i];
+    return merge(s, st, s->r, warn);
 }
 
 /* J at (t, y0) into s->W, analytic or by forward differences from f0. */
