@@ -23,7 +23,7 @@ enum rr_status {
     RR_ERR_NONFINITE = -1,      /* an input is NaN or infinite */
     RR_ERR_LOAD = -2,           /* normal load not positive */
     RR_ERR_GEOMETRY = -3,       /* curvature or semi-axis not positive; wheel off its roller */
-    RR_ERR_MATERIAL = -4,       /* modulus not positive or nu outside [0, 0.5) */
+    RR_ERR_MATERIAL = -4,       /* modulus not positive or nu outside [0, 0.5] */
     RR_ERR_FRICTION = -5,       /* mu not positive, or A, B of the falling law invalid */
     RR_ERR_GRID = -6,           /* grid size outside [1, RR_FASTSIM_MAX_GRID] */
     RR_ERR_SPEED = -7,          /* falling friction needs a positive rolling speed */
@@ -31,10 +31,14 @@ enum rr_status {
     RR_ERR_PARAM = -9,          /* parameter out of range: method option (k0, alpha_inf, beta,
                                    kA, kS), search option, controller setting */
     RR_ERR_WORKSPACE = -10,     /* caller-supplied buffer missing or too small */
-    RR_ERR_SINGULAR = -11       /* a linear system (e.g. I - gamma h J) is singular */
+    RR_ERR_SINGULAR = -11,      /* a linear system (e.g. I - gamma h J) is singular */
+    RR_ERR_RANGE = -12,         /* finite inputs so extreme that a result would overflow,
+                                   underflow to zero or lose its precision */
+    RR_ERR_NULL = -13           /* a required pointer is NULL, or an object was never
+                                   initialised */
 };
 
-#define RR_STATUS_MIN (-11)
+#define RR_STATUS_MIN (-13)
 #define RR_STATUS_MAX 1
 
 /* Message of a status code; a fixed string, never NULL. */

@@ -15,7 +15,7 @@ typedef struct {
     double a, b;    /* semi-axes [m]: a along the rolling direction, b lateral */
     double N;       /* normal load [N] */
     double G;       /* combined shear modulus [Pa] */
-    double nu;      /* combined Poisson ratio, 0 <= nu < 0.5 */
+    double nu;      /* combined Poisson ratio, 0 <= nu <= 0.5 */
     double cx, cy;  /* longitudinal and lateral creepage xi, eta [-] */
     double cphi;    /* spin creepage phi [rad/m] */
     double speed;   /* rolling speed [m/s] >= 0; needed (> 0) by falling friction */
@@ -29,11 +29,15 @@ typedef struct {
 /*
  * rr_contact_check - 0 if the case is valid, else RR_ERR_NONFINITE,
  * RR_ERR_GEOMETRY (a, b <= 0), RR_ERR_LOAD (N <= 0), RR_ERR_MATERIAL
- * (G <= 0, nu outside [0, 0.5)) or RR_ERR_SPEED (speed < 0).
+ * (G <= 0, nu outside [0, 0.5]), RR_ERR_SPEED (speed < 0) or RR_ERR_NULL.
  */
 int rr_contact_check(const rr_contact_case *c);
 
-/* Set all outputs to NaN (error path). */
+/* Set all outputs to NaN (error path; f may be NULL). */
 void rr_forces_nan(rr_forces *f);
+
+/* st, or RR_ERR_RANGE with NaN forces where a success status would carry a
+ * non-finite force (a result beyond the floating-point range). */
+int rr_forces_checked(int st, rr_forces *f);
 
 #endif

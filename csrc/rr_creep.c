@@ -8,6 +8,8 @@
 
 void rr_creep_opts_default(int method, rr_creep_opts *o)
 {
+    if (!o)
+        return;
     o->method = method;
     o->nx = 30;
     o->ny = 30;
@@ -29,6 +31,8 @@ static int is_fastsim(int method)
 
 int rr_creep_opts_check(const rr_creep_opts *o)
 {
+    if (!o)
+        return RR_ERR_NULL;
     if (o->method < 0 || o->method >= RR_METHOD_COUNT)
         return RR_ERR_METHOD;
     if (is_fastsim(o->method)) {
@@ -62,7 +66,7 @@ int rr_linear(const rr_contact_case *c, rr_forces *out)
 {
     rr_kalker_coeffs k;
     double ab, c3, c33;
-    int st = rr_contact_check(c);
+    int st = out ? rr_contact_check(c) : RR_ERR_NULL;
 
     if (st == RR_OK)
         st = rr_kalker(c->a / c->b, c->nu, &k);
@@ -76,12 +80,12 @@ int rr_linear(const rr_contact_case *c, rr_forces *out)
     out->fx = -c->G * ab * k.c11 * c->cx;
     out->fy = -c->G * (ab * k.c22 * c->cy + c3 * k.c23 * c->cphi);
     out->mz = c->G * (c3 * k.c23 * c->cy - ab * ab * c33 * c->cphi);
-    return st;
+    return rr_forces_checked(st, out);    /* no saturation: large inputs overflow */
 }
 
 int rr_creep_prepare(const rr_contact_case *c, const rr_friction *fr, rr_kalker_coeffs *k)
 {
-    int st = rr_contact_check(c);
+    int st = k ? rr_contact_check(c) : RR_ERR_NULL;
 
     if (st == RR_OK)
         st = rr_friction_check(fr);
@@ -96,9 +100,11 @@ int rr_polach(const rr_contact_case *c, const rr_friction *fr, double kA, double
               rr_forces *out)
 {
     rr_kalker_coeffs k;
-    double syc, sc, s, cjj, mu, eps, F;
+    double syc, sc, s, cjj, mu, eps, F, Ft;
     int st = RR_OK;
 
+    if (!out)
+        return RR_ERR_NULL;
     if (!isfinite(kA) || !isfinite(kS))
         st = RR_ERR_NONFINITE;
     else if (kS <= 0.0 || kS > kA || kA > 1.0)
@@ -121,9 +127,13 @@ int rr_polach(const rr_contact_case *c, const rr_friction *fr, double kA, double
     s = hypot(c->cx, c->cy);
     mu = rr_friction_mu(fr, c->speed * sc);
     if (s > 0.0) {
+        double r;
         cjj = hypot(k.c11 * c->cx, k.c22 * c->cy) / s;
         eps = RR_PI * c->G * c->a * c->b * cjj * sc / (4.0 * c->N * mu);
-        F = 2.0 * c->N * mu / RR_PI * (kA * eps / (1.0 + kA * eps * kA * eps) + atan(kS * eps));
+        r = kA * eps;
+        /* r/(1 + r^2), as 1/r where r^2 would overflow */
+        F = 2.0 * c->N * mu / RR_PI * ((r < 1e150 ? r / (1.0 + r * kA * eps) : 1.0 / r)
+                                       + atan(kS * eps));
         out->fx = -F * c->cx / sc;
         out->fy = -F * c->cy / sc;
     }
@@ -137,16 +147,27 @@ int rr_polach(const rr_contact_case *c, const rr_friction *fr, double kA, double
         double e2 = epsm * epsm;
         double d = (e2 - 1.0) / (e2 + 1.0);
         double q = 1.0 - d * d;
-        double km = epsm * (d * d * d / 3.0 - d * d / 2.0 + 1.0 / 6.0) - sqrt(q * q * q) / 3.0;
+        /* K_M -> 0 (as -2/(3 eps_M^3)) where eps_M^2 overflows */
+        double km = isfinite(e2) ? epsm * (d * d * d / 3.0 - d * d / 2.0 + 1.0 / 6.0)
+                                       - sqrt(q * q * q) / 3.0
+                                 : 0.0;
         out->fy += 9.0 / 16.0 * c->a * c->N * mu * km * ks * c->cphi / sc;
     }
-    return st;
+    /* The spin force adds to the creep force unbounded: keep the sum on the
+     * friction limit, |F| <= mu N (Coulomb's law holds for the total). */
+    Ft = hypot(out->fx, out->fy);
+    if (Ft > mu * c->N) {
+        const double f = mu * c->N / Ft;
+        out->fx *= f;
+        out->fy *= f;
+    }
+    return rr_forces_checked(st, out);
 }
 
 int rr_creep_forces(const rr_contact_case *c, const rr_friction *fr,
                     const rr_creep_opts *o, rr_forces *out)
 {
-    int st = rr_creep_opts_check(o);
+    int st = out ? rr_creep_opts_check(o) : RR_ERR_NULL;
 
     if (st < 0) {
         rr_forces_nan(out);

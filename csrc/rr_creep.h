@@ -89,7 +89,8 @@ int rr_creep_prepare(const rr_contact_case *c, const rr_friction *fr, rr_kalker_
  *   Kalker's C33 is not in our source table (Kalker 1990, Table E.3 as
  *   transcribed has C11, C22, C23 only); C33 is taken from the simplified
  *   theory with flexibility L3, C33 = 32/(15 pi) C23 (b/a)^(3/2).
- *   status: as rr_contact_check.
+ *   status: as rr_contact_check; RR_ERR_RANGE where a force overflows (the
+ *   linear theory does not saturate); RR_ERR_NULL.
  */
 int rr_linear(const rr_contact_case *c, rr_forces *out);
 
@@ -106,9 +107,12 @@ int rr_linear(const rr_contact_case *c, rr_forces *out);
  *   The force lies along (cx, cy); for small pure cx, pure cy or pure spin
  *   it reproduces Kalker's linear theory times (kA + kS)/2 (with both cx
  *   and cy only its magnitude does).  0 < kS <= kA <= 1 (Polach 2005).
- *   The method gives no spin moment: mz = 0.
+ *   The method gives no spin moment: mz = 0.  The spin force is added
+ *   without a bound of its own, so the sum is kept on the friction limit:
+ *   |(fx, fy)| <= mu N, mu at the slip speed s_C speed.
  *   status: rr_contact_check, rr_friction_check, RR_ERR_PARAM, RR_ERR_SPEED
- *   (falling friction with speed 0).
+ *   (falling friction with speed 0), RR_ERR_RANGE (a force beyond the
+ *   floating-point range), RR_ERR_NULL.
  */
 int rr_polach(const rr_contact_case *c, const rr_friction *fr, double kA, double kS,
               rr_forces *out);

@@ -48,6 +48,12 @@ int rr_creepage(const rr_motion *wheel, const rr_motion *roller, const rr_contac
     double vw[3], vr[3], n[3], dw[3], V;
     int k;
 
+    if (!out)
+        return RR_ERR_NULL;
+    if (!wheel || !roller || !f) {
+        set_nan(out);
+        return RR_ERR_NULL;
+    }
     if (!all_finite(wheel->c, 3) || !all_finite(wheel->v, 3) || !all_finite(wheel->w, 3)
         || !all_finite(roller->c, 3) || !all_finite(roller->v, 3)
         || !all_finite(roller->w, 3) || !all_finite(f->p, 3) || !all_finite(f->t1, 3)
@@ -78,5 +84,10 @@ int rr_creepage(const rr_motion *wheel, const rr_motion *roller, const rr_contac
     out->cx = dot(out->slip, f->t1) / V;
     out->cy = dot(out->slip, f->t2) / V;
     out->cphi = dot(dw, n) / V;
+    if (!all_finite(out->slip, 3) || !isfinite(out->cx) || !isfinite(out->cy)
+        || !isfinite(out->cphi) || !isfinite(V)) {
+        set_nan(out);               /* speeds over ~1e150 m/s, or a tiny vmin */
+        return RR_ERR_RANGE;
+    }
     return RR_OK;
 }

@@ -49,7 +49,9 @@ typedef struct {
  *            unit and orthogonal, checked to 1e-9); vmin > 0 [m/s]
  *   returns: *out
  *   status:  0 OK; RR_ERR_NONFINITE, RR_ERR_GEOMETRY (frame not orthonormal),
- *            RR_ERR_SPEED (vmin not positive)
+ *            RR_ERR_SPEED (vmin not positive), RR_ERR_RANGE (a slip or a
+ *            creepage overflows: speeds beyond ~1e150 m/s, or a slip over
+ *            a tiny vmin), RR_ERR_NULL
  */
 int rr_creepage(const rr_motion *wheel, const rr_motion *roller, const rr_contact_frame *f,
                 double vmin, rr_creepages *out);

@@ -23,6 +23,10 @@ static void flexibilities(const rr_contact_case *c, const rr_friction *fr, int m
         const double fy = c->cy * ab * k->c22 / sat;
         const double fp = c->cphi * ab * cc * k->c23 / sat;
         double w = sqrt(fx * fx + fy * fy + fp * fp) / 3.0;
+        if (isnan(w)) {                 /* 0/0 from an extreme case: refused by the caller */
+            fl->L1 = fl->L2 = fl->L3 = NAN;
+            return;
+        }
         if (w > 1.0)
             w = 1.0;
         if (w > 0.0) {
@@ -322,16 +326,26 @@ static void coulomb_dispatch(const march *m, const group *g, sums *s)
     coulomb_dispatch_v2(m, g, s);
 }
 
-/* group_coulomb's condition.  Inside the ellipse q >= 2^-65 = 2.7e-20:
- * w2 >= 4.8e-4 > 2^-12 (at most 4096 rows), and q = w2 - t^2 > 0 is either
- * >= w2/2 or, by Sterbenz's lemma, the exact difference of two doubles
- * >= 2^-13, a multiple of 2^-65.  So with mu scale in [1e-80, 1e100] the
- * bound g = mu scale q (or sqrt(q)) lies in [2e-100, 1e100]: g*g is a
- * normal number and g > DBL_MIN. */
-static int coulomb_exact(const march *m)
+/* The march is exact in floating point, and the vector kernel's
+ * sqrt(g*g) == g holds, when the bound's scale mu p lies in [1e-80, 1e100]
+ * Pa and no element adds more than 1e20 times that to a traction: inside
+ * the ellipse q >= 2^-65 = 2.7e-20 (w2 >= 4.8e-4 > 2^-12 with at most 4096
+ * rows, and q = w2 - t^2 > 0 is either >= w2/2 or, by Sterbenz's lemma, the
+ * exact difference of two doubles >= 2^-13, a multiple of 2^-65), so every
+ * bound g lies in [2e-100, 1e100] and every trial traction below 1e121:
+ * their squares are normal numbers.  Physical cases lie far inside (mu p of
+ * 1e3 to 1e10 Pa; a creepage 1e20 times its saturation value is full
+ * sliding many times over); outside, RR_ERR_RANGE.  Elements and rows of
+ * subnormal size are refused too: their sums would lose their precision. */
+static int march_in_range(const march *m, const flex *fl, double dy)
 {
     const double ms = m->mu_bound * m->scale;
-    return ms >= 1e-80 && ms <= 1e100;
+    const double inc = (fabs(m->gx0) + fabs(m->gphi) * m->c->b + fabs(m->gy)
+                        + fabs(m->gphi) * m->c->a) * m->h_rect;
+    if (!isnormal(fl->L1) || !isnormal(fl->L2) || !isnormal(fl->L3)
+        || !isnormal(0.01 * m->h_rect) || !isnormal(dy))
+        return 0;
+    return ms >= 1e-80 && ms <= 1e100 && inc <= 1e20 * ms;
 }
 
 /* The march of a group, one element of each row at a time: any friction law,
@@ -436,6 +450,28 @@ static void field_fill(const march *m, rr_fastsim_field *f)
     }
 }
 
+/* The error path: NaN forces and, where its size is known, a NaN field. */
+static int fail(int st, const rr_creep_opts *o, rr_forces *out, rr_fastsim_field *f)
+{
+    if (out)
+        rr_forces_nan(out);
+    if (f && o && o->nx >= 1 && o->ny >= 1 && o->nx <= RR_FASTSIM_MAX_GRID
+        && o->ny <= RR_FASTSIM_MAX_GRID) {
+        const long n = (long)o->nx * o->ny;
+        long i;
+        for (i = 0; i < n; i++) {
+            if (f->x) f->x[i] = NAN;
+            if (f->y) f->y[i] = NAN;
+            if (f->pn) f->pn[i] = NAN;
+            if (f->px) f->px[i] = NAN;
+            if (f->py) f->py[i] = NAN;
+            if (f->slip) f->slip[i] = 0;
+        }
+        f->nslip = 0;
+    }
+    return st;
+}
+
 int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_opts *o,
                rr_forces *out, rr_fastsim_field *field)
 {
@@ -443,20 +479,22 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
     flex fl;
     march m;
     group cache[GROUP_CACHE], tmp, *g;    /* the groups of the first rows, set up once */
-    const int nx = o->nx, ny = o->ny;
+    int nx, ny;
     double dy, S = 0.0, fx = 0.0, fy = 0.0, mz = 0.0;
     int st, j, n, falling, local, converged = 1, nslip = 0;
 
+    if (!c || !fr || !o || !out)
+        return fail(RR_ERR_NULL, o, out, field);
     st = rr_creep_opts_check(o);
     if (st == RR_OK && o->method != RR_METHOD_FASTSIM && o->method != RR_METHOD_FASTSIM_BLENDED
         && o->method != RR_METHOD_MODIFIED_FASTSIM)
         st = RR_ERR_METHOD;
     if (st == RR_OK)
         st = rr_creep_prepare(c, fr, &k);
-    if (st < 0) {
-        rr_forces_nan(out);
-        return st;
-    }
+    if (st < 0)
+        return fail(st, o, out, field);
+    nx = o->nx;
+    ny = o->ny;
     flexibilities(c, fr, o->method, o, &k, &fl);
     falling = rr_friction_is_falling(fr);
     /* local: mu from each element's own slip speed; rigid: one mu at the
@@ -495,6 +533,8 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
             S += rows[r] * g->h[r];
     }
     m.scale = c->N / (S * dy);
+    if (!march_in_range(&m, &fl, dy))
+        return fail(RR_ERR_RANGE, o, out, field);
 
     if (field)
         field_fill(&m, field);
@@ -507,7 +547,7 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
             g = &tmp;
             group_init(&m, j, g);
         }
-        if (local || field || !coulomb_exact(&m))
+        if (local || field)
             group_march(&m, g, local, field, &s);
         else
             coulomb_dispatch(&m, g, &s);
@@ -524,6 +564,8 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
     out->mz = mz * dy;
     if (field)
         field->nslip = nslip;
+    if (!(isfinite(out->fx) && isfinite(out->fy) && isfinite(out->mz)))
+        return fail(RR_ERR_RANGE, o, out, field);
     if (!converged && st == RR_OK)
         st = RR_WARN_NOT_CONVERGED;
     return st;

@@ -66,7 +66,11 @@ typedef struct {
  *            its cap in some element; results usable); errors as
  *            rr_contact_check, rr_friction_check, rr_creep_opts_check,
  *            RR_ERR_METHOD (not a FASTSIM method), RR_ERR_SPEED (falling
- *            friction with speed 0).
+ *            friction with speed 0), RR_ERR_RANGE (the bound mu p outside
+ *            [1e-80, 1e100] Pa, a creepage over 1e20 times its saturation
+ *            value, elements of subnormal size: no physical case),
+ *            RR_ERR_NULL (c, fr, o or out NULL).  On error the forces and
+ *            the field (where o gives its size) are NaN.
  *   Flexibilities (Kalker 1982): L1 = 8a/(3 C11 G), L2 = 8a/(3 C22 G),
  *   L3 = pi a sqrt(a/b)/(4 C23 G).
  *   Blended: with characteristic creepages ch_i = mu0 N / (G c^2 C11),

@@ -89,7 +89,7 @@ V_FN RR_FASTSIM_INLINE void V_NAME(group_pressure)(const march *m, const group *
  * test for slip) that is t* g/|t*|, the very quotient of group_march, and
  * otherwise t* g/g = t* exactly, because sqrt(g*g) == g in binary floating
  * point (sqrt and * correctly rounded; g*g neither underflows nor
- * overflows, which coulomb_exact guarantees).  Outside the ellipse
+ * overflows, which march_in_range guarantees).  Outside the ellipse
  * max(q, 0) = 0 makes g = 0 and the traction +-0: that adds +-0 to the
  * sums, which changes none of them (a sum that starts at +0 never becomes
  * -0), and enters the next element's trial traction only as a zero; so each

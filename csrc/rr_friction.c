@@ -5,6 +5,8 @@
 
 int rr_friction_check(const rr_friction *f)
 {
+    if (!f)
+        return RR_ERR_NULL;
     if (!isfinite(f->mu0) || !isfinite(f->A) || !isfinite(f->B))
         return RR_ERR_NONFINITE;
     if (f->mu0 <= 0.0 || f->A <= 0.0 || f->A > 1.0 || f->B < 0.0)
@@ -14,15 +16,25 @@ int rr_friction_check(const rr_friction *f)
 
 int rr_friction_is_falling(const rr_friction *f)
 {
-    return f->A < 1.0 && f->B > 0.0;
+    return f && f->A < 1.0 && f->B > 0.0;
+}
+
+/* exp(-B w), with B = 0 meaning no decay even at w = inf (not exp(NaN)). */
+static double decay(const rr_friction *f, double w)
+{
+    return f->B > 0.0 ? exp(-f->B * w) : 1.0;
 }
 
 double rr_friction_mu(const rr_friction *f, double w)
 {
-    return f->mu0 * ((1.0 - f->A) * exp(-f->B * w) + f->A);
+    if (!f)
+        return NAN;
+    return f->mu0 * ((1.0 - f->A) * decay(f, w) + f->A);
 }
 
 double rr_friction_dmu(const rr_friction *f, double w)
 {
-    return -f->mu0 * (1.0 - f->A) * f->B * exp(-f->B * w);
+    if (!f)
+        return NAN;
+    return -f->mu0 * (1.0 - f->A) * f->B * decay(f, w);
 }

@@ -19,18 +19,18 @@ typedef struct {
 
 /*
  * rr_friction_check - 0 if the law is valid, else RR_ERR_NONFINITE or
- * RR_ERR_FRICTION (mu0 <= 0, A outside (0, 1], B < 0).  A > 0 keeps mu
- * positive at any slip speed.
+ * RR_ERR_FRICTION (mu0 <= 0, A outside (0, 1], B < 0), RR_ERR_NULL.  A > 0
+ * keeps mu positive at any slip speed.
  */
 int rr_friction_check(const rr_friction *f);
 
 /* 1 if the coefficient falls with slip (A < 1 and B > 0), else 0. */
 int rr_friction_is_falling(const rr_friction *f);
 
-/* mu at slip speed w >= 0 [m/s]. */
+/* mu at slip speed w >= 0 [m/s] (w may be +inf); NaN if f is NULL. */
 double rr_friction_mu(const rr_friction *f, double w);
 
-/* d mu / d w at slip speed w >= 0 [s/m]; <= 0. */
+/* d mu / d w at slip speed w >= 0 [s/m]; <= 0; NaN if f is NULL. */
 double rr_friction_dmu(const rr_friction *f, double w);
 
 #endif

@@ -9,6 +9,8 @@
 
 void rr_search_opts_default(rr_search_opts *o)
 {
+    if (!o)
+        return;
     o->nsamples = 400;
     o->two_point_tol = 1e-4;
     o->two_point_sep = 2e-3;
@@ -65,27 +67,59 @@ static void point_nan(rr_contact_point *c)
     c->two_point = 0;
 }
 
+/* What a caller can get wrong in a pair or the search options. */
+static int pair_check(const rr_wheel_roller *p)
+{
+    int st;
+    if (!p)
+        return RR_ERR_NULL;
+    if ((st = rr_spline_check(&p->wheel)) != RR_OK || (st = rr_spline_check(&p->roller)) != RR_OK)
+        return st;
+    if (!isfinite(p->r0) || !isfinite(p->R0) || !isfinite(p->wheel_y) || !isfinite(p->roller_y))
+        return RR_ERR_NONFINITE;
+    if (!(p->r0 > 0.0) || !(p->R0 > 0.0) || (p->side != 1 && p->side != -1))
+        return RR_ERR_PARAM;
+    return RR_OK;
+}
+
+static int opts_check(const rr_search_opts *o)
+{
+    if (!o)
+        return RR_ERR_NULL;
+    if (o->nsamples < 3 || o->nsamples > RR_SEARCH_MAX_SAMPLES
+        || !(o->two_point_tol >= 0.0) || !(o->two_point_sep >= 0.0)
+        || !isfinite(o->two_point_tol) || !isfinite(o->two_point_sep))
+        return RR_ERR_PARAM;
+    return RR_OK;
+}
+
 int rr_contact_search(const rr_wheel_roller *p, double y_ws, double z_ws, double roll,
                       const rr_search_opts *o, rr_contact_point *out)
 {
-    const double c = cos(roll), sn = sin(roll);
-    const double s0 = p->wheel.s[0], s1 = p->wheel.s[p->wheel.n - 1];
-    const int ns = o->nsamples;
+    double c, sn, s0, s1;
+    int ns;
     double best = INFINITY, second = INFINITY, sbest = 0.0, ybest = 0.0, ysecond = NAN;
     double prev2 = INFINITY, prev1 = INFINITY, sprev1 = 0.0, yprev1 = 0.0;
     double lo, hi, s, k_w, k_r;
     probe q;
-    int i, ok = 0, it;
+    int i, ok = 0, it, st;
 
+    if (!out)
+        return RR_ERR_NULL;
     q.kw = q.kr = -1;
+    if ((st = pair_check(p)) != RR_OK || (st = opts_check(o)) != RR_OK) {
+        point_nan(out);
+        return st;
+    }
     if (!isfinite(y_ws) || !isfinite(z_ws) || !isfinite(roll)) {
         point_nan(out);
         return RR_ERR_NONFINITE;
     }
-    if (ns < 3 || !(o->two_point_tol >= 0.0) || !(o->two_point_sep >= 0.0)) {
-        point_nan(out);
-        return RR_ERR_PARAM;
-    }
+    c = cos(roll);
+    sn = sin(roll);
+    s0 = p->wheel.s[0];
+    s1 = p->wheel.s[p->wheel.n - 1];
+    ns = o->nsamples;
     /* coarse scan: the global minimum of the gap, and the deepest other
      * local minimum at least two_point_sep away from it */
     for (i = 0; i <= ns; i++) {
@@ -187,8 +221,19 @@ int rr_wheelset_contact(const rr_wheel_roller *left, const rr_wheel_roller *righ
                         const rr_search_opts *o, rr_wheelset_pose *pose,
                         rr_contact_point *cl, rr_contact_point *cr)
 {
-    double z = 0.5 * (left->r0 + right->r0), roll = 0.0;
+    double z, roll = 0.0;
     int it, st = RR_OK;
+
+    if (!pose || !cl || !cr)
+        return RR_ERR_NULL;
+    if ((st = pair_check(left)) != RR_OK || (st = pair_check(right)) != RR_OK
+        || (st = opts_check(o)) != RR_OK) {
+        pose->z = pose->roll = NAN;
+        point_nan(cl);
+        point_nan(cr);
+        return st;
+    }
+    z = 0.5 * (left->r0 + right->r0);
 
     /* Newton on (z, roll): a gap moves one-for-one with z and by the
      * contact point's lateral arm a = y - y_ws with roll; the 2 x 2 system
@@ -239,6 +284,17 @@ long rr_contact_table_len(int n)
     return n > 0 ? (long)n * ROW : 0;
 }
 
+/* What a caller can get wrong in a table: 0, RR_ERR_NULL, RR_ERR_PARAM. */
+static int table_check(const rr_contact_table *t)
+{
+    if (!t || !t->data)
+        return RR_ERR_NULL;
+    if (t->n < 2 || !isfinite(t->y0) || !isfinite(t->dy) || !(t->dy > 0.0)
+        || !isfinite(t->y0 + (t->n - 1) * t->dy))
+        return RR_ERR_PARAM;
+    return RR_OK;
+}
+
 static void store(double *d, const rr_contact_point *c)
 {
     d[0] = c->y; d[1] = c->z; d[2] = c->s_wheel; d[3] = c->s_roller; d[4] = c->r;
@@ -263,17 +319,28 @@ static void load(const double *a, const double *b, double f, rr_contact_point *c
 int rr_contact_table_build(const rr_wheel_roller *left, const rr_wheel_roller *right,
                            const rr_search_opts *o, rr_contact_table *t, double *bad_y)
 {
-    int i;
-    if (!t->data)
-        return RR_ERR_WORKSPACE;
-    if (t->n < 2 || !(t->dy > 0.0) || !isfinite(t->y0) || !isfinite(t->dy))
+    int st = t ? RR_OK : RR_ERR_NULL;
+    return st == RR_OK ? rr_contact_table_build_rows(left, right, o, t, 0, t->n, bad_y) : st;
+}
+
+int rr_contact_table_build_rows(const rr_wheel_roller *left, const rr_wheel_roller *right,
+                                const rr_search_opts *o, rr_contact_table *t, int i0, int i1,
+                                double *bad_y)
+{
+    int i, st;
+    if ((st = table_check(t)) != RR_OK)
+        return st == RR_ERR_NULL && t ? RR_ERR_WORKSPACE : st;
+    if (i0 < 0 || i1 > t->n || i0 > i1)
         return RR_ERR_PARAM;
-    for (i = 0; i < t->n; i++) {
+    if ((st = pair_check(left)) != RR_OK || (st = pair_check(right)) != RR_OK
+        || (st = opts_check(o)) != RR_OK)
+        return st;
+    for (i = i0; i < i1; i++) {
         const double y = t->y0 + i * t->dy;
         double *row = t->data + (long)i * ROW;
         rr_wheelset_pose pose;
         rr_contact_point cl, cr;
-        int st = rr_wheelset_contact(left, right, y, o, &pose, &cl, &cr);
+        st = rr_wheelset_contact(left, right, y, o, &pose, &cl, &cr);
         if (st < 0) {
             if (bad_y)
                 *bad_y = y;
@@ -291,9 +358,19 @@ int rr_contact_table_lookup(const rr_contact_table *t, double y_ws, rr_wheelset_
                             rr_wheelset_pose *slope, rr_contact_point *cl, rr_contact_point *cr)
 {
     double pos, f;
-    int i;
+    int i, st;
     const double *a, *b;
 
+    if (!pose || !cl || !cr)
+        return RR_ERR_NULL;
+    if ((st = table_check(t)) != RR_OK) {
+        point_nan(cl);
+        point_nan(cr);
+        pose->z = pose->roll = NAN;
+        if (slope)
+            slope->z = slope->roll = NAN;
+        return st;
+    }
     if (!isfinite(y_ws)) {
         point_nan(cl);
         point_nan(cr);

@@ -43,6 +43,9 @@ typedef struct {
     double two_point_sep;  /* least lateral distance between two contact points [m] */
 } rr_search_opts;
 
+/* Most wheel samples a search takes (a row then costs at most ~0.1 s). */
+#define RR_SEARCH_MAX_SAMPLES 100000
+
 /* 400 samples, two-point contact within 0.1 mm of gap and 2 mm apart. */
 void rr_search_opts_default(rr_search_opts *o);
 
@@ -72,7 +75,11 @@ typedef struct {
  *   returns: *out
  *   status:  0 OK; RR_ERR_GEOMETRY (no wheel sample lies over the roller:
  *            the wheel is off its roller; or B <= 0: conformal contact, no
- *            Hertz ellipse), RR_ERR_NONFINITE, RR_ERR_PARAM (bad options)
+ *            Hertz ellipse; or a profile's knots not increasing),
+ *            RR_ERR_NONFINITE, RR_ERR_PARAM (nsamples outside [3,
+ *            RR_SEARCH_MAX_SAMPLES], a tolerance negative or not finite, r0
+ *            or R0 not positive, side not +-1), RR_ERR_NULL.  The profiles
+ *            are checked (rr_spline_check) on every call.
  */
 int rr_contact_search(const rr_wheel_roller *p, double y_ws, double z_ws, double roll,
                       const rr_search_opts *o, rr_contact_point *out);
@@ -85,7 +92,8 @@ typedef struct {
 /*
  * rr_wheelset_contact - axle height and roll for lateral shift y_ws such
  * that both wheels touch their rollers (zero gap), and both contact points.
- *   status:  0 OK; RR_WARN_NOT_CONVERGED; errors of rr_contact_search
+ *   status:  0 OK; RR_WARN_NOT_CONVERGED; errors of rr_contact_search;
+ *            RR_ERR_NULL (pose, cl or cr NULL)
  */
 int rr_wheelset_contact(const rr_wheel_roller *left, const rr_wheel_roller *right, double y_ws,
                         const rr_search_opts *o, rr_wheelset_pose *pose,
@@ -110,11 +118,24 @@ long rr_contact_table_len(int n);
 
 /*
  * rr_contact_table_build - fill the table (calls rr_wheelset_contact n times).
+ *   given:   t->y0, t->dy > 0, t->n >= 2 (finite, the last row's shift
+ *            too), t->data of rr_contact_table_len(t->n) doubles
  *   status:  0 OK, or the first error with the shift that caused it left in
- *            *bad_y (may be NULL); RR_ERR_WORKSPACE (no data)
+ *            *bad_y (may be NULL); RR_ERR_WORKSPACE (no data), RR_ERR_PARAM
+ *            (y0, dy or n invalid), RR_ERR_NULL, errors of rr_contact_search
  */
 int rr_contact_table_build(const rr_wheel_roller *left, const rr_wheel_roller *right,
                            const rr_search_opts *o, rr_contact_table *t, double *bad_y);
+
+/*
+ * rr_contact_table_build_rows - rows i0 <= i < i1 of the table only (a caller
+ * that builds a large table in parts, e.g. to stay responsive); the same
+ * rows, bit for bit, as rr_contact_table_build.  RR_ERR_PARAM unless
+ * 0 <= i0 <= i1 <= t->n.
+ */
+int rr_contact_table_build_rows(const rr_wheel_roller *left, const rr_wheel_roller *right,
+                                const rr_search_opts *o, rr_contact_table *t, int i0, int i1,
+                                double *bad_y);
 
 /*
  * rr_contact_table_lookup - interpolated geometry at lateral shift y_ws.
@@ -123,7 +144,10 @@ int rr_contact_table_build(const rr_wheel_roller *left, const rr_wheel_roller *r
  *            turn a lateral velocity into the vertical and roll rates the
  *            contact constraint implies.
  *   The two-point flag is that of the nearer row.  No allocation, O(1).
- *   status:  0 OK; RR_ERR_GEOMETRY (y_ws outside the table), RR_ERR_NONFINITE
+ *   The caller's buffer must hold t->n rows (it cannot be checked here).
+ *   status:  0 OK; RR_ERR_GEOMETRY (y_ws outside the table), RR_ERR_NONFINITE,
+ *            RR_ERR_PARAM (y0, dy, n invalid as for the build), RR_ERR_NULL
+ *            (t, t->data, pose, cl or cr NULL)
  */
 int rr_contact_table_lookup(const rr_contact_table *t, double y_ws, rr_wheelset_pose *pose,
                             rr_wheelset_pose *slope, rr_contact_point *cl, rr_contact_point *cr);

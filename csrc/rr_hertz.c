@@ -6,11 +6,13 @@
 
 double rr_estar(double E1, double nu1, double E2, double nu2)
 {
+    double r;
     if (!isfinite(E1) || !isfinite(E2) || !isfinite(nu1) || !isfinite(nu2)
-        || E1 <= 0.0 || E2 <= 0.0 || nu1 < 0.0 || nu1 >= 0.5 || nu2 < 0.0
-        || nu2 >= 0.5)
+        || E1 <= 0.0 || E2 <= 0.0 || nu1 < 0.0 || nu1 > 0.5 || nu2 < 0.0 || nu2 > 0.5)
         return NAN;
-    return 1.0 / ((1.0 - nu1 * nu1) / E1 + (1.0 - nu2 * nu2) / E2);
+    r = 1.0 / ((1.0 - nu1 * nu1) / E1 + (1.0 - nu2 * nu2) / E2);
+    /* a subnormal modulus overflows 1/E: no representable E* */
+    return isfinite(r) && r > 0.0 ? r : NAN;
 }
 
 /* ln of the curvature ratio max/min produced by ellipticity k = exp(t):
@@ -28,10 +30,23 @@ static void set_nan(rr_hertz_result *out)
     out->a = out->b = out->p0 = out->delta = NAN;
 }
 
+/* (num/den)^(1/3) without overflow or underflow on the way where the
+ * result itself is representable: the direct quotient where it is a normal
+ * number (so that ordinary inputs keep their rounding), else factor by factor. */
+static double cbrt_ratio(double n1, double n2, double d1, double d2)
+{
+    const double num = n1 * n2, den = d1 * d2, q = num / den;
+    if (isnormal(num) && isnormal(den) && isnormal(q))
+        return cbrt(q);
+    return cbrt(n1) * cbrt(n2) / (cbrt(d1) * cbrt(d2));
+}
+
 int rr_hertz(double A, double B, double N, double estar, rr_hertz_result *out)
 {
     double amin, rho, lrho, K, d_lo, t, major, minor, k;
 
+    if (!out)
+        return RR_ERR_NULL;
     if (!isfinite(A) || !isfinite(B) || !isfinite(N)) {
         set_nan(out);
         return RR_ERR_NONFINITE;
@@ -94,7 +109,7 @@ int rr_hertz(double A, double B, double N, double estar, rr_hertz_result *out)
         /* major^3 = 3N (K - E) / (2 pi E* e^2 A_min); (K - E)/e^2 -> pi/4 as e -> 0 */
         const double e2 = (1.0 - k) * (1.0 + k);
         const double kme_e2 = e2 > 0.0 ? K * d_lo / e2 : 0.25 * RR_PI;
-        major = cbrt(3.0 * N * kme_e2 / (2.0 * RR_PI * estar * amin));
+        major = cbrt_ratio(3.0 * N, kme_e2, 2.0 * RR_PI * estar, amin);
     }
     minor = k * major;
     if (A <= B) {
@@ -105,6 +120,15 @@ int rr_hertz(double A, double B, double N, double estar, rr_hertz_result *out)
         out->b = major;
     }
     out->p0 = 1.5 * N / (RR_PI * out->a * out->b);
+    if (!isnormal(out->p0))
+        out->p0 = 1.5 / RR_PI * (N / major) / minor;      /* a b out of range */
     out->delta = out->p0 * minor * K / estar;    /* Johnson eq. (4.41) */
+    if (!isnormal(out->delta))
+        out->delta = 1.5 / RR_PI * (N / major) * (K / estar);
+    if (!isnormal(out->a) || !isnormal(out->b) || !isnormal(out->p0)
+        || !isnormal(out->delta)) {
+        set_nan(out);
+        return RR_ERR_RANGE;
+    }
     return RR_OK;
 }

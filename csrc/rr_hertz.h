@@ -16,7 +16,8 @@ typedef struct {
 
 /*
  * rr_estar - contact modulus E* with 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2 [Pa].
- *   Returns NaN unless E1, E2 > 0 and 0 <= nu1, nu2 < 0.5 (all finite).
+ *   Returns NaN unless E1, E2 > 0 and 0 <= nu1, nu2 <= 0.5 (all finite) and
+ *   E* is a positive double (a subnormal modulus would overflow 1/E).
  */
 double rr_estar(double E1, double nu1, double E2, double nu2);
 
@@ -30,7 +31,10 @@ double rr_estar(double E1, double nu1, double E2, double nu2);
  *   returns: *out; the long axis lies along the smaller curvature sum
  *   status:  0 OK; RR_ERR_NONFINITE, RR_ERR_GEOMETRY (A or B <= 0, or a
  *            ratio max/min above 1e250),
- *            RR_ERR_LOAD (N <= 0), RR_ERR_MATERIAL (E* <= 0 or NaN)
+ *            RR_ERR_LOAD (N <= 0), RR_ERR_MATERIAL (E* <= 0 or NaN),
+ *            RR_ERR_RANGE (a, b, p0 or delta would overflow or underflow:
+ *            curvatures, load and modulus too extreme together),
+ *            RR_ERR_NULL (out NULL)
  *   The ellipticity k = minor/major solves
  *     max(A,B)/min(A,B) = (E(e)/k^2 - K(e)) / (K(e) - E(e)),  e^2 = 1 - k^2,
  *   written with Carlson's integrals so that no difference cancels; the

@@ -36,8 +36,8 @@ static const double kalker_table[2][10][3][3] = {
 static double nu_parabola(const double c[3], double nu)
 {
     double inv;
-    if (nu == 0.0 || nu == 0.25)      /* a node: exactly its value */
-        return c[nu == 0.0 ? 0 : 1];
+    if (nu == 0.0 || nu == 0.25 || nu == 0.5)     /* a node: exactly its value */
+        return c[nu == 0.0 ? 0 : nu == 0.25 ? 1 : 2];
     inv = 8.0 * (nu - 0.25) * (nu - 0.5) / c[0]
                - 16.0 * nu * (nu - 0.5) / c[1]
                + 8.0 * nu * (nu - 0.25) / c[2];
@@ -48,9 +48,10 @@ static double nu_parabola(const double c[3], double nu)
 static void asymptotic(int half, double g, double nu, rr_kalker_coeffs *out)
 {
     if (half == 0) {            /* a << b: narrow in the rolling direction */
+        const double q = 16.0 / g, lq = isfinite(q) ? log(q) : log(16.0) - log(g);
         out->c11 = RR_PI * RR_PI / (4.0 * (1.0 - nu));
         out->c22 = RR_PI * RR_PI / 4.0;
-        out->c23 = RR_PI * sqrt(g) / (3.0 * (1.0 - nu)) * (1.0 + nu * (log(16.0 / g) - 5.0));
+        out->c23 = RR_PI * sqrt(g) / (3.0 * (1.0 - nu)) * (1.0 + nu * (lq - 5.0));
     } else {                    /* a >> b: long in the rolling direction */
         double lam = log(16.0) - 2.0 * log(g);     /* g * g may underflow */
         double d22 = (1.0 - nu) * lam + 2.0 * nu;
@@ -61,12 +62,22 @@ static void asymptotic(int half, double g, double nu, rr_kalker_coeffs *out)
     }
 }
 
+static int range_checked(rr_kalker_coeffs *out)
+{
+    if (isnormal(out->c11) && isnormal(out->c22) && isnormal(out->c23))
+        return RR_OK;
+    out->c11 = out->c22 = out->c23 = NAN;
+    return RR_ERR_RANGE;
+}
+
 int rr_kalker(double a_over_b, double nu, rr_kalker_coeffs *out)
 {
     int half, row, j, k;
     double g, pos, frac, col[3];
     double *dst[3];
 
+    if (!out)
+        return RR_ERR_NULL;
     if (!isfinite(a_over_b) || !isfinite(nu)) {
         out->c11 = out->c22 = out->c23 = NAN;
         return RR_ERR_NONFINITE;
@@ -75,7 +86,7 @@ int rr_kalker(double a_over_b, double nu, rr_kalker_coeffs *out)
         out->c11 = out->c22 = out->c23 = NAN;
         return RR_ERR_GEOMETRY;
     }
-    if (nu < 0.0 || nu >= 0.5) {
+    if (nu < 0.0 || nu > 0.5) {
         out->c11 = out->c22 = out->c23 = NAN;
         return RR_ERR_MATERIAL;
     }
@@ -83,7 +94,7 @@ int rr_kalker(double a_over_b, double nu, rr_kalker_coeffs *out)
     g = half == 0 ? a_over_b : 1.0 / a_over_b;
     if (g < 0.1) {
         asymptotic(half, g, nu, out);
-        return RR_OK;
+        return range_checked(out);   /* C23 ~ g^(-3/2) overflows for a/b beyond ~1e205 */
     }
     /* rows are g = 0.1 (row 0) ... 1.0 (row 9); the last interval ends at row 9 */
     pos = 10.0 * g - 1.0;

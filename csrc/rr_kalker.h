@@ -18,12 +18,14 @@ typedef struct {
  * rr_kalker - creep coefficients for ellipticity a/b and Poisson ratio nu.
  *   given:   a_over_b  semi-axis along the rolling direction over the
  *                      lateral one, > 0;  g = min(a/b, b/a)
- *            nu        Poisson ratio, 0 <= nu < 0.5
+ *            nu        Poisson ratio, 0 <= nu <= 0.5 (0.5: incompressible,
+ *                      the table's third column)
  *   returns: *out, with the linear theory
  *              Fx = -G c^2 C11 xi,  Fy = -G c^2 C22 eta - G c^3 C23 phi,
  *              c = sqrt(ab)
  *   status:  0 OK; RR_ERR_NONFINITE, RR_ERR_GEOMETRY (a/b <= 0),
- *            RR_ERR_MATERIAL (nu outside [0, 0.5))
+ *            RR_ERR_MATERIAL (nu outside [0, 0.5]), RR_ERR_RANGE (a/b so
+ *            extreme that a coefficient overflows), RR_ERR_NULL (out NULL)
  *   Method: for 0.1 <= g <= 1, Table E.3 interpolated linearly in g on C at
  *   each tabulated nu, then a parabola through 1/C at nu = 0, 0.25, 0.5
  *   (exact at every node).  For g < 0.1, Kalker's asymptotic formulas; they

@@ -5,6 +5,8 @@
 
 int rr_rig_contact_check(const rr_rig_contact_model *m)
 {
+    if (!m)
+        return RR_ERR_NULL;
     if (!m->table || !m->table->data)
         return RR_ERR_WORKSPACE;
     if (!isfinite(m->R0) || !isfinite(m->estar) || !isfinite(m->G) || !isfinite(m->nu)
@@ -12,7 +14,7 @@ int rr_rig_contact_check(const rr_rig_contact_model *m)
         return RR_ERR_NONFINITE;
     if (!(m->R0 > 0.0))
         return RR_ERR_GEOMETRY;
-    if (!(m->estar > 0.0) || !(m->G > 0.0) || !(m->nu >= 0.0 && m->nu < 0.5))
+    if (!(m->estar > 0.0) || !(m->G > 0.0) || !(m->nu >= 0.0 && m->nu <= 0.5))
         return RR_ERR_MATERIAL;
     if (!(m->vmin > 0.0))
         return RR_ERR_SPEED;
@@ -87,7 +89,9 @@ int rr_rig_kinematics(const rr_rig_contact_model *m, const rr_rig_state *s, rr_r
     double D = NAN, h, cy, sy, cr, sr, droll;
     int k, st;
 
-    st = rr_rig_contact_check(m);
+    if (!pose || !w)
+        return RR_ERR_NULL;
+    st = s ? rr_rig_contact_check(m) : RR_ERR_NULL;
     if (st == RR_OK && !(isfinite(s->x) && isfinite(s->y) && isfinite(s->yaw)
                          && isfinite(s->vx) && isfinite(s->vy) && isfinite(s->yaw_rate)
                          && isfinite(s->spin) && isfinite(s->roller_spin)))
@@ -126,6 +130,14 @@ int rr_rig_kinematics(const rr_rig_contact_model *m, const rr_rig_state *s, rr_r
     pose->w[0] = -s->spin * sy * cr + droll * cy;
     pose->w[1] = s->spin * cy * cr + droll * sy;
     pose->w[2] = s->spin * sr + s->yaw_rate;
+    for (k = 0; k < 3; k++)
+        if (!isfinite(pose->v[k]) || !isfinite(pose->w[k])) {
+            /* rates beyond ~1e300: the constrained rates overflow */
+            pose_nan(pose);
+            wheel_nan(&w[0], RR_ERR_RANGE);
+            wheel_nan(&w[1], RR_ERR_RANGE);
+            return RR_ERR_RANGE;
+        }
 
     wheel.c[0] = pose->c[0];
     wheel.c[1] = pose->c[1];
@@ -201,6 +213,13 @@ int rr_rig_contact_loads(const rr_rig_contact_model *m, const double N[2], const
                          rr_wheel_contact w[2])
 {
     int k;
+    if (!w)
+        return RR_ERR_NULL;
+    if (!m || !N || !pose) {
+        wheel_nan(&w[0], RR_ERR_NULL);
+        wheel_nan(&w[1], RR_ERR_NULL);
+        return RR_ERR_NULL;
+    }
     for (k = 0; k < 2; k++) {
         rr_wheel_contact *c = &w[k];
         rr_contact_case cc;
@@ -224,11 +243,17 @@ int rr_rig_contact_loads(const rr_rig_contact_model *m, const double N[2], const
         }
         {
             /* Hertz from the table's ellipse per unit load: a ~ (N/E*)^(1/3) */
-            const double s = cbrt(N[k] / m->estar);
+            const double q = N[k] / m->estar;
+            const double s = isnormal(q) ? cbrt(q) : cbrt(N[k]) / cbrt(m->estar);
             c->hertz.a = c->geo.ha * s;
             c->hertz.b = c->geo.hb * s;
             c->hertz.delta = c->geo.hd * s * s;
             c->hertz.p0 = 1.5 * N[k] / (RR_PI * c->hertz.a * c->hertz.b);
+            if (!isnormal(c->hertz.a) || !isnormal(c->hertz.b) || !isnormal(c->hertz.p0)
+                || !isnormal(c->hertz.delta)) {
+                wheel_nan(c, RR_ERR_RANGE);     /* load and modulus too extreme together */
+                continue;
+            }
         }
         cc.a = c->hertz.a;
         cc.b = c->hertz.b;
@@ -253,6 +278,11 @@ int rr_rig_contact_loads(const rr_rig_contact_model *m, const double N[2], const
         cross(arm, c->force, c->moment);
         for (j = 0; j < 3; j++)
             c->moment[j] += c->f.mz * c->n[j];
+        for (j = 0; j < 3; j++)
+            if (!isfinite(c->force[j]) || !isfinite(c->moment[j]))
+                break;
+        if (j < 3)
+            wheel_nan(c, RR_ERR_RANGE);     /* a load near the largest double */
     }
     return worse(w[0].status, w[1].status);
 }
@@ -261,7 +291,7 @@ int rr_rig_contact(const rr_rig_contact_model *m, const rr_rig_state *s, const d
                    rr_rig_pose *pose, rr_wheel_contact w[2])
 {
     int st = rr_rig_kinematics(m, s, pose, w);
-    if (st < 0 && !isfinite(pose->c[0]))
+    if (st == RR_ERR_NULL || (st < 0 && !isfinite(pose->c[0])))
         return st;                  /* nothing valid: no pose */
     return rr_rig_contact_loads(m, N, pose, w);
 }

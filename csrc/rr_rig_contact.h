@@ -92,8 +92,9 @@ typedef struct {
 
 /*
  * rr_rig_contact_check - 0 if the model is usable, else RR_ERR_WORKSPACE
- * (no table), RR_ERR_NONFINITE, RR_ERR_GEOMETRY (R0 <= 0), RR_ERR_MATERIAL,
- * RR_ERR_FRICTION, RR_ERR_SPEED (vmin <= 0), rr_creep_opts_check.
+ * (no table), RR_ERR_NONFINITE, RR_ERR_GEOMETRY (R0 <= 0), RR_ERR_MATERIAL
+ * (E*, G not positive, nu outside [0, 0.5]), RR_ERR_FRICTION, RR_ERR_SPEED
+ * (vmin <= 0), rr_creep_opts_check, RR_ERR_NULL (m NULL).
  */
 int rr_rig_contact_check(const rr_rig_contact_model *m);
 
@@ -104,7 +105,9 @@ int rr_rig_contact_check(const rr_rig_contact_model *m);
  *            (the load fields are left untouched)
  *   status:  0 OK; RR_ERR_NONFINITE (a NaN or infinite state),
  *            RR_ERR_GEOMETRY (y outside the table: a wheel off its roller;
- *            |x| too large), errors of rr_creepage.  Outputs NaN on error.
+ *            |x| too large), RR_ERR_RANGE (rates so large that the pose's
+ *            velocities overflow), errors of rr_creepage, RR_ERR_NULL.
+ *            Outputs NaN on error.
  */
 int rr_rig_kinematics(const rr_rig_contact_model *m, const rr_rig_state *s, rr_rig_pose *pose,
                       rr_wheel_contact w[2]);
@@ -120,7 +123,8 @@ int rr_rig_kinematics(const rr_rig_contact_model *m, const rr_rig_state *s, rr_r
  *   status:  the worse of the two wheels' (errors < 0 before warnings);
  *            each wheel's own in w[k].status, so one bad wheel leaves the
  *            other's results valid.  rr_rig_kinematics, rr_hertz
- *            (RR_ERR_LOAD for N <= 0), rr_creep_forces.
+ *            (RR_ERR_LOAD for N <= 0), rr_creep_forces, RR_ERR_RANGE (a load
+ *            so extreme that the ellipse or a force overflows).
  */
 int rr_rig_contact(const rr_rig_contact_model *m, const rr_rig_state *s, const double N[2],
                    rr_rig_pose *pose, rr_wheel_contact w[2]);

@@ -7,6 +7,8 @@ int rr_spline_init(int n, const double *s, const double *z, double *m, double *w
 {
     int i;
 
+    if (!s || !z)
+        return RR_ERR_NULL;
     if (!m || !work)
         return RR_ERR_WORKSPACE;
     if (n < 2)
@@ -33,6 +35,22 @@ int rr_spline_init(int n, const double *s, const double *z, double *m, double *w
     return RR_OK;
 }
 
+int rr_spline_check(const rr_spline *sp)
+{
+    int i;
+    if (!sp || !sp->s || !sp->z || !sp->m)
+        return RR_ERR_NULL;
+    if (sp->n < 2)
+        return RR_ERR_GEOMETRY;
+    for (i = 0; i < sp->n; i++) {
+        if (!isfinite(sp->s[i]) || !isfinite(sp->z[i]) || !isfinite(sp->m[i]))
+            return RR_ERR_NONFINITE;
+        if (i > 0 && !(sp->s[i] > sp->s[i - 1]))
+            return RR_ERR_GEOMETRY;
+    }
+    return RR_OK;
+}
+
 int rr_spline_eval(const rr_spline *sp, double s, double *z, double *d1, double *d2)
 {
     int k = -1;
@@ -41,9 +59,18 @@ int rr_spline_eval(const rr_spline *sp, double s, double *z, double *d1, double 
 
 int rr_spline_eval_at(const rr_spline *sp, double s, int *k, double *z, double *d1, double *d2)
 {
-    int lo = 0, hi = sp->n - 1;
+    int lo = 0, hi;
     double h, a, b;
 
+    if (!z)
+        return RR_ERR_NULL;
+    if (!sp || !sp->s || !sp->z || !sp->m || sp->n < 2 || !k) {
+        *z = NAN;
+        if (d1) *d1 = NAN;
+        if (d2) *d2 = NAN;
+        return !sp || !sp->s || !sp->z || !sp->m || !k ? RR_ERR_NULL : RR_ERR_GEOMETRY;
+    }
+    hi = sp->n - 1;
     if (!isfinite(s) || s < sp->s[0] || s > sp->s[sp->n - 1]) {
         *z = NAN;
         if (d1) *d1 = NAN;

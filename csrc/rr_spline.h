@@ -23,15 +23,26 @@ typedef struct {
  *            caller buffer of n doubles
  *   returns: m[n], the second derivatives at the knots
  *   status:  0 OK; RR_ERR_NONFINITE, RR_ERR_GEOMETRY (n < 2 or s not
- *            strictly increasing), RR_ERR_WORKSPACE (NULL buffer)
+ *            strictly increasing), RR_ERR_WORKSPACE (m or work NULL),
+ *            RR_ERR_NULL (s or z NULL)
  */
 int rr_spline_init(int n, const double *s, const double *z, double *m, double *work);
 
 /*
+ * rr_spline_check - 0 if sp is a usable spline: pointers set, n >= 2, knots
+ * strictly increasing, all values finite; else RR_ERR_NULL,
+ * RR_ERR_GEOMETRY or RR_ERR_NONFINITE.  O(n): for callers that take a
+ * spline from elsewhere (rr_contact_search checks its profiles with it).
+ */
+int rr_spline_check(const rr_spline *sp);
+
+/*
  * rr_spline_eval - value and first two derivatives at s (binary search).
  *   status:  0 OK; RR_ERR_GEOMETRY (s outside [s_0, s_(n-1)]: off the
- *            profile), RR_ERR_NONFINITE; outputs NaN on error.
- *   d1, d2 may be NULL.
+ *            profile; or n < 2), RR_ERR_NONFINITE, RR_ERR_NULL (sp, its
+ *            arrays or z NULL); outputs NaN on error.
+ *   d1, d2 may be NULL.  The knots are not checked here (O(1) per call):
+ *   rr_spline_check does that once.
  */
 int rr_spline_eval(const rr_spline *sp, double s, double *z, double *d1, double *d2);
 

@@ -2,6 +2,8 @@
 #include "rr_common.h"
 
 static const char *const rr_messages[] = {
+    /* -13 */ "a required pointer is NULL, or the object was never initialised",
+    /* -12 */ "inputs too extreme: a result would overflow, underflow or lose its precision",
     /* -11 */ "matrix singular to working precision (e.g. I - gamma h J)",
     /* -10 */ "caller-supplied buffer missing or too small",
     /*  -9 */ "parameter out of range (a method option, a controller or search setting)",
@@ -9,7 +11,7 @@ static const char *const rr_messages[] = {
     /*  -7 */ "falling friction needs a positive rolling speed",
     /*  -6 */ "grid size out of range",
     /*  -5 */ "friction coefficient not positive or falling-law A, B invalid",
-    /*  -4 */ "modulus not positive or Poisson ratio outside [0, 0.5)",
+    /*  -4 */ "modulus not positive or Poisson ratio outside [0, 0.5]",
     /*  -3 */ "curvature or semi-axis not positive, or a wheel off its roller",
     /*  -2 */ "normal load not positive",
     /*  -1 */ "input is NaN or infinite",

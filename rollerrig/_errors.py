@@ -25,7 +25,12 @@ def _positive(v):
 
 
 def _poisson(v):
-    return 0.0 <= v < 0.5
+    return 0.0 <= v <= 0.5
+
+
+def _moderate(v):
+    """Not among the values that push a result out of floating-point range."""
+    return v == 0.0 or 1e-30 <= abs(v) <= 1e30
 
 
 # For each error status, the arguments it may be about and the test their
@@ -40,6 +45,8 @@ _STATUS_ARGS = {
          "friction.B": lambda v: v >= 0.0},
     -7: {"speed": _positive},
 }
+# a result out of range: any argument may share the blame; name the extreme ones
+_RANGE = -12
 
 
 def _culprits(code, args, index):
@@ -47,7 +54,7 @@ def _culprits(code, args, index):
     found, group = [], []
     for name, arr in args.items():
         value = float(arr.reshape(-1)[index if arr.size > 1 else 0])
-        test = _STATUS_ARGS.get(code, {}).get(name)
+        test = _moderate if code == _RANGE else _STATUS_ARGS.get(code, {}).get(name)
         if code == -1 or test is not None:
             group.append(f"{name} = {value!r}")
         if (code == -1 and not np.isfinite(value)) or (test is not None and not test(value)):

@@ -112,11 +112,11 @@ def elastic_constants(E, nu):
 
 def _model(func, table, mu, E, nu, vmin, friction):
     g = table.geometry
-    for name, v, ok in (("mu", mu, mu > 0), ("E", E, E > 0), ("nu", nu, 0 <= nu < 0.5),
+    for name, v, ok in (("mu", mu, mu > 0), ("E", E, E > 0), ("nu", nu, 0 <= nu <= 0.5),
                         ("vmin", vmin, vmin > 0)):
         if not (np.isscalar(v) and np.isfinite(v) and ok):
             raise RollerRigError(f"{func}: {name} must be a finite number "
-                                 f"{'in [0, 0.5)' if name == 'nu' else '> 0'}, got {v!r}")
+                                 f"{'in [0, 0.5]' if name == 'nu' else '> 0'}, got {v!r}")
     fA, fB = _friction(func, friction)
     estar, G = elastic_constants(E, nu)
     return (float(g.roller_radius), estar, G, float(nu), float(mu), fA, fB, float(vmin))
@@ -158,6 +158,9 @@ def rig_contact(table, *, x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, s
     if kinematics_only:
         # no loads were used: do not let a placeholder load be blamed
         full = {k: v for k, v in full.items() if not k.startswith("N_")}
+    # the model's constants may explain a failure too (an extreme modulus)
+    full.update({name: np.asarray(float(v)) for name, v in
+                 (("mu", mu), ("E", E), ("nu", nu), ("vmin", vmin))})
     _finish(func, shape, scalar, full, (), status, errors)
     status = status.reshape(shape)
     p = RigPose(pose[0:3].reshape((3,) + shape), pose[3].reshape(shape),

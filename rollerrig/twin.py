@@ -128,13 +128,13 @@ def _in_range(name, value, lo, hi, lo_open=False, hi_open=False):
 
 
 def _check_nu(nu):
-    """Poisson ratio: 0 <= nu < 0.5 (RR_ERR_MATERIAL)."""
-    return _in_range("nu", nu, 0.0, 0.5, hi_open=True)
+    """Poisson ratio: 0 <= nu <= 0.5 (RR_ERR_MATERIAL)."""
+    return _in_range("nu", nu, 0.0, 0.5)
 
 
 def _check_contact(a, b, N, G, nu, cx, cy, cphi, speed):
     """The contact case (rr_contact_check): finite inputs, a, b, N, G > 0,
-    0 <= nu < 0.5, speed >= 0.  Returns the inputs as floats."""
+    0 <= nu <= 0.5, speed >= 0.  Returns the inputs as floats."""
     a = _positive("a", a)
     b = _positive("b", b)
     N = _positive("N", N)
@@ -197,8 +197,8 @@ def _nu_parabola(c, nu):
     ``c`` holds C at the three tabulated Poisson ratios (Kalker 1990,
     Table E.3); the parabola is in 1/C, and its value is inverted back.
     At a tabulated nu the tabulated value itself is returned."""
-    if nu == 0.0 or nu == 0.25:
-        return c[0] if nu == 0.0 else c[1]
+    if nu in (0.0, 0.25, 0.5):
+        return c[(0.0, 0.25, 0.5).index(nu)]
     inv = (8.0 * (nu - 0.25) * (nu - 0.5) / c[0]
            - 16.0 * nu * (nu - 0.5) / c[1]
            + 8.0 * nu * (nu - 0.25) / c[2])
@@ -258,7 +258,7 @@ def kalker(a_over_b, nu):
 
     ``a_over_b`` is the semi-axis along the rolling direction over the
     lateral one (> 0), g = min(a/b, b/a); ``nu`` the Poisson ratio,
-    0 <= nu < 0.5.  For 0.1 <= g <= 1 the table is interpolated linearly in
+    0 <= nu <= 0.5.  For 0.1 <= g <= 1 the table is interpolated linearly in
     g on C at each tabulated nu, then a parabola through 1/C over nu; for
     g < 0.1 Kalker's asymptotes are used.  The linear theory then reads
     Fx = -G c^2 C11 xi, Fy = -G c^2 C22 eta - G c^3 C23 phi, c = sqrt(ab).

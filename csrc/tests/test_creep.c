@@ -163,7 +163,7 @@ static void test_linear(void)
             {1, -1e-3, RR_ERR_GEOMETRY, "linear: b < 0"},
             {2, 0.0, RR_ERR_LOAD, "linear: N = 0"},
             {3, -1.0, RR_ERR_MATERIAL, "linear: G < 0"},
-            {4, 0.5, RR_ERR_MATERIAL, "linear: nu = 0.5"},
+            {4, 0.5000000000000001, RR_ERR_MATERIAL, "linear: nu just above 0.5"},
             {4, -0.1, RR_ERR_MATERIAL, "linear: nu < 0"},
             {5, NAN, RR_ERR_NONFINITE, "linear: cx NaN"},
             {6, INFINITY, RR_ERR_NONFINITE, "linear: cphi inf"},

@@ -55,7 +55,10 @@ static void test_estar(void)
     CHECK(isnan(rr_estar(0.0, 0.3, 210e9, 0.3)), "rr_estar E1 = 0 -> NaN");
     CHECK(isnan(rr_estar(210e9, 0.3, -1.0, 0.3)), "rr_estar E2 < 0 -> NaN");
     CHECK(isnan(rr_estar(210e9, -0.1, 210e9, 0.3)), "rr_estar nu1 < 0 -> NaN");
-    CHECK(isnan(rr_estar(210e9, 0.3, 210e9, 0.5)), "rr_estar nu2 = 0.5 -> NaN");
+    CHECK_CLOSE(rr_estar(210e9, 0.5, 210e9, 0.5), 210e9 / 1.5, 0.0, 1e-15,
+                "rr_estar nu = 0.5 (incompressible): E/(2 (1 - 1/4))");
+    CHECK(isnan(rr_estar(210e9, 0.3, 210e9, 0.5000000000000001)), "rr_estar nu2 > 0.5 -> NaN");
+    CHECK(isnan(rr_estar(5e-324, 0.3, 210e9, 0.3)), "rr_estar subnormal E1 -> NaN (1/E overflows)");
     CHECK(isnan(rr_estar(NAN, 0.3, 210e9, 0.3)), "rr_estar E1 NaN -> NaN");
     CHECK(isnan(rr_estar(210e9, NAN, 210e9, 0.3)), "rr_estar nu1 NaN -> NaN");
     CHECK(isnan(rr_estar(INFINITY, 0.3, 210e9, 0.3)), "rr_estar E1 inf -> NaN");

@@ -58,11 +58,10 @@ static double a_over_b(int half, double g)
     return half == 0 ? g : 1.0 / g;
 }
 
-/* nu = 0.5 is in the table but outside the accepted range [0, 0.5); the
- * node is reached as the limit from below. */
+/* nu = 0.5 (incompressible) is the table's third column and accepted. */
 static double usable_nu(int inu)
 {
-    return inu < 2 ? table_nu[inu] : nextafter(0.5, 0.0);
+    return table_nu[inu];
 }
 
 static void test_nodes(void)
@@ -83,17 +82,19 @@ static void test_nodes(void)
                     snprintf(buf, sizeof buf, "node %s g = %.1f nu = %.2f: %s",
                              half_name[half], g, table_nu[inu], coef_name[ic]);
                     /* nodes: 1/(1/C) and g = 1/(1/g) round-trip within an ulp or
-                     * two; at nu = 0.5 - 1.1e-16 the parabola in nu moves the
-                     * value by ~1e-16: 1e-12 */
+                     * two: 1e-12 */
                     CHECK_CLOSE(coef(&k, ic), table[half][row][inu][ic], 0.0, 1e-12, buf);
                 }
             }
-    /* nu = 0.5 itself is documented as rejected */
+    /* nu = 0.5 is accepted and exactly the table's column; just above it is not */
     {
         rr_kalker_coeffs k;
         int st = rr_kalker(0.5, 0.5, &k);
-        CHECK_STATUS(st, RR_ERR_MATERIAL, "nu = 0.5 rejected (range [0, 0.5))");
-        CHECK(isnan(k.c11) && isnan(k.c22) && isnan(k.c23), "nu = 0.5: NaN outputs");
+        CHECK_STATUS(st, RR_OK, "nu = 0.5 accepted (range [0, 0.5])");
+        CHECK(k.c11 == 4.83 && k.c22 == 3.14 && k.c23 == 1.07, "nu = 0.5, a/b = 0.5: the node");
+        st = rr_kalker(0.5, nextafter(0.5, 1.0), &k);
+        CHECK_STATUS(st, RR_ERR_MATERIAL, "nu just above 0.5 rejected");
+        CHECK(isnan(k.c11) && isnan(k.c22) && isnan(k.c23), "nu > 0.5: NaN outputs");
     }
     /* a = b: both halves' shared row, same answer whichever side it is met from */
     {
@@ -283,7 +284,7 @@ static void test_bad_input(void)
         {INFINITY, 0.3, RR_ERR_NONFINITE, "a/b inf"},
         {1.0, NAN, RR_ERR_NONFINITE, "nu NaN"},
         {1.0, -0.01, RR_ERR_MATERIAL, "nu < 0"},
-        {1.0, 0.5, RR_ERR_MATERIAL, "nu = 0.5"},
+        {1.0, 0.5000000000000001, RR_ERR_MATERIAL, "nu just above 0.5"},
         {1.0, 0.7, RR_ERR_MATERIAL, "nu > 0.5"}
     };
     unsigned i;
