@@ -6,7 +6,11 @@
  * direction, y lateral, z normal; semi-axis a lies along x, b along y.
  * Every public function returns an int status: 0 OK, > 0 warning (outputs
  * valid), < 0 error (outputs set to NaN).  No function prints, aborts,
- * allocates or touches errno.
+ * allocates or touches errno.  Every entry point checks what a C caller can
+ * get wrong: a NULL pointer gives RR_ERR_NULL (the outputs it can reach set
+ * to NaN), and finite inputs so extreme that a result would not be a finite
+ * double give RR_ERR_RANGE: a success status never comes with a NaN or an
+ * infinity.
  */
 #ifndef RR_COMMON_H
 #define RR_COMMON_H

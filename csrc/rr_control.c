@@ -12,6 +12,8 @@ static double clip(double x, double lo, double hi)
 
 int rr_pi_check(const rr_pi_params *p)
 {
+    if (!p)
+        return RR_ERR_NULL;
     if (!isfinite(p->T) || !isfinite(p->Kp) || !isfinite(p->KI) || !isfinite(p->Tmax))
         return RR_ERR_NONFINITE;
     if (!(p->T > 0.0) || p->Kp < 0.0 || p->KI < 0.0 || !(p->Tmax > 0.0))
@@ -32,8 +34,10 @@ int rr_pi_init(const rr_pi_params *p, rr_pi_state *s)
 
 int rr_pi_reset(const rr_pi_params *p, rr_pi_state *s, double torque0)
 {
-    int st = rr_pi_check(p);
+    int st = s ? rr_pi_check(p) : RR_ERR_NULL;
 
+    if (!s)
+        return st;
     if (st == RR_OK && !isfinite(torque0))
         st = RR_ERR_NONFINITE;
     if (st != RR_OK) {
@@ -49,10 +53,14 @@ int rr_pi_update(const rr_pi_params *p, rr_pi_state *s, double w_ref, double w_m
                  double *torque)
 {
     double e, i0, In, v, Tmax;
-    int st = rr_pi_check(p);
+    int st = s && torque ? rr_pi_check(p) : RR_ERR_NULL;
 
+    if (!torque)
+        return st;
     if (st == RR_OK && (!isfinite(w_ref) || !isfinite(w_m) || !isfinite(s->integral)))
         st = RR_ERR_NONFINITE;
+    if (st == RR_OK && !isfinite(w_ref - w_m))
+        st = RR_ERR_RANGE;          /* speeds near the largest double */
     if (st != RR_OK) {
         *torque = NAN;
         return st;
@@ -86,6 +94,8 @@ int rr_pi_update(const rr_pi_params *p, rr_pi_state *s, double w_ref, double w_m
 
 int rr_lag_check(const rr_lag_params *p)
 {
+    if (!p)
+        return RR_ERR_NULL;
     if (!isfinite(p->tau))
         return RR_ERR_NONFINITE;
     if (p->tau < 0.0)
@@ -100,8 +110,10 @@ int rr_lag_init(const rr_lag_params *p, rr_lag_state *s)
 
 int rr_lag_reset(const rr_lag_params *p, rr_lag_state *s, double y0)
 {
-    int st = rr_lag_check(p);
+    int st = s ? rr_lag_check(p) : RR_ERR_NULL;
 
+    if (!s)
+        return st;
     if (st == RR_OK && !isfinite(y0))
         st = RR_ERR_NONFINITE;
     s->y = st == RR_OK ? y0 : NAN;
@@ -110,8 +122,10 @@ int rr_lag_reset(const rr_lag_params *p, rr_lag_state *s, double y0)
 
 int rr_lag_update(const rr_lag_params *p, rr_lag_state *s, double u, double h, double *y)
 {
-    int st = rr_lag_check(p);
+    int st = s && y ? rr_lag_check(p) : RR_ERR_NULL;
 
+    if (!y)
+        return st;
     if (st == RR_OK && (!isfinite(u) || !isfinite(h) || !isfinite(s->y)))
         st = RR_ERR_NONFINITE;
     if (st == RR_OK && h < 0.0)
@@ -119,6 +133,10 @@ int rr_lag_update(const rr_lag_params *p, rr_lag_state *s, double u, double h, d
     if (st != RR_OK) {
         *y = NAN;
         return st;
+    }
+    if (!isfinite(u - s->y)) {
+        *y = NAN;
+        return RR_ERR_RANGE;
     }
     if (p->tau == 0.0)
         s->y = u;
@@ -132,6 +150,8 @@ int rr_lag_update(const rr_lag_params *p, rr_lag_state *s, double u, double h, d
 
 int rr_encoder_check(const rr_encoder_params *p)
 {
+    if (!p)
+        return RR_ERR_NULL;
     if (!isfinite(p->T))
         return RR_ERR_NONFINITE;
     if (!(p->T > 0.0) || p->counts < 1)
@@ -146,8 +166,10 @@ int rr_encoder_init(const rr_encoder_params *p, rr_encoder_state *s)
 
 int rr_encoder_reset(const rr_encoder_params *p, rr_encoder_state *s, double w0)
 {
-    int st = rr_encoder_check(p);
+    int st = s ? rr_encoder_check(p) : RR_ERR_NULL;
 
+    if (!s)
+        return st;
     if (st == RR_OK && !isfinite(w0))
         st = RR_ERR_NONFINITE;
     s->primed = 0;
@@ -165,9 +187,11 @@ int rr_encoder_reset(const rr_encoder_params *p, rr_encoder_state *s, double w0)
 int rr_encoder_update(const rr_encoder_params *p, rr_encoder_state *s, double theta,
                       double *w)
 {
-    double q, c;
-    int st = rr_encoder_check(p);
+    double q, c, wn;
+    int st = s && w ? rr_encoder_check(p) : RR_ERR_NULL;
 
+    if (!w)
+        return st;
     if (st == RR_OK && (!isfinite(theta) || !isfinite(s->w) || !isfinite(s->count)))
         st = RR_ERR_NONFINITE;
     if (st != RR_OK) {
@@ -176,10 +200,14 @@ int rr_encoder_update(const rr_encoder_params *p, rr_encoder_state *s, double th
     }
     q = 2.0 * RR_PI / p->counts;
     c = floor(theta * p->counts / (2.0 * RR_PI));
+    wn = s->primed ? (c - s->count) * q / p->T : s->w;
+    if (!isfinite(c) || !isfinite(wn)) {
+        *w = NAN;                   /* an angle near the largest double */
+        return RR_ERR_RANGE;
+    }
     /* the difference of two integer counts is exact, so at a whole number
      * of counts per sample the estimate carries no rounding beyond q/T */
-    if (s->primed)
-        s->w = (c - s->count) * q / p->T;
+    s->w = wn;
     s->primed = 1;
     s->count = c;
     s->theta_q = c * q;
@@ -191,6 +219,8 @@ int rr_encoder_update(const rr_encoder_params *p, rr_encoder_state *s, double th
 
 int rr_creepctl_check(const rr_creepctl_params *p)
 {
+    if (!p)
+        return RR_ERR_NULL;
     if (!isfinite(p->r_w) || !isfinite(p->r_r) || !isfinite(p->alpha) || !isfinite(p->beta)
         || !isfinite(p->vmin))
         return RR_ERR_NONFINITE;
@@ -212,12 +242,16 @@ static void creepctl_set_nan(rr_creepctl_state *s)
 int rr_creepctl_init(const rr_creepctl_params *p, rr_creepctl_state *s, double K,
                      double w_roller)
 {
-    int st = rr_creepctl_check(p);
+    int st = s ? rr_creepctl_check(p) : RR_ERR_NULL;
 
+    if (!s)
+        return st;
     if (st == RR_OK && (!isfinite(K) || !isfinite(w_roller)))
         st = RR_ERR_NONFINITE;
     if (st == RR_OK && K < 0.0)
         st = RR_ERR_PARAM;
+    if (st == RR_OK && !isfinite(K * p->r_r / p->r_w * w_roller))
+        st = RR_ERR_RANGE;
     if (st != RR_OK) {
         creepctl_set_nan(s);
         return st;
@@ -245,8 +279,10 @@ static double creepage(const rr_creepctl_params *p, double w_wheelset, double w_
 int rr_creepctl_xi(const rr_creepctl_params *p, double w_wheelset, double w_roller,
                    double *xi)
 {
-    int st = rr_creepctl_check(p);
+    int st = xi ? rr_creepctl_check(p) : RR_ERR_NULL;
 
+    if (!xi)
+        return st;
     if (st == RR_OK && (!isfinite(w_wheelset) || !isfinite(w_roller)))
         st = RR_ERR_NONFINITE;
     if (st != RR_OK) {
@@ -254,6 +290,10 @@ int rr_creepctl_xi(const rr_creepctl_params *p, double w_wheelset, double w_roll
         return st;
     }
     *xi = creepage(p, w_wheelset, w_roller);
+    if (!isfinite(*xi)) {
+        *xi = NAN;                  /* speeds near the largest double */
+        return RR_ERR_RANGE;
+    }
     return RR_OK;
 }
 
@@ -261,8 +301,10 @@ int rr_creepctl_update(const rr_creepctl_params *p, rr_creepctl_state *s, double
                        double w_wheelset, double w_roller, double *w_ref)
 {
     double xi, dxi, K;
-    int st = rr_creepctl_check(p);
+    int st = s && w_ref ? rr_creepctl_check(p) : RR_ERR_NULL;
 
+    if (!w_ref)
+        return st;
     if (st == RR_OK && (!isfinite(xi_ref) || !isfinite(w_wheelset) || !isfinite(w_roller)
                         || !isfinite(s->K)))
         st = RR_ERR_NONFINITE;
@@ -272,6 +314,11 @@ int rr_creepctl_update(const rr_creepctl_params *p, rr_creepctl_state *s, double
     }
     xi = creepage(p, w_wheelset, w_roller);
     dxi = xi_ref - xi;
+    if (!isfinite(dxi) || !isfinite(s->K + p->alpha * fabs(dxi))
+        || !isfinite((s->K + p->alpha * fabs(dxi)) * p->r_r / p->r_w * w_roller)) {
+        *w_ref = NAN;               /* speeds or gains near the largest double */
+        return RR_ERR_RANGE;
+    }
     /* K = 1 + sense xi for the kinematic creepage xi: more creepage in the
      * sense moves K by +sense, less by -sense; eq. (15) then carries the
      * roller's sign, so running backward needs no extra factor */

@@ -19,6 +19,11 @@ int rr_lu_factor(int n, double *A, int *piv)
     double amax = 0.0, thresh;
     int i, j, k;
 
+    if (!A || !piv)
+        return RR_ERR_NULL;
+    if (n < 1 || n > RR_ODE_MAXN)
+        return RR_ERR_PARAM;
+
     for (i = 0; i < n * n; i++) {
         double a = fabs(A[i]);
         if (!isfinite(a))
@@ -64,6 +69,12 @@ void rr_lu_solve(int n, const double *LU, const int *piv, double *b)
 {
     int i, j, k;
 
+    if (!LU || !piv || !b || n < 1 || n > RR_ODE_MAXN)
+        return;
+    for (k = 0; k < n; k++)
+        if (piv[k] < k || piv[k] >= n)
+            return;                 /* not factors of rr_lu_factor */
+
     for (k = 0; k < n; k++)
         if (piv[k] != k) {
             double tmp = b[k];
@@ -89,7 +100,9 @@ static int settings_check(const rr_ode *s)
 {
     int i;
 
-    if (s == NULL || s->n < 1 || s->n > RR_ODE_MAXN)
+    if (s == NULL)
+        return RR_ERR_NULL;
+    if (s->n < 1 || s->n > RR_ODE_MAXN)
         return RR_ERR_PARAM;
     if (s->method != RR_ODE_ROS2 && s->method != RR_ODE_TRBDF2
         && s->method != RR_ODE_LINEULER)
@@ -110,7 +123,9 @@ int rr_ode_init(rr_ode *s, int n, int method)
 {
     int i;
 
-    if (s == NULL || n < 1 || n > RR_ODE_MAXN)
+    if (s == NULL)
+        return RR_ERR_NULL;
+    if (n < 1 || n > RR_ODE_MAXN)
         return RR_ERR_PARAM;
     s->n = n;
     s->method = method;
@@ -161,10 +176,24 @@ static int merge(const rr_ode *s, int st, const double *v, int *warn)
     return RR_OK;
 }
 
+/* 0, or RR_ERR_RANGE if a stage value overflowed (the step's inputs are
+ * checked finite, so only the arithmetic of the step can have made it). */
+static int stage_finite(const rr_ode *s, const double *y)
+{
+    int i;
+    for (i = 0; i < s->n; i++)
+        if (!isfinite(y[i]))
+            return RR_ERR_RANGE;
+    return RR_OK;
+}
+
 /* One call of f, counted. */
 static int call_f(rr_ode *s, rr_ode_rhs f, void *ctx, double t, const double *y,
                   double *dydt, int *warn)
 {
+    const int st = stage_finite(s, y);
+    if (st < 0)
+        return st;
     s->nfev++;
     return merge(s, f(ctx, t, y, dydt), dydt, warn);
 }
@@ -174,6 +203,8 @@ static int call_model(rr_ode *s, void *ctx, double t, const double *z, int *warn
 {
     int i, st;
 
+    if ((st = stage_finite(s, z)) < 0)
+        return st;
     s->nmev++;
     st = s->model(ctx, t, s->y0, z, s->r);
     if (st >= 0)
@@ -416,7 +447,7 @@ int rr_ode_step(rr_ode *s, rr_ode_rhs f, rr_ode_jac jac, void *ctx, double t, do
     s->njev = 0;
     s->newton_err = 0.0;
     if (f == NULL || y == NULL)
-        return RR_ERR_PARAM;
+        return RR_ERR_NULL;
     if (!isfinite(t) || !isfinite(h))
         return RR_ERR_NONFINITE;
     if (!(h > 0.0))
@@ -458,7 +489,7 @@ int rr_ode_step(rr_ode *s, rr_ode_rhs f, rr_ode_jac jac, void *ctx, double t, do
         return st;
     for (i = 0; i < n; i++)
         if (!isfinite(s->z[i]))
-            return RR_ERR_NONFINITE;
+            return RR_ERR_RANGE;    /* finite inputs, an overflowing step */
     for (i = 0; i < n; i++)
         y[i] = s->z[i];
     return warn;

@@ -166,7 +166,7 @@ typedef struct {
  * rr_ode_init - set up *s for n equations with the given method and the
  * default settings (newton_iters 2, newton_tol 1e-6, linear_tr 0, nq 0,
  * model NULL, ytyp 1).
- *   status:  0 OK; RR_ERR_PARAM (n outside 1..RR_ODE_MAXN, or s NULL),
+ *   status:  0 OK; RR_ERR_PARAM (n outside 1..RR_ODE_MAXN), RR_ERR_NULL,
  *            RR_ERR_METHOD (unknown method).  On error *s is not usable.
  */
 int rr_ode_init(rr_ode *s, int n, int method);
@@ -190,10 +190,11 @@ int rr_ode_nfev(const rr_ode *s, int jac_given);
  *            or the largest warning returned by f or jac;
  *            errors, with y left unchanged (not NaN: it is the integrator's
  *            state, and the caller may retry with a smaller h):
- *            RR_ERR_PARAM (s, f or y NULL, h not > 0, or bad settings:
- *            n, newton_iters, newton_tol <= 0, linear_tr, nq, ytyp <= 0), RR_ERR_METHOD,
- *            RR_ERR_NONFINITE (t, h or y not finite, or f, J, W or the
- *            new y not finite), RR_ERR_SINGULAR (W = I - gamma h J singular to
+ *            RR_ERR_NULL (s, f or y NULL), RR_ERR_PARAM (h not > 0, or bad
+ *            settings: n, newton_iters, newton_tol <= 0, linear_tr, nq,
+ *            ytyp <= 0), RR_ERR_METHOD, RR_ERR_NONFINITE (t, h or y not
+ *            finite, or f, J or W not finite), RR_ERR_RANGE (the new y
+ *            overflows), RR_ERR_SINGULAR (W = I - gamma h J singular to
  *            working precision), or the status < 0 returned by f or jac.
  */
 int rr_ode_step(rr_ode *s, rr_ode_rhs f, rr_ode_jac jac, void *ctx, double t, double h,
@@ -204,7 +205,9 @@ int rr_ode_step(rr_ode *s, rr_ode_rhs f, rr_ode_jac jac, void *ctx, double t, do
  *   A is n x n row-major; on return it holds L (unit diagonal, below) and
  *   U, U's diagonal as its reciprocals; piv[k] is the row swapped with row k at elimination step k.
  *   rr_lu_factor status: 0 OK; RR_ERR_SINGULAR if a pivot is not larger than
- *   n DBL_EPSILON times the largest |A_ij| (or A is zero); RR_ERR_NONFINITE.
+ *   n DBL_EPSILON times the largest |A_ij| (or A is zero); RR_ERR_NONFINITE;
+ *   RR_ERR_PARAM (n outside 1..RR_ODE_MAXN); RR_ERR_NULL.  rr_lu_solve does
+ *   nothing for NULL arguments or pivots that rr_lu_factor cannot have made.
  *   rr_lu_solve overwrites b (n values) with the solution of A x = b.
  */
 int rr_lu_factor(int n, double *A, int *piv);

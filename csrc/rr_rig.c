@@ -19,6 +19,8 @@ static int nonneg(double v)
 int rr_rig_check(const rr_rig_params *p)
 {
     int st;
+    if (!p)
+        return RR_ERR_NULL;
     if (!positive(p->mass) || !positive(p->Iyy) || !positive(p->Izz)
         || !positive(p->axlebox_y) || !positive(p->roller_inertia) || !nonneg(p->g)
         || !nonneg(p->kx) || !nonneg(p->ky) || !nonneg(p->kz) || !nonneg(p->cx)
@@ -50,6 +52,29 @@ int rr_rig_check(const rr_rig_params *p)
         || p->wheelset_enc.T != p->T)
         return RR_ERR_PARAM;
     return RR_OK;
+}
+
+/* 0 if the rig can step; else the failed rr_rig_init's status, or
+ * RR_ERR_NULL for a rig that was never initialised (e.g. zeroed memory). */
+static int usable(const rr_rig *rig)
+{
+    if (!rig || !rig->p)
+        return RR_ERR_NULL;
+    if (!rig->ready)
+        return rig->status < 0 ? rig->status : RR_ERR_NULL;
+    return RR_OK;
+}
+
+/* The record of a rig that cannot step: NaN, and the status. */
+static int record_nan(double *rec, int st)
+{
+    int j;
+    if (rec) {
+        for (j = 0; j < RR_REC_COUNT; j++)
+            rec[j] = NAN;
+        rec[RR_REC_STATUS] = st;
+    }
+    return st;
 }
 
 static void cross(const double a[3], const double b[3], double out[3])
@@ -157,12 +182,17 @@ static int contact_eval(rr_rig *rig, const double *y)
 
 int rr_rig_rhs(rr_rig *rig, double t, const double *y, double *dydt)
 {
-    const rr_rig_params *p = rig->p;
+    const rr_rig_params *p;
     double F[3] = {0.0, 0.0, 0.0}, M[3] = {0.0, 0.0, 0.0}, Mr = 0.0, axle[3];
     int k, j, st;
     (void)t;
 
-    st = contact_eval(rig, y);
+    if (!dydt)
+        return RR_ERR_NULL;
+    st = y ? usable(rig) : RR_ERR_NULL;
+    if (st == RR_OK)
+        st = contact_eval(rig, y);
+    p = rig ? rig->p : NULL;
     if (st < 0) {
         for (j = 0; j < NS; j++)
             dydt[j] = NAN;
@@ -204,6 +234,13 @@ int rr_rig_rhs(rr_rig *rig, double t, const double *y, double *dydt)
         dydt[RR_RIG_T_ROLLER] = (rig->Tref_roller - y[RR_RIG_T_ROLLER]) / p->roller_tau;
         dydt[RR_RIG_T_WHEELSET] = (rig->Tref_wheelset - y[RR_RIG_T_WHEELSET]) / p->wheelset_tau;
     }
+    for (j = 0; j < NS; j++)
+        if (!isfinite(dydt[j])) {
+            /* finite forces over a tiny mass or inertia, or a huge state */
+            for (j = 0; j < NS; j++)
+                dydt[j] = NAN;
+            return RR_ERR_RANGE;
+        }
     return st;
 }
 
@@ -348,6 +385,10 @@ int rr_rig_jac(rr_rig *rig, double t, const double *y, double *J)
     int k, i, j, st;
     (void)t;
 
+    if (!J || !y)
+        return RR_ERR_NULL;
+    if ((st = usable(rig)) != RR_OK)
+        return st;
     st = linearise(rig, y);
     if (st < 0)
         return st;
@@ -428,11 +469,19 @@ static int jac_cb(void *ctx, double t, const double *y, double *J)
 
 int rr_rig_record(rr_rig *rig, double *rec)
 {
-    const rr_rig_params *p = rig->p;
-    const rr_wheel_contact *l = &rig->w[0], *r = &rig->w[1];
-    const double *y = rig->y;
+    const rr_rig_params *p;
+    const rr_wheel_contact *l, *r;
+    const double *y;
     double dydt[NS];
-    const int status = rr_rig_rhs(rig, rig->t, y, dydt);
+    int status = rec ? usable(rig) : RR_ERR_NULL;
+
+    if (status < 0)
+        return record_nan(rec, status);
+    p = rig->p;
+    l = &rig->w[0];
+    r = &rig->w[1];
+    y = rig->y;
+    status = rr_rig_rhs(rig, rig->t, y, dydt);
     rec[RR_REC_T] = rig->t;
     rec[RR_REC_CREEPAGE] = 0.5 * (l->creep.cx + r->creep.cx);
     rec[RR_REC_XI_EST] = rig->creepctl.xi_est;
@@ -470,6 +519,8 @@ int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig)
     double spin, dydt[NS];
     int st, j;
 
+    if (!rig)
+        return RR_ERR_NULL;
     memset(rig, 0, sizeof *rig);
     rig->p = p;
     rig->status = RR_ERR_PARAM;
@@ -514,20 +565,28 @@ int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig)
     rig->ode.ytyp[RR_RIG_SPIN] = rig->ode.ytyp[RR_RIG_ROLLER_SPIN] = fabs(spin) + 1.0;
     rig->ode.ytyp[RR_RIG_T_ROLLER] = p->roller_pi.Tmax;
     rig->ode.ytyp[RR_RIG_T_WHEELSET] = p->wheelset_pi.Tmax;
+    rig->ready = 1;
     st = rr_rig_rhs(rig, 0.0, rig->y, dydt);
+    if (st < 0)
+        rig->ready = 0;
     return rig->status = st < 0 ? st : RR_OK;
 }
 
 int rr_rig_sample(rr_rig *rig, double roller_ref, double xi_ref)
 {
-    const rr_rig_params *p = rig->p;
+    const rr_rig_params *p;
     double w_wheel, w_roller, w_ref = NAN;
     rr_pi_state pis[2];
     rr_encoder_state encs[2];
     rr_creepctl_state ccs;
-    int st, cc = rig->creep_control;
-    double xr = rig->xi_ref;
+    int st, cc;
+    double xr;
 
+    if ((st = usable(rig)) != RR_OK)
+        return st;
+    p = rig->p;
+    cc = rig->creep_control;
+    xr = rig->xi_ref;
     if (rig->status < 0)
         return rig->status;
     if (!isfinite(roller_ref) || isinf(xi_ref))
@@ -588,9 +647,16 @@ int rr_rig_sample(rr_rig *rig, double roller_ref, double xi_ref)
 
 int rr_rig_advance(rr_rig *rig, double *rec)
 {
-    const rr_rig_params *p = rig->p;
-    double h = p->T / p->nsub, ysave[NS], t0 = rig->t;
-    int st = rig->status, i, worst = RR_OK;
+    const rr_rig_params *p;
+    double h, ysave[NS], t0;
+    int st = rec ? usable(rig) : RR_ERR_NULL, i, worst = RR_OK;
+
+    if (st < 0)
+        return record_nan(rec, st);
+    p = rig->p;
+    h = p->T / p->nsub;
+    t0 = rig->t;
+    st = rig->status;
 
     if (st < 0) {
         rr_rig_record(rig, rec);
@@ -625,7 +691,10 @@ int rr_rig_advance(rr_rig *rig, double *rec)
 
 int rr_rig_step(rr_rig *rig, double roller_ref, double xi_ref, double *rec)
 {
-    int st = rr_rig_sample(rig, roller_ref, xi_ref);
+    int st = rec ? usable(rig) : RR_ERR_NULL;
+    if (st < 0)
+        return record_nan(rec, st);
+    st = rr_rig_sample(rig, roller_ref, xi_ref);
     if (st < 0) {
         rr_rig_record(rig, rec);
         rec[RR_REC_STATUS] = st;
@@ -638,7 +707,13 @@ long rr_rig_run(rr_rig *rig, long n, const double *roller_ref, const double *xi_
                 double *rec, int *status)
 {
     long k;
-    int worst = RR_OK;
+    int worst = n < 0 ? RR_ERR_PARAM
+              : n > 0 && (!roller_ref || !xi_ref || !rec) ? RR_ERR_NULL : usable(rig);
+    if (worst < 0) {
+        if (status)
+            *status = worst;
+        return 0;
+    }
     for (k = 0; k < n; k++) {
         const int st = rr_rig_step(rig, roller_ref[k], xi_ref[k], rec + k * RR_REC_COUNT);
         if (st < 0) {
@@ -655,7 +730,9 @@ long rr_rig_run(rr_rig *rig, long n, const double *roller_ref, const double *xi_
 
 int rr_rig_set_state(rr_rig *rig, double t, const double *y)
 {
-    int j;
+    int j, st = y ? usable(rig) : RR_ERR_NULL;
+    if (st < 0)
+        return st;
     if (!isfinite(t))
         return RR_ERR_NONFINITE;
     for (j = 0; j < NS; j++)

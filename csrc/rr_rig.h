@@ -163,6 +163,7 @@ typedef struct {
     double lin_y[RR_RIG_NSTATE];
     int lin_ok;
     int status;                    /* of the last step; < 0 stops stepping */
+    int ready;                     /* 1 after a successful rr_rig_init */
 } rr_rig;
 
 /*
@@ -181,7 +182,10 @@ int rr_rig_check(const rr_rig_params *p);
  * gets a target.
  *   given:   p (kept by pointer: it must outlive the rig); roller_speed
  *   returns: *rig
- *   status:  rr_rig_check; errors of the contact evaluation
+ *   status:  rr_rig_check; errors of the contact evaluation; RR_ERR_NULL.
+ *   After a failed init every other rr_rig_ function returns its status (and
+ *   NaN records); on a rig never initialised (zeroed memory) they return
+ *   RR_ERR_NULL.  All of them return RR_ERR_NULL for a NULL argument.
  */
 int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig);
 
@@ -204,7 +208,8 @@ int rr_rig_step(rr_rig *rig, double roller_ref, double xi_ref, double *rec);
  * into the caller's buffer rec[n * RR_REC_COUNT] (row k: sample k).
  *   returns: the number of samples done (n, or fewer: the run stopped at
  *            an error, whose record is row k = returned count); *status the
- *            worst status met (may be NULL)
+ *            worst status met (may be NULL); 0 with RR_ERR_PARAM for n < 0,
+ *            RR_ERR_NULL for a NULL array (n > 0)
  */
 long rr_rig_run(rr_rig *rig, long n, const double *roller_ref, const double *xi_ref,
                 double *rec, int *status);

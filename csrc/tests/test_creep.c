@@ -1286,6 +1286,75 @@ static void test_dispatch(void)
     }
 }
 
+/* Extreme but finite inputs (issue 11's reproducers): a finite answer or
+ * RR_ERR_RANGE with NaN, never NaN or inf with a success status; and
+ * Polach's total force on the friction limit. */
+static void test_extremes(void)
+{
+    rr_contact_case c;
+    rr_friction fr = {0.3, 1.0, 0.0};
+    rr_creep_opts o;
+    rr_forces f;
+    int st, i, j, over = 0;
+    double worst = 0.0;
+
+    c.a = 2.2e-308; c.b = 0.0068; c.N = 1e4; c.G = 8.2e10; c.nu = 0.28;
+    c.cx = 0.0068; c.cy = 0.001; c.cphi = 0.094; c.speed = 0.0;
+    rr_creep_opts_default(RR_METHOD_FASTSIM, &o);
+    st = rr_creep_forces(&c, &fr, &o, &f);
+    CHECK_STATUS(st, RR_ERR_RANGE, "FASTSIM a = 2.2e-308 (was NaN with status 0)");
+    CHECK(isnan(f.fx) && isnan(f.fy) && isnan(f.mz), "RANGE: NaN forces");
+
+    c.a = 1e12; c.cx = 1e300; c.cy = 0.0; c.cphi = 0.0;
+    rr_creep_opts_default(RR_METHOD_LINEAR, &o);
+    st = rr_creep_forces(&c, &fr, &o, &f);
+    CHECK_STATUS(st, RR_ERR_RANGE, "linear cx = 1e300, a = 1e12 (was -inf)");
+    CHECK(isnan(f.fx), "RANGE: NaN");
+
+    /* huge creepage on an ordinary patch: full sliding, |F| = mu N */
+    c.a = c.b = 0.006; c.cx = 1e3;
+    rr_creep_opts_default(RR_METHOD_FASTSIM, &o);
+    st = rr_creep_forces(&c, &fr, &o, &f);
+    CHECK_STATUS(st, RR_OK, "FASTSIM cx = 1e3");
+    CHECK_CLOSE(f.fx, -0.3e4, 0.0, 1e-12, "FASTSIM cx = 1e3: full sliding");
+    c.cx = 1e40;         /* 1e43 times the saturation creepage: refused */
+    CHECK_STATUS(rr_creep_forces(&c, &fr, &o, &f), RR_ERR_RANGE, "FASTSIM cx = 1e40");
+
+    /* Polach with spin: 401 x 401 grid of cy, cphi at kS = 0.4, the rig's
+     * default; the reproducer was cy = -0.0019, cphi = 0.38: |F| = 1.012 mu N */
+    c.a = 0.01; c.b = 0.001; c.N = 1e4; c.cx = 0.0;
+    fr.mu0 = 0.5;
+    for (i = 0; i <= 400; i++)
+        for (j = 0; j <= 400; j++) {
+            c.cy = -0.01 + 0.02 * i / 400.0;
+            c.cphi = -1.0 + 2.0 * j / 400.0;
+            st = rr_polach(&c, &fr, 1.0, 0.4, &f);
+            if (st != RR_OK || !(hypot(f.fx, f.fy) <= 0.5e4 * (1.0 + 1e-14)))
+                over++;
+            if (hypot(f.fx, f.fy) / 0.5e4 > worst)
+                worst = hypot(f.fx, f.fy) / 0.5e4;
+        }
+    CHECK(over == 0, "Polach with spin: |F| <= mu N on the whole grid");
+    c.cy = -0.0019; c.cphi = 0.38;
+    CHECK_STATUS(rr_polach(&c, &fr, 1.0, 0.4, &f), RR_OK, "Polach reproducer");
+    CHECK_CLOSE(hypot(f.fx, f.fy), 0.5e4, 0.0, 1e-14, "Polach reproducer: on the limit");
+    CHECK(worst > 0.99, "the grid reaches the limit (the check is not vacuous)");
+
+    /* NULL pointers */
+    CHECK_STATUS(rr_creep_forces(NULL, &fr, &o, &f), RR_ERR_NULL, "case NULL");
+    CHECK(isnan(f.fx), "case NULL: NaN");
+    CHECK_STATUS(rr_creep_forces(&c, NULL, &o, &f), RR_ERR_NULL, "friction NULL");
+    CHECK_STATUS(rr_creep_forces(&c, &fr, NULL, &f), RR_ERR_NULL, "options NULL");
+    CHECK_STATUS(rr_creep_forces(&c, &fr, &o, NULL), RR_ERR_NULL, "out NULL");
+    CHECK_STATUS(rr_fastsim(&c, &fr, NULL, &f, NULL), RR_ERR_NULL, "fastsim options NULL");
+    /* the friction law at an infinite slip speed: Coulomb stays mu0 */
+    fr.mu0 = 0.3; fr.A = 1.0; fr.B = 0.0;
+    CHECK(rr_friction_mu(&fr, INFINITY) == 0.3, "Coulomb mu at w = inf");
+    fr.A = 0.4; fr.B = 0.6;
+    CHECK_CLOSE(rr_friction_mu(&fr, INFINITY), 0.12, 0.0, 1e-15, "falling mu at w = inf");
+    CHECK(isnan(rr_friction_mu(NULL, 1.0)), "mu of a NULL law: NaN");
+}
+
 int main(void)
 {
     test_linear();
@@ -1301,5 +1370,6 @@ int main(void)
     test_field();
     test_vector_kernel();
     test_dispatch();
+    test_extremes();
     return rr_test_summary();
 }

@@ -229,6 +229,106 @@ static void test_rig_contact(void)
     CHECK_STATUS(rr_rig_contact_check(&m), RR_ERR_WORKSPACE, "rig: no table");
 }
 
+/* What a C caller can get wrong: tables, options and profiles (issue 11). */
+static void test_caller_errors(void)
+{
+    const double alpha = 0.05, rho = 0.1;
+    static double data[4 * RR_CONTACT_TABLE_ROW];
+    rr_wheel_roller l, r;
+    rr_search_opts o;
+    rr_contact_table t;
+    rr_wheelset_pose pose, slope;
+    rr_contact_point cl, cr;
+    int k;
+
+    conical_pair(alpha, rho, +1, &l);
+    r = l;
+    r.side = -1;
+    rr_search_opts_default(&o);
+    t.y0 = -0.002; t.dy = 0.001; t.n = 4; t.data = data;
+    CHECK_STATUS(rr_contact_table_build(&l, &r, &o, &t, NULL), RR_OK, "small table");
+    CHECK_STATUS(rr_contact_table_lookup(&t, 0.0, &pose, &slope, &cl, &cr), RR_OK, "lookup");
+
+    /* the reproducer: y0 = NaN made a float-to-int conversion out of range */
+    t.y0 = NAN; t.dy = 0.0005;
+    CHECK_STATUS(rr_contact_table_lookup(&t, 0.0, &pose, &slope, &cl, &cr), RR_ERR_PARAM,
+                 "lookup y0 = NaN");
+    CHECK(isnan(pose.z) && isnan(cl.r) && isnan(slope.z), "y0 NaN: NaN outputs");
+    t.y0 = -0.002; t.dy = 0.0;
+    CHECK_STATUS(rr_contact_table_lookup(&t, 0.0, &pose, NULL, &cl, &cr), RR_ERR_PARAM, "dy 0");
+    t.dy = -0.001;
+    CHECK_STATUS(rr_contact_table_lookup(&t, 0.0, &pose, NULL, &cl, &cr), RR_ERR_PARAM, "dy < 0");
+    t.dy = 1e308;
+    CHECK_STATUS(rr_contact_table_lookup(&t, 0.0, &pose, NULL, &cl, &cr), RR_ERR_PARAM,
+                 "last row's shift overflows");
+    t.dy = 0.001; t.n = 1;
+    CHECK_STATUS(rr_contact_table_lookup(&t, 0.0, &pose, NULL, &cl, &cr), RR_ERR_PARAM, "n = 1");
+    t.n = 4; t.data = NULL;
+    CHECK_STATUS(rr_contact_table_lookup(&t, 0.0, &pose, NULL, &cl, &cr), RR_ERR_NULL,
+                 "data NULL");
+    CHECK_STATUS(rr_contact_table_build(&l, &r, &o, &t, NULL), RR_ERR_WORKSPACE,
+                 "build into no data");
+    t.data = data;
+    CHECK_STATUS(rr_contact_table_lookup(NULL, 0.0, &pose, NULL, &cl, &cr), RR_ERR_NULL, "t NULL");
+    CHECK_STATUS(rr_contact_table_lookup(&t, 0.0, NULL, NULL, &cl, &cr), RR_ERR_NULL, "pose NULL");
+    CHECK_STATUS(rr_contact_table_build_rows(&l, &r, &o, &t, 2, 5, NULL), RR_ERR_PARAM,
+                 "rows past the table");
+    {
+        /* rows built in parts equal the whole build, bit for bit */
+        static double whole[4 * RR_CONTACT_TABLE_ROW];
+        rr_contact_table w = t;
+        w.data = whole;
+        CHECK_STATUS(rr_contact_table_build(&l, &r, &o, &w, NULL), RR_OK, "whole build");
+        CHECK_STATUS(rr_contact_table_build_rows(&l, &r, &o, &t, 0, 1, NULL), RR_OK, "rows 0-1");
+        CHECK_STATUS(rr_contact_table_build_rows(&l, &r, &o, &t, 1, 4, NULL), RR_OK, "rows 1-4");
+        for (k = 0; k < 4 * RR_CONTACT_TABLE_ROW; k++)
+            if (!(data[k] == whole[k] || (isnan(data[k]) && isnan(whole[k]))))
+                break;
+        CHECK(k == 4 * RR_CONTACT_TABLE_ROW, "rows in parts: the same table");
+    }
+
+    /* the reproducer: nsamples = INT_MAX looped on i <= ns with signed overflow */
+    o.nsamples = 2147483647;
+    CHECK_STATUS(rr_contact_search(&l, 0.0, 0.1, 0.0, &o, &cl), RR_ERR_PARAM,
+                 "nsamples INT_MAX refused");
+    CHECK(isnan(cl.r), "refused: NaN");
+    o.nsamples = RR_SEARCH_MAX_SAMPLES;
+    CHECK_STATUS(rr_contact_search(&l, 0.0, 0.1, 0.0, &o, &cl), RR_OK, "nsamples at the cap");
+    rr_search_opts_default(&o);
+    o.two_point_tol = INFINITY;
+    CHECK_STATUS(rr_contact_search(&l, 0.0, 0.1, 0.0, &o, &cl), RR_ERR_PARAM, "tol inf");
+    rr_search_opts_default(&o);
+    CHECK_STATUS(rr_contact_search(NULL, 0.0, 0.1, 0.0, &o, &cl), RR_ERR_NULL, "pair NULL");
+    CHECK_STATUS(rr_contact_search(&l, 0.0, 0.1, 0.0, NULL, &cl), RR_ERR_NULL, "opts NULL");
+    CHECK_STATUS(rr_wheelset_contact(&l, &r, 0.0, &o, &pose, NULL, &cr), RR_ERR_NULL, "cl NULL");
+    /* profiles that a caller built wrong */
+    l.side = 0;
+    CHECK_STATUS(rr_contact_search(&l, 0.0, 0.1, 0.0, &o, &cl), RR_ERR_PARAM, "side 0");
+    l.side = 1;
+    l.wheel.n = 1;
+    CHECK_STATUS(rr_contact_search(&l, 0.0, 0.1, 0.0, &o, &cl), RR_ERR_GEOMETRY, "one knot");
+    l.wheel.n = NW;
+    l.wheel.m = NULL;
+    CHECK_STATUS(rr_contact_search(&l, 0.0, 0.1, 0.0, &o, &cl), RR_ERR_NULL, "no second derivatives");
+    l.wheel.m = wm;
+    {
+        const double keep = ws_[10];
+        ws_[10] = ws_[9];
+        CHECK_STATUS(rr_contact_search(&l, 0.0, 0.1, 0.0, &o, &cl), RR_ERR_GEOMETRY,
+                     "repeated knot");
+        ws_[10] = keep;
+    }
+    {
+        double v;
+        rr_spline sp = l.wheel;
+        sp.s = NULL;
+        CHECK_STATUS(rr_spline_eval(&sp, 0.0, &v, NULL, NULL), RR_ERR_NULL, "eval knots NULL");
+        CHECK(isnan(v), "eval knots NULL: NaN");
+        CHECK_STATUS(rr_spline_eval(&l.wheel, 0.0, NULL, NULL, NULL), RR_ERR_NULL, "eval z NULL");
+        CHECK_STATUS(rr_spline_init(3, NULL, wz, wm, work), RR_ERR_NULL, "init s NULL");
+    }
+}
+
 int main(void)
 {
     test_spline();
@@ -236,5 +336,6 @@ int main(void)
     test_table();
     test_off_roller();
     test_rig_contact();
+    test_caller_errors();
     return rr_test_summary();
 }

@@ -299,6 +299,32 @@ static void test_bad_input(void)
     }
 }
 
+/* Extreme but finite inputs: a representable answer computed without
+ * intermediate overflow, or RR_ERR_RANGE with NaN, never NaN/inf with 0. */
+static void test_extremes(void)
+{
+    const double estar = rr_estar(2.1e11, 0.28, 2.1e11, 0.28);
+    rr_hertz_result h;
+    int st = rr_hertz(1e300, 1e300, 1e4, estar, &h);
+    /* a sphere of radius 1/(2A): a^3 = 3 N R / (4 E*), delta = a^2 / R */
+    const double a = cbrt(3.0 * 1e4 * 0.5e-300 / (4.0 * estar));
+    CHECK_STATUS(st, RR_OK, "hertz(1e300, 1e300, 1e4): representable");
+    CHECK_CLOSE(h.a, a, 0.0, 1e-13, "hertz(1e300, 1e300): a^3 = 3NR/(4E*)");
+    CHECK_CLOSE(h.b, a, 0.0, 1e-13, "hertz(1e300, 1e300): b = a");
+    CHECK_CLOSE(h.p0, 1.5e4 / (RR_PI * a * a), 0.0, 1e-12, "hertz(1e300, 1e300): p0");
+    CHECK_CLOSE(h.delta, a * a * 2e300, 0.0, 1e-12, "hertz(1e300, 1e300): delta = a^2/R");
+    /* the same at the other end: a huge patch from a tiny curvature */
+    st = rr_hertz(1e-300, 1e-300, 1e4, estar, &h);
+    CHECK_STATUS(st, RR_OK, "hertz(1e-300, 1e-300, 1e4): representable");
+    CHECK(isfinite(h.a) && isfinite(h.p0) && h.p0 > 0.0 && isfinite(h.delta),
+          "hertz(1e-300, 1e-300): finite");
+    /* beyond the range of doubles: the peak pressure would overflow */
+    st = rr_hertz(1e300, 1e300, 1e300, 1e-300, &h);
+    CHECK_STATUS(st, RR_ERR_RANGE, "hertz(1e300, 1e300, N 1e300, E* 1e-300)");
+    CHECK(isnan(h.a) && isnan(h.b) && isnan(h.p0) && isnan(h.delta), "RANGE: NaN outputs");
+    CHECK_STATUS(rr_hertz(1.0, 1.0, 1.0, 1.0, NULL), RR_ERR_NULL, "hertz out NULL");
+}
+
 int main(void)
 {
     test_estar();
@@ -307,5 +333,6 @@ int main(void)
     test_handbook();
     test_ellipticity();
     test_bad_input();
+    test_extremes();
     return rr_test_summary();
 }

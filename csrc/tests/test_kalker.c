@@ -299,6 +299,23 @@ static void test_bad_input(void)
     }
 }
 
+/* Extreme ratios: finite coefficients where representable, else RANGE. */
+static void test_extremes(void)
+{
+    rr_kalker_coeffs k;
+    int st = rr_kalker(5e-324, 0.28, &k);
+    CHECK_STATUS(st, RR_OK, "a/b = 5e-324 (16/g overflows, its log does not)");
+    CHECK(isfinite(k.c23) && k.c23 > 0.0, "a/b = 5e-324: C23 finite");
+    /* C23 ~ pi sqrt(g)/(3 (1 - nu)) (1 + nu (ln(16/g) - 5)), ln(16/g) by parts */
+    CHECK_CLOSE(k.c23, RR_PI * sqrt(5e-324) / (3.0 * 0.72)
+                * (1.0 + 0.28 * (log(16.0) - log(5e-324) - 5.0)), 0.0, 1e-13,
+                "a/b = 5e-324: C23 formula");
+    st = rr_kalker(1e300, 0.28, &k);
+    CHECK_STATUS(st, RR_ERR_RANGE, "a/b = 1e300: C23 ~ g^(-3/2) overflows");
+    CHECK(isnan(k.c11) && isnan(k.c22) && isnan(k.c23), "RANGE: NaN outputs");
+    CHECK_STATUS(rr_kalker(1.0, 0.28, NULL), RR_ERR_NULL, "out NULL");
+}
+
 int main(void)
 {
     test_nodes();
@@ -306,5 +323,6 @@ int main(void)
     test_nu_parabola();
     test_asymptotic();
     test_bad_input();
+    test_extremes();
     return rr_test_summary();
 }

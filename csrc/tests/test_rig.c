@@ -254,6 +254,50 @@ static void test_errors(const rr_rig_params *good)
     CHECK(rec[RR_REC_STATUS] == RR_ERR_GEOMETRY, "the record says why");
 }
 
+/* A rig never initialised (zeroed memory) or whose rr_rig_init failed:
+ * every entry point refuses with a status, none reads a NULL parameter
+ * pointer (issue 11: the binding's uninitialised Rig segfaulted). */
+static void test_unusable(const rr_rig_params *good)
+{
+    static rr_rig rig;
+    rr_rig_params p;
+    double rec[RR_REC_COUNT], y[RR_RIG_NSTATE] = {0}, J[RR_RIG_NSTATE * RR_RIG_NSTATE];
+    const double rr_[2] = {31.25, 31.25}, xr[2] = {0.02, 0.02};
+    double recs[2 * RR_REC_COUNT];
+    int st;
+
+    memset(&rig, 0, sizeof rig);
+    CHECK_STATUS(rr_rig_step(&rig, 31.25, 0.02, rec), RR_ERR_NULL, "zeroed rig: step");
+    CHECK(isnan(rec[RR_REC_T]) && rec[RR_REC_STATUS] == RR_ERR_NULL, "zeroed rig: record NaN");
+    CHECK_STATUS(rr_rig_sample(&rig, 31.25, 0.02), RR_ERR_NULL, "zeroed rig: sample");
+    CHECK_STATUS(rr_rig_advance(&rig, rec), RR_ERR_NULL, "zeroed rig: advance");
+    CHECK_STATUS(rr_rig_record(&rig, rec), RR_ERR_NULL, "zeroed rig: record");
+    CHECK_STATUS(rr_rig_rhs(&rig, 0.0, y, J), RR_ERR_NULL, "zeroed rig: rhs");
+    CHECK_STATUS(rr_rig_jac(&rig, 0.0, y, J), RR_ERR_NULL, "zeroed rig: jac");
+    CHECK_STATUS(rr_rig_set_state(&rig, 0.0, y), RR_ERR_NULL, "zeroed rig: set_state");
+    CHECK(rr_rig_run(&rig, 2, rr_, xr, recs, &st) == 0 && st == RR_ERR_NULL, "zeroed rig: run");
+    CHECK_STATUS(rr_rig_step(NULL, 31.25, 0.02, rec), RR_ERR_NULL, "rig NULL");
+    CHECK_STATUS(rr_rig_init(good, 31.25, NULL), RR_ERR_NULL, "init into NULL");
+    CHECK_STATUS(rr_rig_init(NULL, 31.25, &rig), RR_ERR_NULL, "init from NULL params");
+    CHECK_STATUS(rr_rig_step(&rig, 31.25, 0.02, rec), RR_ERR_NULL, "after init from NULL");
+
+    /* a failed init leaves a rig that reports the init's status */
+    p = *good;
+    p.mass = -1.0;
+    CHECK_STATUS(rr_rig_init(&p, 31.25, &rig), RR_ERR_PARAM, "bad mass");
+    CHECK_STATUS(rr_rig_step(&rig, 31.25, 0.02, rec), RR_ERR_PARAM, "after a failed init: step");
+    CHECK(isnan(rec[RR_REC_FX]), "after a failed init: NaN record");
+    CHECK_STATUS(rr_rig_rhs(&rig, 0.0, y, J), RR_ERR_PARAM, "after a failed init: rhs");
+    CHECK(rr_rig_run(&rig, 2, rr_, xr, recs, &st) == 0 && st == RR_ERR_PARAM,
+          "after a failed init: run");
+    /* and a good init afterwards works */
+    CHECK_STATUS(rr_rig_init(good, 31.25, &rig), RR_OK, "init again");
+    CHECK_STATUS(rr_rig_step(&rig, 31.25, 0.02, rec), RR_OK, "then steps");
+    CHECK(rr_rig_run(&rig, -1, rr_, xr, recs, &st) == 0 && st == RR_ERR_PARAM, "run n < 0");
+    CHECK(rr_rig_run(&rig, 2, NULL, xr, recs, &st) == 0 && st == RR_ERR_NULL, "run refs NULL");
+    CHECK_STATUS(rr_rig_record(&rig, NULL), RR_ERR_NULL, "record into NULL");
+}
+
 int main(void)
 {
     static rr_contact_table t;
@@ -266,5 +310,6 @@ int main(void)
     test_steps(&p);
     test_model(&p);
     test_errors(&p);
+    test_unusable(&p);
     return rr_test_summary();
 }
