@@ -128,6 +128,30 @@ static void release(PyObject **out, int count)
         Py_XDECREF(out[k]);
 }
 
+/* A Python integer as a C int: 0, or -1 with a ValueError naming func and
+ * name where it is not an integer or lies outside [lo, hi] (a value beyond
+ * the C int range is never wrapped or clamped into it). */
+static int int_arg(PyObject *v, const char *func, const char *name, long lo, long hi,
+                   int *out)
+{
+    int overflow = 0;
+    long x;
+    if (!PyLong_Check(v) || PyBool_Check(v)) {
+        PyErr_Format(PyExc_ValueError, "%s: %s must be an integer, got %R", func, name, v);
+        return -1;
+    }
+    x = PyLong_AsLongAndOverflow(v, &overflow);
+    if (x == -1 && PyErr_Occurred())
+        return -1;
+    if (overflow || x < lo || x > hi) {
+        PyErr_Format(PyExc_ValueError, "%s: %s must be an integer from %ld to %ld, got %R",
+                     func, name, lo, hi, v);
+        return -1;
+    }
+    *out = (int)x;
+    return 0;
+}
+
 #define OUT(obj) ((double *)PyArray_DATA((PyArrayObject *)(obj)))
 #define OUT8(obj) ((npy_int8 *)PyArray_DATA((PyArrayObject *)(obj)))
 
@@ -238,7 +262,8 @@ static void load_case(const input *in, npy_intp i, rr_contact_case *c, rr_fricti
     fr->B = IN(in[11], i);
 }
 
-/* Options come as keywords; unknown values are caught by rr_creep_opts_check. */
+/* Options come as keywords: integers are range-checked into C ints here
+ * (so that 2**32 + 1 is not taken as 1), the rest by rr_creep_opts_check. */
 static int parse_opts(PyObject *kwargs, const char *func, rr_creep_opts *o)
 {
     static const char *const keys[] = {"method", "nx", "ny", "bound", "slip_speed", "grid",
@@ -246,30 +271,22 @@ static int parse_opts(PyObject *kwargs, const char *func, rr_creep_opts *o)
     PyObject *v;
     int method = 0, k, st;
 
-    if (kwargs && (v = PyDict_GetItemString(kwargs, "method")) != NULL) {
-        method = (int)PyLong_AsLong(v);
-        if (PyErr_Occurred())
-            return -1;
-    }
+    if (kwargs && (v = PyDict_GetItemString(kwargs, "method")) != NULL
+        && int_arg(v, func, "method", 0, RR_METHOD_COUNT - 1, &method) < 0)
+        return -1;
     rr_creep_opts_default(method, o);
     for (k = 1; k < 11 && kwargs; k++) {
         v = PyDict_GetItemString(kwargs, keys[k]);
         if (!v)
             continue;
         if (k <= 5) {
-            long x = PyLong_AsLong(v);
-            if (PyErr_Occurred())
+            int *dst = k == 1 ? &o->nx : k == 2 ? &o->ny : k == 3 ? &o->bound
+                     : k == 4 ? &o->slip_speed : &o->grid;
+            if (int_arg(v, func, keys[k], INT_MIN, INT_MAX, dst) < 0)
                 return -1;
-            if (x < -1000000 || x > 1000000)
-                x = -1;     /* out of every valid range: rejected below */
-            if (k == 1) o->nx = (int)x;
-            else if (k == 2) o->ny = (int)x;
-            else if (k == 3) o->bound = (int)x;
-            else if (k == 4) o->slip_speed = (int)x;
-            else o->grid = (int)x;
         } else {
             double x = PyFloat_AsDouble(v);
-            if (PyErr_Occurred())
+            if (x == -1.0 && PyErr_Occurred())
                 return -1;
             if (k == 6) o->k0 = x;
             else if (k == 7) o->alpha_inf = x;
@@ -280,7 +297,10 @@ static int parse_opts(PyObject *kwargs, const char *func, rr_creep_opts *o)
     }
     st = rr_creep_opts_check(o);
     if (st < 0) {
-        PyErr_Format(PyExc_ValueError, "%s: invalid options: %s", func, rr_status_message(st));
+        PyErr_Format(PyExc_ValueError, "%s: invalid options (method %d, nx %d, ny %d, bound %d, "
+                     "grid %d, slip_speed %d, k0 %g, alpha_inf %g, beta %g, kA %g, kS %g): %s",
+                     func, o->method, o->nx, o->ny, o->bound, o->grid, o->slip_speed, o->k0,
+                     o->alpha_inf, o->beta, o->kA, o->kS, rr_status_message(st));
         return -1;
     }
     return 0;
@@ -477,25 +497,44 @@ static void store_geo(double *d, npy_intp n, npy_intp i, const rr_contact_point 
         d[k * n + i] = v[k];
 }
 
+/* The search options from Python objects, nsamples range-checked. */
+static int parse_search(PyObject *nobj, double tol, double sep, const char *func,
+                        rr_search_opts *o)
+{
+    if (int_arg(nobj, func, "nsamples", 3, RR_SEARCH_MAX_SAMPLES, &o->nsamples) < 0)
+        return -1;
+    o->two_point_tol = tol;
+    o->two_point_sep = sep;
+    return 0;
+}
+
+/* Searches per GIL release: each costs about 4 nsamples profile probes. */
+static npy_intp search_chunk(const rr_search_opts *o)
+{
+    const npy_intp c = CHUNK_WORK / (4 * (npy_intp)o->nsamples);
+    return c > 0 ? c : 1;
+}
+
 /* wheelset_contact(12 profile arrays, params (8 floats), y_ws, nsamples,
  * two_point_tol, two_point_sep) -> (status, z, roll, left[NGEO, n], right[NGEO, n]). */
 static PyObject *py_wheelset_contact(PyObject *self, PyObject *args)
 {
-    PyObject *pobj[NPROF], *yobj, *out[5] = {NULL, NULL, NULL, NULL, NULL}, *res;
+    PyObject *pobj[NPROF], *yobj, *nobj, *out[5] = {NULL, NULL, NULL, NULL, NULL}, *res;
     PyArrayObject *prof[NPROF], *yarr = NULL;
-    double par[8];
+    double par[8], tol, sep;
     rr_wheel_roller pair[2];
     rr_search_opts o;
-    npy_intp n, i, dims[2];
+    npy_intp n, i, start, chunk, dims[2];
     int k;
     (void)self;
 
     for (k = 0; k < NPROF; k++)
         prof[k] = NULL;
-    if (!PyArg_ParseTuple(args, PAIR_FORMAT "Oidd:wheelset_contact", PAIR_ARGS(pobj, par),
-                          &yobj, &o.nsamples, &o.two_point_tol, &o.two_point_sep))
+    if (!PyArg_ParseTuple(args, PAIR_FORMAT "OOdd:wheelset_contact", PAIR_ARGS(pobj, par),
+                          &yobj, &nobj, &tol, &sep))
         return NULL;
-    if (parse_pairs(pobj, par, "wheelset_contact", prof, pair) < 0)
+    if (parse_search(nobj, tol, sep, "wheelset_contact", &o) < 0
+        || parse_pairs(pobj, par, "wheelset_contact", prof, pair) < 0)
         goto fail;
     if (!(yarr = (PyArrayObject *)PyArray_FROMANY(yobj, NPY_DOUBLE, 1, 1, NPY_ARRAY_IN_ARRAY)))
         goto fail;
@@ -510,12 +549,14 @@ static PyObject *py_wheelset_contact(PyObject *self, PyObject *args)
     for (k = 0; k < 5; k++)
         if (!out[k])
             goto fail;
-    {
+    chunk = search_chunk(&o);
+    for (start = 0; start < n; start += chunk) {
+        const npy_intp stop = start + chunk < n ? start + chunk : n;
         const double *y = (const double *)PyArray_DATA(yarr);
         npy_int8 *status = OUT8(out[0]);
         double *z = OUT(out[1]), *roll = OUT(out[2]), *L = OUT(out[3]), *R = OUT(out[4]);
         Py_BEGIN_ALLOW_THREADS
-        for (i = 0; i < n; i++) {
+        for (i = start; i < stop; i++) {
             rr_wheelset_pose pose;
             rr_contact_point c[2];
             status[i] = (npy_int8)rr_wheelset_contact(&pair[0], &pair[1], y[i], &o, &pose,
@@ -526,6 +567,8 @@ static PyObject *py_wheelset_contact(PyObject *self, PyObject *args)
             store_geo(R, n, i, &c[1]);
         }
         Py_END_ALLOW_THREADS
+        if (PyErr_CheckSignals() < 0)
+            goto fail;
     }
     release((PyObject **)prof, NPROF);
     Py_DECREF(yarr);
@@ -541,37 +584,43 @@ fail:
 }
 
 /* contact_table(12 profile arrays, params, y0, dy, n, nsamples, tol, sep)
- * -> (data, status, bad_y): the C core's table rows, built with the GIL released. */
+ * -> (data, status, bad_y): the C core's table rows, built in chunks of rows
+ * with the GIL released, Ctrl-C noticed between them. */
 static PyObject *py_contact_table(PyObject *self, PyObject *args)
 {
-    PyObject *pobj[NPROF], *data = NULL;
+    PyObject *pobj[NPROF], *rows, *nobj, *data = NULL;
     PyArrayObject *prof[NPROF];
-    double par[8], bad_y = NAN;
+    double par[8], tol, sep, bad_y = NAN;
     rr_wheel_roller pair[2];
     rr_search_opts o;
     rr_contact_table t;
     npy_intp len;
-    int k, st;
+    int k, st = RR_OK, start, chunk;
     (void)self;
 
     for (k = 0; k < NPROF; k++)
         prof[k] = NULL;
-    if (!PyArg_ParseTuple(args, PAIR_FORMAT "ddiidd:contact_table", PAIR_ARGS(pobj, par),
-                          &t.y0, &t.dy, &t.n, &o.nsamples, &o.two_point_tol, &o.two_point_sep))
+    if (!PyArg_ParseTuple(args, PAIR_FORMAT "ddOOdd:contact_table", PAIR_ARGS(pobj, par),
+                          &t.y0, &t.dy, &rows, &nobj, &tol, &sep))
         return NULL;
-    if (parse_pairs(pobj, par, "contact_table", prof, pair) < 0)
+    if (int_arg(rows, "contact_table", "n", 2, 10000000, &t.n) < 0)
+        return NULL;
+    if (parse_search(nobj, tol, sep, "contact_table", &o) < 0
+        || parse_pairs(pobj, par, "contact_table", prof, pair) < 0)
         goto fail;
-    if (t.n < 2 || t.n > 10000000) {
-        PyErr_Format(PyExc_ValueError, "contact_table: n must be in [2, 1e7], got %d", t.n);
-        goto fail;
-    }
     len = (npy_intp)rr_contact_table_len(t.n);
     if (!(data = PyArray_SimpleNew(1, &len, NPY_DOUBLE)))
         goto fail;
     t.data = OUT(data);
-    Py_BEGIN_ALLOW_THREADS
-    st = rr_contact_table_build(&pair[0], &pair[1], &o, &t, &bad_y);
-    Py_END_ALLOW_THREADS
+    chunk = (int)search_chunk(&o);
+    for (start = 0; start < t.n && st >= 0; start += chunk) {
+        const int stop = start + chunk < t.n ? start + chunk : t.n;
+        Py_BEGIN_ALLOW_THREADS
+        st = rr_contact_table_build_rows(&pair[0], &pair[1], &o, &t, start, stop, &bad_y);
+        Py_END_ALLOW_THREADS
+        if (PyErr_CheckSignals() < 0)
+            goto fail;
+    }
     release((PyObject **)prof, NPROF);
     return Py_BuildValue("Nid", data, st, bad_y);
 fail:
@@ -620,7 +669,7 @@ static PyObject *py_table_lookup(PyObject *self, PyObject *args)
     PyArrayObject *yarr = NULL;
     rr_contact_table t;
     double y0, dy;
-    npy_intp n, i, dims[2];
+    npy_intp n, i, start, dims[2];
     int k;
     (void)self;
 
@@ -641,13 +690,14 @@ static PyObject *py_table_lookup(PyObject *self, PyObject *args)
     for (k = 0; k < 7; k++)
         if (!out[k])
             goto fail;
-    {
+    for (start = 0; start < n; start += CHUNK_WORK) {
+        const npy_intp stop = start + CHUNK_WORK < n ? start + CHUNK_WORK : n;
         const double *y = (const double *)PyArray_DATA(yarr);
         npy_int8 *status = OUT8(out[0]);
         double *z = OUT(out[1]), *roll = OUT(out[2]), *dz = OUT(out[3]), *dr = OUT(out[4]);
         double *L = OUT(out[5]), *R = OUT(out[6]);
         Py_BEGIN_ALLOW_THREADS
-        for (i = 0; i < n; i++) {
+        for (i = start; i < stop; i++) {
             rr_wheelset_pose pose, slope;
             rr_contact_point c[2];
             status[i] = (npy_int8)rr_contact_table_lookup(&t, y[i], &pose, &slope, &c[0],
@@ -660,8 +710,11 @@ static PyObject *py_table_lookup(PyObject *self, PyObject *args)
             store_geo(R, n, i, &c[1]);
         }
         Py_END_ALLOW_THREADS
+        if (PyErr_CheckSignals() < 0)
+            goto fail;
     }
     Py_DECREF(yarr);
+    yarr = NULL;
     if ((res = outputs_tuple(out, 7)) != NULL)
         return res;
 fail:
@@ -803,13 +856,19 @@ fail:
 
 /* ------------------------------------------------------------- the rig */
 
-/* A rig in time: rr_rig_params and rr_rig, with the contact table it reads. */
+/* A rig in time: rr_rig_params and rr_rig, with the contact table it reads.
+ * One user at a time: run() releases the GIL while the C rig steps, so every
+ * method (and __init__) refuses while another thread is inside one (busy,
+ * set and read under the GIL); a rig whose __init__ never succeeded (or
+ * whose last __init__ failed) refuses every method. */
 typedef struct {
     PyObject_HEAD
     PyObject *data;            /* the table's rows, kept alive */
     rr_contact_table table;
     rr_rig_params p;
     rr_rig rig;
+    int ready;                 /* 1 after a successful __init__ */
+    int busy;                  /* 1 while a method works on the rig */
 } RigObject;
 
 /* Named float and int fields of rr_rig_params, read from a dict. */
@@ -862,10 +921,8 @@ static int rig_params_from(PyObject *d, rr_rig_params *p)
             return -1;
         }
         if (rig_fields[k].is_int) {
-            long x = PyLong_AsLong(v);
-            if (x == -1 && PyErr_Occurred())
+            if (int_arg(v, "Rig", rig_fields[k].name, INT_MIN, INT_MAX, (int *)at) < 0)
                 return -1;
-            *(int *)at = (int)(x < INT_MIN ? INT_MIN : x > INT_MAX ? INT_MAX : x);
         } else {
             double x = PyFloat_AsDouble(v);
             if (x == -1.0 && PyErr_Occurred())
@@ -876,6 +933,31 @@ static int rig_params_from(PyObject *d, rr_rig_params *p)
     /* one sample time for every sampled element */
     p->roller_pi.T = p->wheelset_pi.T = p->roller_enc.T = p->wheelset_enc.T = p->T;
     return 0;
+}
+
+/* Enter a method: 0, or -1 with RuntimeError if the rig is not initialised
+ * or another thread is using it.  Under the GIL, so the test-and-set is
+ * atomic. */
+static int rig_enter(RigObject *self, const char *method)
+{
+    if (self->busy) {
+        PyErr_Format(PyExc_RuntimeError, "Rig.%s: the rig is in use by another thread (one "
+                     "Rig, one thread at a time)", method);
+        return -1;
+    }
+    if (!self->ready) {
+        PyErr_Format(PyExc_RuntimeError, "Rig.%s: the rig is not initialised (construct it "
+                     "with Rig(...), e.g. rollerrig.build_rig(); a failed __init__ leaves it "
+                     "so)", method);
+        return -1;
+    }
+    self->busy = 1;
+    return 0;
+}
+
+static void rig_leave(RigObject *self)
+{
+    self->busy = 0;
 }
 
 static void Rig_dealloc(RigObject *self)
@@ -891,6 +973,12 @@ static int Rig_init(RigObject *self, PyObject *args, PyObject *kwargs)
     double y0, dy, roller_speed;
     int st;
     (void)kwargs;
+    if (self->busy) {
+        PyErr_SetString(PyExc_RuntimeError, "Rig.__init__: the rig is in use by another thread");
+        return -1;
+    }
+    /* from here on, until success, the rig is not usable */
+    self->ready = 0;
     if (!PyArg_ParseTuple(args, "OddO!O!d:Rig", &dobj, &y0, &dy, &PyDict_Type, &params,
                           &PyDict_Type, &creep, &roller_speed))
         return -1;
@@ -909,6 +997,7 @@ static int Rig_init(RigObject *self, PyObject *args, PyObject *kwargs)
         PyErr_Format(PyExc_ValueError, "Rig: %s", rr_status_message(st));
         return -1;
     }
+    self->ready = 1;
     return 0;
 }
 
@@ -947,6 +1036,8 @@ static PyObject *Rig_run(RigObject *self, PyObject *args)
     dims[1] = RR_REC_COUNT;
     if (!(out = PyArray_SimpleNew(2, dims, NPY_DOUBLE)))
         goto fail;
+    if (rig_enter(self, "run") < 0)
+        goto fail;
     {
         double *rec = OUT(out);
         const double *rr = (const double *)PyArray_DATA(r), *xr = (const double *)PyArray_DATA(x);
@@ -960,10 +1051,13 @@ static PyObject *Rig_run(RigObject *self, PyObject *args)
                               rec + start * RR_REC_COUNT, &st);
             Py_END_ALLOW_THREADS
             (void)done;
-            if (PyErr_CheckSignals() < 0)
+            if (PyErr_CheckSignals() < 0) {
+                rig_leave(self);
                 goto fail;
+            }
         }
     }
+    rig_leave(self);
     Py_DECREF(r);
     Py_DECREF(x);
     return Py_BuildValue("Ni", out, st);
@@ -977,31 +1071,41 @@ fail:
 static PyObject *Rig_sample(RigObject *self, PyObject *args)
 {
     double roller_ref, xi_ref;
-    if (!PyArg_ParseTuple(args, "dd:sample", &roller_ref, &xi_ref))
+    int st;
+    if (!PyArg_ParseTuple(args, "dd:sample", &roller_ref, &xi_ref) || rig_enter(self, "sample") < 0)
         return NULL;
-    return PyLong_FromLong(rr_rig_sample(&self->rig, roller_ref, xi_ref));
+    st = rr_rig_sample(&self->rig, roller_ref, xi_ref);
+    rig_leave(self);
+    return PyLong_FromLong(st);
 }
 
 /* A fresh record filled by fn (rr_rig_advance or rr_rig_record), with its status. */
-static PyObject *record_call(RigObject *self, int (*fn)(rr_rig *, double *))
+static PyObject *record_call(RigObject *self, int (*fn)(rr_rig *, double *), const char *name)
 {
     double *rec;
-    PyObject *a = new_record(&rec);
-    if (!a)
+    PyObject *a;
+    int st;
+    if (rig_enter(self, name) < 0)
         return NULL;
-    return Py_BuildValue("Ni", a, fn(&self->rig, rec));
+    if (!(a = new_record(&rec))) {
+        rig_leave(self);
+        return NULL;
+    }
+    st = fn(&self->rig, rec);
+    rig_leave(self);
+    return Py_BuildValue("Ni", a, st);
 }
 
 static PyObject *Rig_advance(RigObject *self, PyObject *noargs)
 {
     (void)noargs;
-    return record_call(self, rr_rig_advance);
+    return record_call(self, rr_rig_advance, "advance");
 }
 
 static PyObject *Rig_record(RigObject *self, PyObject *noargs)
 {
     (void)noargs;
-    return record_call(self, rr_rig_record);
+    return record_call(self, rr_rig_record, "record");
 }
 
 static int state_vector(PyObject *obj, double *y)
@@ -1034,7 +1138,12 @@ static PyObject *Rig_rhs(RigObject *self, PyObject *args)
         return NULL;
     if (!(out = PyArray_SimpleNew(1, &n, NPY_DOUBLE)))
         return NULL;
+    if (rig_enter(self, "rhs") < 0) {
+        Py_DECREF(out);
+        return NULL;
+    }
     st = rr_rig_rhs(&self->rig, t, y, OUT(out));
+    rig_leave(self);
     return Py_BuildValue("Ni", out, st);
 }
 
@@ -1048,7 +1157,17 @@ static PyObject *Rig_jac(RigObject *self, PyObject *args)
         return NULL;
     if (!(out = PyArray_SimpleNew(2, dims, NPY_DOUBLE)))
         return NULL;
+    if (rig_enter(self, "jac") < 0) {
+        Py_DECREF(out);
+        return NULL;
+    }
     st = rr_rig_jac(&self->rig, t, y, OUT(out));
+    if (st < 0) {
+        int k;
+        for (k = 0; k < RR_RIG_NSTATE * RR_RIG_NSTATE; k++)
+            OUT(out)[k] = NAN;      /* the C call leaves J unset on error */
+    }
+    rig_leave(self);
     return Py_BuildValue("Ni", out, st);
 }
 
@@ -1056,31 +1175,48 @@ static PyObject *Rig_set_state(RigObject *self, PyObject *args)
 {
     PyObject *yobj;
     double t, y[RR_RIG_NSTATE];
-    if (!PyArg_ParseTuple(args, "dO:set_state", &t, &yobj) || state_vector(yobj, y) < 0)
+    int st;
+    if (!PyArg_ParseTuple(args, "dO:set_state", &t, &yobj) || state_vector(yobj, y) < 0
+        || rig_enter(self, "set_state") < 0)
         return NULL;
-    return PyLong_FromLong(rr_rig_set_state(&self->rig, t, y));
+    st = rr_rig_set_state(&self->rig, t, y);
+    rig_leave(self);
+    return PyLong_FromLong(st);
 }
 
 static PyObject *Rig_get_t(RigObject *self, void *closure)
 {
+    double t;
     (void)closure;
-    return PyFloat_FromDouble(self->rig.t);
+    if (rig_enter(self, "t") < 0)
+        return NULL;
+    t = self->rig.t;
+    rig_leave(self);
+    return PyFloat_FromDouble(t);
 }
 
 static PyObject *Rig_get_y(RigObject *self, void *closure)
 {
     npy_intp n = RR_RIG_NSTATE;
-    PyObject *a = PyArray_SimpleNew(1, &n, NPY_DOUBLE);
+    PyObject *a;
     (void)closure;
-    if (a)
+    if (rig_enter(self, "y") < 0)
+        return NULL;
+    if ((a = PyArray_SimpleNew(1, &n, NPY_DOUBLE)) != NULL)
         memcpy(OUT(a), self->rig.y, sizeof self->rig.y);
+    rig_leave(self);
     return a;
 }
 
 static PyObject *Rig_get_status(RigObject *self, void *closure)
 {
+    int st;
     (void)closure;
-    return PyLong_FromLong(self->rig.status);
+    if (rig_enter(self, "status") < 0)
+        return NULL;
+    st = self->rig.status;
+    rig_leave(self);
+    return PyLong_FromLong(st);
 }
 
 static PyMethodDef Rig_methods[] = {

@@ -7,10 +7,8 @@ import rollerrig as rr
 from reference_cases import read_csv
 
 ROWS = read_csv("kalker_creep_coefficients.csv")[1]
-# nu = 0.5 is a node of the table but outside the accepted range [0, 0.5): it is
-# evaluated at the largest double below 0.5 (the parabola in 1/C moves by
-# ~1e-16 relative there).
-NU_HALF = float(np.nextafter(0.5, 0.0))
+# nu = 0.5 (incompressible) is the table's third column and accepted
+NU_HALF = 0.5
 
 
 def a_over_b(row):
@@ -28,7 +26,6 @@ def table(half, nu):
 def test_every_node():
     aob = np.array([a_over_b(r) for r in ROWS])
     nu = np.array([float(r["nu"]) for r in ROWS])
-    nu = np.where(nu == 0.5, NU_HALF, nu)
     k = rr.kalker_coefficients(aob, nu)
     assert np.all(k.status == 0)
     for name in ("C11", "C22", "C23"):
@@ -38,9 +35,12 @@ def test_every_node():
         np.testing.assert_allclose(getattr(k, name.lower()), ref, rtol=1e-12, err_msg=name)
 
 
-def test_nu_half_is_rejected():
-    with pytest.raises(rr.RollerRigError, match="nu = 0.5"):
-        rr.kalker_coefficients(1.0, 0.5)
+def test_nu_half_is_accepted_and_above_it_refused():
+    """An incompressible body is physical: Kalker's table has nu = 0.5."""
+    k = rr.kalker_coefficients(0.5, 0.5)
+    assert (k.c11, k.c22, k.c23) == (4.83, 3.14, 1.07)       # Table E.3, a/b = 0.5
+    with pytest.raises(rr.RollerRigError, match="nu = 0.5000000000000001"):
+        rr.kalker_coefficients(1.0, float(np.nextafter(0.5, 1.0)))
 
 
 def test_row_g_one_is_shared():
