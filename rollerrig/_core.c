@@ -1325,6 +1325,7 @@ PyMODINIT_FUNC PyInit__core(void)
         || PyModule_AddIntConstant(m, "SLIP_RIGID", RR_SLIP_RIGID) < 0
         || PyModule_AddIntConstant(m, "FASTSIM_MAX_GRID", RR_FASTSIM_MAX_GRID) < 0
         || PyModule_AddIntConstant(m, "TABLE_ROW", (int)rr_contact_table_len(1)) < 0
+        || PyModule_AddIntConstant(m, "SEARCH_MAX_SAMPLES", RR_SEARCH_MAX_SAMPLES) < 0
         || PyModule_AddIntConstant(m, "RIG_NSTATE", RR_RIG_NSTATE) < 0
         || PyModule_AddIntConstant(m, "REC_COUNT", RR_REC_COUNT) < 0
         || PyModule_AddIntConstant(m, "ODE_ROS2", RR_ODE_ROS2) < 0

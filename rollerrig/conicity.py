@@ -224,7 +224,7 @@ def equivalent_conicity(geometry, amplitude=0.003, method="harmonic", *, centre=
     y_span:    the grid from a RigGeometry spans -y_span .. +y_span [m];
                default 2 max(y^) + 4 mm, room for the centre of an
                asymmetric pair to move off y = 0.
-    n:         quadrature points over the cycle (integer >= 64).
+    n:         quadrature points over the cycle (integer from 64 to 1e6).
     search:    options of wheelset_contact (nsamples, two_point_tol, ...).
 
     Returns a float for a scalar amplitude, else an array of its shape.
@@ -260,8 +260,8 @@ def equivalent_conicity(geometry, amplitude=0.003, method="harmonic", *, centre=
         raise RollerRigError(f"{_FUNC}: method 'klingel' finds the centre of the motion "
                              f"itself (equal potential at both turning points): centre must "
                              f"be 'balance', got {centre!r}")
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 64:
-        raise RollerRigError(f"{_FUNC}: n must be an integer >= 64, got {n!r}")
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 64 <= n <= 1_000_000:
+        raise RollerRigError(f"{_FUNC}: n must be an integer from 64 to 1e6, got {n!r}")
 
     if isinstance(geometry, RigGeometry):
         if dy is None:
@@ -273,7 +273,11 @@ def equivalent_conicity(geometry, amplitude=0.003, method="harmonic", *, centre=
         elif not (_is_number(y_span) and np.max(amp) <= y_span <= 0.1):
             raise RollerRigError(f"{_FUNC}: y_span must be a number between the largest "
                                  f"amplitude and 0.1 m, got {y_span!r}")
-        k = int(math.ceil(y_span / dy))
+        steps = y_span / dy
+        if not steps <= 50_000:
+            raise RollerRigError(f"{_FUNC}: y_span / dy = {steps:.3g} grid steps each side; "
+                                 f"at most 50000 (a larger dy or a smaller y_span)")
+        k = int(math.ceil(steps))
         y = dy * np.arange(-k, k + 1)
         f = _DeltaR(y, rolling_radius_difference(geometry, y, **search))
     elif isinstance(geometry, (tuple, list)) and len(geometry) == 2:

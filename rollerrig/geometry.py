@@ -26,6 +26,7 @@ import numpy as np
 
 from . import _core
 from ._errors import RollerRigError, RollerRigWarning, check_status, status_message
+from .contact import _as_float
 from .profiles import DATA_DIR, Profile, read_profile
 
 __all__ = ["RigGeometry", "ContactSide", "WheelsetContact", "wheelset_contact",
@@ -178,24 +179,46 @@ def _side(block):
     return ContactSide(*fields)
 
 
+def _shifts(func, y_ws):
+    """Lateral shifts as a 1-D float64 array, with a message naming y_ws."""
+    y = _as_float(func, "y_ws", y_ws)
+    if y.ndim > 1:
+        raise RollerRigError(f"{func}: y_ws must be a number or a 1-D array, got shape "
+                             f"{y.shape}")
+    return np.ascontiguousarray(np.atleast_1d(y))
+
+
+def _search(func, nsamples=400, two_point_tol=1e-4, two_point_sep=2e-3):
+    """The search options, checked: (nsamples, two_point_tol, two_point_sep)."""
+    if isinstance(nsamples, bool) or not isinstance(nsamples, (int, np.integer)) \
+            or not 3 <= nsamples <= _core.SEARCH_MAX_SAMPLES:
+        raise RollerRigError(f"{func}: nsamples must be an integer from 3 to "
+                             f"{_core.SEARCH_MAX_SAMPLES}, got {nsamples!r}")
+    for name, v in (("two_point_tol", two_point_tol), ("two_point_sep", two_point_sep)):
+        if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)) \
+                or not (np.isfinite(v) and v >= 0):
+            raise RollerRigError(f"{func}: {name} must be a finite number >= 0 [m], "
+                                 f"got {v!r}")
+    return int(nsamples), float(two_point_tol), float(two_point_sep)
+
+
 def wheelset_contact(geometry, y_ws, *, nsamples=400, two_point_tol=1e-4,
                      two_point_sep=2e-3, errors=None):
     """Direct contact search at the lateral shifts y_ws [m] (array or scalar).
 
-    nsamples: wheel samples of the coarse search; two_point_tol [m]: a second
-    gap minimum this close to the first counts as a second contact point,
-    if more than two_point_sep [m] away.  Returns WheelsetContact; shifts
-    where a wheel leaves its roller get NaN and a negative status.
+    nsamples: wheel samples of the coarse search (3 to SEARCH_MAX_SAMPLES,
+    100 000; the cost grows with it); two_point_tol [m]: a second gap minimum
+    this close to the first counts as a second contact point, if more than
+    two_point_sep [m] away.  Returns WheelsetContact (lengths in m, angles in
+    rad); shifts where a wheel leaves its roller get NaN and a negative
+    status.  errors: "raise" (default for a scalar y_ws), "warn" (default
+    for arrays: one RollerRigWarning for the bad elements) or "ignore".
     """
     func = "wheelset_contact"
-    y = np.atleast_1d(np.asarray(y_ws, dtype=float))
-    if y.ndim != 1 or y.size == 0:
-        raise RollerRigError(f"{func}: y_ws must be a number or a non-empty 1-D array")
-    if not (isinstance(nsamples, (int, np.integer)) and nsamples >= 3):
-        raise RollerRigError(f"{func}: nsamples must be an integer >= 3, got {nsamples!r}")
+    y = _shifts(func, y_ws)
+    opts = _search(func, nsamples, two_point_tol, two_point_sep)
     status, z, roll, left, right = _core.wheelset_contact(
-        *geometry._arrays(), geometry._params(), np.ascontiguousarray(y), int(nsamples),
-        float(two_point_tol), float(two_point_sep))
+        *geometry._arrays(), geometry._params(), y, *opts)
     if errors is None:
         errors = "raise" if np.ndim(y_ws) == 0 else "warn"
     check_status(func, status, {"y_ws": y}, errors)
@@ -228,11 +251,8 @@ class ContactTable:
         flag: the nearer row's; gap: 0).  Outside the table: NaN with
         status RR_ERR_GEOMETRY (the wheel off its roller)."""
         func = "ContactTable.lookup"
-        y = np.atleast_1d(np.asarray(y_ws, dtype=float))
-        if y.ndim != 1 or y.size == 0:
-            raise RollerRigError(f"{func}: y_ws must be a number or a non-empty 1-D array")
-        status, z, roll, _, _, left, right = _core.table_lookup(self.data, self.y0, self.dy,
-                                                                 np.ascontiguousarray(y))
+        y = _shifts(func, y_ws)
+        status, z, roll, _, _, left, right = _core.table_lookup(self.data, self.y0, self.dy, y)
         if errors is None:
             errors = "raise" if np.ndim(y_ws) == 0 else "warn"
         check_status(func, status, {"y_ws": y}, errors)
@@ -241,33 +261,40 @@ class ContactTable:
     def slopes(self, y_ws):
         """d z / d y_ws and d roll / d y_ws of the interpolant at y_ws: the
         constraint's rates per unit lateral velocity."""
-        y = np.ascontiguousarray(np.atleast_1d(np.asarray(y_ws, dtype=float)))
+        y = _shifts("ContactTable.slopes", y_ws)
         _, _, _, dz, droll, _, _ = _core.table_lookup(self.data, self.y0, self.dy, y)
         return dz, droll
 
 
+#: most rows of a contact table (1e6 rows take about 6 minutes to build)
+MAX_ROWS = 1_000_000
+
+
 def contact_table(geometry, y_min, y_max, n=401, **search):
-    """Contact table over [y_min, y_max] with n rows (a direct search per row,
-    in C with the GIL released).  search: nsamples, two_point_tol,
+    """Contact table over [y_min, y_max] [m] with n rows (2 to MAX_ROWS; a
+    direct search per row, in C with the GIL released, Ctrl-C noticed
+    between chunks of rows).  search: nsamples, two_point_tol,
     two_point_sep as for wheelset_contact.  Raises RollerRigError naming the
     first shift where a wheel leaves its roller."""
     func = "contact_table"
-    if not (np.isfinite(y_min) and np.isfinite(y_max) and y_max > y_min):
+    for name, v in (("y_min", y_min), ("y_max", y_max)):
+        if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)) \
+                or not np.isfinite(v):
+            raise RollerRigError(f"{func}: {name} must be a finite number [m], got {v!r}")
+    if not y_max > y_min:
         raise RollerRigError(f"{func}: need y_min < y_max, got {y_min!r}, {y_max!r}")
-    if not (isinstance(n, (int, np.integer)) and n >= 2):
-        raise RollerRigError(f"{func}: n must be an integer >= 2, got {n!r}")
-    opts = dict(nsamples=400, two_point_tol=1e-4, two_point_sep=2e-3)
-    unknown = set(search) - set(opts)
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 2 <= n <= MAX_ROWS:
+        raise RollerRigError(f"{func}: n must be an integer from 2 to {MAX_ROWS}, got {n!r}")
+    unknown = set(search) - {"nsamples", "two_point_tol", "two_point_sep"}
     if unknown:
         raise RollerRigError(f"{func}: unknown option(s) {sorted(unknown)}")
-    opts.update(search)
-    if not (isinstance(opts["nsamples"], (int, np.integer)) and opts["nsamples"] >= 3):
-        raise RollerRigError(f"{func}: nsamples must be an integer >= 3, "
-                             f"got {opts['nsamples']!r}")
+    opts = _search(func, **search)
     dy = (float(y_max) - float(y_min)) / (n - 1)
+    if not (np.isfinite(dy) and dy > 0.0):
+        raise RollerRigError(f"{func}: the rows' spacing (y_max - y_min)/(n - 1) = {dy!r} "
+                             f"is not a finite positive number")
     data, status, bad_y = _core.contact_table(
-        *geometry._arrays(), geometry._params(), float(y_min), dy, int(n),
-        int(opts["nsamples"]), float(opts["two_point_tol"]), float(opts["two_point_sep"]))
+        *geometry._arrays(), geometry._params(), float(y_min), dy, int(n), *opts)
     if status < 0:
         raise RollerRigError(f"{func}: at y_ws = {bad_y!r}: {status_message(status)}")
     data.setflags(write=False)

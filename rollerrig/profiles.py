@@ -93,6 +93,7 @@ face, 17 to 52 mm below the top, away from any contact: 6 and 4 points go.
 import math
 import os
 import re
+import stat
 import warnings
 from types import MappingProxyType
 
@@ -792,6 +793,40 @@ def _strip_comment(line):
     return line
 
 
+#: largest profile file read [bytes]: measured profiles are a few hundred kB
+MAX_FILE_BYTES = 64 * 2**20
+
+
+def _read_text_lines(path, where):
+    """The lines of a profile file.  Only a regular file is read: a FIFO or a
+    device (even through a symlink) would block or never end, so the file is
+    opened without blocking and checked before any byte is read."""
+    try:
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+    except FileNotFoundError:
+        raise RollerRigError(f"{where}: no such file") from None
+    except IsADirectoryError:
+        raise RollerRigError(f"{where}: is a directory, not a profile file") from None
+    except OSError as e:
+        raise RollerRigError(f"{where}: cannot be opened: {e.strerror}") from None
+    st = os.fstat(fd)
+    problem = ("is a directory, not a profile file" if stat.S_ISDIR(st.st_mode)
+               else "is not a regular file (a FIFO, a device or a socket): give a profile "
+                    "file" if not stat.S_ISREG(st.st_mode)
+               else f"is {st.st_size / 2**20:.0f} MiB; a profile file is at most "
+                    f"{MAX_FILE_BYTES // 2**20} MiB" if st.st_size > MAX_FILE_BYTES
+               else None)
+    if problem:
+        os.close(fd)
+        raise RollerRigError(f"{where}: {problem}")
+    with os.fdopen(fd, "rb") as f:
+        try:
+            data = f.read(MAX_FILE_BYTES + 1)
+        except OSError as e:
+            raise RollerRigError(f"{where}: cannot be read: {e.strerror}") from None
+    return data.decode("utf-8", errors="replace").splitlines()
+
+
 def _read_simpack(path, where):
     """SIMPACK .prw/.prr: sections header.begin/end (version, type: 0 rail,
     1 wheel) and spline.begin/end with 'key = value' lines and a nested
@@ -813,8 +848,7 @@ def _read_simpack(path, where):
     header, spline = {}, {}
     rows, lines = [], []
     stack = []
-    with open(path, encoding="utf-8", errors="replace") as f:
-        text = f.read().splitlines()
+    text = _read_text_lines(path, where)
     for lineno, raw in enumerate(text, 1):
         s = _strip_comment(raw).strip()
         if not s:
@@ -949,8 +983,7 @@ def _read_miniprof(path, where):
     of points.  Returns (y [m], z [m], line numbers, None, meta)."""
     meta = {}
     rows, lines = [], []
-    with open(path, encoding="utf-8", errors="replace") as f:
-        text = f.read().splitlines()
+    text = _read_text_lines(path, where)
     for lineno, raw in enumerate(text, 1):
         s = raw.strip()
         if not s:
@@ -994,8 +1027,7 @@ def _read_text(path, where, units):
     Returns (y [m], z [m], line numbers, kind or None, meta, units, bc)."""
     meta = {}
     rows, lines = [], []
-    with open(path, encoding="utf-8", errors="replace") as f:
-        text = f.read().splitlines()
+    text = _read_text_lines(path, where)
     seen_data = False
     for lineno, raw in enumerate(text, 1):
         s = raw.strip()
@@ -1079,7 +1111,7 @@ def read_profile(path, kind=None, *, units=None, on_fold="trim", mirror_y=False,
     if kind is not None:
         _check_kind(func, kind)
     ext = os.path.splitext(path)[1].lower()
-    if not os.path.isfile(path):
+    if not os.path.exists(path):
         raise RollerRigError(f"{where}: no such file")
     file_bc = None
     if ext in SIMPACK_EXT or ext in MINIPROF_EXT:

@@ -205,9 +205,9 @@ def linear_creepages(table, *, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spi
     _check_table(func, table)
     g = table.geometry
     r0, R0 = float(g.wheel_radius), float(g.roller_radius)
-    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in
-                                   (y, yaw, vx, vy, yaw_rate, spin, roller_spin)))
-    y, yaw, vx, vy, yaw_rate, spin, roller_spin = arrays
+    _, _, full, _ = _broadcast(func, dict(y=y, yaw=yaw, vx=vx, vy=vy, yaw_rate=yaw_rate,
+                                          spin=spin, roller_spin=roller_spin))
+    y, yaw, vx, vy, yaw_rate, spin, roller_spin = full.values()
     V = roller_spin * R0
     if np.any(~(np.abs(V) > 0)):
         raise RollerRigError(f"{func}: roller_spin must be non-zero (V_n = 0 needs the exact "
