@@ -17,7 +17,7 @@ Profiles (numpy only):
 See rollerrig.contact and rollerrig.profiles for the conventions.
 """
 from ._version import __version__
-from ._errors import RollerRigError, RollerRigWarning, status_message
+from ._errors import STATUS, RollerRigError, RollerRigWarning, status_message
 from .contact import (BOUNDS, METHODS, CreepForces, FallingFriction, HertzContact,
                       KalkerCoefficients, TractionField, creep_forces, fastsim_field, hertz,
                       kalker_coefficients)
@@ -35,7 +35,7 @@ from .rig_contact import (LinearCreepages, RigContact, RigPose, WheelContact, li
                           rig_contact)
 
 __all__ = [
-    "__version__", "RollerRigError", "RollerRigWarning", "status_message", "METHODS",
+    "__version__", "RollerRigError", "RollerRigWarning", "status_message", "STATUS", "METHODS",
     "BOUNDS", "FallingFriction", "HertzContact", "KalkerCoefficients", "CreepForces",
     "TractionField", "hertz", "kalker_coefficients", "creep_forces", "fastsim_field",
     "profiles", "Profile", "read_profile", "RigGeometry", "ContactSide", "WheelsetContact",

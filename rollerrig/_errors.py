@@ -20,6 +20,11 @@ def status_message(code):
     return _core.status_message(int(code))
 
 
+#: every status code of the C core with its message: 0 ok, > 0 a warning
+#: (the result is usable), < 0 an error (the results are NaN)
+STATUS = {code: status_message(code) for code in range(_core.STATUS_MIN, _core.STATUS_MAX + 1)}
+
+
 def _positive(v):
     return v > 0.0
 

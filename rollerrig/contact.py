@@ -12,10 +12,17 @@ rad/m, and the rigid slip at (x, y) is (cx - cphi y, cy + cphi x).  Forces
 act ON THE WHEEL: for small creepage fx = -G a b C11 cx.  mz is the moment
 about the patch centre, the sum of (x py - y px) dA.
 
-Errors: a call on scalars raises RollerRigError (a ValueError) naming the
-argument and its value.  A call on arrays computes the good elements,
-returns NaN with a negative status for the bad ones and warns once
-(errors="warn"); errors="raise" or "ignore" choose otherwise.
+Errors: every function takes errors= "raise", "warn" or "ignore".  By
+default a call on scalars raises RollerRigError (a ValueError) naming the
+argument and its value ("raise"); a call on arrays computes the good
+elements, returns NaN with a negative status for the bad ones and gives one
+RollerRigWarning ("warn").  Every result carries an int8 `status` per
+element: 0 ok; 1 a warning, the result usable (an inner iteration hit its
+cap); < 0 an error with NaN results, e.g. -1 an input NaN or infinite, -2 a
+load not positive, -3 a semi-axis or curvature not positive, -4 a modulus
+or Poisson ratio out of range, -5 friction, -12 inputs so extreme that the
+result would not be a finite double.  rollerrig.STATUS maps every code to
+its message.
 """
 from dataclasses import dataclass
 from typing import NamedTuple
@@ -158,9 +165,11 @@ def hertz(A, B, N, E=2.1e11, nu=0.28, E2=None, nu2=None, *, errors=None):
     N:     normal load [N].
     E, nu: Young's modulus [Pa] and Poisson ratio of the wheel; E2, nu2 of
            the roller (default: the same material).
-    Returns HertzContact(a, b, p0, delta, status); a along the rolling
-    direction.  Elliptic integrals to machine precision (Carlson), the
-    ellipticity solved to full double precision (Johnson 1985, 4.2).
+    errors: "raise", "warn" or "ignore" (module docstring).
+    Returns HertzContact(a [m], b [m], p0 [Pa], delta [m], status); a along
+    the rolling direction.  Elliptic integrals to machine precision
+    (Carlson), the ellipticity solved to full double precision (Johnson
+    1985, 4.2).
     """
     E2 = E if E2 is None else E2
     nu2 = nu if nu2 is None else nu2
@@ -176,7 +185,9 @@ def kalker_coefficients(a_over_b, nu=0.28, *, errors=None):
 
     Exact at the table's nodes; linear in g = min(a/b, b/a) between them, a
     parabola through 1/C in nu; Kalker's asymptotes below g = 0.1.
-    Returns KalkerCoefficients(c11, c22, c23, status).
+    a_over_b: semi-axis along the rolling direction over the lateral one
+    (> 0); nu: Poisson ratio, 0 <= nu <= 0.5.  errors: as for hertz.
+    Returns KalkerCoefficients(c11, c22, c23, status), dimensionless.
     """
     shape, scalar, full, flat = _broadcast("kalker_coefficients",
                                            dict(a_over_b=a_over_b, nu=nu))
@@ -253,9 +264,15 @@ def creep_forces(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28,
              ("local", the default) or at the rigid slip speed ("rigid",
              the default of modified_fastsim, whose k0, alpha_inf, beta
              were fitted that way)
-    Returns CreepForces(fx, fy, mz, status).  The Polach method has no spin
-    moment (mz = 0); the linear theory's spin moment uses the simplified
-    theory's C33 (Kalker's C33 is not in our table).
+    errors:  "raise" (default for scalar inputs), "warn" (default for
+             arrays) or "ignore" (module docstring)
+    Returns CreepForces(fx [N], fy [N], mz [N m], status): forces on the
+    wheel, status per element (0 ok, 1 the falling-friction iteration hit
+    its cap somewhere, < 0 an error with NaN forces; rollerrig.STATUS).
+    Every method but "linear" keeps |(fx, fy)| <= mu N (the static mu).
+    The Polach method has no spin moment (mz = 0); the linear theory's spin
+    moment uses the simplified theory's C33 (Kalker's C33 is not in our
+    table).
     """
     func = "creep_forces"
     opts = _options(func, method, nx, ny, bound, grid, slip_speed, k0, alpha_inf, beta, kA,
@@ -275,8 +292,9 @@ def fastsim_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28,
     """The FASTSIM traction field of one case, for plots and checks.
 
     Arguments as creep_forces (scalars only; method a FASTSIM variant).
-    Returns a TractionField with the element centres, pressure, tractions,
-    the adhesion/slip map and the total forces.
+    Returns a TractionField with the element centres [m], pressure and
+    tractions [Pa], the adhesion/slip map, element areas [m^2] and the
+    total forces [N] and moment [N m]; an invalid case raises RollerRigError.
     """
     func = "fastsim_field"
     if method not in ("fastsim", "fastsim_blended", "modified_fastsim"):
