@@ -172,8 +172,9 @@ def test_s1002_uic60_jump_raises_small_amplitude_conicity(manchester_table):
     (dict(centre="middle"), r"centre must be 'balance' or a number \[m\], got 'middle'"),
     (dict(centre=float("inf")), r"centre must be 'balance' or a number"),
     (dict(method="klingel", centre=0.0), r"'klingel' finds the centre .* got 0\.0"),
-    (dict(n=10), r"n must be an integer >= 64, got 10"),
-    (dict(n=128.0), r"n must be an integer >= 64, got 128\.0"),
+    (dict(n=10), r"n must be an integer from 64 to 1e6, got 10"),
+    (dict(n=10**7), r"n must be an integer from 64 to 1e6, got 10000000"),
+    (dict(n=128.0), r"n must be an integer from 64 to 1e6, got 128\.0"),
 ])
 def test_bad_arguments_on_a_table(kwargs, match):
     args = dict(amplitude=0.003, method="harmonic")
