@@ -106,6 +106,7 @@ __all__ = ["Profile", "read_profile", "KINDS", "DATA_DIR", "MIN_POINTS"]
 KINDS = ("wheel", "rail")
 BCS = ("not-a-knot", "natural")
 MIN_POINTS = 4
+MAX_POINTS = 100_000   #: more points than any measured profile has (MiniProf: ~1000)
 MAX_COORD = 2.0     #: [m] larger coordinates are taken for a unit mistake
 MIN_WIDTH = 1e-3    #: [m] a narrower profile is taken for a unit mistake
 DATA_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", "profiles")
@@ -422,15 +423,18 @@ class Profile:
         _check_kind(func, kind)
         smoothing = _check_number(func, "smoothing", smoothing, positive=True,
                                   allow_none=True)
+        if smoothing is not None and smoothing > MAX_COORD:
+            raise RollerRigError(f"{func}: smoothing is a wavelength [m] up to {MAX_COORD:g} "
+                                 f"m (the profile's own scale), got {smoothing!r}")
         bc = _check_bc(func, bc, smoothing)
         y = _as_float_array(func, "y", y)
         z = _as_float_array(func, "z", z)
         if y.ndim != 1 or z.ndim != 1 or y.shape != z.shape:
             raise RollerRigError(f"{func}: y and z must be 1-D arrays of one length, got "
                                  f"shapes {y.shape} and {z.shape}")
-        if len(y) < MIN_POINTS:
-            raise RollerRigError(f"{func}: {len(y)} point(s); a profile needs at least "
-                                 f"{MIN_POINTS}")
+        if not MIN_POINTS <= len(y) <= MAX_POINTS:
+            raise RollerRigError(f"{func}: {len(y)} point(s); a profile has from "
+                                 f"{MIN_POINTS} to {MAX_POINTS}")
         bad = np.flatnonzero(~(np.isfinite(y) & np.isfinite(z)))
         if bad.size:
             i = int(bad[0])
@@ -540,8 +544,8 @@ class Profile:
         arr = _as_float_array(f"Profile.{func}", "y", y)
         flat = arr.reshape(-1)
         i = np.clip(np.searchsorted(self._y, flat, side="right") - 1, 0, len(self._y) - 2)
-        t = flat - self._y[i]
         out = ~((flat >= self._y[0]) & (flat <= self._y[-1]))   # also NaN
+        t = np.where(out, 0.0, flat - self._y[i])     # no overflow far outside
         return arr, i, t, out
 
     @staticmethod
@@ -742,8 +746,10 @@ def _range_points(func, y_range, n):
     if not (math.isfinite(y0) and math.isfinite(y1) and y1 > y0):
         raise RollerRigError(f"{func}: y_range must be finite with y_min < y_max, "
                              f"got {y_range!r}")
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < MIN_POINTS:
-        raise RollerRigError(f"{func}: n must be an integer >= {MIN_POINTS}, got {n!r}")
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) \
+            or not MIN_POINTS <= n <= MAX_POINTS:
+        raise RollerRigError(f"{func}: n must be an integer from {MIN_POINTS} to "
+                             f"{MAX_POINTS}, got {n!r}")
     return np.linspace(y0, y1, int(n))
 
 

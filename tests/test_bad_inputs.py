@@ -354,3 +354,16 @@ def test_two_threads_cannot_run_one_rig_at_once():
             assert errors and "in use by another thread" in errors[0]
             return
     pytest.fail("the runs never overlapped")
+
+
+def test_profile_extremes():
+    """smoothing = 1e300 raised a raw OverflowError; z_at far outside warned
+    of an overflow on the way to its NaN."""
+    y, z = [0, 1e-3, 2e-3, 3e-3], [0, 0, 1e-4, 0]
+    with pytest.raises(rr.RollerRigError, match="smoothing is a wavelength"):
+        rr.Profile(y, z, kind="wheel", smoothing=1e300)
+    p = rr.Profile(y, z, kind="wheel")
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert np.isnan(p.z_at(1e300)) and np.isnan(p.curvature(-1e300))

@@ -339,8 +339,11 @@ def test_conical_and_cylinder_arguments():
         Profile.conical(0.05, y_range=(0.01, -0.01))
     with pytest.raises(RollerRigError, match=r"r0 must be a positive finite number"):
         Profile.conical(0.05, r0=-1.0)
-    with pytest.raises(RollerRigError, match=r"n must be an integer >= 4"):
+    with pytest.raises(RollerRigError, match=r"n must be an integer from 4 to 100000"):
         Profile.cylinder(n=3)
+    # n = 1e9 allocated gigabytes before any check (the process was killed)
+    with pytest.raises(RollerRigError, match=r"n must be an integer from 4 to 100000"):
+        Profile.conical(0.05, n=10**9)
 
 
 # ------------------------------------------------------------------ immutability, copies
@@ -434,7 +437,8 @@ def test_smoothing_arguments_and_copies():
 # ------------------------------------------------------------------ constructor checks
 
 @pytest.mark.parametrize("y, z, kw, match", [
-    ([0, 1e-3, 2e-3], [0, 0, 0], {}, r"3 point\(s\); a profile needs at least 4"),
+    ([0, 1e-3, 2e-3], [0, 0, 0], {}, r"3 point\(s\); a profile has from 4 to 100000"),
+    (np.linspace(0, 1, 100001), np.zeros(100001), {}, r"100001 point\(s\); a profile has"),
     ([0, 1e-3, 1e-3, 2e-3], [0, 0, 1e-4, 0], {}, r"duplicate y at index 2"),
     ([0, 2e-3, 1e-3, 3e-3], [0, 0, 0, 0], {}, r"y decreases at index 2"),
     ([0, 1e-3, 2e-3, np.nan], [0, 0, 0, 0], {}, r"non-finite value at index 3"),
