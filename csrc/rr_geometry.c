@@ -354,6 +354,18 @@ int rr_contact_table_build_rows(const rr_wheel_roller *left, const rr_wheel_roll
     return RR_OK;
 }
 
+/* The lookup's error path: NaN outputs, the status. */
+static int lookup_fail(int st, rr_wheelset_pose *pose, rr_wheelset_pose *slope,
+                       rr_contact_point *cl, rr_contact_point *cr)
+{
+    point_nan(cl);
+    point_nan(cr);
+    pose->z = pose->roll = NAN;
+    if (slope)
+        slope->z = slope->roll = NAN;
+    return st;
+}
+
 int rr_contact_table_lookup(const rr_contact_table *t, double y_ws, rr_wheelset_pose *pose,
                             rr_wheelset_pose *slope, rr_contact_point *cl, rr_contact_point *cr)
 {
@@ -363,31 +375,13 @@ int rr_contact_table_lookup(const rr_contact_table *t, double y_ws, rr_wheelset_
 
     if (!pose || !cl || !cr)
         return RR_ERR_NULL;
-    if ((st = table_check(t)) != RR_OK) {
-        point_nan(cl);
-        point_nan(cr);
-        pose->z = pose->roll = NAN;
-        if (slope)
-            slope->z = slope->roll = NAN;
-        return st;
-    }
-    if (!isfinite(y_ws)) {
-        point_nan(cl);
-        point_nan(cr);
-        pose->z = pose->roll = NAN;
-        if (slope)
-            slope->z = slope->roll = NAN;
-        return RR_ERR_NONFINITE;
-    }
+    if ((st = table_check(t)) != RR_OK)
+        return lookup_fail(st, pose, slope, cl, cr);
+    if (!isfinite(y_ws))
+        return lookup_fail(RR_ERR_NONFINITE, pose, slope, cl, cr);
     pos = (y_ws - t->y0) / t->dy;
-    if (pos < 0.0 || pos > t->n - 1) {
-        point_nan(cl);
-        point_nan(cr);
-        pose->z = pose->roll = NAN;
-        if (slope)
-            slope->z = slope->roll = NAN;
-        return RR_ERR_GEOMETRY;
-    }
+    if (pos < 0.0 || pos > t->n - 1)
+        return lookup_fail(RR_ERR_GEOMETRY, pose, slope, cl, cr);
     i = (int)pos;
     if (i > t->n - 2)
         i = t->n - 2;
