@@ -7,12 +7,16 @@
  * the truncated series then errs by about TOL^6 (Carlson 1995, eq. 2.2). */
 #define TOL 0.0008
 
+/* The duplication on arguments of moderate size (their sum representable). */
+static void rf_rd(double x, double y, double z, double *rf, double *rd);
+
 int rr_carlson_rf_rd(double x, double y, double z, double *rf, double *rd)
 {
-    double sum = 0.0, fac = 1.0, mf, md, dx, dy, dz, e2, e3;
-    double ea, eb, ec, ed, ee;
-    int iter;
+    double m;
+    int j = 0;
 
+    if (!rf || !rd)
+        return RR_ERR_NULL;
     if (!isfinite(x) || !isfinite(y) || !isfinite(z)) {
         *rf = *rd = NAN;
         return RR_ERR_NONFINITE;
@@ -21,6 +25,39 @@ int rr_carlson_rf_rd(double x, double y, double z, double *rf, double *rd)
         *rf = *rd = NAN;
         return RR_ERR_GEOMETRY;
     }
+    /* R_F and R_D are homogeneous of degree -1/2 and -3/2: arguments far from
+     * 1 are scaled by 4^-j (exact), the results by 2^-j and 2^-3j, so that
+     * no sum overflows and no product underflows on the way */
+    m = x > y ? x : y;
+    if (z > m)
+        m = z;
+    if (m > 1e100 || m < 1e-100) {
+        frexp(m, &j);
+        j /= 2;
+        x = ldexp(x, -2 * j);
+        y = ldexp(y, -2 * j);
+        z = ldexp(z, -2 * j);
+        if (!(x + y > 0.0) || !(z > 0.0)) {
+            *rf = *rd = NAN;        /* the small arguments vanish beside the large */
+            return RR_ERR_RANGE;
+        }
+    }
+    rf_rd(x, y, z, rf, rd);
+    *rf = ldexp(*rf, -j);
+    *rd = ldexp(*rd, -3 * j);
+    if (!isnormal(*rf) || !isnormal(*rd)) {
+        *rf = *rd = NAN;            /* R_D ~ m^(-3/2) beyond the double range */
+        return RR_ERR_RANGE;
+    }
+    return RR_OK;
+}
+
+static void rf_rd(double x, double y, double z, double *rf, double *rd)
+{
+    double sum = 0.0, fac = 1.0, mf, md, dx, dy, dz, e2, e3;
+    double ea, eb, ec, ed, ee;
+    int iter;
+
     /* 60 halvings of the spread are far beyond what double precision needs */
     for (iter = 0; iter < 60; iter++) {
         double sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
@@ -58,7 +95,6 @@ int rr_carlson_rf_rd(double x, double y, double z, double *rf, double *rd)
         + fac * (1.0 + ed * (-3.0 / 14.0 + 9.0 / 88.0 * ed - 9.0 / 52.0 * dz * ee)
                  + dz * (ee / 6.0 + dz * (-9.0 / 22.0 * ec + dz * 3.0 / 26.0 * ea)))
               / (md * sqrt(md));
-    return RR_OK;
 }
 
 int rr_ellip_agm(double kc, double *K, double *d_lo, double *d_hi)
@@ -66,6 +102,8 @@ int rr_ellip_agm(double kc, double *K, double *d_lo, double *d_hi)
     double a = 1.0, b = kc, e2, S = 0.0, pw = 1.0;
     int n;
 
+    if (!K || !d_lo || !d_hi)
+        return RR_ERR_NULL;
     if (!isfinite(kc)) {
         *K = *d_lo = *d_hi = NAN;
         return RR_ERR_NONFINITE;
@@ -97,6 +135,8 @@ int rr_ellip_ke(double mc, double *K, double *E)
     double rf, rd;
     int st;
 
+    if (!K || !E)
+        return RR_ERR_NULL;
     if (!isfinite(mc)) {
         *K = *E = NAN;
         return RR_ERR_NONFINITE;
@@ -104,6 +144,13 @@ int rr_ellip_ke(double mc, double *K, double *E)
     if (mc <= 0.0 || mc > 1.0) {
         *K = *E = NAN;
         return RR_ERR_GEOMETRY;
+    }
+    if (mc < 1e-150) {
+        /* K = ln(4/k') + O(mc ln mc), E = 1 + O(mc ln mc) (DLMF 19.12.1, 19.12.2):
+         * exact in double precision here, where R_D(0, 1, mc) ~ 3/mc overflows */
+        *K = log(4.0) - 0.5 * log(mc);
+        *E = 1.0;
+        return RR_OK;
     }
     st = rr_carlson_rf_rd(0.0, mc, 1.0, &rf, &rd);
     *K = rf;

@@ -224,6 +224,44 @@ static void test_agm(void)
     }
 }
 
+/* Extreme arguments (fuzzing found NaN and inf with status 0): scaled
+ * where the result is representable, RR_ERR_RANGE where it is not. */
+static void test_extremes(void)
+{
+    double rf, rd, K, E, K2, E2;
+    /* homogeneity: R_F(s x) = R_F(x)/sqrt(s), R_D(s x) = R_D(x)/s^1.5 */
+    double rf1, rd1;
+    CHECK_STATUS(rr_carlson_rf_rd(0.5, 1.0, 2.0, &rf1, &rd1), RR_OK, "moderate arguments");
+    CHECK_STATUS(rr_carlson_rf_rd(0.5e200, 1e200, 2e200, &rf, &rd), RR_OK, "arguments 1e200");
+    CHECK_CLOSE(rf, rf1 * 1e-100, 0.0, 4e-16, "R_F(1e200 x) = 1e-100 R_F(x)");
+    CHECK_CLOSE(rd, rd1 * 1e-300, 0.0, 4e-16, "R_D(1e200 x) = 1e-300 R_D(x)");
+    CHECK_STATUS(rr_carlson_rf_rd(0.5e-150, 1e-150, 2e-150, &rf, &rd), RR_OK,
+                 "arguments 1e-150");
+    CHECK_CLOSE(rf, rf1 * 1e75, 0.0, 4e-16, "R_F(1e-150 x) = 1e75 R_F(x)");
+    CHECK_CLOSE(rd, rd1 * 1e225, 0.0, 4e-16, "R_D(1e-150 x) = 1e225 R_D(x)");
+    CHECK_STATUS(rr_carlson_rf_rd(1e308, 1e308, 1e308, &rf, &rd), RR_ERR_RANGE,
+                 "R_D(1e308, ...) = 1e-462: not a double");
+    CHECK(isnan(rf) && isnan(rd), "RANGE: NaN");
+    CHECK_STATUS(rr_carlson_rf_rd(1e-300, 1e-300, 1e-300, &rf, &rd), RR_ERR_RANGE,
+                 "R_D(1e-300, ...) = 1e450");
+    CHECK_STATUS(rr_carlson_rf_rd(1e-320, 0.0, 1e300, &rf, &rd), RR_ERR_RANGE,
+                 "x vanishes beside z");
+    CHECK_STATUS(rr_carlson_rf_rd(1.0, 1.0, 1.0, NULL, &rd), RR_ERR_NULL, "rf NULL");
+    /* K and E as mc -> 0: their limits, continuous at the switch (1e-150) */
+    CHECK_STATUS(rr_ellip_ke(5e-324, &K, &E), RR_OK, "ke at the least double");
+    CHECK_CLOSE(K, log(4.0) - 0.5 * log(5e-324), 0.0, 1e-15, "K -> ln(4/k')");
+    CHECK(E == 1.0, "E -> 1");
+    CHECK_STATUS(rr_ellip_ke(1.0000001e-150, &K, &E), RR_OK, "ke just above the switch");
+    CHECK_STATUS(rr_ellip_ke(0.9999999e-150, &K2, &E2), RR_OK, "ke just below");
+    /* the Carlson side agrees with the limits there to rounding */
+    CHECK_CLOSE(K, log(4.0) - 0.5 * log(1.0000001e-150), 0.0, 1e-14, "K above the switch");
+    CHECK_CLOSE(K2, log(4.0) - 0.5 * log(0.9999999e-150), 0.0, 1e-15, "K below the switch");
+    CHECK_CLOSE(E, 1.0, 0.0, 1e-14, "E above the switch");
+    CHECK(E2 == 1.0, "E below the switch");
+    CHECK_STATUS(rr_ellip_ke(0.5, NULL, &E), RR_ERR_NULL, "K NULL");
+    CHECK_STATUS(rr_ellip_agm(0.5, &K, NULL, &E), RR_ERR_NULL, "agm NULL");
+}
+
 int main(void)
 {
     test_agm();
@@ -233,5 +271,6 @@ int main(void)
     test_carlson();
     test_bad_input();
     test_monotone();
+    test_extremes();
     return rr_test_summary();
 }
