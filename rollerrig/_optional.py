@@ -15,13 +15,14 @@ class OptionalDependencyError(ImportError):
     the message names the feature, the package and the extra to install."""
 
 
-def require(module, feature, extra, package=None):
+def require(module, feature, extra, package=None, instead=None):
     """Import and return `module` (e.g. "scipy.optimize") for `feature`
     (e.g. "fit_polach"), or raise OptionalDependencyError saying
     "<feature> needs <package>: pip install 'rollerrig[<extra>]'".
 
     package: the distribution's name when it differs from the module's top
-    level (default: the top level of `module`)."""
+    level (default: the top level of `module`); instead: what else the
+    caller can do, appended to the message (e.g. "or pass output='dict'")."""
     try:
         return importlib.import_module(module)
     except ImportError as e:
@@ -33,4 +34,5 @@ def require(module, feature, extra, package=None):
                else f"does not import ({type(e).__name__}: {e})")
         raise OptionalDependencyError(
             f"{feature} needs {package}, which {why}: pip install 'rollerrig[{extra}]' "
-            f"(from a checkout: pip install '.[{extra}]')", name=top) from e
+            f"(from a checkout: pip install '.[{extra}]')"
+            + (f"; {instead}" if instead else ""), name=top) from e

@@ -417,18 +417,23 @@ def check_parameters(params=None, *, source="check_parameters: params"):
     ratios, ...) given a value other than its default: such a key does not
     act on the model.
     """
-    P = default_parameters()
-    problems = []
-    if params is not None:
-        if not isinstance(params, dict):
-            raise RollerRigError(f"{source} must be a nested dict (or, for simulate and "
-                                 f"build_rig, the path of a TOML file), got "
-                                 f"{type(params).__name__}")
-        _merge(P, copy.deepcopy(params), problems)
-    problems += _check_values(P)
+    if params is not None and not isinstance(params, dict):
+        raise RollerRigError(f"{source} must be a nested dict (or, for simulate and "
+                             f"build_rig, the path of a TOML file), got "
+                             f"{type(params).__name__}")
+    P, problems = _parameter_problems(params)
     if problems:
         raise _error(source, problems)
     return P
+
+
+def _parameter_problems(params):
+    """(the merged parameters, the list of their problems) of a nested dict."""
+    P = default_parameters()
+    problems = []
+    if params:
+        _merge(P, copy.deepcopy(params), problems)
+    return P, problems + _check_values(P)
 
 
 def _parameters(func, params):
