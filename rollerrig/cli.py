@@ -93,6 +93,9 @@ def _simulate(args):
     written, failure = [], None
     try:
         written.append(res.to_csv(os.path.join(args.out, "rig_history.csv")))
+        from ._optional import require
+        # files only: no window, whatever the environment's default backend
+        require("matplotlib", "rollerrig simulate's figures", "plot").use("Agg")
         from .plot import plot_run
         written += plot_run(res, args.out)
     except OSError as e:

@@ -471,9 +471,7 @@ def plot_run(res, outdir, prefix="rig"):
     for RigResult `res` into outdir (created if needed); returns the paths.
     Each file is written new and renamed over its name, so a symlink at
     that name is replaced, never written through."""
-    import matplotlib
-    matplotlib.use("Agg")
-    plt = _pyplot()
+    plt = _pyplot()          # the backend is the caller's (rollerrig simulate: Agg)
     from .rig import write_replacing
 
     _check_result("plot_run", res)

@@ -325,3 +325,30 @@ def test_fit_plot_bad_input(polach_fit):
     _, ax = plt.subplots()
     with pytest.raises(rr.RollerRigError):
         rp.fit(res, s2.cx, s2.fx, ax=ax, residuals=True)     # needs two axes
+
+
+def test_without_matplotlib_the_figures_name_the_extra(run, monkeypatch, tmp_path):
+    from rollerrig._optional import OptionalDependencyError
+    monkeypatch.setitem(sys.modules, "matplotlib.pyplot", None)
+    with pytest.raises(OptionalDependencyError, match=r"rollerrig.plot needs matplotlib, which "
+                                                      r"is not installed: pip install "
+                                                      r"'rollerrig\[plot\]'"):
+        rp.rig_force(run)
+    with pytest.raises(OptionalDependencyError, match=r"rollerrig.plot needs matplotlib"):
+        rp.plot_run(run, str(tmp_path))
+    res = rr.reference.score("polach")
+    with pytest.raises(OptionalDependencyError, match=r"rollerrig.reference.error_map needs "
+                                                      r"matplotlib"):
+        rr.reference.error_map(res)
+
+
+def test_plot_run_leaves_the_backend_alone(run, tmp_path):
+    """plot_run writes files and closes its figures; it does not switch the
+    caller's backend (a notebook's inline backend stays)."""
+    plt.switch_backend("pdf")                 # another non-interactive backend
+    try:
+        paths = rp.plot_run(run, str(tmp_path))
+        assert matplotlib.get_backend() == "pdf"
+    finally:
+        plt.switch_backend("Agg")
+    assert all(open(p, "rb").read(4) == b"\x89PNG" for p in paths)
