@@ -78,9 +78,9 @@ def _simulate(args):
         except RollerRigError as e:
             error = e
     for w in caught:
-        print(f"{PROG}: warning: {w.message}", file=sys.stderr)
+        print(f"{PROG}: warning: {_unprefixed(w.message)}", file=sys.stderr)
     if error is not None:
-        print(f"{PROG}: {error}", file=sys.stderr)
+        print(f"{PROG}: {_unprefixed(error)}", file=sys.stderr)
         return 2
     wall = time.perf_counter() - t0
     run = res.wall["run"]
@@ -114,6 +114,13 @@ def _simulate(args):
     if res.status > 0:
         print(f"{PROG}: warning: {res.message}", file=sys.stderr)
     return 0
+
+
+def _unprefixed(message):
+    """A message of rollerrig.simulate without its "simulate: " (the command
+    line names itself)."""
+    text = str(message)
+    return text[len("simulate: "):] if text.startswith("simulate: ") else text
 
 
 def _positive_int(text):

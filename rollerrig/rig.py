@@ -332,10 +332,10 @@ DOCUMENTATION = {
     "roller.rigidly_joined": "the model's two rollers are always on one shaft",
     "suspension.preload_per_axlebox_N": "it is half of suspension.preload_total_N, which acts",
     "contact.normal_model": "the model's normal loads are always the 'balance' ones",
-    "roller_drive.gear_ratio": "gains, torques and inertias are referred to the roller axle "
-                               "(ratio 1)",
+    "roller_drive.gear_ratio": "gains, torques and inertias are referred to the roller "
+                               "axle, ratio 1",
     "wheelset_drive.gear_ratio": "gains, torques and inertias are referred to the wheelset "
-                                 "axle (ratio 1)",
+                                 "axle, ratio 1",
 }
 
 
@@ -874,8 +874,8 @@ def _record_plan(n, dt, record_every, max_record_bytes):
         advice = (f"keep one sample in {fit} (record_every={fit}; on the command line "
                   f"--record-every {fit})" if fit and fit <= n else "shorten the run")
         raise RollerRigError(
-            f"simulate: the records of {kept} samples ({n} samples of dt = {dt:g} s"
-            f"{f', one in {record_every} kept' if record_every > 1 else ''}) would take "
+            f"simulate: the records of {kept} samples"
+            f"{f' (one in {record_every} of {n})' if record_every > 1 else ''} would take "
             f"{need / 2**30:.3g} GiB, over max_record_bytes = {cap / 2**30:.3g} GiB; "
             f"{advice}, or raise max_record_bytes")
     return int(record_every), kept
@@ -947,7 +947,7 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     out = np.full((kept, len(RECORD_FIELDS)), np.nan)
     # about 50 steps of the progress bar; without one, as few calls as the bound allows
     chunk = max(1, min(n // 50 if progress else n, _CHUNK_SAMPLES))
-    stepped, worst, status = 0, 0, 0
+    stepped, worst, warned, status = 0, 0, 0, 0
     t1 = time.perf_counter()
     for first in range(0, n, chunk):
         stop = min(n, first + chunk)
@@ -967,6 +967,7 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
         # binding's run() may report only that of its last block of samples
         if len(rec):
             worst = max(worst, status, int(np.max(rec[:, -1])))
+            warned += int(np.count_nonzero(rec[:, -1] > 0))
         if progress:
             done = stop / n
             sys.stderr.write(f"\rsimulate [{'#' * int(40 * done):<40}] {100 * done:5.1f} %")
@@ -981,8 +982,7 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     if status == 0:
         message = "ok"
     elif status > 0:
-        warned = int(np.count_nonzero(out[:, -1] > 0))
-        message = (f"ok with warnings: {warned} of {len(out)} recorded samples warned "
+        message = (f"ok with warnings: {warned} of {stepped} samples warned "
                    f"(sample_status {status}: {status_message(status)})")
     else:
         message = f"stopped at t = {rig.t:.4f} s: {status_message(status)}"

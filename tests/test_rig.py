@@ -27,7 +27,7 @@ def test_paper_scenario_reaches_and_holds_every_target(paper):
     warned = np.count_nonzero(paper.sample_status > 0)
     assert warned < 0.01 * len(paper)
     assert paper.message == "ok" if warned == 0 else paper.message.startswith(
-        f"ok with warnings: {warned} of 5000 recorded samples")
+        f"ok with warnings: {warned} of 5000 samples warned")
     assert len(paper) == 5000 and paper.time[-1] == pytest.approx(20.0)
     for xi, sel in hold_windows(paper):
         # held: the mean over the rest of the interval within 5 % (eq. 14's

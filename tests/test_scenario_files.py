@@ -188,7 +188,7 @@ def test_scenario_start_times_under_another_duration(tmp_path, capsys):
     code = cli.main(["simulate", "--quiet", "--duration", "0.4", "--out", str(tmp_path)])
     out = capsys.readouterr()
     assert code == 0
-    assert "rollerrig simulate: warning: simulate: the scenario's target start times" in out.err
+    assert "rollerrig simulate: warning: the scenario's target start times" in out.err
 
 
 # ------------------------------------------------------------------ pathological files
