@@ -127,11 +127,16 @@ class _Problems(Exception):
         self.problems = list(problems)
 
 
+_SHOWN_PROBLEMS = 30     # a file of thousands of bad keys gives a readable message
+
+
 def _error(source, problems):
     if len(problems) == 1:
         return RollerRigError(f"{source}: {problems[0]}")
-    return RollerRigError(f"{source}: {len(problems)} problems:\n"
-                          + "\n".join(f"  {p}" for p in problems))
+    shown = [f"  {p}" for p in problems[:_SHOWN_PROBLEMS]]
+    if len(problems) > _SHOWN_PROBLEMS:
+        shown.append(f"  ... and {len(problems) - _SHOWN_PROBLEMS} more")
+    return RollerRigError(f"{source}: {len(problems)} problems:\n" + "\n".join(shown))
 
 
 def _short(value, width=60):

@@ -58,6 +58,15 @@ def test_every_problem_is_reported_at_once(tmp_path, capsys):
     assert not (tmp_path / "o").exists()          # refused before anything was made
 
 
+def test_thousands_of_problems_give_a_readable_message(tmp_path):
+    path = scenario(tmp_path, "".join(f"key{k} = {k}\n" for k in range(5000)))
+    with pytest.raises(rr.RollerRigError) as e:
+        rr.simulate(params=str(path))
+    lines = str(e.value).splitlines()
+    assert lines[0].endswith(": 5000 problems:") and lines[-1] == "  ... and 4970 more"
+    assert len(lines) == 32
+
+
 def test_unknown_keys_suggest_the_nearest():
     with pytest.raises(rr.RollerRigError, match=r"unknown parameter 'scenario.mu' \(did you "
                                                 r"mean 'scenario.mu0'\?\)"):
