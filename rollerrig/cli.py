@@ -1,58 +1,136 @@
-"""Command-line entry point: ``rollerrig simulate`` (also ``python -m rollerrig``)."""
+"""Command-line entry point: ``rollerrig simulate`` (also ``python -m rollerrig``).
+
+Exit status: 0 the run finished (its warnings, if any, on stderr), 1 the
+run stopped early (its outputs are still written), 2 bad input (a message on
+stderr naming the option, no traceback, nothing run).
+"""
 import argparse
-import csv
 import os
 import sys
+import tempfile
 import time
+import warnings
 
 from ._version import __version__
+
+PROG = "rollerrig simulate"
+
+
+class _Refused(Exception):
+    """Bad input: the message for stderr, exit status 2."""
+
+
+def _prepare_out(path):
+    """Create the output folder and prove it is a writable directory (a
+    temporary file made and removed in it), before anything is run."""
+    if os.path.exists(path) and not os.path.isdir(path):
+        raise _Refused(f"--out {path}: not a directory")
+    try:
+        os.makedirs(path, exist_ok=True)
+    except OSError as e:
+        raise _Refused(f"--out {path}: cannot create the folder: {e.strerror or e}") from None
+    if not os.path.isdir(path):
+        raise _Refused(f"--out {path}: not a directory")
+    try:
+        fd, probe = tempfile.mkstemp(dir=path, prefix=".rollerrig-probe-")
+        os.close(fd)
+        os.remove(probe)
+    except OSError as e:
+        raise _Refused(f"--out {path}: cannot write in the folder: {e.strerror or e}") \
+            from None
+
+
+def _load_scenario(rig, path):
+    """The scenario file's parameters, checked (every problem at once)."""
+    if path is None:
+        return None
+    source = f"--scenario {path}"
+    try:
+        params = rig._read_parameter_file(path)
+    except rig._Problems as p:
+        raise _Refused(str(rig._error(source, p.problems))) from None
+    try:
+        rig.check_parameters(params, source=source)
+    except ValueError as e:                  # RollerRigError
+        raise _Refused(str(e)) from None
+    return params
 
 
 def _simulate(args):
     from . import rig
-    from ._errors import RollerRigError
+    from ._errors import RollerRigError, RollerRigWarning
 
     try:
-        params = rig.load_parameters(args.scenario) if args.scenario else None
-    except (OSError, ValueError) as e:        # missing file, TOML syntax (a ValueError)
-        print(f"rollerrig simulate: --scenario: {e}", file=sys.stderr)
+        params = _load_scenario(rig, args.scenario)
+        _prepare_out(args.out)
+    except _Refused as e:
+        print(f"{PROG}: {e}", file=sys.stderr)
         return 2
-    kw = {}
-    if args.method:
-        kw["method"] = args.method
-    try:
-        t0 = time.perf_counter()
-        res = rig.simulate(duration=args.duration, dt=args.dt, params=params,
-                           progress=not args.quiet and sys.stderr.isatty(), **kw)
-        wall = time.perf_counter() - t0
-    except (RollerRigError, OSError, ValueError) as e:
-        print(f"rollerrig simulate: {e}", file=sys.stderr)
+    kw = {"method": args.method} if args.method else {}
+    t0 = time.perf_counter()
+    res = error = None
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", RollerRigWarning)
+        try:
+            res = rig.simulate(duration=args.duration, dt=args.dt, params=params,
+                               record_every=args.record_every,
+                               progress=not args.quiet and sys.stderr.isatty(), **kw)
+        except RollerRigError as e:
+            error = e
+    for w in caught:
+        print(f"{PROG}: warning: {_unprefixed(w.message)}", file=sys.stderr)
+    if error is not None:
+        print(f"{PROG}: {_unprefixed(error)}", file=sys.stderr)
         return 2
-    simulated = len(res) * res.dt
+    wall = time.perf_counter() - t0
     run = res.wall["run"]
-    print(f"rollerrig {__version__}: {simulated:g} s simulated in {run:.3f} s "
-          f"(real-time factor {simulated / run:.0f}; set-up {res.wall['setup']:.3f} s, "
-          f"all {wall:.2f} s), dt = {res.dt * 1e3:g} ms, "
-          f"{res.params['contact']['creep_method'] if not args.method else args.method}")
+    print(f"rollerrig {__version__}: {res.duration:g} s simulated in {run:.3f} s "
+          f"(real-time factor {res.duration / run:.0f}; set-up {res.wall['setup']:.3f} s, "
+          f"all {wall:.2f} s), dt = {res.dt * 1e3:g} ms"
+          f"{f', one sample in {res.record_every} recorded' if res.record_every > 1 else ''}"
+          f", {res.method}")
     print(res.table())
-    os.makedirs(args.out, exist_ok=True)
-    path = os.path.join(args.out, "rig_history.csv")
-    with open(path, "w", newline="") as fh:
-        w = csv.writer(fh)
-        w.writerow(rig.RECORD_FIELDS)
-        w.writerows(res.records.tolist())
-    print(f"wrote {path}")
+    written, failure = [], None
     try:
+        written.append(res.to_csv(os.path.join(args.out, "rig_history.csv")))
+        from ._optional import require
+        # files only: no window, whatever the environment's default backend
+        require("matplotlib", "rollerrig simulate's figures", "plot").use("Agg")
         from .plot import plot_run
-        for p in plot_run(res, args.out):
-            print(f"wrote {p}")
-    except ImportError:
-        print("matplotlib is not importable: no figures (it is a dependency of rollerrig; "
-              "pip install matplotlib)")
+        written += plot_run(res, args.out)
+    except OSError as e:
+        failure = (f"--out {args.out}: cannot write the outputs"
+                   f"{f' ({e.filename})' if e.filename else ''}: {e.strerror or e}")
+    except ImportError as e:
+        print(f"{PROG}: no figures: {e}", file=sys.stderr)
+    for path in written:
+        print(f"wrote {path}")
+    if failure:
+        print(f"{PROG}: {failure}", file=sys.stderr)
+        return 2
     if res.status < 0:
-        print(f"rollerrig simulate: {res.message}", file=sys.stderr)
+        print(f"{PROG}: {res.message}", file=sys.stderr)
         return 1
+    if res.status > 0:
+        print(f"{PROG}: warning: {res.message}", file=sys.stderr)
     return 0
+
+
+def _unprefixed(message):
+    """A message of rollerrig.simulate without its "simulate: " (the command
+    line names itself)."""
+    text = str(message)
+    return text[len("simulate: "):] if text.startswith("simulate: ") else text
+
+
+def _positive_int(text):
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be an integer >= 1, got {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be an integer >= 1, got {text!r}")
+    return value
 
 
 def build_parser():
@@ -66,15 +144,22 @@ def build_parser():
                        description="Run the roller rig: by default the seed paper's scenario "
                        "(roller at 5 m/s, braking under creepage control to 0.04, 0.015, "
                        "0.02, 0.03) on the default parameters; print a table per target and "
-                       "write the time histories (CSV) and the figures (PNG).")
+                       "write the time histories (CSV) and the figures (PNG).  Exit status "
+                       "0: done, 1: the run stopped early, 2: bad input.")
     p.add_argument("--scenario", metavar="TOML", help="parameter file overriding the defaults "
                    "(the layout of rollerrig/data/rig_default.toml; any subset of it)")
-    p.add_argument("--duration", type=float, help="simulated time [s]")
+    p.add_argument("--duration", type=float, help="simulated time [s] (default the "
+                   "scenario's duration_s, 20); the scenario's target start times are kept "
+                   "when they fall inside it, otherwise scaled to it (with a warning)")
     p.add_argument("--dt", type=float, help="control sample time and step [s] (default 0.004)")
     p.add_argument("--method", help="creep-force method: fastsim, fastsim_blended, "
                    "modified_fastsim, polach, linear")
-    p.add_argument("--out", default="rollerrig-out", help="output folder (default "
-                   "./rollerrig-out)")
+    p.add_argument("--record-every", type=_positive_int, default=1, metavar="K",
+                   help="record every K-th sample only (long runs: the records are capped "
+                   "at 1 GiB)")
+    p.add_argument("--out", default="rollerrig-out", help="output folder, created if needed "
+                   "(default ./rollerrig-out); its rig_history.csv, rig_creepage.png and "
+                   "rig_force.png are replaced")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.set_defaults(func=_simulate)
     return parser
@@ -87,7 +172,13 @@ def main(argv=None):
     if func is None:
         parser.print_help()
         return 0
-    return func(args)
+    try:
+        return func(args)
+    except BrokenPipeError:
+        # the reader of stdout went away (rollerrig simulate | head): no
+        # traceback; stdout to devnull so that the exit's flush stays quiet
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 1
 
 
 if __name__ == "__main__":

@@ -51,7 +51,8 @@ The fit
     not fit the data exactly they measure how well the misfit pins the
     parameters, not the physics.
 
-scipy is needed here only (pip install scipy).
+scipy is needed here only: the extra "fit" (pip install 'rollerrig[fit]');
+without it the fits raise an ImportError naming the extra.
 """
 from dataclasses import dataclass, field
 import math
@@ -59,6 +60,7 @@ import math
 import numpy as np
 
 from ._errors import RollerRigError
+from ._optional import require
 from .contact import FallingFriction, creep_forces
 
 __all__ = ["FitResult", "fit_polach", "fit_modified_fastsim", "POLACH_PARAMETERS",
@@ -365,10 +367,7 @@ def _covariance(J, r):
 
 def _fit(func, model, spec, cx, force, a, b, N, G, nu, speed, cy, cphi, fit, x0, bounds,
          loss, f_scale, weights, extra):
-    try:
-        from scipy.optimize import least_squares
-    except ImportError as e:        # pragma: no cover - scipy is in the test extra
-        raise ImportError(f"{func} needs scipy: pip install scipy") from e
+    least_squares = require("scipy.optimize", func, "fit", package="scipy").least_squares
     cxs, fs, speeds, ws, many = _data(func, cx, force, speed, weights)
     settings = dict(a=_scalar(func, "a", a), b=_scalar(func, "b", b), N=_scalar(func, "N", N),
                     G=_scalar(func, "G", G), nu=_scalar(func, "nu", nu, positive=False),

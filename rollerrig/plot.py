@@ -21,6 +21,7 @@ import os
 import numpy as np
 
 from ._errors import RollerRigError
+from ._optional import require
 
 __all__ = ["creep_curve", "creep_curves", "traction_field", "rig_history", "rig_force",
            "profiles", "fit", "plot_run", "TRACTION_QUANTITIES"]
@@ -41,11 +42,8 @@ TRACTION_QUANTITIES = {
 # ------------------------------------------------------------------ helpers
 
 def _pyplot():
-    try:
-        import matplotlib.pyplot as plt
-    except ImportError as e:          # pragma: no cover - matplotlib is a dependency
-        raise ImportError("rollerrig.plot needs matplotlib: pip install matplotlib") from e
-    return plt
+    # matplotlib is a dependency of the base install, but may have been left out
+    return require("matplotlib.pyplot", "rollerrig.plot", "plot", package="matplotlib")
 
 
 def _one_axes(func, ax, figsize):
@@ -389,54 +387,80 @@ def _check_result(func, res):
     return res
 
 
+def _drive_sense(res):
+    """(+1, "braking") or (-1, "traction"): the sign that makes the
+    recorded creepage cx (Kalker's sign: > 0 braking) the controller's
+    positive creepage, and -fx (fx on the wheel: < 0 braking) the force the
+    drive works against."""
+    mode = res.params.get("scenario", {}).get("drive_mode", "braking")
+    return (-1, "traction") if mode == "traction" else (1, "braking")
+
+
 def rig_history(res, axes=None, *, title=True):
     """The seed paper's Fig. 7: creepage (contact model, encoder estimate,
     target) and the roller and wheel surface speeds against time, two panels
-    sharing the time axis.  axes: None or two axes.  Returns the two axes
-    (creepage: 3 lines; speeds: 2 lines)."""
+    sharing the time axis.  The creepage is drawn in the drive's sense, as
+    the targets are: cx (Kalker's sign) when braking, -cx when driving.
+    axes: None or two axes.  Returns the two axes (creepage: 3 lines;
+    speeds: 2 lines)."""
     func = "rig_history"
     _check_result(func, res)
     fig, (ax1, ax2), made = _many_axes(func, axes, 2, (8, 6.4), sharex=True)
+    sense, mode = _drive_sense(res)
+    cx = "cx" if sense > 0 else "-cx"
     t = res.time
-    ax1.plot(t, res.creepage, lw=0.8, label="creepage (contact model)")
+    ax1.plot(t, sense * res.creepage, lw=0.8, label=f"creepage {cx} (contact model, mean of "
+             "both wheels)")
     ax1.plot(t, res.xi_est, lw=0.6, alpha=0.7, label="estimate from the encoders (eq. 16)")
     ax1.step(t, res.xi_ref, where="post", color="k", lw=1.0, ls="--", label="target")
-    ax1.set_ylabel("longitudinal creepage [-]")
+    ax1.set_ylabel(f"longitudinal creepage {cx} [-]")
     ax1.legend(fontsize=8, loc="upper right")
     ax1.grid(alpha=0.3)
     ax2.plot(t, res.roller_speed, label="roller surface speed")
     ax2.plot(t, res.wheelset_speed, label="wheel surface speed")
     ax2.set_xlabel("time [s]")
-    ax2.set_ylabel("speed [m/s]")
+    ax2.set_ylabel("surface speed [m/s]")
     ax2.legend(fontsize=8, loc="lower right")
     ax2.grid(alpha=0.3)
     if title and made:
         mu0 = res.params["scenario"]["mu0"]
-        fig.suptitle(f"Braking under creepage control (mu0 = {mu0}, dt = {res.dt * 1e3:g} ms):"
-                     " creepage and speeds (paper Fig. 7)", fontsize=10)
+        sign = "> 0 when braking" if sense > 0 else "cx < 0 when driving"
+        fig.suptitle(f"{mode.capitalize()} under creepage control (mu0 = {mu0}, dt = "
+                     f"{res.dt * 1e3:g} ms, {res.method or 'creep model'}): paper Fig. 7\n"
+                     f"creepage {cx} \u2248 {'' if sense > 0 else '-'}(roller \u2212 wheel "
+                     f"surface speed) / mean speed ({sign})", fontsize=9.5)
         fig.tight_layout()
     return np.array([ax1, ax2], dtype=object)
 
 
 def rig_force(res, ax=None, *, title=True):
-    """The seed paper's Fig. 8: the adhesion (braking) force of both wheels
-    against time, with mu0 N.  Returns the axes (2 lines)."""
+    """The seed paper's Fig. 8: the longitudinal creep force of both wheels
+    against time, in the sense the drive works against (braking: -fx, since
+    fx on the wheel is < 0 when braking; driving: fx), with the friction
+    limit mu0 N (N both wheels' normal loads).  Returns the axes (2 lines)."""
     func = "rig_force"
     _check_result(func, res)
     fig, ax, made = _one_axes(func, ax, (8, 3.6))
+    sense, mode = _drive_sense(res)
+    fx = "-fx" if sense > 0 else "fx"
     t = res.time
     mu0 = res.params["scenario"]["mu0"]
-    ax.plot(t, -res.fx, lw=0.8, label="adhesion (braking) force, both wheels")
-    ax.plot(t, mu0 * res.normal_load, color="k", ls=":", label="mu0 N")
+    force, limit = -sense * res.fx, mu0 * res.normal_load
+    ax.plot(t, force, lw=0.8, label=f"{mode} force {fx} on the wheels (both)")
+    ax.plot(t, limit, color="k", ls=":", label=f"friction limit mu0 N (mu0 = {mu0:g}, N "
+            "both normal loads)")
     ax.set_xlabel("time [s]")
-    ax.set_ylabel("force [N]")
-    top = np.nanmax(res.normal_load) if np.any(np.isfinite(res.normal_load)) else np.nan
-    if np.isfinite(top) and top > 0:
-        ax.set_ylim(0, 1.1 * mu0 * top)
+    ax.set_ylabel(f"{mode} force {fx} [N]")
+    shown = np.concatenate([force[np.isfinite(force)], limit[np.isfinite(limit)]])
+    if shown.size and np.max(shown) > 0:         # the whole curve, also past the limit
+        ax.set_ylim(min(0.0, 1.1 * np.min(shown)), 1.1 * np.max(shown))
     ax.legend(fontsize=8, loc="lower right")
     ax.grid(alpha=0.3)
     if title:
-        ax.set_title("Adhesion force (paper Fig. 8)", fontsize=10)
+        sign = "fx < 0 on the wheel when braking" if sense > 0 else \
+            "fx > 0 on the wheel when driving"
+        ax.set_title(f"Longitudinal creep force {fx} ({sign}) and its limit mu0 N "
+                     f"(paper Fig. 8)", fontsize=9)
     if made:
         fig.tight_layout()
     return ax
@@ -444,22 +468,25 @@ def rig_force(res, ax=None, *, title=True):
 
 def plot_run(res, outdir, prefix="rig"):
     """Write <prefix>_creepage.png (Fig. 7) and <prefix>_force.png (Fig. 8)
-    for RigResult `res` into outdir; returns the paths."""
-    import matplotlib
-    matplotlib.use("Agg")
-    plt = _pyplot()
+    for RigResult `res` into outdir (created if needed); returns the paths.
+    Each file is written new and renamed over its name, so a symlink at
+    that name is replaced, never written through."""
+    plt = _pyplot()          # the backend is the caller's (rollerrig simulate: Agg)
+    from .rig import write_replacing
 
     _check_result("plot_run", res)
     os.makedirs(outdir, exist_ok=True)
     paths = []
-    axes = rig_history(res)
-    paths.append(os.path.join(outdir, f"{prefix}_creepage.png"))
-    axes[0].figure.savefig(paths[-1], dpi=130)
-    plt.close(axes[0].figure)
-    ax = rig_force(res)
-    paths.append(os.path.join(outdir, f"{prefix}_force.png"))
-    ax.figure.savefig(paths[-1], dpi=130)
-    plt.close(ax.figure)
+    for name, draw in (("creepage", lambda: rig_history(res)[0].figure),
+                       ("force", lambda: rig_force(res).figure)):
+        fig = draw()
+        path = os.path.join(outdir, f"{prefix}_{name}.png")
+        try:
+            write_replacing(path, lambda fh: fig.savefig(fh, format="png", dpi=130),
+                            binary=True)
+        finally:
+            plt.close(fig)
+        paths.append(path)
     return paths
 
 

@@ -36,6 +36,7 @@ from typing import NamedTuple, Optional
 import numpy as np
 
 from ._errors import RollerRigError
+from ._optional import require
 from .contact import FallingFriction, creep_forces
 
 __all__ = ["ExactCases", "ScoreResult", "CreepCurve", "CurveScore", "exact_cases", "score",
@@ -313,10 +314,12 @@ def error_map(result, ax=None, *, spin=None, quantity="force", reduce="max",
     the one a/b `ellipticity`.  quantity: "force" (|dF|/(mu N)) or "mz"
     (|dMz|/(mu N cp)).  vmax: top of the colour scale (default the largest
     value drawn).  colorbar: add one (default: when a figure is made here).
-    Returns the axes (an array for several panels).  Needs matplotlib.
+    Returns the axes (an array for several panels).  Needs matplotlib (a
+    dependency of the base install; extra "plot").
     """
     func = "error_map"
-    import matplotlib.pyplot as plt
+    plt = require("matplotlib.pyplot", "rollerrig.reference.error_map", "plot",
+                  package="matplotlib")
 
     if not isinstance(result, ScoreResult):
         raise RollerRigError(f"{func}: result must be a ScoreResult from score(), "

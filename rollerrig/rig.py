@@ -5,7 +5,9 @@
     res.time, res.creepage, res.fx                # named numpy arrays, one value per sample
     res = rr.simulate(duration=4.0, dt=0.004, method="polach",
                       params={"scenario": {"mu0": 0.3}}, targets=[0.02])
+    res = rr.simulate(params="my.toml")           # a parameter file: any subset of the defaults
     res.summary()                                 # per target: creepage reached, settling, ...
+    res.to_xarray(), res.to_dataframe()           # with xarray / pandas (extra "sweep")
 
 The model (csrc/rr_rig.h): a wheelset on two rigidly joined rollers, its
 axle boxes on springs and dampers, normal loads from its vertical and roll
@@ -16,20 +18,31 @@ controller (eq. 13-16), sampled every dt; the plant is integrated between
 samples by a fixed-step L-stable method.  Default parameters:
 rollerrig/data/rig_default.toml, every value with its origin
 (docs/parameters.md).
+
+Parameters are checked as a whole (check_parameters): every unknown key,
+every bad value and every documentation-only key given a new value is
+reported at once, in one RollerRigError that names the file or `params`.
 """
 import copy
+import difflib
 import functools
+import json
 import math
+import numbers
 import os
+import secrets
+import stat
 import sys
 import time
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
 
 from . import _core
-from ._errors import RollerRigError, status_message
-from .contact import _options
+from ._errors import RollerRigError, RollerRigWarning, status_message
+from ._optional import require
+from .contact import METHODS, _options
 from .rig_contact import elastic_constants
 from .geometry import RigGeometry, contact_table
 from .profiles import Profile
@@ -39,32 +52,159 @@ try:
 except ImportError:                                     # Python < 3.11
     import tomli as tomllib
 
-__all__ = ["default_parameters", "load_parameters", "build_rig", "simulate", "replay",
-           "RigResult", "RECORD_FIELDS"]
+__all__ = ["default_parameters", "load_parameters", "check_parameters", "build_rig",
+           "simulate", "replay", "RigResult", "RECORD_FIELDS", "RECORD_UNITS",
+           "RECORD_BYTES_CAP"]
 
 DEFAULTS_PATH = os.path.join(os.path.dirname(__file__), "data", "rig_default.toml")
 
-#: the per-sample record of the C rig (csrc/rr_rig.h, enum rr_rig_record_index)
-RECORD_FIELDS = ("time", "creepage", "xi_est", "xi_ref", "roller_speed", "wheelset_speed",
-                 "fx", "fy", "normal_load_left", "normal_load_right", "adhesion",
-                 "torque_roller", "torque_wheelset", "w_ref", "x", "y", "yaw",
-                 "creepage_left", "creepage_right", "torque_ref_roller",
-                 "torque_ref_wheelset", "vx", "vy", "yaw_rate", "spin", "roller_spin",
-                 "sample_status")
+#: the per-sample record of the C rig (csrc/rr_rig.h, enum rr_rig_record_index):
+#: (name, unit, meaning); each sample is recorded at its end
+RECORD = (
+    ("time", "s", "time at the end of the sample"),
+    ("creepage", "-", "longitudinal creepage cx of the contact model, mean of both contacts "
+     "(Kalker's sign: > 0 braking, < 0 traction)"),
+    ("xi_est", "-", "the creepage controller's estimate from the encoders (eq. 16), in the "
+     "drive's sense (> 0)"),
+    ("xi_ref", "-", "the creepage target (> 0; NaN before the first target starts)"),
+    ("roller_speed", "m/s", "roller surface speed, roller_spin R0"),
+    ("wheelset_speed", "m/s", "wheel surface speed, spin r0"),
+    ("fx", "N", "longitudinal creep force on the wheelset, both wheels (on the wheel: < 0 "
+     "braking, > 0 traction)"),
+    ("fy", "N", "lateral creep force on the wheelset, both wheels"),
+    ("normal_load_left", "N", "normal load of the left wheel"),
+    ("normal_load_right", "N", "normal load of the right wheel"),
+    ("adhesion", "-", "adhesion coefficient |fx| / (normal_load_left + normal_load_right)"),
+    ("torque_roller", "N m", "roller drive torque (after its lag)"),
+    ("torque_wheelset", "N m", "wheelset drive torque (after its lag)"),
+    ("w_ref", "rad/s", "wheelset speed reference of the creepage controller (eq. 15)"),
+    ("x", "m", "wheelset longitudinal position"),
+    ("y", "m", "wheelset lateral position (+: to the left)"),
+    ("yaw", "rad", "wheelset yaw angle"),
+    ("creepage_left", "-", "longitudinal creepage of the left contact"),
+    ("creepage_right", "-", "longitudinal creepage of the right contact"),
+    ("torque_ref_roller", "N m", "roller torque reference held over the sample"),
+    ("torque_ref_wheelset", "N m", "wheelset torque reference held over the sample"),
+    ("vx", "m/s", "wheelset longitudinal velocity"),
+    ("vy", "m/s", "wheelset lateral velocity"),
+    ("yaw_rate", "rad/s", "wheelset yaw rate"),
+    ("spin", "rad/s", "wheelset angular speed about its axle"),
+    ("roller_spin", "rad/s", "roller angular speed"),
+    ("sample_status", "-", "status of the sample: 0 OK, > 0 warning, < 0 error "
+     "(rollerrig.status_message)"),
+)
+RECORD_FIELDS = tuple(name for name, _, _ in RECORD)
+#: the unit of each record field ("-": dimensionless)
+RECORD_UNITS = {name: unit for name, unit, _ in RECORD}
+_RECORD_MEANING = {name: meaning for name, _, meaning in RECORD}
+
+#: the default cap on the memory of a run's records [bytes]: 1 GiB, about
+#: 5 million samples (5.5 hours at the 4 ms sample); simulate refuses a run
+#: whose records would not fit and says which record_every would
+RECORD_BYTES_CAP = 1 << 30
+_BYTES_PER_SAMPLE = 8 * len(RECORD_FIELDS)
+# samples stepped per call into the C loop: bounds the temporary records
+# (14 MB) whatever the run's length and decimation
+_CHUNK_SAMPLES = 1 << 16
 
 ODE_METHODS = {"ros2": _core.ODE_ROS2, "trbdf2": _core.ODE_TRBDF2,
                "lineuler": _core.ODE_LINEULER}
 
+MIN_DT, MAX_DT = 1e-6, 0.1          # control sample time [s]
+MAX_DURATION = 1e5                  # simulated time [s] (27.8 h)
+MAX_PARAMETER_FILE_BYTES = 1 << 20  # the default file is 12 kB
+_INT32_MAX = 2 ** 31 - 1            # the C fields are int
+
+
+# ------------------------------------------------------------------ reading files
+
+class _Problems(Exception):
+    """What is wrong with a parameter set or file: a list of sentences, each
+    naming its key; the public functions turn it into one RollerRigError."""
+
+    def __init__(self, problems):
+        super().__init__(problems)
+        self.problems = list(problems)
+
+
+_SHOWN_PROBLEMS = 30     # a file of thousands of bad keys gives a readable message
+
+
+def _error(source, problems):
+    if len(problems) == 1:
+        return RollerRigError(f"{source}: {problems[0]}")
+    shown = [f"  {p}" for p in problems[:_SHOWN_PROBLEMS]]
+    if len(problems) > _SHOWN_PROBLEMS:
+        shown.append(f"  ... and {len(problems) - _SHOWN_PROBLEMS} more")
+    return RollerRigError(f"{source}: {len(problems)} problems:\n" + "\n".join(shown))
+
+
+def _short(value, width=60):
+    text = repr(value)
+    return text if len(text) <= width else text[:width - 3] + "..."
+
+
+def _read_parameter_file(path):
+    """The parsed TOML of `path`, or _Problems saying why not.  Only a
+    regular file of at most MAX_PARAMETER_FILE_BYTES of UTF-8 is read (a
+    FIFO is never waited on, a device never read from)."""
+    try:
+        # O_NONBLOCK: opening a FIFO for reading must not wait for a writer;
+        # the type is then checked on the open descriptor, so it cannot change
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0)
+                     | getattr(os, "O_BINARY", 0))
+    except IsADirectoryError:
+        raise _Problems(["is a directory, not a parameter file"]) from None
+    except OSError as e:
+        raise _Problems([f"cannot open it: {e.strerror or e}"]) from None
+    try:
+        info = os.fstat(fd)
+        if stat.S_ISDIR(info.st_mode):
+            raise _Problems(["is a directory, not a parameter file"])
+        if not stat.S_ISREG(info.st_mode):
+            raise _Problems(["is not a regular file (a FIFO, a device or a socket); give a "
+                             "TOML parameter file"])
+        if info.st_size > MAX_PARAMETER_FILE_BYTES:
+            raise _Problems([f"is {info.st_size} bytes; a parameter file is at most "
+                             f"{MAX_PARAMETER_FILE_BYTES} bytes (rig_default.toml: 12 kB)"])
+        with os.fdopen(fd, "rb") as fh:
+            fd = None
+            data = fh.read(MAX_PARAMETER_FILE_BYTES + 1)
+    except OSError as e:
+        raise _Problems([f"cannot read it: {e.strerror or e}"]) from None
+    finally:
+        if fd is not None:
+            os.close(fd)
+    if len(data) > MAX_PARAMETER_FILE_BYTES:             # grew while being read
+        raise _Problems([f"is more than {MAX_PARAMETER_FILE_BYTES} bytes"])
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as e:
+        raise _Problems([f"is not UTF-8 text (byte {e.start}); a parameter file is TOML "
+                         f"text"]) from None
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as e:
+        raise _Problems([f"is not valid TOML: {e}"]) from None
+    except RecursionError:
+        raise _Problems(["is nested too deeply or malformed (TOML arrays or tables inside "
+                         "each other beyond Python's recursion limit)"]) from None
+
 
 def load_parameters(path):
-    """A parameter file (TOML, the layout of rig_default.toml) as a nested dict."""
-    with open(path, "rb") as fh:
-        return tomllib.load(fh)
+    """A parameter file (TOML, the layout of rig_default.toml, any subset of
+    it) as a nested dict, not yet checked (check_parameters does).  Raises
+    RollerRigError naming the file and why: missing, a directory or FIFO,
+    over 1 MiB, not UTF-8, not TOML, nested too deeply."""
+    try:
+        return _read_parameter_file(path)
+    except _Problems as p:
+        raise _error(f"load_parameters: {os.fspath(path)}", p.problems) from None
 
 
 @functools.lru_cache(maxsize=1)
 def _defaults():
-    return load_parameters(DEFAULTS_PATH)
+    return _read_parameter_file(DEFAULTS_PATH)
 
 
 def default_parameters():
@@ -72,127 +212,300 @@ def default_parameters():
     return copy.deepcopy(_defaults())
 
 
-def _merge(base, over, where=""):
-    """Override nested dict `base` by `over`, refusing unknown keys."""
+# ------------------------------------------------------------------ checking parameters
+
+def _real(lo=-math.inf, hi=math.inf, lo_open=False, hi_open=False):
+    """A check: a finite real number in the interval."""
+    if lo == -math.inf and hi == math.inf:
+        need = ""
+    elif hi == math.inf:
+        need = f" {'>' if lo_open else '>='} {lo:g}"
+    else:
+        need = f" in {'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
+
+    def check(v):
+        ok = isinstance(v, numbers.Real) and not isinstance(v, bool)
+        if ok:
+            try:
+                x = float(v)
+            except OverflowError:                        # an int beyond a double
+                ok = False
+            else:
+                ok = (math.isfinite(x) and (x > lo if lo_open else x >= lo)
+                      and (x < hi if hi_open else x <= hi))
+        return None if ok else f"must be a finite number{need}"
+    return check
+
+
+def _integer(lo, hi):
+    def check(v):
+        ok = isinstance(v, numbers.Integral) and not isinstance(v, bool) and lo <= v <= hi
+        return None if ok else f"must be an integer from {lo} to {hi}"
+    return check
+
+
+def _choice(*values):
+    shown = " or ".join(repr(v) for v in values)
+
+    def check(v):
+        return None if isinstance(v, str) and v in values else f"must be {shown}"
+    return check
+
+
+def _flag(v):
+    return None if isinstance(v, bool) else "must be true or false"
+
+
+def _numbers(item, need):
+    """A check: a non-empty list of numbers, each passing `item`."""
+    def check(v):
+        if not isinstance(v, (list, tuple)) or not v or any(item(x) for x in v):
+            return f"must be a non-empty list of {need}"
+        return None
+    return check
+
+
+_POSITIVE = _real(0.0, lo_open=True)
+_NONNEG = _real(0.0)
+
+#: the check of every key the model reads
+_RULES = {
+    "scenario": {
+        "roller_speed_m_s": _real(),
+        "targets": _numbers(_real(0.0, 1.0, hi_open=True), "creepages in [0, 1)"),
+        "target_start_s": _numbers(_NONNEG, "times >= 0 s"),
+        "duration_s": _real(0.0, MAX_DURATION, lo_open=True),
+        "mu0": _POSITIVE,
+        "drive_mode": _choice("braking", "traction"),
+        "control_sample_time_s": _real(MIN_DT, MAX_DT),
+        "g_m_s2": _NONNEG,
+    },
+    "wheelset": {
+        "mass_kg": _POSITIVE, "spin_inertia_kg_m2": _POSITIVE,
+        "yaw_inertia_kg_m2": _POSITIVE, "wheel_radius_m": _POSITIVE,
+        "contact_half_spacing_m": _POSITIVE, "axlebox_half_spacing_m": _POSITIVE,
+        "profile": _choice("conical"), "conicity": _NONNEG,
+        "profile_half_width_m": _POSITIVE,
+    },
+    "roller": {
+        "radius_m": _POSITIVE, "profile": _choice("crowned cylinder"),
+        "crown_radius_m": _POSITIVE, "inertia_kg_m2": _POSITIVE,
+    },
+    "suspension": {
+        **{k: _NONNEG for k in ("kx_N_per_m", "ky_N_per_m", "kz_N_per_m", "cx_N_s_per_m",
+                                "cy_N_s_per_m", "cz_N_s_per_m", "preload_total_N")},
+    },
+    "contact": {
+        "youngs_modulus_Pa": _POSITIVE, "poisson_ratio": _real(0.0, 0.5),
+        "creep_method": _choice(*METHODS),
+        "fastsim_nx": _integer(1, _core.FASTSIM_MAX_GRID),
+        "fastsim_ny": _integer(1, _core.FASTSIM_MAX_GRID),
+        "fastsim_slip_speed": _choice("rigid", "local"),
+        "friction_law": _choice("polach_falling", "coulomb"),
+        "polach_A": _real(0.0, 1.0, lo_open=True), "polach_B_s_per_m": _NONNEG,
+        "polach_kA": _real(0.0, 1.0, lo_open=True), "polach_kS": _real(0.0, 1.0, lo_open=True),
+        "min_rolling_speed_m_s": _POSITIVE,
+    },
+    **{drive: {
+        "kp_N_m_s_per_rad": _NONNEG, "ki_N_m_s_per_rad": _NONNEG,
+        "torque_limit_N_m": _POSITIVE, "lag_time_constant_s": _POSITIVE,
+        "encoder_counts_per_rev": _integer(1, _INT32_MAX),
+        **({"drive_inertia_kg_m2": _NONNEG} if drive == "wheelset_drive" else {}),
+    } for drive in ("roller_drive", "wheelset_drive")},
+    "creepage_controller": {
+        "alpha": _NONNEG, "beta": _NONNEG, "min_reference_speed_m_s": _POSITIVE,
+    },
+    "integration": {
+        "method": _choice(*ODE_METHODS), "newton_iterations": _integer(0, 10),
+        "linear_first_stage": _flag, "newton_model": _flag, "substeps": _integer(1, 1000),
+        "table_half_range_m": _POSITIVE, "table_rows": _integer(2, 100_000),
+    },
+}
+
+#: keys (or whole sections) that document where the defaults come from and
+#: that the model does not read, with what sets the quantity instead: giving
+#: them another value is refused, since it would change nothing
+DOCUMENTATION = {
+    "similarity": "it documents the similarity law the defaults were scaled by",
+    "full_scale_reference": "it documents the full-scale values the defaults were scaled from",
+    "scenario.initial_condition": "simulate's start argument sets it: 'rolling' or 'rest'",
+    "wheelset.roll_inertia_kg_m2": "the wheelset's roll follows the contact constraint; the "
+                                   "model has no roll dynamics",
+    "wheelset.contact_angle_rad": "the cone's angle follows from wheelset.conicity",
+    "roller.contact_half_spacing_m": "the crowns sit under wheelset.contact_half_spacing_m",
+    "roller.width_m": "it entered the estimate of roller.inertia_kg_m2 only",
+    "roller.rigidly_joined": "the model's two rollers are always on one shaft",
+    "suspension.preload_per_axlebox_N": "it is half of suspension.preload_total_N, which acts",
+    "contact.normal_model": "the model's normal loads are always the 'balance' ones",
+    "roller_drive.gear_ratio": "gains, torques and inertias are referred to the roller "
+                               "axle, ratio 1",
+    "wheelset_drive.gear_ratio": "gains, torques and inertias are referred to the wheelset "
+                                 "axle, ratio 1",
+}
+
+
+def _documentation(name):
+    return DOCUMENTATION.get(name) or DOCUMENTATION.get(name.split(".", 1)[0])
+
+
+def _merge(base, over, problems, where=""):
+    """Override nested dict `base` by `over` in place, appending a sentence
+    to `problems` for each key that cannot be taken."""
     for key, value in over.items():
         name = f"{where}{key}"
-        if key not in base:
-            raise RollerRigError(f"params: unknown parameter '{name}'")
-        if isinstance(base[key], dict):
+        if not isinstance(key, str) or key not in base:
+            near = difflib.get_close_matches(str(key), [k for k in base if isinstance(k, str)],
+                                             n=1)
+            hint = f" (did you mean '{where}{near[0]}'?)" if near else ""
+            problems.append(f"unknown parameter '{name}'{hint}")
+            continue
+        default = base[key]
+        if isinstance(default, dict):
             if not isinstance(value, dict):
-                raise RollerRigError(f"params: '{name}' is a section; give a dict")
-            _merge(base[key], value, name + ".")
-        else:
-            base[key] = value
+                problems.append(f"'{name}' is a section: give a table of its keys, got "
+                                f"{_short(value)}")
+            else:
+                _merge(default, value, problems, name + ".")
+            continue
+        if isinstance(value, dict):
+            problems.append(f"{name} is a value, not a section, got a table")
+            continue
+        reason = _documentation(name)
+        if reason is not None and value != default:
+            problems.append(f"{name} does not act on the model ({reason}); it cannot be "
+                            f"changed from {default!r}, got {_short(value)}")
+            continue
+        base[key] = value
 
 
-def _number(params, section, key, positive=False, nonneg=False):
-    v = params[section][key]
-    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) \
-            or (positive and v <= 0) or (nonneg and v < 0):
-        need = " > 0" if positive else " >= 0" if nonneg else ""
-        raise RollerRigError(f"params: {section}.{key} must be a finite number{need}, "
-                             f"got {v!r}")
-    return float(v)
+def _check_values(P):
+    """Sentences for every value of the merged parameters that breaks its
+    rule, then for the rules between keys."""
+    problems = []
+    for section, rules in _RULES.items():
+        for key, rule in rules.items():
+            v = P[section][key]
+            need = rule(v)
+            if need:
+                problems.append(f"{section}.{key} {need}, got {_short(v)}")
+    bad = {p.split(" ", 1)[0] for p in problems}
+    S, C = P["scenario"], P["contact"]
+    if not bad & {"scenario.targets", "scenario.target_start_s"}:
+        targets, starts = S["targets"], S["target_start_s"]
+        if len(targets) != len(starts):
+            problems.append(f"scenario.targets has {len(targets)} entries but "
+                            f"scenario.target_start_s has {len(starts)}: give one start "
+                            f"time per target")
+        elif any(b <= a for a, b in zip(starts, starts[1:])):
+            problems.append(f"scenario.target_start_s must increase (one start time per "
+                            f"entry of scenario.targets, in order), got {_short(starts)}")
+        elif "scenario.duration_s" not in bad and starts[-1] >= S["duration_s"]:
+            problems.append(f"scenario.target_start_s must fall inside scenario.duration_s "
+                            f"= {S['duration_s']!r} s, got {_short(starts)}")
+    if not bad & {"contact.polach_kA", "contact.polach_kS"} \
+            and C["polach_kS"] > C["polach_kA"]:
+        problems.append(f"contact.polach_kS must be at most contact.polach_kA = "
+                        f"{C['polach_kA']!r} (Polach: kS <= kA), got {C['polach_kS']!r}")
+    return problems
 
 
-def _flag(P, section, key):
-    v = P[section][key]
-    if not isinstance(v, bool):
-        raise RollerRigError(f"params: {section}.{key} must be true or false, got {v!r}")
-    return v
+def check_parameters(params=None, *, source="check_parameters: params"):
+    """The default parameters overridden by `params` (a nested dict as the
+    layout of rig_default.toml, any subset of it), every value checked.
+
+    Returns the merged nested dict.  Raises one RollerRigError, prefixed by
+    `source`, that lists every problem at once: unknown keys, values out of
+    range (the message names the key, the range and the value), a section
+    given a value or the reverse, the lengths and order of
+    scenario.targets / target_start_s, and a documentation-only key
+    (DOCUMENTATION: the similarity law, the full-scale reference, the gear
+    ratios, ...) given a value other than its default: such a key does not
+    act on the model.
+    """
+    if params is not None and not isinstance(params, dict):
+        raise RollerRigError(f"{source} must be a nested dict (or, for simulate and "
+                             f"build_rig, the path of a TOML file), got "
+                             f"{type(params).__name__}")
+    P, problems = _parameter_problems(params)
+    if problems:
+        raise _error(source, problems)
+    return P
 
 
-def _newton_iterations(P):
-    k = P["integration"]["newton_iterations"]
-    if isinstance(k, bool) or not isinstance(k, int) or not 0 <= k <= 10:
-        raise RollerRigError(f"params: integration.newton_iterations must be an integer "
-                             f"from 0 to 10, got {k!r}")
-    return k
+def _parameter_problems(params):
+    """(the merged parameters, the list of their problems) of a nested dict."""
+    P = default_parameters()
+    problems = []
+    if params:
+        _merge(P, copy.deepcopy(params), problems)
+    return P, problems + _check_values(P)
 
+
+def _parameters(func, params):
+    """The checked parameters of a call: params None, a dict, or a file path."""
+    if params is None:
+        return default_parameters()
+    if isinstance(params, (str, os.PathLike)):
+        source = f"{func}: params {os.fspath(params)}"
+        try:
+            params = _read_parameter_file(params)
+        except _Problems as p:
+            raise _error(source, p.problems) from None
+        return check_parameters(params, source=source)
+    if not isinstance(params, dict):
+        raise RollerRigError(f"{func}: params must be a nested dict or the path of a TOML "
+                             f"file, got {type(params).__name__}")
+    return check_parameters(params, source=f"{func}: params")
+
+
+# ------------------------------------------------------------------ the C rig
 
 def _c_params(P, dt, substeps, ode):
-    """The C rig's parameter dict (rollerrig/_core.c, rig_fields) from a nested dict."""
-    n = _number
-    E = n(P, "contact", "youngs_modulus_Pa", positive=True)
-    nu = n(P, "contact", "poisson_ratio", nonneg=True)
-    if not nu < 0.5:
-        raise RollerRigError(f"params: contact.poisson_ratio must be in [0, 0.5), got {nu!r}")
-    law = P["contact"]["friction_law"]
-    if law == "coulomb":
+    """The C rig's parameter dict (rollerrig/_core.c, rig_fields) from checked parameters."""
+    def n(section, key):
+        return float(P[section][key])
+    C = P["contact"]
+    if C["friction_law"] == "coulomb":
         A, B = 1.0, 0.0
-    elif law == "polach_falling":
-        A, B = n(P, "contact", "polach_A", positive=True), n(P, "contact", "polach_B_s_per_m",
-                                                            nonneg=True)
     else:
-        raise RollerRigError(f"params: contact.friction_law must be 'coulomb' or "
-                             f"'polach_falling', got {law!r}")
-    sense = P["scenario"]["drive_mode"]
-    if sense not in ("braking", "traction"):
-        raise RollerRigError(f"params: scenario.drive_mode must be 'braking' or 'traction', "
-                             f"got {sense!r}")
-    counts = {}
-    for drive in ("roller_drive", "wheelset_drive"):
-        c = P[drive]["encoder_counts_per_rev"]
-        if isinstance(c, bool) or not isinstance(c, int) or c < 1:
-            raise RollerRigError(f"params: {drive}.encoder_counts_per_rev must be an integer "
-                                 f">= 1, got {c!r}")
-        counts[drive] = c
+        A, B = n("contact", "polach_A"), n("contact", "polach_B_s_per_m")
+    nu = n("contact", "poisson_ratio")
     return {
-        "mass": n(P, "wheelset", "mass_kg", positive=True),
-        "Iyy": n(P, "wheelset", "spin_inertia_kg_m2", positive=True)
-        + n(P, "wheelset_drive", "drive_inertia_kg_m2", nonneg=True),
-        "Izz": n(P, "wheelset", "yaw_inertia_kg_m2", positive=True),
-        "axlebox_y": n(P, "wheelset", "axlebox_half_spacing_m", positive=True),
-        "kx": n(P, "suspension", "kx_N_per_m", nonneg=True),
-        "ky": n(P, "suspension", "ky_N_per_m", nonneg=True),
-        "kz": n(P, "suspension", "kz_N_per_m", nonneg=True),
-        "cx": n(P, "suspension", "cx_N_s_per_m", nonneg=True),
-        "cy": n(P, "suspension", "cy_N_s_per_m", nonneg=True),
-        "cz": n(P, "suspension", "cz_N_s_per_m", nonneg=True),
-        "preload": n(P, "suspension", "preload_total_N", nonneg=True),
-        "g": n(P, "scenario", "g_m_s2", nonneg=True),
-        "roller_inertia": n(P, "roller", "inertia_kg_m2", positive=True),
-        "R0": n(P, "roller", "radius_m", positive=True),
-        **dict(zip(("estar", "G"), elastic_constants(E, nu))), "nu": nu,
-        "mu0": n(P, "scenario", "mu0", positive=True), "A": A, "B": B,
-        "vmin": n(P, "contact", "min_rolling_speed_m_s", positive=True),
+        "mass": n("wheelset", "mass_kg"),
+        "Iyy": n("wheelset", "spin_inertia_kg_m2") + n("wheelset_drive", "drive_inertia_kg_m2"),
+        "Izz": n("wheelset", "yaw_inertia_kg_m2"),
+        "axlebox_y": n("wheelset", "axlebox_half_spacing_m"),
+        **{k: n("suspension", f"{k}_N_per_m") for k in ("kx", "ky", "kz")},
+        **{k: n("suspension", f"{k}_N_s_per_m") for k in ("cx", "cy", "cz")},
+        "preload": n("suspension", "preload_total_N"), "g": n("scenario", "g_m_s2"),
+        "roller_inertia": n("roller", "inertia_kg_m2"), "R0": n("roller", "radius_m"),
+        **dict(zip(("estar", "G"), elastic_constants(n("contact", "youngs_modulus_Pa"), nu))),
+        "nu": nu, "mu0": n("scenario", "mu0"), "A": A, "B": B,
+        "vmin": n("contact", "min_rolling_speed_m_s"),
         "T": float(dt), "nsub": int(substeps), "ode_method": ODE_METHODS[ode],
-        "newton_iters": _newton_iterations(P),
-        "linear_tr": int(_flag(P, "integration", "linear_first_stage")),
-        "newton_model": int(_flag(P, "integration", "newton_model")),
-        "roller_Kp": n(P, "roller_drive", "kp_N_m_s_per_rad", nonneg=True),
-        "roller_KI": n(P, "roller_drive", "ki_N_m_s_per_rad", nonneg=True),
-        "roller_Tmax": n(P, "roller_drive", "torque_limit_N_m", positive=True),
-        "wheelset_Kp": n(P, "wheelset_drive", "kp_N_m_s_per_rad", nonneg=True),
-        "wheelset_KI": n(P, "wheelset_drive", "ki_N_m_s_per_rad", nonneg=True),
-        "wheelset_Tmax": n(P, "wheelset_drive", "torque_limit_N_m", positive=True),
-        "roller_tau": n(P, "roller_drive", "lag_time_constant_s", positive=True),
-        "wheelset_tau": n(P, "wheelset_drive", "lag_time_constant_s", positive=True),
-        "roller_counts": counts["roller_drive"], "wheelset_counts": counts["wheelset_drive"],
-        "r_w": n(P, "wheelset", "wheel_radius_m", positive=True),
-        "r_r": n(P, "roller", "radius_m", positive=True),
-        "ctl_alpha": n(P, "creepage_controller", "alpha", nonneg=True),
-        "ctl_beta": n(P, "creepage_controller", "beta", nonneg=True),
-        "ctl_vmin": n(P, "creepage_controller", "min_reference_speed_m_s", positive=True),
-        "sense": -1 if sense == "braking" else 1,
+        "newton_iters": int(P["integration"]["newton_iterations"]),
+        "linear_tr": int(P["integration"]["linear_first_stage"]),
+        "newton_model": int(P["integration"]["newton_model"]),
+        **{f"{d}_{c}": n(f"{d}_drive", key) for d in ("roller", "wheelset")
+           for c, key in (("Kp", "kp_N_m_s_per_rad"), ("KI", "ki_N_m_s_per_rad"),
+                          ("Tmax", "torque_limit_N_m"), ("tau", "lag_time_constant_s"))},
+        "roller_counts": int(P["roller_drive"]["encoder_counts_per_rev"]),
+        "wheelset_counts": int(P["wheelset_drive"]["encoder_counts_per_rev"]),
+        "r_w": n("wheelset", "wheel_radius_m"), "r_r": n("roller", "radius_m"),
+        "ctl_alpha": n("creepage_controller", "alpha"),
+        "ctl_beta": n("creepage_controller", "beta"),
+        "ctl_vmin": n("creepage_controller", "min_reference_speed_m_s"),
+        "sense": -1 if P["scenario"]["drive_mode"] == "braking" else 1,
     }
 
 
 def _geometry(P):
     """The conical wheel on the crowned roller (the paper's first stage) and its table."""
-    if P["wheelset"]["profile"] != "conical" or P["roller"]["profile"] != "crowned cylinder":
-        raise RollerRigError("params: the rig model takes wheelset.profile = 'conical' and "
-                             "roller.profile = 'crowned cylinder'")
-    r0 = _number(P, "wheelset", "wheel_radius_m", positive=True)
-    R0 = _number(P, "roller", "radius_m", positive=True)
-    hw = _number(P, "wheelset", "profile_half_width_m", positive=True)
-    alpha = math.atan(_number(P, "wheelset", "conicity", nonneg=True))
-    crown = _number(P, "roller", "crown_radius_m", positive=True)
-    span = _number(P, "wheelset", "contact_half_spacing_m", positive=True)
-    reach = _number(P, "integration", "table_half_range_m", positive=True)
-    rows = P["integration"]["table_rows"]
-    return _rig_table(r0, R0, hw, alpha, crown, span, reach, int(rows))
+    W, R, I = P["wheelset"], P["roller"], P["integration"]
+    return _rig_table(float(W["wheel_radius_m"]), float(R["radius_m"]),
+                      float(W["profile_half_width_m"]), math.atan(float(W["conicity"])),
+                      float(R["crown_radius_m"]), float(W["contact_half_spacing_m"]),
+                      float(I["table_half_range_m"]), int(I["table_rows"]))
 
 
 # The table is a pure function of these numbers and read-only, so runs on the
@@ -206,10 +519,14 @@ def _rig_table(r0, R0, hw, alpha, crown, span, reach, rows):
     return contact_table(g, -reach, reach, rows)
 
 
+#: the keyword options of simulate / build_rig / replay that go to the creep-force method
+CREEP_OPTIONS = ("bound", "grid", "slip_speed", "k0", "alpha_inf", "beta", "kA", "kS")
+
+
 def _creep_options(func, P, method, nx, ny, creep):
     """The creep-force method and its options: the parameters' contact
     section, overridden by the caller's (method, nx, ny, and `creep`:
-    bound, grid, slip_speed, k0, alpha_inf, beta, kA, kS)."""
+    CREEP_OPTIONS)."""
     C = P["contact"]
     opts = dict(method=method if method is not None else C["creep_method"],
                 nx=nx if nx is not None else C["fastsim_nx"],
@@ -218,70 +535,162 @@ def _creep_options(func, P, method, nx, ny, creep):
                 kA=C["polach_kA"], kS=C["polach_kS"])
     unknown = set(creep) - set(opts)
     if unknown:
-        raise RollerRigError(f"{func}: unknown option(s) {sorted(unknown)}")
+        raise RollerRigError(f"{func}: unknown option(s) {sorted(unknown)}; the creep "
+                             f"options are {list(CREEP_OPTIONS)}")
     opts.update(creep)
     return opts
 
 
-def schedule(P, duration, dt, targets, target_times, roller_speed):
-    """The references of each sample: roller speed [rad/s] and creepage
-    target (NaN before the first target's start)."""
+def schedule(P, duration, dt, targets, target_times, roller_speed, first=0, stop=None):
+    """The references of samples first <= k < stop (default: all of the
+    duration): roller speed [rad/s] and creepage target (NaN before the
+    first target's start).  Sample k starts at k dt."""
     n = int(round(duration / dt))
-    idx = np.searchsorted(np.asarray(target_times), np.arange(n) * dt, side="right") - 1
+    stop = n if stop is None else min(stop, n)
+    at = np.arange(first, stop) * dt
+    idx = np.searchsorted(np.asarray(target_times), at, side="right") - 1
     xi_ref = np.where(idx >= 0, np.asarray(targets, dtype=float)[np.clip(idx, 0, None)],
                       np.nan)
-    return np.full(n, roller_speed / P["roller"]["radius_m"]), xi_ref
+    return np.full(at.size, roller_speed / P["roller"]["radius_m"]), xi_ref
 
 
-def build_rig(params=None, *, dt=None, method=None, substeps=None, ode=None, nx=None, ny=None,
-              roller_speed=None, start="rolling", **creep):
-    """The C rig (rollerrig._core.Rig) and the merged parameters, for
-    stepping by hand (rig.sample / rig.advance / rig.rhs, e.g. to verify the
-    integrator against another solver).  Returns (rig, params, table)."""
-    P = default_parameters()
-    if params:
-        _merge(P, params)
+def _real_arg(func, name, v, lo=-math.inf, hi=math.inf, lo_open=False, unit=""):
+    need = _real(lo, hi, lo_open=lo_open)(v)
+    if need:
+        raise RollerRigError(f"{func}: {name} {need}{' ' + unit if unit else ''}, "
+                             f"got {_short(v)}")
+    return float(v)
+
+
+def _check_dt(func, dt):
+    return _real_arg(func, "dt", dt, MIN_DT, MAX_DT, unit="s")
+
+
+def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, creep):
+    """(the C rig, dt, roller speed [m/s], creep options) of checked parameters P."""
     S, I = P["scenario"], P["integration"]
-    dt = _check_dt(dt if dt is not None else S["control_sample_time_s"])
+    dt = _check_dt(func, dt if dt is not None else S["control_sample_time_s"])
     substeps = substeps if substeps is not None else I["substeps"]
-    if isinstance(substeps, bool) or not isinstance(substeps, int) or not 1 <= substeps <= 1000:
-        raise RollerRigError(f"simulate: substeps must be an integer from 1 to 1000, "
+    if _integer(1, 1000)(substeps):
+        raise RollerRigError(f"{func}: substeps must be an integer from 1 to 1000, "
                              f"got {substeps!r}")
     ode = ode if ode is not None else I["method"]
     if ode not in ODE_METHODS:
-        raise RollerRigError(f"simulate: ode must be one of {sorted(ODE_METHODS)}, got {ode!r}")
-    opts = _options("simulate", **_creep_options("simulate", P, method, nx, ny, creep))
-    V = roller_speed if roller_speed is not None else S["roller_speed_m_s"]
-    if not (isinstance(V, (int, float)) and math.isfinite(V)):
-        raise RollerRigError(f"simulate: roller_speed must be a finite number, got {V!r}")
+        raise RollerRigError(f"{func}: ode must be one of {sorted(ODE_METHODS)}, got {ode!r}")
+    opts = _creep_options(func, P, method, nx, ny, creep)
+    c_opts = _options(func, **opts)
+    V = _real_arg(func, "roller_speed", roller_speed if roller_speed is not None
+                  else S["roller_speed_m_s"], unit="m/s")
     if start not in ("rolling", "rest"):
-        raise RollerRigError(f"simulate: start must be 'rolling' or 'rest', got {start!r}")
+        raise RollerRigError(f"{func}: start must be 'rolling' or 'rest', got {start!r}")
     table = _geometry(P)
-    cp = _c_params(P, dt, substeps, ode)
+    cp = _c_params(P, dt, int(substeps), ode)
     # eq. 15-16 with the rolling radii of the centred wheelset, as a rig is
     # calibrated: the profiles' nominal radii would bias the creepage by
     # (r - r0)/r0 + (R0 - R)/R0, about 0.2 % of creepage here
     centre = table.lookup(0.0)
     cp["r_w"], cp["r_r"] = float(centre.left.r[0]), float(centre.left.R[0])
     try:
-        rig = _core.Rig(table.data, table.y0, table.dy, cp, opts,
+        rig = _core.Rig(table.data, table.y0, table.dy, cp, c_opts,
                         V / cp["R0"] if start == "rolling" else 0.0)
     except ValueError as e:
-        raise RollerRigError(f"simulate: {e}") from None
+        raise RollerRigError(f"{func}: {e}") from None
+    return rig, table, dt, V, opts["method"]
+
+
+def build_rig(params=None, *, dt=None, method=None, substeps=None, ode=None, nx=None, ny=None,
+              roller_speed=None, start="rolling", **creep):
+    """The C rig (rollerrig._core.Rig) and the merged parameters, for
+    stepping by hand (rig.sample / rig.advance / rig.rhs, e.g. to verify the
+    integrator against another solver).  Returns (rig, params, table).
+
+    params:  None (the defaults), a nested dict overriding rig_default.toml
+             or the path of a TOML file doing so; checked by
+             check_parameters (one RollerRigError listing every problem)
+    dt:      control sample time [s], 1e-6 to 0.1 (default
+             scenario.control_sample_time_s, 4 ms)
+    method, nx, ny, **creep: the creep-force method, its FASTSIM grid and
+             options (CREEP_OPTIONS: bound, grid, slip_speed, k0,
+             alpha_inf, beta, kA, kS; see rollerrig.creep_forces); default
+             the parameters' contact section
+    substeps, ode: plant steps per sample (1 to 1000) and the integrator
+             ("trbdf2", "ros2", "lineuler"); default the integration section
+    roller_speed: roller surface speed [m/s] of the initial state
+    start:   "rolling" (the wheelset rolling freely at roller_speed) or
+             "rest"
+    table:   the contact table (rollerrig.ContactTable) of the conical wheel
+             on its crowned roller
+    """
+    P = _parameters("build_rig", params)
+    rig, table, *_ = _build("build_rig", P, dt=dt, method=method, substeps=substeps, ode=ode,
+                            nx=nx, ny=ny, roller_speed=roller_speed, start=start, creep=creep)
     return rig, P, table
 
 
-def _check_dt(dt):
-    if isinstance(dt, bool) or not isinstance(dt, (int, float)) or not math.isfinite(dt) \
-            or not 1e-6 <= dt <= 0.1:
-        raise RollerRigError(f"simulate: dt must be a step from 1e-6 to 0.1 s, got {dt!r}")
-    return float(dt)
+# ------------------------------------------------------------------ safe output files
+
+def write_replacing(path, write, binary=False):
+    """Write a file through `write(file object)` without ever writing
+    through what is at `path`: into a new file created exclusively beside
+    it, then renamed over it (os.replace), so a symlink planted at `path`
+    is replaced, not followed, and a reader never sees half a file."""
+    folder, name = os.path.split(os.path.abspath(path))
+    flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_BINARY", 0)
+    while True:
+        tmp = os.path.join(folder, f".{name}.{secrets.token_hex(6)}.tmp")
+        try:
+            fd = os.open(tmp, flags, 0o666)          # the umask applies, as for open()
+            break
+        except FileExistsError:                      # a clash of random names: draw again
+            continue
+    try:
+        text = {} if binary else {"newline": "", "encoding": "utf-8"}
+        with os.fdopen(fd, "wb" if binary else "w", **text) as fh:
+            write(fh)
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.remove(tmp)
+        except OSError:
+            pass
+        raise
+    return path
 
 
-@dataclass
+# ------------------------------------------------------------------ the result
+
+@dataclass(repr=False)
 class RigResult:
-    """Time histories of a rig run, one value per control sample (named
-    numpy arrays; see RECORD_FIELDS), with the schedule and parameters."""
+    """Time histories of a rig run, with its schedule and parameters.
+
+    records:      float array (samples kept, len(RECORD_FIELDS)), one row
+                  per kept control sample, recorded at the sample's end;
+                  each column is also an attribute: res.time [s],
+                  res.creepage [-], res.fx [N], ... (RECORD_FIELDS, units in
+                  RECORD_UNITS; res.sample_status as int8), and
+                  res.normal_load = left + right [N]
+    params:       the merged parameters (nested dict of rig_default.toml)
+    targets:      the creepage targets [-] (magnitudes, in the drive's sense)
+    target_times: their start times [s]
+    dt:           control sample time [s]
+    status:       0 the run finished; > 0 it finished but some samples
+                  warned (1: an inner iteration, e.g. the integrator's Newton
+                  iteration, ended above its tolerance; the samples'
+                  sample_status say which); < 0 it stopped at a sample
+                  whose state could not be computed (-1 NaN, -2 a normal
+                  load not positive: lift-off, -3 a wheel off its roller,
+                  -11 a singular system; rollerrig.status_message(status)),
+                  and the records end at the last good sample
+    message:      "ok", "ok with warnings: ..." (how many samples), or when
+                  and why the run stopped
+    wall:         wall-clock seconds: "setup" (parameters, contact table: a
+                  one-off, as the paper's offline database) and "run" (the
+                  stepping loop)
+    record_every: the records keep every record_every-th sample (1: all);
+                  the kept samples are k record_every dt apart
+    method:       the creep-force method of the run
+    samples:      control samples stepped (default: len(records) * record_every)
+    """
 
     records: np.ndarray
     params: dict
@@ -290,15 +699,37 @@ class RigResult:
     dt: float
     status: int
     message: str
-    #: wall-clock seconds: "setup" (parameters, contact table: a one-off,
-    #: as the paper's offline database) and "run" (the stepping loop)
     wall: dict = None
+    record_every: int = 1
+    method: str = None
+    samples: int = None
 
     def __getattr__(self, name):
         if name in RECORD_FIELDS:
             col = self.records[:, RECORD_FIELDS.index(name)]
             return col.astype(np.int8) if name == "sample_status" else col
         raise AttributeError(name)
+
+    def __repr__(self):
+        method = self.method or self.params.get("contact", {}).get("creep_method")
+        return (f"RigResult(samples={self.samples_run}, duration={self.duration:g} s, "
+                f"dt={self.dt:g} s, record_every={self.record_every}, method={method!r}, "
+                f"status={self.status}, message={self.message!r})")
+
+    @property
+    def samples_run(self):
+        """Control samples stepped."""
+        return self.samples if self.samples is not None else len(self) * self.record_every
+
+    @property
+    def duration(self):
+        """Simulated time [s]: samples stepped times dt."""
+        return self.samples_run * self.dt
+
+    @property
+    def record_dt(self):
+        """Time between two kept records [s]: record_every dt."""
+        return self.record_every * self.dt
 
     @property
     def normal_load(self):
@@ -309,28 +740,69 @@ class RigResult:
         return self.records.shape[0]
 
     def to_dataframe(self):
-        """The histories as a pandas DataFrame (pandas must be installed)."""
-        import pandas as pd
+        """The records as a pandas DataFrame, one column per RECORD_FIELDS
+        entry (units in RECORD_UNITS).  Needs pandas (extra "sweep")."""
+        pd = require("pandas", "RigResult.to_dataframe", "sweep")
         return pd.DataFrame({name: getattr(self, name) for name in RECORD_FIELDS})
 
+    def to_xarray(self):
+        """The records as an xarray.Dataset: dimension "time" [s], one
+        variable per record field with its unit and meaning in attrs
+        ("units", "long_name"); the Dataset's attrs hold the targets, their
+        start times, dt, record_every, method, status, message and the
+        parameters (as JSON, key "params").  Needs xarray (extra "sweep")."""
+        xr = require("xarray", "RigResult.to_xarray", "sweep")
+
+        def attrs(name):
+            return {"units": RECORD_UNITS[name], "long_name": _RECORD_MEANING[name]}
+        method = self.method or self.params.get("contact", {}).get("creep_method")
+        return xr.Dataset(
+            {name: ("time", getattr(self, name), attrs(name)) for name in RECORD_FIELDS[1:]},
+            coords={"time": ("time", self.time, attrs("time"))},
+            attrs={"targets": np.asarray(self.targets, dtype=float),
+                   "target_times": np.asarray(self.target_times, dtype=float),
+                   "target_times_units": "s", "dt": float(self.dt), "dt_units": "s",
+                   "record_every": int(self.record_every), "method": str(method),
+                   "status": int(self.status), "message": str(self.message),
+                   "params": json.dumps(self.params)})
+
+    def to_csv(self, path):
+        """Write the records as CSV (a header of RECORD_FIELDS, one row per
+        kept sample) to `path`, replacing the file (a symlink there is
+        replaced, never written through).  Returns the path."""
+        import csv
+
+        def write(fh):
+            w = csv.writer(fh)
+            w.writerow(RECORD_FIELDS)
+            w.writerows(self.records.tolist())
+        return write_replacing(path, write)
+
     def summary(self, tol=0.05, window=0.25):
-        """Per target: the creepage held (mean over the last 80 % of its
-        interval), settling time (when the creepage's running mean over
-        `window` seconds first comes within tol of the target; eq. 14's
-        recovery steps then make a small sawtooth about it), the adhesion
-        coefficient held, and the peak |fx| / (mu0 N) over the interval."""
+        """Per target, a dict: "target"; "reached", the creepage held (mean
+        over the last 80 % of its interval) [-]; "settling_s", the settling
+        time [s] (when the creepage's running mean over `window` seconds
+        first comes within tol of the target; eq. 14's recovery steps then
+        make a small sawtooth about it); "adhesion", the adhesion
+        coefficient held [-]; "peak_force_over_muN", the peak |fx| / (mu0 N)
+        over the interval.  The creepage is taken in the drive's sense
+        (braking cx, traction -cx).  Windows are in seconds, so decimated
+        records (record_every > 1) give the same rows to within their
+        spacing.  NaN where an interval holds fewer records than the window."""
         mu0 = self.params["scenario"]["mu0"]
+        sense = -1.0 if self.params["scenario"].get("drive_mode") == "traction" else 1.0
         rows = []
         t = self.time
+        creepage = sense * self.creepage
         ends = list(self.target_times[1:]) + [np.inf]
-        k = max(1, int(round(window / self.dt)))
+        k = max(1, int(round(window / self.record_dt)))
         for xi, t0, t1 in zip(self.targets, self.target_times, ends):
-            sel = (t > t0) & (t <= t1) & np.isfinite(self.creepage)
+            sel = (t > t0) & (t <= t1) & np.isfinite(creepage)
             if np.count_nonzero(sel) < k:
                 rows.append(dict(target=xi, reached=np.nan, settling_s=np.nan,
                                  adhesion=np.nan, peak_force_over_muN=np.nan))
                 continue
-            ts, cr = t[sel], self.creepage[sel]
+            ts, cr = t[sel], creepage[sel]
             held = ts >= ts[0] + 0.2 * (ts[-1] - ts[0])
             mean = np.convolve(cr, np.ones(k) / k, mode="valid")   # ends at ts[k-1:]
             inside = np.flatnonzero(np.abs(mean - xi) <= tol * abs(xi))
@@ -352,77 +824,175 @@ class RigResult:
         return "\n".join(lines)
 
 
+# ------------------------------------------------------------------ simulate
+
+def _target_schedule(S, duration, targets, target_times):
+    """(targets, start times) of a run; the rules are simulate's."""
+    def listed(v):
+        return isinstance(v, (list, tuple, np.ndarray)) and np.ndim(v) == 1 and len(v) > 0
+    if targets is not None and (not listed(targets)
+                                or any(_real(0.0, 1.0, hi_open=True)(x) for x in targets)):
+        raise RollerRigError(f"simulate: targets must be a non-empty list of creepages in "
+                             f"[0, 1), got {_short(targets)}")
+    if targets is None:
+        targets = S["targets"]
+        if target_times is None:
+            starts = [float(x) for x in S["target_start_s"]]
+            target_times = starts
+            if starts[-1] >= duration:
+                scale = duration / float(S["duration_s"])
+                target_times = [x * scale for x in starts]
+                warnings.warn(
+                    f"simulate: the scenario's target start times {starts} s "
+                    f"(scenario.target_start_s, for scenario.duration_s = "
+                    f"{S['duration_s']:g} s) do not all fall inside duration = "
+                    f"{duration:g} s: scaled by {scale:g} to "
+                    f"{[float(f'{x:.6g}') for x in target_times]} s", RollerRigWarning,
+                    stacklevel=3)
+    elif target_times is None:
+        target_times = [duration * k / len(targets) for k in range(len(targets))]
+    targets = tuple(float(x) for x in targets)
+    if not listed(target_times) or len(target_times) != len(targets) \
+            or any(_real(0.0)(x) for x in target_times):
+        raise RollerRigError(f"simulate: target_times must be start times >= 0 s, one per "
+                             f"target ({len(targets)}), got {_short(target_times)}")
+    target_times = tuple(float(x) for x in target_times)
+    if any(b <= a for a, b in zip(target_times, target_times[1:])):
+        raise RollerRigError(f"simulate: target_times must increase, got "
+                             f"{_short(target_times)}")
+    if target_times[-1] >= duration:
+        raise RollerRigError(f"simulate: target_times must fall inside duration = "
+                             f"{duration:g} s, got {_short(target_times)}")
+    return targets, target_times
+
+
+def _record_plan(n, dt, record_every, max_record_bytes):
+    """(record_every, records kept) of a run of n samples, within the cap."""
+    if _integer(1, max(1, n))(record_every):
+        raise RollerRigError(f"simulate: record_every must be an integer from 1 to the "
+                             f"number of samples ({n}), got {record_every!r}")
+    cap = _real_arg("simulate", "max_record_bytes", max_record_bytes, 0.0, lo_open=True)
+    kept = n // record_every
+    need = kept * _BYTES_PER_SAMPLE
+    if need > cap:
+        fit = -(-n * _BYTES_PER_SAMPLE // int(cap)) if cap >= _BYTES_PER_SAMPLE else None
+        advice = (f"keep one sample in {fit} (record_every={fit}; on the command line "
+                  f"--record-every {fit})" if fit and fit <= n else "shorten the run")
+        raise RollerRigError(
+            f"simulate: the records of {kept} samples"
+            f"{f' (one in {record_every} of {n})' if record_every > 1 else ''} would take "
+            f"{need / 2**30:.3g} GiB, over max_record_bytes = {cap / 2**30:.3g} GiB; "
+            f"{advice}, or raise max_record_bytes")
+    return int(record_every), kept
+
+
 def simulate(duration=None, dt=None, method=None, params=None, targets=None,
              target_times=None, *, roller_speed=None, start="rolling", nx=None, ny=None,
-             substeps=None, ode=None, progress=False, **creep):
+             substeps=None, ode=None, record_every=1, max_record_bytes=RECORD_BYTES_CAP,
+             progress=False, **creep):
     """Run the rig: by default the seed paper's scenario on the default parameters.
 
-    duration:  simulated time [s] (default scenario.duration_s)
-    dt:        control sample time and integration step [s] (default
-               scenario.control_sample_time_s, the paper's 4 ms)
+    duration:  simulated time [s], at least one sample and at most 1e5 s
+               (default scenario.duration_s); the run has round(duration /
+               dt) samples
+    dt:        control sample time and integration step [s], 1e-6 to 0.1
+               (default scenario.control_sample_time_s, the paper's 4 ms)
     method:    creep-force method ("fastsim", "fastsim_blended",
-               "modified_fastsim", "polach", "linear"); nx, ny the FASTSIM grid
-    params:    nested dict overriding rig_default.toml, e.g.
-               {"scenario": {"mu0": 0.3}, "wheelset": {"mass_kg": 15.0}}
-    targets:   creepage targets in sequence (default the paper's 0.04, 0.015,
-               0.02, 0.03); target_times their start times [s] (default:
-               equal intervals over the duration)
+               "modified_fastsim", "polach", "linear"); nx, ny the FASTSIM
+               grid (default: the parameters' contact section)
+    params:    None, a nested dict overriding rig_default.toml, e.g.
+               {"scenario": {"mu0": 0.3}, "wheelset": {"mass_kg": 15.0}}, or
+               the path of a TOML file of the same layout; every problem is
+               reported at once (check_parameters)
+    targets:   creepage targets in sequence, magnitudes in [0, 1) in the
+               drive's sense (default scenario.targets, the paper's 0.04,
+               0.015, 0.02, 0.03); target_times their start times [s],
+               increasing, inside the duration.  Without target_times:
+               targets given here start at equal intervals over the
+               duration; the scenario's own targets start at
+               scenario.target_start_s when those all fall inside the
+               duration, otherwise at those times scaled by duration /
+               scenario.duration_s, with a RollerRigWarning saying so
     roller_speed: roller surface speed [m/s] held by its controller
+               (default scenario.roller_speed_m_s)
     start:     "rolling" (wheelset rolling freely at roller_speed) or "rest"
                (everything at standstill; the roller drive spins the rig up)
     substeps, ode: plant steps per sample and the integrator ("ros2",
                "trbdf2", "lineuler")
+    record_every: keep the record of every record_every-th sample only (the
+               run still takes every sample): for long runs
+    max_record_bytes: cap on the records' memory (default RECORD_BYTES_CAP,
+               1 GiB: 216 bytes per kept sample); a run over it is refused
+               before it starts, with the record_every that would fit
     progress:  print a progress bar on stderr
-    Returns RigResult.  A run that fails (a wheel off its roller, lift-off,
-    NaN) stops cleanly: the result holds the history so far, its status
-    and message say why.
+    **creep:   the creep-force method's options: bound, grid, slip_speed,
+               k0, alpha_inf, beta (modified FASTSIM), kA, kS (Polach); see
+               rollerrig.creep_forces
+    Returns RigResult (its fields, units and status codes are in its
+    docstring).  A run that fails (a wheel off its roller, lift-off, NaN)
+    stops cleanly: the result holds the history so far, its status and
+    message say why.
     """
     t0 = time.perf_counter()
-    rig, P, _ = build_rig(params, dt=dt, method=method, substeps=substeps, ode=ode, nx=nx,
-                          ny=ny, roller_speed=roller_speed, start=start, **creep)
+    P = _parameters("simulate", params)
     S = P["scenario"]
-    dt = _check_dt(dt if dt is not None else S["control_sample_time_s"])
-    duration = duration if duration is not None else S["duration_s"]
-    if isinstance(duration, bool) or not isinstance(duration, (int, float)) \
-            or not math.isfinite(duration) or not 0 < duration <= 1e5:
-        raise RollerRigError(f"simulate: duration must be in (0, 1e5] s, got {duration!r}")
-    targets = tuple(float(x) for x in (targets if targets is not None else S["targets"]))
-    if not targets or not all(math.isfinite(x) and 0 <= x < 1 for x in targets):
-        raise RollerRigError(f"simulate: targets must be creepages in [0, 1), got {targets!r}")
-    if target_times is None:
-        if targets == tuple(S["targets"]) and duration == S["duration_s"]:
-            target_times = S["target_start_s"]
-        else:
-            target_times = [duration * k / len(targets) for k in range(len(targets))]
-    target_times = tuple(float(x) for x in target_times)
-    if len(target_times) != len(targets) or any(b <= a for a, b in
-                                                zip(target_times, target_times[1:])):
-        raise RollerRigError(f"simulate: target_times must be increasing, one per target, "
-                             f"got {target_times!r}")
-    V = roller_speed if roller_speed is not None else S["roller_speed_m_s"]
-    roller_ref, xi_ref = schedule(P, duration, dt, targets, target_times, V)
-    n = xi_ref.size
-    out = np.full((n, len(RECORD_FIELDS)), np.nan)
-    chunk = max(1, n // 50)
-    status = 0
+    dt = _check_dt("simulate", dt if dt is not None else S["control_sample_time_s"])
+    duration = _real_arg("simulate", "duration", duration if duration is not None
+                         else S["duration_s"], 0.0, MAX_DURATION, lo_open=True, unit="s")
+    if duration < dt * (1.0 - 1e-9):
+        raise RollerRigError(f"simulate: duration = {duration:g} s is shorter than one "
+                             f"sample (dt = {dt:g} s)")
+    n = max(1, int(round(duration / dt)))
+    targets, target_times = _target_schedule(S, duration, targets, target_times)
+    record_every, kept = _record_plan(n, dt, record_every, max_record_bytes)
+    rig, _, dt, V, used = _build("simulate", P, dt=dt, method=method, substeps=substeps,
+                                 ode=ode, nx=nx, ny=ny, roller_speed=roller_speed,
+                                 start=start, creep=creep)
+
+    out = np.full((kept, len(RECORD_FIELDS)), np.nan)
+    # about 50 steps of the progress bar; without one, as few calls as the bound allows
+    chunk = max(1, min(n // 50 if progress else n, _CHUNK_SAMPLES))
+    stepped, worst, warned, status = 0, 0, 0, 0
     t1 = time.perf_counter()
-    for start in range(0, n, chunk):
-        stop = min(n, start + chunk)
-        rec, status = rig.run(roller_ref[start:stop], xi_ref[start:stop])
-        out[start:stop] = rec
+    for first in range(0, n, chunk):
+        stop = min(n, first + chunk)
+        roller_ref, xi_ref = schedule(P, duration, dt, targets, target_times, V, first, stop)
+        rec, status = rig.run(roller_ref, xi_ref)
+        if status < 0:
+            good = np.isfinite(rec[:, 0]) & (rec[:, -1] >= 0)
+            rec = rec[:int(np.argmin(good)) if not good.all() else len(rec)]
+        # keep samples k = record_every - 1, 2 record_every - 1, ...: the
+        # records every record_every dt, ending at the duration
+        offset = (record_every - 1 - first) % record_every
+        keep = rec[offset::record_every]
+        at = (first + offset) // record_every
+        out[at:at + len(keep)] = keep
+        stepped = first + len(rec)
+        # the worst warning of the chunk from its samples' own statuses: the
+        # binding's run() may report only that of its last block of samples
+        if len(rec):
+            worst = max(worst, status, int(np.max(rec[:, -1])))
+            warned += int(np.count_nonzero(rec[:, -1] > 0))
         if progress:
             done = stop / n
             sys.stderr.write(f"\rsimulate [{'#' * int(40 * done):<40}] {100 * done:5.1f} %")
             sys.stderr.flush()
         if status < 0:
-            good = np.isfinite(rec[:, 0]) & (rec[:, -1] >= 0)
-            out = out[:start + int(np.count_nonzero(good))]
+            out = out[:stepped // record_every]
             break
     wall = {"setup": t1 - t0, "run": time.perf_counter() - t1}
     if progress:
         sys.stderr.write("\n")
-    message = "ok" if status >= 0 else f"stopped at t = {rig.t:.4f} s: {status_message(status)}"
-    return RigResult(out, P, targets, target_times, dt, int(status), message, wall)
+    status = status if status < 0 else worst
+    if status == 0:
+        message = "ok"
+    elif status > 0:
+        message = (f"ok with warnings: {warned} of {stepped} samples warned "
+                   f"(sample_status {status}: {status_message(status)})")
+    else:
+        message = f"stopped at t = {rig.t:.4f} s: {status_message(status)}"
+    return RigResult(out, P, targets, target_times, dt, int(status), message, wall,
+                     record_every=record_every, method=used, samples=stepped)
 
 
 def replay(res, *, method=None, nx=None, ny=None, **creep):

@@ -8,16 +8,29 @@
 
     ds = rr.sweep_rig({"scenario.mu0": [0.3, 0.4], "method": ["fastsim", "polach"]},
                       duration=4.0)
-    ds.reached                            # dims ("scenario.mu0", "method", "target")
+    ds.reached.sel(mu0=0.4)               # dims ("mu0", "creep_method", "target")
+    ds.mu0.attrs["parameter"]             # "scenario.mu0"
 
 The grid's axes are named after the function's arguments (for sweep) or
-parameter paths (for sweep_rig), in the order of the dimensions; every
-other keyword argument is passed unchanged to each call.  The flattened
-grid is cut into chunks run on a thread pool (the C loops release the GIL),
-a Dask client, or serially; every case's result is independent of the
-chunking, so all backends give bitwise the same numbers.  The result is an
-xarray.Dataset, or without xarray the dict {"coords", "data", "dims",
-"units"} of plain numpy arrays shaped like the grid.
+parameter paths and simulate's arguments (for sweep_rig), in the order of
+the dimensions; every other keyword argument is passed unchanged to each
+call.  A parameter path's dimension is named by its last part ("mu0" for
+"scenario.mu0"), so that it can be used as a keyword (.sel(mu0=0.4)), or
+by the whole path with "." replaced by "_" ("roller_drive_kp_N_m_s_per_rad")
+where two axes, or an axis and another name of the Dataset, would share
+that last part; the path itself is in the coordinate's attrs["parameter"].
+simulate's argument "method" is the dimension "creep_method", since
+.sel(method=...) is xarray's own keyword.
+The flattened grid is cut into chunks run on a thread pool (the C loops
+release the GIL), a Dask client, or serially; every case's result is
+independent of the chunking, so all backends give bitwise the same numbers.
+
+The result is an xarray.Dataset (xarray: extra "sweep"), whichever packages
+are installed; without xarray the sweep raises an ImportError naming the
+extra before it runs.  output="dict" asks for plain numpy instead: the dict
+{"coords", "data", "dims", "units", "attrs", "coord_attrs"} of arrays shaped
+like the grid.  The progress bar needs tqdm (extra "sweep"); without it the
+sweep runs without one, silently.
 """
 import copy
 import inspect
@@ -32,7 +45,9 @@ import numpy as np
 
 from . import contact
 from ._errors import RollerRigError, check_status
-from .rig import _merge, default_parameters, simulate
+from ._optional import require
+from .rig import (CREEP_OPTIONS, _parameter_problems, check_parameters,
+                  load_parameters, simulate)
 
 __all__ = ["sweep", "sweep_rig", "UNITS", "FUNCTIONS"]
 
@@ -63,7 +78,19 @@ _SUFFIXES = (("_N_m_s_per_rad", "N m s/rad"), ("_N_s_per_m", "N s/m"), ("_N_per_
              ("_m", "m"), ("_s", "s"))
 
 _STATUS_ATTRS = {"long_name": "C status per case: 0 OK, > 0 warning, < 0 error (result NaN)"}
-_RIG_STATUS_ATTRS = {"long_name": "run status: 0 OK, < 0 the run stopped (see message)"}
+_RIG_ATTRS = {
+    "status": {"long_name": "run status: 0 OK, > 0 some samples warned, < 0 the run stopped "
+                            "(see message)"},
+    "message": {"long_name": "the run's message (RigResult.message)"},
+    "reached": {"long_name": "creepage held (mean over the last 80 % of the target's "
+                             "interval)"},
+    "settling_s": {"long_name": "settling time (running mean over 0.25 s within 5 % of the "
+                                "target)"},
+    "adhesion": {"long_name": "adhesion coefficient held |fx| / N"},
+    "peak_force_over_muN": {"long_name": "peak |fx| / (mu0 N) over the target's interval"},
+    "target": {"long_name": "creepage target"},
+}
+OUTPUTS = ("xarray", "dict")
 
 CHUNK_CASES = 100_000      # cases per chunk by default: ~0.15 s of FASTSIM 20 x 20
 
@@ -112,10 +139,11 @@ def _check_options(func, backend, workers, client, progress):
             raise RollerRigError(f"{func}: a Dask client was given with backend='serial'")
         backend = "dask"
     elif backend == "dask":
+        distributed = require("distributed", f"{func}(backend='dask')", "distributed",
+                              package="dask.distributed")
         try:
-            from distributed import get_client
-            client = get_client()
-        except (ImportError, ValueError):
+            client = distributed.get_client()
+        except ValueError:
             raise RollerRigError(f"{func}: backend='dask' needs a dask.distributed Client "
                                  f"(client=...), and none is running") from None
     if workers is not None:
@@ -138,7 +166,8 @@ def _check_options(func, backend, workers, client, progress):
 
 
 def _progress_bar(enabled, total, desc, unit):
-    """A tqdm bar when asked for and tqdm is installed, else a silent stand-in."""
+    """A tqdm bar when asked for and tqdm is installed, else a silent stand-in
+    (a missing tqdm only costs the bar, so it is not an error)."""
     if enabled:
         try:
             from tqdm.auto import tqdm
@@ -299,8 +328,18 @@ def _completed(client, futures):
         yield from as_completed(futures)
 
 
+def _check_output(func, output):
+    """Refuse a bad output before anything runs; the xarray module when it is wanted."""
+    if output not in OUTPUTS:
+        raise RollerRigError(f"{func}: output must be 'xarray' or 'dict', got {output!r}")
+    if output == "xarray":
+        return require("xarray", func, "sweep",
+                       instead="or pass output='dict' for plain numpy arrays")
+    return None
+
+
 def sweep(func, grid, *, chunk=None, backend="threads", workers=None, client=None,
-          progress=True, **fixed):
+          progress=True, output="xarray", **fixed):
     """Evaluate a vectorised function over the Cartesian grid of named axes.
 
     func:    "creep_forces", "hertz", "kalker_coefficients", or a callable
@@ -311,13 +350,19 @@ def sweep(func, grid, *, chunk=None, backend="threads", workers=None, client=Non
     backend: "threads" (a ThreadPoolExecutor of `workers` threads, default
              os.cpu_count()), "serial", or "dask" (the client given or the
              running one); giving `client` selects Dask
-    progress: a tqdm progress bar (when tqdm is installed)
+    progress: a tqdm progress bar (when tqdm is installed: extra "sweep";
+             without it no bar, silently)
+    output:  "xarray" (default; needs xarray, extra "sweep": without it an
+             ImportError naming the extra, raised before the sweep runs) or
+             "dict" (plain numpy, whatever is installed)
     fixed:   every other keyword argument, passed unchanged to each call
              (e.g. a=..., b=..., N=..., mu=..., method="fastsim", nx=20)
     Returns an xarray.Dataset with the axes as coordinates and one variable
     per output field (status as int8), units in attrs, the fixed arguments
-    in the Dataset's attrs; without xarray the dict {"coords": {name: axis},
-    "data": {field: array shaped like the grid}, "dims", "units"}.
+    in the Dataset's attrs; with output="dict" the dict {"coords": {name:
+    axis}, "data": {field: array shaped like the grid}, "dims": {field:
+    dimension names}, "units": {name: unit}, "attrs": the Dataset's attrs,
+    "coord_attrs": {name: attrs}}.
     For the library's functions, failed cases are NaN with a negative
     status and one RollerRigWarning is given for the whole grid (or pass
     errors="raise" / "ignore").  An exception in a chunk raises
@@ -327,6 +372,7 @@ def sweep(func, grid, *, chunk=None, backend="threads", workers=None, client=Non
     where = f"sweep({name})"
     names, axes = _axes("sweep", grid, numeric=known)
     backend, slots, client = _check_options("sweep", backend, workers, client, progress)
+    xr = _check_output("sweep", output)
     clash = sorted(set(names) & set(fixed))
     if clash:
         raise RollerRigError(f"sweep: {clash} given both as a grid axis and as a fixed argument")
@@ -390,32 +436,45 @@ def sweep(func, grid, *, chunk=None, backend="threads", workers=None, client=Non
         check_status(name, data["status"], args, "warn")
 
     attrs = {"function": name, **{k: _as_attr(v) for k, v in fixed.items()}}
-    return _package(dict(zip(names, axes)), {f: names for f in data}, data, attrs,
+    return _package(xr, dict(zip(names, axes)), {f: names for f in data}, data, attrs,
                     {"status": _STATUS_ATTRS})
 
 
-def _package(coords, var_dims, data, attrs, extra_attrs):
-    """An xarray.Dataset, or the plain-dict fallback when xarray is missing."""
-    units = {n: _units(n) for n in list(coords) + list(data)}
+def _package(xr, coords, var_dims, data, attrs, extra_attrs, paths=None):
+    """An xarray.Dataset (xr the module), or with xr None the plain dict.
+    paths: {dimension: parameter path} of the dimensions named after one."""
+    paths = paths or {}
+    units = {n: _units(paths.get(n, n)) for n in list(coords) + list(data)}
     units = {n: u for n, u in units.items() if u is not None and n != "status"}
-    try:
-        import xarray as xr
-    except ImportError:
+
+    def attrs_of(n):
+        return dict(extra_attrs.get(n, {}), **({"units": units[n]} if n in units else {}),
+                    **({"parameter": paths[n]} if n in paths else {}))
+    if xr is None:
         return {"coords": coords, "data": data, "dims": {n: var_dims[n] for n in data},
-                "units": units}
-    return xr.Dataset(
-        {n: (var_dims[n], arr, dict(extra_attrs.get(n, {}),
-                                    **({"units": units[n]} if n in units else {})))
-         for n, arr in data.items()},
-        coords={n: (n, ax, {"units": units[n]} if n in units else {})
-                for n, ax in coords.items()},
-        attrs=attrs)
+                "units": units, "attrs": attrs,
+                "coord_attrs": {n: attrs_of(n) for n in coords}}
+    return xr.Dataset({n: (var_dims[n], arr, attrs_of(n)) for n, arr in data.items()},
+                      coords={n: (n, ax, attrs_of(n)) for n, ax in coords.items()},
+                      attrs=attrs)
 
 
 # ---------------------------------------------------------------- sweep_rig
 
 _RIG_METRICS = ("reached", "settling_s", "adhesion", "peak_force_over_muN")
-_NOT_SWEPT = ("params", "targets", "target_times", "progress")
+_NOT_SWEPT = ("params", "targets", "target_times", "progress", "output", "record_every",
+              "max_record_bytes")
+
+
+def _with_value(base, path, value):
+    """A deep copy of nested dict `base` with the dotted `path` set to value."""
+    params = copy.deepcopy(base)
+    *sections, leaf = path.split(".")
+    node = params
+    for part in sections:
+        node = node.setdefault(part, {})
+    node[leaf] = value
+    return params
 
 
 def _rig_point(k, names, axes, base, options):
@@ -428,11 +487,7 @@ def _rig_point(k, names, axes, base, options):
     for name, ax, i in zip(names, axes, index):
         value = ax[i].item()          # plain Python numbers: the rig checks int/float types
         if "." in name:
-            *path, leaf = name.split(".")
-            node = params
-            for part in path:
-                node = node.setdefault(part, {})
-            node[leaf] = value
+            params = _with_value(params, name, value)
         else:
             kwargs[name] = value
     res = simulate(params=params, progress=False, **kwargs)
@@ -441,33 +496,77 @@ def _rig_point(k, names, axes, base, options):
     return res.targets, metrics, res.status, res.message
 
 
+# keywords of xarray's Dataset.sel itself: a dimension of that name could
+# not be selected as .sel(name=...)
+_SEL_KEYWORDS = {"method", "tolerance", "drop", "indexers"}
+#: the dimension of a simulate argument whose own name is one of those
+RENAMED_ARGUMENTS = {"method": "creep_method"}
+
+
+def _dimension_names(names):
+    """The Dataset's dimension for each grid axis: a parameter path by its
+    last part when that is unique, else by the path with "." -> "_"; a
+    simulate argument by its own name, but "method" as "creep_method"
+    (RENAMED_ARGUMENTS: .sel(method=...) is xarray's own keyword)."""
+    leaves = [n.rsplit(".", 1)[-1] for n in names]
+    args = [RENAMED_ARGUMENTS.get(n, n) for n in names if "." not in n]
+    taken = set(_RIG_METRICS) | {"target", "status", "message"}
+    dims = []
+    for name, leaf in zip(names, leaves):
+        if "." not in name:
+            dims.append(RENAMED_ARGUMENTS.get(name, name))
+        elif leaves.count(leaf) == 1 and leaf not in taken | _SEL_KEYWORDS | set(args):
+            dims.append(leaf)
+        else:
+            dims.append(name.replace(".", "_"))
+    clash = sorted({d for d in dims if dims.count(d) > 1 or d in taken})
+    if clash:
+        raise RollerRigError(f"sweep_rig: the grid axes {list(names)} give the dimension "
+                             f"name(s) {clash} twice or a name of the result's variables")
+    return tuple(dims)
+
+
 def sweep_rig(grid, *, backend="threads", workers=None, client=None, progress=True,
-              **simulate_kwargs):
+              output="xarray", **simulate_kwargs):
     """Run rr.simulate at every point of a Cartesian grid of rig parameters.
 
     grid:    dict name -> 1-D array; a name is a dotted parameter path of the
              parameter file ("scenario.mu0", "wheelset.mass_kg") or one of
              simulate's own arguments ("dt", "method", "roller_speed", "nx",
              "ode", "k0", ...)
-    backend, workers, client, progress: as for sweep; one run per task
-             (the C time stepping releases the GIL, so threads scale)
+    backend, workers, client, progress, output: as for sweep; one run per
+             task (the C time stepping releases the GIL, so threads scale)
     simulate_kwargs: passed to every run (duration, targets, params as the
-             base that the grid's paths override, ...)
+             base that the grid's paths override: a dict or a TOML file, ...)
+    Every value of every parameter axis is checked (check_parameters) before
+    any run: a bad one raises RollerRigError naming the axis and the value.
     Returns an xarray.Dataset with dims (grid axes..., "target") and the
     variables reached, settling_s, adhesion, peak_force_over_muN (as
-    RigResult.summary()), plus per point the run status (int8) and message;
-    without xarray the plain dict as for sweep.  A run that stops (status
-    < 0) gives NaN for the targets it did not reach; a run that raises
-    (e.g. a parameter out of range) raises RollerRigError naming the point.
+    RigResult.summary(), units and long_name in attrs), plus per point the
+    run status (int8) and message.  A parameter path's dimension is its
+    last part (ds.reached.sel(mu0=0.4) for "scenario.mu0"), or the path with
+    "." -> "_" where two axes share a last part; the coordinate's
+    attrs["parameter"] holds the path; simulate's "method" is the dimension
+    "creep_method" (.sel(method=...) is xarray's own keyword), with
+    attrs["argument"] = "method".  With output="dict" the plain dict
+    as for sweep.  A run that stops (status < 0) gives NaN for the targets
+    it did not reach; a run that raises (e.g. dt out of range) raises
+    RollerRigError naming the point.
     """
     names, axes = _axes("sweep_rig", grid, numeric=False)
     backend, slots, client = _check_options("sweep_rig", backend, workers, client, progress)
+    xr = _check_output("sweep_rig", output)
+    dims = _dimension_names(names)
     sim_args = set(inspect.signature(simulate).parameters) - {"creep"}
-    creep_args = {"bound", "grid", "slip_speed", "k0", "alpha_inf", "beta", "kA", "kS"}
-    base = copy.deepcopy(simulate_kwargs.pop("params", None) or {})
-    full = default_parameters()
-    _merge(full, copy.deepcopy(base))
-    for name in names:
+    base = simulate_kwargs.pop("params", None) or {}
+    if isinstance(base, (str, os.PathLike)):
+        base = load_parameters(base)
+    elif not isinstance(base, dict):
+        raise RollerRigError(f"sweep_rig: params must be a nested dict or the path of a TOML "
+                             f"file, got {type(base).__name__}")
+    base = copy.deepcopy(base)
+    full = check_parameters(base, source="sweep_rig: params")
+    for name, ax in zip(names, axes):
         if "." in name:
             node, parts = full, name.split(".")
             for depth, part in enumerate(parts):
@@ -479,15 +578,25 @@ def sweep_rig(grid, *, backend="threads", workers=None, client=None, progress=Tr
             if isinstance(node, (dict, list)):
                 raise RollerRigError(f"sweep_rig: '{name}' is not a single value; sweep its "
                                      f"entries")
-        elif name in _NOT_SWEPT or name not in (sim_args | creep_args):
+            for value in ax:
+                # the value's own problems; those between keys (kS <= kA)
+                # depend on the other axes and show in the run
+                _, problems = _parameter_problems(_with_value(base, name, value.item()))
+                own = [p for p in problems if p.startswith(name + " ")]
+                if own:
+                    raise RollerRigError(f"sweep_rig: grid axis '{name}' = "
+                                         f"{value.item()!r}: {own[0]}")
+        elif name in _NOT_SWEPT or name not in (sim_args | set(CREEP_OPTIONS)):
             raise RollerRigError(f"sweep_rig: '{name}' is neither a parameter path "
                                  f"('section.key') nor a simulate argument that takes one "
-                                 f"value ({sorted((sim_args | creep_args) - set(_NOT_SWEPT))})")
+                                 f"value "
+                                 f"({sorted((sim_args | set(CREEP_OPTIONS)) - set(_NOT_SWEPT))})")
         if name in simulate_kwargs:
             raise RollerRigError(f"sweep_rig: '{name}' given both as a grid axis and as a "
                                  f"fixed argument")
-    if "progress" in simulate_kwargs:
-        raise RollerRigError("sweep_rig: progress is the sweep's (a bar over the runs)")
+    for key in ("progress", "output"):
+        if key in simulate_kwargs:
+            raise RollerRigError(f"sweep_rig: {key} is the sweep's own argument")
 
     shape = tuple(ax.size for ax in axes)
     total = math.prod(shape)
@@ -521,13 +630,15 @@ def sweep_rig(grid, *, backend="threads", workers=None, client=None, progress=Tr
             for j, m in enumerate(_RIG_METRICS)}
     data["status"] = found["status"].reshape(shape)
     data["message"] = found["message"].astype(str).reshape(shape)
-    coords = dict(zip(names, axes))
+    coords = dict(zip(dims, axes))
     coords["target"] = np.asarray(found["targets"], dtype=float)
-    var_dims = {m: names + ("target",) for m in _RIG_METRICS}
-    var_dims.update(status=names, message=names)
+    var_dims = {m: dims + ("target",) for m in _RIG_METRICS}
+    var_dims.update(status=dims, message=dims)
     attrs = {"function": "simulate",
              **{k: _as_attr(v) for k, v in simulate_kwargs.items()}}
     if base:
         attrs["params"] = repr(base)
-    return _package(coords, var_dims, data, attrs,
-                    {"status": _RIG_STATUS_ATTRS})
+    paths = {d: n for d, n in zip(dims, names) if "." in n}
+    extra = dict(_RIG_ATTRS, **{d: {"argument": n} for d, n in zip(dims, names) if d != n
+                                and "." not in n})
+    return _package(xr, coords, var_dims, data, attrs, extra, paths)

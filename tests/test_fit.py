@@ -223,3 +223,16 @@ def test_bad_input_modified_fastsim():
         fit_modified_fastsim(CX2, FX2, x0={"k0": 0.0}, **BASE)
     with pytest.raises(rr.RollerRigError, match=r"nx must be an integer"):
         fit_modified_fastsim(CX2, FX2, nx=0, **BASE)
+
+
+def test_without_scipy_the_fits_name_the_extra(monkeypatch):
+    import sys
+    from rollerrig._optional import OptionalDependencyError
+    cx = np.linspace(1e-4, 0.01, 10)
+    fx = rr.creep_forces(cx, method="polach", mu=0.3, speed=5.0, **CASE).fx
+    monkeypatch.setitem(sys.modules, "scipy.optimize", None)
+    for fit in (fit_polach, fit_modified_fastsim):
+        with pytest.raises(OptionalDependencyError) as e:
+            fit(cx, fx, speed=5.0, **CASE)
+        assert str(e.value).startswith(f"{fit.__name__} needs scipy, which is not installed: "
+                                       f"pip install 'rollerrig[fit]'")

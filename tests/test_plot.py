@@ -159,14 +159,46 @@ def test_traction_field_bad_input(call):
 def test_rig_history_and_force(run):
     axes = rp.rig_history(run)
     assert isinstance(axes, np.ndarray) and axes.shape == (2,)
-    assert labels(axes[0]) == ["creepage (contact model)",
+    assert labels(axes[0]) == ["creepage cx (contact model, mean of both wheels)",
                                "estimate from the encoders (eq. 16)", "target"]
+    assert axes[0].get_ylabel() == "longitudinal creepage cx [-]"
     assert labels(axes[1]) == ["roller surface speed", "wheel surface speed"]
-    assert axes[1].get_xlabel() == "time [s]"
+    assert axes[1].get_xlabel() == "time [s]" and axes[1].get_ylabel() == "surface speed [m/s]"
+    assert "cx" in axes[0].figure._suptitle.get_text() and "> 0 when braking" in \
+        axes[0].figure._suptitle.get_text()
     np.testing.assert_array_equal(axes[0].get_lines()[0].get_xdata(), run.time)
     ax = rp.rig_force(run)
-    assert labels(ax) == ["adhesion (braking) force, both wheels", "mu0 N"]
+    # the axis names the quantity and its sign: -fx, since fx < 0 when braking
+    assert ax.get_ylabel() == "braking force -fx [N]"
+    assert labels(ax) == ["braking force -fx on the wheels (both)",
+                          "friction limit mu0 N (mu0 = 0.4, N both normal loads)"]
+    assert "fx < 0 on the wheel when braking" in ax.get_title()
     np.testing.assert_allclose(ax.get_lines()[0].get_ydata(), -run.fx)
+    assert np.all(run.fx[1:] < 0)
+
+
+def test_rig_plots_under_traction_keep_the_drive_sense():
+    """Driving, cx < 0 and fx > 0: the figures draw -cx and fx (positive, on
+    the scale), and say so."""
+    res = rr.simulate(duration=1.0, targets=[0.02],
+                      params={"scenario": {"drive_mode": "traction"}})
+    assert np.all(res.creepage[50:] < 0) and np.all(res.fx[50:] > 0)
+    axes = rp.rig_history(res)
+    assert axes[0].get_ylabel() == "longitudinal creepage -cx [-]"
+    np.testing.assert_allclose(axes[0].get_lines()[0].get_ydata(), -res.creepage)
+    ax = rp.rig_force(res)
+    assert ax.get_ylabel() == "traction force fx [N]"
+    np.testing.assert_allclose(ax.get_lines()[0].get_ydata(), res.fx)
+    assert ax.get_ylim()[0] <= 0 and ax.get_ylim()[1] >= res.fx.max()
+
+
+def test_rig_force_keeps_a_force_beyond_the_limit_on_the_scale():
+    """The linear theory does not saturate: its force passes mu0 N (up to
+    the torque limit), and the axis shows it rather than clipping at 1.1 mu0 N."""
+    res = rr.simulate(duration=1.0, targets=[0.02], method="linear")
+    ax = rp.rig_force(res)
+    assert np.max(-res.fx) > 1.2 * np.max(0.4 * res.normal_load)
+    assert ax.get_ylim()[1] >= np.max(-res.fx)
 
 
 def test_rig_plots_on_given_axes(run):
@@ -194,6 +226,29 @@ def test_plot_run_writes_both_figures(run, tmp_path):
     assert [os.path.basename(p) for p in paths] == ["rig_creepage.png", "rig_force.png"]
     assert all(os.path.getsize(p) > 1000 for p in paths)
     assert plt.get_fignums() == []
+    assert sorted(os.listdir(tmp_path / "out")) == ["rig_creepage.png", "rig_force.png"]
+
+
+@pytest.mark.skipif(not hasattr(os, "symlink"), reason="no symlinks here")
+def test_plot_run_replaces_a_planted_symlink_instead_of_writing_through_it(run, tmp_path):
+    out = tmp_path / "out"
+    out.mkdir()
+    victim = tmp_path / "victim.txt"
+    victim.write_text("precious")
+    os.symlink(victim, out / "rig_force.png")
+    rp.plot_run(run, str(out))
+    assert victim.read_text() == "precious"
+    assert not os.path.islink(out / "rig_force.png")
+    assert (out / "rig_force.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_decimated_records_plot_the_same_run(run):
+    """Figures take their times from the records: a run recorded every 5th
+    sample draws the same curves at those samples."""
+    coarse = rr.simulate(duration=2.0, targets=[0.03], target_times=[0.0], record_every=5)
+    ax = rp.rig_force(coarse)
+    np.testing.assert_array_equal(ax.get_lines()[0].get_xdata(), run.time[4::5])
+    np.testing.assert_array_equal(ax.get_lines()[0].get_ydata(), -run.fx[4::5])
 
 
 # ------------------------------------------------------------------ profiles
@@ -270,3 +325,30 @@ def test_fit_plot_bad_input(polach_fit):
     _, ax = plt.subplots()
     with pytest.raises(rr.RollerRigError):
         rp.fit(res, s2.cx, s2.fx, ax=ax, residuals=True)     # needs two axes
+
+
+def test_without_matplotlib_the_figures_name_the_extra(run, monkeypatch, tmp_path):
+    from rollerrig._optional import OptionalDependencyError
+    monkeypatch.setitem(sys.modules, "matplotlib.pyplot", None)
+    with pytest.raises(OptionalDependencyError, match=r"rollerrig.plot needs matplotlib, which "
+                                                      r"is not installed: pip install "
+                                                      r"'rollerrig\[plot\]'"):
+        rp.rig_force(run)
+    with pytest.raises(OptionalDependencyError, match=r"rollerrig.plot needs matplotlib"):
+        rp.plot_run(run, str(tmp_path))
+    res = rr.reference.score("polach")
+    with pytest.raises(OptionalDependencyError, match=r"rollerrig.reference.error_map needs "
+                                                      r"matplotlib"):
+        rr.reference.error_map(res)
+
+
+def test_plot_run_leaves_the_backend_alone(run, tmp_path):
+    """plot_run writes files and closes its figures; it does not switch the
+    caller's backend (a notebook's inline backend stays)."""
+    plt.switch_backend("pdf")                 # another non-interactive backend
+    try:
+        paths = rp.plot_run(run, str(tmp_path))
+        assert matplotlib.get_backend() == "pdf"
+    finally:
+        plt.switch_backend("Agg")
+    assert all(open(p, "rb").read(4) == b"\x89PNG" for p in paths)

@@ -19,7 +19,15 @@ def hold_windows(res):
 
 
 def test_paper_scenario_reaches_and_holds_every_target(paper):
-    assert paper.status == 0 and paper.message == "ok"
+    # the run's status is its worst sample's: a few samples at the first
+    # braking transient end their one Newton iteration above its tolerance
+    # (a warning, status 1: measured 10 of 5000); simulate used to report
+    # only its last chunk's status and so lost them
+    assert paper.status == max(0, int(paper.sample_status.max())) >= 0
+    warned = np.count_nonzero(paper.sample_status > 0)
+    assert warned < 0.01 * len(paper)
+    assert paper.message == "ok" if warned == 0 else paper.message.startswith(
+        f"ok with warnings: {warned} of 5000 samples warned")
     assert len(paper) == 5000 and paper.time[-1] == pytest.approx(20.0)
     for xi, sel in hold_windows(paper):
         # held: the mean over the rest of the interval within 5 % (eq. 14's
@@ -61,7 +69,7 @@ def test_steady_state_torques_balance_the_creep_forces(paper):
 
 def test_start_from_standstill():
     res = rr.simulate(start="rest", duration=4.0, targets=[0.02])
-    assert res.status == 0
+    assert res.status >= 0          # a warning at most (see the paper's scenario)
     assert res.roller_speed[0] < 0.1 and res.roller_speed[-1] == pytest.approx(5.0, rel=1e-2)
     assert np.all(np.isfinite(res.creepage))
     assert res.creepage[res.time > 3].mean() == pytest.approx(0.02, rel=0.05)
@@ -70,7 +78,7 @@ def test_start_from_standstill():
 def test_methods_and_named_arrays():
     for method in ("polach", "modified_fastsim", "fastsim_blended"):
         res = rr.simulate(duration=1.0, targets=[0.02], method=method)
-        assert res.status == 0, method
+        assert res.status == max(0, int(res.sample_status.max())) >= 0, method
         assert res.fx.shape == res.time.shape == res.normal_load.shape == (250,)
         # wall-clock split: set-up (the contact table, cached) and stepping
         assert set(res.wall) == {"setup", "run"} and min(res.wall.values()) > 0

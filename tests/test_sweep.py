@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 import rollerrig as rr
+from rollerrig._optional import OptionalDependencyError
 from rollerrig.sweep import sweep, sweep_rig
 
 # a small FASTSIM case on the rig's scale (a ~ b ~ 4 mm, N ~ 500 N)
@@ -99,8 +100,8 @@ def test_dask_runs_a_callable_and_rig_sweeps(dask_client):
     assert sweep(ratio, grid, client=dask_client, chunk=7, progress=False).identical(
         sweep(ratio, grid, backend="serial", progress=False))
     grid = {"scenario.mu0": [0.3, 0.4]}
-    assert sweep_rig(grid, client=dask_client, duration=0.5, progress=False).identical(
-        sweep_rig(grid, duration=0.5, progress=False))
+    kw = dict(duration=0.5, targets=[0.02], progress=False)
+    assert sweep_rig(grid, client=dask_client, **kw).identical(sweep_rig(grid, **kw))
 
 
 # (3) output: xarray with names and units, or plain numpy
@@ -122,11 +123,29 @@ def test_dataset_has_named_dims_coords_and_units():
     assert float(ds.fx.sel(cx=0.01, N=500.0, mu=0.3)) == one.fx
 
 
-def test_numpy_fallback_without_xarray(monkeypatch):
+def test_without_xarray_the_sweep_refuses_before_running(monkeypatch):
+    """The result's type does not change with what is installed: without
+    xarray the default output raises an ImportError naming the extra, before
+    any case runs; output="dict" is the plain-numpy result on request."""
     with_xr = sweep("creep_forces", GRID, progress=False, **FIXED)
     monkeypatch.setitem(sys.modules, "xarray", None)      # import xarray now fails
-    plain = sweep("creep_forces", GRID, progress=False, **FIXED)
-    assert isinstance(plain, dict) and set(plain) >= {"coords", "data"}
+    calls = []
+
+    def counted(cx):
+        calls.append(cx)
+        return {"y": cx}
+    for call in (lambda: sweep("creep_forces", GRID, progress=False, **FIXED),
+                 lambda: sweep(counted, {"cx": [1.0, 2.0]}, progress=False),
+                 lambda: sweep_rig({"scenario.mu0": [0.3]}, duration=0.1, progress=False)):
+        with pytest.raises(ImportError) as e:
+            call()
+        assert isinstance(e.value, OptionalDependencyError)
+        assert "needs xarray, which is not installed: pip install 'rollerrig[sweep]'" \
+            in str(e.value) and "output='dict'" in str(e.value)
+    assert calls == []
+    plain = sweep("creep_forces", GRID, progress=False, output="dict", **FIXED)
+    assert isinstance(plain, dict) and set(plain) == {"coords", "data", "dims", "units",
+                                                      "attrs", "coord_attrs"}
     assert list(plain["coords"]) == ["cx", "N", "mu"]
     for name, axis in GRID.items():
         assert np.array_equal(plain["coords"][name], axis)
@@ -134,7 +153,18 @@ def test_numpy_fallback_without_xarray(monkeypatch):
         assert np.array_equal(plain["data"][field], with_xr[field].values)
         assert plain["data"][field].shape == (41, 3, 3)
     assert plain["units"]["fx"] == "N" and plain["dims"]["fx"] == ("cx", "N", "mu")
+    assert plain["attrs"]["method"] == "fastsim"
     assert_bitwise(plain, direct())
+    with pytest.raises(rr.RollerRigError, match="output must be 'xarray' or 'dict', got 'np'"):
+        sweep("creep_forces", GRID, output="np", **FIXED)
+
+
+def test_dask_backend_without_distributed_names_the_extra(monkeypatch):
+    monkeypatch.setitem(sys.modules, "distributed", None)
+    with pytest.raises(OptionalDependencyError,
+                       match=r"sweep\(backend='dask'\) needs dask.distributed, which is not "
+                             r"installed: pip install 'rollerrig\[distributed\]'"):
+        sweep("creep_forces", GRID, backend="dask", **FIXED)
 
 
 def test_progress_bar_is_optional(monkeypatch):
@@ -150,34 +180,59 @@ def test_sweep_rig_over_mu0():
     ds = sweep_rig({"scenario.mu0": [0.3, 0.4]}, duration=1.0, targets=[0.01, 0.02],
                    progress=False)
     metrics = ("reached", "settling_s", "adhesion", "peak_force_over_muN")
+    # a dotted path's dimension is its last part, usable as a keyword
     for m in metrics:
-        assert ds[m].dims == ("scenario.mu0", "target")
+        assert ds[m].dims == ("mu0", "target") and ds[m].attrs["long_name"]
+    assert ds.mu0.attrs == {"units": "-", "parameter": "scenario.mu0"}
     assert list(ds.target.values) == [0.01, 0.02]
-    assert ds.status.dtype == np.int8 and list(ds.status.values) == [0, 0]
-    assert ds.settling_s.attrs["units"] == "s" and ds["scenario.mu0"].attrs["units"] == "-"
+    assert ds.status.dtype == np.int8 and list(ds.status.values) == [
+        rr.simulate(duration=1.0, targets=[0.01, 0.02], params={"scenario": {"mu0": m}}).status
+        for m in (0.3, 0.4)]
+    assert ds.settling_s.attrs["units"] == "s"
     # each point is the summary of its own run
     for mu0 in (0.3, 0.4):
         rows = rr.simulate(duration=1.0, targets=[0.01, 0.02],
                            params={"scenario": {"mu0": mu0}}).summary()
         for m in metrics:
-            np.testing.assert_array_equal(ds[m].sel({"scenario.mu0": mu0}).values,
-                                          [r[m] for r in rows])
+            np.testing.assert_array_equal(ds[m].sel(mu0=mu0).values, [r[m] for r in rows])
     # the adhesion held scales with mu0
-    assert np.all(ds.adhesion.sel({"scenario.mu0": 0.4}) > ds.adhesion.sel(
-        {"scenario.mu0": 0.3}))
+    assert np.all(ds.adhesion.sel(mu0=0.4) > ds.adhesion.sel(mu0=0.3))
 
 
-def test_sweep_rig_takes_simulate_arguments_and_base_params():
+def test_sweep_rig_takes_simulate_arguments_and_base_params(tmp_path):
+    base = tmp_path / "base.toml"
+    base.write_text("[scenario]\nmu0 = 0.35\n")
     ds = sweep_rig({"method": ["fastsim", "polach"], "wheelset.mass_kg": [12.0, 15.0]},
-                   duration=0.4, targets=[0.02], params={"scenario": {"mu0": 0.35}},
+                   duration=0.4, targets=[0.02], params=str(base),
                    backend="serial", progress=False)
-    assert ds.reached.dims == ("method", "wheelset.mass_kg", "target")
-    assert ds["wheelset.mass_kg"].attrs["units"] == "kg"
-    assert list(ds.method.values) == ["fastsim", "polach"]
+    # simulate's "method" is "creep_method": .sel(method=...) is xarray's keyword
+    assert ds.reached.dims == ("creep_method", "mass_kg", "target")
+    assert ds.mass_kg.attrs == {"units": "kg", "parameter": "wheelset.mass_kg"}
+    assert ds.creep_method.attrs == {"argument": "method"}
+    assert list(ds.creep_method.values) == ["fastsim", "polach"]
     ref = rr.simulate(duration=0.4, targets=[0.02], method="polach",
                       params={"scenario": {"mu0": 0.35}, "wheelset": {"mass_kg": 15.0}})
-    assert ds.adhesion.sel({"method": "polach", "wheelset.mass_kg": 15.0}).values[0] \
+    assert ds.adhesion.sel(creep_method="polach", mass_kg=15.0).values[0] \
         == ref.summary()[0]["adhesion"]
+
+
+def test_sweep_rig_dimension_names_when_last_parts_clash():
+    """Two paths ending alike, or a path ending as a simulate argument on the
+    same grid: the whole path, '.' -> '_', names the dimension."""
+    ds = sweep_rig({"roller_drive.kp_N_m_s_per_rad": [300.0],
+                    "wheelset_drive.kp_N_m_s_per_rad": [100.0, 120.0],
+                    "integration.substeps": [1], "substeps": [1, 2]},
+                   duration=0.2, targets=[0.02], backend="serial", progress=False)
+    assert ds.reached.dims == ("roller_drive_kp_N_m_s_per_rad",
+                               "wheelset_drive_kp_N_m_s_per_rad", "integration_substeps",
+                               "substeps", "target")
+    assert ds.wheelset_drive_kp_N_m_s_per_rad.attrs["parameter"] == \
+        "wheelset_drive.kp_N_m_s_per_rad"
+    assert "parameter" not in ds.substeps.attrs
+    ds.reached.sel(wheelset_drive_kp_N_m_s_per_rad=120.0, substeps=2)
+    ds = sweep_rig({"integration.method": ["trbdf2"], "method": ["polach"]}, duration=0.2,
+                   targets=[0.02], backend="serial", progress=False)
+    assert ds.reached.dims == ("integration_method", "creep_method", "target")
 
 
 # (5) bad input names what is wrong; failures carry their place in the grid
@@ -239,10 +294,17 @@ def test_exception_in_a_chunk_names_its_cases():
     with pytest.raises(rr.RollerRigError, match=r"grid index \(0, 1\).*mu = -0.1"):
         sweep("creep_forces", {"cx": [0.001], "mu": [0.3, -0.1]}, chunk=1, progress=False,
               N=500.0, errors="raise", **FIXED)
-    # a run that raises is named by its parameters
-    with pytest.raises(rr.RollerRigError, match=r"run 1 \(grid index \(1,\): scenario.mu0 = "
-                                                r"-0.2\) failed.*mu0 must be a finite"):
+    # a bad parameter value is refused before any run, naming the axis and value
+    with pytest.raises(rr.RollerRigError, match=r"sweep_rig: grid axis 'scenario.mu0' = -0.2: "
+                                                r"scenario.mu0 must be a finite number > 0"):
         sweep_rig({"scenario.mu0": [0.3, -0.2]}, duration=0.2, progress=False)
+    with pytest.raises(rr.RollerRigError, match=r"grid axis 'roller_drive.gear_ratio' = 2.0: "
+                                                r".*does not act on the model"):
+        sweep_rig({"roller_drive.gear_ratio": [2.0]}, duration=0.2, progress=False)
+    # a run that raises is named by its parameters
+    with pytest.raises(rr.RollerRigError, match=r"run 1 \(grid index \(1,\): dt = 0.5\) "
+                                                r"failed.*dt must be a finite number in"):
+        sweep_rig({"dt": [0.004, 0.5]}, duration=1.0, targets=[0.02], progress=False)
 
 
 def test_ctrl_c_cancels_pending_chunks():
