@@ -1018,7 +1018,7 @@ static PyObject *Rig_run(RigObject *self, PyObject *args)
     PyObject *robj, *xobj, *out = NULL;
     PyArrayObject *r = NULL, *x = NULL;
     npy_intp n, i, start, dims[2];
-    int st = RR_OK;
+    int st = RR_OK, worst = RR_OK;
 
     if (!PyArg_ParseTuple(args, "OO:run", &robj, &xobj))
         return NULL;
@@ -1045,12 +1045,13 @@ static PyObject *Rig_run(RigObject *self, PyObject *args)
             rec[i] = NAN;
         for (start = 0; start < n && st >= 0; start += 256) {
             const long len = (long)(start + 256 < n ? 256 : n - start);
-            long done;
             Py_BEGIN_ALLOW_THREADS
-            done = rr_rig_run(&self->rig, len, rr + start, xr + start,
-                              rec + start * RR_REC_COUNT, &st);
+            rr_rig_run(&self->rig, len, rr + start, xr + start, rec + start * RR_REC_COUNT,
+                       &st);
             Py_END_ALLOW_THREADS
-            (void)done;
+            /* the whole run's status: an error, else the worst warning of any chunk */
+            if (st < 0 || st > worst)
+                worst = st;
             if (PyErr_CheckSignals() < 0) {
                 rig_leave(self);
                 goto fail;
@@ -1060,7 +1061,7 @@ static PyObject *Rig_run(RigObject *self, PyObject *args)
     rig_leave(self);
     Py_DECREF(r);
     Py_DECREF(x);
-    return Py_BuildValue("Ni", out, st);
+    return Py_BuildValue("Ni", out, worst);
 fail:
     Py_XDECREF(r);
     Py_XDECREF(x);

@@ -367,3 +367,16 @@ def test_profile_extremes():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         assert np.isnan(p.z_at(1e300)) and np.isnan(p.curvature(-1e300))
+
+
+def test_rig_run_reports_the_worst_status_of_the_whole_run():
+    """run() returned the status of its last block of 256 samples only, so
+    warnings early in a run were lost.  At a 10 ms sample (the controllers
+    are tuned for 4 ms) the braking transient warns, free rolling after it
+    does not."""
+    rig = rr.build_rig(dt=0.01)[0]
+    n = 3000
+    rec, status = rig.run(np.full(n, 5 / 0.16), np.where(np.arange(n) < 200, 0.04, np.nan))
+    warned = np.flatnonzero(rec[:, -1] > 0)
+    assert warned.size and warned.max() < n - 256        # none in the last block
+    assert status == 1
