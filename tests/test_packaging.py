@@ -216,3 +216,17 @@ def test_notebooks_extra_can_open_and_run_notebooks():
 def test_requirement_parser_expands_self_references():
     assert {"pytest", "scipy", "xarray", "pandas", "dask[distributed]"} <= _requirements("test")
     assert "numpy" in _requirements()
+
+
+# ------------------------------------------------------------ the checkout
+
+def test_gitignore_covers_what_the_cli_writes():
+    """`rollerrig simulate` from the checkout (the README's first command)
+    leaves nothing for `git status` to show."""
+    _tracked_files()                                  # skips outside a git checkout
+    from rollerrig.cli import build_parser
+
+    out = build_parser().parse_args(["simulate"]).out
+    probe = f"{out}/rig_history.csv"
+    proc = subprocess.run(["git", "check-ignore", "-q", probe], cwd=REPO)
+    assert proc.returncode == 0, f".gitignore does not cover the CLI's output {probe}"
