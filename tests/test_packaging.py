@@ -15,6 +15,7 @@ import glob
 import importlib.util
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -107,6 +108,50 @@ def test_sdist_has_no_build_products(sdist_members):
     patterns = ["*.o", "*.a", "*.so", "*.pyc", "*/__pycache__/*", "csrc/build/*"]
     products = sorted(n for n in members if any(fnmatch.fnmatch(n, p) for p in patterns))
     assert not products, products
+
+
+# ------------------------------------------------------------ licence and notice
+
+# MD5 of the Apache License 2.0 as the ASF publishes it (LICENSE-2.0.txt)
+APACHE_2_MD5 = "3b83ef96387f14655fc854ddc3c6bd57"
+
+
+def test_licence_is_the_apache_text_the_metadata_names():
+    import configparser
+    import hashlib
+
+    text = (REPO / "LICENSE").read_bytes()
+    assert hashlib.md5(text).hexdigest() == APACHE_2_MD5, "LICENSE is not the verbatim text"
+    cfg = configparser.ConfigParser()
+    cfg.read(REPO / "setup.cfg", encoding="utf-8")
+    assert cfg["metadata"]["license_expression"] == "Apache-2.0"
+    assert cfg["metadata"]["license_files"].split() == ["LICENSE", "NOTICE"]
+
+
+def _from_contact():
+    """Shipped data files that come from CONTACT: the profiles, and every file
+    whose first line names CONTACT's repository as its source."""
+    profiles = [p for p in (REPO / "rollerrig" / "data" / "profiles").iterdir()
+                if p.name != "README.md"]
+    tables = []
+    for folder in ("rollerrig/data", "tests/data"):
+        for path in sorted((REPO / folder).rglob("*.csv")):
+            with open(path, encoding="utf-8") as f:
+                if "eve70a/CONTACT" in f.readline():
+                    tables.append(path)
+    return profiles + tables
+
+
+def test_notice_names_every_file_from_contact():
+    notice = (REPO / "NOTICE").read_text(encoding="utf-8")
+    assert "Copyright 2026 the rollerrig authors" in notice
+    assert "github.com/eve70a/CONTACT" in notice and "Apache License, Version 2.0" in notice
+    files = _from_contact()
+    assert len(files) >= 12, files
+    words = set(re.findall(r"\w[\w.-]*\w", notice))
+    unnamed = [str(p.relative_to(REPO)) for p in files
+               if p.name not in words or f"{p.parent.relative_to(REPO).as_posix()}/:" not in notice]
+    assert not unnamed, f"NOTICE does not attribute these files from CONTACT: {unnamed}"
 
 
 # ------------------------------------------------------------ the notebooks extra
