@@ -265,13 +265,16 @@ def test_requirement_parser_expands_self_references():
 
 # ------------------------------------------------------------ the checkout
 
-def test_gitignore_covers_what_the_cli_writes():
-    """`rollerrig simulate` from the checkout (the README's first command)
-    leaves nothing for `git status` to show."""
+def test_gitignore_covers_what_runs_leave():
+    """`rollerrig simulate` from the checkout (the README's first command),
+    the C builds and the test runs leave nothing for `git status` to show."""
     _tracked_files()                                  # skips outside a git checkout
     from rollerrig.cli import build_parser
 
     out = build_parser().parse_args(["simulate"]).out
-    probe = f"{out}/rig_history.csv"
-    proc = subprocess.run(["git", "check-ignore", "-q", probe], cwd=REPO)
-    assert proc.returncode == 0, f".gitignore does not cover the CLI's output {probe}"
+    left = [f"{out}/rig_history.csv", "csrc/build/rr_hertz.o", ".pytest_cache/README.md",
+            ".hypothesis/examples/0", "tests/__pycache__/conftest.pyc", "build/lib/x.py",
+            "dist/rollerrig-0.1.0.tar.gz", "rollerrig.egg-info/PKG-INFO"]
+    for path in left:
+        proc = subprocess.run(["git", "check-ignore", "-q", path], cwd=REPO)
+        assert proc.returncode == 0, f".gitignore does not cover {path}"
