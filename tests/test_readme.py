@@ -1,0 +1,197 @@
+"""README.md's code runs as written.
+
+Its ```python blocks run in order in one namespace, on the `.[test]` install
+the README tells the user to make, from a temporary working folder (nothing is
+written into the checkout), with matplotlib's non-interactive backend.  A block
+that fails names its README line.
+
+A block that needs what only an extra gives says so in it: run on the base
+install (the extras' modules hidden), such a block must name
+`pip install ".[extra]"` for extras that make it run.
+
+The two set-up commands of the README's ```sh block are the ones .ci/run runs.
+"""
+import re
+import sys
+import traceback
+from pathlib import Path
+
+import pytest
+
+from conftest import ROOT
+
+matplotlib = pytest.importorskip("matplotlib")
+matplotlib.use("Agg")
+
+README = Path(ROOT) / "README.md"
+CI_SCRIPT = Path(ROOT) / ".ci" / "run"
+
+# Top-level modules that only an extra installs, and the extras that give them
+# (setup.cfg; test_extras_table_matches_setup_cfg keeps the two in step).
+EXTRA_MODULES = {
+    "scipy": {"fit"},
+    "xarray": {"sweep"},
+    "pandas": {"sweep"},
+    "tqdm": {"sweep"},
+    "dask": {"distributed"},
+    "distributed": {"distributed"},
+}
+EXTRA_DISTRIBUTIONS = {"scipy": "scipy", "xarray": "xarray", "pandas": "pandas",
+                       "tqdm": "tqdm", "dask": "dask[distributed]",
+                       "distributed": "dask[distributed]"}
+EXTRA_NOTE = re.compile(r'"\.\[([\w,]+)\]"')       # ".[sweep]", ".[fit,sweep]"
+
+
+class Block:
+    def __init__(self, kind, first_line, lines, heading):
+        self.kind = kind                # the fence's language, e.g. "python"
+        self.first_line = first_line    # README line number of the block's first line
+        self.lines = lines
+        self.heading = heading          # the section it sits in
+
+    @property
+    def source(self):
+        return "\n".join(self.lines)
+
+    def __repr__(self):
+        return f"README.md lines {self.first_line}-{self.first_line + len(self.lines) - 1}"
+
+
+def readme_blocks(kind):
+    blocks, heading, fence = [], "", None
+    for number, line in enumerate(README.read_text(encoding="utf-8").splitlines(), 1):
+        if fence is None:
+            if line.startswith("#"):
+                heading = line.lstrip("#").strip()
+            elif line.startswith("```"):
+                fence = Block(line[3:].strip(), number + 1, [], heading)
+        elif line.startswith("```"):
+            blocks.append(fence)
+            fence = None
+        else:
+            fence.lines.append(line)
+    return [b for b in blocks if b.kind == kind]
+
+
+PYTHON_BLOCKS = readme_blocks("python")
+
+
+def run_block(block, namespace):
+    """Execute a block in namespace; on failure, say which README line failed."""
+    # padded so that tracebacks count README lines
+    code = compile("\n" * (block.first_line - 1) + block.source, str(README), "exec")
+    try:
+        exec(code, namespace)
+    except Exception as exc:
+        lines = [f.lineno for f in traceback.extract_tb(exc.__traceback__)
+                 if f.filename == str(README)]
+        where = lines[-1] if lines else block.first_line
+        text = block.lines[where - block.first_line].strip()
+        raise AssertionError(f"README.md line {where} ({block.heading!r} block, {block!r}): "
+                             f"{text}\n  {type(exc).__name__}: {exc}") from exc
+
+
+@pytest.fixture(scope="module")
+def namespaces(tmp_path_factory):
+    """Run every block in order on the full install: the namespace before each."""
+    import matplotlib.pyplot as plt
+
+    workdir = tmp_path_factory.mktemp("readme")
+    before, namespace = [], {"__name__": "__readme__"}
+    with pytest.MonkeyPatch.context() as mp:
+        mp.chdir(workdir)
+        for block in PYTHON_BLOCKS:
+            before.append(dict(namespace))
+            run_block(block, namespace)
+    plt.close("all")
+    return before
+
+
+def test_readme_has_python_blocks():
+    assert len(PYTHON_BLOCKS) >= 5, PYTHON_BLOCKS
+
+
+def test_python_blocks_run_in_order(namespaces):
+    assert len(namespaces) == len(PYTHON_BLOCKS)
+
+
+def _hide(monkeypatch, modules):
+    """Make `import m` fail for each module (and its submodules), as when its
+    distribution is not installed."""
+    for name in list(sys.modules):
+        if name.split(".")[0] in modules:
+            monkeypatch.setitem(sys.modules, name, None)
+    for name in modules:
+        monkeypatch.setitem(sys.modules, name, None)
+
+
+def _extras_named(block):
+    return {extra for group in EXTRA_NOTE.findall(block.source) for extra in group.split(",")}
+
+
+def setup_cfg():
+    import configparser
+
+    cfg = configparser.ConfigParser()
+    cfg.read(Path(ROOT) / "setup.cfg", encoding="utf-8")
+    extras = {name: value.split() for name, value in cfg["options.extras_require"].items()}
+    return cfg["options"]["install_requires"].split(), extras
+
+
+# Known gap, outside this file: the "The rig in time" block calls
+# res.to_dataframe() (pandas) and names pandas but not the extra that gives it.
+# Strict, so it fails once README names `.[sweep]` there: then drop this mark.
+_KNOWN_UNMARKED = {"The rig in time"}
+
+
+@pytest.mark.parametrize("index", [
+    pytest.param(i, id=b.heading or f"block{i}",
+                 marks=[pytest.mark.xfail(strict=True, reason="README names pandas, not "
+                                          "the [sweep] extra, beside to_dataframe()")]
+                 if b.heading in _KNOWN_UNMARKED else [])
+    for i, b in enumerate(PYTHON_BLOCKS)])
+def test_block_names_the_extra_it_needs(index, namespaces, monkeypatch, tmp_path):
+    import matplotlib.pyplot as plt
+
+    block = PYTHON_BLOCKS[index]
+    monkeypatch.chdir(tmp_path)
+    named = _extras_named(block)
+    with monkeypatch.context() as base_install:
+        _hide(base_install, set(EXTRA_MODULES))
+        try:
+            run_block(block, dict(namespaces[index]))
+            return
+        except AssertionError as failure:
+            on_base_install = failure
+    plt.close("all")
+    assert named, (f"{block!r} fails on the base install (`pip install .`) and names no "
+                   f'`pip install ".[extra]"`:\n{on_base_install}')
+    unknown = named - set(setup_cfg()[1])
+    assert not unknown, f"{block!r} names extras setup.cfg lacks: {unknown}"
+    still_missing = {m for m, extras in EXTRA_MODULES.items() if not extras & named}
+    with monkeypatch.context() as with_extras:
+        _hide(with_extras, still_missing)
+        run_block(block, dict(namespaces[index]))
+    plt.close("all")
+
+
+def test_extras_table_matches_setup_cfg():
+    """EXTRA_MODULES above says what setup.cfg's extras install."""
+    base, extras = setup_cfg()
+    for module, names in EXTRA_MODULES.items():
+        distribution = EXTRA_DISTRIBUTIONS[module]
+        assert not any(r.startswith(distribution.split("[")[0]) for r in base), \
+            f"{distribution} is a base dependency now: drop {module} from EXTRA_MODULES"
+        for extra in names:
+            assert any(r.startswith(distribution) for r in extras[extra]), \
+                f"setup.cfg's {extra!r} extra no longer lists {distribution}"
+
+
+def test_shell_commands_are_the_ones_ci_runs():
+    """The README's two commands, as written, are lines of .ci/run."""
+    (block,) = readme_blocks("sh")
+    commands = [line.split("#")[0].strip() for line in block.lines if line.strip()]
+    assert len(commands) == 2, commands
+    ci_lines = {line.strip() for line in CI_SCRIPT.read_text(encoding="utf-8").splitlines()}
+    for command in commands:
+        assert command in ci_lines, f".ci/run does not run the README's `{command}`"
