@@ -44,13 +44,22 @@ def watchdog():
     faulthandler.cancel_dump_traceback_later()
 
 
+def _limit_memory(limit=4 * 2 ** 30):
+    """In the child: at most 4 GB of address space, so that a call that tries
+    to allocate without bound fails there instead of taking the machine."""
+    import resource
+    resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+
+
 def run_isolated(code, timeout=30.0):
-    """Run `code` in a fresh Python; fail the test if it does not return within
-    `timeout` seconds (a hang) or dies on a signal (a crash).  Returns the
-    CompletedProcess (stdout, stderr, returncode) otherwise."""
+    """Run `code` in a fresh Python (at most 4 GB); fail the test if it does
+    not return within `timeout` seconds (a hang) or dies on a signal (a
+    crash).  Returns the CompletedProcess (stdout, stderr, returncode)
+    otherwise."""
     try:
         proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                              timeout=timeout, env={**os.environ, "PYTHONFAULTHANDLER": "1"})
+                              timeout=timeout, env={**os.environ, "PYTHONFAULTHANDLER": "1"},
+                              preexec_fn=_limit_memory)
     except subprocess.TimeoutExpired:
         pytest.fail(f"did not return within {timeout:g} s (hang):\n{code}")
     if proc.returncode < 0:
