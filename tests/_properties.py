@@ -187,6 +187,31 @@ def cases(draw, spec, wild_share=4):
     return {k: float(np.asarray(v).reshape(-1)[0]) for k, v in b.items()}
 
 
+METHODS = tuple(rr.METHODS)
+FRICTIONAL = tuple(m for m in METHODS if m != "linear")
+FASTSIMS = ("fastsim", "fastsim_blended", "modified_fastsim")
+
+
+@st.composite
+def creep_options(draw, methods=METHODS, max_grid=24):
+    """A valid set of options of one method (grids small: a call stays well
+    under a millisecond; the largest grids have their own test)."""
+    method = draw(st.sampled_from(methods))
+    opts = dict(method=method)
+    if method in FASTSIMS:
+        opts.update(nx=draw(st.integers(1, max_grid)), ny=draw(st.integers(1, max_grid)),
+                    bound=draw(st.sampled_from(tuple(rr.BOUNDS))),
+                    grid=draw(st.sampled_from(("rect", "strips"))),
+                    slip_speed=draw(st.sampled_from((None, "local", "rigid"))))
+    if method == "modified_fastsim":
+        opts.update(k0=draw(st.floats(0.0, 1.0, exclude_min=True)),
+                    alpha_inf=draw(st.floats(0.0, 1.0)), beta=draw(st.floats(0.0, 10.0)))
+    if method == "polach":
+        kA = draw(st.floats(0.0, 1.0, exclude_min=True))
+        opts.update(kA=kA, kS=draw(st.floats(0.0, kA, exclude_min=True)))
+    return opts
+
+
 def subset(args, idx):
     """The arguments of the elements idx (scalars stay scalars)."""
     return {k: (v[idx] if isinstance(v, np.ndarray) and v.ndim else v) for k, v in args.items()}

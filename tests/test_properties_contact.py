@@ -18,7 +18,8 @@ from hypothesis.extra import numpy as hnp
 
 import rollerrig as rr
 from rollerrig import RollerRigError, _core
-from _properties import (BAD_TYPES, _units, assert_batch_consistent, assert_finite,
+from _properties import (BAD_TYPES, FASTSIMS, FRICTIONAL, METHODS, _units,
+                         assert_batch_consistent, assert_finite, creep_options,
                          assert_names_argument, assert_same, assert_truthful, batches, cases,
                          examples, log_uniform, or_zero, signed, subset, uniform, watchdog,
                          wild)
@@ -37,9 +38,6 @@ CREEP = dict(cx=signed(1e-8, 1.0), cy=signed(1e-8, 1.0), cphi=signed(1e-6, 50.0)
              speed=or_zero(log_uniform(0.01, 100.0)))
 CREEP_OK = dict(CREEP, nu=NU_OPEN, speed=log_uniform(0.01, 100.0))   # every input valid
 
-METHODS = tuple(rr.METHODS)
-FRICTIONAL = tuple(m for m in METHODS if m != "linear")
-FASTSIMS = ("fastsim", "fastsim_blended", "modified_fastsim")
 CREEP_ARGS = ("cx", "cy", "cphi", "a", "b", "N", "mu", "G", "nu", "speed", "friction",
               "friction.A", "friction.B", "method", "nx", "ny", "bound", "grid", "slip_speed",
               "k0", "alpha_inf", "beta", "kA", "kS")
@@ -48,26 +46,6 @@ frictions = st.one_of(st.none(), st.builds(rr.FallingFriction, A=st.floats(0.0, 
                                                                            exclude_min=True),
                                            B=st.floats(0.0, 20.0)))
 wild_frictions = st.one_of(frictions, st.builds(rr.FallingFriction, A=wild, B=wild))
-
-
-@st.composite
-def creep_options(draw, methods=METHODS, max_grid=24):
-    """A valid set of options of one method (grids small: a call stays well
-    under a millisecond; the largest grids have their own test)."""
-    method = draw(st.sampled_from(methods))
-    opts = dict(method=method)
-    if method in FASTSIMS:
-        opts.update(nx=draw(st.integers(1, max_grid)), ny=draw(st.integers(1, max_grid)),
-                    bound=draw(st.sampled_from(tuple(rr.BOUNDS))),
-                    grid=draw(st.sampled_from(("rect", "strips"))),
-                    slip_speed=draw(st.sampled_from((None, "local", "rigid"))))
-    if method == "modified_fastsim":
-        opts.update(k0=draw(st.floats(0.0, 1.0, exclude_min=True)),
-                    alpha_inf=draw(st.floats(0.0, 1.0)), beta=draw(st.floats(0.0, 10.0)))
-    if method == "polach":
-        kA = draw(st.floats(0.0, 1.0, exclude_min=True))
-        opts.update(kA=kA, kS=draw(st.floats(0.0, kA, exclude_min=True)))
-    return opts
 
 
 def creep(args, opts, friction, errors=None):
