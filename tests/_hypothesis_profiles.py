@@ -28,7 +28,7 @@ import os
 from hypothesis import HealthCheck, Phase, settings
 
 #: examples per test in "ci"; tests ask for a multiple of it (_properties.examples)
-CI_EXAMPLES = 200
+CI_EXAMPLES = 100
 
 _COMMON = dict(deadline=5000, database=None, print_blob=True,
                suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])

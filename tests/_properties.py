@@ -22,7 +22,6 @@ import _hypothesis_profiles  # noqa: F401  (registers and loads the profiles)
 # give back the same double, so a printed case reproduces exactly
 np.set_printoptions(floatmode="unique")
 import rollerrig as rr
-from rollerrig import RollerRigError
 
 def examples(factor):
     """Settings with `factor` times the profile's examples per test (deadline,
@@ -101,7 +100,9 @@ class Plausible:
     @property
     def strategy(self):
         """The range as a strategy of single floats."""
-        return st.floats(0.0, 1.0).map(lambda u: float(self(u)))
+        def value(u):       # a named function: failing examples print the number
+            return float(self(u))
+        return st.floats(0.0, 1.0).map(value)
 
 
 def log_uniform(lo, hi):

@@ -88,7 +88,7 @@ def hertz(args, errors=None):
     return rr.hertz(errors=errors, **args)
 
 
-@examples(5)
+@examples(10)
 @given(args=cases(HERTZ))
 @example(args=dict(A=1e300, B=1e300, N=1e4, E=2.1e11, nu=0.28, E2=2.1e11, nu2=0.28))
 @example(args=dict(A=1.0, B=1.0, N=6e307, E=2.1e11, nu=0.28, E2=2.1e11, nu2=0.28))
@@ -105,7 +105,7 @@ def test_hertz_scalar_finite_or_named_error(args):
     assert_same(h, hertz(args, errors="ignore"))
 
 
-@examples(5)
+@examples(8)
 @given(args=batches(HERTZ))
 @example(args=dict(A=np.array([1e300, 1.0]), B=1e300, N=1e4, E=2.1e11, nu=0.28, E2=2.1e11,
                    nu2=0.28))
@@ -117,7 +117,7 @@ def test_hertz_batch_good_elements_unaffected(args):
         assert_same([v[good] for v in h], hertz(subset(args, good), errors="ignore"))
 
 
-@examples(5)
+@examples(10)
 @given(args=cases(dict(HERTZ, nu=NU_OPEN, nu2=NU_OPEN), wild_share=0))
 def test_hertz_physics(args):
     """Plausible inputs succeed; a, b, p0, delta > 0; p0 = 3 N / (2 pi a b);
@@ -143,7 +143,7 @@ def kalker(args, errors=None):
     return rr.kalker_coefficients(errors=errors, **args)
 
 
-@examples(5)
+@examples(10)
 @given(args=cases(KALKER))
 @example(args=dict(a_over_b=5e-324, nu=0.28))
 @example(args=dict(a_over_b=1.7976931348623157e308, nu=0.28))
@@ -159,7 +159,7 @@ def test_kalker_scalar_finite_or_named_error(args):
     assert_same(k, kalker(args, errors="ignore"))
 
 
-@examples(5)
+@examples(8)
 @given(args=batches(KALKER))
 @example(args=dict(a_over_b=np.array([5e-324, 1.0, np.nan]), nu=0.28))
 def test_kalker_batch_good_elements_unaffected(args):
@@ -170,7 +170,7 @@ def test_kalker_batch_good_elements_unaffected(args):
         assert_same([v[good] for v in k], kalker(subset(args, good), errors="ignore"))
 
 
-@examples(3)
+@examples(6)
 @given(args=cases(dict(KALKER, nu=NU_OPEN), wild_share=0))
 def test_kalker_plausible_positive(args):
     k = kalker(args, errors="ignore")
@@ -195,7 +195,7 @@ def test_poisson_ratio_up_to_one_half_accepted(nu, aob):
 
 # ================================================================== creep forces
 
-@examples(15)
+@examples(16)
 @given(args=cases(CREEP), opts=creep_options(), friction=wild_frictions)
 @example(args=DEFECT_TINY_A, opts=dict(method="fastsim"), friction=None)
 @example(args=DEFECT_LINEAR_INF, opts=dict(method="linear"), friction=None)
@@ -218,7 +218,7 @@ def test_creep_forces_scalar_finite_or_named_error(args, opts, friction):
     assert_same(f, creep(args, opts, friction, errors="ignore"))
 
 
-@examples(10)
+@examples(12)
 @given(args=batches(CREEP), opts=creep_options(), friction=frictions)
 @example(args=dict(DEFECT_TINY_A, a=np.array([2.2e-308, 5e-3])), opts=dict(method="fastsim"),
          friction=None)
@@ -235,7 +235,7 @@ def test_creep_forces_batch_good_elements_unaffected(args, opts, friction):
         assert (one.fx, one.fy, one.mz) == (f.fx[k], f.fy[k], f.mz[k])
 
 
-@examples(5)
+@examples(6)
 @given(args=batches(CREEP_OK, wild_share=0), opts=creep_options(), friction=frictions)
 @example(args=dict(CREEP_EXAMPLE, cx=np.array([1.0]), speed=100.0), opts=dict(method="polach"),
          friction=rr.FallingFriction(A=2.2250738585e-313, B=7.0))
@@ -250,7 +250,7 @@ def _bound(args):
         return np.asarray(args["mu"]) * np.asarray(args["N"])
 
 
-@examples(10)
+@examples(12)
 @given(args=batches(CREEP, wild_share=8), opts=creep_options(FRICTIONAL), friction=frictions)
 @example(args=DEFECT_POLACH_BOUND, opts=POLACH_04, friction=None)
 @example(args=dict(CREEP_EXAMPLE, cx=0.0, cphi=np.array([1e16])), opts=dict(method="polach"),
@@ -273,7 +273,7 @@ def _negated(args):
                 cphi=-np.asarray(args["cphi"]))
 
 
-@examples(10)
+@examples(8)
 @given(args=batches(CREEP, wild_share=8), opts=creep_options(), friction=frictions)
 def test_creep_forces_odd_in_creepage(args, opts, friction):
     """F(-cx, -cy, -cphi) = -F for every method and option, bitwise: negating
@@ -288,7 +288,7 @@ def test_creep_forces_odd_in_creepage(args, opts, friction):
         np.testing.assert_array_equal(b[ok], -a[ok])
 
 
-@examples(10)
+@examples(8)
 @given(args=batches(CREEP, wild_share=8), opts=creep_options(), friction=frictions)
 def test_creep_forces_mirror_in_y(args, opts, friction):
     """Mirroring y: (cx, -cy, -cphi) gives (fx, -fy, -mz).  The FASTSIM rows
@@ -310,7 +310,7 @@ def test_creep_forces_mirror_in_y(args, opts, friction):
     assert np.all(np.abs(m.mz[ok] + f.mz[ok]) <= tol_m)
 
 
-@examples(3)
+@examples(5)
 @given(aob=log_uniform(0.05, 20.0).strategy, nu=NU_OPEN.strategy, nx=st.integers(6, 40),
        ny=st.integers(6, 40),
        grid=st.sampled_from(("rect", "strips")), method=st.sampled_from(("fastsim",
@@ -420,7 +420,7 @@ OPTION_JUNK = st.one_of(st.integers(), st.integers(-3, 5000), wild, st.text(max_
                         st.none(), st.booleans(), st.sampled_from(("fastsim", "rect", "local")))
 
 
-@examples(5)
+@examples(8)
 @given(opts=creep_options(), option=st.sampled_from(("method", "nx", "ny", "bound", "grid",
                                                      "slip_speed", "k0", "alpha_inf", "beta",
                                                      "kA", "kS", "friction")),
@@ -450,7 +450,7 @@ def test_any_option_value_is_taken_or_named(opts, option, value, field):
     assert np.isfinite([r.fx, r.fy, r.mz]).all() and r.status >= 0
 
 
-@examples(2)
+@examples(4)
 @given(option=st.sampled_from(("method", "nx", "ny", "bound", "grid", "slip_speed")),
        value=st.one_of(st.integers(), st.sampled_from((2 ** 32, 2 ** 32 + 1, 2 ** 32 + 4,
                                                        -2 ** 32, 2 ** 63, 2 ** 64 + 1))))
@@ -476,7 +476,7 @@ def test_binding_option_integers_never_wrap(option, value):
 
 # ================================================================== traction field
 
-@examples(5)
+@examples(8)
 @given(args=cases(CREEP), opts=creep_options(FASTSIMS), friction=wild_frictions)
 @example(args=DEFECT_TINY_A, opts=dict(method="fastsim"), friction=None)
 @example(args=dict(CREEP_EXAMPLE, cx=0.0, G=1.7624442498650158e+307), opts=dict(method="fastsim",

@@ -21,7 +21,7 @@ from hypothesis import example, given, strategies as st
 import rollerrig as rr
 from rollerrig import RollerRigError, RollerRigWarning
 from rollerrig.profiles import DATA_DIR
-from _properties import (BAD_TYPES, any_finite, assert_names_argument, examples,
+from _properties import (BAD_TYPES, _units, any_finite, uniform, assert_names_argument, examples,
                          log_uniform, watchdog, wild)
 
 assert watchdog  # the autouse hang detector, imported to take effect here
@@ -54,17 +54,18 @@ def assert_evaluates(p, extra=()):
 def node_arrays(draw, wild_gaps=True):
     """Strictly increasing y [m], gaps from 10 um to 10 mm and at least 2 mm
     wide; if wild_gaps, up to three gaps far smaller (down to the
-    subnormals); z within +-50 mm."""
+    subnormals); z within +-50 mm.  (Gaps and heights from one binary draw:
+    forty points would cost eighty float draws.)"""
     n = draw(st.integers(4, 40))
-    gaps = np.array(draw(st.lists(log_uniform(1e-5, 1e-2).strategy, min_size=n - 1,
-                                  max_size=n - 1)))
+    u = _units(draw(st.binary(min_size=8 * n, max_size=8 * n)), 2 * n)
+    gaps = log_uniform(1e-5, 1e-2)(u[:n - 1])
     gaps *= max(1.0, 2e-3 / gaps.sum())
     if wild_gaps:
         for i in draw(st.lists(st.integers(0, n - 2), max_size=3)):
             gaps[i] = draw(st.sampled_from((5e-324, 1e-300, 1e-30, 1e-18, 1e-15, 1e-12)))
     y0 = draw(st.floats(-0.5, 0.5))
     y = y0 + np.concatenate([[0.0], np.cumsum(gaps)])
-    z = np.array(draw(st.lists(st.floats(-0.05, 0.05), min_size=n, max_size=n)))
+    z = uniform(-0.05, 0.05)(u[n:])
     return y, z
 
 

@@ -19,7 +19,7 @@ from hypothesis import example, given, strategies as st
 import rollerrig as rr
 from rollerrig import RollerRigError, RollerRigWarning
 from rollerrig.rig import RECORD_FIELDS
-from _properties import (BAD_TYPES, FRICTIONAL, METHODS, assert_batch_consistent,
+from _properties import (BAD_TYPES, FRICTIONAL, METHODS, _units, assert_batch_consistent,
                          assert_finite, assert_names_argument, assert_same, batches, cases,
                          creep_options, examples, log_uniform, run_isolated, signed, subset,
                          uniform, watchdog, wild)
@@ -103,6 +103,10 @@ def test_rig_contact_batch(table, args, opts, model, friction, kinematics_only):
                                      spin=50.0, roller_spin=40.0, N_left=1e3, N_right=1e3),
          opts=dict(method="polach"), model=dict(mu=0.4, E=2.1e11, nu=0.28, vmin=1e-3),
          friction=rr.FallingFriction(A=5e-324, B=8.0))
+@example(table="rig", args=dict(x=0.0, y=0.001, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0,
+                                spin=50.0, roller_spin=40.0, N_left=1e240, N_right=1e3),
+         opts=dict(method="linear"), model=dict(mu=0.4, E=2.1e11, nu=0.28, vmin=1e-3),
+         friction=None)
 def test_rig_contact_scalar(table, args, opts, model, friction):
     try:
         c = contact(table, args, opts, model, friction, errors=None)
@@ -195,12 +199,14 @@ LINEAR_ARGS = ("y", "yaw", "vx", "vy", "yaw_rate", "spin", "roller_spin", "table
 LINEAR = {k: STATE[k] for k in LINEAR_ARGS[:-1]}
 
 
-@examples(5)
+@examples(10)
 @given(table=st.sampled_from(sorted(TABLES)), args=batches(LINEAR, max_size=6))
 @example(table="standard", args=dict(y=0.0, yaw=0.0, vx=np.array([np.nan]), vy=0.0,
                                      yaw_rate=0.0, spin=50.0, roller_spin=50.0))
 @example(table="standard", args=dict(y=np.array([0.02]), yaw=0.0, vx=0.0, vy=0.0,
                                      yaw_rate=0.0, spin=50.0, roller_spin=50.0))
+@example(table="rig", args=dict(y=0.0, yaw=np.array([-0.02]), vx=-0.5, vy=1.7370097110199118e+308,
+                                yaw_rate=-2.0, spin=-300.0, roller_spin=-300.0))
 def test_linear_creepages_finite_or_named(table, args):
     """No status to report with: finite creepages, or RollerRigError naming
     an argument of linear_creepages (not of a function it calls)."""
@@ -255,15 +261,20 @@ REFS = st.one_of(log_uniform(1.0, 200.0).strategy, wild)       # roller speed [r
 TARGETS = st.one_of(uniform(0.0, 0.08).strategy, st.just(math.nan), wild)
 
 
-@st.composite
-def rig_states(draw, y0):
-    """The free-rolling state with each component moved by a plausible
-    amount, or a few components set to wild values."""
-    y = np.array(y0, dtype=float)
-    scale = np.array([1e-3, 1e-3, 1e-3, 1.0, 1.0, 0.05, 0.05, 0.1, 1.0, 1.0, 10.0, 10.0])
-    u = np.array(draw(st.lists(st.floats(-1.0, 1.0), min_size=12, max_size=12)))
-    y = y + scale * u
-    for i, v in draw(st.lists(st.tuples(st.integers(0, 11), wild), max_size=2)):
+STATE_SCALE = np.array([1e-3, 1e-3, 1e-3, 1.0, 1.0, 0.05, 0.05, 0.1, 1.0, 1.0, 10.0, 10.0])
+#: moves of the free-rolling state: each component by up to its scale, and
+#: up to two components set to wild values
+state_moves = st.tuples(st.binary(min_size=48, max_size=48),
+                        st.lists(st.tuples(st.integers(0, 11), wild), max_size=2))
+
+
+def moved(y0, move):
+    """y0 moved: u in [0, 1) becomes an offset in (-1, 1) times the scale, 0
+    for u = 0 (all-zero bytes shrink to the free-rolling state itself)."""
+    raw, wilds = move
+    u = _units(raw, 12)
+    y = np.array(y0, dtype=float) + STATE_SCALE * np.where(u < 0.5, 2.0 * u, 2.0 * u - 2.0)
+    for i, v in wilds:
         y[i] = v
     return y
 
@@ -298,12 +309,14 @@ def test_rig_stepping(data, method, start, steps):
 
 
 @examples(3)
-@given(data=st.data(), method=st.sampled_from(METHODS), t=st.one_of(st.floats(0.0, 10.0), wild))
-def test_rig_rhs_and_jac(data, method, t):
+@given(move=state_moves, method=st.sampled_from(METHODS), t=st.one_of(st.floats(0.0, 10.0),
+                                                                       wild))
+@example(move=(bytes(48), [(5, 2.1832561754460966e+304)]), method="linear", t=0.0)
+def test_rig_rhs_and_jac(move, method, t):
     """rhs and jac at any state: finite with a success status, NaN with an
     error (rhs); never an exception for a state of 12 numbers."""
     rig, _, _ = rr.build_rig(method=method, nx=8, ny=8)
-    y = data.draw(rig_states(rig.y))
+    y = moved(rig.y, move)
     dydt, s1 = rig.rhs(t, y)
     if s1 >= 0:
         assert_finite({"dydt": dydt})
