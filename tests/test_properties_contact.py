@@ -476,7 +476,7 @@ def test_binding_option_integers_never_wrap(option, value):
 
 # ================================================================== traction field
 
-@examples(8)
+@examples(12)
 @given(args=cases(CREEP), opts=creep_options(FASTSIMS), friction=wild_frictions)
 @example(args=DEFECT_TINY_A, opts=dict(method="fastsim"), friction=None)
 @example(args=dict(CREEP_EXAMPLE, cx=0.0, G=1.7624442498650158e+307), opts=dict(method="fastsim",

@@ -240,7 +240,7 @@ def test_huge_counts_return_or_are_refused(call):
 
 # ================================================================== contact_table
 
-@examples(1)
+@examples(5)
 @given(y_min=st.one_of(uniform(-0.012, 0.0).strategy, wild),
        y_max=st.one_of(uniform(0.0, 0.012).strategy, wild),
        n=st.one_of(st.integers(2, 12), st.integers(-3, 3), st.sampled_from((2.0, True, "5"))),
@@ -263,7 +263,7 @@ def test_contact_table_finite_or_named(y_min, y_max, n, ns, tol, sep):
 
 # ================================================================== lookup, slopes
 
-@examples(5)
+@examples(10)
 @given(args=batches({"y_ws": uniform(-1.2 * REACH, 1.2 * REACH)}, max_size=12))
 def test_lookup_batch(args):
     """Inside the table: success and finite; outside (or NaN): a negative
@@ -285,7 +285,7 @@ def test_lookup_batch(args):
     assert_batch_consistent({"dz": dz, "droll": droll}, c.status)
 
 
-@examples(3)
+@examples(5)
 @given(y=st.one_of(uniform(-REACH, REACH).strategy, wild))
 def test_lookup_scalar(y):
     try:
@@ -330,7 +330,7 @@ def conicity(geometry, amplitude, method, **kw):
     return out, caught
 
 
-@examples(3)
+@examples(5)
 @given(k=st.one_of(log_uniform(1e-3, 1.0).strategy, st.floats(-1.0, -1e-3)),
        amp=uniform(1e-4, 5e-3).strategy, method=st.sampled_from(("harmonic", "klingel",
                                                                   "simple")),
@@ -357,7 +357,7 @@ def test_conicity_of_a_cone_is_its_slope(k, amp, method, n, npts):
     assert out == pytest.approx(k, rel=1e-7 if method == "klingel" else 1e-9)
 
 
-@examples(3)
+@examples(8)
 @given(y=st.lists(st.one_of(st.floats(-0.02, 0.02), wild), min_size=0, max_size=40),
        dr=st.lists(st.one_of(st.floats(-1e-3, 1e-3), wild), min_size=0, max_size=40),
        amp=st.one_of(uniform(1e-4, 5e-3).strategy, wild, st.lists(wild, max_size=3)),
@@ -399,7 +399,7 @@ def test_conicity_of_the_rig_geometries(geometry, amp, method):
     assert math.isfinite(out) or (method == "klingel" and caught)
 
 
-@examples(0.5)
+@examples(2)
 @given(args=batches({"y_ws": shifts}, max_size=6, wild_share=4))
 def test_rolling_radius_difference(args):
     """NaN exactly where wheelset_contact fails; odd in y on the symmetric

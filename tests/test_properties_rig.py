@@ -283,7 +283,7 @@ def record_dict(rec):
     return dict(zip(RECORD_FIELDS, rec))
 
 
-@examples(2)
+@examples(5)
 @given(data=st.data(), method=st.sampled_from(METHODS), start=st.sampled_from(("rolling",
                                                                                "rest")),
        steps=st.lists(st.tuples(REFS, TARGETS), min_size=1, max_size=6))
@@ -308,7 +308,7 @@ def test_rig_stepping(data, method, start, steps):
             break
 
 
-@examples(3)
+@examples(8)
 @given(move=state_moves, method=st.sampled_from(METHODS), t=st.one_of(st.floats(0.0, 10.0),
                                                                        wild))
 @example(move=(bytes(48), [(5, 2.1832561754460966e+304)]), method="linear", t=0.0)
