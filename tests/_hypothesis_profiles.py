@@ -6,9 +6,11 @@
     HYPOTHESIS_PROFILE=search python -m pytest tests/test_properties_*.py
     ... --hypothesis-show-statistics                        # examples run per test
 
-"ci" (what `python -m pytest` and CI run) is derandomized: every run tries
-the same examples, so CI passes or fails on the code alone, never on the
-luck of the draw.  "long" draws fresh random examples, ten times as many:
+"ci" (what `python -m pytest` and CI run) is derandomized: every run of the
+same code tries the same examples, so CI passes or fails on the code alone,
+never on the luck of the draw.  (Hypothesis also draws literal constants
+from the project's loaded modules, so a change to the code, or running a
+file alone instead of the whole suite, may change the examples drawn.)  "long" draws fresh random examples, ten times as many:
 it is the one that finds new failures.  "quick" is a tenth of "ci" for
 editing; "search" is "ci" freshly random and without the explicit @example cases (a failing
 explicit example stops a test before any example is generated, so while the

@@ -230,6 +230,9 @@ def point_lists(draw):
 @given(points=point_lists(), kind=st.sampled_from(("wheel", "rail")),
        units=st.sampled_from(("m", "mm", "cm")), on_fold=st.sampled_from(("trim", "raise")),
        mirror_y=st.booleans(), mirror_z=st.booleans(), smoothing=smoothings)
+@example(points=([0.0, 0.0006666666666666666, 0.0013333333333333333, 0.002], [-0.05] * 4),
+         kind="wheel", units="m", on_fold="trim", mirror_y=False, mirror_z=False,
+         smoothing=7.275431537835326e+77)
 def test_from_points(points, kind, units, on_fold, mirror_y, mirror_z, smoothing):
     y, z = points
     with warnings.catch_warnings():
