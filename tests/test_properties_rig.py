@@ -501,6 +501,7 @@ def test_fit_polach_on_its_own_curves(mu0, kA, ratio, A, B, speeds):
        a=st.one_of(st.just(6e-3), wild), N=st.one_of(st.just(2e4), wild),
        speed=st.one_of(st.just(10.0), wild, st.lists(wild, max_size=2)))
 @example(cx=[0.0], force=[1.3407807929942597e+154], a=6e-3, N=2e4, speed=10.0)
+@example(cx=[0.0], force=[0.015625], a=6e-3, N=2e4, speed=10.0)
 def test_fit_polach_any_data_finite_or_named(cx, force, a, N, speed):
     names = ("cx", "force", "a", "b", "N", "G", "nu", "speed", "cy", "cphi", "weights", "x0",
              "fit", "bounds")
