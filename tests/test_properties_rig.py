@@ -1,0 +1,516 @@
+"""Property-based tests of the rig: rig_contact, linear_creepages, simulate,
+stepping a Rig from build_rig (sample, advance, rhs, jac, set_state) and
+fit_polach (issue 11).
+
+Run:  python -m pytest tests/test_properties_rig.py          (profile "ci")
+      HYPOTHESIS_PROFILE=long python -m pytest tests/test_properties_*.py
+      (see tests/_hypothesis_profiles.py)
+
+simulate() and fit_polach() are whole workflows (milliseconds to a second
+per call): they get few, short examples.
+"""
+import math
+import warnings
+
+import numpy as np
+import pytest
+from hypothesis import example, given, strategies as st
+
+import rollerrig as rr
+from rollerrig import RollerRigError, RollerRigWarning
+from rollerrig.rig import RECORD_FIELDS
+from _properties import (BAD_TYPES, FRICTIONAL, METHODS, _units, assert_batch_consistent,
+                         assert_finite, assert_names_argument, assert_same, batches, cases,
+                         creep_options, examples, log_uniform, run_isolated, signed, subset,
+                         uniform, watchdog, wild)
+
+assert watchdog  # the autouse hang detector, imported to take effect here
+
+STANDARD_TABLE = rr.contact_table(rr.RigGeometry.standard(), -0.008, 0.008, 81, nsamples=150)
+RIG_TABLE = rr.build_rig()[2]                  # the rig's cone on its crowned roller
+TABLES = {"standard": STANDARD_TABLE, "rig": RIG_TABLE}
+
+STATE = dict(x=signed(1e-7, 5e-3), y=uniform(-7e-3, 7e-3), yaw=signed(1e-7, 2e-2),
+             vx=signed(1e-6, 0.5), vy=signed(1e-6, 0.5), yaw_rate=signed(1e-6, 2.0),
+             spin=signed(1.0, 300.0), roller_spin=signed(1.0, 300.0),
+             N_left=log_uniform(10.0, 1e5), N_right=log_uniform(10.0, 1e5))
+STATE_ARGS = tuple(STATE) + ("mu", "E", "nu", "vmin", "friction", "friction.A", "friction.B",
+                             "method", "nx", "ny", "kA", "kS", "k0", "alpha_inf", "beta",
+                             "bound", "grid", "slip_speed", "table")
+VECTORS = ("p", "t1", "t2", "n", "force", "moment")
+WHEEL_FIELDS = VECTORS + ("theta", "cx", "cy", "cphi", "V", "N", "a", "b", "p0", "fx", "fy",
+                          "mz", "r", "R", "delta", "s_wheel", "s_roller")
+FORCE_FIELDS = ("N", "a", "b", "p0", "fx", "fy", "mz", "force", "moment")
+
+frictions = st.one_of(st.none(), st.builds(rr.FallingFriction,
+                                           A=st.floats(0.0, 1.0, exclude_min=True),
+                                           B=st.floats(0.0, 20.0)))
+models = st.fixed_dictionaries(dict(mu=log_uniform(0.05, 1.0).strategy,
+                                    E=log_uniform(1e10, 1e12).strategy,
+                                    nu=uniform(0.0, 0.49999999999999994).strategy,
+                                    vmin=log_uniform(1e-4, 0.1).strategy))
+
+
+def contact(table, args, opts, model, friction, errors="ignore", **kw):
+    return rr.rig_contact(TABLES[table], **args, **opts, **model, friction=friction,
+                          errors=errors, **kw)
+
+
+def wheel_fields(w, skip=()):
+    return {f: getattr(w, f) for f in WHEEL_FIELDS if f not in skip}
+
+
+# ================================================================== rig_contact
+
+@examples(5)
+@given(table=st.sampled_from(sorted(TABLES)), args=batches(STATE, max_size=6),
+       opts=creep_options(), model=models, friction=frictions,
+       kinematics_only=st.booleans())
+@example(table="rig", args=dict(x=np.array([1.0]), y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0,
+                                spin=50.0, roller_spin=50.0, N_left=1e3, N_right=1e3),
+         opts=dict(method="fastsim"), model=dict(mu=0.4, E=2.1e11, nu=0.28, vmin=1e-3),
+         friction=None, kinematics_only=False)
+def test_rig_contact_batch(table, args, opts, model, friction, kinematics_only):
+    """Per wheel and state: success and finite, or a negative status and NaN;
+    the pose finite where both wheels succeed; a bad state leaves the
+    others as they are alone."""
+    c = contact(table, args, opts, model, friction, kinematics_only=kinematics_only)
+    skip = FORCE_FIELDS if kinematics_only else ()
+    for side in ("left", "right"):
+        w = getattr(c, side)
+        assert_batch_consistent(wheel_fields(w, skip), w.status, f"{side}.")
+        if kinematics_only:
+            for f in FORCE_FIELDS:
+                assert np.all(np.isnan(getattr(w, f))), f
+    np.testing.assert_array_equal(c.status, np.minimum(c.left.status, c.right.status))
+    both = (c.left.status >= 0) & (c.right.status >= 0)
+    for name, v in c.pose._asdict().items():
+        v = np.asarray(v)
+        assert np.all(np.isfinite(v[..., both])), f"pose.{name} not finite"
+    good = np.flatnonzero(c.status >= 0)
+    if 0 < good.size < c.status.size:
+        alone = contact(table, subset(args, good), opts, model, friction,
+                        kinematics_only=kinematics_only)
+        for side in ("left", "right"):
+            assert_same([np.asarray(v)[..., good] for v in getattr(c, side)],
+                        list(getattr(alone, side)), f"{side} of the good states alone: ")
+
+
+@examples(5)
+@given(table=st.sampled_from(sorted(TABLES)), args=cases(STATE), opts=creep_options(),
+       model=models, friction=frictions)
+@example(table="standard", args=dict(x=0.0, y=0.001, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0,
+                                     spin=50.0, roller_spin=40.0, N_left=1e3, N_right=1e3),
+         opts=dict(method="polach"), model=dict(mu=0.4, E=2.1e11, nu=0.28, vmin=1e-3),
+         friction=rr.FallingFriction(A=5e-324, B=8.0))
+@example(table="rig", args=dict(x=0.0, y=0.001, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0,
+                                spin=50.0, roller_spin=40.0, N_left=1e240, N_right=1e3),
+         opts=dict(method="linear"), model=dict(mu=0.4, E=2.1e11, nu=0.28, vmin=1e-3),
+         friction=None)
+def test_rig_contact_scalar(table, args, opts, model, friction):
+    try:
+        c = contact(table, args, opts, model, friction, errors=None)
+    except RollerRigError as e:
+        assert_names_argument(e, "rig_contact", STATE_ARGS)
+        return
+    for side in ("left", "right"):
+        assert_finite(wheel_fields(getattr(c, side)), f"{side}.")
+
+
+@examples(5)
+@given(table=st.sampled_from(sorted(TABLES)), args=batches(STATE, max_size=6, wild_share=8),
+       opts=creep_options(FRICTIONAL), model=models, friction=frictions)
+def test_rig_contact_force_bounded_by_mu_N(table, args, opts, model, friction):
+    """Each wheel's creep force |(fx, fy)| <= mu N (1e-12 rounding; mu(w) <= mu)."""
+    c = contact(table, args, opts, model, friction)
+    for side in ("left", "right"):
+        w = getattr(c, side)
+        ok = (w.status >= 0) & np.isfinite(w.fx) & np.isfinite(w.fy)
+        F = np.hypot(w.fx, w.fy)[ok]
+        assert np.all(F <= model["mu"] * w.N[ok] * (1 + 1e-12)), F / (model["mu"] * w.N[ok])
+
+
+@examples(3)
+@given(table=st.sampled_from(sorted(TABLES)), y=uniform(-7e-3, 7e-3).strategy,
+       spin=log_uniform(1.0, 300.0).strategy, side=st.sampled_from(("left", "right")),
+       method=st.sampled_from(METHODS))
+@example(table="rig", y=-0.00525, spin=1.0, side="left", method="linear")
+def test_rig_contact_free_rolling_has_no_creepage(table, y, spin, side, method):
+    """The rollers turning so that spin r = roller_spin R at one contact, the
+    wheelset centred in yaw and at rest otherwise: that contact's cx and cy
+    vanish (rounding of r, R and the speeds: 1e-12) and so its fx.  (Between
+    table rows the interpolated r and the interpolated contact point must
+    agree for this: today they differ at second order in the row spacing.)"""
+    t = TABLES[table]
+    geo = getattr(t.lookup(y), side)
+    roller_spin = spin * float(geo.r[0]) / float(geo.R[0])
+    c = rr.rig_contact(t, y=y, spin=spin, roller_spin=roller_spin, N_left=1e3, N_right=1e3,
+                       method=method, nx=10, ny=10)
+    w = getattr(c, side)
+    assert abs(w.cx) <= 1e-12 and abs(w.cy) <= 1e-12, (w.cx, w.cy)
+    assert abs(w.fx) <= 1e-9 * 0.4 * 1e3, w.fx
+
+
+@examples(1)
+@given(name=st.sampled_from(STATE_ARGS[:10]), bad=st.sampled_from(sorted(BAD_TYPES)),
+       table=st.sampled_from(sorted(TABLES)))
+def test_rig_contact_wrong_types_named(name, bad, table):
+    args = dict(y=0.001, spin=50.0, roller_spin=50.0, N_left=1e3, N_right=1e3)
+    args[name] = BAD_TYPES[bad]
+    with pytest.raises(RollerRigError) as exc:
+        rr.rig_contact(TABLES[table], **args)
+    assert_names_argument(exc.value, "rig_contact", [name])
+
+
+@examples(1)
+@given(option=st.sampled_from(("mu", "E", "nu", "vmin")),
+       value=st.one_of(wild, st.text(max_size=4), st.none(), st.booleans(),
+                       st.just(np.array([0.3, 0.4]))), table=st.sampled_from(sorted(TABLES)))
+@example(option="mu", value=np.array([0.3, 0.4]), table="standard")
+@example(option="mu", value="0.4", table="standard")
+def test_rig_contact_model_options_taken_or_named(option, value, table):
+    kw = dict(y=0.001, spin=50.0, roller_spin=50.0, N_left=1e3, N_right=1e3)
+    try:
+        c = rr.rig_contact(TABLES[table], **kw, **{option: value})
+    except RollerRigError as e:
+        assert_names_argument(e, "rig_contact", [option])
+        return
+    assert_finite(wheel_fields(c.left))
+
+
+def test_rig_contact_rejects_a_non_table():
+    for bad in (None, 3.0, rr.RigGeometry.standard(), np.zeros((4, 28))):
+        with pytest.raises(RollerRigError) as exc:
+            rr.rig_contact(bad, spin=50.0, roller_spin=50.0, N_left=1e3, N_right=1e3)
+        assert_names_argument(exc.value, "rig_contact", ["table"])
+
+
+@pytest.mark.parametrize("shapes", [((3,), (2,)), ((2, 3), (3, 2)), ((4,), (0,))])
+def test_rig_contact_shapes_that_do_not_broadcast(shapes):
+    with pytest.raises(RollerRigError) as exc:
+        rr.rig_contact(STANDARD_TABLE, y=np.zeros(shapes[0]), yaw=np.zeros(shapes[1]),
+                       spin=50.0, roller_spin=50.0, N_left=1e3, N_right=1e3)
+    assert_names_argument(exc.value, "rig_contact", ["y", "yaw"])
+
+
+# ================================================================== linear_creepages
+
+LINEAR_ARGS = ("y", "yaw", "vx", "vy", "yaw_rate", "spin", "roller_spin", "table")
+LINEAR = {k: STATE[k] for k in LINEAR_ARGS[:-1]}
+
+
+@examples(10)
+@given(table=st.sampled_from(sorted(TABLES)), args=batches(LINEAR, max_size=6))
+@example(table="standard", args=dict(y=0.0, yaw=0.0, vx=np.array([np.nan]), vy=0.0,
+                                     yaw_rate=0.0, spin=50.0, roller_spin=50.0))
+@example(table="standard", args=dict(y=np.array([0.02]), yaw=0.0, vx=0.0, vy=0.0,
+                                     yaw_rate=0.0, spin=50.0, roller_spin=50.0))
+@example(table="rig", args=dict(y=0.0, yaw=np.array([-0.02]), vx=-0.5, vy=1.7370097110199118e+308,
+                                yaw_rate=-2.0, spin=-300.0, roller_spin=-300.0))
+def test_linear_creepages_finite_or_named(table, args):
+    """No status to report with: finite creepages, or RollerRigError naming
+    an argument of linear_creepages (not of a function it calls)."""
+    try:
+        left, right = rr.linear_creepages(TABLES[table], **args)
+    except RollerRigError as e:
+        assert_names_argument(e, "linear_creepages", LINEAR_ARGS)
+        return
+    for name, w in (("left", left), ("right", right)):
+        assert_finite(w._asdict(), f"{name}.")
+
+
+@pytest.mark.parametrize("shapes", [((3,), (2,)), ((2, 3), (3, 2))])
+def test_linear_creepages_shapes_that_do_not_broadcast(shapes):
+    with pytest.raises(RollerRigError) as exc:
+        rr.linear_creepages(STANDARD_TABLE, y=np.zeros(shapes[0]), yaw=np.zeros(shapes[1]),
+                            spin=50.0, roller_spin=50.0)
+    assert_names_argument(exc.value, "linear_creepages", ["y", "yaw"])
+
+
+@examples(1)
+@given(name=st.sampled_from(LINEAR_ARGS[:-1]), bad=st.sampled_from(sorted(BAD_TYPES)))
+def test_linear_creepages_wrong_types_named(name, bad):
+    args = dict(y=0.001, spin=50.0, roller_spin=50.0)
+    args[name] = BAD_TYPES[bad]
+    with pytest.raises(RollerRigError) as exc:
+        rr.linear_creepages(STANDARD_TABLE, **args)
+    assert_names_argument(exc.value, "linear_creepages", [name])
+
+
+@examples(1)
+@given(table=st.sampled_from(sorted(TABLES)), y=uniform(-7e-3, 7e-3).strategy,
+       spin=log_uniform(1.0, 300.0).strategy)
+def test_linear_creepages_free_rolling(table, y, spin):
+    """At free rolling of the centred wheelset at rest (spin r0 = roller_spin
+    R0) eq. 7's speed term vanishes and only the radius terms are left:
+    cx = (r0 - r)/r0 + (R - R0)/R0 at each contact, cy = 0."""
+    t = TABLES[table]
+    g = t.geometry
+    left, right = rr.linear_creepages(t, y=y, spin=spin,
+                                      roller_spin=spin * g.wheel_radius / g.roller_radius)
+    geo = t.lookup(y)
+    for w, side in ((left, geo.left), (right, geo.right)):
+        r, R = float(side.r[0]), float(side.R[0])
+        expect = (g.wheel_radius - r) / g.wheel_radius + (R - g.roller_radius) / g.roller_radius
+        assert w.cx == pytest.approx(expect, abs=1e-12) and w.cy == 0.0
+
+
+# ================================================================== build_rig and stepping
+
+REFS = st.one_of(log_uniform(1.0, 200.0).strategy, wild)       # roller speed [rad/s]
+TARGETS = st.one_of(uniform(0.0, 0.08).strategy, st.just(math.nan), wild)
+
+
+STATE_SCALE = np.array([1e-3, 1e-3, 1e-3, 1.0, 1.0, 0.05, 0.05, 0.1, 1.0, 1.0, 10.0, 10.0])
+#: moves of the free-rolling state: each component by up to its scale, and
+#: up to two components set to wild values
+state_moves = st.tuples(st.binary(min_size=48, max_size=48),
+                        st.lists(st.tuples(st.integers(0, 11), wild), max_size=2))
+
+
+def moved(y0, move):
+    """y0 moved: u in [0, 1) becomes an offset in (-1, 1) times the scale, 0
+    for u = 0 (all-zero bytes shrink to the free-rolling state itself)."""
+    raw, wilds = move
+    u = _units(raw, 12)
+    y = np.array(y0, dtype=float) + STATE_SCALE * np.where(u < 0.5, 2.0 * u, 2.0 * u - 2.0)
+    for i, v in wilds:
+        y[i] = v
+    return y
+
+
+def record_dict(rec):
+    return dict(zip(RECORD_FIELDS, rec))
+
+
+@examples(5)
+@given(data=st.data(), method=st.sampled_from(METHODS), start=st.sampled_from(("rolling",
+                                                                               "rest")),
+       steps=st.lists(st.tuples(REFS, TARGETS), min_size=1, max_size=6))
+def test_rig_stepping(data, method, start, steps):
+    """sample() and advance() with any references: a success gives a finite
+    record; an error leaves the state as it was, and the rig refuses to go
+    on (status stays negative)."""
+    rig, _, _ = rr.build_rig(method=method, start=start, nx=8, ny=8)
+    for roller_ref, xi_ref in steps:
+        y, t = rig.y, rig.t
+        st_ = rig.sample(roller_ref, xi_ref)
+        if st_ < 0:
+            np.testing.assert_array_equal(rig.y, y)
+            assert rig.t == t
+            continue
+        rec, st_ = rig.advance()
+        if st_ >= 0:
+            assert_finite({k: v for k, v in record_dict(rec).items() if k != "xi_ref"})
+        else:
+            np.testing.assert_array_equal(rig.y, y)
+            assert rig.advance()[1] < 0 and rig.status < 0
+            break
+
+
+@examples(8)
+@given(move=state_moves, method=st.sampled_from(METHODS), t=st.one_of(st.floats(0.0, 10.0),
+                                                                       wild))
+@example(move=(bytes(48), [(5, 2.1832561754460966e+304)]), method="linear", t=0.0)
+def test_rig_rhs_and_jac(move, method, t):
+    """rhs and jac at any state: finite with a success status, NaN with an
+    error (rhs); never an exception for a state of 12 numbers."""
+    rig, _, _ = rr.build_rig(method=method, nx=8, ny=8)
+    y = moved(rig.y, move)
+    dydt, s1 = rig.rhs(t, y)
+    if s1 >= 0:
+        assert_finite({"dydt": dydt})
+    else:
+        assert np.all(np.isnan(dydt)), dydt
+    J, s2 = rig.jac(t, y)
+    if s2 >= 0:
+        assert_finite({"J": J})
+    status = rig.set_state(t, y)
+    finite = math.isfinite(t) and np.all(np.isfinite(y))
+    assert (status == 0) == finite, status
+    if status == 0:
+        np.testing.assert_array_equal(rig.y, y)
+        rec, st_ = rig.advance()
+        if st_ >= 0:
+            assert_finite({k: v for k, v in record_dict(rec).items() if k != "xi_ref"})
+
+
+@pytest.mark.parametrize("call", ["rhs", "jac", "set_state"])
+@pytest.mark.parametrize("state", [[1.0, 2.0, 3.0], np.zeros((2, 12)), "twelve", None,
+                                   np.zeros(12, dtype=complex), [0.0] * 13])
+def test_rig_state_of_wrong_shape_or_type_named(call, state):
+    """A state that is not 12 real numbers: RollerRigError (a ValueError)."""
+    rig, _, _ = rr.build_rig()
+    with pytest.raises(RollerRigError):
+        getattr(rig, call)(0.0, state)
+
+
+@pytest.mark.parametrize("refs", [(None, 0.02), ("5", 0.02), (31.25, 1j)])
+def test_rig_sample_wrong_types_named(refs):
+    rig, _, _ = rr.build_rig()
+    with pytest.raises(RollerRigError):
+        rig.sample(*refs)
+
+
+@examples(0.5)
+@given(method=st.sampled_from(METHODS), V=log_uniform(0.1, 30.0).strategy,
+       mu0=log_uniform(0.05, 1.0).strategy)
+def test_rig_starts_free_rolling(method, V, mu0):
+    """start="rolling": wheelset and rollers at free rolling, no creepage (the
+    speeds from the same radii: rounding, 1e-12) and no creep force to 1e-9 mu N."""
+    rig, P, _ = rr.build_rig(method=method, roller_speed=V, nx=8, ny=8,
+                             params={"scenario": {"mu0": mu0}})
+    rec, st_ = rig.record()
+    r = record_dict(rec)
+    assert st_ >= 0
+    assert abs(r["creepage"]) <= 1e-12 and abs(r["creepage_left"]) <= 1e-12
+    N = r["normal_load_left"] + r["normal_load_right"]
+    assert abs(r["fx"]) <= 1e-9 * mu0 * N
+
+
+# ================================================================== simulate
+
+@examples(0.25)
+@given(duration=st.floats(0.004, 0.12), dt=st.sampled_from((0.002, 0.004, 0.01)),
+       method=st.sampled_from(METHODS), mu0=log_uniform(0.05, 1.0).strategy,
+       targets=st.lists(uniform(0.0, 0.08).strategy, min_size=1, max_size=3),
+       V=st.one_of(log_uniform(0.5, 20.0).strategy, wild), start=st.sampled_from(("rolling",
+                                                                                  "rest")),
+       ode=st.sampled_from(("trbdf2", "ros2", "lineuler")), substeps=st.integers(1, 3))
+def test_simulate_short_runs(duration, dt, method, mu0, targets, V, start, ode, substeps):
+    """A short run: a finite history (status >= 0), or a clean stop with a
+    message and the good samples kept; the adhesion never above mu0 for a
+    frictional method (each wheel's |F| <= mu0 N: 1e-12 rounding)."""
+    try:
+        res = rr.simulate(duration=duration, dt=dt, method=method, targets=targets,
+                          roller_speed=V, start=start, ode=ode, substeps=substeps, nx=8, ny=8,
+                          params={"scenario": {"mu0": mu0}})
+    except RollerRigError as e:
+        assert_names_argument(e, ("simulate", "params"), ("roller_speed",))
+        return
+    fields = {f: getattr(res, f) for f in RECORD_FIELDS if f not in ("xi_ref",)}
+    assert_finite(fields)
+    if res.status < 0:
+        assert res.message.startswith("stopped at"), res.message
+    else:
+        assert len(res) == int(round(duration / dt))
+    if method in FRICTIONAL and len(res):
+        assert np.all(res.adhesion <= mu0 * (1 + 1e-12)), res.adhesion.max() / mu0
+
+
+def _leaves(d, prefix=()):
+    for k, v in d.items():
+        if isinstance(v, dict):
+            yield from _leaves(v, prefix + (k,))
+        else:
+            yield prefix + (k,), v
+
+
+LEAVES = [path for path, v in _leaves(rr.default_parameters())
+          if path[0] not in ("similarity", "full_scale_reference")]
+
+
+@st.composite
+def parameter_values(draw, default):
+    """A value for one parameter: its default scaled, or anything."""
+    if isinstance(default, bool):
+        return draw(st.one_of(st.booleans(), st.integers(-1, 2), st.text(max_size=3)))
+    if isinstance(default, int):
+        return draw(st.one_of(st.integers(-2, 1000), st.floats(-2, 10), st.none(),
+                              st.text(max_size=3), st.booleans()))
+    if isinstance(default, float):
+        return draw(st.one_of(st.floats(1e-2, 1e2).map(lambda f: f * default),
+                              st.floats(-1.0, 1.0), wild, st.none(), st.text(max_size=3),
+                              st.booleans(), st.integers(-3, 3)))
+    return draw(st.one_of(st.just(default), st.text(max_size=8), st.none(), wild,
+                          st.sampled_from(("fastsim", "polach", "coulomb", "conical",
+                                           "traction"))))
+
+
+@examples(0.5)
+@given(data=st.data(), path=st.sampled_from(LEAVES))
+@example(data=None, path=("contact", "poisson_ratio"))
+def test_simulate_any_parameter_value(data, path):
+    """Any value of one parameter: a run (finite history, or a clean stop) or
+    RollerRigError naming that parameter ("params: section.key")."""
+    default = dict(_leaves(rr.default_parameters()))[path]
+    value = 0.5 if data is None else data.draw(parameter_values(default))
+    params = {path[0]: {path[1]: value}}
+    name = ".".join(path)
+    try:
+        res = rr.simulate(duration=0.02, targets=[0.02], nx=6, ny=6, params=params)
+    except RollerRigError as e:
+        assert_names_argument(e, ("params", "simulate"), [name, path[1]])
+        return
+    fields = {f: getattr(res, f) for f in RECORD_FIELDS if f not in ("xi_ref",)}
+    assert_finite(fields)
+
+
+def test_poisson_ratio_one_half_in_the_rig():
+    """nu = 0.5 (incompressible) is physical: rig_contact and simulate take it."""
+    c = rr.rig_contact(STANDARD_TABLE, y=0.001, spin=50.0, roller_spin=50.0, N_left=1e3,
+                       N_right=1e3, nu=0.5)
+    assert c.status >= 0
+    res = rr.simulate(duration=0.02, targets=[0.02], params={"contact": {"poisson_ratio": 0.5}})
+    assert res.status >= 0
+
+
+@pytest.mark.parametrize("call", [
+    "rr.simulate(duration=0.004, params={'integration': {'table_rows': 2**31}})",
+    "rr.simulate(duration=0.004, params={'integration': {'table_rows': 10**9}})",
+    "rr.simulate(duration=0.004, params={'integration': {'substeps': 2**31}})",
+    "rr.simulate(duration=1e5, dt=1e-6)",
+    "rr.simulate(duration=0.004, params={'roller_drive': {'encoder_counts_per_rev': 2**64}})",
+])
+def test_simulate_huge_settings_return_or_are_refused(call):
+    """Counts far beyond reason return within 30 s (child process, 4 GB)
+    with a result or a RollerRigError; never a raw exception or a hang."""
+    code = ("import rollerrig as rr\ntry:\n    r = " + call + "\nexcept rr.RollerRigError as e:"
+            "\n    print('RollerRigError:', e)\nelse:\n    print('returned', r.status)\n")
+    proc = run_isolated(code, timeout=30.0)
+    assert proc.returncode == 0, proc.stderr[-1500:]
+
+
+# ================================================================== fit_polach
+
+@examples(0.1)
+@given(mu0=uniform(0.2, 0.6).strategy, kA=uniform(0.3, 1.0).strategy,
+       ratio=uniform(0.1, 1.0).strategy, A=uniform(0.2, 0.9).strategy,
+       B=uniform(0.1, 2.0).strategy, speeds=st.lists(uniform(2.0, 30.0).strategy, min_size=1,
+                                                     max_size=2))
+def test_fit_polach_on_its_own_curves(mu0, kA, ratio, A, B, speeds):
+    """Noise-free Polach curves (past the peak): the fit is finite and
+    reproduces them to 1 % of the peak force (its parameters may trade off;
+    the curve may not)."""
+    a, b, N = 6e-3, 4e-3, 2e4
+    cx = np.geomspace(1e-4, 0.3, 40)
+    curves = [rr.creep_forces(cx, a=a, b=b, N=N, mu=mu0, speed=V, method="polach", kA=kA,
+                              kS=kA * ratio, friction=rr.FallingFriction(A, B)).fx
+              for V in speeds]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RollerRigWarning)
+        fit = rr.fit_polach([cx] * len(speeds), curves, a=a, b=b, N=N, speed=speeds)
+    assert all(math.isfinite(v) for v in fit.params.values()), fit.params
+    peak = max(np.max(np.abs(c)) for c in curves)
+    assert fit.rms <= 0.01 * peak, (fit.rms / peak, fit.params)
+
+
+@examples(0.2)
+@given(cx=st.lists(st.one_of(st.floats(-0.1, 0.1), wild), min_size=0, max_size=12),
+       force=st.lists(st.one_of(st.floats(-1e4, 1e4), wild), min_size=0, max_size=12),
+       a=st.one_of(st.just(6e-3), wild), N=st.one_of(st.just(2e4), wild),
+       speed=st.one_of(st.just(10.0), wild, st.lists(wild, max_size=2)))
+@example(cx=[0.0], force=[1.3407807929942597e+154], a=6e-3, N=2e4, speed=10.0)
+@example(cx=[0.0], force=[0.015625], a=6e-3, N=2e4, speed=10.0)
+def test_fit_polach_any_data_finite_or_named(cx, force, a, N, speed):
+    names = ("cx", "force", "a", "b", "N", "G", "nu", "speed", "cy", "cphi", "weights", "x0",
+             "fit", "bounds")
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RollerRigWarning)
+            fit = rr.fit_polach(cx, force[:len(cx)], a=a, b=4e-3, N=N, speed=speed)
+    except RollerRigError as e:
+        assert_names_argument(e, "fit_polach", names)
+        return
+    assert all(math.isfinite(v) for v in fit.params.values()), fit.params
+    assert math.isfinite(fit.rms)
