@@ -62,6 +62,18 @@ int rr_creep_opts_check(const rr_creep_opts *o)
     return RR_OK;
 }
 
+/* Kalker's coefficients of a checked case; RR_ERR_RANGE where a/b is not
+ * a normal double (semi-axes some 300 orders of magnitude apart). */
+static int kalker_of(const rr_contact_case *c, rr_kalker_coeffs *k)
+{
+    const double q = c->a / c->b;
+    if (!isnormal(q)) {
+        k->c11 = k->c22 = k->c23 = NAN;
+        return RR_ERR_RANGE;
+    }
+    return rr_kalker(q, c->nu, k);
+}
+
 int rr_linear(const rr_contact_case *c, rr_forces *out)
 {
     rr_kalker_coeffs k;
@@ -69,7 +81,7 @@ int rr_linear(const rr_contact_case *c, rr_forces *out)
     int st = out ? rr_contact_check(c) : RR_ERR_NULL;
 
     if (st == RR_OK)
-        st = rr_kalker(c->a / c->b, c->nu, &k);
+        st = kalker_of(c, &k);
     if (st < 0) {
         rr_forces_nan(out);
         return st;
@@ -92,7 +104,7 @@ int rr_creep_prepare(const rr_contact_case *c, const rr_friction *fr, rr_kalker_
     if (st == RR_OK && rr_friction_is_falling(fr) && !(c->speed > 0.0))
         st = RR_ERR_SPEED;
     if (st == RR_OK)
-        st = rr_kalker(c->a / c->b, c->nu, k);
+        st = kalker_of(c, k);
     return st;
 }
 
@@ -175,6 +187,11 @@ int rr_creep_forces(const rr_contact_case *c, const rr_friction *fr,
     }
     switch (o->method) {
     case RR_METHOD_LINEAR:
+        /* the friction law goes unused, but a NaN or invalid one is still refused */
+        if ((st = rr_friction_check(fr)) < 0) {
+            rr_forces_nan(out);
+            return st;
+        }
         return rr_linear(c, out);
     case RR_METHOD_POLACH:
         return rr_polach(c, fr, o->kA, o->kS, out);

@@ -119,8 +119,9 @@ int rr_polach(const rr_contact_case *c, const rr_friction *fr, double kA, double
 
 /*
  * rr_creep_forces - dispatch to the method named in o->method.
- *   The linear theory ignores friction; FASTSIM variants call rr_fastsim
- *   (rr_fastsim.h) without a traction field.
+ *   The linear theory ignores friction (but refuses an invalid law, as
+ *   every method does); FASTSIM variants call rr_fastsim (rr_fastsim.h)
+ *   without a traction field.
  */
 int rr_creep_forces(const rr_contact_case *c, const rr_friction *fr,
                     const rr_creep_opts *o, rr_forces *out);

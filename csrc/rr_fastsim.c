@@ -328,15 +328,15 @@ static void coulomb_dispatch(const march *m, const group *g, sums *s)
 
 /* The march is exact in floating point, and the vector kernel's
  * sqrt(g*g) == g holds, when the bound's scale mu p lies in [1e-80, 1e100]
- * Pa and no element adds more than 1e20 times that to a traction: inside
- * the ellipse q >= 2^-65 = 2.7e-20 (w2 >= 4.8e-4 > 2^-12 with at most 4096
+ * Pa and no element adds more than 1e150 Pa to a traction: inside the
+ * ellipse q >= 2^-65 = 2.7e-20 (w2 >= 4.8e-4 > 2^-12 with at most 4096
  * rows, and q = w2 - t^2 > 0 is either >= w2/2 or, by Sterbenz's lemma, the
  * exact difference of two doubles >= 2^-13, a multiple of 2^-65), so every
- * bound g lies in [2e-100, 1e100] and every trial traction below 1e121:
- * their squares are normal numbers.  Physical cases lie far inside (mu p of
- * 1e3 to 1e10 Pa; a creepage 1e20 times its saturation value is full
- * sliding many times over); outside, RR_ERR_RANGE.  Elements and rows of
- * subnormal size are refused too: their sums would lose their precision. */
+ * bound g lies in [2e-100, 1e100] and every trial traction below 1e151:
+ * the squares the slip test compares are normal numbers or exact zeros.
+ * Physical cases lie far inside (mu p of 1e3 to 1e10 Pa, increments below
+ * 1e12 Pa); outside, RR_ERR_RANGE.  Elements and rows of subnormal size are
+ * refused too: their sums would lose their precision. */
 static int march_in_range(const march *m, const flex *fl, double dy)
 {
     const double ms = m->mu_bound * m->scale;
@@ -345,7 +345,7 @@ static int march_in_range(const march *m, const flex *fl, double dy)
     if (!isnormal(fl->L1) || !isnormal(fl->L2) || !isnormal(fl->L3)
         || !isnormal(0.01 * m->h_rect) || !isnormal(dy))
         return 0;
-    return ms >= 1e-80 && ms <= 1e100 && inc <= 1e20 * ms;
+    return ms >= 1e-80 && ms <= 1e100 && inc <= 1e150;
 }
 
 /* The march of a group, one element of each row at a time: any friction law,

@@ -67,8 +67,8 @@ typedef struct {
  *            rr_contact_check, rr_friction_check, rr_creep_opts_check,
  *            RR_ERR_METHOD (not a FASTSIM method), RR_ERR_SPEED (falling
  *            friction with speed 0), RR_ERR_RANGE (the bound mu p outside
- *            [1e-80, 1e100] Pa, a creepage over 1e20 times its saturation
- *            value, elements of subnormal size: no physical case),
+ *            [1e-80, 1e100] Pa, a rigid-slip increment over 1e150 Pa per
+ *            element, elements of subnormal size: no physical case),
  *            RR_ERR_NULL (c, fr, o or out NULL).  On error the forces and
  *            the field (where o gives its size) are NaN.
  *   Flexibilities (Kalker 1982): L1 = 8a/(3 C11 G), L2 = 8a/(3 C22 G),

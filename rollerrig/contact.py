@@ -24,6 +24,7 @@ or Poisson ratio out of range, -5 friction, -12 inputs so extreme that the
 result would not be a finite double.  rollerrig.STATUS maps every code to
 its message.
 """
+import math
 from dataclasses import dataclass
 from typing import NamedTuple
 
@@ -196,16 +197,19 @@ def kalker_coefficients(a_over_b, nu=0.28, *, errors=None):
                                        (c11, c22, c23), status, errors))
 
 
+def _choice(func, name, value, table, none_ok=False):
+    """One of a table's names (a str: a list or a dict is not looked up)."""
+    if (value is None and none_ok) or (isinstance(value, str) and value in table):
+        return
+    names = ", ".join(repr(k) for k in table) + (" or None" if none_ok else "")
+    raise RollerRigError(f"{func}: {name} must be one of {names}, got {value!r:.60}")
+
+
 def _options(func, method, nx, ny, bound, grid, slip_speed, k0, alpha_inf, beta, kA, kS):
-    if method not in METHODS:
-        raise RollerRigError(f"{func}: method must be one of {sorted(METHODS)}, got {method!r}")
-    if bound not in BOUNDS:
-        raise RollerRigError(f"{func}: bound must be 'parabolic' or 'elliptic', got {bound!r}")
-    if grid not in GRIDS:
-        raise RollerRigError(f"{func}: grid must be 'rect' or 'strips', got {grid!r}")
-    if slip_speed is not None and slip_speed not in SLIP_SPEEDS:
-        raise RollerRigError(f"{func}: slip_speed must be 'local', 'rigid' or None, "
-                             f"got {slip_speed!r}")
+    _choice(func, "method", method, METHODS)
+    _choice(func, "bound", bound, BOUNDS)
+    _choice(func, "grid", grid, GRIDS)
+    _choice(func, "slip_speed", slip_speed, SLIP_SPEEDS, none_ok=True)
     for name, n in (("nx", nx), ("ny", ny)):
         if isinstance(n, bool) or not isinstance(n, (int, np.integer)) \
                 or not 1 <= n <= _core.FASTSIM_MAX_GRID:
@@ -215,8 +219,12 @@ def _options(func, method, nx, ny, bound, grid, slip_speed, k0, alpha_inf, beta,
               ("beta", beta, 0.0, np.inf, True), ("kA", kA, 0.0, 1.0, False),
               ("kS", kS, 0.0, kA, False))
     for name, v, lo, hi, lo_ok in checks:
-        ok = isinstance(v, (int, float, np.integer, np.floating)) and np.isfinite(v) \
-            and (v >= lo if lo_ok else v > lo) and v <= hi
+        try:
+            x = float(v) if isinstance(v, (int, float, np.integer, np.floating)) \
+                and not isinstance(v, bool) else math.nan
+        except OverflowError:                          # an int beyond the doubles
+            x = math.nan
+        ok = math.isfinite(x) and (x >= lo if lo_ok else x > lo) and x <= hi
         if not ok:
             bracket = "[" if lo_ok else "("
             raise RollerRigError(f"{func}: {name} must be in {bracket}{lo}, {hi}], got {v!r}")
