@@ -90,6 +90,7 @@ repeats the y of the point before it, without stepping back, is not a fold
 but a duplicate: always an error.  The shipped rollers fold on their gauge
 face, 17 to 52 mm below the top, away from any contact: 6 and 4 points go.
 """
+import contextlib
 import math
 import os
 import re
@@ -106,6 +107,7 @@ __all__ = ["Profile", "read_profile", "KINDS", "DATA_DIR", "MIN_POINTS"]
 KINDS = ("wheel", "rail")
 BCS = ("not-a-knot", "natural")
 MIN_POINTS = 4
+MIN_SPACING = 1e-12  #: [m] closer points are a mistake (measured profiles: 1e-9 at least)
 MAX_POINTS = 100_000   #: more points than any measured profile has (MiniProf: ~1000)
 MAX_COORD = 2.0     #: [m] larger coordinates are taken for a unit mistake
 MIN_WIDTH = 1e-3    #: [m] a narrower profile is taken for a unit mistake
@@ -304,7 +306,7 @@ def _check_scale(where, y, z, labels):
     width = float(y.max() - y.min())
     if width < MIN_WIDTH:
         raise RollerRigError(
-            f"{where}: the profile is only {width:.3g} m wide (< {MIN_WIDTH * 1e3:g} mm): "
+            f"{where}: the profile's y spans only {width:.3g} m (< {MIN_WIDTH * 1e3:g} mm): "
             f"the numbers look like metres read as millimetres (units='m')")
 
 
@@ -433,14 +435,20 @@ class Profile:
             raise RollerRigError(f"{func}: y and z must be 1-D arrays of one length, got "
                                  f"shapes {y.shape} and {z.shape}")
         if not MIN_POINTS <= len(y) <= MAX_POINTS:
-            raise RollerRigError(f"{func}: {len(y)} point(s); a profile has from "
-                                 f"{MIN_POINTS} to {MAX_POINTS}")
+            raise RollerRigError(f"{func}: y and z hold {len(y)} point(s); a profile has "
+                                 f"from {MIN_POINTS} to {MAX_POINTS}")
         bad = np.flatnonzero(~(np.isfinite(y) & np.isfinite(z)))
         if bad.size:
             i = int(bad[0])
             raise RollerRigError(f"{func}: non-finite value at index {i}: y = {y[i]!r}, "
                                  f"z = {z[i]!r}")
         dy = np.diff(y)
+        close = np.flatnonzero((dy > 0.0) & (dy < MIN_SPACING))
+        if close.size:
+            i = int(close[0])
+            raise RollerRigError(
+                f"{func}: y[{i}] = {y[i]!r} and y[{i + 1}] = {y[i + 1]!r} are less than "
+                f"{MIN_SPACING:g} m apart: no spline through such points is meaningful")
         if np.any(dy <= 0.0):
             i = int(np.flatnonzero(dy <= 0.0)[0])
             what = "duplicate y" if dy[i] == 0.0 else "y decreases"
@@ -555,7 +563,10 @@ class Profile:
 
     def evaluate(self, y):
         """(z, dz/dy, d2z/dy2) at y: three floats or arrays; NaN outside the profile."""
-        arr, i, t, out = self._locate("evaluate", y)
+        return self._evaluate("evaluate", y)
+
+    def _evaluate(self, func, y):
+        arr, i, t, out = self._locate(func, y)
         s, c2, c3 = self._s[i], self._c2[i], self._c3[i]
         z = self._z[i] + t * (s + t * (c2 + t * c3))
         dz = s + t * (2.0 * c2 + 3.0 * c3 * t)
@@ -574,32 +585,33 @@ class Profile:
     def slope(self, y):
         """dz/dy (z down, y to the field side: a wheel coned as usual has
         slope -tan(cone angle) on its tread)."""
-        return self.evaluate(y)[1]
+        return self._evaluate("slope", y)[1]
 
     def second_derivative(self, y):
         """d2z/dy2 [1/m]."""
-        return self.evaluate(y)[2]
+        return self._evaluate("second_derivative", y)[2]
 
     def curvature(self, y):
         """Signed curvature z'' / (1 + z'^2)^1.5 [1/m]: positive where the
         curve bends downward (+z): convex for a rail or roller, concave for a
         wheel.  Hertz: B = (kappa_rail - kappa_wheel) / 2."""
-        _, dz, d2z = self.evaluate(y)
+        _, dz, d2z = self._evaluate("curvature", y)
         return d2z / (1.0 + np.square(dz)) ** 1.5
 
     # -- new profiles from this one
 
-    def _derived(self, y, z, name, note):
+    def _derived(self, func, y, z, name, note):
         meta = dict(self._meta)
         meta["derived"] = tuple(meta.get("derived", ())) + (note,)
-        return Profile(y, z, kind=self._kind, name=name, meta=meta, bc=self._bc,
-                       smoothing=self._smoothing)
+        with _named(func):
+            return Profile(y, z, kind=self._kind, name=name, meta=meta, bc=self._bc,
+                           smoothing=self._smoothing)
 
     def shifted(self, dy=0.0, dz=0.0):
         """The profile moved by dy laterally and dz downward [m]."""
         dy = _check_number("Profile.shifted", "dy", dy)
         dz = _check_number("Profile.shifted", "dz", dz)
-        return self._derived(self._y + dy, self._z_input + dz, self._name,
+        return self._derived("Profile.shifted", self._y + dy, self._z_input + dz, self._name,
                              f"shifted by dy = {dy!r} m, dz = {dz!r} m")
 
     def gauge_point(self, depth=0.014):
@@ -634,12 +646,12 @@ class Profile:
         if not np.all(np.diff(y) > 0):
             raise RollerRigError(f"{func}: canting by {inc!r} folds the profile back "
                                  "(a face steeper than the cant)")
-        return self._derived(y, z, self._name, f"canted by {inc!r}")
+        return self._derived(func, y, z, self._name, f"canted by {inc!r}")
 
     def mirrored(self):
         """The mirror image y -> -y: the same profile for the other side of the
         track (field side positive again there).  Smoothing commutes with it."""
-        return self._derived(-self._y[::-1], self._z_input[::-1], self._name,
+        return self._derived("Profile.mirrored", -self._y[::-1], self._z_input[::-1], self._name,
                              "mirrored y -> -y")
 
     def write_text(self, path, units="mm"):
@@ -680,8 +692,9 @@ class Profile:
         f = UNITS[units]
         y, z, notes = _prepare(func, y * f, z * f, kind, (np.arange(len(y)), "point"),
                                on_fold, mirror_y, mirror_z)
-        return cls(y, z, kind=kind, name=name, meta={**(meta or {}), **notes}, bc=bc,
-                   smoothing=smoothing)
+        with _named(func):
+            return cls(y, z, kind=kind, name=name, meta={**(meta or {}), **notes}, bc=bc,
+                       smoothing=smoothing)
 
     @classmethod
     def s1002(cls, smoothing=None):
@@ -710,9 +723,10 @@ class Profile:
                                  f"got {alpha!r}")
         y = _range_points(func, y_range, n)
         r0 = _check_number(func, "r0", r0, positive=True, allow_none=True)
-        return cls(y, -math.tan(alpha) * y, kind="wheel",
-                   name=f"conical wheel, alpha = {alpha:.6g} rad",
-                   meta={"alpha": alpha, "r0": r0})
+        with _named(func):
+            return cls(y, -math.tan(alpha) * y, kind="wheel",
+                       name=f"conical wheel, alpha = {alpha:.6g} rad",
+                       meta={"alpha": alpha, "r0": r0})
 
     @classmethod
     def cylinder(cls, y_range=(-0.02, 0.02), crown_radius=None, n=81):
@@ -728,9 +742,22 @@ class Profile:
             if np.max(np.abs(y)) >= R:
                 raise RollerRigError(f"{func}: y_range {y_range!r} reaches beyond the crown "
                                      f"radius {R!r} m")
-            z = R - np.sqrt(R * R - y * y)
+            # R - sqrt(R^2 - y^2) without its cancellation, nor R^2 overflowing
+            z = y * y / (R + np.sqrt(R - y) * np.sqrt(R + y))
         name = "cylinder" if R is None else f"crowned roller, R = {R:.6g} m"
-        return cls(y, z, kind="rail", name=name, meta={"crown_radius": R})
+        with _named(func):
+            return cls(y, z, kind="rail", name=name, meta={"crown_radius": R})
+
+
+@contextlib.contextmanager
+def _named(func):
+    """Profile's own checks, reported under the constructor the caller used."""
+    try:
+        yield
+    except RollerRigError as e:
+        msg = str(e)
+        raise RollerRigError(f"{func}: {msg[len('Profile: '):]}" if msg.startswith("Profile: ")
+                             else msg) from None
 
 
 def _rebuild(y, z, kind, name, meta, bc, smoothing):
@@ -746,6 +773,9 @@ def _range_points(func, y_range, n):
     if not (math.isfinite(y0) and math.isfinite(y1) and y1 > y0):
         raise RollerRigError(f"{func}: y_range must be finite with y_min < y_max, "
                              f"got {y_range!r}")
+    if max(abs(y0), abs(y1)) > MAX_COORD:
+        raise RollerRigError(f"{func}: y_range must lie within +-{MAX_COORD:g} m (metres, "
+                             f"not millimetres), got {y_range!r}")
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) \
             or not MIN_POINTS <= n <= MAX_POINTS:
         raise RollerRigError(f"{func}: n must be an integer from {MIN_POINTS} to "
@@ -901,9 +931,13 @@ def _read_simpack(path, where):
 
     def num(key, default):
         v = spline.get(key, default)
-        if isinstance(v, str) or isinstance(v, bool):
-            raise RollerRigError(f"{where}: {key} = {v!r} is not a number")
-        return float(v)
+        try:
+            x = math.nan if isinstance(v, (str, bool)) else float(v)
+        except OverflowError:                      # an integer beyond the doubles
+            x = math.inf
+        if not math.isfinite(x):
+            raise RollerRigError(f"{where}: {key} = {str(v)[:40]!r} is not a finite number")
+        return x
 
     def flag(key):
         v = spline.get(key, 0)
