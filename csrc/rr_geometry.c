@@ -265,8 +265,13 @@ int rr_wheelset_contact(const rr_wheel_roller *left, const rr_wheel_roller *righ
     st = rr_contact_search(left, y_ws, z, roll, o, cl);
     if (st == RR_OK)
         st = rr_contact_search(right, y_ws, z, roll, o, cr);
-    if (st < 0)
+    if (st < 0) {
+        /* a point found but no Hertz ellipse (B <= 0): the pair fails whole */
+        pose->z = pose->roll = NAN;
+        point_nan(cl);
+        point_nan(cr);
         return st;
+    }
     if (fabs(cl->gap) > 1e-9 || fabs(cr->gap) > 1e-9)
         return RR_WARN_NOT_CONVERGED;
     return RR_OK;

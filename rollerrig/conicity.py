@@ -297,6 +297,15 @@ def equivalent_conicity(geometry, amplitude=0.003, method="harmonic", *, centre=
         if not np.all(np.isfinite(y)) or np.any(np.diff(y) <= 0.0):
             raise RollerRigError(f"{_FUNC}: geometry as (y, delta_r): y must be finite "
                                  f"and strictly increasing")
+        # shifts and radius differences of a wheelset are millimetres: a metre
+        # of either is a unit mistake, and larger values overflow the quadrature
+        if np.max(np.abs(y)) > 1.0 or np.nanmax(np.abs(dr), initial=0.0) > 1.0 \
+                or np.any(np.isinf(dr)):
+            raise RollerRigError(f"{_FUNC}: geometry as (y, delta_r): |y| and |delta_r| "
+                                 f"must be at most 1 m (NaN marks a missing delta_r)")
+        if np.min(np.diff(y)) < 1e-12:
+            raise RollerRigError(f"{_FUNC}: geometry as (y, delta_r): points of y less than "
+                                 f"1e-12 m apart")
         f = _DeltaR(y, dr)
     else:
         raise RollerRigError(f"{_FUNC}: geometry must be a RigGeometry or a pair "
