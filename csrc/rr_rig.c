@@ -414,6 +414,12 @@ int rr_rig_jac(rr_rig *rig, double t, const double *y, double *J)
                 J[i * NS + j] += l->rx[i] * dfx + l->ry[i] * dfy;
         }
     }
+    for (j = 0; j < NS * NS; j++)
+        if (!isfinite(J[j])) {
+            for (j = 0; j < NS * NS; j++)
+                J[j] = NAN;         /* rates near the largest double: 1/V, D overflow */
+            return RR_ERR_RANGE;
+        }
     return RR_OK;
 }
 

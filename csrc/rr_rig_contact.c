@@ -35,6 +35,10 @@ static void vec_nan(double *v, int n)
 
 static void wheel_nan(rr_wheel_contact *w, int status)
 {
+    rr_contact_point *g = &w->geo;
+    g->y = g->z = g->s_wheel = g->s_roller = g->r = g->R = g->delta = NAN;
+    g->A = g->B = g->gap = g->ha = g->hb = g->hd = g->y2 = g->gap2 = NAN;
+    g->two_point = 0;
     w->theta = w->N = NAN;
     vec_nan(w->frame.p, 3);
     vec_nan(w->frame.t1, 3);

@@ -26,7 +26,7 @@ from .profiles import Profile, read_profile
 from .geometry import (ContactSide, ContactTable, RigGeometry, WheelsetContact, contact_table,
                        wheelset_contact)
 from .conicity import equivalent_conicity, rolling_radius_difference
-from .rig import (RigResult, build_rig, default_parameters, load_parameters, replay,
+from .rig import (Rig, RigResult, build_rig, default_parameters, load_parameters, replay,
                   simulate)
 from .fit import FitResult, fit_modified_fastsim, fit_polach
 from .sweep import sweep, sweep_rig
@@ -42,6 +42,6 @@ __all__ = [
     "wheelset_contact", "ContactTable", "contact_table", "RigPose", "WheelContact",
     "RigContact", "rig_contact", "LinearCreepages", "linear_creepages",
     "equivalent_conicity", "rolling_radius_difference", "simulate", "RigResult",
-    "default_parameters", "load_parameters", "build_rig", "replay", "fit_polach",
+    "default_parameters", "load_parameters", "build_rig", "Rig", "replay", "fit_polach",
     "fit_modified_fastsim", "FitResult", "sweep", "sweep_rig", "reference",
 ]

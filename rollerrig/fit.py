@@ -387,6 +387,11 @@ def _fit(func, model, spec, cx, force, a, b, N, G, nu, speed, cy, cphi, fit, x0,
     f_ref = float(np.max(np.abs(f_all)))
     if f_ref == 0.0:
         _fail(func, "force is zero everywhere; nothing to fit")
+    if not np.any(c_all != 0.0):
+        _fail(func, "cx is zero everywhere: a creep curve needs creepages to fit")
+    if f_ref > 10.0 * settings["N"]:
+        _fail(func, f"force reaches {f_ref:.6g} N, more than 10 N = {10 * settings['N']:.6g} "
+                    f"N: a creep force is mu N at most (check the units of force and N)")
 
     start, fit, inner, lo, hi = _setup(func, spec, fit, x0, bounds, f_ref / settings["N"])
     # the start point through the library's own checks: a bad a, b, N, G, nu raises here,
@@ -399,10 +404,12 @@ def _fit(func, model, spec, cx, force, a, b, N, G, nu, speed, cy, cphi, fit, x0,
         f = _model(model, p, settings, c_all, v_all, settings["cy"], settings["cphi"])
         r = w_all * (f - target) / f_ref
         if not np.all(np.isfinite(r)):
-            raise RollerRigError(f"{func}: the model failed at {p}")
+            raise RollerRigError(f"{func}: the model gives no finite force at the parameters "
+                                 f"{p} for these data (cx, force, a, b, N, speed)")
         return r
 
     theta0 = np.array([start["kS"] / start["kA"] if n == _RATIO else start[n] for n in inner])
+    theta0 = np.clip(theta0, lo, hi)          # a default start (mu0 from the data) may lie out
     sol = least_squares(residuals, theta0, bounds=(lo, hi), loss=loss, f_scale=f_scale,
                         x_scale="jac", method="trf")
     params = _natural(start, inner, sol.x)

@@ -42,7 +42,7 @@ import numpy as np
 from . import _core
 from ._errors import RollerRigError, RollerRigWarning, status_message
 from ._optional import require
-from .contact import METHODS, _options
+from .contact import METHODS, _as_float, _options
 from .rig_contact import elastic_constants
 from .geometry import RigGeometry, contact_table
 from .profiles import Profile
@@ -52,7 +52,7 @@ try:
 except ImportError:                                     # Python < 3.11
     import tomli as tomllib
 
-__all__ = ["default_parameters", "load_parameters", "check_parameters", "build_rig",
+__all__ = ["default_parameters", "load_parameters", "check_parameters", "build_rig", "Rig",
            "simulate", "replay", "RigResult", "RECORD_FIELDS", "RECORD_UNITS",
            "RECORD_BYTES_CAP"]
 
@@ -499,13 +499,27 @@ def _c_params(P, dt, substeps, ode):
     }
 
 
+#: the parameters that make the rig's profiles and contact table
+GEOMETRY_KEYS = ("wheelset.wheel_radius_m", "roller.radius_m", "wheelset.profile_half_width_m",
+                 "wheelset.conicity", "roller.crown_radius_m", "wheelset.contact_half_spacing_m",
+                 "integration.table_half_range_m", "integration.table_rows")
+
+
 def _geometry(P):
-    """The conical wheel on the crowned roller (the paper's first stage) and its table."""
+    """The conical wheel on the crowned roller (the paper's first stage) and
+    its table; a geometry that yields none is the parameters' fault, and the
+    message says which ones made it."""
     W, R, I = P["wheelset"], P["roller"], P["integration"]
-    return _rig_table(float(W["wheel_radius_m"]), float(R["radius_m"]),
-                      float(W["profile_half_width_m"]), math.atan(float(W["conicity"])),
-                      float(R["crown_radius_m"]), float(W["contact_half_spacing_m"]),
-                      float(I["table_half_range_m"]), int(I["table_rows"]))
+    try:
+        return _rig_table(float(W["wheel_radius_m"]), float(R["radius_m"]),
+                          float(W["profile_half_width_m"]), math.atan(float(W["conicity"])),
+                          float(R["crown_radius_m"]), float(W["contact_half_spacing_m"]),
+                          float(I["table_half_range_m"]), int(I["table_rows"]))
+    except RollerRigError as e:
+        values = ", ".join(f"{k} = {P[k.split('.')[0]][k.split('.')[1]]!r}"
+                           for k in GEOMETRY_KEYS)
+        raise RollerRigError(f"params: the rig's geometry ({values}) gives no contact "
+                             f"table: {e}") from None
 
 
 # The table is a pure function of these numbers and read-only, so runs on the
@@ -566,6 +580,96 @@ def _check_dt(func, dt):
     return _real_arg(func, "dt", dt, MIN_DT, MAX_DT, unit="s")
 
 
+class Rig:
+    """The rig stepped by hand (build_rig): the C rig of csrc/rr_rig.h, its
+    arguments checked here (RollerRigError naming them).
+
+    sample(roller_ref, xi_ref) -> status: the sampling instant (encoders,
+        creepage controller, PI controllers); roller_ref the roller speed
+        reference [rad/s], xi_ref the creepage target (NaN: no creepage
+        control, the wheelset held at free rolling)
+    advance() -> (record, status): the plant over one sample
+    run(roller_ref, xi_ref) -> (records, status): one sample per element of
+        the two 1-D arrays, records of shape (n, len(RECORD_FIELDS)); stops
+        at the first error (the rest NaN); status the worst of the run
+    record() -> (record, status); rhs(t, y) -> (dydt, status); jac(t, y)
+        -> (J, status); set_state(t, y) -> status: the plant's right-hand
+        side, its approximate Jacobian and its state y (RIG_STATE, 12 values)
+    t [s], y, status: the rig's time, state (a copy) and last status
+    Statuses: 0 ok, 1 a warning, < 0 an error (rollerrig.STATUS); after an
+    error the rig keeps its last good state and refuses to step on.  One
+    thread at a time: a second thread gets RuntimeError.
+    """
+
+    __slots__ = ("_core",)
+
+    def __init__(self, core):
+        self._core = core
+
+    def __repr__(self):
+        return f"Rig(t = {self.t:g} s, status {self.status})"
+
+    @staticmethod
+    def _scalar(func, name, v):
+        """A real number (NaN and infinities pass: the C rig answers them
+        with a status, as it does for a NaN state)."""
+        if isinstance(v, numbers.Real) and not isinstance(v, bool):
+            try:
+                return float(v)
+            except OverflowError:                      # an int beyond a double
+                pass
+        raise RollerRigError(f"{func}: {name} must be a real number, got {_short(v)}")
+
+    @staticmethod
+    def _array(func, name, v, n=None):
+        a = _as_float(func, name, v) if not (np.ndim(v) == 1 and np.size(v) == 0) \
+            else np.zeros(0)
+        if a.ndim != 1 or (n is not None and a.size != n):
+            want = f"{n} values" if n is not None else "a 1-D array"
+            raise RollerRigError(f"{func}: {name} must be {want}, got shape {a.shape}")
+        return np.ascontiguousarray(a)
+
+    def run(self, roller_ref, xi_ref):
+        r = self._array("Rig.run", "roller_ref", roller_ref)
+        x = self._array("Rig.run", "xi_ref", xi_ref, r.size)
+        return self._core.run(r, x)
+
+    def sample(self, roller_ref, xi_ref):
+        return self._core.sample(self._scalar("Rig.sample", "roller_ref", roller_ref),
+                                 self._scalar("Rig.sample", "xi_ref", xi_ref))
+
+    def advance(self):
+        return self._core.advance()
+
+    def record(self):
+        return self._core.record()
+
+    def _t_y(self, func, t, y):
+        return (self._scalar(func, "t", t),
+                self._array(func, "y", y, _core.RIG_NSTATE))
+
+    def rhs(self, t, y):
+        return self._core.rhs(*self._t_y("Rig.rhs", t, y))
+
+    def jac(self, t, y):
+        return self._core.jac(*self._t_y("Rig.jac", t, y))
+
+    def set_state(self, t, y):
+        return self._core.set_state(*self._t_y("Rig.set_state", t, y))
+
+    @property
+    def t(self):
+        return self._core.t
+
+    @property
+    def y(self):
+        return self._core.y
+
+    @property
+    def status(self):
+        return self._core.status
+
+
 def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, creep):
     """(the C rig, dt, roller speed [m/s], creep options) of checked parameters P."""
     S, I = P["scenario"], P["integration"]
@@ -595,14 +699,14 @@ def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, c
                         V / cp["R0"] if start == "rolling" else 0.0)
     except ValueError as e:
         raise RollerRigError(f"{func}: {e}") from None
-    return rig, table, dt, V, opts["method"]
+    return Rig(rig), table, dt, V, opts["method"]
 
 
 def build_rig(params=None, *, dt=None, method=None, substeps=None, ode=None, nx=None, ny=None,
               roller_speed=None, start="rolling", **creep):
-    """The C rig (rollerrig._core.Rig) and the merged parameters, for
-    stepping by hand (rig.sample / rig.advance / rig.rhs, e.g. to verify the
-    integrator against another solver).  Returns (rig, params, table).
+    """The rig (rollerrig.Rig, over the C rig) and the merged parameters,
+    for stepping by hand (rig.sample / rig.advance / rig.rhs, e.g. to verify
+    the integrator against another solver).  Returns (rig, params, table).
 
     params:  None (the defaults), a nested dict overriding rig_default.toml
              or the path of a TOML file doing so; checked by

@@ -32,7 +32,7 @@ from typing import NamedTuple
 import numpy as np
 
 from . import _core
-from ._errors import RollerRigError
+from ._errors import RollerRigError, status_message
 from .contact import _broadcast, _finish, _friction, _options
 from .geometry import ContactTable
 
@@ -112,9 +112,14 @@ def elastic_constants(E, nu):
 
 def _model(func, table, mu, E, nu, vmin, friction):
     g = table.geometry
-    for name, v, ok in (("mu", mu, mu > 0), ("E", E, E > 0), ("nu", nu, 0 <= nu <= 0.5),
-                        ("vmin", vmin, vmin > 0)):
-        if not (np.isscalar(v) and np.isfinite(v) and ok):
+    for name, v, ok in (("mu", mu, lambda x: x > 0), ("E", E, lambda x: x > 0),
+                        ("nu", nu, lambda x: 0 <= x <= 0.5), ("vmin", vmin, lambda x: x > 0)):
+        real = isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, bool)
+        try:
+            good = real and np.isfinite(float(v)) and ok(float(v))
+        except OverflowError:                          # an int beyond the doubles
+            good = False
+        if not good:
             raise RollerRigError(f"{func}: {name} must be a finite number "
                                  f"{'in [0, 0.5]' if name == 'nu' else '> 0'}, got {v!r}")
     fA, fB = _friction(func, friction)
@@ -207,13 +212,23 @@ def linear_creepages(table, *, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spi
     r0, R0 = float(g.wheel_radius), float(g.roller_radius)
     _, _, full, _ = _broadcast(func, dict(y=y, yaw=yaw, vx=vx, vy=vy, yaw_rate=yaw_rate,
                                           spin=spin, roller_spin=roller_spin))
+    for name, v in full.items():
+        bad = np.flatnonzero(~np.isfinite(v).reshape(-1))
+        if bad.size:
+            raise RollerRigError(f"{func}: {name} = {float(v.reshape(-1)[bad[0]])!r}: "
+                                 f"{status_message(-1)}")
     y, yaw, vx, vy, yaw_rate, spin, roller_spin = full.values()
     V = roller_spin * R0
     if np.any(~(np.abs(V) > 0)):
         raise RollerRigError(f"{func}: roller_spin must be non-zero (V_n = 0 needs the exact "
                              f"creepages), got {roller_spin!r:.60}")
     w0 = V / r0
-    geo = table.lookup(y.reshape(-1), errors="raise")
+    geo = table.lookup(y.reshape(-1), errors="ignore")
+    off = np.flatnonzero(geo.status < 0)
+    if off.size:
+        raise RollerRigError(f"{func}: y = {float(y.reshape(-1)[off[0]])!r}: "
+                             f"{status_message(int(geo.status[off[0]]))} (the table spans "
+                             f"{table.y_range[0]:g} to {table.y_range[1]:g} m)")
     A0 = table.slopes(y.reshape(-1))[1].reshape(y.shape)
     out = []
     for side, sigma in ((geo.left, 1.0), (geo.right, -1.0)):
@@ -222,5 +237,10 @@ def linear_creepages(table, *, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spi
         cx = (r0 - r) / r0 + (R - R0) / R0 + vx / V - (spin - w0) * r0 / V - a * yaw_rate / V
         cy = -yaw + (1.0 + A0 * (r + sigma * delta * a)) * vy / V
         cphi = -sigma * delta * (1.0 / r0 + 1.0 / R0)
+        for name, c in (("cx", cx), ("cy", cy)):
+            if not np.all(np.isfinite(c)):
+                raise RollerRigError(f"{func}: {name} overflows: rates "
+                                     f"{', '.join(n for n, v in full.items() if np.any(np.abs(v) > 1e30))} "
+                                     f"too extreme ({status_message(-12)})")
         out.append(LinearCreepages(cx, cy, cphi))
     return tuple(out)
