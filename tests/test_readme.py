@@ -138,18 +138,8 @@ def setup_cfg():
     return cfg["options"]["install_requires"].split(), extras
 
 
-# Known gap, outside this file: the "The rig in time" block calls
-# res.to_dataframe() (pandas) and names pandas but not the extra that gives it.
-# Strict, so it fails once README names `.[sweep]` there: then drop this mark.
-_KNOWN_UNMARKED = {"The rig in time"}
-
-
-@pytest.mark.parametrize("index", [
-    pytest.param(i, id=b.heading or f"block{i}",
-                 marks=[pytest.mark.xfail(strict=True, reason="README names pandas, not "
-                                          "the [sweep] extra, beside to_dataframe()")]
-                 if b.heading in _KNOWN_UNMARKED else [])
-    for i, b in enumerate(PYTHON_BLOCKS)])
+@pytest.mark.parametrize("index", [pytest.param(i, id=b.heading or f"block{i}")
+                                   for i, b in enumerate(PYTHON_BLOCKS)])
 def test_block_names_the_extra_it_needs(index, namespaces, monkeypatch, tmp_path):
     import matplotlib.pyplot as plt
 
