@@ -49,6 +49,19 @@
 #define FZ_SKIP_KNOWN 0
 #endif
 
+/* 1 if the input is in the known-defect class `name` (cond) and the build
+ * skips known defects, unless FUZZ_KEEP names the class: minimising one
+ * defect's reproducer (make fuzz FUZZ_SKIP_KNOWN=1, then FUZZ_KEEP=name
+ * ... -minimize_crash=1) must not wander off into another. */
+static inline int fz_known(const char *name, int cond)
+{
+    const char *keep;
+    if (!FZ_SKIP_KNOWN || !cond)
+        return 0;
+    keep = getenv("FUZZ_KEEP");
+    return !(keep && strcmp(keep, name) == 0);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 typedef struct {
@@ -57,13 +70,41 @@ typedef struct {
     int edges;   /* 1: doubles may take extreme and edge values */
 } fz_in;
 
+/* What the current input decoded to, noted by the target (fz_note) and
+ * printed with any oracle's failure: the reproducer in numbers. */
+static char fz_context[4096];
+static size_t fz_context_len;
+
 static inline fz_in fz_start(const uint8_t *data, size_t size)
 {
     fz_in in;
     in.p = data;
     in.n = size;
     in.edges = 1;
+    fz_context[0] = '\0';
+    fz_context_len = 0;
     return in;
+}
+
+static void fz_note(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+
+static void fz_note(const char *fmt, ...)
+{
+    va_list ap;
+    int k;
+    if (fz_context_len + 2 >= sizeof fz_context)
+        return;
+    va_start(ap, fmt);
+    k = vsnprintf(fz_context + fz_context_len, sizeof fz_context - fz_context_len, fmt, ap);
+    va_end(ap);
+    if (k > 0)
+        fz_context_len += (size_t)k;
+    if (fz_context_len >= sizeof fz_context)
+        fz_context_len = sizeof fz_context - 1;
 }
 
 static inline unsigned fz_u8(fz_in *in)
@@ -93,11 +134,13 @@ static inline int fz_choice(fz_in *in, int n)
     return (int)(fz_u8(in) % (unsigned)n);
 }
 
-/* lo .. hi (hi - lo < 2^32) from four bytes. */
+/* lo .. hi from four bytes (lo if hi < lo). */
 static inline int fz_range(fz_in *in, int lo, int hi)
 {
-    const uint64_t span = (uint64_t)((int64_t)hi - (int64_t)lo) + 1;
-    return (int)((int64_t)lo + (int64_t)(fz_bits(in, 4) % span));
+    const uint64_t b = fz_bits(in, 4);
+    if (hi <= lo)
+        return lo;
+    return (int)((int64_t)lo + (int64_t)(b % ((uint64_t)((int64_t)hi - (int64_t)lo) + 1)));
 }
 
 /* An int that is usually in [lo, hi] and sometimes an edge (0, +-1,
@@ -215,6 +258,8 @@ static void fz_fail(const char *fmt, ...)
     vfprintf(stderr, fmt, ap);
     va_end(ap);
     fputc('\n', stderr);
+    if (fz_context_len > 0)
+        fprintf(stderr, "fuzz input: %s\n", fz_context);
     fflush(stderr);
     abort();
 }

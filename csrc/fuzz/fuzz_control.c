@@ -31,6 +31,7 @@ static void check_pi(fz_in *in)
     p.Kp = fz_log(in, 1.0, 1e3);
     p.KI = fz_log(in, 1e-2, 1e2);
     p.Tmax = fz_log(in, 1.0, 1e3);
+    fz_note("PI T %.17g, Kp %.17g, KI %.17g, Tmax %.17g", p.T, p.Kp, p.KI, p.Tmax);
     memset(&s, 0x55, sizeof s);
     st = fz_choice(in, 2) ? rr_pi_reset(&p, &s, fz_lin(in, -200.0, 200.0)) : rr_pi_init(&p, &s);
     fz_status("rr_pi_reset", st);
@@ -48,6 +49,7 @@ static void check_pi(fz_in *in)
         double torque = 7.0;
         if (fz_choice(in, 8) == 0)
             p.Tmax = fz_log(in, 1.0, 1e3);      /* a new limit between samples */
+        fz_note("; update(w_ref %.17g, w_m %.17g, Tmax %.17g)", w_ref, w_m, p.Tmax);
         before = s;
         st = rr_pi_update(&p, &s, w_ref, w_m, &torque);
         fz_status("rr_pi_update", st);
@@ -75,6 +77,7 @@ static void check_lag(fz_in *in)
     int n, k, st;
 
     p.tau = fz_choice(in, 8) == 0 ? 0.0 : fz_log(in, 1e-5, 1.0);
+    fz_note("lag tau %.17g", p.tau);
     memset(&s, 0x55, sizeof s);
     st = fz_choice(in, 2) ? rr_lag_reset(&p, &s, fz_lin(in, -200.0, 200.0)) : rr_lag_init(&p, &s);
     fz_status("rr_lag_reset", st);
@@ -89,6 +92,7 @@ static void check_lag(fz_in *in)
         const int invalid = !isfinite(p.tau) || !(p.tau >= 0.0) || !isfinite(u) || !isfinite(h)
                             || !(h >= 0.0);
         double y = 7.0, lo, hi, tol;
+        fz_note("; update(u %.17g, h %.17g) from y %.17g", u, h, s.y);
         before = s;
         st = rr_lag_update(&p, &s, u, h, &y);
         fz_status("rr_lag_update", st);
@@ -119,6 +123,7 @@ static void check_encoder(fz_in *in)
 
     p.T = fz_log(in, 1e-4, 1e-2);
     p.counts = fz_int(in, 1, 16777216);
+    fz_note("encoder T %.17g, counts %d", p.T, p.counts);
     memset(&s, 0x55, sizeof s);
     st = fz_choice(in, 2) ? rr_encoder_reset(&p, &s, fz_lin(in, -100.0, 100.0))
                           : rr_encoder_init(&p, &s);
@@ -134,6 +139,7 @@ static void check_encoder(fz_in *in)
         const int invalid = !isfinite(p.T) || !(p.T > 0.0) || p.counts < 1;
         double w = 7.0;
         theta += fz_lin(in, -1.0, 1.0);          /* an angle that moves on */
+        fz_note("; update(theta %.17g)", theta);
         before = s;
         st = rr_encoder_update(&p, &s, theta, &w);
         fz_status("rr_encoder_update", st);
@@ -175,6 +181,9 @@ static void check_creepctl(fz_in *in)
     p.sense = fz_choice(in, 16) == 0 ? fz_int(in, -1, 1) : (fz_choice(in, 2) ? 1 : -1);
     K = fz_lin(in, 0.0, 1.5);
     w_roller = fz_lin(in, -100.0, 100.0);
+    fz_note("creepctl r_w %.17g, r_r %.17g, alpha %.17g, beta %.17g, vmin %.17g, sense %d; "
+            "init(K %.17g, w_roller %.17g)", p.r_w, p.r_r, p.alpha, p.beta, p.vmin, p.sense, K,
+            w_roller);
     memset(&s, 0x55, sizeof s);
     st = rr_creepctl_init(&p, &s, K, w_roller);
     fz_status("rr_creepctl_init", st);
@@ -192,6 +201,8 @@ static void check_creepctl(fz_in *in)
         const double w_wheel = fz_lin(in, -100.0, 100.0);
         double w_ref = 7.0;
         w_roller = fz_lin(in, -100.0, 100.0);
+        fz_note("; update(xi_ref %.17g, w_wheelset %.17g, w_roller %.17g)", xi_ref, w_wheel,
+                w_roller);
         st = rr_creepctl_xi(&p, w_wheel, w_roller, &xi);
         fz_status("rr_creepctl_xi", st);
         fz_error("rr_creepctl_xi", st, !isfinite(w_wheel) || !isfinite(w_roller),

@@ -220,6 +220,7 @@ static void run_fastsim(fz_in *in, const rr_contact_case *c, const rr_friction *
 
     if (fz_choice(in, 2))   /* mostly a FASTSIM method: the others must be refused */
         o->method = RR_METHOD_FASTSIM + fz_choice(in, 3);
+    fz_note("; rr_fastsim method %d, field mode %d mask %d", o->method, mode, mask);
     invalid = contact_invalid(c) || friction_invalid(fr) || opts_invalid(o) || !is_fastsim(o->method)
               || (falling(fr) && !(c->speed > 0.0));
     memset(&fl, 0, sizeof fl);
@@ -233,7 +234,7 @@ static void run_fastsim(fz_in *in, const rr_contact_case *c, const rr_friction *
         fl.slip = (mode == 1 || (mask & 32)) ? fz_alloc(n * sizeof *fl.slip) : NULL;
     }
     st = rr_fastsim(c, fr, o, &f, mode > 0 ? &fl : NULL);
-    if (!(FZ_SKIP_KNOWN && st >= 0 && known_fastsim(c))) {
+    if (!(st >= 0 && fz_known("fastsim", known_fastsim(c)))) {
         check_forces("rr_fastsim", st, c, fr, 1, invalid, &f);
         if (mode > 0 && n > 0)
             check_field(st, c, fr, o, &f, &fl);
@@ -260,6 +261,7 @@ static void run_shared(fz_in *in, const rr_contact_case *c, const rr_friction *f
     const double w = fz_log(in, 1e-6, 100.0);
     int st;
 
+    fz_note("; slip speed w = %.17g", w);
     st = rr_creep_opts_check(o);
     fz_status("rr_creep_opts_check", st);
     if ((st < 0) != opts_invalid(o))
@@ -315,15 +317,20 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     decode_case(&in, &c);
     decode_friction(&in, &fr);
     decode_opts(&in, &o);
+    fz_note("op %d; case a = %.17g, b = %.17g, N = %.17g, G = %.17g, nu = %.17g, cx = %.17g, "
+            "cy = %.17g, cphi = %.17g, speed = %.17g; friction mu0 = %.17g, A = %.17g, B = %.17g; "
+            "opts method %d, nx %d, ny %d, bound %d, grid %d, slip_speed %d, k0 = %.17g, "
+            "alpha_inf = %.17g, beta = %.17g, kA = %.17g, kS = %.17g", op, c.a, c.b, c.N, c.G,
+            c.nu, c.cx, c.cy, c.cphi, c.speed, fr.mu0, fr.A, fr.B, o.method, o.nx, o.ny, o.bound,
+            o.grid, o.slip_speed, o.k0, o.alpha_inf, o.beta, o.kA, o.kS);
     switch (op) {
     case 0: {
         const int invalid = opts_invalid(&o) || contact_invalid(&c)
                             || (o.method != RR_METHOD_LINEAR
                                 && (friction_invalid(&fr) || (falling(&fr) && !(c.speed > 0.0))));
         st = rr_creep_forces(&c, &fr, &o, &f);
-        if (FZ_SKIP_KNOWN && st >= 0
-            && ((o.method == RR_METHOD_POLACH && known_polach(&c))
-                || (is_fastsim(o.method) && known_fastsim(&c))))
+        if (st >= 0 && (fz_known("polach", o.method == RR_METHOD_POLACH && known_polach(&c))
+                        || fz_known("fastsim", is_fastsim(o.method) && known_fastsim(&c))))
             break;
         check_forces("rr_creep_forces", st, &c, &fr, o.method != RR_METHOD_LINEAR, invalid, &f);
         break;
@@ -342,7 +349,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                             || !(isfinite(o.kA) && isfinite(o.kS) && o.kS > 0.0
                                  && o.kS <= o.kA && o.kA <= 1.0);
         st = rr_polach(&c, &fr, o.kA, o.kS, &f);
-        if (FZ_SKIP_KNOWN && st >= 0 && known_polach(&c))
+        if (st >= 0 && fz_known("polach", known_polach(&c)))
             break;
         check_forces("rr_polach", st, &c, &fr, 1, invalid, &f);
         o.method = RR_METHOD_POLACH;

@@ -81,6 +81,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     decode_motion(&in, &roller);
     decode_frame(&in, &f);
     vmin = fz_log(&in, 1e-4, 1.0);
+    fz_note("wheel c (%.17g, %.17g, %.17g) v (%.17g, %.17g, %.17g) w (%.17g, %.17g, %.17g); "
+            "roller c (%.17g, %.17g, %.17g) v (%.17g, %.17g, %.17g) w (%.17g, %.17g, %.17g); "
+            "frame p (%.17g, %.17g, %.17g) t1 (%.17g, %.17g, %.17g) t2 (%.17g, %.17g, %.17g); "
+            "vmin %.17g", wheel.c[0], wheel.c[1], wheel.c[2], wheel.v[0], wheel.v[1],
+            wheel.v[2], wheel.w[0], wheel.w[1], wheel.w[2], roller.c[0], roller.c[1],
+            roller.c[2], roller.v[0], roller.v[1], roller.v[2], roller.w[0], roller.w[1],
+            roller.w[2], f.p[0], f.p[1], f.p[2], f.t1[0], f.t1[1], f.t1[2], f.t2[0], f.t2[1],
+            f.t2[2], vmin);
     nonfinite = !all_finite(wheel.c, 3) || !all_finite(wheel.v, 3) || !all_finite(wheel.w, 3)
                 || !all_finite(roller.c, 3) || !all_finite(roller.v, 3)
                 || !all_finite(roller.w, 3) || !all_finite(f.p, 3) || !all_finite(f.t1, 3)

@@ -62,6 +62,10 @@ static int decode_profile(fz_in *in, profile *p, int roller)
         }
         in->edges = 1;
     }
+    fz_note("%s profile mode %d, %d points:", roller ? "roller" : "wheel", mode, n);
+    for (i = 0; i < n; i++)
+        fz_note(" (%.17g, %.17g)", p->s[i], p->z[i]);
+    fz_note("; ");
     return rr_spline_init(n, p->s, p->z, p->m, work);
 }
 
@@ -82,6 +86,8 @@ static void decode_pair(fz_in *in, const profile *w, const profile *r, rr_wheel_
     p->wheel_y = fz_lin(in, 0.05, 0.8);
     p->roller_y = p->wheel_y + fz_lin(in, -0.005, 0.005);
     p->side = fz_choice(in, 16) == 0 ? fz_int(in, -1, 1) : 1;
+    fz_note("pair r0 = %.17g, R0 = %.17g, wheel_y = %.17g, roller_y = %.17g, side %d; ", p->r0,
+            p->R0, p->wheel_y, p->roller_y, p->side);
 }
 
 static void decode_opts(fz_in *in, rr_search_opts *o, int hi)
@@ -92,6 +98,8 @@ static void decode_opts(fz_in *in, rr_search_opts *o, int hi)
     o->nsamples = fz_int(in, 3, hi);
     o->two_point_tol = fz_lin(in, 0.0, 1e-3);
     o->two_point_sep = fz_lin(in, 0.0, 5e-3);
+    fz_note("opts nsamples %d, two_point_tol %.17g, two_point_sep %.17g; ", o->nsamples,
+            o->two_point_tol, o->two_point_sep);
 }
 
 static int opts_invalid(const rr_search_opts *o)
@@ -143,7 +151,8 @@ static void check_search(fz_in *in, const rr_wheel_roller *p)
     int st;
 
     decode_opts(in, &o, 2000);
-    if (FZ_SKIP_KNOWN && known_nsamples(&o))
+    fz_note("rr_contact_search(y_ws = %.17g, z_ws = %.17g, roll = %.17g)", y_ws, z_ws, roll);
+    if (fz_known("nsamples", known_nsamples(&o)))
         return;
     st = rr_contact_search(p, y_ws, z_ws, roll, &o, &c);
     fz_status(fn, st);
@@ -162,7 +171,9 @@ static void check_wheelset(fz_in *in, const rr_wheel_roller *l, const rr_wheel_r
     int st;
 
     decode_opts(in, &o, 400);
-    if (FZ_SKIP_KNOWN && known_nsamples(&o))
+    fz_note("rr_wheelset_contact(y_ws = %.17g), right r0 = %.17g, wheel_y = %.17g", y_ws, r->r0,
+            r->wheel_y);
+    if (fz_known("nsamples", known_nsamples(&o)))
         return;
     st = rr_wheelset_contact(l, r, y_ws, &o, &pose, &cl, &cr);
     fz_status(fn, st);
@@ -210,6 +221,7 @@ static void check_lookup(fz_in *in, const rr_contact_table *t, int skip_known)
         rr_contact_point cl, cr;
         int st;
 
+        fz_note("; lookup y = %.17g, slope %d", y, want_slope);
         if (skip_known)
             return;
         st = rr_contact_table_lookup(t, y, &pose, want_slope ? &slope : NULL, &cl, &cr);
@@ -253,7 +265,9 @@ static void check_table(fz_in *in, const rr_wheel_roller *l, const rr_wheel_roll
     t.n = n <= MAX_ROWS ? n : rows;      /* never more rows than allocated */
     t.data = null_data ? NULL : data;
     decode_opts(in, &o, 400);
-    if (FZ_SKIP_KNOWN && known_nsamples(&o)) {
+    fz_note("rr_contact_table_build(y0 = %.17g, dy = %.17g, n = %d, data %s)", t.y0, t.dy, t.n,
+            t.data ? "set" : "NULL");
+    if (fz_known("nsamples", known_nsamples(&o))) {
         free(data);
         return;
     }
@@ -291,7 +305,11 @@ static void check_raw_table(fz_in *in)
         data[i] = (i % RR_CONTACT_TABLE_ROW) == 9 ? (double)fz_choice(in, 2)
                                                   : fz_lin(in, 1e-3, 0.2);
     in->edges = 1;
-    check_lookup(in, &t, FZ_SKIP_KNOWN && known_table(&t, rows));
+    fz_note("table struct y0 = %.17g, dy = %.17g, n = %d over %d rows, data %s; rows:", t.y0,
+            t.dy, t.n, rows, t.data ? "set" : "NULL");
+    for (i = 0; i < rows * RR_CONTACT_TABLE_ROW; i++)
+        fz_note(" %.17g", data[i]);
+    check_lookup(in, &t, fz_known("table_struct", known_table(&t, rows)));
     free(data);
 }
 

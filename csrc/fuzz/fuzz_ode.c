@@ -135,6 +135,9 @@ static void check_lu(fz_in *in)
     for (i = 0; i < size; i++)
         b[i] = fz_lin(in, -1.0, 1.0);
     in->edges = 1;
+    fz_note("rr_lu_factor(n = %d), A:", n);
+    for (i = 0; i < size * size; i++)
+        fz_note(" %.17g", A[i]);
     st = rr_lu_factor(n, A, piv);
     fz_status("rr_lu_factor", st);
     if (st >= 0 && n >= 1 && n <= MAXN) {
@@ -212,6 +215,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     t = fz_lin(&in, 0.0, 10.0);
     h = fz_log(&in, 1e-6, 1.0);
     nsteps = fz_range(&in, 1, 4);
+    fz_note("n %d, method %d, newton_iters %d, newton_tol %.17g, linear_tr %d, nq %d, model %s, "
+            "scale %.17g, q %.17g, jac mode %d scale %.17g, bad call %d status %d nan %d, "
+            "t %.17g, h %.17g, %d steps; A:", n, method, s->newton_iters, s->newton_tol,
+            s->linear_tr, s->nq, s->model ? "set" : "NULL", scale, c->q, jac_mode, c->jac_scale,
+            c->bad_call, c->bad_status, c->bad_nan, t, h, nsteps);
+    for (i = 0; i < n * n; i++)
+        fz_note(" %.17g", c->A[i]);
+    fz_note("; y:");
+    for (i = 0; i < n; i++)
+        fz_note(" %.17g", y[i]);
 
     for (k = 0; k < nsteps; k++) {
         const int null_arg = fz_choice(&in, 32);
@@ -220,6 +233,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                             || !all_finite(y, n) || null_arg == 0 || null_arg == 1;
         c->worst_warn = 0;
         c->first_err = 0;
+        fz_note("; step %d (null arg %d)", k, null_arg);
         memcpy(ysave, y, sizeof y);
         nfev = rr_ode_nfev(s, jac != NULL);
         if (settings_invalid(s) && nfev != -1)

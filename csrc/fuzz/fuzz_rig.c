@@ -84,14 +84,19 @@ static void perturb_field(fz_in *in, rr_rig_params *p, int which)
     if (which < NDOUBLE) {
         double *v = (double *)((char *)p + double_fields[which].offset);
         *v = fz_near(in, *v, double_fields[which].factor);
+        fz_note(" double field %d (offset %lu) = %.17g;", which,
+                (unsigned long)double_fields[which].offset, *v);
     } else if (which < NDOUBLE + NINT) {
         const int_field *f = &int_fields[which - NDOUBLE];
         int *v = (int *)((char *)p + f->offset);
         *v = fz_int(in, f->lo, f->hi);
+        fz_note(" int field %d (offset %lu) = %d;", which - NDOUBLE, (unsigned long)f->offset,
+                *v);
     } else {
         /* the sample time of all sampled elements at once (they must agree) */
         const double T = fz_near(in, p->T, 10.0);
         p->T = p->roller_pi.T = p->wheelset_pi.T = p->roller_enc.T = p->wheelset_enc.T = T;
+        fz_note(" all T = %.17g;", T);
     }
 }
 
@@ -102,6 +107,7 @@ static void decode_params(fz_in *in, rr_rig_params *p)
     int i;
 
     fz_rig_params_default(p);
+    fz_note("params mode %d, table %s:", mode, table == 0 ? "NULL" : "default");
     if (mode == 1 || mode == 2) {
         const int k = fz_range(in, 1, 8);
         for (i = 0; i < k; i++)
@@ -191,6 +197,7 @@ static void decode_y(fz_in *in, const rr_rig *rig, double *y)
     for (i = 0; i < k; i++) {
         const int j = fz_choice(in, RR_RIG_NSTATE);
         y[j] += fz_slog(in, 1e-9, j == RR_RIG_Y || j == RR_RIG_X ? 1e-3 : 1.0);
+        fz_note(" y[%d] = %.17g", j, y[j]);
     }
 }
 
@@ -229,10 +236,12 @@ static void one_op(fz_in *in, rr_rig *rig)
     int st;
 
     memcpy(y0, rig->y, sizeof y0);
+    fz_note(" | op %d (rig status %d, t %.17g)", op, rig->status, rig->t);
     switch (op) {
     case 0: {
         const double ref = decode_ref(in, rig), xi = decode_xi(in);
         const int was_refusing = rig->status < 0;
+        fz_note(" step(roller_ref %.17g, xi_ref %.17g)", ref, xi);
         st = rr_rig_step(rig, ref, xi, rec);
         fz_status("rr_rig_step", st);
         check_record("rr_rig_step", st, rig, rec);
@@ -255,6 +264,7 @@ static void one_op(fz_in *in, rr_rig *rig)
         for (k = 0; k < n; k++) {
             refs[k] = decode_ref(in, rig);
             xis[k] = decode_xi(in);
+            fz_note(" run[%ld](%.17g, %.17g)", k, refs[k], xis[k]);
         }
         done = rr_rig_run(rig, n, refs, xis, recs, want_status ? &status : NULL);
         if (done < 0 || done > n)
@@ -278,6 +288,7 @@ static void one_op(fz_in *in, rr_rig *rig)
     case 2: {
         const double ref = decode_ref(in, rig), xi = decode_xi(in);
         rr_rig *before = fz_alloc(sizeof *before);
+        fz_note(" sample(roller_ref %.17g, xi_ref %.17g)", ref, xi);
         memcpy(before, rig, sizeof *rig);
         st = rr_rig_sample(rig, ref, xi);
         fz_status("rr_rig_sample", st);
@@ -353,6 +364,7 @@ static void zeroed_rig(fz_in *in)
                           "rr_rig_rhs", "rr_rig_jac", "rr_rig_record", "rr_rig_set_state"};
     int st = RR_ERR_PARAM;
 
+    fz_note("zeroed rig, op %d", op);
     switch (op) {
     case 0: st = rr_rig_step(rig, ref, xi, rec); break;
     case 1: {
@@ -396,6 +408,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     decode_params(&in, p);
     roller_speed = fz_near(&in, 31.25, 3.0);
     invalid = params_invalid(p);
+    fz_note(" roller_speed %.17g;", roller_speed);
     st = rr_rig_check(p);
     fz_status("rr_rig_check", st);
     if ((st < 0) != invalid)

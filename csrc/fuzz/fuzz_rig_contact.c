@@ -199,6 +199,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     N[0] = fz_log(&in, 10.0, 1e4);
     N[1] = fz_choice(&in, 4) == 0 ? fz_log(&in, 10.0, 1e4) : N[0];
     invalid = model_invalid(&m) || state_nonfinite(&s);
+    fz_note("op %d; model table %s (y0 %.17g, dy %.17g, n %d, data %s), R0 %.17g, estar %.17g, "
+            "G %.17g, nu %.17g, mu0 %.17g, A %.17g, B %.17g, method %d, nx %d, ny %d, bound %d, "
+            "grid %d, slip %d, k0 %.17g, alpha_inf %.17g, beta %.17g, kA %.17g, kS %.17g, "
+            "vmin %.17g; state x %.17g, y %.17g, yaw %.17g, vx %.17g, vy %.17g, yaw_rate %.17g, "
+            "spin %.17g, roller_spin %.17g; N %.17g, %.17g", op, m.table ? "set" : "NULL", t.y0,
+            t.dy, t.n, t.data ? "set" : "NULL", m.R0, m.estar, m.G, m.nu, m.friction.mu0,
+            m.friction.A, m.friction.B, m.creep.method, m.creep.nx, m.creep.ny, m.creep.bound,
+            m.creep.grid, m.creep.slip_speed, m.creep.k0, m.creep.alpha_inf, m.creep.beta,
+            m.creep.kA, m.creep.kS, m.vmin, s.x, s.y, s.yaw, s.vx, s.vy, s.yaw_rate, s.spin,
+            s.roller_spin, N[0], N[1]);
 
     st = rr_rig_contact_check(&m);
     fz_status("rr_rig_contact_check", st);

@@ -39,6 +39,7 @@ static void check_eval(fz_in *in, const rr_spline *sp, int usable)
 
         if (fz_choice(in, 4) == 0)
             k = fz_int(in, -1, sp->n);         /* a fresh hint, valid or not */
+        fz_note("; eval s = %.17g hint %d want %d", s, k, want);
         st1 = rr_spline_eval(sp, s, &z1, (want & 1) ? &a1 : NULL, (want & 2) ? &b1 : NULL);
         st2 = rr_spline_eval_at(sp, s, &k, &z2, (want & 1) ? &a2 : NULL,
                                 (want & 2) ? &b2 : NULL);
@@ -92,6 +93,8 @@ static void check_misuse(fz_in *in)
     case 2: sp.z = NULL; break;
     default: sp.m = NULL; break;
     }
+    fz_note("misused struct: n = %d, s %s, z %s, m %s (knots 0, 1e-3, 2e-3)", sp.n,
+            sp.s ? "set" : "NULL", sp.z ? "set" : "NULL", sp.m ? "set" : "NULL");
     check_eval(in, &sp, 0);
     free(heap_s);
     free(heap_z);
@@ -131,6 +134,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             invalid = 1;
     }
     invalid |= n < 2 || n > MAX_KNOTS || null_m || null_w;
+    fz_note("n = %d, m %s, work %s; knots (s, z):", n, null_m ? "NULL" : "set",
+            null_w ? "NULL" : "set");
+    for (i = 0; i < nalloc; i++)
+        fz_note(" (%.17g, %.17g)", s[i], z[i]);
 
     if (n >= 1 && n <= MAX_KNOTS) {
         st = rr_spline_init(n, s, z, null_m ? NULL : m, null_w ? NULL : work);
