@@ -107,6 +107,20 @@ static int opts_invalid(const rr_search_opts *o)
     return o->nsamples < 3 || !(o->two_point_tol >= 0.0) || !(o->two_point_sep >= 0.0);
 }
 
+/* A pair whose numbers are not finite: the search must refuse it. */
+static int pair_nonfinite(const rr_wheel_roller *p)
+{
+    return !isfinite(p->r0) || !isfinite(p->R0) || !isfinite(p->wheel_y)
+        || !isfinite(p->roller_y);
+}
+
+/* Known: r0, R0, wheel_y, roller_y are not checked (R0 = inf gives R = inf
+ * with status 0). */
+static int known_pair(const rr_wheel_roller *l, const rr_wheel_roller *r)
+{
+    return pair_nonfinite(l) || pair_nonfinite(r);
+}
+
 /* Known: rr_contact_search's scan loop runs to nsamples inclusive with an
  * int counter: nsamples = INT_MAX overflows it (and nothing caps the work). */
 static int known_nsamples(const rr_search_opts *o)
@@ -152,12 +166,12 @@ static void check_search(fz_in *in, const rr_wheel_roller *p)
 
     decode_opts(in, &o, 2000);
     fz_note("rr_contact_search(y_ws = %.17g, z_ws = %.17g, roll = %.17g)", y_ws, z_ws, roll);
-    if (fz_known("nsamples", known_nsamples(&o)))
+    if (fz_known("nsamples", known_nsamples(&o)) || fz_known("pair", known_pair(p, p)))
         return;
     st = rr_contact_search(p, y_ws, z_ws, roll, &o, &c);
     fz_status(fn, st);
-    fz_error(fn, st, !isfinite(y_ws) || !isfinite(z_ws) || !isfinite(roll) || opts_invalid(&o),
-             "an argument is invalid");
+    fz_error(fn, st, !isfinite(y_ws) || !isfinite(z_ws) || !isfinite(roll) || opts_invalid(&o)
+                         || pair_nonfinite(p), "an argument is invalid");
     check_point(fn, st, &c, p);
 }
 
@@ -173,11 +187,12 @@ static void check_wheelset(fz_in *in, const rr_wheel_roller *l, const rr_wheel_r
     decode_opts(in, &o, 400);
     fz_note("rr_wheelset_contact(y_ws = %.17g), right r0 = %.17g, wheel_y = %.17g", y_ws, r->r0,
             r->wheel_y);
-    if (fz_known("nsamples", known_nsamples(&o)))
+    if (fz_known("nsamples", known_nsamples(&o)) || fz_known("pair", known_pair(l, r)))
         return;
     st = rr_wheelset_contact(l, r, y_ws, &o, &pose, &cl, &cr);
     fz_status(fn, st);
-    fz_error(fn, st, !isfinite(y_ws) || opts_invalid(&o), "an argument is invalid");
+    fz_error(fn, st, !isfinite(y_ws) || opts_invalid(&o) || pair_nonfinite(l)
+                         || pair_nonfinite(r), "an argument is invalid");
     FZ_FINITE(fn, st, pose.z);
     FZ_FINITE(fn, st, pose.roll);
     check_point(fn, st, &cl, l);
@@ -267,14 +282,15 @@ static void check_table(fz_in *in, const rr_wheel_roller *l, const rr_wheel_roll
     decode_opts(in, &o, 400);
     fz_note("rr_contact_table_build(y0 = %.17g, dy = %.17g, n = %d, data %s)", t.y0, t.dy, t.n,
             t.data ? "set" : "NULL");
-    if (fz_known("nsamples", known_nsamples(&o))) {
+    if (fz_known("nsamples", known_nsamples(&o)) || fz_known("pair", known_pair(l, r))) {
         free(data);
         return;
     }
     st = rr_contact_table_build(l, r, &o, &t, fz_choice(in, 2) ? &bad_y : NULL);
     fz_status(fn, st);
     fz_error(fn, st, null_data || t.n < 2 || !isfinite(t.y0) || !isfinite(t.dy)
-                         || !(t.dy > 0.0) || opts_invalid(&o), "an argument is invalid");
+                         || !(t.dy > 0.0) || opts_invalid(&o) || pair_nonfinite(l)
+                         || pair_nonfinite(r), "an argument is invalid");
     if (st >= 0) {
         for (i = 0; i < t.n * RR_CONTACT_TABLE_ROW; i++)
             if (!isfinite(data[i]))
@@ -328,7 +344,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;                    /* invalid point lists: fuzz_spline's business */
     decode_pair(&in, &w, &r, &left);
     right = left;
-    right.side = -left.side;
+    right.side = left.side == INT_MIN ? INT_MAX : -left.side;
     if (fz_choice(&in, 4) == 0) {
         right.r0 = fz_log(&in, 0.02, 0.5);
         right.wheel_y = fz_lin(&in, 0.05, 0.8);
