@@ -1,0 +1,397 @@
+/*
+ * fuzz_creep.c - the creep-force methods: rr_creep_forces over every method
+ * and option, rr_linear, rr_polach, rr_fastsim with and without (parts of)
+ * its traction field, and the checks and friction law they share.
+ *
+ * Input: one byte choosing the entry point, then the contact case (semi-
+ * axes 0.1 .. 20 mm, load 1 N .. 100 kN, G 1 .. 100 GPa, creepages of
+ * either sign 1e-8 .. 1, spin 1e-6 .. 100 1/m, speed 0.01 .. 100 m/s), the
+ * friction law, the options (every field, valid or not: unknown methods,
+ * grids outside [1, 4096], k0 or kS out of range), and the field's make-up.
+ * Grids are capped at 32768 elements so that one input stays well below
+ * 0.1 s.
+ *
+ * Oracles: documented errors for invalid arguments, NaN outputs on error,
+ * finite outputs on success, |(fx, fy)| <= mu0 N for every method but the
+ * linear theory, the dispatcher giving exactly what the method it calls
+ * gives, and for the traction field: finite values, pn >= 0, the traction
+ * bound per element, the slip flags and their count, pressure summing to N
+ * and tractions to (fx, fy) (on the rectangular grid, whose elements are
+ * all 2a/nx by 2b/ny).
+ */
+#include "fuzz.h"
+
+#define MAX_ELEMENTS 32768
+
+static int contact_invalid(const rr_contact_case *c)
+{
+    return !isfinite(c->a) || !isfinite(c->b) || !isfinite(c->N) || !isfinite(c->G)
+        || !isfinite(c->nu) || !isfinite(c->cx) || !isfinite(c->cy) || !isfinite(c->cphi)
+        || !isfinite(c->speed) || !(c->a > 0.0) || !(c->b > 0.0) || !(c->N > 0.0)
+        || !(c->G > 0.0) || !(c->nu >= 0.0) || !(c->nu < 0.5) || !(c->speed >= 0.0);
+}
+
+static int friction_invalid(const rr_friction *f)
+{
+    return !isfinite(f->mu0) || !isfinite(f->A) || !isfinite(f->B) || !(f->mu0 > 0.0)
+        || !(f->A > 0.0) || !(f->A <= 1.0) || !(f->B >= 0.0);
+}
+
+static int is_fastsim(int m)
+{
+    return m == RR_METHOD_FASTSIM || m == RR_METHOD_FASTSIM_BLENDED
+        || m == RR_METHOD_MODIFIED_FASTSIM;
+}
+
+/* The fields the method uses, against rr_creep_opts_check's documentation. */
+static int opts_invalid(const rr_creep_opts *o)
+{
+    if (o->method < 0 || o->method >= RR_METHOD_COUNT)
+        return 1;
+    if (is_fastsim(o->method)
+        && ((o->bound != RR_BOUND_PARABOLIC && o->bound != RR_BOUND_ELLIPTIC)
+            || (o->grid != RR_GRID_RECT && o->grid != RR_GRID_STRIPS)
+            || (o->slip_speed != RR_SLIP_LOCAL && o->slip_speed != RR_SLIP_RIGID)
+            || o->nx < 1 || o->ny < 1 || o->nx > RR_FASTSIM_MAX_GRID
+            || o->ny > RR_FASTSIM_MAX_GRID))
+        return 1;
+    if (o->method == RR_METHOD_MODIFIED_FASTSIM
+        && !(isfinite(o->k0) && isfinite(o->alpha_inf) && isfinite(o->beta) && o->k0 > 0.0
+             && o->k0 <= 1.0 && o->alpha_inf >= 0.0 && o->alpha_inf <= 1.0 && o->beta >= 0.0))
+        return 1;
+    if (o->method == RR_METHOD_POLACH
+        && !(isfinite(o->kA) && isfinite(o->kS) && o->kS > 0.0 && o->kS <= o->kA
+             && o->kA <= 1.0))
+        return 1;
+    return 0;
+}
+
+static int falling(const rr_friction *f)
+{
+    return f->A < 1.0 && f->B > 0.0;
+}
+
+static void decode_case(fz_in *in, rr_contact_case *c)
+{
+    c->a = fz_log(in, 1e-4, 2e-2);
+    c->b = fz_log(in, 1e-4, 2e-2);
+    c->N = fz_log(in, 1.0, 1e5);
+    c->G = fz_log(in, 1e9, 1e11);
+    c->nu = fz_lin(in, 0.0, 0.5);
+    c->cx = fz_slog(in, 1e-8, 1.0);
+    c->cy = fz_slog(in, 1e-8, 1.0);
+    c->cphi = fz_slog(in, 1e-6, 100.0);
+    c->speed = fz_log(in, 0.01, 100.0);
+}
+
+static void decode_friction(fz_in *in, rr_friction *f)
+{
+    f->mu0 = fz_lin(in, 0.05, 1.0);
+    f->A = fz_choice(in, 4) == 0 ? 1.0 : fz_lin(in, 0.05, 1.0);   /* Coulomb, or falling */
+    f->B = fz_lin(in, 0.0, 3.0);
+}
+
+/* A grid dimension: usually 1 .. 48, sometimes anywhere up to one past the limit. */
+static int decode_dim(fz_in *in)
+{
+    const int big = fz_choice(in, 8) == 7;
+    const int small = fz_int(in, 1, 48);
+    return big ? fz_range(in, 1, RR_FASTSIM_MAX_GRID + 1) : small;
+}
+
+static void decode_opts(fz_in *in, rr_creep_opts *o)
+{
+    rr_creep_opts_default(fz_range(in, 0, RR_METHOD_COUNT - 1), o);
+    if (fz_choice(in, 2) == 0)
+        return;             /* the defaults of a method */
+    o->method = fz_int(in, 0, RR_METHOD_COUNT - 1);
+    o->nx = decode_dim(in);
+    o->ny = decode_dim(in);
+    if (o->nx >= 1 && o->ny >= 1 && o->nx <= RR_FASTSIM_MAX_GRID && o->ny <= RR_FASTSIM_MAX_GRID
+        && (long)o->nx * o->ny > MAX_ELEMENTS)
+        o->ny = MAX_ELEMENTS / o->nx;
+    o->bound = fz_int(in, 0, 1);
+    o->grid = fz_int(in, 0, 1);
+    o->slip_speed = fz_int(in, 0, 1);
+    o->k0 = fz_lin(in, 0.01, 1.0);
+    o->alpha_inf = fz_lin(in, 0.0, 1.0);
+    o->beta = fz_lin(in, 0.0, 5.0);
+    o->kA = fz_lin(in, 0.01, 1.0);
+    o->kS = o->kA * fz_lin(in, 0.01, 1.0);
+}
+
+static int in_range(double v, double lo, double hi)
+{
+    return fabs(v) >= lo && fabs(v) <= hi;
+}
+
+/* Known: an extreme but finite case (sizes, load or modulus beyond 1e+-30,
+ * creepages beyond 1e30, mu0 N near the underflow) overflows the products
+ * of every method, and Kalker's coefficients are inf or NaN for extreme
+ * ellipticities (fuzz_kalker); modified FASTSIM's eps overflows where A
+ * mu0 is near zero, and beta = 0 times it is NaN: inf or NaN forces with
+ * status 0; Polach's
+ * F rounds above mu0 N where mu0 N is subnormal. */
+static int known_extreme(const rr_contact_case *c, const rr_friction *fr)
+{
+    return !in_range(c->a, 1e-30, 1e30) || !in_range(c->b, 1e-30, 1e30)
+        || !in_range(c->a / c->b, 1e-30, 1e30) || !in_range(c->N, 1e-30, 1e30)
+        || !in_range(c->G, 1e-30, 1e30) || !(fabs(c->cx) < 1e30 && fabs(c->cy) < 1e30
+                                               && fabs(c->cphi) < 1e30 && c->speed < 1e30)
+        || !(fr->mu0 * c->N > 1e-290) || !in_range(fr->mu0, 1e-30, 1e30) || !(fr->B < 1e30)
+        || !(fr->A > 1e-30);
+}
+
+/* Known: blended FASTSIM with a creepage so small (< 1e-154) that its
+ * square underflows: the single flexibility is 0/0, NaN forces, status 0. */
+static int known_blended(const rr_contact_case *c, int method)
+{
+    const double m = fmax(fabs(c->cx), fmax(fabs(c->cy), fabs(c->cphi)));
+    return method == RR_METHOD_FASTSIM_BLENDED && m > 0.0 && m < 1e-150;
+}
+
+/* Known: Polach's spin force is added outside the saturation, so that with
+ * spin |F| exceeds mu N. */
+static int known_polach(const rr_contact_case *c)
+{
+    return c->cphi != 0.0;
+}
+
+static void check_forces(const char *fn, int st, const rr_contact_case *c, const rr_friction *fr,
+                         int frictional, int invalid, const rr_forces *f)
+{
+    fz_status(fn, st);
+    fz_error(fn, st, invalid, "an argument is invalid");
+    if (st < 0) {
+        if (!isnan(f->fx) || !isnan(f->fy) || !isnan(f->mz))
+            fz_fail("%s: error %d but the forces are not NaN", fn, st);
+        return;
+    }
+    FZ_FINITE(fn, st, f->fx);
+    FZ_FINITE(fn, st, f->fy);
+    FZ_FINITE(fn, st, f->mz);
+    if (frictional)
+        fz_bound(fn, st, f->fx, f->fy, fr->mu0, c->N);
+}
+
+static void check_field(int st, const rr_contact_case *c, const rr_friction *fr,
+                        const rr_creep_opts *o, const rr_forces *f, const rr_fastsim_field *fl)
+{
+    const char *fn = "rr_fastsim (field)";
+    const int n = o->nx * o->ny;
+    const double area = (2.0 * c->a / o->nx) * (2.0 * c->b / o->ny);
+    double sum_p = 0.0, sum_x = 0.0, sum_y = 0.0, scale;
+    int i, nslip = 0;
+
+    if (st < 0)
+        return;
+    if (fl->nslip < 0 || fl->nslip > n)
+        fz_fail("%s: nslip = %d outside [0, %d]", fn, fl->nslip, n);
+    for (i = 0; i < n; i++) {
+        if (fl->x && !isfinite(fl->x[i]))
+            fz_fail("%s: x[%d] = %g", fn, i, fl->x[i]);
+        if (fl->y && !isfinite(fl->y[i]))
+            fz_fail("%s: y[%d] = %g", fn, i, fl->y[i]);
+        if (fl->x && !(fabs(fl->x[i]) <= c->a * (1.0 + 1e-12)))
+            fz_fail("%s: x[%d] = %g outside |x| <= a = %g", fn, i, fl->x[i], c->a);
+        if (fl->y && !(fabs(fl->y[i]) <= c->b * (1.0 + 1e-12)))
+            fz_fail("%s: y[%d] = %g outside |y| <= b = %g", fn, i, fl->y[i], c->b);
+        if (fl->pn && !(isfinite(fl->pn[i]) && fl->pn[i] >= 0.0))
+            fz_fail("%s: pn[%d] = %g (must be finite, >= 0)", fn, i, fl->pn[i]);
+        if (fl->px && !isfinite(fl->px[i]))
+            fz_fail("%s: px[%d] = %g", fn, i, fl->px[i]);
+        if (fl->py && !isfinite(fl->py[i]))
+            fz_fail("%s: py[%d] = %g", fn, i, fl->py[i]);
+        if (fl->pn && fl->px && fl->py
+            && !(hypot(fl->px[i], fl->py[i]) <= fr->mu0 * fl->pn[i] * (1.0 + 1e-9)))
+            fz_fail("%s: element %d: |(px, py)| = %.17g above mu0 pn = %.17g", fn, i,
+                    hypot(fl->px[i], fl->py[i]), fr->mu0 * fl->pn[i]);
+        if (fl->slip) {
+            if (fl->slip[i] != 0 && fl->slip[i] != 1)
+                fz_fail("%s: slip[%d] = %d, not 0 or 1", fn, i, fl->slip[i]);
+            nslip += fl->slip[i];
+        }
+        if (fl->pn) sum_p += fl->pn[i];
+        if (fl->px) sum_x += fl->px[i];
+        if (fl->py) sum_y += fl->py[i];
+    }
+    if (fl->slip && nslip != fl->nslip)
+        fz_fail("%s: nslip = %d but %d elements flagged", fn, fl->nslip, nslip);
+    if (o->grid != RR_GRID_RECT || !isfinite(area))
+        return;
+    if (fl->pn && isfinite(sum_p * area) && !(fabs(sum_p * area - c->N) <= 1e-9 * c->N))
+        fz_fail("%s: pressure sums to %.17g, not N = %.17g", fn, sum_p * area, c->N);
+    scale = 1e-9 * fr->mu0 * c->N;
+    if (fl->px && isfinite(sum_x * area) && !(fabs(sum_x * area - f->fx) <= scale))
+        fz_fail("%s: px sums to %.17g, not fx = %.17g", fn, sum_x * area, f->fx);
+    if (fl->py && isfinite(sum_y * area) && !(fabs(sum_y * area - f->fy) <= scale))
+        fz_fail("%s: py sums to %.17g, not fy = %.17g", fn, sum_y * area, f->fy);
+}
+
+static void run_fastsim(fz_in *in, const rr_contact_case *c, const rr_friction *fr,
+                        rr_creep_opts *o)
+{
+    const int mode = fz_choice(in, 3), mask = (int)fz_u8(in);
+    const int grid_ok = o->nx >= 1 && o->ny >= 1 && o->nx <= RR_FASTSIM_MAX_GRID
+                        && o->ny <= RR_FASTSIM_MAX_GRID;
+    const size_t n = grid_ok ? (size_t)o->nx * (size_t)o->ny : 0;
+    rr_fastsim_field fl;
+    rr_forces f, f2;
+    int st, st2, invalid;
+
+    if (fz_choice(in, 2))   /* mostly a FASTSIM method: the others must be refused */
+        o->method = RR_METHOD_FASTSIM + fz_choice(in, 3);
+    fz_note("; rr_fastsim method %d, field mode %d mask %d", o->method, mode, mask);
+    invalid = contact_invalid(c) || friction_invalid(fr) || opts_invalid(o) || !is_fastsim(o->method)
+              || (falling(fr) && !(c->speed > 0.0));
+    memset(&fl, 0, sizeof fl);
+    fl.nslip = -7;
+    if (mode > 0 && n > 0) {
+        fl.x = (mode == 1 || (mask & 1)) ? fz_alloc(n * sizeof *fl.x) : NULL;
+        fl.y = (mode == 1 || (mask & 2)) ? fz_alloc(n * sizeof *fl.y) : NULL;
+        fl.pn = (mode == 1 || (mask & 4)) ? fz_alloc(n * sizeof *fl.pn) : NULL;
+        fl.px = (mode == 1 || (mask & 8)) ? fz_alloc(n * sizeof *fl.px) : NULL;
+        fl.py = (mode == 1 || (mask & 16)) ? fz_alloc(n * sizeof *fl.py) : NULL;
+        fl.slip = (mode == 1 || (mask & 32)) ? fz_alloc(n * sizeof *fl.slip) : NULL;
+    }
+    st = rr_fastsim(c, fr, o, &f, mode > 0 ? &fl : NULL);
+    if (!(st >= 0 && (fz_known("extreme", known_extreme(c, fr))
+                      || fz_known("blended", known_blended(c, o->method))))) {
+        check_forces("rr_fastsim", st, c, fr, 1, invalid, &f);
+        if (mode > 0 && n > 0)
+            check_field(st, c, fr, o, &f, &fl);
+        if (st >= 0 && mode == 0) {
+            /* the dispatcher must give exactly the same */
+            st2 = rr_creep_forces(c, fr, o, &f2);
+            if (st2 != st || memcmp(&f, &f2, sizeof f) != 0)
+                fz_fail("rr_creep_forces: status %d (%g, %g, %g) but rr_fastsim %d (%g, %g, %g)",
+                        st2, f2.fx, f2.fy, f2.mz, st, f.fx, f.fy, f.mz);
+        }
+    }
+    free(fl.x);
+    free(fl.y);
+    free(fl.pn);
+    free(fl.px);
+    free(fl.py);
+    free(fl.slip);
+}
+
+static void run_shared(fz_in *in, const rr_contact_case *c, const rr_friction *fr,
+                       const rr_creep_opts *o)
+{
+    rr_kalker_coeffs k;
+    const double w = fz_log(in, 1e-6, 100.0);
+    int st;
+
+    fz_note("; slip speed w = %.17g", w);
+    st = rr_creep_opts_check(o);
+    fz_status("rr_creep_opts_check", st);
+    if ((st < 0) != opts_invalid(o))
+        fz_fail("rr_creep_opts_check: status %d for options that are %s", st,
+                opts_invalid(o) ? "invalid" : "valid");
+    st = rr_contact_check(c);
+    fz_status("rr_contact_check", st);
+    if ((st < 0) != contact_invalid(c))
+        fz_fail("rr_contact_check: status %d for a case that is %s", st,
+                contact_invalid(c) ? "invalid" : "valid");
+    st = rr_friction_check(fr);
+    fz_status("rr_friction_check", st);
+    if ((st < 0) != friction_invalid(fr))
+        fz_fail("rr_friction_check: status %d for a law that is %s", st,
+                friction_invalid(fr) ? "invalid" : "valid");
+    st = rr_creep_prepare(c, fr, &k);
+    fz_status("rr_creep_prepare", st);
+    fz_error("rr_creep_prepare", st,
+             contact_invalid(c) || friction_invalid(fr) || (falling(fr) && !(c->speed > 0.0)),
+             "an argument is invalid");
+    if (!friction_invalid(fr) && isfinite(w) && w >= 0.0) {
+        const double mu = rr_friction_mu(fr, w), dmu = rr_friction_dmu(fr, w);
+        const double lo = fr->A * fr->mu0;
+        /* mu falls from mu0 toward A mu0; its slope is never positive */
+        if (!(mu >= lo * (1.0 - 1e-15) && mu <= fr->mu0 * (1.0 + 1e-15)))
+            fz_fail("rr_friction_mu(%.17g) = %.17g outside [A mu0, mu0] = [%.17g, %.17g]", w,
+                    mu, lo, fr->mu0);
+        /* known: mu0 (1 - A) B overflows for huge B, times exp(-B w) = 0: NaN */
+        if (!(isfinite(dmu) && dmu <= 0.0)
+            && !fz_known("friction_dmu", !(fr->mu0 * fr->B < 1e300)))
+            fz_fail("rr_friction_dmu(%.17g) = %.17g (must be finite, <= 0)", w, dmu);
+    }
+    {
+        /* every method's defaults are valid options */
+        rr_creep_opts d;
+        int m;
+        for (m = 0; m < RR_METHOD_COUNT; m++) {
+            rr_creep_opts_default(m, &d);
+            if ((st = rr_creep_opts_check(&d)) != RR_OK)
+                fz_fail("rr_creep_opts_check: status %d for method %d's defaults", st, m);
+        }
+    }
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    fz_in in = fz_start(data, size);
+    const int op = fz_choice(&in, 5);
+    rr_contact_case c;
+    rr_friction fr;
+    rr_creep_opts o;
+    rr_forces f, f2;
+    int st, st2;
+
+    decode_case(&in, &c);
+    decode_friction(&in, &fr);
+    decode_opts(&in, &o);
+    fz_note("op %d; case a = %.17g, b = %.17g, N = %.17g, G = %.17g, nu = %.17g, cx = %.17g, "
+            "cy = %.17g, cphi = %.17g, speed = %.17g; friction mu0 = %.17g, A = %.17g, B = %.17g; "
+            "opts method %d, nx %d, ny %d, bound %d, grid %d, slip_speed %d, k0 = %.17g, "
+            "alpha_inf = %.17g, beta = %.17g, kA = %.17g, kS = %.17g", op, c.a, c.b, c.N, c.G,
+            c.nu, c.cx, c.cy, c.cphi, c.speed, fr.mu0, fr.A, fr.B, o.method, o.nx, o.ny, o.bound,
+            o.grid, o.slip_speed, o.k0, o.alpha_inf, o.beta, o.kA, o.kS);
+    switch (op) {
+    case 0: {
+        const int invalid = opts_invalid(&o) || contact_invalid(&c)
+                            || (o.method != RR_METHOD_LINEAR
+                                && (friction_invalid(&fr) || (falling(&fr) && !(c.speed > 0.0))));
+        st = rr_creep_forces(&c, &fr, &o, &f);
+        if (st >= 0 && (fz_known("extreme", known_extreme(&c, &fr))
+                        || fz_known("blended", known_blended(&c, o.method))
+                        || fz_known("polach", o.method == RR_METHOD_POLACH && known_polach(&c))))
+            break;
+        check_forces("rr_creep_forces", st, &c, &fr, o.method != RR_METHOD_LINEAR, invalid, &f);
+        break;
+    }
+    case 1:
+        st = rr_linear(&c, &f);
+        if (st >= 0 && fz_known("extreme", known_extreme(&c, &fr)))
+            break;
+        check_forces("rr_linear", st, &c, &fr, 0, contact_invalid(&c), &f);
+        o.method = RR_METHOD_LINEAR;
+        st2 = rr_creep_forces(&c, &fr, &o, &f2);
+        if (st2 != st || memcmp(&f, &f2, sizeof f) != 0)
+            fz_fail("rr_creep_forces: linear theory differs from rr_linear");
+        break;
+    case 2: {
+        const int invalid = contact_invalid(&c) || friction_invalid(&fr)
+                            || (falling(&fr) && !(c.speed > 0.0))
+                            || !(isfinite(o.kA) && isfinite(o.kS) && o.kS > 0.0
+                                 && o.kS <= o.kA && o.kA <= 1.0);
+        st = rr_polach(&c, &fr, o.kA, o.kS, &f);
+        if (st >= 0 && (fz_known("extreme", known_extreme(&c, &fr))
+                        || fz_known("polach", known_polach(&c))))
+            break;
+        check_forces("rr_polach", st, &c, &fr, 1, invalid, &f);
+        o.method = RR_METHOD_POLACH;
+        st2 = rr_creep_forces(&c, &fr, &o, &f2);
+        if (st2 != st || memcmp(&f, &f2, sizeof f) != 0)
+            fz_fail("rr_creep_forces: Polach differs from rr_polach");
+        break;
+    }
+    case 3:
+        run_fastsim(&in, &c, &fr, &o);
+        break;
+    default:
+        run_shared(&in, &c, &fr, &o);
+        break;
+    }
+    return 0;
+}
