@@ -11,6 +11,9 @@ int rr_friction_check(const rr_friction *f)
         return RR_ERR_NONFINITE;
     if (f->mu0 <= 0.0 || f->A <= 0.0 || f->A > 1.0 || f->B < 0.0)
         return RR_ERR_FRICTION;
+    /* beyond these a force or the law's slope mu0 (1 - A) B overflows */
+    if (f->mu0 > RR_FRICTION_MAX || f->B > RR_FRICTION_MAX)
+        return RR_ERR_RANGE;
     return RR_OK;
 }
 

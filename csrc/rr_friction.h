@@ -17,10 +17,14 @@ typedef struct {
     double B;    /* exponential decay rate [s/m], >= 0 */
 } rr_friction;
 
+/* Largest mu0 and B accepted (no physical law comes near). */
+#define RR_FRICTION_MAX 1e100
+
 /*
- * rr_friction_check - 0 if the law is valid, else RR_ERR_NONFINITE or
- * RR_ERR_FRICTION (mu0 <= 0, A outside (0, 1], B < 0), RR_ERR_NULL.  A > 0
- * keeps mu positive at any slip speed.
+ * rr_friction_check - 0 if the law is valid, else RR_ERR_NONFINITE,
+ * RR_ERR_FRICTION (mu0 <= 0, A outside (0, 1], B < 0), RR_ERR_RANGE (mu0 or
+ * B above RR_FRICTION_MAX: forces or slopes would overflow), RR_ERR_NULL.
+ * A > 0 keeps mu positive at any slip speed.
  */
 int rr_friction_check(const rr_friction *f);
 

@@ -307,18 +307,23 @@ static void store(double *d, const rr_contact_point *c)
     d[10] = c->ha; d[11] = c->hb; d[12] = c->hd;
 }
 
-static void load(const double *a, const double *b, double f, rr_contact_point *c)
+/* One side of rows a, b interpolated at fraction f; 0, or RR_ERR_RANGE if
+ * the caller's rows hold values that give no finite result. */
+static int load(const double *a, const double *b, double f, rr_contact_point *c)
 {
     double v[NSIDE];
-    int k;
-    for (k = 0; k < NSIDE; k++)
+    int k, finite = 1;
+    for (k = 0; k < NSIDE; k++) {
         v[k] = a[k] + f * (b[k] - a[k]);
+        finite &= isfinite(v[k]) != 0;
+    }
     c->y = v[0]; c->z = v[1]; c->s_wheel = v[2]; c->s_roller = v[3]; c->r = v[4];
     c->R = v[5]; c->delta = v[6]; c->A = v[7]; c->B = v[8];
     c->ha = v[10]; c->hb = v[11]; c->hd = v[12];
     c->two_point = (f < 0.5 ? a[9] : b[9]) != 0.0;
     c->gap = 0.0;
     c->y2 = c->gap2 = NAN;
+    return finite ? RR_OK : RR_ERR_RANGE;
 }
 
 int rr_contact_table_build(const rr_wheel_roller *left, const rr_wheel_roller *right,
@@ -393,13 +398,17 @@ int rr_contact_table_lookup(const rr_contact_table *t, double y_ws, rr_wheelset_
     f = pos - i;
     a = t->data + (long)i * ROW;
     b = a + ROW;
-    load(a, b, f, cl);
-    load(a + NSIDE, b + NSIDE, f, cr);
+    st = load(a, b, f, cl);
+    if (load(a + NSIDE, b + NSIDE, f, cr) != RR_OK)
+        st = RR_ERR_RANGE;
     pose->z = a[2 * NSIDE] + f * (b[2 * NSIDE] - a[2 * NSIDE]);
     pose->roll = a[2 * NSIDE + 1] + f * (b[2 * NSIDE + 1] - a[2 * NSIDE + 1]);
     if (slope) {
         slope->z = (b[2 * NSIDE] - a[2 * NSIDE]) / t->dy;
         slope->roll = (b[2 * NSIDE + 1] - a[2 * NSIDE + 1]) / t->dy;
     }
+    if (st != RR_OK || !isfinite(pose->z) || !isfinite(pose->roll)
+        || (slope && !(isfinite(slope->z) && isfinite(slope->roll))))
+        return lookup_fail(RR_ERR_RANGE, pose, slope, cl, cr);   /* rows not a table's */
     return RR_OK;
 }

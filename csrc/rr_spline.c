@@ -32,6 +32,12 @@ int rr_spline_init(int n, const double *s, const double *z, double *m, double *w
     }
     for (i = n - 2; i > 0; i--)
         m[i] -= work[i] * m[i + 1];
+    for (i = 0; i < n; i++)
+        if (!isfinite(m[i])) {
+            for (i = 0; i < n; i++)
+                m[i] = NAN;         /* values near the largest double over close knots */
+            return RR_ERR_RANGE;
+        }
     return RR_OK;
 }
 

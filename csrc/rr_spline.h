@@ -24,7 +24,8 @@ typedef struct {
  *   returns: m[n], the second derivatives at the knots
  *   status:  0 OK; RR_ERR_NONFINITE, RR_ERR_GEOMETRY (n < 2 or s not
  *            strictly increasing), RR_ERR_WORKSPACE (m or work NULL),
- *            RR_ERR_NULL (s or z NULL)
+ *            RR_ERR_RANGE (a second derivative overflows), RR_ERR_NULL (s or
+ *            z NULL)
  */
 int rr_spline_init(int n, const double *s, const double *z, double *m, double *work);
 
