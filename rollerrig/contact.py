@@ -291,7 +291,15 @@ def creep_forces(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28,
     named["friction.B"] = fB
     shape, scalar, full, flat = _broadcast(func, named)
     fx, fy, mz, status = _core.creep_forces(*flat, **opts)
+    # the method's own numbers may explain a failure too (beta = 1e307)
+    full.update(_used_numbers(method, opts))
     return CreepForces(*_finish(func, shape, scalar, full, (fx, fy, mz), status, errors))
+
+
+def _used_numbers(method, opts):
+    """The numeric options the method reads, as 0-d arrays for messages."""
+    names = {"modified_fastsim": ("k0", "alpha_inf", "beta"), "polach": ("kA", "kS")}
+    return {n: np.asarray(opts[n]) for n in names.get(method, ())}
 
 
 def fastsim_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28,
@@ -318,6 +326,7 @@ def fastsim_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28,
     if not scalar:
         raise RollerRigError(f"{func}: one case at a time; got inputs of shape {shape}")
     fx, fy, mz, status, x, y, pn, px, py, slip = _core.fastsim_field(*flat, **opts)
+    full.update(_used_numbers(method, opts))
     check_status(func, np.array(status, dtype=np.int8), full, "raise")
     # row j of width 2b/ny has nx elements of length 2 a_j / nx
     yh = -1.0 + (2.0 * np.arange(ny) + 1.0) / ny
