@@ -50,4 +50,16 @@ const char *rr_status_message(int status);
 
 #define RR_PI 3.14159265358979323846
 
+/* 1 if v[0..n-1] are all finite.  0 * x is NaN exactly when x is NaN or
+ * infinite, and a NaN survives any sum: one test at the end instead of a
+ * branch per value, for the checks on a time step's hot path. */
+static inline int rr_all_finite(const double *v, int n)
+{
+    double acc = 0.0;
+    int i;
+    for (i = 0; i < n; i++)
+        acc += 0.0 * v[i];
+    return acc == 0.0;
+}
+
 #endif

@@ -84,8 +84,8 @@ int rr_creepage(const rr_motion *wheel, const rr_motion *roller, const rr_contac
     out->cx = dot(out->slip, f->t1) / V;
     out->cy = dot(out->slip, f->t2) / V;
     out->cphi = dot(dw, n) / V;
-    if (!all_finite(out->slip, 3) || !isfinite(out->cx) || !isfinite(out->cy)
-        || !isfinite(out->cphi) || !isfinite(V)) {
+    if (!rr_all_finite(out->slip, 3)
+        || !isfinite(0.0 * out->cx + 0.0 * out->cy + 0.0 * out->cphi + 0.0 * V)) {
         set_nan(out);               /* speeds over ~1e150 m/s, or a tiny vmin */
         return RR_ERR_RANGE;
     }

@@ -312,18 +312,16 @@ static void store(double *d, const rr_contact_point *c)
 static int load(const double *a, const double *b, double f, rr_contact_point *c)
 {
     double v[NSIDE];
-    int k, finite = 1;
-    for (k = 0; k < NSIDE; k++) {
+    int k;
+    for (k = 0; k < NSIDE; k++)
         v[k] = a[k] + f * (b[k] - a[k]);
-        finite &= isfinite(v[k]) != 0;
-    }
     c->y = v[0]; c->z = v[1]; c->s_wheel = v[2]; c->s_roller = v[3]; c->r = v[4];
     c->R = v[5]; c->delta = v[6]; c->A = v[7]; c->B = v[8];
     c->ha = v[10]; c->hb = v[11]; c->hd = v[12];
     c->two_point = (f < 0.5 ? a[9] : b[9]) != 0.0;
     c->gap = 0.0;
     c->y2 = c->gap2 = NAN;
-    return finite ? RR_OK : RR_ERR_RANGE;
+    return rr_all_finite(v, NSIDE) ? RR_OK : RR_ERR_RANGE;
 }
 
 int rr_contact_table_build(const rr_wheel_roller *left, const rr_wheel_roller *right,

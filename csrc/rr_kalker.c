@@ -32,12 +32,13 @@ static const double kalker_table[2][10][3][3] = {
     }
 };
 
-/* Lagrange parabola through 1/C at nu = 0, 0.25, 0.5, evaluated at nu. */
-static double nu_parabola(const double c[3], double nu)
+/* Lagrange parabola through 1/C at nu = 0, 0.25, 0.5, evaluated at nu;
+ * at a node (node = 0, 1, 2; else -1) exactly its value. */
+static double nu_parabola(const double c[3], double nu, int node)
 {
     double inv;
-    if (nu == 0.0 || nu == 0.25 || nu == 0.5)     /* a node: exactly its value */
-        return c[nu == 0.0 ? 0 : nu == 0.25 ? 1 : 2];
+    if (node >= 0)
+        return c[node];
     inv = 8.0 * (nu - 0.25) * (nu - 0.5) / c[0]
                - 16.0 * nu * (nu - 0.5) / c[1]
                + 8.0 * nu * (nu - 0.25) / c[2];
@@ -72,7 +73,7 @@ static int range_checked(rr_kalker_coeffs *out)
 
 int rr_kalker(double a_over_b, double nu, rr_kalker_coeffs *out)
 {
-    int half, row, j, k;
+    int half, row, j, k, node;
     double g, pos, frac, col[3];
     double *dst[3];
 
@@ -97,6 +98,7 @@ int rr_kalker(double a_over_b, double nu, rr_kalker_coeffs *out)
         return range_checked(out);   /* C23 ~ g^(-3/2) overflows for a/b beyond ~1e205 */
     }
     /* rows are g = 0.1 (row 0) ... 1.0 (row 9); the last interval ends at row 9 */
+    node = nu == 0.0 ? 0 : nu == 0.25 ? 1 : nu == 0.5 ? 2 : -1;
     pos = 10.0 * g - 1.0;
     if (fabs(pos - floor(pos + 0.5)) < 1e-12)
         pos = floor(pos + 0.5);     /* 10 * 0.3 - 1 = 2.0000000000000004: a node */
@@ -113,7 +115,7 @@ int rr_kalker(double a_over_b, double nu, rr_kalker_coeffs *out)
             const double c1 = kalker_table[half][row + 1][k][j];
             col[j] = frac == 0.0 ? c0 : c0 + frac * (c1 - c0);
         }
-        *dst[k] = nu_parabola(col, nu);
+        *dst[k] = nu_parabola(col, nu, node);
     }
     return RR_OK;
 }

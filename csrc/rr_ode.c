@@ -65,15 +65,24 @@ int rr_lu_factor(int n, double *A, int *piv)
     return RR_OK;
 }
 
+/* The solve on factors known to come from rr_lu_factor (the step's own). */
+static void lu_solve(int n, const double *LU, const int *piv, double *b);
+
 void rr_lu_solve(int n, const double *LU, const int *piv, double *b)
 {
-    int i, j, k;
+    int k;
 
     if (!LU || !piv || !b || n < 1 || n > RR_ODE_MAXN)
         return;
     for (k = 0; k < n; k++)
         if (piv[k] < k || piv[k] >= n)
             return;                 /* not factors of rr_lu_factor */
+    lu_solve(n, LU, piv, b);
+}
+
+static void lu_solve(int n, const double *LU, const int *piv, double *b)
+{
+    int i, j, k;
 
     for (k = 0; k < n; k++)
         if (piv[k] != k) {
@@ -164,27 +173,18 @@ int rr_ode_nfev(const rr_ode *s, int jac_given)
  * outputs v checked. */
 static int merge(const rr_ode *s, int st, const double *v, int *warn)
 {
-    int i;
-
     if (st < 0)
         return st;
     if (st > *warn)
         *warn = st;
-    for (i = 0; i < s->n; i++)
-        if (!isfinite(v[i]))
-            return RR_ERR_NONFINITE;
-    return RR_OK;
+    return rr_all_finite(v, s->n) ? RR_OK : RR_ERR_NONFINITE;
 }
 
 /* 0, or RR_ERR_RANGE if a stage value overflowed (the step's inputs are
  * checked finite, so only the arithmetic of the step can have made it). */
 static int stage_finite(const rr_ode *s, const double *y)
 {
-    int i;
-    for (i = 0; i < s->n; i++)
-        if (!isfinite(y[i]))
-            return RR_ERR_RANGE;
-    return RR_OK;
+    return rr_all_finite(y, s->n) ? RR_OK : RR_ERR_RANGE;
 }
 
 /* One call of f, counted. */
@@ -295,7 +295,7 @@ static void solve(const rr_ode *s, double *b)
     int i, j;
 
     if (nq == 0) {
-        rr_lu_solve(n, s->W, s->piv, b);
+        lu_solve(n, s->W, s->piv, b);
         return;
     }
     for (i = 0; i < m; i++) {
@@ -305,7 +305,7 @@ static void solve(const rr_ode *s, double *b)
             sum += Ju[j] * b[j];
         b[nq + i] += s->g * sum;
     }
-    rr_lu_solve(m, s->M, s->piv, b + nq);
+    lu_solve(m, s->M, s->piv, b + nq);
     for (j = 0; j < nq; j++)
         b[j] += s->g * b[nq + j];
 }

@@ -234,13 +234,12 @@ int rr_rig_rhs(rr_rig *rig, double t, const double *y, double *dydt)
         dydt[RR_RIG_T_ROLLER] = (rig->Tref_roller - y[RR_RIG_T_ROLLER]) / p->roller_tau;
         dydt[RR_RIG_T_WHEELSET] = (rig->Tref_wheelset - y[RR_RIG_T_WHEELSET]) / p->wheelset_tau;
     }
-    for (j = 0; j < NS; j++)
-        if (!isfinite(dydt[j])) {
-            /* finite forces over a tiny mass or inertia, or a huge state */
-            for (j = 0; j < NS; j++)
-                dydt[j] = NAN;
-            return RR_ERR_RANGE;
-        }
+    if (!rr_all_finite(dydt, NS)) {
+        /* finite forces over a tiny mass or inertia, or a huge state */
+        for (j = 0; j < NS; j++)
+            dydt[j] = NAN;
+        return RR_ERR_RANGE;
+    }
     return st;
 }
 
@@ -414,12 +413,12 @@ int rr_rig_jac(rr_rig *rig, double t, const double *y, double *J)
                 J[i * NS + j] += l->rx[i] * dfx + l->ry[i] * dfy;
         }
     }
-    for (j = 0; j < NS * NS; j++)
-        if (!isfinite(J[j])) {
-            for (j = 0; j < NS * NS; j++)
-                J[j] = NAN;         /* rates near the largest double: 1/V, D overflow */
-            return RR_ERR_RANGE;
-        }
+    /* the constant part J0 is finite (checked at init); the creep rows may not be */
+    if (!rr_all_finite(J + RR_RIG_VX * NS, (RR_RIG_ROLLER_SPIN - RR_RIG_VX + 1) * NS)) {
+        for (j = 0; j < NS * NS; j++)
+            J[j] = NAN;             /* rates near the largest double: 1/V, D overflow */
+        return RR_ERR_RANGE;
+    }
     return RR_OK;
 }
 
@@ -556,6 +555,8 @@ int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig)
     rig->ode.linear_tr = p->linear_tr;
     rig->ode.model = p->newton_model ? model_cb : NULL;
     jac_const(p, rig->J0);
+    if (!rr_all_finite(rig->J0, NS * NS))
+        return rig->status = RR_ERR_RANGE;  /* a stiffness over a near-zero mass */
     /* x, y, yaw, chi, theta_r are integrals of the next five states */
     rig->ode.nq = RR_RIG_VX;
     /* a warning flags a stage left off by more than 0.1 % of its typical

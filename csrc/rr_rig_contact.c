@@ -134,14 +134,13 @@ int rr_rig_kinematics(const rr_rig_contact_model *m, const rr_rig_state *s, rr_r
     pose->w[0] = -s->spin * sy * cr + droll * cy;
     pose->w[1] = s->spin * cy * cr + droll * sy;
     pose->w[2] = s->spin * sr + s->yaw_rate;
-    for (k = 0; k < 3; k++)
-        if (!isfinite(pose->v[k]) || !isfinite(pose->w[k])) {
-            /* rates beyond ~1e300: the constrained rates overflow */
-            pose_nan(pose);
-            wheel_nan(&w[0], RR_ERR_RANGE);
-            wheel_nan(&w[1], RR_ERR_RANGE);
-            return RR_ERR_RANGE;
-        }
+    if (!rr_all_finite(pose->v, 3) || !rr_all_finite(pose->w, 3)) {
+        /* rates beyond ~1e300: the constrained rates overflow */
+        pose_nan(pose);
+        wheel_nan(&w[0], RR_ERR_RANGE);
+        wheel_nan(&w[1], RR_ERR_RANGE);
+        return RR_ERR_RANGE;
+    }
 
     wheel.c[0] = pose->c[0];
     wheel.c[1] = pose->c[1];
@@ -282,10 +281,7 @@ int rr_rig_contact_loads(const rr_rig_contact_model *m, const double N[2], const
         cross(arm, c->force, c->moment);
         for (j = 0; j < 3; j++)
             c->moment[j] += c->f.mz * c->n[j];
-        for (j = 0; j < 3; j++)
-            if (!isfinite(c->force[j]) || !isfinite(c->moment[j]))
-                break;
-        if (j < 3)
+        if (!rr_all_finite(c->force, 3) || !rr_all_finite(c->moment, 3))
             wheel_nan(c, RR_ERR_RANGE);     /* a load near the largest double */
     }
     return worse(w[0].status, w[1].status);
