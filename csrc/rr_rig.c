@@ -388,6 +388,8 @@ int rr_rig_jac(rr_rig *rig, double t, const double *y, double *J)
         return RR_ERR_NULL;
     if ((st = usable(rig)) != RR_OK)
         return st;
+    if (!rr_all_finite(y, NS))
+        return RR_ERR_NONFINITE;
     st = linearise(rig, y);
     if (st < 0)
         return st;

@@ -34,7 +34,8 @@ static int contact_invalid(const rr_contact_case *c)
 static int friction_invalid(const rr_friction *f)
 {
     return !isfinite(f->mu0) || !isfinite(f->A) || !isfinite(f->B) || !(f->mu0 > 0.0)
-        || !(f->A > 0.0) || !(f->A <= 1.0) || !(f->B >= 0.0);
+        || !(f->A > 0.0) || !(f->A <= 1.0) || !(f->B >= 0.0)
+        || f->mu0 > RR_FRICTION_MAX || f->B > RR_FRICTION_MAX;
 }
 
 static int is_fastsim(int m)
