@@ -300,7 +300,7 @@ int rr_creepctl_xi(const rr_creepctl_params *p, double w_wheelset, double w_roll
 int rr_creepctl_update(const rr_creepctl_params *p, rr_creepctl_state *s, double xi_ref,
                        double w_wheelset, double w_roller, double *w_ref)
 {
-    double xi, dxi, K;
+    double xi, dxi, K, w;
     int st = s && w_ref ? rr_creepctl_check(p) : RR_ERR_NULL;
 
     if (!w_ref)
@@ -314,11 +314,6 @@ int rr_creepctl_update(const rr_creepctl_params *p, rr_creepctl_state *s, double
     }
     xi = creepage(p, w_wheelset, w_roller);
     dxi = xi_ref - xi;
-    if (!isfinite(dxi) || !isfinite(s->K + p->alpha * fabs(dxi))
-        || !isfinite((s->K + p->alpha * fabs(dxi)) * p->r_r / p->r_w * w_roller)) {
-        *w_ref = NAN;               /* speeds or gains near the largest double */
-        return RR_ERR_RANGE;
-    }
     /* K = 1 + sense xi for the kinematic creepage xi: more creepage in the
      * sense moves K by +sense, less by -sense; eq. (15) then carries the
      * roller's sign, so running backward needs no extra factor */
@@ -328,10 +323,15 @@ int rr_creepctl_update(const rr_creepctl_params *p, rr_creepctl_state *s, double
         K = s->K - p->sense * p->beta;
     if (K < 0.0)
         K = 0.0;
+    w = K * p->r_r / p->r_w * w_roller;
+    if (!isfinite(w) || !isfinite(xi + dxi)) {
+        *w_ref = NAN;               /* speeds or gains near the largest double */
+        return RR_ERR_RANGE;
+    }
     s->K = K;
-    s->w_ref = K * p->r_r / p->r_w * w_roller;
+    s->w_ref = w;
     s->xi_est = xi;
     s->dxi = dxi;
-    *w_ref = s->w_ref;
+    *w_ref = w;
     return RR_OK;
 }

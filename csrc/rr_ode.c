@@ -62,7 +62,9 @@ int rr_lu_factor(int n, double *A, int *piv)
                 A[i * n + j] -= l * A[k * n + j];
         }
     }
-    return RR_OK;
+    /* entries near the largest double overflow the elimination; a pivot
+     * below 1/DBL_MAX passes the relative test but has no reciprocal */
+    return rr_all_finite(A, n * n) ? RR_OK : RR_ERR_RANGE;
 }
 
 /* The solve on factors known to come from rr_lu_factor (the step's own). */
@@ -116,7 +118,7 @@ static int settings_check(const rr_ode *s)
     if (s->method != RR_ODE_ROS2 && s->method != RR_ODE_TRBDF2
         && s->method != RR_ODE_LINEULER)
         return RR_ERR_METHOD;
-    if (s->nq < 0 || 2 * s->nq > s->n || (s->linear_tr != 0 && s->linear_tr != 1))
+    if (s->nq < 0 || s->nq > s->n / 2 || (s->linear_tr != 0 && s->linear_tr != 1))
         return RR_ERR_PARAM;
     if (s->method == RR_ODE_TRBDF2
         && (s->newton_iters < 0 || s->newton_iters > RR_ODE_MAX_NEWTON

@@ -206,7 +206,8 @@ int rr_ode_step(rr_ode *s, rr_ode_rhs f, rr_ode_jac jac, void *ctx, double t, do
  *   U, U's diagonal as its reciprocals; piv[k] is the row swapped with row k at elimination step k.
  *   rr_lu_factor status: 0 OK; RR_ERR_SINGULAR if a pivot is not larger than
  *   n DBL_EPSILON times the largest |A_ij| (or A is zero); RR_ERR_NONFINITE;
- *   RR_ERR_PARAM (n outside 1..RR_ODE_MAXN); RR_ERR_NULL.  rr_lu_solve does
+ *   RR_ERR_PARAM (n outside 1..RR_ODE_MAXN); RR_ERR_RANGE (the factors
+ *   overflow: entries near the largest double); RR_ERR_NULL.  rr_lu_solve does
  *   nothing for NULL arguments or pivots that rr_lu_factor cannot have made.
  *   rr_lu_solve overwrites b (n values) with the solution of A x = b.
  */

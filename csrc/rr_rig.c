@@ -725,6 +725,8 @@ long rr_rig_run(rr_rig *rig, long n, const double *roller_ref, const double *xi_
     if (worst < 0) {
         if (status)
             *status = worst;
+        if (n > 0 && rec)
+            record_nan(rec, worst);     /* row 0 says why nothing ran */
         return 0;
     }
     for (k = 0; k < n; k++) {

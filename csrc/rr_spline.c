@@ -112,5 +112,11 @@ int rr_spline_eval_at(const rr_spline *sp, double s, int *k, double *z, double *
             + ((1.0 - 3.0 * a * a) * sp->m[lo] + (3.0 * b * b - 1.0) * sp->m[hi]) * h / 6.0;
     if (d2)
         *d2 = a * sp->m[lo] + b * sp->m[hi];
+    if (!isfinite(0.0 * *z + (d1 ? 0.0 * *d1 : 0.0) + (d2 ? 0.0 * *d2 : 0.0))) {
+        *z = NAN;                   /* a spline not made by rr_spline_init, or values */
+        if (d1) *d1 = NAN;          /* near the largest double over close knots */
+        if (d2) *d2 = NAN;
+        return RR_ERR_RANGE;
+    }
     return RR_OK;
 }

@@ -43,12 +43,13 @@ static void check_pi(fz_in *in)
     n = fz_range(in, 1, MAX_UPDATES);
     for (k = 0; k < n; k++) {
         const double w_ref = fz_lin(in, -100.0, 100.0), w_m = fz_lin(in, -100.0, 100.0);
-        const int invalid_p = !isfinite(p.T) || !isfinite(p.Kp) || !isfinite(p.KI)
-                              || !isfinite(p.Tmax) || !(p.T > 0.0) || !(p.Kp >= 0.0)
-                              || !(p.KI >= 0.0) || !(p.Tmax > 0.0);
+        int invalid_p;
         double torque = 7.0;
         if (fz_choice(in, 8) == 0)
             p.Tmax = fz_log(in, 1.0, 1e3);      /* a new limit between samples */
+        invalid_p = !isfinite(p.T) || !isfinite(p.Kp) || !isfinite(p.KI)
+                    || !isfinite(p.Tmax) || !(p.T > 0.0) || !(p.Kp >= 0.0)
+                    || !(p.KI >= 0.0) || !(p.Tmax > 0.0);
         fz_note("; update(w_ref %.17g, w_m %.17g, Tmax %.17g)", w_ref, w_m, p.Tmax);
         before = s;
         st = rr_pi_update(&p, &s, w_ref, w_m, &torque);

@@ -10,7 +10,7 @@
 
 static int bad_modulus(double E, double nu)
 {
-    return !isfinite(E) || !isfinite(nu) || !(E > 0.0) || !(nu >= 0.0) || !(nu < 0.5);
+    return !isfinite(E) || !isfinite(nu) || !(E > 0.0) || !(nu >= 0.0) || !(nu <= 0.5);
 }
 
 /* Known: a subnormal modulus makes 1/E overflow: E* = 0, neither NaN nor usable. */

@@ -18,7 +18,7 @@ static int known_kalker(double a_over_b)
 static void check(const char *fn, double a_over_b, double nu, int st, const rr_kalker_coeffs *k)
 {
     const int invalid = !isfinite(a_over_b) || !isfinite(nu) || !(a_over_b > 0.0)
-                        || !(nu >= 0.0) || !(nu < 0.5);
+                        || !(nu >= 0.0) || !(nu <= 0.5);
     fz_status(fn, st);
     fz_error(fn, st, invalid, "an argument is invalid");
     if (st < 0) {
@@ -65,7 +65,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     memset(&k, 0x55, sizeof k);
     st = rr_kalker(a_over_b, nu, &k);
     check("rr_kalker", a_over_b, nu, st, &k);
-    if (isfinite(nu) && nu >= 0.0 && nu < 0.5)
+    if (isfinite(nu) && nu >= 0.0 && nu <= 0.5)
         check_seam(nu, fz_choice(&in, 2));
     return 0;
 }

@@ -392,7 +392,11 @@ static void one_op(fz_in *in, rr_rig *rig)
         decode_y(in, rig, y);
         st = rr_rig_set_state(rig, t, y);
         fz_status("rr_rig_set_state", st);
-        if (!isfinite(t) || !all_finite(y, RR_RIG_NSTATE)) {
+        if (init_failed) {
+            /* a rig that never started refuses whatever the state */
+            if (st >= 0 || memcmp(rig->y, y0, sizeof y0) != 0)
+                fz_fail("rr_rig_set_state: status %d on a rig whose init failed", st);
+        } else if (!isfinite(t) || !all_finite(y, RR_RIG_NSTATE)) {
             if (st != RR_ERR_NONFINITE)
                 fz_fail("rr_rig_set_state: status %d for a non-finite state", st);
             if (memcmp(rig->y, y0, sizeof y0) != 0 || memcmp(&rig->t, &t0, sizeof t0) != 0)

@@ -81,7 +81,7 @@ static int model_invalid(const rr_rig_contact_model *m)
     const rr_creep_opts *o = &m->creep;
     return !m->table || !m->table->data || !isfinite(m->R0) || !isfinite(m->estar)
         || !isfinite(m->G) || !isfinite(m->nu) || !isfinite(m->vmin) || !(m->R0 > 0.0)
-        || !(m->estar > 0.0) || !(m->G > 0.0) || !(m->nu >= 0.0 && m->nu < 0.5)
+        || !(m->estar > 0.0) || !(m->G > 0.0) || !(m->nu >= 0.0 && m->nu <= 0.5)
         || !(m->vmin > 0.0) || rr_friction_check(f) != RR_OK || rr_creep_opts_check(o) != RR_OK;
 }
 
