@@ -19,6 +19,9 @@ int rr_contact_check(const rr_contact_case *c)
         return RR_ERR_MATERIAL;
     if (c->speed < 0.0)
         return RR_ERR_SPEED;
+    /* subnormal sizes, loads or moduli carry too few digits for a force */
+    if (!isnormal(c->a) || !isnormal(c->b) || !isnormal(c->N) || !isnormal(c->G))
+        return RR_ERR_RANGE;
     return RR_OK;
 }
 

@@ -29,7 +29,8 @@ typedef struct {
 /*
  * rr_contact_check - 0 if the case is valid, else RR_ERR_NONFINITE,
  * RR_ERR_GEOMETRY (a, b <= 0), RR_ERR_LOAD (N <= 0), RR_ERR_MATERIAL
- * (G <= 0, nu outside [0, 0.5]), RR_ERR_SPEED (speed < 0) or RR_ERR_NULL.
+ * (G <= 0, nu outside [0, 0.5]), RR_ERR_SPEED (speed < 0), RR_ERR_RANGE (a,
+ * b, N or G subnormal: too few digits for a force) or RR_ERR_NULL.
  */
 int rr_contact_check(const rr_contact_case *c);
 

@@ -134,14 +134,14 @@ int rr_lag_update(const rr_lag_params *p, rr_lag_state *s, double u, double h, d
         *y = NAN;
         return st;
     }
-    if (!isfinite(u - s->y)) {
-        *y = NAN;
-        return RR_ERR_RANGE;
+    {
+        const double yn = p->tau == 0.0 ? u : s->y + -expm1(-h / p->tau) * (u - s->y);
+        if (!isfinite(yn)) {
+            *y = NAN;               /* values near the largest double */
+            return RR_ERR_RANGE;
+        }
+        s->y = yn;
     }
-    if (p->tau == 0.0)
-        s->y = u;
-    else
-        s->y += -expm1(-h / p->tau) * (u - s->y);
     *y = s->y;
     return RR_OK;
 }

@@ -190,6 +190,8 @@ int rr_rig_rhs(rr_rig *rig, double t, const double *y, double *dydt)
     if (!dydt)
         return RR_ERR_NULL;
     st = y ? usable(rig) : RR_ERR_NULL;
+    if (st == RR_OK && !rr_all_finite(y, NS))
+        st = RR_ERR_NONFINITE;      /* angles and torques too, not only what the contact reads */
     if (st == RR_OK)
         st = contact_eval(rig, y);
     p = rig ? rig->p : NULL;
@@ -516,6 +518,17 @@ int rr_rig_record(rr_rig *rig, double *rec)
     rec[RR_REC_SPIN] = y[RR_RIG_SPIN];
     rec[RR_REC_ROLLER_SPIN] = y[RR_RIG_ROLLER_SPIN];
     rec[RR_REC_STATUS] = status;
+    if (status >= 0) {
+        /* every field but the target (NaN without creepage control) is a
+         * number; parameters near the largest double can overflow one */
+        const double keep = rec[RR_REC_XI_REF];
+        rec[RR_REC_XI_REF] = 0.0;
+        if (!rr_all_finite(rec, RR_REC_COUNT)) {
+            record_nan(rec, RR_ERR_RANGE);
+            return RR_ERR_RANGE;
+        }
+        rec[RR_REC_XI_REF] = keep;
+    }
     return status;
 }
 
@@ -673,6 +686,7 @@ int rr_rig_advance(rr_rig *rig, double *rec)
 
     if (st < 0) {
         rr_rig_record(rig, rec);
+        rec[RR_REC_STATUS] = st;        /* the refusal's, not the state's */
         return st;
     }
     memcpy(ysave, rig->y, sizeof ysave);

@@ -28,7 +28,8 @@ static int contact_invalid(const rr_contact_case *c)
     return !isfinite(c->a) || !isfinite(c->b) || !isfinite(c->N) || !isfinite(c->G)
         || !isfinite(c->nu) || !isfinite(c->cx) || !isfinite(c->cy) || !isfinite(c->cphi)
         || !isfinite(c->speed) || !(c->a > 0.0) || !(c->b > 0.0) || !(c->N > 0.0)
-        || !(c->G > 0.0) || !(c->nu >= 0.0) || !(c->nu <= 0.5) || !(c->speed >= 0.0);
+        || !(c->G > 0.0) || !(c->nu >= 0.0) || !(c->nu <= 0.5) || !(c->speed >= 0.0)
+        || !isnormal(c->a) || !isnormal(c->b) || !isnormal(c->N) || !isnormal(c->G);
 }
 
 static int friction_invalid(const rr_friction *f)
