@@ -10,13 +10,13 @@ import math
 import os
 import re
 import subprocess
-import sys
 
 import numpy as np
 import pytest
 from hypothesis import settings, strategies as st
 
 import _hypothesis_profiles  # noqa: F401  (registers and loads the profiles)
+from _child import run_python
 
 # failing examples are printed with numpy's repr: the shortest digits that
 # give back the same double, so a printed case reproduces exactly
@@ -56,9 +56,9 @@ def run_isolated(code, timeout=30.0):
     crash).  Returns the CompletedProcess (stdout, stderr, returncode)
     otherwise."""
     try:
-        proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                              timeout=timeout, env={**os.environ, "PYTHONFAULTHANDLER": "1"},
-                              preexec_fn=_limit_memory)
+        proc = run_python(["-c", code], capture_output=True, text=True,
+                          timeout=timeout, env={**os.environ, "PYTHONFAULTHANDLER": "1"},
+                          preexec_fn=_limit_memory)
     except subprocess.TimeoutExpired:
         pytest.fail(f"did not return within {timeout:g} s (hang):\n{code}")
     if proc.returncode < 0:

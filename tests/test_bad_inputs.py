@@ -9,7 +9,6 @@ time, and none before a successful __init__.
 import os
 import signal
 import subprocess
-import sys
 import textwrap
 import threading
 
@@ -18,6 +17,8 @@ import pytest
 
 import rollerrig as rr
 from rollerrig import _core
+
+from _child import run_python, start_python
 
 RANGE = -12          # RR_ERR_RANGE: inputs too extreme for a representable result
 
@@ -179,9 +180,9 @@ def test_search_options_are_checked_before_the_core():
 
 def _run_child(code, timeout):
     """Run code in a fresh interpreter; (returncode, output)."""
-    proc = subprocess.run([sys.executable, "-c", textwrap.dedent(code)],
-                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                          timeout=timeout)
+    proc = run_python(["-c", textwrap.dedent(code)],
+                      stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                      timeout=timeout)
     return proc.returncode, proc.stdout
 
 
@@ -208,7 +209,7 @@ def test_core_search_with_int_max_samples_returns_at_once():
 def test_long_geometry_calls_notice_ctrl_c(call):
     """Each call below runs for minutes; Ctrl-C must stop it between chunks
     (the generous timeouts only catch a call that ignores the signal)."""
-    child = subprocess.Popen([sys.executable, "-c", textwrap.dedent(f"""
+    child = start_python(["-c", textwrap.dedent(f"""
         import sys, numpy as np, rollerrig as rr
         g = rr.RigGeometry.standard()
         print("ready", flush=True)

@@ -120,10 +120,10 @@ def test_a_long_run_is_refused_with_the_record_every_that_fits(tmp_path, capsys)
 def test_a_closed_stdout_is_not_a_traceback(tmp_path):
     """rollerrig simulate | head -1: the reader goes away."""
     import subprocess
-    import sys
-    proc = subprocess.Popen([sys.executable, "-m", "rollerrig", "simulate", "--quiet",
-                             "--duration", "0.4", "--out", str(tmp_path)],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    from _child import start_python
+    proc = start_python(["-m", "rollerrig", "simulate", "--quiet",
+                         "--duration", "0.4", "--out", str(tmp_path)],
+                        stdout=subprocess.PIPE, stderr=subprocess.PIPE)
     proc.stdout.close()                           # before the program prints
     err = proc.stderr.read().decode()
     proc.wait(timeout=120)

@@ -1,13 +1,13 @@
 """rollerrig.plot: every function draws the expected artists on a new figure
 or on the axes given, and rejects bad input with RollerRigError."""
 import os
-import subprocess
 import sys
 
 import numpy as np
 import pytest
 
 import rollerrig as rr
+from _child import run_python
 
 matplotlib = pytest.importorskip("matplotlib")
 matplotlib.use("Agg")
@@ -17,8 +17,6 @@ from matplotlib.collections import LineCollection, PolyCollection  # noqa: E402
 from matplotlib.quiver import Quiver  # noqa: E402
 
 from rollerrig import plot as rp  # noqa: E402
-
-from conftest import ROOT  # noqa: E402
 
 CASE = dict(a=6.304e-3, b=12.61e-3, N=106.7e3, G=8.2e10, nu=0.28, speed=10.0)
 MU = 0.33
@@ -49,8 +47,7 @@ def labels(ax):
 def test_matplotlib_is_imported_on_use_only():
     code = ("import sys, rollerrig, rollerrig.plot; "
             "print('matplotlib' in sys.modules)")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         cwd=os.path.join(ROOT, "tests"), check=True).stdout
+    out = run_python(["-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "False"
 
 

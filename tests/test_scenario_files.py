@@ -4,14 +4,14 @@ hang (rollerrig.rig.check_parameters, load_parameters, simulate(params=),
 rollerrig simulate --scenario)."""
 import os
 import re
-import subprocess
-import sys
 
 import pytest
 
 import rollerrig as rr
 from rollerrig import cli
 from rollerrig.rig import DEFAULTS_PATH, DOCUMENTATION, check_parameters, load_parameters
+
+from _child import run_python
 
 
 def scenario(tmp_path, text, name="my.toml"):
@@ -234,9 +234,9 @@ def test_a_fifo_is_refused_without_waiting_for_a_writer(tmp_path):
     os.mkfifo(fifo)
     # in a child process, so that a regression hangs only the child (killed
     # by the timeout) and not the test run
-    proc = subprocess.run([sys.executable, "-m", "rollerrig", "simulate", "--quiet",
-                           "--scenario", str(fifo), "--out", str(tmp_path / "o")],
-                          capture_output=True, text=True, timeout=120)
+    proc = run_python(["-m", "rollerrig", "simulate", "--quiet",
+                       "--scenario", str(fifo), "--out", str(tmp_path / "o")],
+                      capture_output=True, text=True, timeout=120)
     assert proc.returncode == 2
     assert f"--scenario {fifo}: is not a regular file (a FIFO" in proc.stderr
     assert "Traceback" not in proc.stderr
