@@ -1298,6 +1298,17 @@ static struct PyModuleDef core_module = {
     core_methods, NULL, NULL, NULL, NULL
 };
 
+/* a float constant of the module (PyModule_AddObject steals only on success) */
+static int add_double(PyObject *m, const char *name, double v)
+{
+    PyObject *o = PyFloat_FromDouble(v);
+    if (!o || PyModule_AddObject(m, name, o) < 0) {
+        Py_XDECREF(o);
+        return -1;
+    }
+    return 0;
+}
+
 PyMODINIT_FUNC PyInit__core(void)
 {
     PyObject *m;
@@ -1333,7 +1344,8 @@ PyMODINIT_FUNC PyInit__core(void)
         || PyModule_AddIntConstant(m, "ODE_TRBDF2", RR_ODE_TRBDF2) < 0
         || PyModule_AddIntConstant(m, "ODE_LINEULER", RR_ODE_LINEULER) < 0
         || PyModule_AddIntConstant(m, "STATUS_MIN", RR_STATUS_MIN) < 0
-        || PyModule_AddIntConstant(m, "STATUS_MAX", RR_STATUS_MAX) < 0) {
+        || PyModule_AddIntConstant(m, "STATUS_MAX", RR_STATUS_MAX) < 0
+        || add_double(m, "FRICTION_MAX", RR_FRICTION_MAX) < 0) {
         Py_DECREF(m);
         return NULL;
     }

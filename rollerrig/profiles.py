@@ -193,7 +193,10 @@ def _spline_slopes(y, z, bc):
 
 def _solve_pentadiagonal_spd(d0, d1, d2, b):
     """Solve M x = b for a symmetric positive definite M given by its main
-    diagonal d0, first and second super-diagonals d1, d2 (LDL^T, no pivoting)."""
+    diagonal d0, first and second super-diagonals d1, d2 (LDL^T, no pivoting).
+    Returns (x, None), or (None, i) if pivot i is below 1e-12 of its diagonal
+    entry: M's condition number then exceeds 1e12 and x keeps no digits
+    worth having (a pivot of 0 made x NaN)."""
     m = len(d0)
     D = np.empty(m)
     L1 = np.zeros(m)   # L[i, i-1]
@@ -206,13 +209,15 @@ def _solve_pentadiagonal_spd(d0, d1, d2, b):
             L1[i] = t / D[i - 1]
         D[i] = d0[i] - L1[i] ** 2 * (D[i - 1] if i >= 1 else 0.0) \
             - L2[i] ** 2 * (D[i - 2] if i >= 2 else 0.0)
+        if not D[i] > 1e-12 * d0[i]:
+            return None, i
     x = np.array(b, dtype=float)
     for i in range(1, m):
         x[i] -= L1[i] * x[i - 1] + (L2[i] * x[i - 2] if i >= 2 else 0.0)
     x /= D
     for i in range(m - 2, -1, -1):
         x[i] -= L1[i + 1] * x[i + 1] + (L2[i + 2] * x[i + 2] if i + 2 < m else 0.0)
-    return x
+    return x, None
 
 
 def _smoothing_weights(y):
@@ -229,7 +234,9 @@ def _smooth(y, z, lam):
     """Values at the nodes of the natural cubic smoothing spline minimising
     sum w_i (z_i - f_i)^2 + lam * integral f''^2 (Reinsch's algorithm, Green
     and Silverman 1994, sec. 2.3): (R + lam Q^T W^-1 Q) g = Q^T z and
-    f = z - lam W^-1 Q g, g the second derivatives at the interior nodes."""
+    f = z - lam W^-1 Q g, g the second derivatives at the interior nodes.
+    Returns (f, None), or (None, j) if the system is numerically singular
+    near node j (points far closer together than the smoothing length)."""
     w = _smoothing_weights(y)
     h = np.diff(y)
     # column j (interior node j = 1 .. n-2) of Q: rows j-1, j, j+1
@@ -241,12 +248,14 @@ def _smooth(y, z, lam):
     d1 = h[1:-1] / 6.0 + lam * (b[:-1] * a[1:] / w0[:-1] + c[:-1] * b[1:] / wp[:-1])
     d2 = lam * (c[:-2] * a[2:] / wp[:-2])
     dz = np.diff(z) / h
-    g = _solve_pentadiagonal_spd(d0, d1, d2, dz[1:] - dz[:-1])
+    g, bad = _solve_pentadiagonal_spd(d0, d1, d2, dz[1:] - dz[:-1])
+    if g is None:
+        return None, bad + 1
     qg = np.zeros(len(y))
     qg[:-2] += a * g
     qg[1:-1] += b * g
     qg[2:] += c * g
-    return z - lam * qg / w
+    return z - lam * qg / w, None
 
 
 # ---------------------------------------------------------------- input checks
@@ -457,7 +466,15 @@ class Profile:
                 f"(y[{i}] = {y[i]!r}, y[{i + 1}] = {y[i + 1]!r}); Profile.from_points "
                 f"reorders points and removes folds")
         _check_scale(func, y, z, (np.arange(len(y)), "index"))
-        zn = z if smoothing is None else _smooth(y, z, (smoothing / (2.0 * math.pi)) ** 4)
+        zn = z
+        if smoothing is not None:
+            zn, j = _smooth(y, z, (smoothing / (2.0 * math.pi)) ** 4)
+            if zn is None:
+                raise RollerRigError(
+                    f"{func}: smoothing = {smoothing!r} m is numerically singular on these "
+                    f"points near index {j} (y[{j}] = {y[j]!r}; point spacings from "
+                    f"{np.min(np.diff(y)):.3g} to {np.max(np.diff(y)):.3g} m): space the "
+                    f"points more evenly, remove near-duplicates, or smooth less")
         s = _spline_slopes(y, zn, bc)
         h = np.diff(y)
         d = np.diff(zn) / h
@@ -780,6 +797,9 @@ def _range_points(func, y_range, n):
             or not MIN_POINTS <= n <= MAX_POINTS:
         raise RollerRigError(f"{func}: n must be an integer from {MIN_POINTS} to "
                              f"{MAX_POINTS}, got {n!r}")
+    if not (y1 - y0) / (int(n) - 1) >= 1.01 * MIN_SPACING:     # 1 %: linspace rounds
+        raise RollerRigError(f"{func}: y_range {y_range!r} is too narrow for n = {n!r} points "
+                             f"at least {MIN_SPACING:g} m apart")
     return np.linspace(y0, y1, int(n))
 
 

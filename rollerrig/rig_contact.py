@@ -110,10 +110,14 @@ def elastic_constants(E, nu):
     return E / (2.0 * (1.0 - nu * nu)), E / (2.0 * (1.0 + nu))
 
 
+_RANGES = {"nu": "in [0, 0.5]", "mu": f"in (0, {_core.FRICTION_MAX:g}]"}
+
+
 def _model(func, table, mu, E, nu, vmin, friction):
     g = table.geometry
-    for name, v, ok in (("mu", mu, lambda x: x > 0), ("E", E, lambda x: x > 0),
-                        ("nu", nu, lambda x: 0 <= x <= 0.5), ("vmin", vmin, lambda x: x > 0)):
+    for name, v, ok in (("mu", mu, lambda x: 0 < x <= _core.FRICTION_MAX),
+                        ("E", E, lambda x: x > 0), ("nu", nu, lambda x: 0 <= x <= 0.5),
+                        ("vmin", vmin, lambda x: x > 0)):
         real = isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, bool)
         try:
             good = real and np.isfinite(float(v)) and ok(float(v))
@@ -121,7 +125,7 @@ def _model(func, table, mu, E, nu, vmin, friction):
             good = False
         if not good:
             raise RollerRigError(f"{func}: {name} must be a finite number "
-                                 f"{'in [0, 0.5]' if name == 'nu' else '> 0'}, got {v!r}")
+                                 f"{_RANGES.get(name, '> 0')}, got {v!r}")
     fA, fB = _friction(func, friction)
     estar, G = elastic_constants(E, nu)
     return (float(g.roller_radius), estar, G, float(nu), float(mu), fA, fB, float(vmin))
@@ -239,8 +243,11 @@ def linear_creepages(table, *, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spi
         cphi = -sigma * delta * (1.0 / r0 + 1.0 / R0)
         for name, c in (("cx", cx), ("cy", cy)):
             if not np.all(np.isfinite(c)):
-                raise RollerRigError(f"{func}: {name} overflows: rates "
-                                     f"{', '.join(n for n, v in full.items() if np.any(np.abs(v) > 1e30))} "
-                                     f"too extreme ({status_message(-12)})")
+                # a creepage is a rate over V: name the large rates and the divisor
+                big = [n for n, v in full.items() if n != "roller_spin" and np.any(np.abs(v) > 1e30)]
+                raise RollerRigError(f"{func}: {name} overflows: {', '.join(big) or 'the rates'} "
+                                     f"over roller_spin (|roller_spin| down to "
+                                     f"{float(np.min(np.abs(roller_spin))):g} rad/s): "
+                                     f"{status_message(-12)}")
         out.append(LinearCreepages(cx, cy, cphi))
     return tuple(out)

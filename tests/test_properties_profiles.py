@@ -79,6 +79,8 @@ smoothings = st.one_of(st.none(), log_uniform(1e-4, 0.1).strategy, wild)
                 np.array([0.0, 0.0, 0.001, 0.0, 0.0])), kind="rail", bc=None, smoothing=None)
 @example(nodes=(np.linspace(-0.02, 0.02, 9), np.zeros(9)), kind="rail", bc=None,
          smoothing=1e100)
+@example(nodes=(np.array([0.0, 0.0065638, 0.0065638 + 1e-12, 0.0075]), np.full(4, -0.05)),
+         kind="wheel", bc=None, smoothing=0.25)          # a singular smoothing system: NaN
 def test_profile_accepted_evaluates_finite(nodes, kind, bc, smoothing):
     y, z = nodes
     try:
@@ -177,6 +179,7 @@ def test_conical_profile(alpha, y_range, r0, n):
 @given(y_range=ranges, crown=st.one_of(st.none(), log_uniform(0.05, 1.0).strategy, wild),
        n=counts)
 @example(y_range=(-0.02, 0.02), crown=1e300, n=4)
+@example(y_range=(0.0, 5e-324), crown=None, n=4)      # named y[1], y[2]: not an argument
 def test_cylinder_profile(y_range, crown, n):
     try:
         p = rr.Profile.cylinder(y_range, crown_radius=crown, n=n)

@@ -213,6 +213,8 @@ LINEAR = {k: STATE[k] for k in LINEAR_ARGS[:-1]}
                                      yaw_rate=0.0, spin=50.0, roller_spin=50.0))
 @example(table="rig", args=dict(y=0.0, yaw=np.array([-0.02]), vx=-0.5, vy=1.7370097110199118e+308,
                                 yaw_rate=-2.0, spin=-300.0, roller_spin=-300.0))
+@example(table="rig", args=dict(y=0.0, yaw=-0.02, vx=-0.5, vy=-0.5, yaw_rate=-2.0, spin=-300.0,
+                                roller_spin=2.2250738585e-313))   # overflow over a tiny V: unnamed
 def test_linear_creepages_finite_or_named(table, args):
     """No status to report with: finite creepages, or RollerRigError naming
     an argument of linear_creepages (not of a function it calls)."""
