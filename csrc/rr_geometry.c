@@ -1,4 +1,5 @@
 /* rr_geometry.c - wheel-roller contact search, wheelset pose, contact tables. */
+#include <float.h>
 #include <math.h>
 #include "rr_common.h"
 #include "rr_geometry.h"
@@ -157,31 +158,51 @@ int rr_contact_search(const rr_wheel_roller *p, double y_ws, double z_ws, double
     if (second < INFINITY && fabs(ysecond - ybest) <= o->two_point_sep)
         second = INFINITY;
 
-    /* Newton on the gap's slope, kept inside the neighbouring samples */
+    /* Newton on the gap's slope, kept inside the neighbouring samples, a
+     * step taken only where the gap does not rise (to its rounding): a full
+     * step from a sample near one minimum could leap into the next basin.
+     * Where the gap is concave the step goes downhill: stopping there
+     * reported a point that is no minimum while the bodies overlapped
+     * beyond it (a coarse scan, the wheel's flange root on the gauge
+     * corner) */
     lo = sbest - (s1 - s0) / ns;
     hi = sbest + (s1 - s0) / ns;
     if (lo < s0) lo = s0;
     if (hi > s1) hi = s1;
     s = sbest;
-    for (it = 0; it < MAX_ITER; it++) {
-        double ds, sn_;
-        if (probe_at(p, y_ws, z_ws, c, sn, s, &q) != RR_OK)
-            break;
-        if (!(q.g2 > 0.0))
-            break;                   /* not convex here: keep the sample */
-        ds = q.g1 / q.g2;
-        sn_ = s - ds;
-        if (sn_ < lo) sn_ = lo;
-        if (sn_ > hi) sn_ = hi;
-        if (fabs(sn_ - s) < 1e-15 * (1.0 + fabs(s))) {
-            s = sn_;
-            break;
-        }
-        s = sn_;
-    }
     if (probe_at(p, y_ws, z_ws, c, sn, s, &q) != RR_OK) {
-        s = sbest;
-        probe_at(p, y_ws, z_ws, c, sn, s, &q);
+        point_nan(out);
+        return RR_ERR_GEOMETRY;     /* a sample probed before: not reached */
+    }
+    for (it = 0; it < MAX_ITER; it++) {
+        double ds, sn_, noise;
+        int half, taken = 0;
+        if (q.g2 > 0.0)
+            ds = q.g1 / q.g2;
+        else if (q.g1 != 0.0)        /* concave here: downhill, halving */
+            ds = q.g1 > 0.0 ? hi - lo : lo - hi;
+        else
+            break;
+        for (half = 0; half < 40 && !taken; half++, ds *= 0.5) {
+            probe qn = q;
+            sn_ = s - ds;
+            if (sn_ < lo) sn_ = lo;
+            if (sn_ > hi) sn_ = hi;
+            if (fabs(sn_ - s) < 1e-15 * (1.0 + fabs(s)))
+                break;               /* converged, or no step left */
+            /* the gap's rounding; a Newton step whose predicted fall is
+             * below it is the end game, taken on the slope alone */
+            noise = 8.0 * DBL_EPSILON * (fabs(q.Z) + fabs(q.zr));
+            if (probe_at(p, y_ws, z_ws, c, sn, sn_, &qn) == RR_OK
+                && (qn.gap <= q.gap + noise
+                    || (q.g2 > 0.0 && 0.5 * q.g1 * (s - sn_) <= 64.0 * noise))) {
+                s = sn_;
+                q = qn;
+                taken = 1;
+            }
+        }
+        if (!taken)
+            break;
     }
     out->y = q.Y;
     out->z = q.zr;

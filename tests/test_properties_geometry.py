@@ -136,13 +136,22 @@ def test_wheelset_contact_mirror_symmetric(args, nsamples):
     np.testing.assert_array_equal(m.left.two_point, c.right.two_point)
 
 
+#: the fewest samples that put two on S1002 within the search's two_point_sep
+#: (2 mm): a coarser scan can see two touching regions as one basin and settle
+#: in the shallower (wheelset_contact's docstring)
+FINE_ENOUGH = int(np.ceil((STANDARD.wheel.y_max - STANDARD.wheel.y_min) / 2e-3))
+
+
 @examples(0.2)
-@given(args=batches({"y_ws": shifts}, max_size=4, wild_share=0), nsamples=st.integers(3, 99))
+@given(args=batches({"y_ws": shifts}, max_size=4, wild_share=0),
+       nsamples=st.integers(FINE_ENOUGH, 3 * FINE_ENOUGH))
 @example(args={"y_ws": np.array([-0.0012187493573873852])}, nsamples=3)
+@example(args={"y_ws": np.array([-0.008999999821186055])}, nsamples=5)  # stopped where concave
 def test_wheelset_contact_coarse_search_success_is_the_contact(args, nsamples):
     """A coarse search (few samples) may miss a contact, but what it reports
     as found is the contact the fine search finds: the same points to
-    0.1 um (both refine the same minimum of the gap to its tolerance)."""
+    0.1 um (both refine the same minimum of the gap to its tolerance).  The
+    two examples are coarser still: cases that once failed."""
     y = np.atleast_1d(args["y_ws"])
     c = rr.wheelset_contact(STANDARD, y, nsamples=nsamples, errors="ignore")
     fine = rr.wheelset_contact(STANDARD, y, nsamples=400, errors="ignore")
