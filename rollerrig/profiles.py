@@ -797,9 +797,10 @@ def _range_points(func, y_range, n):
             or not MIN_POINTS <= n <= MAX_POINTS:
         raise RollerRigError(f"{func}: n must be an integer from {MIN_POINTS} to "
                              f"{MAX_POINTS}, got {n!r}")
-    if not (y1 - y0) / (int(n) - 1) >= 1.01 * MIN_SPACING:     # 1 %: linspace rounds
-        raise RollerRigError(f"{func}: y_range {y_range!r} is too narrow for n = {n!r} points "
-                             f"at least {MIN_SPACING:g} m apart")
+    # (at most MAX_POINTS over MIN_WIDTH: the points are far over MIN_SPACING apart)
+    if not y1 - y0 >= MIN_WIDTH:
+        raise RollerRigError(f"{func}: y_range {y_range!r} spans less than "
+                             f"{MIN_WIDTH * 1e3:g} mm: metres read as millimetres?")
     return np.linspace(y0, y1, int(n))
 
 

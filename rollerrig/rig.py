@@ -687,19 +687,53 @@ def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, c
                   else S["roller_speed_m_s"], unit="m/s")
     if start not in ("rolling", "rest"):
         raise RollerRigError(f"{func}: start must be 'rolling' or 'rest', got {start!r}")
-    table = _geometry(P)
-    cp = _c_params(P, dt, int(substeps), ode)
-    # eq. 15-16 with the rolling radii of the centred wheelset, as a rig is
-    # calibrated: the profiles' nominal radii would bias the creepage by
-    # (r - r0)/r0 + (R0 - R)/R0, about 0.2 % of creepage here
-    centre = table.lookup(0.0)
-    cp["r_w"], cp["r_r"] = float(centre.left.r[0]), float(centre.left.R[0])
+
+    def make(P, V):
+        V = P["scenario"]["roller_speed_m_s"] if V is None else V
+        table = _geometry(P)
+        cp = _c_params(P, dt, int(substeps), ode)
+        # eq. 15-16 with the rolling radii of the centred wheelset, as a rig is
+        # calibrated: the profiles' nominal radii would bias the creepage by
+        # (r - r0)/r0 + (R0 - R)/R0, about 0.2 % of creepage here
+        centre = table.lookup(0.0)
+        cp["r_w"], cp["r_r"] = float(centre.left.r[0]), float(centre.left.R[0])
+        return table, _core.Rig(table.data, table.y0, table.dy, cp, c_opts,
+                                V / cp["R0"] if start == "rolling" else 0.0)
     try:
-        rig = _core.Rig(table.data, table.y0, table.dy, cp, c_opts,
-                        V / cp["R0"] if start == "rolling" else 0.0)
-    except ValueError as e:
-        raise RollerRigError(f"{func}: {e}") from None
+        table, rig = make(P, None if roller_speed is None else V)
+    except (ValueError, RollerRigError) as e:
+        culprits = _culprits(P, V, roller_speed, make)
+        raise RollerRigError(f"{func}: {'the rig cannot start with ' if culprits else ''}"
+                             f"{', '.join(culprits)}{': ' if culprits else ''}{e}") from None
     return Rig(rig), table, dt, V, opts["method"]
+
+
+def _culprits(P, V, roller_speed, make):
+    """The changed values the rig cannot start with: each given parameter
+    that differs from its default, and a roller_speed argument, is put back
+    to its default alone; those whose default lets the rig start are named
+    (the core's status cannot say which of 44 numbers overflowed)."""
+    D = _defaults()
+    found = []
+
+    def starts(Q, W):
+        try:
+            make(Q, W)
+        except (ValueError, RollerRigError):
+            return False
+        return True
+    for section, values in P.items():
+        for key, v in values.items() if isinstance(values, dict) else ():
+            d = D.get(section, {}).get(key) if isinstance(D.get(section), dict) else None
+            if d is None or v == d:
+                continue
+            Q = {k: dict(s) if isinstance(s, dict) else s for k, s in P.items()}
+            Q[section][key] = d
+            if starts(Q, None if roller_speed is None else V):
+                found.append(f"params {section}.{key} = {v!r}")
+    if roller_speed is not None and starts(P, D["scenario"]["roller_speed_m_s"]):
+        found.append(f"roller_speed = {roller_speed!r}")
+    return found
 
 
 def build_rig(params=None, *, dt=None, method=None, substeps=None, ode=None, nx=None, ny=None,

@@ -180,6 +180,7 @@ def test_conical_profile(alpha, y_range, r0, n):
        n=counts)
 @example(y_range=(-0.02, 0.02), crown=1e300, n=4)
 @example(y_range=(0.0, 5e-324), crown=None, n=4)      # named y[1], y[2]: not an argument
+@example(y_range=(0.0, 1e-05), crown=None, n=4)        # named the profile's width: neither
 def test_cylinder_profile(y_range, crown, n):
     try:
         p = rr.Profile.cylinder(y_range, crown_radius=crown, n=n)

@@ -1,5 +1,6 @@
 """Parameter sweeps (rollerrig.sweep): grid order, backends, output, errors."""
 import _thread
+import signal
 import sys
 import time
 
@@ -307,7 +308,17 @@ def test_exception_in_a_chunk_names_its_cases():
         sweep_rig({"dt": [0.004, 0.5]}, duration=1.0, targets=[0.02], progress=False)
 
 
-def test_ctrl_c_cancels_pending_chunks():
+@pytest.fixture
+def python_sigint():
+    """Python's SIGINT handler for the test: interrupt_main does nothing while
+    SIGINT is ignored (a run started as a background job of a
+    non-interactive shell)."""
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, previous)
+
+
+def test_ctrl_c_cancels_pending_chunks(python_sigint):
     started = []
 
     def slow(x):
