@@ -110,6 +110,7 @@ def elastic_constants(E, nu):
     return E / (2.0 * (1.0 - nu * nu)), E / (2.0 * (1.0 + nu))
 
 
+_TINY = np.finfo(float).tiny      # a subnormal modulus has too few digits for a force
 _RANGES = {"nu": "in [0, 0.5]", "mu": f"in (0, {_core.FRICTION_MAX:g}]"}
 
 
@@ -128,6 +129,9 @@ def _model(func, table, mu, E, nu, vmin, friction):
                                  f"{_RANGES.get(name, '> 0')}, got {v!r}")
     fA, fB = _friction(func, friction)
     estar, G = elastic_constants(E, nu)
+    if not (estar >= _TINY and G >= _TINY):
+        raise RollerRigError(f"{func}: E = {E!r} Pa gives a contact modulus {estar:g} Pa and a "
+                             f"shear modulus {G:g} Pa, under the least normal double")
     return (float(g.roller_radius), estar, G, float(nu), float(mu), fA, fB, float(vmin))
 
 

@@ -174,6 +174,8 @@ def test_rig_contact_wrong_types_named(name, bad, table):
                        st.just(np.array([0.3, 0.4]))), table=st.sampled_from(sorted(TABLES)))
 @example(option="mu", value=np.array([0.3, 0.4]), table="standard")
 @example(option="mu", value="0.4", table="standard")
+@example(option="E", value=5e-324, table="rig")        # moduli underflow: the binding's ValueError
+@example(option="mu", value=1.0000000000000002e+100, table="rig")   # above FRICTION_MAX
 def test_rig_contact_model_options_taken_or_named(option, value, table):
     kw = dict(y=0.001, spin=50.0, roller_spin=50.0, N_left=1e3, N_right=1e3)
     try:
