@@ -422,8 +422,11 @@ def _fit(func, model, spec, cx, force, a, b, N, G, nu, speed, cy, cphi, fit, x0,
     start, fit, inner, lo, hi = _setup(func, spec, fit, x0, bounds, f_ref / settings["N"])
     # the start point through the library's own checks: a bad a, b, N, G, nu raises here,
     # naming the argument
-    _model(model, start, settings, c_all, v_all, settings["cy"], settings["cphi"],
-           errors="raise")
+    try:
+        _model(model, start, settings, c_all, v_all, settings["cy"], settings["cphi"],
+               errors="raise")
+    except RollerRigError as e:                 # the model's own message, under our name
+        _fail(func, f"the model at the start point: {e}")
 
     def residuals(theta):
         p = _natural(start, inner, theta)
@@ -442,8 +445,12 @@ def _fit(func, model, spec, cx, force, a, b, N, G, nu, speed, cy, cphi, fit, x0,
     # starts unless the first fits to 1e-4 of the peak
     sol = None
     for t0 in _starts(theta0, inner, lo, hi, x0):
-        s = least_squares(residuals, t0, bounds=(lo, hi), loss=loss, f_scale=f_scale,
-                          x_scale="jac", method="trf")
+        try:
+            s = least_squares(residuals, t0, bounds=(lo, hi), loss=loss, f_scale=f_scale,
+                              x_scale="jac", method="trf")
+        except ValueError as e:                 # scipy's SVD met an overflowed Jacobian
+            _fail(func, f"the least-squares solve broke down on these data ({e}): the data "
+                        f"(cx, force, N, speed) are too extreme for a creep curve")
         if sol is None or s.cost < sol.cost:
             sol = s
         if np.sqrt(np.mean(residuals(sol.x) ** 2)) <= 1e-4:

@@ -23,10 +23,11 @@ from _child import run_python
 np.set_printoptions(floatmode="unique")
 import rollerrig as rr
 
-def examples(factor):
+def examples(factor, **overrides):
     """Settings with `factor` times the profile's examples per test (deadline,
-    derandomize and the rest from the profile)."""
-    return settings(max_examples=max(1, int(round(factor * settings.default.max_examples))))
+    derandomize and the rest from the profile, unless overridden)."""
+    return settings(max_examples=max(1, int(round(factor * settings.default.max_examples))),
+                    **overrides)
 
 
 # ---------------------------------------------------------------- hang guards

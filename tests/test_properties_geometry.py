@@ -142,7 +142,7 @@ def test_wheelset_contact_mirror_symmetric(args, nsamples):
 FINE_ENOUGH = int(np.ceil((STANDARD.wheel.y_max - STANDARD.wheel.y_min) / 2e-3))
 
 
-@examples(0.2)
+@examples(3)
 @given(args=batches({"y_ws": shifts}, max_size=4, wild_share=0),
        nsamples=st.integers(FINE_ENOUGH, 3 * FINE_ENOUGH))
 @example(args={"y_ws": np.array([-0.0012187493573873852])}, nsamples=3)
