@@ -147,11 +147,12 @@ FINE_ENOUGH = int(np.ceil((STANDARD.wheel.y_max - STANDARD.wheel.y_min) / 2e-3))
        nsamples=st.integers(FINE_ENOUGH, 3 * FINE_ENOUGH))
 @example(args={"y_ws": np.array([-0.0012187493573873852])}, nsamples=3)
 @example(args={"y_ws": np.array([-0.008999999821186055])}, nsamples=5)  # stopped where concave
+@example(args={"y_ws": np.array([0.004875001005828442])}, nsamples=FINE_ENOUGH)  # two minima
 def test_wheelset_contact_coarse_search_success_is_the_contact(args, nsamples):
     """A coarse search (few samples) may miss a contact, but what it reports
     as found is the contact the fine search finds: the same points to
     0.1 um (both refine the same minimum of the gap to its tolerance).  The
-    two examples are coarser still: cases that once failed."""
+    examples are cases that once failed (two coarser still)."""
     y = np.atleast_1d(args["y_ws"])
     c = rr.wheelset_contact(STANDARD, y, nsamples=nsamples, errors="ignore")
     fine = rr.wheelset_contact(STANDARD, y, nsamples=400, errors="ignore")
