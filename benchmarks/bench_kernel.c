@@ -139,15 +139,9 @@ int main(int argc, char **argv)
             /* as py_hertz */
             for (i = 0; i < n; i++) {
                 rr_hertz_result h;
-                double estar = rr_estar(IN(in[3], i), IN(in[4], i), IN(in[5], i),
-                                        IN(in[6], i));
-                int s;
-                if (estar != estar) {
-                    h.a = h.b = h.p0 = h.delta = estar;
-                    s = RR_ERR_MATERIAL;
-                } else {
-                    s = rr_hertz(IN(in[0], i), IN(in[1], i), IN(in[2], i), estar, &h);
-                }
+                const int s = rr_hertz_bodies(IN(in[0], i), IN(in[1], i), IN(in[2], i),
+                                              IN(in[3], i), IN(in[4], i), IN(in[5], i),
+                                              IN(in[6], i), &h);
                 o1[i] = h.a;
                 o2[i] = h.b;
                 o3[i] = h.p0;

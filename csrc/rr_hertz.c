@@ -132,3 +132,16 @@ int rr_hertz(double A, double B, double N, double estar, rr_hertz_result *out)
     }
     return RR_OK;
 }
+
+int rr_hertz_bodies(double A, double B, double N, double E1, double nu1, double E2, double nu2,
+                    rr_hertz_result *out)
+{
+    const double estar = rr_estar(E1, nu1, E2, nu2);
+    if (!out)
+        return RR_ERR_NULL;
+    if (isnan(estar)) {
+        set_nan(out);
+        return RR_ERR_MATERIAL;
+    }
+    return rr_hertz(A, B, N, estar, out);
+}

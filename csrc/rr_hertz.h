@@ -42,4 +42,13 @@ double rr_estar(double E1, double nu1, double E2, double nu2);
  */
 int rr_hertz(double A, double B, double N, double estar, rr_hertz_result *out);
 
+/*
+ * rr_hertz_bodies - rr_hertz for two bodies given by their moduli: E1, nu1
+ *   and E2, nu2 as for rr_estar.  Bodies without a contact modulus are
+ *   RR_ERR_MATERIAL whatever A, B and N are (the materials are judged
+ *   first); otherwise as rr_hertz.  Outputs NaN on any error.
+ */
+int rr_hertz_bodies(double A, double B, double N, double E1, double nu1, double E2, double nu2,
+                    rr_hertz_result *out);
+
 #endif

@@ -177,14 +177,8 @@ static PyObject *py_hertz(PyObject *self, PyObject *args)
         Py_BEGIN_ALLOW_THREADS
         for (i = start; i < stop; i++) {
             rr_hertz_result h;
-            double estar = rr_estar(IN(in[3], i), IN(in[4], i), IN(in[5], i), IN(in[6], i));
-            int s;
-            if (estar != estar) {
-                h.a = h.b = h.p0 = h.delta = estar;
-                s = RR_ERR_MATERIAL;
-            } else {
-                s = rr_hertz(IN(in[0], i), IN(in[1], i), IN(in[2], i), estar, &h);
-            }
+            const int s = rr_hertz_bodies(IN(in[0], i), IN(in[1], i), IN(in[2], i), IN(in[3], i),
+                                          IN(in[4], i), IN(in[5], i), IN(in[6], i), &h);
             a[i] = h.a;
             b[i] = h.b;
             p0[i] = h.p0;

@@ -1,5 +1,5 @@
 /*
- * fuzz_hertz.c - the Hertzian contact: rr_estar, rr_hertz, and the elliptic
+ * fuzz_hertz.c - the Hertzian contact: rr_estar, rr_hertz, rr_hertz_bodies, and the elliptic
  * integrals it stands on (rr_carlson_rf_rd, rr_ellip_ke, rr_ellip_agm).
  *
  * Input: one byte choosing the function, then its arguments (plausible
@@ -17,6 +17,35 @@ static int bad_modulus(double E, double nu)
 static int known_estar(double E1, double E2)
 {
     return (E1 > 0.0 && E1 < DBL_MIN) || (E2 > 0.0 && E2 < DBL_MIN);
+}
+
+static int same(double x, double y)
+{
+    return x == y || (isnan(x) && isnan(y));
+}
+
+/* rr_hertz_bodies on the same moduli and the next bytes' A, B, N: a material
+ * error exactly where rr_estar has no modulus, else rr_hertz, bitwise. */
+static void check_bodies(fz_in *in, double E1, double nu1, double E2, double nu2, double e)
+{
+    const double A = fz_log(in, 0.1, 1e4), B = fz_log(in, 0.1, 1e4), N = fz_log(in, 1.0, 1e6);
+    rr_hertz_result h, g;
+    int st, want;
+    fz_note("rr_hertz_bodies(A = %.17g, B = %.17g, N = %.17g, ...)", A, B, N);
+    st = rr_hertz_bodies(A, B, N, E1, nu1, E2, nu2, &h);
+    fz_status("rr_hertz_bodies", st);
+    if (isnan(e)) {
+        if (st != RR_ERR_MATERIAL || !isnan(h.a) || !isnan(h.b) || !isnan(h.p0)
+            || !isnan(h.delta))
+            fz_fail("rr_hertz_bodies: status %d (outputs a = %g) where rr_estar is NaN: "
+                    "want RR_ERR_MATERIAL and NaN", st, h.a);
+        return;
+    }
+    want = rr_hertz(A, B, N, e, &g);
+    if (st != want || !same(h.a, g.a) || !same(h.b, g.b) || !same(h.p0, g.p0)
+        || !same(h.delta, g.delta))
+        fz_fail("rr_hertz_bodies: status %d, a = %.17g; rr_hertz on rr_estar: %d, a = %.17g",
+                st, h.a, want, g.a);
 }
 
 static void check_estar(fz_in *in)
@@ -37,6 +66,7 @@ static void check_estar(fz_in *in)
     if (!isnan(e) && !(isfinite(e) && e > 0.0))
         fz_fail("rr_estar(%.17g, %.17g, %.17g, %.17g) = %g: neither NaN nor a finite E* > 0",
                 E1, nu1, E2, nu2, e);
+    check_bodies(in, E1, nu1, E2, nu2, e);
 }
 
 /* Known: rr_hertz's 3N/(2 pi E* A_min), its cube root, p0 and the approach

@@ -325,6 +325,27 @@ static void test_extremes(void)
     CHECK_STATUS(rr_hertz(1.0, 1.0, 1.0, 1.0, NULL), RR_ERR_NULL, "hertz out NULL");
 }
 
+/* rr_hertz_bodies: the materials judged first, whatever else is wrong;
+ * with good materials, exactly rr_hertz on rr_estar's modulus. */
+static void test_bodies(void)
+{
+    rr_hertz_result r, s;
+    int st = rr_hertz_bodies(20.0, 5.0, 1e4, 210e9, 0.3, 70e9, 0.33, &r);
+    CHECK_STATUS(st, RR_OK, "bodies: steel on aluminium");
+    rr_hertz(20.0, 5.0, 1e4, rr_estar(210e9, 0.3, 70e9, 0.33), &s);
+    CHECK(r.a == s.a && r.b == s.b && r.p0 == s.p0 && r.delta == s.delta,
+          "bodies: bitwise rr_hertz on rr_estar");
+    CHECK_STATUS(rr_hertz_bodies(NAN, -1.0, 0.0, 210e9, 0.6, 210e9, 0.3, &r), RR_ERR_MATERIAL,
+                 "bodies: a bad material wins over NaN A, negative B and N = 0");
+    CHECK(all_nan(&r), "bodies: bad material, NaN outputs");
+    CHECK_STATUS(rr_hertz_bodies(1.0, 1.0, 1.0, NAN, 0.3, 210e9, 0.3, &r), RR_ERR_MATERIAL,
+                 "bodies: NaN modulus is a material error");
+    CHECK_STATUS(rr_hertz_bodies(NAN, 1.0, 1.0, 210e9, 0.3, 210e9, 0.3, &r), RR_ERR_NONFINITE,
+                 "bodies: good materials, then rr_hertz's own checks");
+    CHECK_STATUS(rr_hertz_bodies(1.0, 1.0, 1.0, 210e9, 0.3, 210e9, 0.3, NULL), RR_ERR_NULL,
+                 "bodies: out NULL");
+}
+
 int main(void)
 {
     test_estar();
@@ -334,5 +355,6 @@ int main(void)
     test_ellipticity();
     test_bad_input();
     test_extremes();
+    test_bodies();
     return rr_test_summary();
 }
