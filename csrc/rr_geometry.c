@@ -112,7 +112,10 @@ static double refine(const rr_wheel_roller *p, double y_ws, double z_ws, double 
     if (probe_at(p, y_ws, z_ws, c, sn, s, q) != RR_OK)
         return NAN;                  /* a sample probed before: not reached */
     for (it = 0; it < MAX_ITER; it++) {
-        double ds, sn_, noise;
+        /* the gap's rounding; a Newton step whose predicted fall is below
+         * it is the end game, taken on the slope alone */
+        const double noise = 8.0 * DBL_EPSILON * (fabs(q->Z) + fabs(q->zr));
+        double ds, sn_;
         int half, taken = 0;
         if (q->g2 > 0.0)
             ds = q->g1 / q->g2;
@@ -127,9 +130,6 @@ static double refine(const rr_wheel_roller *p, double y_ws, double z_ws, double 
             if (sn_ > hi) sn_ = hi;
             if (fabs(sn_ - s) < 1e-15 * (1.0 + fabs(s)))
                 break;               /* converged, or no step left */
-            /* the gap's rounding; a Newton step whose predicted fall is
-             * below it is the end game, taken on the slope alone */
-            noise = 8.0 * DBL_EPSILON * (fabs(q->Z) + fabs(q->zr));
             if (probe_at(p, y_ws, z_ws, c, sn, sn_, &qn) == RR_OK
                 && (qn.gap <= q->gap + noise
                     || (q->g2 > 0.0 && 0.5 * q->g1 * (s - sn_) <= 64.0 * noise))) {

@@ -55,6 +55,7 @@ scipy is needed here only: the extra "fit" (pip install 'rollerrig[fit]');
 without it the fits raise an ImportError naming the extra.
 """
 from dataclasses import dataclass, field
+import itertools
 import math
 
 import numpy as np
@@ -365,30 +366,29 @@ def _covariance(J, r):
 
 # ------------------------------------------------------------------ the fit
 
+#: the other starts of the friction law: mu0 as given or doubled, A and B as
+#: given, flat or steep (each change only where the fit may move it)
+_MU0_FACTORS = (1.0, 2.0)
+_LAWS = ({}, {"A": 0.2, "B": 3.0}, {"A": 0.8, "B": 0.2})
+
+
 def _starts(theta0, inner, lo, hi, x0):
     """theta0, then starts with the friction law's fitted parameters (those
     x0 does not give) moved: mu0 doubled; A, B to a flat and to a steep law."""
     yield theta0
-    given = set(x0 or {})
-    moves = [{}, {"mu0": 2.0}]
-    laws = [{}, {"A": 0.2, "B": 3.0}, {"A": 0.8, "B": 0.2}]
-    for m in moves:
-        for law in laws:
-            if not m and not law:
-                continue
-            t = np.array(theta0, dtype=float)
-            changed = False
-            for k, n in enumerate(inner):
-                if n in given:
-                    continue
-                if n in m:
-                    t[k] *= m[n]
-                    changed = True
-                elif n in law:
-                    t[k] = law[n]
-                    changed = True
-            if changed:
-                yield np.clip(t, lo, hi)
+    free = {n: k for k, n in enumerate(inner) if n not in (x0 or {})}
+    seen = [tuple(theta0)]
+    for factor, law in itertools.product(_MU0_FACTORS, _LAWS):
+        t = np.array(theta0, dtype=float)
+        if "mu0" in free:
+            t[free["mu0"]] *= factor
+        for n, v in law.items():
+            if n in free:
+                t[free[n]] = v
+        t = np.clip(t, lo, hi)
+        if tuple(t) not in seen:
+            seen.append(tuple(t))
+            yield t
 
 
 def _fit(func, model, spec, cx, force, a, b, N, G, nu, speed, cy, cphi, fit, x0, bounds,
@@ -453,7 +453,7 @@ def _fit(func, model, spec, cx, force, a, b, N, G, nu, speed, cy, cphi, fit, x0,
                         f"(cx, force, N, speed) are too extreme for a creep curve")
         if sol is None or s.cost < sol.cost:
             sol = s
-        if np.sqrt(np.mean(residuals(sol.x) ** 2)) <= 1e-4:
+        if np.sqrt(np.mean(sol.fun ** 2)) <= 1e-4:      # fun: the residuals at x
             break
     params = _natural(start, inner, sol.x)
 

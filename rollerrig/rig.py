@@ -699,40 +699,40 @@ def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, c
         cp["r_w"], cp["r_r"] = float(centre.left.r[0]), float(centre.left.R[0])
         return table, _core.Rig(table.data, table.y0, table.dy, cp, c_opts,
                                 V / cp["R0"] if start == "rolling" else 0.0)
+    given_V = None if roller_speed is None else V      # None: the scenario's own
     try:
-        table, rig = make(P, None if roller_speed is None else V)
+        table, rig = make(P, given_V)
     except (ValueError, RollerRigError) as e:
-        culprits = _culprits(P, V, roller_speed, make)
-        raise RollerRigError(f"{func}: {'the rig cannot start with ' if culprits else ''}"
-                             f"{', '.join(culprits)}{': ' if culprits else ''}{e}") from None
+        culprits = _culprits(P, given_V, make)
+        named = f"the rig cannot start with {', '.join(culprits)}: " if culprits else ""
+        raise RollerRigError(f"{func}: {named}{e}") from None
     return Rig(rig), table, dt, V, opts["method"]
 
 
-def _culprits(P, V, roller_speed, make):
-    """The changed values the rig cannot start with: each given parameter
-    that differs from its default, and a roller_speed argument, is put back
-    to its default alone; those whose default lets the rig start are named
-    (the core's status cannot say which of 44 numbers overflowed)."""
+def _culprits(P, given_V, make):
+    """The changed values the rig cannot start with: each parameter that
+    differs from its default, and a given roller speed, is put back to its
+    default alone; those whose default lets the rig start are named (the
+    core's status cannot say which of 44 numbers overflowed)."""
     D = _defaults()
-    found = []
 
-    def starts(Q, W):
+    def starts(Q, V):
         try:
-            make(Q, W)
+            make(Q, V)
         except (ValueError, RollerRigError):
             return False
         return True
+    found = []
     for section, values in P.items():
-        for key, v in values.items() if isinstance(values, dict) else ():
-            d = D.get(section, {}).get(key) if isinstance(D.get(section), dict) else None
-            if d is None or v == d:
+        for key, v in values.items():
+            if v == D[section][key]:
                 continue
-            Q = {k: dict(s) if isinstance(s, dict) else s for k, s in P.items()}
-            Q[section][key] = d
-            if starts(Q, None if roller_speed is None else V):
+            Q = {k: dict(s) for k, s in P.items()}
+            Q[section][key] = D[section][key]
+            if starts(Q, given_V):
                 found.append(f"params {section}.{key} = {v!r}")
-    if roller_speed is not None and starts(P, D["scenario"]["roller_speed_m_s"]):
-        found.append(f"roller_speed = {roller_speed!r}")
+    if given_V is not None and starts(P, D["scenario"]["roller_speed_m_s"]):
+        found.append(f"roller_speed = {given_V!r}")
     return found
 
 
