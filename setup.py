@@ -26,9 +26,9 @@ class BuildExt(build_ext):
 
 core = Extension(
     "rollerrig._core",
-    sources=sorted(glob("csrc/rr_*.c")) + ["rollerrig/_core.c"],
+    sources=sorted(glob("csrc/*/rr_*.c")) + ["rollerrig/_core.c"],
     # headers: trigger rebuilds when they change and get shipped in the sdist
-    depends=sorted(glob("csrc/rr_*.h")),
+    depends=sorted(glob("csrc/*/rr_*.h") + ["csrc/rollerrig.h"]),
     include_dirs=["csrc", numpy.get_include()],
     define_macros=[("NPY_NO_DEPRECATED_API", "NPY_1_7_API_VERSION")],
 )

@@ -110,7 +110,7 @@ def extension_flags():
 
 
 class CProgram:
-    """benchmarks/SOURCE compiled with csrc/rr_*.c into `tmpdir`, with
+    """benchmarks/SOURCE compiled with csrc/*/rr_*.c into `tmpdir`, with
     `plain` flags (`flags` None) or with other flags.  `error` is None if it
     built; `command_text` is the command as the reports quote it."""
 
@@ -118,7 +118,7 @@ class CProgram:
         self.tmpdir = tmpdir
         self.exe = os.path.join(tmpdir, name or os.path.splitext(source)[0])
         cc = os.environ.get("CC", "cc")
-        sources = sorted(glob.glob(os.path.join("csrc", "rr_*.c")))
+        sources = sorted(glob.glob(os.path.join("csrc", "*", "rr_*.c")))
         opts = list(plain) if flags is None else list(flags)
         self.command = [cc] + opts + ["-I", "csrc", os.path.join("benchmarks", source)] \
             + sources + ["-lm", "-o", self.exe]
@@ -131,7 +131,7 @@ class CProgram:
             self.error = str(exc)
         self.cc_version = compiler_version(cc)
         self.command_text = shlex.join([cc] + opts + ["-I", "csrc", f"benchmarks/{source}"]) \
-            + " csrc/rr_*.c -lm"
+            + " csrc/*/rr_*.c -lm"
 
     @property
     def ok(self):

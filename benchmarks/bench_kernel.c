@@ -3,7 +3,7 @@
  * very cases that benchmarks/bench_contact.py times through the binding.
  *
  * Built and run by bench_contact.py:
- *   cc -O3 -std=c99 -I csrc benchmarks/bench_kernel.c csrc/rr_*.c -lm -o bench_kernel
+ *   cc -O3 -std=c99 -I csrc benchmarks/bench_kernel.c csrc/*/rr_*.c -lm -o bench_kernel
  *   bench_kernel hertz FILE REPEATS
  *   bench_kernel creep FILE REPEATS METHOD NX NY GRID
  *

@@ -6,7 +6,7 @@
  *
  * Built and run by benchmarks/bench_rig_contact.py, or by hand:
  *   cc -O3 -std=c99 -Wall -Wextra -pedantic -Werror -I csrc benchmarks/bench_rig.c \
- *      csrc/rr_*.c -lm -o bench_rig
+ *      csrc/*/rr_*.c -lm -o bench_rig
  *   ./bench_rig [--states N] [--search-states M] [--solve-states K] [--repeats R]
  *               [--seed S] [--table-rows T] [--table-half-range H] [--only ITEM]
  *               [--dump FILE] [--check-states C]

@@ -3,7 +3,7 @@
 A wheel profile and a roller profile (rollerrig.profiles.Profile, y to the
 field side, z down) per side, the wheel's radius r0 and the roller's R0 at
 the profiles' origins (y = 0), and where those origins sit laterally: the
-C core (csrc/rr_geometry.h) finds on each side the point of least vertical
+C core (csrc/geometry/rr_geometry.h) finds on each side the point of least vertical
 gap between the surfaces, and the wheelset's height and roll that make both
 gaps zero, for any lateral shift of the wheelset.
 
@@ -15,7 +15,7 @@ gaps zero, for any lateral shift of the wheelset.
 
 The search is in the plane of the axle; rollerrig.rig_contact adds the
 wheelset's longitudinal shift and yaw, which move the contact points round
-the rollers (csrc/rr_rig_contact.h).
+the rollers (csrc/rig/rr_rig_contact.h).
 """
 import os
 import warnings
@@ -231,7 +231,7 @@ def wheelset_contact(geometry, y_ws, *, nsamples=400, two_point_tol=1e-4,
 
 @dataclass(frozen=True, eq=False)
 class ContactTable:
-    """The C core's contact table (csrc/rr_geometry.h): wheelset_contact at n
+    """The C core's contact table (csrc/geometry/rr_geometry.h): wheelset_contact at n
     equally spaced shifts y0 + i dy, interpolated linearly in O(1).  Build
     it with contact_table(); rig_contact() and the rig model read it."""
 

@@ -9,7 +9,7 @@
     res.summary()                                 # per target: creepage reached, settling, ...
     res.to_xarray(), res.to_dataframe()           # with xarray / pandas (extra "sweep")
 
-The model (csrc/rr_rig.h): a wheelset on two rigidly joined rollers, its
+The model (csrc/rig/rr_rig.h): a wheelset on two rigidly joined rollers, its
 axle boxes on springs and dampers, normal loads from its vertical and roll
 balance, contact by rr_rig_contact (FASTSIM with falling friction by
 default), roller and wheelset drives with PI speed controllers (eq. 10-11),
@@ -58,7 +58,7 @@ __all__ = ["default_parameters", "load_parameters", "check_parameters", "build_r
 
 DEFAULTS_PATH = os.path.join(os.path.dirname(__file__), "data", "rig_default.toml")
 
-#: the per-sample record of the C rig (csrc/rr_rig.h, enum rr_rig_record_index):
+#: the per-sample record of the C rig (csrc/rig/rr_rig.h, enum rr_rig_record_index):
 #: (name, unit, meaning); each sample is recorded at its end
 RECORD = (
     ("time", "s", "time at the end of the sample"),
@@ -581,7 +581,7 @@ def _check_dt(func, dt):
 
 
 class Rig:
-    """The rig stepped by hand (build_rig): the C rig of csrc/rr_rig.h, its
+    """The rig stepped by hand (build_rig): the C rig of csrc/rig/rr_rig.h, its
     arguments checked here (RollerRigError naming them).
 
     sample(roller_ref, xi_ref) -> status: the sampling instant (encoders,

@@ -3,7 +3,7 @@
 From the wheelset and roller state and the normal load of each wheel to the
 contact points and frames, the Hertz ellipses, the creepages and the creep
 forces, returned as forces and moments on the wheelset in the rig's
-coordinates (csrc/rr_rig_contact.h, the same C function the time step
+coordinates (csrc/rig/rr_rig_contact.h, the same C function the time step
 calls):
 
     g = rr.RigGeometry(...)
@@ -23,7 +23,7 @@ cx > 0, fx < 0.
 The wheelset's height and roll come from the contact table at its lateral
 shift y; its longitudinal shift x turns it about the roller axis (the seed
 paper's tilt beta), and its yaw moves each wheel's contact point round the
-roller (see csrc/rr_rig_contact.h for the first-order law and its
+roller (see csrc/rig/rr_rig_contact.h for the first-order law and its
 reference).  linear_creepages() gives the seed paper's linearised eq. 7-9
 for comparison.
 """

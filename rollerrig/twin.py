@@ -1,10 +1,10 @@
 """Pure-Python twin of parts of the rollerrig C core (slow, for tests).
 
 This module re-implements, with explicit loops and only the :mod:`math`
-module, Kalker's creep coefficients (``csrc/rr_kalker.c``), the friction
-laws (``csrc/rr_friction.c``), Kalker's linear theory and Polach's method
-(``csrc/rr_creep.c``) and FASTSIM with its blended and modified variants
-(``csrc/rr_fastsim.c``).  It is meant to be obviously correct rather than
+module, Kalker's creep coefficients (``csrc/contact/rr_kalker.c``), the friction
+laws (``csrc/contact/rr_friction.c``), Kalker's linear theory and Polach's method
+(``csrc/contact/rr_creep.c``) and FASTSIM with its blended and modified variants
+(``csrc/contact/rr_fastsim.c``).  It is meant to be obviously correct rather than
 fast: it follows the C formulas and their order of floating-point operations
 wherever that matters for rounding (pressure normalisation, the march along
 the rows, the Newton iteration of falling friction with its start, stopping

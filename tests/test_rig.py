@@ -1,4 +1,4 @@
-"""The rig in time (rollerrig.simulate, rollerrig._core.Rig, csrc/rr_rig.h)."""
+"""The rig in time (rollerrig.simulate, rollerrig._core.Rig, csrc/rig/rr_rig.h)."""
 import numpy as np
 import pytest
 

@@ -17,7 +17,7 @@
 
 #include <math.h>
 #include <stdio.h>
-#include "rr_common.h"
+#include "util/rr_common.h"
 
 static int rr_test_nchecks = 0;
 static int rr_test_nfailed = 0;

@@ -10,8 +10,8 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include "rr_common.h"
-#include "rr_control.h"
+#include "util/rr_common.h"
+#include "rig/rr_control.h"
 #include "rr_test.h"
 
 /* ---- PI ------------------------------------------------------------------------ */

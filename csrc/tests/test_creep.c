@@ -9,12 +9,12 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include "rr_common.h"
-#include "rr_kalker.h"
-#include "rr_friction.h"
-#include "rr_contact.h"
-#include "rr_creep.h"
-#include "rr_fastsim.h"
+#include "util/rr_common.h"
+#include "contact/rr_kalker.h"
+#include "contact/rr_friction.h"
+#include "contact/rr_contact.h"
+#include "contact/rr_creep.h"
+#include "contact/rr_fastsim.h"
 #include "rr_test.h"
 
 /* ---- helpers ------------------------------------------------------------- */

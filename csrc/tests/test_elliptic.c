@@ -8,8 +8,8 @@
  */
 #include <math.h>
 #include <stdio.h>
-#include "rr_common.h"
-#include "rr_elliptic.h"
+#include "util/rr_common.h"
+#include "util/rr_elliptic.h"
 #include "rr_test.h"
 
 /* Carlson 1995 promises relative error below ~1e-15 for R_F, R_D; the

@@ -15,9 +15,9 @@
  */
 #include <math.h>
 #include <stdio.h>
-#include "rr_common.h"
-#include "rr_elliptic.h"
-#include "rr_hertz.h"
+#include "util/rr_common.h"
+#include "util/rr_elliptic.h"
+#include "contact/rr_hertz.h"
 #include "rr_test.h"
 
 static int all_nan(const rr_hertz_result *r)

@@ -11,8 +11,8 @@
  */
 #include <math.h>
 #include <stdio.h>
-#include "rr_common.h"
-#include "rr_kalker.h"
+#include "util/rr_common.h"
+#include "contact/rr_kalker.h"
 #include "rr_test.h"
 
 /* [half][row: g = 0.1 (row + 1)][nu = 0, 0.25, 0.5][C11, C22, C23],

@@ -14,8 +14,8 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include "rr_common.h"
-#include "rr_ode.h"
+#include "util/rr_common.h"
+#include "util/rr_ode.h"
 #include "rr_test.h"
 
 static const char *const method_name[] = {"ROS2", "TRBDF2", "LINEULER"};

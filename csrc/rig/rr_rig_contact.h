@@ -43,10 +43,10 @@
 #ifndef RR_RIG_CONTACT_H
 #define RR_RIG_CONTACT_H
 
-#include "rr_creep.h"
-#include "rr_creepage.h"
-#include "rr_geometry.h"
-#include "rr_hertz.h"
+#include "contact/rr_creep.h"
+#include "geometry/rr_creepage.h"
+#include "geometry/rr_geometry.h"
+#include "contact/rr_hertz.h"
 
 typedef struct {
     const rr_contact_table *table;  /* geometry against lateral shift */

@@ -1,7 +1,7 @@
 /* rr_kalker.c - Kalker's creep coefficients (Kalker 1990, Table E.3). */
 #include <math.h>
-#include "rr_common.h"
-#include "rr_kalker.h"
+#include "util/rr_common.h"
+#include "contact/rr_kalker.h"
 
 /* Table E.3: [half][row g = 0.1 * (i + 1)][coefficient C11, C22, C23][nu = 0, 0.25, 0.5].
  * half 0: a <= b (g = a/b); half 1: a >= b (g = b/a).  Row 9 (g = 1) is shared. */

@@ -25,7 +25,7 @@
 #ifndef RR_GEOMETRY_H
 #define RR_GEOMETRY_H
 
-#include "rr_spline.h"
+#include "util/rr_spline.h"
 
 typedef struct {
     rr_spline wheel;   /* z_w(s): wheel lower surface [m] */

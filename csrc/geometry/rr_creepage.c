@@ -1,7 +1,7 @@
 /* rr_creepage.c - Kalker's kinematic creepages from two rigid-body motions. */
 #include <math.h>
-#include "rr_common.h"
-#include "rr_creepage.h"
+#include "util/rr_common.h"
+#include "geometry/rr_creepage.h"
 
 static double dot(const double a[3], const double b[3])
 {

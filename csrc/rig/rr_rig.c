@@ -1,8 +1,8 @@
 /* rr_rig.c - the roller rig in time: plant, normal loads, sampled control. */
 #include <math.h>
 #include <string.h>
-#include "rr_common.h"
-#include "rr_rig.h"
+#include "util/rr_common.h"
+#include "rig/rr_rig.h"
 
 #define NS RR_RIG_NSTATE
 

@@ -1,7 +1,7 @@
 /* rr_spline.c - natural cubic spline (de Boor 1978, ch. IV). */
 #include <math.h>
-#include "rr_common.h"
-#include "rr_spline.h"
+#include "util/rr_common.h"
+#include "util/rr_spline.h"
 
 int rr_spline_init(int n, const double *s, const double *z, double *m, double *work)
 {

@@ -1,5 +1,5 @@
 /* rr_status.c - the one place where status messages live. */
-#include "rr_common.h"
+#include "util/rr_common.h"
 
 static const char *const rr_messages[] = {
     /* -13 */ "a required pointer is NULL, or the object was never initialised",

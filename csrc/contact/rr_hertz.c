@@ -1,8 +1,8 @@
 /* rr_hertz.c - Hertzian contact ellipse (Johnson 1985, section 4.2). */
 #include <math.h>
-#include "rr_common.h"
-#include "rr_elliptic.h"
-#include "rr_hertz.h"
+#include "util/rr_common.h"
+#include "util/rr_elliptic.h"
+#include "contact/rr_hertz.h"
 
 double rr_estar(double E1, double nu1, double E2, double nu2)
 {

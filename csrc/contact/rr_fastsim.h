@@ -39,7 +39,7 @@
 #ifndef RR_FASTSIM_H
 #define RR_FASTSIM_H
 
-#include "rr_creep.h"
+#include "contact/rr_creep.h"
 
 /*
  * Optional traction field of one FASTSIM evaluation: every pointer either

@@ -1,9 +1,9 @@
 /* rr_fastsim.c - FASTSIM (Kalker 1982) with blended and modified variants. */
 #include <float.h>
 #include <math.h>
-#include "rr_common.h"
-#include "rr_kalker.h"
-#include "rr_fastsim.h"
+#include "util/rr_common.h"
+#include "contact/rr_kalker.h"
+#include "contact/rr_fastsim.h"
 
 typedef struct {
     double L1, L2, L3;   /* flexibilities [m/Pa] after blending and modification */
@@ -266,7 +266,7 @@ typedef struct {
 #define V v2
 #define V_LANES 2
 #define V_FN static
-#include "rr_fastsim_kernel.h"
+#include "contact/rr_fastsim_kernel.h"
 #undef V
 #undef V_LANES
 #undef V_FN
@@ -287,7 +287,7 @@ typedef __m256d v4;
 #define V v4
 #define V_LANES 4
 #define V_FN static __attribute__((target("avx")))
-#include "rr_fastsim_kernel.h"
+#include "contact/rr_fastsim_kernel.h"
 #undef V
 #undef V_LANES
 #undef V_FN

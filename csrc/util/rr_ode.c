@@ -2,8 +2,8 @@
 #include <float.h>
 #include <math.h>
 #include <stddef.h>
-#include "rr_common.h"
-#include "rr_ode.h"
+#include "util/rr_common.h"
+#include "util/rr_ode.h"
 
 #define RR_SQRT2 1.41421356237309504880
 

@@ -1,10 +1,10 @@
 /* rr_creep.c - method options, Kalker's linear theory, Polach's method,
  * and the dispatcher over all creep-force methods. */
 #include <math.h>
-#include "rr_common.h"
-#include "rr_kalker.h"
-#include "rr_creep.h"
-#include "rr_fastsim.h"
+#include "util/rr_common.h"
+#include "contact/rr_kalker.h"
+#include "contact/rr_creep.h"
+#include "contact/rr_fastsim.h"
 
 void rr_creep_opts_default(int method, rr_creep_opts *o)
 {

@@ -1,7 +1,7 @@
 /* rr_contact.c - validation shared by the creep-force methods. */
 #include <math.h>
-#include "rr_common.h"
-#include "rr_contact.h"
+#include "util/rr_common.h"
+#include "contact/rr_contact.h"
 
 int rr_contact_check(const rr_contact_case *c)
 {

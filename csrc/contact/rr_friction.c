@@ -1,7 +1,7 @@
 /* rr_friction.c - Coulomb and Polach (2005) falling friction. */
 #include <math.h>
-#include "rr_common.h"
-#include "rr_friction.h"
+#include "util/rr_common.h"
+#include "contact/rr_friction.h"
 
 int rr_friction_check(const rr_friction *f)
 {

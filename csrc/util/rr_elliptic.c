@@ -1,7 +1,7 @@
 /* rr_elliptic.c - Carlson's R_F and R_D by duplication (Carlson 1995). */
 #include <math.h>
-#include "rr_common.h"
-#include "rr_elliptic.h"
+#include "util/rr_common.h"
+#include "util/rr_elliptic.h"
 
 /* The duplication stops when every argument is within TOL of the mean;
  * the truncated series then errs by about TOL^6 (Carlson 1995, eq. 2.2). */

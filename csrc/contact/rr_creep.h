@@ -9,9 +9,9 @@
 #ifndef RR_CREEP_H
 #define RR_CREEP_H
 
-#include "rr_contact.h"
-#include "rr_friction.h"
-#include "rr_kalker.h"
+#include "contact/rr_contact.h"
+#include "contact/rr_friction.h"
+#include "contact/rr_kalker.h"
 
 enum rr_method {
     RR_METHOD_LINEAR = 0,           /* Kalker's linear theory: no saturation */

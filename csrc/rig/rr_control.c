@@ -1,7 +1,7 @@
 /* rr_control.c - PI with limiter, drive lag, encoder, creepage controller (paper section 5). */
 #include <math.h>
-#include "rr_common.h"
-#include "rr_control.h"
+#include "util/rr_common.h"
+#include "rig/rr_control.h"
 
 static double clip(double x, double lo, double hi)
 {

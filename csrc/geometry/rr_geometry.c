@@ -1,9 +1,9 @@
 /* rr_geometry.c - wheel-roller contact search, wheelset pose, contact tables. */
 #include <float.h>
 #include <math.h>
-#include "rr_common.h"
-#include "rr_geometry.h"
-#include "rr_hertz.h"
+#include "util/rr_common.h"
+#include "geometry/rr_geometry.h"
+#include "contact/rr_hertz.h"
 
 /* Newton iterations: the refinement and the pose converge in a few. */
 #define MAX_ITER 50

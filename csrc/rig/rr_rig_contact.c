@@ -1,7 +1,7 @@
 /* rr_rig_contact.c - contact evaluation of the wheelset on the rig's rollers. */
 #include <math.h>
-#include "rr_common.h"
-#include "rr_rig_contact.h"
+#include "util/rr_common.h"
+#include "rig/rr_rig_contact.h"
 
 int rr_rig_contact_check(const rr_rig_contact_model *m)
 {

@@ -54,9 +54,9 @@
 #ifndef RR_RIG_H
 #define RR_RIG_H
 
-#include "rr_control.h"
-#include "rr_ode.h"
-#include "rr_rig_contact.h"
+#include "rig/rr_control.h"
+#include "util/rr_ode.h"
+#include "rig/rr_rig_contact.h"
 
 /* Plant state, in this order. */
 enum rr_rig_state_index {
