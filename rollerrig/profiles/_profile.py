@@ -10,7 +10,7 @@ from .._errors import RollerRigError
 from ._checks import (MAX_COORD, MAX_POINTS, MIN_POINTS, MIN_SPACING, MIN_WIDTH,
                       UNITS, _as_float_array, _check_bc, _check_kind, _check_number,
                       _check_scale, _prepare)
-from ._spline import _smooth, _spline_slopes
+from ._spline import _smooth, _spline_fit
 
 class Profile:
     """An immutable wheel or rail/roller profile z(y) with its cubic spline.
@@ -35,8 +35,8 @@ class Profile:
     arrays of the same shape, and gives NaN outside [y_min, y_max].
     """
 
-    __slots__ = ("_y", "_z", "_z_input", "_s", "_c2", "_c3", "_kind", "_name", "_meta",
-                 "_bc", "_smoothing")
+    __slots__ = ("_y", "_z", "_z_input", "_s", "_c2", "_c3", "_d2", "_kind", "_name",
+                 "_meta", "_bc", "_smoothing")
 
     def __init__(self, y, z, *, kind, name="", meta=None, bc=None, smoothing=None):
         func = "Profile"
@@ -84,12 +84,8 @@ class Profile:
                     f"points near index {j} (y[{j}] = {y[j]!r}; point spacings from "
                     f"{np.min(np.diff(y)):.3g} to {np.max(np.diff(y)):.3g} m): space the "
                     f"points more evenly, remove near-duplicates, or smooth less")
-        s = _spline_slopes(y, zn, bc)
-        h = np.diff(y)
-        d = np.diff(zn) / h
-        c2 = (3.0 * d - 2.0 * s[:-1] - s[1:]) / h
-        c3 = (s[:-1] + s[1:] - 2.0 * d) / (h * h)
-        for arr in (y, zn, z, s, c2, c3):
+        s, c2, c3, d2 = _spline_fit(y, zn, bc)
+        for arr in (y, zn, z, s, c2, c3, d2):
             arr.flags.writeable = False
         meta = dict(meta or {})
         set_ = object.__setattr__
@@ -99,6 +95,7 @@ class Profile:
         set_(self, "_s", s)
         set_(self, "_c2", c2)
         set_(self, "_c3", c3)
+        set_(self, "_d2", d2)
         set_(self, "_kind", kind)
         set_(self, "_name", str(name))
         set_(self, "_meta", MappingProxyType(meta))

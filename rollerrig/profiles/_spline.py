@@ -3,27 +3,16 @@ slopes and the penalised least-squares smoothing spline (Reinsch 1967).
 The package docstring (rollerrig.profiles) explains both."""
 import numpy as np
 
-def _solve_tridiagonal(sub, diag, sup, rhs):
-    """Thomas algorithm; sub[0] and sup[-1] are unused.  Stable for the
-    diagonally dominant systems built below."""
-    n = len(diag)
-    c = np.empty(n)
-    d = np.empty(n)
-    c[0] = sup[0] / diag[0] if n > 1 else 0.0
-    d[0] = rhs[0] / diag[0]
-    for i in range(1, n):
-        m = diag[i] - sub[i] * c[i - 1]
-        c[i] = sup[i] / m if i < n - 1 else 0.0
-        d[i] = (rhs[i] - sub[i] * d[i - 1]) / m
-    x = np.empty(n)
-    x[-1] = d[-1]
-    for i in range(n - 2, -1, -1):
-        x[i] = d[i] - c[i] * x[i + 1]
-    return x
+from .. import _core
+from .._errors import RollerRigError, status_message
 
 
-def _spline_slopes(y, z, bc):
-    """Node slopes of the C2 cubic spline through (y, z).
+def _spline_fit(y, z, bc):
+    """The C2 cubic spline through (y, z), by the C core (rr_spline_fit,
+    csrc/util/rr_spline.h: a C program builds the same spline, bit for bit):
+    node slopes s [n], per-interval coefficients c2, c3 [n - 1] with
+    z = z_i + t (s_i + t (c2_i + t c3_i)), t = y - y_i, and the second
+    derivatives at the knots d2 [n] (the array the C geometry reads).
 
     Continuity of z'' at the interior nodes gives, for i = 1 .. n-2,
         h_i s_{i-1} + 2 (h_{i-1} + h_i) s_i + h_{i-1} s_{i+1}
@@ -34,43 +23,15 @@ def _spline_slopes(y, z, bc):
     and the last-but-one node) add rows that are not dominant; each is
     eliminated into its neighbour, which leaves a dominant system in
     s_1 .. s_{n-2}; s_0 and s_{n-1} follow from the end rows.
+    y, z: float64 arrays that passed Profile's checks; RollerRigError with
+    the core's status otherwise.
     """
-    n = len(y)
-    h = np.diff(y)
-    d = np.diff(z) / h
-    sub = np.zeros(n)
-    diag = np.zeros(n)
-    sup = np.zeros(n)
-    rhs = np.zeros(n)
-    sub[1:-1] = h[1:]
-    diag[1:-1] = 2.0 * (h[:-1] + h[1:])
-    sup[1:-1] = h[:-1]
-    rhs[1:-1] = 3.0 * (h[1:] * d[:-1] + h[:-1] * d[1:])
-    if bc == "natural":
-        diag[0], sup[0], rhs[0] = 2.0, 1.0, 3.0 * d[0]
-        sub[-1], diag[-1], rhs[-1] = 1.0, 2.0, 3.0 * d[-1]
-        return _solve_tridiagonal(sub, diag, sup, rhs)
-    # not-a-knot end rows
-    w0 = h[0] + h[1]
-    a0, c0 = h[1], w0
-    r0 = ((h[0] + 2.0 * w0) * h[1] * d[0] + h[0] ** 2 * d[1]) / w0
-    w1 = h[-1] + h[-2]
-    an, bn = h[-2], w1
-    rn = (h[-1] ** 2 * d[-2] + (2.0 * w1 + h[-1]) * h[-2] * d[-1]) / w1
-    # row 1 -= (sub_1 / a0) row 0 ; row n-2 -= (sup_{n-2} / an) row n-1
-    f = sub[1] / a0
-    diag[1] -= f * c0
-    rhs[1] -= f * r0
-    sub[1] = 0.0
-    g = sup[-2] / an
-    diag[-2] -= g * bn
-    rhs[-2] -= g * rn
-    sup[-2] = 0.0
-    s = np.empty(n)
-    s[1:-1] = _solve_tridiagonal(sub[1:-1], diag[1:-1], sup[1:-1], rhs[1:-1])
-    s[0] = (r0 - c0 * s[1]) / a0
-    s[-1] = (rn - bn * s[-2]) / an
-    return s
+    end = _core.SPLINE_NATURAL if bc == "natural" else _core.SPLINE_NOT_A_KNOT
+    status, s, c2, c3, d2 = _core.spline_fit(y, z, end)
+    if status < 0:
+        raise RollerRigError(f"Profile: the spline through these points: "
+                             f"{status_message(status)}")
+    return s, c2, c3, d2
 
 
 def _solve_pentadiagonal_spd(d0, d1, d2, b):
