@@ -6,7 +6,8 @@ from types import MappingProxyType
 
 import numpy as np
 
-from .._errors import RollerRigError
+from .. import _core
+from .._errors import RollerRigError, status_message
 from ._checks import (MAX_COORD, MAX_POINTS, MIN_POINTS, MIN_SPACING, MIN_WIDTH,
                       UNITS, _as_float_array, _check_bc, _check_kind, _check_number,
                       _check_scale, _prepare)
@@ -346,10 +347,11 @@ class Profile:
         if not abs(alpha) < math.pi / 2:
             raise RollerRigError(f"{func}: alpha must be within (-pi/2, pi/2) rad, "
                                  f"got {alpha!r}")
-        y = _range_points(func, y_range, n)
+        y0, y1, n = _range_points(func, y_range, n)
         r0 = _check_number(func, "r0", r0, positive=True, allow_none=True)
+        y, z = _analytic(func, 0, alpha, y0, y1, n)
         with _named(func):
-            return cls(y, -math.tan(alpha) * y, kind="wheel",
+            return cls(y, z, kind="wheel",
                        name=f"conical wheel, alpha = {alpha:.6g} rad",
                        meta={"alpha": alpha, "r0": r0})
 
@@ -359,16 +361,14 @@ class Profile:
         cylinder), or with a crown of the given radius [m] centred at y = 0:
         z = R - sqrt(R^2 - y^2), curvature +1/R."""
         func = "Profile.cylinder"
-        y = _range_points(func, y_range, n)
+        y0, y1, n = _range_points(func, y_range, n)
         R = _check_number(func, "crown_radius", crown_radius, positive=True, allow_none=True)
-        if R is None:
-            z = np.zeros_like(y)
-        else:
-            if np.max(np.abs(y)) >= R:
-                raise RollerRigError(f"{func}: y_range {y_range!r} reaches beyond the crown "
-                                     f"radius {R!r} m")
-            # R - sqrt(R^2 - y^2) without its cancellation, nor R^2 overflowing
-            z = y * y / (R + np.sqrt(R - y) * np.sqrt(R + y))
+        if R is not None and max(abs(y0), abs(y1)) >= R:
+            raise RollerRigError(f"{func}: y_range {y_range!r} reaches beyond the crown "
+                                 f"radius {R!r} m")
+        # z = y^2 / (R + sqrt(R - y) sqrt(R + y)): R - sqrt(R^2 - y^2) without its
+        # cancellation, nor R^2 overflowing; R = 0 in C is the cylinder, z = 0
+        y, z = _analytic(func, 1, 0.0 if R is None else R, y0, y1, n)
         name = "cylinder" if R is None else f"crowned roller, R = {R:.6g} m"
         with _named(func):
             return cls(y, z, kind="rail", name=name, meta={"crown_radius": R})
@@ -390,6 +390,7 @@ def _rebuild(y, z, kind, name, meta, bc, smoothing):
 
 
 def _range_points(func, y_range, n):
+    """y_range and n checked: (y_min, y_max, n)."""
     try:
         y0, y1 = (float(v) for v in y_range)
     except (TypeError, ValueError):
@@ -409,4 +410,16 @@ def _range_points(func, y_range, n):
     if not y1 - y0 >= MIN_WIDTH:
         raise RollerRigError(f"{func}: y_range {y_range!r} spans less than "
                              f"{MIN_WIDTH * 1e3:g} mm: metres read as millimetres?")
-    return np.linspace(y0, y1, int(n))
+    return y0, y1, int(n)
+
+
+def _analytic(func, kind, param, y0, y1, n):
+    """The points of an analytic profile from the C core (rr_profile_conical,
+    kind 0, param alpha; rr_profile_crowned, kind 1, param the crown radius
+    or 0), so that a C program has the same points: numpy.linspace(y0, y1,
+    n) and z.  The arguments are checked already: an error is a bug."""
+    status, y, z = _core.analytic_profile(kind, param, y0, y1, n)
+    if status < 0:
+        raise RollerRigError(f"{func}: {status_message(status)} (y_range ({y0!r}, {y1!r}), "
+                             f"n = {n!r}, parameter {param!r})")
+    return y, z
