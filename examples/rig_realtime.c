@@ -18,9 +18,9 @@
  * FASTSIM 20 x 20 with falling friction at the rigid slip speed, TR-BDF2):
  * the contact table built by rr_rig_table_build (rr.simulate()'s, bit for
  * bit), the rest set in rig_defaults() below.  As a real-time task it
- * locks its memory (mlockall), asks for the SCHED_FIFO policy and, on Linux, stays on the
- * last processor; where that is not allowed it says so and runs as an
- * ordinary process.
+ * locks its memory (mlockall), asks for the SCHED_FIFO policy and, on
+ * Linux, stays on the last processor; where that is not allowed it says so
+ * and runs as an ordinary process.
  */
 #define _GNU_SOURCE       /* sched_setaffinity (Linux); the rest is POSIX */
 #include <math.h>
