@@ -720,7 +720,7 @@ def fit(result, cx, force, ax=None, *, mu=None, N=None, residuals=False, label=N
     axes, and two axes are returned).  Returns the axes: per curve one data
     line and one model line."""
     func = "fit"
-    from .fit import FitResult
+    from .fit import PARAMETER_UNITS, FitResult
     if not isinstance(result, FitResult):
         raise RollerRigError(f"{func}: result must be a FitResult from fit_polach or "
                              f"fit_modified_fastsim, got {type(result).__name__}")
@@ -745,7 +745,8 @@ def fit(result, cx, force, ax=None, *, mu=None, N=None, residuals=False, label=N
         fig, main, made = _one_axes(func, ax, (6.4, 4.2))
     xs = _xscale(allc, xscale)
     p = result.params
-    shown = ", ".join(f"{k} {p[k]:.3g}" for k in result.fitted)
+    shown = ", ".join(f"{k} {p[k]:.3g}" + ("" if PARAMETER_UNITS[k] == "-" else
+                                          f" {PARAMETER_UNITS[k]}") for k in result.fitted)
     for k, (c, f, v) in enumerate(zip(cxs, fs, speeds)):
         colour = f"C{k % 10}"
         at = f", {v:g} m/s" if len(speeds) > 1 else ""

@@ -293,6 +293,10 @@ def test_fit_plot(polach_fit):
     ax = rp.fit(res, s2.cx, s2.fx, mu=MU)
     assert isinstance(ax, Axes) and len(ax.get_lines()) == 2
     assert labels(ax)[0] == "data" and labels(ax)[1].startswith("polach fit: mu0")
+    # the friction law's B carries its unit, s/m (A, mu0, kA, kS are dimensionless)
+    assert {"A", "B"} <= set(res.fitted)
+    assert f"B {res.params['B']:.3g} s/m" in labels(ax)[1]
+    assert f"A {res.params['A']:.3g}," in labels(ax)[1] + ","
     assert ax.get_ylabel() == "-fx / (mu N)"
     np.testing.assert_allclose(ax.get_lines()[0].get_ydata(), -s2.fx / (MU * CASE["N"]))
     line = ax.get_lines()[1]
