@@ -234,6 +234,28 @@ fail:
     return NULL;
 }
 
+/* hertz1(A, B, N, E1, nu1, E2, nu2) -> (a, b, p0, delta, status): one case
+ * from Python numbers, the scalar path. */
+static PyObject *py_hertz1(PyObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    double v[7];
+    rr_hertz_result h;
+    int k, st;
+    (void)self;
+    if (nargs != 7) {
+        PyErr_SetString(PyExc_TypeError, "hertz1: expected 7 numbers");
+        return NULL;
+    }
+    for (k = 0; k < 7; k++) {
+        v[k] = PyFloat_CheckExact(args[k]) ? PyFloat_AS_DOUBLE(args[k])
+                                           : PyFloat_AsDouble(args[k]);
+        if (v[k] == -1.0 && PyErr_Occurred())
+            return NULL;
+    }
+    st = rr_hertz_bodies(v[0], v[1], v[2], v[3], v[4], v[5], v[6], &h);
+    return Py_BuildValue("(ddddi)", h.a, h.b, h.p0, h.delta, st);
+}
+
 /* --------------------------------------------------------------- kalker */
 
 typedef struct {
@@ -1492,6 +1514,8 @@ static PyObject *py_status_message(PyObject *self, PyObject *arg)
 static PyMethodDef core_methods[] = {
     {"hertz", py_hertz, METH_VARARGS,
      "hertz(A, B, N, E1, nu1, E2, nu2) -> (a, b, p0, delta, status)"},
+    {"hertz1", (PyCFunction)(void (*)(void))py_hertz1, METH_FASTCALL,
+     "hertz1(A, B, N, E1, nu1, E2, nu2) -> (a, b, p0, delta, status)"},
     {"kalker", py_kalker, METH_VARARGS,
      "kalker(a_over_b, nu) -> (c11, c22, c23, status)"},
     {"creep_forces", (PyCFunction)(void (*)(void))py_creep_forces, METH_VARARGS | METH_KEYWORDS,
