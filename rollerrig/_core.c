@@ -3,8 +3,9 @@
  *
  * Thin by design: no physics here.  Every batch call takes 1-D float64
  * arrays, each of length n or 1 (a length-1 array is broadcast; any stride
- * is accepted), allocates the outputs, releases the GIL around chunks of
- * the C loop, checks for Ctrl-C between chunks, and returns the outputs
+ * is accepted), allocates the outputs, runs its C kernel through the one
+ * batch loop (run_batch: the GIL released around chunks of cases, Ctrl-C
+ * checked between chunks), and returns the outputs
  * with an int8 status array (0 OK, > 0 warning, < 0 error with NaN
  * results).  Broadcasting of general shapes, argument names in messages
  * and the conversion of statuses into exceptions live in rollerrig/.
@@ -128,6 +129,32 @@ static void release(PyObject **out, int count)
         Py_XDECREF(out[k]);
 }
 
+/* A batch kernel: computes cases [start, stop) of its context, without the
+ * GIL (it may touch no Python object); a nonzero return stops the batch
+ * there (a table build's first error). */
+typedef int (*batch_kernel)(void *ctx, npy_intp start, npy_intp stop);
+
+/* The one batch loop of the binding: kernel over cases [0, n) in chunks of
+ * about CHUNK_WORK units of work (cost units a case), the GIL released
+ * around each chunk, Ctrl-C checked between chunks.  0, or -1 with the
+ * exception of the signal handler set. */
+static int run_batch(batch_kernel kernel, void *ctx, npy_intp n, double cost)
+{
+    npy_intp start, chunk = cost >= 1.0 ? (npy_intp)(CHUNK_WORK / cost) : CHUNK_WORK;
+    int stop = 0;
+    if (chunk < 1)
+        chunk = 1;
+    for (start = 0; start < n && !stop; start += chunk) {
+        const npy_intp end = n - start > chunk ? start + chunk : n;
+        Py_BEGIN_ALLOW_THREADS
+        stop = kernel(ctx, start, end);
+        Py_END_ALLOW_THREADS
+        if (PyErr_CheckSignals() < 0)
+            return -1;
+    }
+    return 0;
+}
+
 /* A Python integer as a C int: 0, or -1 with a ValueError naming func and
  * name where it is not an integer or lies outside [lo, hi] (a value beyond
  * the C int range is never wrapped or clamped into it). */
@@ -157,38 +184,49 @@ static int int_arg(PyObject *v, const char *func, const char *name, long lo, lon
 
 /* ---------------------------------------------------------------- hertz */
 
+typedef struct {
+    input in[7];
+    double *a, *b, *p0, *delta;
+    npy_int8 *st;
+} hertz_batch;
+
+static int hertz_kernel(void *ctx, npy_intp start, npy_intp stop)
+{
+    hertz_batch *k = ctx;
+    npy_intp i;
+    for (i = start; i < stop; i++) {
+        rr_hertz_result h;
+        k->st[i] = (npy_int8)rr_hertz_bodies(IN(k->in[0], i), IN(k->in[1], i), IN(k->in[2], i),
+                                             IN(k->in[3], i), IN(k->in[4], i), IN(k->in[5], i),
+                                             IN(k->in[6], i), &h);
+        k->a[i] = h.a;
+        k->b[i] = h.b;
+        k->p0[i] = h.p0;
+        k->delta[i] = h.delta;
+    }
+    return 0;
+}
+
 static PyObject *py_hertz(PyObject *self, PyObject *args)
 {
     static const char *const names[] = {"A", "B", "N", "E1", "nu1", "E2", "nu2"};
     PyObject *objs[7], *out[5] = {NULL, NULL, NULL, NULL, NULL}, *res;
-    input in[7];
-    npy_intp n, start, i;
+    hertz_batch k;
+    npy_intp n;
     (void)self;
 
     if (!PyArg_ParseTuple(args, "OOOOOOO:hertz", &objs[0], &objs[1], &objs[2], &objs[3],
                           &objs[4], &objs[5], &objs[6]))
         return NULL;
-    if (parse_inputs("hertz", objs, names, 7, &n, in) < 0 || new_outputs(n, 4, out) < 0)
+    if (parse_inputs("hertz", objs, names, 7, &n, k.in) < 0 || new_outputs(n, 4, out) < 0)
         goto fail;
-    for (start = 0; start < n; start += CHUNK_WORK) {
-        npy_intp stop = start + CHUNK_WORK < n ? start + CHUNK_WORK : n;
-        double *a = OUT(out[0]), *b = OUT(out[1]), *p0 = OUT(out[2]), *delta = OUT(out[3]);
-        npy_int8 *st = OUT8(out[4]);
-        Py_BEGIN_ALLOW_THREADS
-        for (i = start; i < stop; i++) {
-            rr_hertz_result h;
-            const int s = rr_hertz_bodies(IN(in[0], i), IN(in[1], i), IN(in[2], i), IN(in[3], i),
-                                          IN(in[4], i), IN(in[5], i), IN(in[6], i), &h);
-            a[i] = h.a;
-            b[i] = h.b;
-            p0[i] = h.p0;
-            delta[i] = h.delta;
-            st[i] = (npy_int8)s;
-        }
-        Py_END_ALLOW_THREADS
-        if (PyErr_CheckSignals() < 0)
-            goto fail;
-    }
+    k.a = OUT(out[0]);
+    k.b = OUT(out[1]);
+    k.p0 = OUT(out[2]);
+    k.delta = OUT(out[3]);
+    k.st = OUT8(out[4]);
+    if (run_batch(hertz_kernel, &k, n, 1.0) < 0)
+        goto fail;
     if ((res = outputs_tuple(out, 5)) != NULL)
         return res;
 fail:
@@ -196,37 +234,69 @@ fail:
     return NULL;
 }
 
+/* hertz1(A, B, N, E1, nu1, E2, nu2) -> (a, b, p0, delta, status): one case
+ * from Python numbers, the scalar path. */
+static PyObject *py_hertz1(PyObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    double v[7];
+    rr_hertz_result h;
+    int k, st;
+    (void)self;
+    if (nargs != 7) {
+        PyErr_SetString(PyExc_TypeError, "hertz1: expected 7 numbers");
+        return NULL;
+    }
+    for (k = 0; k < 7; k++) {
+        v[k] = PyFloat_CheckExact(args[k]) ? PyFloat_AS_DOUBLE(args[k])
+                                           : PyFloat_AsDouble(args[k]);
+        if (v[k] == -1.0 && PyErr_Occurred())
+            return NULL;
+    }
+    st = rr_hertz_bodies(v[0], v[1], v[2], v[3], v[4], v[5], v[6], &h);
+    return Py_BuildValue("(ddddi)", h.a, h.b, h.p0, h.delta, st);
+}
+
 /* --------------------------------------------------------------- kalker */
+
+typedef struct {
+    input in[2];
+    double *c11, *c22, *c23;
+    npy_int8 *st;
+} kalker_batch;
+
+static int kalker_kernel(void *ctx, npy_intp start, npy_intp stop)
+{
+    kalker_batch *b = ctx;
+    npy_intp i;
+    for (i = start; i < stop; i++) {
+        rr_kalker_coeffs k;
+        b->st[i] = (npy_int8)rr_kalker(IN(b->in[0], i), IN(b->in[1], i), &k);
+        b->c11[i] = k.c11;
+        b->c22[i] = k.c22;
+        b->c23[i] = k.c23;
+    }
+    return 0;
+}
 
 static PyObject *py_kalker(PyObject *self, PyObject *args)
 {
     static const char *const names[] = {"a_over_b", "nu"};
     PyObject *objs[2], *out[4] = {NULL, NULL, NULL, NULL}, *res;
-    input in[2];
-    npy_intp n, start, i;
+    kalker_batch b;
+    npy_intp n;
     (void)self;
 
     if (!PyArg_ParseTuple(args, "OO:kalker_coefficients", &objs[0], &objs[1]))
         return NULL;
-    if (parse_inputs("kalker_coefficients", objs, names, 2, &n, in) < 0
+    if (parse_inputs("kalker_coefficients", objs, names, 2, &n, b.in) < 0
         || new_outputs(n, 3, out) < 0)
         goto fail;
-    for (start = 0; start < n; start += CHUNK_WORK) {
-        npy_intp stop = start + CHUNK_WORK < n ? start + CHUNK_WORK : n;
-        double *c11 = OUT(out[0]), *c22 = OUT(out[1]), *c23 = OUT(out[2]);
-        npy_int8 *st = OUT8(out[3]);
-        Py_BEGIN_ALLOW_THREADS
-        for (i = start; i < stop; i++) {
-            rr_kalker_coeffs k;
-            st[i] = (npy_int8)rr_kalker(IN(in[0], i), IN(in[1], i), &k);
-            c11[i] = k.c11;
-            c22[i] = k.c22;
-            c23[i] = k.c23;
-        }
-        Py_END_ALLOW_THREADS
-        if (PyErr_CheckSignals() < 0)
-            goto fail;
-    }
+    b.c11 = OUT(out[0]);
+    b.c22 = OUT(out[1]);
+    b.c23 = OUT(out[2]);
+    b.st = OUT8(out[3]);
+    if (run_batch(kalker_kernel, &b, n, 1.0) < 0)
+        goto fail;
     if ((res = outputs_tuple(out, 4)) != NULL)
         return res;
 fail:
@@ -300,12 +370,43 @@ static int parse_opts(PyObject *kwargs, const char *func, rr_creep_opts *o)
     return 0;
 }
 
+/* Work units of one case of a method, for the batch loop's chunks. */
+static double creep_cost(const rr_creep_opts *o)
+{
+    return o->method == RR_METHOD_LINEAR || o->method == RR_METHOD_POLACH
+               ? 1.0
+               : (double)o->nx * o->ny;
+}
+
+typedef struct {
+    input in[NCASE];
+    rr_creep_opts o;
+    double *fx, *fy, *mz;
+    npy_int8 *st;
+} creep_batch;
+
+static int creep_kernel(void *ctx, npy_intp start, npy_intp stop)
+{
+    creep_batch *b = ctx;
+    npy_intp i;
+    for (i = start; i < stop; i++) {
+        rr_contact_case c;
+        rr_friction fr;
+        rr_forces f;
+        load_case(b->in, i, &c, &fr);
+        b->st[i] = (npy_int8)rr_creep_forces(&c, &fr, &b->o, &f);
+        b->fx[i] = f.fx;
+        b->fy[i] = f.fy;
+        b->mz[i] = f.mz;
+    }
+    return 0;
+}
+
 static PyObject *py_creep_forces(PyObject *self, PyObject *args, PyObject *kwargs)
 {
     PyObject *objs[NCASE], *out[4] = {NULL, NULL, NULL, NULL}, *res;
-    input in[NCASE];
-    rr_creep_opts o;
-    npy_intp n, start, i, chunk;
+    creep_batch b;
+    npy_intp n;
     int k;
     (void)self;
 
@@ -316,38 +417,110 @@ static PyObject *py_creep_forces(PyObject *self, PyObject *args, PyObject *kwarg
     }
     for (k = 0; k < NCASE; k++)
         objs[k] = PyTuple_GET_ITEM(args, k);
-    if (parse_opts(kwargs, "creep_forces", &o) < 0)
+    if (parse_opts(kwargs, "creep_forces", &b.o) < 0)
         return NULL;
-    if (parse_inputs("creep_forces", objs, case_names, NCASE, &n, in) < 0
+    if (parse_inputs("creep_forces", objs, case_names, NCASE, &n, b.in) < 0
         || new_outputs(n, 3, out) < 0)
         goto fail;
-    chunk = o.method == RR_METHOD_LINEAR || o.method == RR_METHOD_POLACH
-                ? CHUNK_WORK
-                : CHUNK_WORK / ((npy_intp)o.nx * o.ny) + 1;
-    for (start = 0; start < n; start += chunk) {
-        npy_intp stop = start + chunk < n ? start + chunk : n;
-        double *fx = OUT(out[0]), *fy = OUT(out[1]), *mz = OUT(out[2]);
-        npy_int8 *st = OUT8(out[3]);
-        Py_BEGIN_ALLOW_THREADS
-        for (i = start; i < stop; i++) {
-            rr_contact_case c;
-            rr_friction fr;
-            rr_forces f;
-            load_case(in, i, &c, &fr);
-            st[i] = (npy_int8)rr_creep_forces(&c, &fr, &o, &f);
-            fx[i] = f.fx;
-            fy[i] = f.fy;
-            mz[i] = f.mz;
-        }
-        Py_END_ALLOW_THREADS
-        if (PyErr_CheckSignals() < 0)
-            goto fail;
-    }
+    b.fx = OUT(out[0]);
+    b.fy = OUT(out[1]);
+    b.mz = OUT(out[2]);
+    b.st = OUT8(out[3]);
+    if (run_batch(creep_kernel, &b, n, creep_cost(&b.o)) < 0)
+        goto fail;
     if ((res = outputs_tuple(out, 4)) != NULL)
         return res;
 fail:
     release(out, 4);
     return NULL;
+}
+
+/* CreepOptions(**options): a method and its options, parsed and checked
+ * once, for repeated scalar calls (creep_forces1). Immutable. */
+typedef struct {
+    PyObject_HEAD
+    rr_creep_opts o;
+    int ready;
+} CreepOptionsObject;
+
+static int CreepOptions_init(CreepOptionsObject *self, PyObject *args, PyObject *kwargs)
+{
+    self->ready = 0;
+    if (PyTuple_GET_SIZE(args) != 0) {
+        PyErr_SetString(PyExc_TypeError, "CreepOptions: options are keywords only");
+        return -1;
+    }
+    if (parse_opts(kwargs, "creep_forces", &self->o) < 0)
+        return -1;
+    self->ready = 1;
+    return 0;
+}
+
+static PyTypeObject CreepOptionsType = {
+    PyVarObject_HEAD_INIT(NULL, 0)
+    .tp_name = "rollerrig._core.CreepOptions",
+    .tp_basicsize = sizeof(CreepOptionsObject),
+    .tp_flags = Py_TPFLAGS_DEFAULT,
+    .tp_doc = "CreepOptions(method=..., <options>): checked options for creep_forces1",
+    .tp_init = (initproc)CreepOptions_init,
+    .tp_new = PyType_GenericNew,
+};
+
+/* creep_forces1(opts, cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B)
+ * -> (fx, fy, mz, status): one case from Python numbers, the scalar path
+ * (no arrays: the GIL is kept, a case takes microseconds at most). */
+static PyObject *py_creep_forces1(PyObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    double v[NCASE];
+    rr_contact_case c;
+    rr_friction fr;
+    rr_forces f;
+    int k, st;
+    (void)self;
+    if (nargs != NCASE + 1 || !PyObject_TypeCheck(args[0], &CreepOptionsType)
+        || !((CreepOptionsObject *)args[0])->ready) {
+        PyErr_Format(PyExc_TypeError, "creep_forces1: expected a CreepOptions and %d numbers",
+                     NCASE);
+        return NULL;
+    }
+    for (k = 0; k < NCASE; k++) {
+        PyObject *x = args[k + 1];
+        v[k] = PyFloat_CheckExact(x) ? PyFloat_AS_DOUBLE(x) : PyFloat_AsDouble(x);
+        if (v[k] == -1.0 && PyErr_Occurred())
+            return NULL;
+    }
+    c.cx = v[0];
+    c.cy = v[1];
+    c.cphi = v[2];
+    c.a = v[3];
+    c.b = v[4];
+    c.N = v[5];
+    fr.mu0 = v[6];
+    c.G = v[7];
+    c.nu = v[8];
+    c.speed = v[9];
+    fr.A = v[10];
+    fr.B = v[11];
+    st = rr_creep_forces(&c, &fr, &((CreepOptionsObject *)args[0])->o, &f);
+    return Py_BuildValue("(dddi)", f.fx, f.fy, f.mz, st);
+}
+
+typedef struct {
+    rr_contact_case c;
+    rr_friction fr;
+    const rr_creep_opts *o;
+    rr_forces f;
+    rr_fastsim_field field;
+    int st;
+} fastsim_field_call;
+
+static int fastsim_field_kernel(void *ctx, npy_intp start, npy_intp stop)
+{
+    fastsim_field_call *k = ctx;
+    (void)start;
+    (void)stop;
+    k->st = rr_fastsim(&k->c, &k->fr, k->o, &k->f, &k->field);
+    return 0;
 }
 
 /* One FASTSIM case with its traction field, arrays of shape (ny, nx). */
@@ -356,12 +529,9 @@ static PyObject *py_fastsim_field(PyObject *self, PyObject *args, PyObject *kwar
     PyObject *objs[NCASE], *arr[6] = {NULL, NULL, NULL, NULL, NULL, NULL};
     input in[NCASE];
     rr_creep_opts o;
-    rr_contact_case c;
-    rr_friction fr;
-    rr_forces f;
-    rr_fastsim_field field;
+    fastsim_field_call call;
     npy_intp n, dims[2];
-    int k, st;
+    int k;
     (void)self;
 
     if (PyTuple_GET_SIZE(args) != NCASE) {
@@ -391,18 +561,18 @@ static PyObject *py_fastsim_field(PyObject *self, PyObject *args, PyObject *kwar
         if (!arr[k])
             goto fail;
     }
-    field.x = OUT(arr[0]);
-    field.y = OUT(arr[1]);
-    field.pn = OUT(arr[2]);
-    field.px = OUT(arr[3]);
-    field.py = OUT(arr[4]);
-    field.slip = (signed char *)PyArray_DATA((PyArrayObject *)arr[5]);
-    load_case(in, 0, &c, &fr);
-    Py_BEGIN_ALLOW_THREADS
-    st = rr_fastsim(&c, &fr, &o, &f, &field);
-    Py_END_ALLOW_THREADS
-    return Py_BuildValue("(dddiNNNNNN)", f.fx, f.fy, f.mz, st, arr[0], arr[1], arr[2], arr[3],
-                         arr[4], arr[5]);
+    call.field.x = OUT(arr[0]);
+    call.field.y = OUT(arr[1]);
+    call.field.pn = OUT(arr[2]);
+    call.field.px = OUT(arr[3]);
+    call.field.py = OUT(arr[4]);
+    call.field.slip = (signed char *)PyArray_DATA((PyArrayObject *)arr[5]);
+    load_case(in, 0, &call.c, &call.fr);
+    call.o = &o;
+    if (run_batch(fastsim_field_kernel, &call, 1, 1.0) < 0)
+        goto fail;
+    return Py_BuildValue("(dddiNNNNNN)", call.f.fx, call.f.fy, call.f.mz, call.st, arr[0],
+                         arr[1], arr[2], arr[3], arr[4], arr[5]);
 fail:
     release(arr, 6);
     return NULL;
@@ -502,11 +672,36 @@ static int parse_search(PyObject *nobj, double tol, double sep, const char *func
     return 0;
 }
 
-/* Searches per GIL release: each costs about 4 nsamples profile probes. */
-static npy_intp search_chunk(const rr_search_opts *o)
+/* Work units of one search: about 4 nsamples profile probes. */
+static double search_cost(const rr_search_opts *o)
 {
-    const npy_intp c = CHUNK_WORK / (4 * (npy_intp)o->nsamples);
-    return c > 0 ? c : 1;
+    return 4.0 * o->nsamples;
+}
+
+typedef struct {
+    const rr_wheel_roller *pair;
+    const rr_search_opts *o;
+    const double *y;
+    npy_intp n;
+    npy_int8 *status;
+    double *z, *roll, *left, *right;
+} search_batch;
+
+static int search_kernel(void *ctx, npy_intp start, npy_intp stop)
+{
+    search_batch *b = ctx;
+    npy_intp i;
+    for (i = start; i < stop; i++) {
+        rr_wheelset_pose pose;
+        rr_contact_point c[2];
+        b->status[i] = (npy_int8)rr_wheelset_contact(&b->pair[0], &b->pair[1], b->y[i], b->o,
+                                                     &pose, &c[0], &c[1]);
+        b->z[i] = pose.z;
+        b->roll[i] = pose.roll;
+        store_geo(b->left, b->n, i, &c[0]);
+        store_geo(b->right, b->n, i, &c[1]);
+    }
+    return 0;
 }
 
 /* wheelset_contact(12 profile arrays, params (8 floats), y_ws, nsamples,
@@ -518,7 +713,8 @@ static PyObject *py_wheelset_contact(PyObject *self, PyObject *args)
     double par[8], tol, sep;
     rr_wheel_roller pair[2];
     rr_search_opts o;
-    npy_intp n, i, start, chunk, dims[2];
+    search_batch b;
+    npy_intp n, dims[2];
     int k;
     (void)self;
 
@@ -543,27 +739,17 @@ static PyObject *py_wheelset_contact(PyObject *self, PyObject *args)
     for (k = 0; k < 5; k++)
         if (!out[k])
             goto fail;
-    chunk = search_chunk(&o);
-    for (start = 0; start < n; start += chunk) {
-        const npy_intp stop = start + chunk < n ? start + chunk : n;
-        const double *y = (const double *)PyArray_DATA(yarr);
-        npy_int8 *status = OUT8(out[0]);
-        double *z = OUT(out[1]), *roll = OUT(out[2]), *L = OUT(out[3]), *R = OUT(out[4]);
-        Py_BEGIN_ALLOW_THREADS
-        for (i = start; i < stop; i++) {
-            rr_wheelset_pose pose;
-            rr_contact_point c[2];
-            status[i] = (npy_int8)rr_wheelset_contact(&pair[0], &pair[1], y[i], &o, &pose,
-                                                      &c[0], &c[1]);
-            z[i] = pose.z;
-            roll[i] = pose.roll;
-            store_geo(L, n, i, &c[0]);
-            store_geo(R, n, i, &c[1]);
-        }
-        Py_END_ALLOW_THREADS
-        if (PyErr_CheckSignals() < 0)
-            goto fail;
-    }
+    b.pair = pair;
+    b.o = &o;
+    b.y = (const double *)PyArray_DATA(yarr);
+    b.n = n;
+    b.status = OUT8(out[0]);
+    b.z = OUT(out[1]);
+    b.roll = OUT(out[2]);
+    b.left = OUT(out[3]);
+    b.right = OUT(out[4]);
+    if (run_batch(search_kernel, &b, n, search_cost(&o)) < 0)
+        goto fail;
     release((PyObject **)prof, NPROF);
     Py_DECREF(yarr);
     if ((res = outputs_tuple(out, 5)) != NULL)
@@ -577,6 +763,23 @@ fail:
     return NULL;
 }
 
+typedef struct {
+    const rr_wheel_roller *pair;
+    const rr_search_opts *o;
+    rr_contact_table *t;
+    int st;
+    double bad_y;
+} table_batch;
+
+/* rows [start, stop) of the table; the first error stops the build */
+static int table_kernel(void *ctx, npy_intp start, npy_intp stop)
+{
+    table_batch *b = ctx;
+    b->st = rr_contact_table_build_rows(&b->pair[0], &b->pair[1], b->o, b->t, (int)start,
+                                        (int)stop, &b->bad_y);
+    return b->st < 0;
+}
+
 /* contact_table(12 profile arrays, params, y0, dy, n, nsamples, tol, sep)
  * -> (data, status, bad_y): the C core's table rows, built in chunks of rows
  * with the GIL released, Ctrl-C noticed between them. */
@@ -584,12 +787,13 @@ static PyObject *py_contact_table(PyObject *self, PyObject *args)
 {
     PyObject *pobj[NPROF], *rows, *nobj, *data = NULL;
     PyArrayObject *prof[NPROF];
-    double par[8], tol, sep, bad_y = NAN;
+    double par[8], tol, sep;
     rr_wheel_roller pair[2];
     rr_search_opts o;
     rr_contact_table t;
+    table_batch b;
     npy_intp len;
-    int k, st = RR_OK, start, chunk;
+    int k;
     (void)self;
 
     for (k = 0; k < NPROF; k++)
@@ -606,17 +810,16 @@ static PyObject *py_contact_table(PyObject *self, PyObject *args)
     if (!(data = PyArray_SimpleNew(1, &len, NPY_DOUBLE)))
         goto fail;
     t.data = OUT(data);
-    chunk = (int)search_chunk(&o);
-    for (start = 0; start < t.n && st >= 0; start += chunk) {
-        const int stop = start + chunk < t.n ? start + chunk : t.n;
-        Py_BEGIN_ALLOW_THREADS
-        st = rr_contact_table_build_rows(&pair[0], &pair[1], &o, &t, start, stop, &bad_y);
-        Py_END_ALLOW_THREADS
-        if (PyErr_CheckSignals() < 0)
-            goto fail;
-    }
+    b.pair = pair;
+    b.o = &o;
+    b.t = &t;
+    b.st = RR_OK;
+    b.bad_y = NAN;
+    /* a row is one wheelset solve */
+    if (run_batch(table_kernel, &b, t.n, search_cost(&o)) < 0)
+        goto fail;
     release((PyObject **)prof, NPROF);
-    return Py_BuildValue("Nid", data, st, bad_y);
+    return Py_BuildValue("Nid", data, b.st, b.bad_y);
 fail:
     release((PyObject **)prof, NPROF);
     Py_XDECREF(data);
@@ -656,14 +859,42 @@ static int parse_table(PyObject *obj, double y0, double dy, const char *func,
     return 0;
 }
 
+typedef struct {
+    const rr_contact_table *t;
+    const double *y;
+    npy_intp n;
+    npy_int8 *status;
+    double *z, *roll, *dz, *droll, *left, *right;
+} lookup_batch;
+
+static int lookup_kernel(void *ctx, npy_intp start, npy_intp stop)
+{
+    lookup_batch *b = ctx;
+    npy_intp i;
+    for (i = start; i < stop; i++) {
+        rr_wheelset_pose pose, slope;
+        rr_contact_point c[2];
+        b->status[i] = (npy_int8)rr_contact_table_lookup(b->t, b->y[i], &pose, &slope, &c[0],
+                                                         &c[1]);
+        b->z[i] = pose.z;
+        b->roll[i] = pose.roll;
+        b->dz[i] = slope.z;
+        b->droll[i] = slope.roll;
+        store_geo(b->left, b->n, i, &c[0]);
+        store_geo(b->right, b->n, i, &c[1]);
+    }
+    return 0;
+}
+
 /* table_lookup(data, y0, dy, y) -> (status, z, roll, dz_dy, droll_dy, left, right) */
 static PyObject *py_table_lookup(PyObject *self, PyObject *args)
 {
     PyObject *dobj, *yobj, *out[7] = {NULL, NULL, NULL, NULL, NULL, NULL, NULL}, *res;
     PyArrayObject *yarr = NULL;
     rr_contact_table t;
+    lookup_batch b;
     double y0, dy;
-    npy_intp n, i, start, dims[2];
+    npy_intp n, dims[2];
     int k;
     (void)self;
 
@@ -684,29 +915,19 @@ static PyObject *py_table_lookup(PyObject *self, PyObject *args)
     for (k = 0; k < 7; k++)
         if (!out[k])
             goto fail;
-    for (start = 0; start < n; start += CHUNK_WORK) {
-        const npy_intp stop = start + CHUNK_WORK < n ? start + CHUNK_WORK : n;
-        const double *y = (const double *)PyArray_DATA(yarr);
-        npy_int8 *status = OUT8(out[0]);
-        double *z = OUT(out[1]), *roll = OUT(out[2]), *dz = OUT(out[3]), *dr = OUT(out[4]);
-        double *L = OUT(out[5]), *R = OUT(out[6]);
-        Py_BEGIN_ALLOW_THREADS
-        for (i = start; i < stop; i++) {
-            rr_wheelset_pose pose, slope;
-            rr_contact_point c[2];
-            status[i] = (npy_int8)rr_contact_table_lookup(&t, y[i], &pose, &slope, &c[0],
-                                                          &c[1]);
-            z[i] = pose.z;
-            roll[i] = pose.roll;
-            dz[i] = slope.z;
-            dr[i] = slope.roll;
-            store_geo(L, n, i, &c[0]);
-            store_geo(R, n, i, &c[1]);
-        }
-        Py_END_ALLOW_THREADS
-        if (PyErr_CheckSignals() < 0)
-            goto fail;
-    }
+    b.t = &t;
+    b.y = (const double *)PyArray_DATA(yarr);
+    b.n = n;
+    b.status = OUT8(out[0]);
+    b.z = OUT(out[1]);
+    b.roll = OUT(out[2]);
+    b.dz = OUT(out[3]);
+    b.droll = OUT(out[4]);
+    b.left = OUT(out[5]);
+    b.right = OUT(out[6]);
+    /* a lookup costs a few dozen flops */
+    if (run_batch(lookup_kernel, &b, n, 1.0) < 0)
+        goto fail;
     Py_DECREF(yarr);
     yarr = NULL;
     if ((res = outputs_tuple(out, 7)) != NULL)
@@ -740,17 +961,72 @@ static void store_wheel(double *d, npy_intp n, npy_intp i, const rr_wheel_contac
         d[k * n + i] = v[k];
 }
 
+typedef struct {
+    input in[NSTATE];
+    const rr_rig_contact_model *m;
+    int kin_only;
+    npy_intp n;
+    npy_int8 *status, *left_status, *right_status;
+    double *pose, *left, *right;
+} rig_contact_batch;
+
+static int rig_contact_kernel(void *ctx, npy_intp start, npy_intp stop)
+{
+    rig_contact_batch *b = ctx;
+    npy_intp i;
+    int k;
+    for (i = start; i < stop; i++) {
+        rr_rig_state s;
+        rr_rig_pose pose;
+        rr_wheel_contact w[2];
+        double N[2];
+        s.x = IN(b->in[0], i);
+        s.y = IN(b->in[1], i);
+        s.yaw = IN(b->in[2], i);
+        s.vx = IN(b->in[3], i);
+        s.vy = IN(b->in[4], i);
+        s.yaw_rate = IN(b->in[5], i);
+        s.spin = IN(b->in[6], i);
+        s.roller_spin = IN(b->in[7], i);
+        N[0] = IN(b->in[8], i);
+        N[1] = IN(b->in[9], i);
+        if (b->kin_only) {
+            b->status[i] = (npy_int8)rr_rig_kinematics(b->m, &s, &pose, w);
+            for (k = 0; k < 2; k++) {
+                w[k].N = w[k].hertz.a = w[k].hertz.b = w[k].hertz.p0 = NAN;
+                w[k].f.fx = w[k].f.fy = w[k].f.mz = NAN;
+                w[k].force[0] = w[k].force[1] = w[k].force[2] = NAN;
+                w[k].moment[0] = w[k].moment[1] = w[k].moment[2] = NAN;
+            }
+        } else {
+            b->status[i] = (npy_int8)rr_rig_contact(b->m, &s, N, &pose, w);
+        }
+        b->left_status[i] = (npy_int8)w[0].status;
+        b->right_status[i] = (npy_int8)w[1].status;
+        {
+            const double pv[NPOSE] = {pose.c[0], pose.c[1], pose.c[2], pose.roll, pose.beta,
+                                      pose.v[0], pose.v[1], pose.v[2], pose.w[0], pose.w[1],
+                                      pose.w[2]};
+            for (k = 0; k < NPOSE; k++)
+                b->pose[k * b->n + i] = pv[k];
+        }
+        store_wheel(b->left, b->n, i, &w[0]);
+        store_wheel(b->right, b->n, i, &w[1]);
+    }
+    return 0;
+}
+
 /* rig_contact(data, y0, dy, (R0, estar, G, nu, mu0, A, B, vmin), 10 state arrays, *,
  *             kinematics_only, <creep options>)
  * -> (status, pose[NPOSE, n], left[NWHEEL, n], right[NWHEEL, n], left_status, right_status) */
 static PyObject *py_rig_contact(PyObject *self, PyObject *args, PyObject *kwargs)
 {
     PyObject *dobj, *objs[NSTATE], *out[6] = {NULL, NULL, NULL, NULL, NULL, NULL}, *res, *v;
-    input in[NSTATE];
+    rig_contact_batch b;
     rr_contact_table t;
     rr_rig_contact_model m;
     double y0, dy;
-    npy_intp n, i, start, chunk, dims[2];
+    npy_intp n, dims[2];
     int k, kin_only = 0;
     (void)self;
 
@@ -777,7 +1053,7 @@ static PyObject *py_rig_contact(PyObject *self, PyObject *args, PyObject *kwargs
             return NULL;
         }
     }
-    if (parse_inputs("rig_contact", objs, state_names, NSTATE, &n, in) < 0)
+    if (parse_inputs("rig_contact", objs, state_names, NSTATE, &n, b.in) < 0)
         return NULL;
     dims[1] = n;
     out[0] = PyArray_SimpleNew(1, &n, NPY_INT8);
@@ -791,56 +1067,19 @@ static PyObject *py_rig_contact(PyObject *self, PyObject *args, PyObject *kwargs
     for (k = 0; k < 6; k++)
         if (!out[k])
             goto fail;
-    chunk = m.creep.method == RR_METHOD_LINEAR || m.creep.method == RR_METHOD_POLACH
-                ? CHUNK_WORK / 8
-                : CHUNK_WORK / (2 * (npy_intp)m.creep.nx * m.creep.ny) + 1;
-    for (start = 0; start < n; start += chunk) {
-        npy_intp stop = start + chunk < n ? start + chunk : n;
-        npy_int8 *status = OUT8(out[0]), *sl = OUT8(out[4]), *sr = OUT8(out[5]);
-        double *P = OUT(out[1]), *L = OUT(out[2]), *R = OUT(out[3]);
-        Py_BEGIN_ALLOW_THREADS
-        for (i = start; i < stop; i++) {
-            rr_rig_state s;
-            rr_rig_pose pose;
-            rr_wheel_contact w[2];
-            double N[2];
-            s.x = IN(in[0], i);
-            s.y = IN(in[1], i);
-            s.yaw = IN(in[2], i);
-            s.vx = IN(in[3], i);
-            s.vy = IN(in[4], i);
-            s.yaw_rate = IN(in[5], i);
-            s.spin = IN(in[6], i);
-            s.roller_spin = IN(in[7], i);
-            N[0] = IN(in[8], i);
-            N[1] = IN(in[9], i);
-            if (kin_only) {
-                status[i] = (npy_int8)rr_rig_kinematics(&m, &s, &pose, w);
-                for (k = 0; k < 2; k++) {
-                    w[k].N = w[k].hertz.a = w[k].hertz.b = w[k].hertz.p0 = NAN;
-                    w[k].f.fx = w[k].f.fy = w[k].f.mz = NAN;
-                    w[k].force[0] = w[k].force[1] = w[k].force[2] = NAN;
-                    w[k].moment[0] = w[k].moment[1] = w[k].moment[2] = NAN;
-                }
-            } else {
-                status[i] = (npy_int8)rr_rig_contact(&m, &s, N, &pose, w);
-            }
-            sl[i] = (npy_int8)w[0].status;
-            sr[i] = (npy_int8)w[1].status;
-            {
-                const double pv[NPOSE] = {pose.c[0], pose.c[1], pose.c[2], pose.roll,
-                                          pose.beta, pose.v[0], pose.v[1], pose.v[2],
-                                          pose.w[0], pose.w[1], pose.w[2]};
-                for (k = 0; k < NPOSE; k++)
-                    P[k * n + i] = pv[k];
-            }
-            store_wheel(L, n, i, &w[0]);
-            store_wheel(R, n, i, &w[1]);
-        }
-        Py_END_ALLOW_THREADS
-        if (PyErr_CheckSignals() < 0)
-            goto fail;
-    }
+    b.m = &m;
+    b.kin_only = kin_only;
+    b.n = n;
+    b.status = OUT8(out[0]);
+    b.pose = OUT(out[1]);
+    b.left = OUT(out[2]);
+    b.right = OUT(out[3]);
+    b.left_status = OUT8(out[4]);
+    b.right_status = OUT8(out[5]);
+    /* two contacts a case, plus the kinematics (about 8 closed-form cases' work) */
+    if (run_batch(rig_contact_kernel, &b, n,
+                  kin_only ? 8.0 : 8.0 + 2.0 * creep_cost(&m.creep)) < 0)
+        goto fail;
     if ((res = outputs_tuple(out, 6)) != NULL)
         return res;
 fail:
@@ -1004,6 +1243,28 @@ static PyObject *new_record(double **rec)
     return a;
 }
 
+typedef struct {
+    rr_rig *rig;
+    const double *roller_ref, *xi_ref;
+    double *rec;
+    int worst;
+} run_batch_ctx;
+
+/* samples [start, stop); the run's status is its error, else its worst warning */
+static int run_kernel(void *ctx, npy_intp start, npy_intp stop)
+{
+    run_batch_ctx *b = ctx;
+    int st = RR_OK;
+    rr_rig_run(b->rig, (long)(stop - start), b->roller_ref + start, b->xi_ref + start,
+               b->rec + start * RR_REC_COUNT, &st);
+    if (st < 0 || st > b->worst)
+        b->worst = st;
+    return st < 0;
+}
+
+/* A rig sample costs about 10 us: 256 of them between Ctrl-C checks. */
+#define SAMPLE_COST (CHUNK_WORK / 256.0)
+
 /* run(roller_ref, xi_ref) -> (records[n, RR_REC_COUNT], status): rr_rig_run, one
  * sample per element, in chunks (GIL released, Ctrl-C noticed between
  * them); stops at the first error (its row has the status, the rest NaN). */
@@ -1011,8 +1272,8 @@ static PyObject *Rig_run(RigObject *self, PyObject *args)
 {
     PyObject *robj, *xobj, *out = NULL;
     PyArrayObject *r = NULL, *x = NULL;
-    npy_intp n, i, start, dims[2];
-    int st = RR_OK, worst = RR_OK;
+    npy_intp n, i, dims[2];
+    run_batch_ctx b;
 
     if (!PyArg_ParseTuple(args, "OO:run", &robj, &xobj))
         return NULL;
@@ -1032,30 +1293,21 @@ static PyObject *Rig_run(RigObject *self, PyObject *args)
         goto fail;
     if (rig_enter(self, "run") < 0)
         goto fail;
-    {
-        double *rec = OUT(out);
-        const double *rr = (const double *)PyArray_DATA(r), *xr = (const double *)PyArray_DATA(x);
-        for (i = 0; i < n * RR_REC_COUNT; i++)
-            rec[i] = NAN;
-        for (start = 0; start < n && st >= 0; start += 256) {
-            const long len = (long)(start + 256 < n ? 256 : n - start);
-            Py_BEGIN_ALLOW_THREADS
-            rr_rig_run(&self->rig, len, rr + start, xr + start, rec + start * RR_REC_COUNT,
-                       &st);
-            Py_END_ALLOW_THREADS
-            /* the whole run's status: an error, else the worst warning of any chunk */
-            if (st < 0 || st > worst)
-                worst = st;
-            if (PyErr_CheckSignals() < 0) {
-                rig_leave(self);
-                goto fail;
-            }
-        }
+    b.rig = &self->rig;
+    b.roller_ref = (const double *)PyArray_DATA(r);
+    b.xi_ref = (const double *)PyArray_DATA(x);
+    b.rec = OUT(out);
+    b.worst = RR_OK;
+    for (i = 0; i < n * RR_REC_COUNT; i++)
+        b.rec[i] = NAN;
+    if (run_batch(run_kernel, &b, n, SAMPLE_COST) < 0) {
+        rig_leave(self);
+        goto fail;
     }
     rig_leave(self);
     Py_DECREF(r);
     Py_DECREF(x);
-    return Py_BuildValue("Ni", out, worst);
+    return Py_BuildValue("Ni", out, b.worst);
 fail:
     Py_XDECREF(r);
     Py_XDECREF(x);
@@ -1461,11 +1713,15 @@ static PyObject *py_status_message(PyObject *self, PyObject *arg)
 static PyMethodDef core_methods[] = {
     {"hertz", py_hertz, METH_VARARGS,
      "hertz(A, B, N, E1, nu1, E2, nu2) -> (a, b, p0, delta, status)"},
+    {"hertz1", (PyCFunction)(void (*)(void))py_hertz1, METH_FASTCALL,
+     "hertz1(A, B, N, E1, nu1, E2, nu2) -> (a, b, p0, delta, status)"},
     {"kalker", py_kalker, METH_VARARGS,
      "kalker(a_over_b, nu) -> (c11, c22, c23, status)"},
     {"creep_forces", (PyCFunction)(void (*)(void))py_creep_forces, METH_VARARGS | METH_KEYWORDS,
      "creep_forces(cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B, *, method, nx, ny, bound,"
      " slip_speed, grid, k0, alpha_inf, beta, kA, kS) -> (fx, fy, mz, status)"},
+    {"creep_forces1", (PyCFunction)(void (*)(void))py_creep_forces1, METH_FASTCALL,
+     "creep_forces1(opts, cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B) -> (fx, fy, mz, status)"},
     {"fastsim_field", (PyCFunction)(void (*)(void))py_fastsim_field,
      METH_VARARGS | METH_KEYWORDS,
      "fastsim_field(<as creep_forces, one case>) -> (fx, fy, mz, status, x, y, pn, px, py, slip)"},
@@ -1517,7 +1773,7 @@ PyMODINIT_FUNC PyInit__core(void)
 {
     PyObject *m;
     import_array();
-    if (PyType_Ready(&RigType) < 0)
+    if (PyType_Ready(&RigType) < 0 || PyType_Ready(&CreepOptionsType) < 0)
         return NULL;
     m = PyModule_Create(&core_module);
     if (!m)
@@ -1525,6 +1781,12 @@ PyMODINIT_FUNC PyInit__core(void)
     Py_INCREF(&RigType);
     if (PyModule_AddObject(m, "Rig", (PyObject *)&RigType) < 0) {
         Py_DECREF(&RigType);
+        Py_DECREF(m);
+        return NULL;
+    }
+    Py_INCREF(&CreepOptionsType);
+    if (PyModule_AddObject(m, "CreepOptions", (PyObject *)&CreepOptionsType) < 0) {
+        Py_DECREF(&CreepOptionsType);
         Py_DECREF(m);
         return NULL;
     }
