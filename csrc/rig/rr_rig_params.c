@@ -689,6 +689,21 @@ int rr_rig_params_default(rr_rig_params *p)
     return rr_rig_params_from(&c, NULL, p);
 }
 
+int rr_rig_geometry_from(const rr_rig_config *c, rr_rig_geometry *g)
+{
+    if (!c || !g)
+        return RR_ERR_NULL;
+    g->wheel_radius = c->wheel_radius;
+    g->roller_radius = c->roller_radius;
+    g->profile_half_width = c->profile_half_width;
+    g->cone_angle = atan(c->conicity);
+    g->crown_radius = c->crown_radius;
+    g->contact_half_spacing = c->contact_half_spacing;
+    g->table_half_range = c->table_half_range;
+    g->table_rows = c->table_rows;
+    return RR_OK;
+}
+
 long rr_rig_samples(const rr_rig_config *c)
 {
     double n;

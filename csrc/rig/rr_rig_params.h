@@ -18,12 +18,16 @@
  * controller's sense, the friction law's A and B, ...).  A C program gets
  * the paper's rig with
  *
- *     rr_rig_params p;
- *     rr_rig_params_default(&p);                 (the defaults at 4 ms)
- *     ... build the contact table t of the geometry (the wheelset and
- *     roller rows; integration.table_*) ...
- *     rr_rig_params_set_table(&p, &t);           (table, calibrated radii)
- *     rr_rig_init(&p, roller_speed / R0, &rig);
+ *     rr_rig_config c;  rr_rig_geometry g;  rr_rig_params p;
+ *     rr_rig_config_default(&c);                 (the paper's values, 4 ms)
+ *     rr_rig_geometry_from(&c, &g);
+ *     rr_rig_table_build(&g, data, ..., work, ..., &t, NULL);   (rr_tables.h)
+ *     rr_rig_params_from(&c, &t, &p);            (table, calibrated radii)
+ *     rr_rig_init(&p, c.roller_speed / c.roller_radius, &rig);
+ *
+ * (examples/rig_paper.c runs the paper's scenario so, bitwise as
+ * rollerrig.simulate()), or rr_rig_params_default(&p) and then
+ * rr_rig_params_set_table(&p, &t).
  *
  * or, to change a value first, rr_rig_config_default, rr_rig_config_set*,
  * rr_rig_params_from.  The scenario (roller speed, targets and their start
@@ -46,6 +50,7 @@
 
 #include <stddef.h>
 #include "rig/rr_rig.h"
+#include "geometry/rr_tables.h"
 
 enum rr_rig_param_type {
     RR_RIG_REAL = 0,   /* a finite double in [lo, hi] (ends open if lo_open, hi_open) */
@@ -206,6 +211,14 @@ int rr_rig_params_set_table(rr_rig_params *p, const rr_contact_table *t);
  * parameters).  Status: RR_ERR_NULL.
  */
 int rr_rig_params_default(rr_rig_params *p);
+
+/*
+ * rr_rig_geometry_from - the geometry of the rig's contact table
+ * (rr_rig_table_build): radii, profile half width, cone angle
+ * atan(wheelset.conicity), crown, contact half spacing, table half range and
+ * rows.  Status: RR_ERR_NULL.
+ */
+int rr_rig_geometry_from(const rr_rig_config *c, rr_rig_geometry *g);
 
 /* rr_rig_samples - samples of the scenario: round(duration / T), at least 1; 0 for NULL. */
 long rr_rig_samples(const rr_rig_config *c);
