@@ -234,6 +234,28 @@ fail:
     return NULL;
 }
 
+/* hertz1(A, B, N, E1, nu1, E2, nu2) -> (a, b, p0, delta, status): one case
+ * from Python numbers, the scalar path. */
+static PyObject *py_hertz1(PyObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    double v[7];
+    rr_hertz_result h;
+    int k, st;
+    (void)self;
+    if (nargs != 7) {
+        PyErr_SetString(PyExc_TypeError, "hertz1: expected 7 numbers");
+        return NULL;
+    }
+    for (k = 0; k < 7; k++) {
+        v[k] = PyFloat_CheckExact(args[k]) ? PyFloat_AS_DOUBLE(args[k])
+                                           : PyFloat_AsDouble(args[k]);
+        if (v[k] == -1.0 && PyErr_Occurred())
+            return NULL;
+    }
+    st = rr_hertz_bodies(v[0], v[1], v[2], v[3], v[4], v[5], v[6], &h);
+    return Py_BuildValue("(ddddi)", h.a, h.b, h.p0, h.delta, st);
+}
+
 /* --------------------------------------------------------------- kalker */
 
 typedef struct {
@@ -411,6 +433,76 @@ static PyObject *py_creep_forces(PyObject *self, PyObject *args, PyObject *kwarg
 fail:
     release(out, 4);
     return NULL;
+}
+
+/* CreepOptions(**options): a method and its options, parsed and checked
+ * once, for repeated scalar calls (creep_forces1). Immutable. */
+typedef struct {
+    PyObject_HEAD
+    rr_creep_opts o;
+    int ready;
+} CreepOptionsObject;
+
+static int CreepOptions_init(CreepOptionsObject *self, PyObject *args, PyObject *kwargs)
+{
+    self->ready = 0;
+    if (PyTuple_GET_SIZE(args) != 0) {
+        PyErr_SetString(PyExc_TypeError, "CreepOptions: options are keywords only");
+        return -1;
+    }
+    if (parse_opts(kwargs, "creep_forces", &self->o) < 0)
+        return -1;
+    self->ready = 1;
+    return 0;
+}
+
+static PyTypeObject CreepOptionsType = {
+    PyVarObject_HEAD_INIT(NULL, 0)
+    .tp_name = "rollerrig._core.CreepOptions",
+    .tp_basicsize = sizeof(CreepOptionsObject),
+    .tp_flags = Py_TPFLAGS_DEFAULT,
+    .tp_doc = "CreepOptions(method=..., <options>): checked options for creep_forces1",
+    .tp_init = (initproc)CreepOptions_init,
+    .tp_new = PyType_GenericNew,
+};
+
+/* creep_forces1(opts, cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B)
+ * -> (fx, fy, mz, status): one case from Python numbers, the scalar path
+ * (no arrays: the GIL is kept, a case takes microseconds at most). */
+static PyObject *py_creep_forces1(PyObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    double v[NCASE];
+    rr_contact_case c;
+    rr_friction fr;
+    rr_forces f;
+    int k, st;
+    (void)self;
+    if (nargs != NCASE + 1 || !PyObject_TypeCheck(args[0], &CreepOptionsType)
+        || !((CreepOptionsObject *)args[0])->ready) {
+        PyErr_Format(PyExc_TypeError, "creep_forces1: expected a CreepOptions and %d numbers",
+                     NCASE);
+        return NULL;
+    }
+    for (k = 0; k < NCASE; k++) {
+        PyObject *x = args[k + 1];
+        v[k] = PyFloat_CheckExact(x) ? PyFloat_AS_DOUBLE(x) : PyFloat_AsDouble(x);
+        if (v[k] == -1.0 && PyErr_Occurred())
+            return NULL;
+    }
+    c.cx = v[0];
+    c.cy = v[1];
+    c.cphi = v[2];
+    c.a = v[3];
+    c.b = v[4];
+    c.N = v[5];
+    fr.mu0 = v[6];
+    c.G = v[7];
+    c.nu = v[8];
+    c.speed = v[9];
+    fr.A = v[10];
+    fr.B = v[11];
+    st = rr_creep_forces(&c, &fr, &((CreepOptionsObject *)args[0])->o, &f);
+    return Py_BuildValue("(dddi)", f.fx, f.fy, f.mz, st);
 }
 
 typedef struct {
@@ -1618,11 +1710,15 @@ static PyObject *py_status_message(PyObject *self, PyObject *arg)
 static PyMethodDef core_methods[] = {
     {"hertz", py_hertz, METH_VARARGS,
      "hertz(A, B, N, E1, nu1, E2, nu2) -> (a, b, p0, delta, status)"},
+    {"hertz1", (PyCFunction)(void (*)(void))py_hertz1, METH_FASTCALL,
+     "hertz1(A, B, N, E1, nu1, E2, nu2) -> (a, b, p0, delta, status)"},
     {"kalker", py_kalker, METH_VARARGS,
      "kalker(a_over_b, nu) -> (c11, c22, c23, status)"},
     {"creep_forces", (PyCFunction)(void (*)(void))py_creep_forces, METH_VARARGS | METH_KEYWORDS,
      "creep_forces(cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B, *, method, nx, ny, bound,"
      " slip_speed, grid, k0, alpha_inf, beta, kA, kS) -> (fx, fy, mz, status)"},
+    {"creep_forces1", (PyCFunction)(void (*)(void))py_creep_forces1, METH_FASTCALL,
+     "creep_forces1(opts, cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B) -> (fx, fy, mz, status)"},
     {"fastsim_field", (PyCFunction)(void (*)(void))py_fastsim_field,
      METH_VARARGS | METH_KEYWORDS,
      "fastsim_field(<as creep_forces, one case>) -> (fx, fy, mz, status, x, y, pn, px, py, slip)"},
@@ -1794,7 +1890,7 @@ PyMODINIT_FUNC PyInit__core(void)
 {
     PyObject *m;
     import_array();
-    if (PyType_Ready(&RigType) < 0)
+    if (PyType_Ready(&RigType) < 0 || PyType_Ready(&CreepOptionsType) < 0)
         return NULL;
     m = PyModule_Create(&core_module);
     if (!m)
@@ -1802,6 +1898,12 @@ PyMODINIT_FUNC PyInit__core(void)
     Py_INCREF(&RigType);
     if (PyModule_AddObject(m, "Rig", (PyObject *)&RigType) < 0) {
         Py_DECREF(&RigType);
+        Py_DECREF(m);
+        return NULL;
+    }
+    Py_INCREF(&CreepOptionsType);
+    if (PyModule_AddObject(m, "CreepOptions", (PyObject *)&CreepOptionsType) < 0) {
+        Py_DECREF(&CreepOptionsType);
         Py_DECREF(m);
         return NULL;
     }
