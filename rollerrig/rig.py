@@ -1069,12 +1069,14 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     t0 = time.perf_counter()
     P = _parameters("simulate", params)
     S = P["scenario"]
+    given_dt = dt is not None
     dt = _check_dt("simulate", dt if dt is not None else S["control_sample_time_s"])
     duration = _real_arg("simulate", "duration", duration if duration is not None
                          else S["duration_s"], 0.0, MAX_DURATION, lo_open=True, unit="s")
     if duration < dt * (1.0 - 1e-9):
         raise RollerRigError(f"simulate: duration = {duration:g} s is shorter than one "
-                             f"sample (dt = {dt:g} s)")
+                             f"sample (dt = {dt:g} s)"
+                             f"{'' if given_dt else ' of scenario.control_sample_time_s'}")
     n = max(1, int(round(duration / dt)))
     targets, target_times = _target_schedule(S, duration, targets, target_times)
     record_every, kept = _record_plan(n, dt, record_every, max_record_bytes)
