@@ -80,6 +80,11 @@ TOML = os.path.join(ROOT, "rollerrig", "data", "rig_default.toml")
 
 # ------------------------------------------------------------------ the rig
 
+# the benchmark's roller profile spans +-20 mm (bench_rig.c ROLLER_HALF; the former
+# roller.width_m / 2, a key that acted on nothing and left the parameters)
+ROLLER_HALF_WIDTH = 0.020
+
+
 def rig_parameters():
     """The default rig's values from rig_default.toml, under bench_rig.c's
     names (its "params" JSON)."""
@@ -93,7 +98,7 @@ def rig_parameters():
                 # the rig's roller profile spans the wheel's (rig._rig_table)
                 roller_half_width=ws["profile_half_width_m"],
                 half_spacing=ws["contact_half_spacing_m"],
-                roller_half_spacing=ro["contact_half_spacing_m"],
+                roller_half_spacing=ws["contact_half_spacing_m"],
                 E=co["youngs_modulus_Pa"], nu=co["poisson_ratio"], mu0=sc["mu0"],
                 A=co["polach_A"], B=co["polach_B_s_per_m"], kA=co["polach_kA"],
                 kS=co["polach_kS"], vmin=co["min_rolling_speed_m_s"],

@@ -19,6 +19,8 @@
  *   rr_control.h   PI speed controllers, drive lag, encoders, creepage controller
  *   rr_ode.h       fixed-step L-stable integrators (ROS2, TR-BDF2, lin. Euler)
  *   rr_rig.h       the rig in time: plant, normal loads, sampled-data control
+ *   rr_rig_params.h  the rig's parameters (names, units, defaults, ranges, origins),
+ *                  its scenario and its outputs, declared once
  */
 #ifndef ROLLERRIG_H
 #define ROLLERRIG_H
@@ -39,5 +41,6 @@
 #include "rig/rr_control.h"
 #include "util/rr_ode.h"
 #include "rig/rr_rig.h"
+#include "rig/rr_rig_params.h"
 
 #endif

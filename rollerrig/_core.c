@@ -944,21 +944,11 @@ fail:
 static const char *const state_names[NSTATE] = {"x", "y", "yaw", "vx", "vy", "yaw_rate",
                                                 "spin", "roller_spin", "N_left", "N_right"};
 #define NPOSE 11   /* c[3] roll beta v[3] w[3] */
-#define NWHEEL 35  /* see the Python side (rollerrig.rig_contact) for the order */
+#define NWHEEL RR_WHEEL_NVALUES   /* the fields of rr_wheel_field (RIG_WHEEL_FIELDS) */
 
 static void store_wheel(double *d, npy_intp n, npy_intp i, const rr_wheel_contact *w)
 {
-    const double v[NWHEEL] = {
-        w->frame.p[0], w->frame.p[1], w->frame.p[2], w->theta,
-        w->frame.t1[0], w->frame.t1[1], w->frame.t1[2],
-        w->frame.t2[0], w->frame.t2[1], w->frame.t2[2], w->n[0], w->n[1], w->n[2],
-        w->creep.cx, w->creep.cy, w->creep.cphi, w->creep.V,
-        w->N, w->hertz.a, w->hertz.b, w->hertz.p0, w->f.fx, w->f.fy, w->f.mz,
-        w->force[0], w->force[1], w->force[2], w->moment[0], w->moment[1], w->moment[2],
-        w->geo.r, w->geo.R, w->geo.delta, w->geo.s_wheel, w->geo.s_roller};
-    int k;
-    for (k = 0; k < NWHEEL; k++)
-        d[k * n + i] = v[k];
+    rr_wheel_store(w, d + i, (long)n);
 }
 
 typedef struct {
@@ -1104,67 +1094,64 @@ typedef struct {
     int busy;                  /* 1 while a method works on the rig */
 } RigObject;
 
-/* Named float and int fields of rr_rig_params, read from a dict. */
-typedef struct {
-    const char *name;
-    size_t offset;
-    int is_int;
-} field;
-
-#define DFIELD(name, member) {name, offsetof(rr_rig_params, member), 0}
-#define IFIELD(name, member) {name, offsetof(rr_rig_params, member), 1}
-static const field rig_fields[] = {
-    DFIELD("mass", mass), DFIELD("Iyy", Iyy), DFIELD("Izz", Izz), DFIELD("axlebox_y", axlebox_y),
-    DFIELD("kx", kx), DFIELD("ky", ky), DFIELD("kz", kz), DFIELD("cx", cx), DFIELD("cy", cy), DFIELD("cz", cz),
-    DFIELD("preload", preload), DFIELD("g", g), DFIELD("roller_inertia", roller_inertia),
-    DFIELD("R0", contact.R0), DFIELD("G", contact.G), DFIELD("nu", contact.nu), DFIELD("estar", contact.estar),
-    DFIELD("mu0", contact.friction.mu0), DFIELD("A", contact.friction.A), DFIELD("B", contact.friction.B),
-    DFIELD("vmin", contact.vmin), DFIELD("T", T), IFIELD("nsub", nsub), IFIELD("ode_method", method),
-    IFIELD("newton_iters", newton_iters), IFIELD("linear_tr", linear_tr),
-    IFIELD("newton_model", newton_model),
-    DFIELD("roller_Kp", roller_pi.Kp), DFIELD("roller_KI", roller_pi.KI),
-    DFIELD("roller_Tmax", roller_pi.Tmax), DFIELD("wheelset_Kp", wheelset_pi.Kp),
-    DFIELD("wheelset_KI", wheelset_pi.KI), DFIELD("wheelset_Tmax", wheelset_pi.Tmax),
-    DFIELD("roller_tau", roller_tau), DFIELD("wheelset_tau", wheelset_tau),
-    IFIELD("roller_counts", roller_enc.counts), IFIELD("wheelset_counts", wheelset_enc.counts),
-    DFIELD("r_w", creepctl.r_w), DFIELD("r_r", creepctl.r_r), DFIELD("ctl_alpha", creepctl.alpha),
-    DFIELD("ctl_beta", creepctl.beta), DFIELD("ctl_vmin", creepctl.vmin), IFIELD("sense", creepctl.sense),
-};
-#undef DFIELD
-#undef IFIELD
-#define NFIELDS ((int)(sizeof rig_fields / sizeof rig_fields[0]))
-
-static int rig_params_from(PyObject *d, rr_rig_params *p)
+/* The rig's primary values (rr_rig_config) from a dict {"section.key": value}
+ * of rr_rig_params.h's rows (any subset: the rest keep their defaults); a
+ * creep row is refused (its value goes through the creep options), and so
+ * is an unknown name or a bad value, naming both. */
+static int rig_config_from(PyObject *d, rr_rig_config *c)
 {
-    int k;
-    if (!PyDict_Check(d)) {
-        PyErr_SetString(PyExc_TypeError, "Rig: params must be a dict");
-        return -1;
-    }
-    if (PyDict_Size(d) != NFIELDS) {
-        PyErr_Format(PyExc_ValueError, "Rig: params must have exactly %d entries, got %zd",
-                     NFIELDS, PyDict_Size(d));
-        return -1;
-    }
-    for (k = 0; k < NFIELDS; k++) {
-        PyObject *v = PyDict_GetItemString(d, rig_fields[k].name);
-        char *at = (char *)p + rig_fields[k].offset;
-        if (!v) {
-            PyErr_Format(PyExc_ValueError, "Rig: params lacks '%s'", rig_fields[k].name);
+    PyObject *key, *v;
+    Py_ssize_t pos = 0;
+    rr_rig_config_default(c);
+    while (PyDict_Next(d, &pos, &key, &v)) {
+        const char *name = PyUnicode_Check(key) ? PyUnicode_AsUTF8(key) : NULL;
+        const rr_rig_param *row = name ? rr_rig_param_find(name) : NULL;
+        int st;
+        if (!row || row->creep) {
+            if (!PyErr_Occurred())
+                PyErr_Format(PyExc_ValueError, "Rig: %R is not a rig parameter%s", key,
+                             row ? " (a creep-force option: give it with the creep options)"
+                                 : "");
             return -1;
         }
-        if (rig_fields[k].is_int) {
-            if (int_arg(v, "Rig", rig_fields[k].name, INT_MIN, INT_MAX, (int *)at) < 0)
+        if (row->type == RR_RIG_LIST) {
+            double vals[RR_RIG_MAX_LIST];
+            PyObject *seq = PySequence_Fast(v, "a list");
+            Py_ssize_t k, n;
+            if (!seq) {
+                PyErr_Format(PyExc_ValueError, "Rig: %s must be a list of numbers, got %R",
+                             name, v);
                 return -1;
+            }
+            n = PySequence_Fast_GET_SIZE(seq);
+            for (k = 0; k < n && k < RR_RIG_MAX_LIST; k++) {
+                vals[k] = PyFloat_AsDouble(PySequence_Fast_GET_ITEM(seq, k));
+                if (vals[k] == -1.0 && PyErr_Occurred()) {
+                    Py_DECREF(seq);
+                    return -1;
+                }
+            }
+            Py_DECREF(seq);
+            st = n > RR_RIG_MAX_LIST ? RR_ERR_PARAM
+                                     : rr_rig_config_set_list(c, name, (int)n, vals);
+        } else if (row->type == RR_RIG_CHOICE) {
+            const char *text = PyUnicode_Check(v) ? PyUnicode_AsUTF8(v) : NULL;
+            if (!text && PyErr_Occurred())
+                return -1;
+            st = text ? rr_rig_config_set_choice(c, name, text) : RR_ERR_PARAM;
+        } else if (row->type != RR_RIG_REAL && !PyLong_Check(v)) {
+            st = RR_ERR_PARAM;                  /* ints and flags (bool is an int) */
         } else {
             double x = PyFloat_AsDouble(v);
             if (x == -1.0 && PyErr_Occurred())
                 return -1;
-            *(double *)at = x;
+            st = rr_rig_config_set(c, name, x);
+        }
+        if (st != RR_OK) {
+            PyErr_Format(PyExc_ValueError, "Rig: %s = %R: %s", name, v, rr_status_message(st));
+            return -1;
         }
     }
-    /* one sample time for every sampled element */
-    p->roller_pi.T = p->wheelset_pi.T = p->roller_enc.T = p->wheelset_enc.T = p->T;
     return 0;
 }
 
@@ -1199,7 +1186,8 @@ static void Rig_dealloc(RigObject *self)
     Py_TYPE(self)->tp_free((PyObject *)self);
 }
 
-/* Rig(data, y0, dy, params, creep, roller_speed) */
+/* Rig(data, y0, dy, params, creep, roller_speed): params {"section.key": value}
+ * (rig_config_from), the rig's parameters derived by rr_rig_params_from */
 static int Rig_init(RigObject *self, PyObject *args, PyObject *kwargs)
 {
     PyObject *dobj, *params, *creep;
@@ -1217,12 +1205,21 @@ static int Rig_init(RigObject *self, PyObject *args, PyObject *kwargs)
         return -1;
     if (parse_table(dobj, y0, dy, "Rig", &self->table) < 0)
         return -1;
-    memset(&self->p, 0, sizeof self->p);
-    if (rig_params_from(params, &self->p) < 0)
-        return -1;
+    {
+        rr_rig_config c;
+        const char *bad = NULL;
+        if (rig_config_from(params, &c) < 0)
+            return -1;
+        st = rr_rig_params_from(&c, &self->table, &self->p);
+        if (st < 0) {
+            rr_rig_config_check(&c, &bad);
+            PyErr_Format(PyExc_ValueError, "Rig: %s%s%s", bad ? bad : "", bad ? ": " : "",
+                         rr_status_message(st));
+            return -1;
+        }
+    }
     if (parse_opts(creep, "Rig", &self->p.contact.creep) < 0)
         return -1;
-    self->p.contact.table = &self->table;
     Py_INCREF(dobj);
     Py_XSETREF(self->data, dobj);
     st = rr_rig_init(&self->p, roller_speed, &self->rig);
@@ -1769,6 +1766,126 @@ static int add_double(PyObject *m, const char *name, double v)
     return 0;
 }
 
+/* The declarations of rr_rig_params.h as tuples of tuples (module constants):
+ * RIG_PARAMETERS rows (name, unit, type, default, lo, hi, lo_open, hi_open,
+ * choices, text, creep, origin) with type "real", "int", "flag", "choice" or
+ * "list" and default a float, int, bool, str or tuple of floats (a creep row:
+ * None, its text is the TOML default); RIG_SECTIONS (name, note);
+ * RIG_RETIRED (name, reason); RIG_RECORD and RIG_WHEEL_FIELDS (name, width,
+ * unit, meaning). */
+static PyObject *param_default(const rr_rig_param *r)
+{
+    Py_ssize_t k;
+    PyObject *t;
+    if (r->creep)
+        Py_RETURN_NONE;
+    switch (r->type) {
+    case RR_RIG_INT:
+        return PyLong_FromDouble(r->value);
+    case RR_RIG_FLAG:
+        return PyBool_FromLong(r->value != 0.0);
+    case RR_RIG_CHOICE:
+        return PyUnicode_FromString(r->choices[(int)r->value]);
+    case RR_RIG_LIST:
+        if (!(t = PyTuple_New(r->nlist)))
+            return NULL;
+        for (k = 0; k < r->nlist; k++) {
+            PyObject *x = PyFloat_FromDouble(r->list[k]);
+            if (!x) {
+                Py_DECREF(t);
+                return NULL;
+            }
+            PyTuple_SET_ITEM(t, k, x);
+        }
+        return t;
+    default:
+        return PyFloat_FromDouble(r->value);
+    }
+}
+
+static PyObject *param_choices(const rr_rig_param *r)
+{
+    Py_ssize_t n = 0, k;
+    PyObject *t;
+    while (r->choices && r->choices[n])
+        n++;
+    if (!(t = PyTuple_New(n)))
+        return NULL;
+    for (k = 0; k < n; k++) {
+        PyObject *x = PyUnicode_FromString(r->choices[k]);
+        if (!x) {
+            Py_DECREF(t);
+            return NULL;
+        }
+        PyTuple_SET_ITEM(t, k, x);
+    }
+    return t;
+}
+
+static PyObject *param_tuple(int i)
+{
+    static const char *const types[] = {"real", "int", "flag", "choice", "list"};
+    const rr_rig_param *r = rr_rig_param_at(i);
+    PyObject *dflt = param_default(r), *choices = param_choices(r), *res = NULL;
+    if (dflt && choices)
+        res = Py_BuildValue("(sssOddOOOzOs)", r->name, r->unit, types[r->type], dflt, r->lo,
+                            r->hi, r->lo_open ? Py_True : Py_False,
+                            r->hi_open ? Py_True : Py_False, choices, r->text,
+                            r->creep ? Py_True : Py_False, r->origin);
+    Py_XDECREF(dflt);
+    Py_XDECREF(choices);
+    return res;
+}
+
+static PyObject *section_tuple(int i)
+{
+    const rr_rig_section *s = rr_rig_section_at(i);
+    return Py_BuildValue("(ss)", s->name, s->note);
+}
+
+static PyObject *retired_tuple(int i)
+{
+    const rr_rig_retired *s = rr_rig_retired_at(i);
+    return Py_BuildValue("(ss)", s->name, s->reason);
+}
+
+static PyObject *field_tuple(const rr_rig_field *f)
+{
+    return Py_BuildValue("(siss)", f->name, f->width, f->unit, f->meaning);
+}
+
+static PyObject *record_tuple(int i)
+{
+    return field_tuple(rr_rig_record_field(i));
+}
+
+static PyObject *wheel_tuple(int i)
+{
+    return field_tuple(rr_wheel_field(i));
+}
+
+/* module constant `name`: the tuple of row(i), 0 <= i < n */
+static int add_rows(PyObject *m, const char *name, int n, PyObject *(*row)(int))
+{
+    PyObject *t = PyTuple_New(n);
+    int i;
+    if (!t)
+        return -1;
+    for (i = 0; i < n; i++) {
+        PyObject *x = row(i);
+        if (!x) {
+            Py_DECREF(t);
+            return -1;
+        }
+        PyTuple_SET_ITEM(t, i, x);
+    }
+    if (PyModule_AddObject(m, name, t) < 0) {
+        Py_DECREF(t);
+        return -1;
+    }
+    return 0;
+}
+
 PyMODINIT_FUNC PyInit__core(void)
 {
     PyObject *m;
@@ -1809,6 +1926,12 @@ PyMODINIT_FUNC PyInit__core(void)
         || PyModule_AddIntConstant(m, "RIG_PROFILE_POINTS", RR_RIG_PROFILE_POINTS) < 0
         || PyModule_AddIntConstant(m, "RIG_NSTATE", RR_RIG_NSTATE) < 0
         || PyModule_AddIntConstant(m, "REC_COUNT", RR_REC_COUNT) < 0
+        || PyModule_AddIntConstant(m, "RIG_MAX_LIST", RR_RIG_MAX_LIST) < 0
+        || add_rows(m, "RIG_PARAMETERS", rr_rig_param_count(), param_tuple) < 0
+        || add_rows(m, "RIG_SECTIONS", rr_rig_section_count(), section_tuple) < 0
+        || add_rows(m, "RIG_RETIRED", rr_rig_retired_count(), retired_tuple) < 0
+        || add_rows(m, "RIG_RECORD", RR_REC_COUNT, record_tuple) < 0
+        || add_rows(m, "RIG_WHEEL_FIELDS", RR_WHEEL_NFIELDS, wheel_tuple) < 0
         || PyModule_AddIntConstant(m, "ODE_ROS2", RR_ODE_ROS2) < 0
         || PyModule_AddIntConstant(m, "ODE_TRBDF2", RR_ODE_TRBDF2) < 0
         || PyModule_AddIntConstant(m, "ODE_LINEULER", RR_ODE_LINEULER) < 0

@@ -36,6 +36,7 @@ import sys
 import time
 import warnings
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -43,7 +44,6 @@ from . import _core
 from ._errors import RollerRigError, RollerRigWarning, status_message
 from ._optional import require
 from .contact import METHODS, _as_float, _options
-from .rig_contact import elastic_constants
 from .geometry import MAX_ROWS, ContactTable, RigGeometry
 from .profiles import Profile
 
@@ -52,47 +52,15 @@ try:
 except ImportError:                                     # Python < 3.11
     import tomli as tomllib
 
-__all__ = ["default_parameters", "load_parameters", "check_parameters", "build_rig", "Rig",
+__all__ = ["PARAMETERS", "default_parameters", "load_parameters", "check_parameters", "build_rig", "Rig",
            "simulate", "replay", "RigResult", "RECORD_FIELDS", "RECORD_UNITS",
            "RECORD_BYTES_CAP"]
 
 DEFAULTS_PATH = os.path.join(os.path.dirname(__file__), "data", "rig_default.toml")
 
-#: the per-sample record of the C rig (csrc/rig/rr_rig.h, enum rr_rig_record_index):
-#: (name, unit, meaning); each sample is recorded at its end
-RECORD = (
-    ("time", "s", "time at the end of the sample"),
-    ("creepage", "-", "longitudinal creepage cx of the contact model, mean of both contacts "
-     "(Kalker's sign: > 0 braking, < 0 traction)"),
-    ("xi_est", "-", "the creepage controller's estimate from the encoders (eq. 16), in the "
-     "drive's sense (> 0)"),
-    ("xi_ref", "-", "the creepage target (> 0; NaN before the first target starts)"),
-    ("roller_speed", "m/s", "roller surface speed, roller_spin R0"),
-    ("wheelset_speed", "m/s", "wheel surface speed, spin r0"),
-    ("fx", "N", "longitudinal creep force on the wheelset, both wheels (on the wheel: < 0 "
-     "braking, > 0 traction)"),
-    ("fy", "N", "lateral creep force on the wheelset, both wheels"),
-    ("normal_load_left", "N", "normal load of the left wheel"),
-    ("normal_load_right", "N", "normal load of the right wheel"),
-    ("adhesion", "-", "adhesion coefficient |fx| / (normal_load_left + normal_load_right)"),
-    ("torque_roller", "N m", "roller drive torque (after its lag)"),
-    ("torque_wheelset", "N m", "wheelset drive torque (after its lag)"),
-    ("w_ref", "rad/s", "wheelset speed reference of the creepage controller (eq. 15)"),
-    ("x", "m", "wheelset longitudinal position"),
-    ("y", "m", "wheelset lateral position (+: to the left)"),
-    ("yaw", "rad", "wheelset yaw angle"),
-    ("creepage_left", "-", "longitudinal creepage of the left contact"),
-    ("creepage_right", "-", "longitudinal creepage of the right contact"),
-    ("torque_ref_roller", "N m", "roller torque reference held over the sample"),
-    ("torque_ref_wheelset", "N m", "wheelset torque reference held over the sample"),
-    ("vx", "m/s", "wheelset longitudinal velocity"),
-    ("vy", "m/s", "wheelset lateral velocity"),
-    ("yaw_rate", "rad/s", "wheelset yaw rate"),
-    ("spin", "rad/s", "wheelset angular speed about its axle"),
-    ("roller_spin", "rad/s", "roller angular speed"),
-    ("sample_status", "-", "status of the sample: 0 OK, > 0 warning, < 0 error "
-     "(rollerrig.status_message)"),
-)
+#: the per-sample record of the C rig (csrc/rig/rr_rig_params.c, in the order of
+#: enum rr_rig_record_index): (name, unit, meaning); each sample is recorded at its end
+RECORD = tuple((name, unit, meaning) for name, _, unit, meaning in _core.RIG_RECORD)
 RECORD_FIELDS = tuple(name for name, _, _ in RECORD)
 #: the unit of each record field ("-": dimensionless)
 RECORD_UNITS = {name: unit for name, unit, _ in RECORD}
@@ -107,13 +75,34 @@ _BYTES_PER_SAMPLE = 8 * len(RECORD_FIELDS)
 # (14 MB) whatever the run's length and decimation
 _CHUNK_SAMPLES = 1 << 16
 
-ODE_METHODS = {"ros2": _core.ODE_ROS2, "trbdf2": _core.ODE_TRBDF2,
-               "lineuler": _core.ODE_LINEULER}
 
-MIN_DT, MAX_DT = 1e-6, 0.1          # control sample time [s]
-MAX_DURATION = 1e5                  # simulated time [s] (27.8 h)
+class RigParameter(NamedTuple):
+    """A row of the rig's parameter declaration (csrc/rig/rr_rig_params.c)."""
+    name: str           #: "section.key" of rig_default.toml
+    unit: str           #: "-" dimensionless, "" a name or a flag
+    type: str           #: "real", "int", "flag", "choice" or "list"
+    default: object     #: float, int, bool, str or tuple of floats (None: a creep row)
+    lo: float           #: range of a real, an int or each entry of a list
+    hi: float
+    lo_open: bool
+    hi_open: bool
+    choices: tuple      #: the names of a choice
+    text: str           #: the default as TOML text (None: a choice, its name)
+    creep: bool         #: an option of the creep-force method (rollerrig.contact)
+    origin: str         #: where the default comes from
+
+
+#: every parameter of the rig, declared once in C: name, unit, type,
+#: default, range, origin (rig_default.toml is generated from it)
+PARAMETERS = tuple(RigParameter(*row) for row in _core.RIG_PARAMETERS)
+_PARAMETER = {p.name: p for p in PARAMETERS}
+
+#: the integrators of integration.method
+ODE_METHODS = _PARAMETER["integration.method"].choices
+#: control sample time [s], simulated time [s] (27.8 h)
+MIN_DT, MAX_DT = _PARAMETER["scenario.control_sample_time_s"][4:6]
+MAX_DURATION = _PARAMETER["scenario.duration_s"].hi
 MAX_PARAMETER_FILE_BYTES = 1 << 20  # the default file is 12 kB
-_INT32_MAX = 2 ** 31 - 1            # the C fields are int
 
 
 # ------------------------------------------------------------------ reading files
@@ -202,9 +191,68 @@ def load_parameters(path):
         raise _error(f"load_parameters: {os.fspath(path)}", p.problems) from None
 
 
+def _default_value(p):
+    if p.default is None:                        # a creep row: its TOML text
+        return tomllib.loads(f"v = {p.text}")["v"]
+    return list(p.default) if p.type == "list" else p.default
+
+
 @functools.lru_cache(maxsize=1)
 def _defaults():
-    return _read_parameter_file(DEFAULTS_PATH)
+    """The defaults as a nested dict, from the C declaration (PARAMETERS)."""
+    D = {}
+    for p in PARAMETERS:
+        section, key = p.name.split(".")
+        D.setdefault(section, {})[key] = _default_value(p)
+    return D
+
+
+def defaults_toml():
+    """The text of rollerrig/data/rig_default.toml: the declaration of
+    PARAMETERS (csrc/rig/rr_rig_params.c) with every origin as a comment.
+    tests/test_rig_params.py checks that the shipped file equals it;
+    rollerrig.rig.write_defaults() rewrites it."""
+    notes = dict(_core.RIG_SECTIONS)
+    lines = [line.rstrip() for line in _TOML_HEADER.splitlines()]
+    section = None
+    for p in PARAMETERS:
+        sec, key = p.name.split(".")
+        if sec != section:
+            section = sec
+            lines += ["", f"[{sec}]"]
+            lines += [f"# {line}" for line in _wrap(notes.get(sec, ""), 93)]
+        text = p.text if p.text is not None else f'"{p.default}"'
+        lines.append(f"{key} = {text}".ljust(32) + f" # {p.origin}")
+    return "\n".join(lines) + "\n"
+
+
+def _wrap(text, width):
+    import textwrap
+    return textwrap.wrap(text, width) if text else []
+
+
+_TOML_HEADER = """\
+# Default parameters of the rollerrig model of the Politecnico di Torino 1/5 scaled roller rig
+# (Bosso, Gugliotta, Soma, Spiryagin, "Model of scaled test rig for real time applications",
+# the "seed paper"; section and equation numbers below are the paper's).
+#
+# GENERATED from the declaration of the rig's parameters, csrc/rig/rr_rig_params.c (names,
+# units, defaults, ranges, origins): edit that table, then run
+#     python -c "import rollerrig.rig; rollerrig.rig.write_defaults()"
+# (tests/test_rig_params.py checks that this file is current).  A copy of this file, edited, is
+# a valid scenario file (rollerrig simulate --scenario my.toml).
+#
+# SI units throughout (m, kg, s, N, Pa, rad); the unit is in each key's name.
+# Every value names its origin:
+#   "paper ..."      a number printed in the seed paper;
+#   "scaled ..."     full-scale value X / factor, by the similarity law of docs/parameters.md
+#                    (same material, same contact stresses, same speed; length factor 5),
+#                    from the Manchester benchmark vehicle 1 (docs/parameters.md);
+#   "cited ..."      a published or public source, named in the comment;
+#   "choice ..."     a value this project chose, with the reason.
+# The paper does not publish the rig's masses, inertias, radii, stiffnesses or profiles
+# (shared/reference/rig-parameters.csv: NOT_FOUND rows). Derivations, checks and
+# uncertainties: docs/parameters.md."""
 
 
 def default_parameters():
@@ -256,96 +304,55 @@ def _flag(v):
     return None if isinstance(v, bool) else "must be true or false"
 
 
-def _numbers(item, need):
-    """A check: a non-empty list of numbers, each passing `item`."""
+def _numbers(item, need, most=math.inf):
+    """A check: a non-empty list of numbers (at most `most`), each passing `item`."""
     def check(v):
-        if not isinstance(v, (list, tuple)) or not v or any(item(x) for x in v):
+        if not isinstance(v, (list, tuple)) or not v or len(v) > most \
+                or any(item(x) for x in v):
             return f"must be a non-empty list of {need}"
         return None
     return check
 
 
-_POSITIVE = _real(0.0, lo_open=True)
-_NONNEG = _real(0.0)
-
-#: the check of every key the model reads
-_RULES = {
-    "scenario": {
-        "roller_speed_m_s": _real(),
-        "targets": _numbers(_real(0.0, 1.0, hi_open=True), "creepages in [0, 1)"),
-        "target_start_s": _numbers(_NONNEG, "times >= 0 s"),
-        "duration_s": _real(0.0, MAX_DURATION, lo_open=True),
-        "mu0": _real(0.0, _core.FRICTION_MAX, lo_open=True),
-        "drive_mode": _choice("braking", "traction"),
-        "control_sample_time_s": _real(MIN_DT, MAX_DT),
-        "g_m_s2": _NONNEG,
-    },
-    "wheelset": {
-        "mass_kg": _POSITIVE, "spin_inertia_kg_m2": _POSITIVE,
-        "yaw_inertia_kg_m2": _POSITIVE, "wheel_radius_m": _POSITIVE,
-        "contact_half_spacing_m": _POSITIVE, "axlebox_half_spacing_m": _POSITIVE,
-        "profile": _choice("conical"), "conicity": _NONNEG,
-        "profile_half_width_m": _POSITIVE,
-    },
-    "roller": {
-        "radius_m": _POSITIVE, "profile": _choice("crowned cylinder"),
-        "crown_radius_m": _POSITIVE, "inertia_kg_m2": _POSITIVE,
-    },
-    "suspension": {
-        **{k: _NONNEG for k in ("kx_N_per_m", "ky_N_per_m", "kz_N_per_m", "cx_N_s_per_m",
-                                "cy_N_s_per_m", "cz_N_s_per_m", "preload_total_N")},
-    },
-    "contact": {
-        "youngs_modulus_Pa": _POSITIVE, "poisson_ratio": _real(0.0, 0.5),
-        "creep_method": _choice(*METHODS),
-        "fastsim_nx": _integer(1, _core.FASTSIM_MAX_GRID),
-        "fastsim_ny": _integer(1, _core.FASTSIM_MAX_GRID),
-        "fastsim_slip_speed": _choice("rigid", "local"),
-        "friction_law": _choice("polach_falling", "coulomb"),
-        "polach_A": _real(0.0, 1.0, lo_open=True), "polach_B_s_per_m": _real(0.0, _core.FRICTION_MAX),
-        "polach_kA": _real(0.0, 1.0, lo_open=True), "polach_kS": _real(0.0, 1.0, lo_open=True),
-        "min_rolling_speed_m_s": _POSITIVE,
-    },
-    **{drive: {
-        "kp_N_m_s_per_rad": _NONNEG, "ki_N_m_s_per_rad": _NONNEG,
-        "torque_limit_N_m": _POSITIVE, "lag_time_constant_s": _POSITIVE,
-        "encoder_counts_per_rev": _integer(1, _INT32_MAX),
-        **({"drive_inertia_kg_m2": _NONNEG} if drive == "wheelset_drive" else {}),
-    } for drive in ("roller_drive", "wheelset_drive")},
-    "creepage_controller": {
-        "alpha": _NONNEG, "beta": _NONNEG, "min_reference_speed_m_s": _POSITIVE,
-    },
-    "integration": {
-        "method": _choice(*ODE_METHODS), "newton_iterations": _integer(0, 10),
-        "linear_first_stage": _flag, "newton_model": _flag, "substeps": _integer(1, 1000),
-        "table_half_range_m": _POSITIVE, "table_rows": _integer(2, 100_000),
-    },
-}
-
-#: keys (or whole sections) that document where the defaults come from and
-#: that the model does not read, with what sets the quantity instead: giving
-#: them another value is refused, since it would change nothing
-DOCUMENTATION = {
-    "similarity": "it documents the similarity law the defaults were scaled by",
-    "full_scale_reference": "it documents the full-scale values the defaults were scaled from",
-    "scenario.initial_condition": "simulate's start argument sets it: 'rolling' or 'rest'",
-    "wheelset.roll_inertia_kg_m2": "the wheelset's roll follows the contact constraint; the "
-                                   "model has no roll dynamics",
-    "wheelset.contact_angle_rad": "the cone's angle follows from wheelset.conicity",
-    "roller.contact_half_spacing_m": "the crowns sit under wheelset.contact_half_spacing_m",
-    "roller.width_m": "it entered the estimate of roller.inertia_kg_m2 only",
-    "roller.rigidly_joined": "the model's two rollers are always on one shaft",
-    "suspension.preload_per_axlebox_N": "it is half of suspension.preload_total_N, which acts",
-    "contact.normal_model": "the model's normal loads are always the 'balance' ones",
-    "roller_drive.gear_ratio": "gains, torques and inertias are referred to the roller "
-                               "axle, ratio 1",
-    "wheelset_drive.gear_ratio": "gains, torques and inertias are referred to the wheelset "
-                                 "axle, ratio 1",
-}
+def _rule(p):
+    """The check of a declared parameter (PARAMETERS row)."""
+    if p.type == "real":
+        return _real(p.lo, p.hi, p.lo_open, p.hi_open)
+    if p.type == "int":
+        return _integer(int(p.lo), int(p.hi))
+    if p.type == "flag":
+        return _flag
+    if p.type == "choice":
+        return _choice(*p.choices)
+    entry = _real(p.lo, p.hi, p.lo_open, p.hi_open)
+    need = entry(math.nan)[len("must be a finite number"):]
+    return _numbers(entry, f"at most {_core.RIG_MAX_LIST} numbers{need}",
+                    _core.RIG_MAX_LIST)
 
 
-def _documentation(name):
-    return DOCUMENTATION.get(name) or DOCUMENTATION.get(name.split(".", 1)[0])
+#: the check of every key the model reads: the declared ones (PARAMETERS),
+#: and the creep-force method's options
+_RULES = {}
+for _p in PARAMETERS:
+    if not _p.creep:
+        _section, _key = _p.name.split(".")
+        _RULES.setdefault(_section, {})[_key] = _rule(_p)
+_RULES["contact"].update({
+    "creep_method": _choice(*METHODS),
+    "fastsim_nx": _integer(1, _core.FASTSIM_MAX_GRID),
+    "fastsim_ny": _integer(1, _core.FASTSIM_MAX_GRID),
+    "fastsim_slip_speed": _choice("rigid", "local"),
+    "polach_kA": _real(0.0, 1.0, lo_open=True), "polach_kS": _real(0.0, 1.0, lo_open=True),
+})
+
+#: keys (or whole sections) the parameters no longer have, since they acted
+#: on nothing, with what sets the quantity instead (csrc/rig/rr_rig_params.c):
+#: giving one is refused with that reason
+RETIRED = dict(_core.RIG_RETIRED)
+
+
+def _retired(name):
+    return RETIRED.get(name) or RETIRED.get(name.split(".", 1)[0])
 
 
 def _merge(base, over, problems, where=""):
@@ -353,6 +360,11 @@ def _merge(base, over, problems, where=""):
     to `problems` for each key that cannot be taken."""
     for key, value in over.items():
         name = f"{where}{key}"
+        reason = _retired(name) if isinstance(key, str) else None
+        if reason is not None:
+            problems.append(f"{name} does not act on the model ({reason}); it is no longer a "
+                            f"parameter, got {_short(value)}")
+            continue
         if not isinstance(key, str) or key not in base:
             near = difflib.get_close_matches(str(key), [k for k in base if isinstance(k, str)],
                                              n=1)
@@ -369,11 +381,6 @@ def _merge(base, over, problems, where=""):
             continue
         if isinstance(value, dict):
             problems.append(f"{name} is a value, not a section, got a table")
-            continue
-        reason = _documentation(name)
-        if reason is not None and value != default:
-            problems.append(f"{name} does not act on the model ({reason}); it cannot be "
-                            f"changed from {default!r}, got {_short(value)}")
             continue
         base[key] = value
 
@@ -417,10 +424,9 @@ def check_parameters(params=None, *, source="check_parameters: params"):
     `source`, that lists every problem at once: unknown keys, values out of
     range (the message names the key, the range and the value), a section
     given a value or the reverse, the lengths and order of
-    scenario.targets / target_start_s, and a documentation-only key
-    (DOCUMENTATION: the similarity law, the full-scale reference, the gear
-    ratios, ...) given a value other than its default: such a key does not
-    act on the model.
+    scenario.targets / target_start_s, and a key the parameters no longer
+    have (RETIRED: the similarity law, the full-scale reference, the gear
+    ratios, ...): such a key acted on nothing.
     """
     if params is not None and not isinstance(params, dict):
         raise RollerRigError(f"{source} must be a nested dict (or, for simulate and "
@@ -461,42 +467,15 @@ def _parameters(func, params):
 # ------------------------------------------------------------------ the C rig
 
 def _c_params(P, dt, substeps, ode):
-    """The C rig's parameter dict (rollerrig/_core.c, rig_fields) from checked parameters."""
-    def n(section, key):
-        return float(P[section][key])
-    C = P["contact"]
-    if C["friction_law"] == "coulomb":
-        A, B = 1.0, 0.0
-    else:
-        A, B = n("contact", "polach_A"), n("contact", "polach_B_s_per_m")
-    nu = n("contact", "poisson_ratio")
-    return {
-        "mass": n("wheelset", "mass_kg"),
-        "Iyy": n("wheelset", "spin_inertia_kg_m2") + n("wheelset_drive", "drive_inertia_kg_m2"),
-        "Izz": n("wheelset", "yaw_inertia_kg_m2"),
-        "axlebox_y": n("wheelset", "axlebox_half_spacing_m"),
-        **{k: n("suspension", f"{k}_N_per_m") for k in ("kx", "ky", "kz")},
-        **{k: n("suspension", f"{k}_N_s_per_m") for k in ("cx", "cy", "cz")},
-        "preload": n("suspension", "preload_total_N"), "g": n("scenario", "g_m_s2"),
-        "roller_inertia": n("roller", "inertia_kg_m2"), "R0": n("roller", "radius_m"),
-        **dict(zip(("estar", "G"), elastic_constants(n("contact", "youngs_modulus_Pa"), nu))),
-        "nu": nu, "mu0": n("scenario", "mu0"), "A": A, "B": B,
-        "vmin": n("contact", "min_rolling_speed_m_s"),
-        "T": float(dt), "nsub": int(substeps), "ode_method": ODE_METHODS[ode],
-        "newton_iters": int(P["integration"]["newton_iterations"]),
-        "linear_tr": int(P["integration"]["linear_first_stage"]),
-        "newton_model": int(P["integration"]["newton_model"]),
-        **{f"{d}_{c}": n(f"{d}_drive", key) for d in ("roller", "wheelset")
-           for c, key in (("Kp", "kp_N_m_s_per_rad"), ("KI", "ki_N_m_s_per_rad"),
-                          ("Tmax", "torque_limit_N_m"), ("tau", "lag_time_constant_s"))},
-        "roller_counts": int(P["roller_drive"]["encoder_counts_per_rev"]),
-        "wheelset_counts": int(P["wheelset_drive"]["encoder_counts_per_rev"]),
-        "r_w": n("wheelset", "wheel_radius_m"), "r_r": n("roller", "radius_m"),
-        "ctl_alpha": n("creepage_controller", "alpha"),
-        "ctl_beta": n("creepage_controller", "beta"),
-        "ctl_vmin": n("creepage_controller", "min_reference_speed_m_s"),
-        "sense": -1 if P["scenario"]["drive_mode"] == "braking" else 1,
-    }
+    """The C rig's primary values {"section.key": value} (csrc/rig/rr_rig_params.h,
+    rr_rig_config) of checked parameters, with the call's sample time,
+    substeps and integrator; the C side derives the rig's parameters."""
+    cp = {p.name: P[p.name.split(".")[0]][p.name.split(".")[1]]
+          for p in PARAMETERS if not p.creep}
+    cp["scenario.control_sample_time_s"] = float(dt)
+    cp["integration.substeps"] = int(substeps)
+    cp["integration.method"] = ode
+    return cp
 
 
 #: the parameters that make the rig's profiles and contact table
@@ -708,13 +687,13 @@ def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, c
         V = P["scenario"]["roller_speed_m_s"] if V is None else V
         table = _geometry(P)
         cp = _c_params(P, dt, int(substeps), ode)
-        # eq. 15-16 with the rolling radii of the centred wheelset, as a rig is
-        # calibrated: the profiles' nominal radii would bias the creepage by
+        # the C side (rr_rig_params_set_table) takes eq. 15-16's radii at the
+        # centred wheelset's rolling radii, as a rig is calibrated: the
+        # profiles' nominal radii would bias the creepage by
         # (r - r0)/r0 + (R0 - R)/R0, about 0.2 % of creepage here
-        centre = table.lookup(0.0)
-        cp["r_w"], cp["r_r"] = float(centre.left.r[0]), float(centre.left.R[0])
         return table, _core.Rig(table.data, table.y0, table.dy, cp, c_opts,
-                                V / cp["R0"] if start == "rolling" else 0.0)
+                                V / float(P["roller"]["radius_m"]) if start == "rolling"
+                                else 0.0)
     given_V = None if roller_speed is None else V      # None: the scenario's own
     try:
         table, rig = make(P, given_V)
@@ -1090,12 +1069,14 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     t0 = time.perf_counter()
     P = _parameters("simulate", params)
     S = P["scenario"]
+    given_dt = dt is not None
     dt = _check_dt("simulate", dt if dt is not None else S["control_sample_time_s"])
     duration = _real_arg("simulate", "duration", duration if duration is not None
                          else S["duration_s"], 0.0, MAX_DURATION, lo_open=True, unit="s")
     if duration < dt * (1.0 - 1e-9):
         raise RollerRigError(f"simulate: duration = {duration:g} s is shorter than one "
-                             f"sample (dt = {dt:g} s)")
+                             f"sample (dt = {dt:g} s)"
+                             f"{'' if given_dt else ' of scenario.control_sample_time_s'}")
     n = max(1, int(round(duration / dt)))
     targets, target_times = _target_schedule(S, duration, targets, target_times)
     record_every, kept = _record_plan(n, dt, record_every, max_record_bytes)
@@ -1170,3 +1151,11 @@ def replay(res, *, method=None, nx=None, ny=None, **creep):
                        mu=P["scenario"]["mu0"], friction=friction,
                        E=C["youngs_modulus_Pa"], nu=C["poisson_ratio"],
                        vmin=C["min_rolling_speed_m_s"], **opts)
+
+
+
+def write_defaults(path=DEFAULTS_PATH):
+    """Rewrite rig_default.toml from the C declaration (defaults_toml)."""
+    with open(path, "w", encoding="utf-8") as fh:
+        fh.write(defaults_toml())
+    return path

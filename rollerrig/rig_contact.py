@@ -48,31 +48,17 @@ class RigPose(NamedTuple):
     w: np.ndarray        #: wheelset angular velocity [rad/s], (3, ...)
 
 
-class WheelContact(NamedTuple):
-    p: np.ndarray        #: contact point in the rig [m], (3, ...)
-    theta: np.ndarray    #: its angle round the roller axis from the top [rad]
-    t1: np.ndarray       #: rolling direction (unit, rig frame), (3, ...)
-    t2: np.ndarray       #: lateral direction in the contact plane, (3, ...)
-    n: np.ndarray        #: normal t1 x t2, into the wheel, (3, ...)
-    cx: np.ndarray       #: longitudinal creepage [-]
-    cy: np.ndarray       #: lateral creepage [-]
-    cphi: np.ndarray     #: spin creepage [rad/m]
-    V: np.ndarray        #: rolling speed used for the creepages [m/s]
-    N: np.ndarray        #: normal load [N]
-    a: np.ndarray        #: contact ellipse semi-axis along t1 [m]
-    b: np.ndarray        #: along t2 [m]
-    p0: np.ndarray       #: peak pressure [Pa]
-    fx: np.ndarray       #: creep force on the wheel along t1 [N]
-    fy: np.ndarray       #: along t2 [N]
-    mz: np.ndarray       #: spin moment on the wheel about n [N m]
-    force: np.ndarray    #: contact force on the wheelset, rig frame [N], (3, ...)
-    moment: np.ndarray   #: its moment about the wheelset centre [N m], (3, ...)
-    r: np.ndarray        #: wheel rolling radius [m]
-    R: np.ndarray        #: roller radius at the contact [m]
-    delta: np.ndarray    #: contact angle [rad]
-    s_wheel: np.ndarray  #: profile coordinates of the contact point [m]
-    s_roller: np.ndarray
-    status: np.ndarray   #: this wheel's status
+#: the per-wheel block of the binding, declared in C (csrc/rig/rr_rig_params.c,
+#: rr_wheel_field): (name, width, unit, meaning), width 3 for a vector in the
+#: rig frame (shape (3, ...)), 1 for a scalar
+WHEEL_FIELDS = _core.RIG_WHEEL_FIELDS
+
+#: one wheel's contact: the fields of WHEEL_FIELDS, then its status
+WheelContact = NamedTuple("WheelContact", [(name, np.ndarray) for name, *_ in WHEEL_FIELDS]
+                          + [("status", np.ndarray)])
+WheelContact.__doc__ = "One wheel's contact; fields, units [SI] and meanings:\n" + "\n".join(
+    f"    {name} [{unit}]{' (3, ...)' if width == 3 else ''}: {meaning}"
+    for name, width, unit, meaning in WHEEL_FIELDS) + "\n    status: this wheel's status"
 
 
 class RigContact(NamedTuple):
@@ -82,19 +68,12 @@ class RigContact(NamedTuple):
     status: np.ndarray   #: the worse of the two wheels' statuses
 
 
-# rows of the binding's per-wheel block (rollerrig/_core.c, store_wheel)
-_VECTORS = {"p": 0, "t1": 4, "t2": 7, "n": 10, "force": 24, "moment": 27}
-_SCALARS = {"theta": 3, "cx": 13, "cy": 14, "cphi": 15, "V": 16, "N": 17, "a": 18, "b": 19,
-            "p0": 20, "fx": 21, "fy": 22, "mz": 23, "r": 30, "R": 31, "delta": 32,
-            "s_wheel": 33, "s_roller": 34}
-
-
 def _wheel(block, status, shape):
-    vals = {}
-    for name, k in _VECTORS.items():
-        vals[name] = block[k:k + 3].reshape((3,) + shape)
-    for name, k in _SCALARS.items():
-        vals[name] = block[k].reshape(shape)
+    vals, k = {}, 0
+    for name, width, _, _ in WHEEL_FIELDS:
+        vals[name] = (block[k:k + 3].reshape((3,) + shape) if width == 3
+                      else block[k].reshape(shape))
+        k += width
     return WheelContact(**vals, status=status.reshape(shape))
 
 

@@ -52,8 +52,8 @@ import numpy as np
 from . import contact
 from ._errors import RollerRigError, check_status
 from ._optional import require
-from .rig import (CREEP_OPTIONS, _parameter_problems, check_parameters,
-                  load_parameters, simulate)
+from .rig import (CREEP_OPTIONS, PARAMETERS, _parameter_problems, _retired,
+                  check_parameters, load_parameters, simulate)
 
 __all__ = ["sweep", "sweep_rig", "UNITS", "FUNCTION_UNITS", "FUNCTIONS"]
 
@@ -72,25 +72,19 @@ UNITS = {
     "E": "Pa", "E2": "Pa", "nu2": "-", "p0": "Pa", "delta": "m",
     "a_over_b": "-", "c11": "-", "c22": "-", "c23": "-",
     "k0": "-", "alpha_inf": "-", "beta": "-", "kA": "-", "kS": "-",
-    # sweep_rig: simulate's arguments, the summary metrics, dimensionless parameters
+    # sweep_rig: simulate's arguments, the summary metrics (a parameter path's
+    # unit is its declaration's, rollerrig.rig.PARAMETERS)
     "duration": "s", "dt": "s", "roller_speed": "m/s", "nx": "-", "ny": "-",
     "substeps": "-", "target": "-", "reached": "-", "settling_s": "s", "adhesion": "-",
-    "peak_force_over_muN": "-", "mu0": "-", "conicity": "-", "poisson_ratio": "-",
-    "alpha": "-", "polach_A": "-", "polach_kA": "-", "polach_kS": "-", "fastsim_nx": "-",
-    "fastsim_ny": "-", "table_rows": "-", "gear_ratio": "-",
+    "peak_force_over_muN": "-", "alpha": "-",
 }
+_PARAMETER_UNITS = {p.name: p.unit or "-" for p in PARAMETERS}
 
 #: names whose meaning is the function's: hertz's A, B are its curvature sums
 FUNCTION_UNITS = {"hertz": {"A": "1/m", "B": "1/m"}}
 
 #: the grid axes of creep_forces that set a field of its friction law
 FRICTION_AXES = ("friction.A", "friction.B")
-
-# unit suffixes of the parameter file's keys (rig_default.toml), longest first
-_SUFFIXES = (("_N_m_s_per_rad", "N m s/rad"), ("_N_s_per_m", "N s/m"), ("_N_per_m", "N/m"),
-             ("_s_per_m", "s/m"), ("_kg_m2", "kg m^2"), ("_m_s2", "m/s^2"), ("_m_s", "m/s"),
-             ("_N_m", "N m"), ("_rad", "rad"), ("_kg", "kg"), ("_Pa", "Pa"), ("_N", "N"),
-             ("_m", "m"), ("_s", "s"))
 
 _STATUS_ATTRS = {"long_name": "C status per case: 0 OK, > 0 warning, < 0 error (result NaN)"}
 _RIG_ATTRS = {
@@ -111,20 +105,16 @@ CHUNK_CASES = 100_000      # cases per chunk by default: ~0.15 s of FASTSIM 20 x
 
 
 def _units(name, func=None):
-    """The units of a name of function `func`'s, or of a parameter path, or
-    None when unknown."""
+    """The units of a name of function `func`'s, or of a parameter path (its
+    declaration's, rollerrig.rig.PARAMETERS), or None when unknown."""
     name = str(name)
     if name in FUNCTION_UNITS.get(func, {}):
         return FUNCTION_UNITS[func][name]
+    if name in _PARAMETER_UNITS:
+        return _PARAMETER_UNITS[name]
     if name in UNITS:
         return UNITS[name]
-    leaf = name.rsplit(".", 1)[-1]
-    if leaf in UNITS:
-        return UNITS[leaf]
-    for suffix, unit in _SUFFIXES:
-        if leaf.endswith(suffix):
-            return unit
-    return None
+    return UNITS.get(name.rsplit(".", 1)[-1])
 
 
 def _axes(func, grid, numeric):
@@ -625,6 +615,10 @@ def sweep_rig(grid, *, backend="threads", workers=None, client=None, progress=Tr
     base = copy.deepcopy(base)
     full = check_parameters(base, source="sweep_rig: params")
     for name, ax in zip(names, axes):
+        if "." in name and _retired(name) is not None:
+            _, problems = _parameter_problems(_with_value(base, name, ax[0].item()))
+            raise RollerRigError(f"sweep_rig: grid axis '{name}' = {ax[0].item()!r}: "
+                                 f"{problems[0]}")
         if "." in name:
             node, parts = full, name.split(".")
             for depth, part in enumerate(parts):

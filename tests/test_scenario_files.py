@@ -9,7 +9,7 @@ import pytest
 
 import rollerrig as rr
 from rollerrig import cli
-from rollerrig.rig import DEFAULTS_PATH, DOCUMENTATION, check_parameters, load_parameters
+from rollerrig.rig import DEFAULTS_PATH, RETIRED, check_parameters, load_parameters
 
 from _child import run_python
 
@@ -79,8 +79,10 @@ def test_unknown_keys_suggest_the_nearest():
     ("integration", "table_rows", 1e3, "integration.table_rows must be an integer from 2 to "
                                        "100000, got 1000.0"),
     ("integration", "table_rows", 1, "integration.table_rows must be an integer from 2"),
-    ("scenario", "targets", ["a"], "scenario.targets must be a non-empty list of creepages "
-                                   "in [0, 1), got ['a']"),
+    ("scenario", "targets", ["a"], "scenario.targets must be a non-empty list of at most 256 "
+                                   "numbers in [0, 1), got ['a']"),
+    ("scenario", "targets", [0.01] * 257, "scenario.targets must be a non-empty list of at "
+                                          "most 256 numbers"),
     ("scenario", "targets", [], "scenario.targets must be a non-empty list"),
     ("scenario", "targets", 0.02, "scenario.targets must be a non-empty list"),
     ("roller_drive", "encoder_counts_per_rev", 2 ** 63,
@@ -126,18 +128,20 @@ def test_sections_and_values_are_not_confused():
         rr.simulate(params=[("scenario", {})])
 
 
-def test_every_key_read_has_a_rule_or_is_documentation():
-    """A key added to rig_default.toml without a rule would go unchecked."""
+def test_every_key_read_has_a_rule_and_none_is_retired():
+    """A key added to rig_default.toml without a rule would go unchecked; a
+    retired key must not come back."""
     from rollerrig.rig import _RULES
     for section, keys in rr.default_parameters().items():
+        assert section not in RETIRED
         for key in keys:
             name = f"{section}.{key}"
-            assert (key in _RULES.get(section, {})) != (
-                name in DOCUMENTATION or section in DOCUMENTATION), name
+            assert key in _RULES.get(section, {}) and name not in RETIRED, name
+    assert {s for s in _RULES} == set(rr.default_parameters())
     check_parameters({})                           # the defaults pass their own rules
 
 
-# ------------------------------------------------------------------ documentation keys
+# ------------------------------------------------------------------ retired keys
 
 @pytest.mark.parametrize("section, key, value", [
     ("roller_drive", "gear_ratio", 2.0), ("wheelset_drive", "gear_ratio", 3.0),
@@ -147,14 +151,25 @@ def test_every_key_read_has_a_rule_or_is_documentation():
     ("similarity", "length_factor", 4.0), ("full_scale_reference", "wheelset_mass_kg", 1.0),
     ("wheelset", "roll_inertia_kg_m2", 1.0), ("roller", "contact_half_spacing_m", 0.2),
 ])
-def test_documentation_keys_cannot_be_changed(section, key, value):
-    with pytest.raises(rr.RollerRigError, match=f"{section}.{key} does not act on the model"):
+def test_retired_keys_are_refused(section, key, value):
+    """Keys that acted on nothing are gone from the defaults; giving one, at
+    any value (the old default too), is refused with the reason."""
+    name = section if section in RETIRED else f"{section}.{key}"   # or a whole section
+    reason = RETIRED[name]
+    assert key not in rr.default_parameters().get(section, {})
+    with pytest.raises(rr.RollerRigError, match=f"{re.escape(name)} does not act on the model "
+                                                f"\\({re.escape(reason)}\\); it is no longer "
+                                                f"a parameter"):
         check_parameters({section: {key: value}})
+    old = {"roller_drive.gear_ratio": 1.0, "scenario.initial_condition": "free_rolling",
+           "contact.normal_model": "balance", "roller.rigidly_joined": True}
+    if f"{section}.{key}" in old:
+        with pytest.raises(rr.RollerRigError, match="does not act on the model"):
+            check_parameters({section: {key: old[f"{section}.{key}"]}})
 
 
 def test_a_copy_of_the_defaults_is_a_valid_scenario(tmp_path, capsys):
-    """The documentation keys at their own values are fine: the usual start
-    of a scenario is a copy of rig_default.toml."""
+    """The usual start of a scenario is a copy of rig_default.toml."""
     path = tmp_path / "copy.toml"
     text = open(DEFAULTS_PATH).read().replace("mu0 = 0.4 ", "mu0 = 0.35")
     path.write_text(text)

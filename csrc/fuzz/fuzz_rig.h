@@ -61,70 +61,22 @@ static inline const rr_contact_table *fz_rig_table(void)
     return &t;
 }
 
-/* The contact model of the default rig: FASTSIM 20 x 20 with falling
- * friction at the rigid slip speed. */
-static inline void fz_rig_contact_default(rr_rig_contact_model *m)
-{
-    memset(m, 0, sizeof *m);
-    m->table = fz_rig_table();
-    m->R0 = 0.16;
-    m->estar = rr_estar(2.1e11, 0.28, 2.1e11, 0.28);
-    m->G = 2.1e11 / 2.56;
-    m->nu = 0.28;
-    m->friction.mu0 = 0.4;
-    m->friction.A = 0.4;
-    m->friction.B = 0.6;
-    rr_creep_opts_default(RR_METHOD_FASTSIM, &m->creep);
-    m->creep.nx = m->creep.ny = 20;
-    m->creep.slip_speed = RR_SLIP_RIGID;
-    m->vmin = 0.01;
-}
-
-/* The default rig's parameters at sample time 4 ms (TR-BDF2, one Newton
- * iteration on the simplified theory, as rig_default.toml). */
+/* The default rig's parameters (rr_rig_params_default, the declaration
+ * rig_default.toml is generated from: 4 ms, TR-BDF2, one Newton iteration on
+ * the simplified theory, FASTSIM 20 x 20 with falling friction at the rigid
+ * slip speed) on this table. */
 static inline void fz_rig_params_default(rr_rig_params *p)
 {
-    const rr_contact_table *t = fz_rig_table();
-    rr_wheelset_pose pose;
-    rr_contact_point cl, cr;
+    if (rr_rig_params_default(p) != RR_OK || rr_rig_params_set_table(p, fz_rig_table()) < 0)
+        fz_fail("default rig: parameters");
+}
 
-    memset(p, 0, sizeof *p);
-    p->mass = 14.504;
-    p->Iyy = 0.536;
-    p->Izz = 0.3584;
-    p->axlebox_y = 0.2;
-    p->kx = 6.2782e6;
-    p->ky = 7.768e5;
-    p->kz = 2.44e5;
-    p->cx = 4117.0;
-    p->cy = 509.4;
-    p->cz = 160.0;
-    p->preload = 900.85;
-    p->g = 9.81;
-    p->roller_inertia = 1.5;
-    fz_rig_contact_default(&p->contact);
-    p->T = 0.004;
-    p->nsub = 1;
-    p->method = RR_ODE_TRBDF2;
-    p->newton_iters = 1;
-    p->linear_tr = 1;
-    p->newton_model = 1;
-    p->roller_pi.T = p->wheelset_pi.T = p->roller_enc.T = p->wheelset_enc.T = p->T;
-    p->roller_pi.Kp = 300.0;
-    p->roller_pi.KI = 2.0;
-    p->roller_pi.Tmax = 100.0;
-    p->wheelset_pi.Kp = 100.0;
-    p->wheelset_pi.KI = 2.0;
-    p->wheelset_pi.Tmax = 60.0;
-    p->roller_tau = p->wheelset_tau = 1e-3;
-    p->roller_enc.counts = p->wheelset_enc.counts = 8388608;
-    rr_contact_table_lookup(t, 0.0, &pose, NULL, &cl, &cr);
-    p->creepctl.r_w = cl.r;
-    p->creepctl.r_r = cl.R;
-    p->creepctl.alpha = 0.01;
-    p->creepctl.beta = 0.002;
-    p->creepctl.vmin = 0.1;
-    p->creepctl.sense = RR_CREEPCTL_BRAKING;
+/* The contact model of the default rig. */
+static inline void fz_rig_contact_default(rr_rig_contact_model *m)
+{
+    rr_rig_params p;
+    fz_rig_params_default(&p);
+    *m = p.contact;
 }
 
 #endif

@@ -11,17 +11,22 @@
 static double ws[NP], wz[NP], wm[NP], rs[NP], rz[NP], rm[NP], work[NP];
 static double table_data[NROWS * RR_CONTACT_TABLE_ROW];
 
-/* The default rig (rollerrig/data/rig_default.toml): 1:20 cone, r0 0.092 m,
- * on a roller R0 0.16 m with a 60 mm crown, contacts 0.15 m out. */
+/* The default rig (rr_rig_params_default, the declaration rig_default.toml is
+ * generated from) on this test's own, smaller table of the same geometry:
+ * 1:20 cone, r0 0.092 m, on a roller R0 0.16 m with a 60 mm crown, contacts
+ * 0.15 m out, 61 profile points, rows over +-5 mm; the Newton iteration on
+ * FASTSIM itself (newton_model 0). */
 static void setup(rr_contact_table *t, rr_rig_params *p)
 {
+    rr_rig_config c;
     rr_wheel_roller pair[2];
     rr_search_opts o;
     int i;
+    rr_rig_config_default(&c);
     for (i = 0; i < NP; i++) {
-        ws[i] = rs[i] = -0.015 + 0.03 * i / (NP - 1);
-        wz[i] = ws[i] * 0.05;
-        rz[i] = sqrt(0.06 * 0.06 - rs[i] * rs[i]) - 0.06;
+        ws[i] = rs[i] = -c.profile_half_width + 2.0 * c.profile_half_width * i / (NP - 1);
+        wz[i] = ws[i] * c.conicity;
+        rz[i] = sqrt(c.crown_radius * c.crown_radius - rs[i] * rs[i]) - c.crown_radius;
     }
     rr_spline_init(NP, ws, wz, wm, work);
     rr_spline_init(NP, rs, rz, rm, work);
@@ -29,44 +34,18 @@ static void setup(rr_contact_table *t, rr_rig_params *p)
         pair[i].wheel.n = NP; pair[i].wheel.s = ws; pair[i].wheel.z = wz; pair[i].wheel.m = wm;
         pair[i].roller.n = NP; pair[i].roller.s = rs; pair[i].roller.z = rz;
         pair[i].roller.m = rm;
-        pair[i].r0 = 0.092; pair[i].R0 = 0.16;
-        pair[i].wheel_y = pair[i].roller_y = 0.15;
+        pair[i].r0 = c.wheel_radius; pair[i].R0 = c.roller_radius;
+        pair[i].wheel_y = pair[i].roller_y = c.contact_half_spacing;
         pair[i].side = i == 0 ? 1 : -1;
     }
     rr_search_opts_default(&o);
     t->y0 = -0.005; t->dy = 0.01 / (NROWS - 1); t->n = NROWS; t->data = table_data;
     CHECK_STATUS(rr_contact_table_build(&pair[0], &pair[1], &o, t, NULL), RR_OK, "table");
 
-    memset(p, 0, sizeof *p);
-    p->mass = 14.504; p->Iyy = 0.536; p->Izz = 0.3584; p->axlebox_y = 0.2;
-    p->kx = 6.2782e6; p->ky = 7.768e5; p->kz = 2.44e5;
-    p->cx = 4117.0; p->cy = 509.4; p->cz = 160.0;
-    p->preload = 900.85; p->g = 9.81; p->roller_inertia = 1.5;
-    p->contact.table = t; p->contact.R0 = 0.16;
-    p->contact.estar = rr_estar(2.1e11, 0.28, 2.1e11, 0.28);
-    p->contact.G = 2.1e11 / 2.56; p->contact.nu = 0.28;
-    p->contact.friction.mu0 = 0.4; p->contact.friction.A = 0.4; p->contact.friction.B = 0.6;
-    rr_creep_opts_default(RR_METHOD_FASTSIM, &p->contact.creep);
-    p->contact.creep.nx = p->contact.creep.ny = 20;
-    p->contact.creep.slip_speed = RR_SLIP_RIGID;
-    p->contact.vmin = 0.01;
-    p->T = 0.004; p->nsub = 1; p->method = RR_ODE_TRBDF2; p->newton_iters = 1;
-    p->linear_tr = 1;
-    p->roller_pi.T = p->wheelset_pi.T = p->roller_enc.T = p->wheelset_enc.T = p->T;
-    p->roller_pi.Kp = 300; p->roller_pi.KI = 2; p->roller_pi.Tmax = 100;
-    p->wheelset_pi.Kp = 100; p->wheelset_pi.KI = 2; p->wheelset_pi.Tmax = 60;
-    p->roller_tau = p->wheelset_tau = 1e-3;
-    p->roller_enc.counts = p->wheelset_enc.counts = 8388608;
-    {
-        /* eq. 15-16 with the centred wheelset's rolling radii (calibrated) */
-        rr_wheelset_pose pose;
-        rr_contact_point cl, cr;
-        rr_contact_table_lookup(t, 0.0, &pose, NULL, &cl, &cr);
-        p->creepctl.r_w = cl.r;
-        p->creepctl.r_r = cl.R;
-    }
-    p->creepctl.alpha = 0.01; p->creepctl.beta = 0.002; p->creepctl.vmin = 0.1;
-    p->creepctl.sense = RR_CREEPCTL_BRAKING;
+    CHECK_STATUS(rr_rig_params_default(p), RR_OK, "default parameters");
+    p->newton_model = 0;
+    /* eq. 15-16 with the centred wheelset's rolling radii (calibrated) */
+    CHECK_STATUS(rr_rig_params_set_table(p, t), RR_OK, "table and radii");
 }
 
 /* Free rolling is an equilibrium: no creepage, no acceleration, the loads

@@ -1,0 +1,730 @@
+/* rr_rig_params.c - the rig's parameters, scenario and outputs, declared once. */
+#include <math.h>
+#include <string.h>
+#include "util/rr_common.h"
+#include "rig/rr_rig_params.h"
+
+#define OFF(member) ((long)offsetof(rr_rig_config, member))
+
+/* ranges: lo, hi, lo_open, hi_open */
+#define ANY (-INFINITY), INFINITY, 0, 0
+#define POS 0.0, INFINITY, 1, 0
+#define NONNEG 0.0, INFINITY, 0, 0
+#define RANGE(lo, hi, lo_open, hi_open) lo, hi, lo_open, hi_open
+
+#define REAL(name, unit, v, range, member, origin) \
+    {name, unit, RR_RIG_REAL, v, #v, range, NULL, NULL, 0, OFF(member), 0, origin}
+#define INT(name, v, lo, hi, member, origin) \
+    {name, "-", RR_RIG_INT, v, #v, lo, hi, 0, 0, NULL, NULL, 0, OFF(member), 0, origin}
+#define FLAG(name, v, text, member, origin) \
+    {name, "", RR_RIG_FLAG, v, text, 0, 1, 0, 0, NULL, NULL, 0, OFF(member), \
+     0, origin}
+#define CHOICE(name, names, index, member, origin) \
+    {name, "", RR_RIG_CHOICE, index, NULL, 0, 0, 0, 0, names, NULL, 0, OFF(member), 0, origin}
+#define LIST(name, unit, entries, text, range, member, origin) \
+    {name, unit, RR_RIG_LIST, 0.0, text, range, NULL, entries, \
+     (int)(sizeof entries / sizeof entries[0]), OFF(member), 0, origin}
+/* creep rows: type, default and its text only (rr_creep_opts checks and applies them) */
+#define CREEP(name, unit, type, v, text, origin) \
+    {name, unit, type, v, text, NAN, NAN, 0, 0, NULL, NULL, 0, -1, 1, origin}
+
+static const char *const drive_modes[] = {"braking", "traction", NULL};
+static const int drive_senses[] = {RR_CREEPCTL_BRAKING, RR_CREEPCTL_TRACTION};
+static const char *const wheel_profiles[] = {"conical", NULL};
+static const char *const roller_profiles[] = {"crowned cylinder", NULL};
+static const char *const friction_laws[] = {"polach_falling", "coulomb", NULL};
+static const char *const ode_methods[] = {"trbdf2", "ros2", "lineuler", NULL};
+static const int ode_values[] = {RR_ODE_TRBDF2, RR_ODE_ROS2, RR_ODE_LINEULER};
+
+static const double default_targets[] = {0.04, 0.015, 0.02, 0.03};
+static const double default_starts[] = {0.0, 5.0, 10.0, 15.0};
+
+/* The control sample time's range, as simulate's dt (rollerrig.rig.MIN_DT, MAX_DT). */
+#define MIN_T 1e-6
+#define MAX_T 0.1
+#define MAX_DURATION 1e5
+
+static const rr_rig_param params[] = {
+    /* [scenario] */
+    REAL("scenario.roller_speed_m_s", "m/s", 5.0, ANY, roller_speed,
+         "paper section 6: linear velocity of the roller 5 m/s"),
+    LIST("scenario.targets", "-", default_targets, "[0.04, 0.015, 0.02, 0.03]",
+         RANGE(0.0, 1.0, 0, 1), targets,
+         "paper section 6: longitudinal creepage targets, in this order (magnitudes; braking)"),
+    LIST("scenario.target_start_s", "s", default_starts, "[0.0, 5.0, 10.0, 15.0]", NONNEG,
+         target_start,
+         "inferred, not printed: equal 5 s intervals (Fig. 7/8 give no time axis in the "
+         "text); see docs/parameters.md"),
+    REAL("scenario.duration_s", "s", 20.0, RANGE(0.0, MAX_DURATION, 1, 0), duration,
+         "inferred: four equal intervals of 5 s"),
+    REAL("scenario.mu0", "-", 0.4, RANGE(0.0, RR_FRICTION_MAX, 1, 0), mu0,
+         "paper section 6, Fig. 7/8: static adhesion (friction) coefficient 0.4 (Fig. 9, the "
+         "dSpace run, says 0.5)"),
+    CHOICE("scenario.drive_mode", drive_modes, 0, drive_mode,
+           "paper section 6: braking torque applied to the wheelset, roller speed held "
+           "constant"),
+    REAL("scenario.control_sample_time_s", "s", 4.0e-3, RANGE(MIN_T, MAX_T, 0, 0), T,
+         "paper section 6: the real-time model's step on dSpace DS1006 (250 Hz); sample time "
+         "of both PI loops, encoders and the creepage controller (stable with these inertias: "
+         "tests/test_rig.py)"),
+    REAL("scenario.g_m_s2", "m/s^2", 9.81, NONNEG, g, "standard gravity"),
+    /* [wheelset] */
+    REAL("wheelset.mass_kg", "kg", 14.504, POS, mass, "scaled: 1813 kg / 125 (phi^3)"),
+    REAL("wheelset.spin_inertia_kg_m2", "kg m^2", 0.035840, POS, spin_inertia,
+         "scaled: Iyy 112 kg m^2 / 3125 (phi^5)"),
+    REAL("wheelset.yaw_inertia_kg_m2", "kg m^2", 0.35840, POS, yaw_inertia,
+         "scaled: Izz 1120 kg m^2 / 3125 (phi^5)"),
+    REAL("wheelset.wheel_radius_m", "m", 0.092, POS, wheel_radius, "scaled: r0 0.46 m / 5"),
+    REAL("wheelset.contact_half_spacing_m", "m", 0.15, POS, contact_half_spacing,
+         "scaled: 0.75 m / 5 (lateral position of each contact point, centred wheelset; the "
+         "roller crowns sit under them)"),
+    REAL("wheelset.axlebox_half_spacing_m", "m", 0.20, POS, axlebox_half_spacing,
+         "scaled: 1.0 m / 5 (lateral position of the axle-box springs)"),
+    CHOICE("wheelset.profile", wheel_profiles, 0, wheel_profile,
+           "paper sections 3 and 4.1: conical wheel in the prototype"),
+    REAL("wheelset.conicity", "-", 0.05, NONNEG, conicity,
+         "choice 1:20 (tan alpha; alpha = atan(conicity) is the contact angle of paper eq. "
+         "1, 2 and 9): the classic conical tread for 1:20 rail inclination (the Italian RFI "
+         "and French networks); same value as the library's geometry tests; 1:40 is the "
+         "alternative (docs)"),
+    REAL("wheelset.profile_half_width_m", "m", 0.015, POS, profile_half_width,
+         "choice: +-15 mm tread, about the scaled 135 mm wheel width (27 mm) plus margin"),
+    /* [roller] */
+    REAL("roller.radius_m", "m", 0.160, POS, roller_radius,
+         "scaled: 0.8001 m / 5 (full-scale roller of the CONTACT roller-rig case); R/r0 = 1.74"),
+    CHOICE("roller.profile", roller_profiles, 0, roller_profile,
+           "choice: a conical wheel on a flat cylinder is a line contact; a crown gives the "
+           "Hertz ellipse of paper section 4.2"),
+    REAL("roller.crown_radius_m", "m", 0.060, POS, crown_radius,
+         "scaled: UIC60 rail-head crown R300 mm / 5 (gives a/b ~ 1 with the 1:20 cone)"),
+    REAL("roller.inertia_kg_m2", "kg m^2", 1.5, POS, roller_inertia,
+         "choice: both rollers (two solid steel discs R 0.16 m x 0.04 m: 2 x 0.323), shaft "
+         "and roller motor with its coupling and flywheel; the paper's PI gains (Kp = 300) "
+         "are stable at its 4 ms sample only if Kp T / J stays below about 1 (here 0.8): with "
+         "0.7 kg m^2 the sampled loop rings (docs/parameters.md)"),
+    /* [suspension] */
+    REAL("suspension.kx_N_per_m", "N/m", 6.2782e6, NONNEG, kx,
+         "scaled: 31.391 MN/m / 5 (phi), per axle box"),
+    REAL("suspension.ky_N_per_m", "N/m", 7.768e5, NONNEG, ky,
+         "scaled: 3.884 MN/m / 5, per axle box"),
+    REAL("suspension.kz_N_per_m", "N/m", 2.44e5, NONNEG, kz,
+         "scaled: 1.22 MN/m / 5, per axle box"),
+    REAL("suspension.cx_N_s_per_m", "N s/m", 4117.0, NONNEG, cx,
+         "choice: stiffness-proportional, cx = kx * (cz/kz) = 6.2782e6 * 6.557e-4 s (the "
+         "benchmark has no primary x damper)"),
+    REAL("suspension.cy_N_s_per_m", "N s/m", 509.4, NONNEG, cy,
+         "choice: cy = ky * (cz/kz) = 7.768e5 * 6.557e-4 s (no primary y damper in the "
+         "benchmark)"),
+    REAL("suspension.cz_N_s_per_m", "N s/m", 160.0, NONNEG, cz,
+         "scaled: 4 kN s/m / 25 (phi^2), per axle box"),
+    REAL("suspension.preload_total_N", "N", 900.85, NONNEG, preload,
+         "paper Fig. 7-9 captions: \"vertical spring load 900.85 N\"; read as F_SPRZ of eq. "
+         "1, the sum over both axle boxes (eq. 1: Fz = 0.5 (F_SPRZ + M g) halves spring load "
+         "and weight alike; 450.425 N per axle box)"),
+    /* [contact] */
+    REAL("contact.youngs_modulus_Pa", "Pa", 2.1e11, POS, E,
+         "cited: steel, wheel and roller; G = E / (2 (1 + nu)) = 8.20e10 Pa as in CONTACT's "
+         "reference cases (G 82000 N/mm^2)"),
+    REAL("contact.poisson_ratio", "-", 0.28, RANGE(0.0, 0.5, 0, 0), nu,
+         "cited: CONTACT reference cases (POISS 0.28), shared/reference"),
+    CREEP("contact.creep_method", "", RR_RIG_CHOICE, 0, "\"fastsim\"",
+          "paper section 4.4: Kalker's FASTSIM"),
+    CREEP("contact.fastsim_nx", "-", RR_RIG_INT, 20, "20", "choice: elements along x per strip"),
+    CREEP("contact.fastsim_ny", "-", RR_RIG_INT, 20, "20", "choice: strips across y"),
+    CREEP("contact.fastsim_slip_speed", "", RR_RIG_CHOICE, 0, "\"rigid\"",
+          "choice: falling friction at each contact's rigid slip speed (Spiryagin et al. "
+          "2013, CONTACT's FASTSIM), one mu per contact: 8x cheaper per rig step than at "
+          "every element's own slip speed (\"local\")"),
+    CHOICE("contact.friction_law", friction_laws, 0, friction_law,
+           "paper section 6: dynamic friction from the static coefficient mu0; Polach 2005 "
+           "law mu(w) = mu0 ((1 - A) exp(-B w) + A)"),
+    REAL("contact.polach_A", "-", 0.4, RANGE(0.0, 1.0, 1, 0), polach_A,
+         "cited: Polach 2005 dry set as commonly quoted "
+         "(shared/reference/polach-parameters.csv: equals Open Rails' fit at mu0 = 0.55; "
+         "table not read in the paper itself)"),
+    REAL("contact.polach_B_s_per_m", "s/m", 0.6, RANGE(0.0, RR_FRICTION_MAX, 0, 0), polach_B,
+         "cited: as polach_A (dry: B = 0.6 s/m)"),
+    CREEP("contact.polach_kA", "-", RR_RIG_REAL, 1.0, "1.0",
+          "cited: as polach_A (dry: kA = 1.0), for method = \"polach\""),
+    CREEP("contact.polach_kS", "-", RR_RIG_REAL, 0.4, "0.4",
+          "cited: as polach_A (dry: kS = 0.4), for method = \"polach\""),
+    REAL("contact.min_rolling_speed_m_s", "m/s", 0.01, POS, vmin,
+         "choice: creepage denominator max(|V|, 0.01 m/s) at standstill (paper section 4.4: "
+         "\"special procedure\" for Vn = 0)"),
+    /* [roller_drive] */
+    REAL("roller_drive.kp_N_m_s_per_rad", "N m s/rad", 300.0, NONNEG, roller_kp,
+         "paper section 6: Kp = 300 (roller); T_ref = Kp e + KI sum(e), eq. 10, e in rad/s, T "
+         "in N m"),
+    REAL("roller_drive.ki_N_m_s_per_rad", "N m s/rad", 2.0, NONNEG, roller_ki,
+         "paper section 6: KI = 2 (roller); multiplies the plain sum of eq. 10 (continuous "
+         "equivalent KI / T)"),
+    REAL("roller_drive.torque_limit_N_m", "N m", 100.0, POS, roller_tmax,
+         "choice: 1.5 x the steady braking torque mu0 * 2 * 521.6 N * 0.16 m = 66.8 N m"),
+    REAL("roller_drive.lag_time_constant_s", "s", 1.0e-3, POS, roller_tau,
+         "choice: first-order inverter + current loop + torque lag (paper section 5 low-pass "
+         "filter); current loops of small servo drives close at ~1/18-1/6 of a 10-20 kHz "
+         "sampling rate (cited: TI app. note SPRACO3), 1 ms is conservative"),
+    INT("roller_drive.encoder_counts_per_rev", 8388608, 1, 2147483647.0, roller_counts,
+        "choice: a 23-bit single-turn encoder, the class of current servo motors' serial "
+        "encoders (20-24 bit); creepage quantum 2 pi/2^23/4 ms * r/V = 3.4e-6. With the "
+        "18-bit (262144) default of CiA 402 drives the paper's eq. 14 fires on quantisation "
+        "noise and holds 0.015 about 5 % low (tests/test_rig.py); sampled every "
+        "scenario.control_sample_time_s, S(z) = (z - 1)/(T z), paper eq. 12"),
+    /* [wheelset_drive] */
+    REAL("wheelset_drive.kp_N_m_s_per_rad", "N m s/rad", 100.0, NONNEG, wheelset_kp,
+         "paper section 6: Kp = 100 (wheelset)"),
+    REAL("wheelset_drive.ki_N_m_s_per_rad", "N m s/rad", 2.0, NONNEG, wheelset_ki,
+         "paper section 6: KI = 2 (wheelset), per-sample sum of eq. 10"),
+    REAL("wheelset_drive.torque_limit_N_m", "N m", 60.0, POS, wheelset_tmax,
+         "choice: 1.5 x the peak creep torque mu0 * 2 * 521.6 N * 0.092 m = 38.4 N m"),
+    REAL("wheelset_drive.lag_time_constant_s", "s", 1.0e-3, POS, wheelset_tau,
+         "choice: as roller_drive"),
+    INT("wheelset_drive.encoder_counts_per_rev", 8388608, 1, 2147483647.0, wheelset_counts,
+        "choice: as roller_drive"),
+    REAL("wheelset_drive.drive_inertia_kg_m2", "kg m^2", 0.50, NONNEG, drive_inertia,
+         "choice: braking motor, transmission and flywheel referred to the axle; chosen so "
+         "that the paper's Kp = 100 gives Kp T / (J_wheelset + J_drive) = 0.75 at the 4 ms "
+         "sample (as for the roller); 0.2 kg m^2 rings at 4 ms (docs/parameters.md)"),
+    /* [creepage_controller] */
+    REAL("creepage_controller.alpha", "-", 0.01, NONNEG, ctl_alpha,
+         "paper eq. 13: K moves by alpha * d_xi per sample when d_xi >= 0"),
+    REAL("creepage_controller.beta", "-", 0.002, NONNEG, ctl_beta,
+         "paper eq. 14: K moves back by beta per sample when d_xi < 0"),
+    REAL("creepage_controller.min_reference_speed_m_s", "m/s", 0.1, POS, ctl_vmin,
+         "choice: floor of the roller surface speed in eq. 16's denominator (2 % of 5 m/s)"),
+    /* [integration] */
+    CHOICE("integration.method", ode_methods, 0, ode_method,
+           "choice: TR-BDF2 (csrc/util/rr_ode.h), the method of the paper's ode23tb: "
+           "L-stable, one matrix for both stages; with the settings below within 0.20 % / "
+           "0.56 % (creepage / force) of an adaptive Radau run at the 4 ms step "
+           "(tests/test_rig.py), where \"ros2\" is within 0.6 % / 1.9 % and \"lineuler\" "
+           "within 4.9 % / 2.4 %"),
+    INT("integration.newton_iterations", 1, 0, RR_ODE_MAX_NEWTON, newton_iterations,
+        "choice: TR-BDF2's Newton iterations per stage (csrc/util/rr_ode.h); one sees the "
+        "creep force's saturation knee (tests/test_rig.py)"),
+    FLAG("integration.linear_first_stage", 1, "true", linear_first_stage,
+         "choice: no iteration in the trapezoidal stage, only in the BDF2 stage, which gives "
+         "the step's end"),
+    FLAG("integration.newton_model", 1, "true", newton_model,
+         "choice: the Newton iteration takes the creep forces' change over the step from "
+         "Kalker's simplified theory (the cubic law, whose tangent is the Jacobian's), "
+         "anchored at FASTSIM's forces at the step's start: one FASTSIM evaluation per step "
+         "(csrc/util/rr_ode.h, rr_rig.c); within 0.20 % / 0.56 % of Radau"),
+    INT("integration.substeps", 1, 1, 1000, substeps, "choice: plant steps per control sample"),
+    REAL("integration.table_half_range_m", "m", 0.008, POS, table_half_range,
+         "choice: contact table over +-8 mm of lateral shift"),
+    INT("integration.table_rows", 161, 2, 100000, table_rows,
+        "choice: 0.1 mm spacing; the cone on its crowned roller is smooth (linear "
+        "interpolation within 1e-9 m of the direct search, tests/test_geometry.py style), "
+        "and the build costs 0.1 s"),
+};
+#define NPARAMS ((int)(sizeof params / sizeof params[0]))
+
+static const rr_rig_section sections[] = {
+    {"scenario", ""},
+    {"wheelset", ""},
+    {"roller", "the two rollers are fixed together by a rigid joint (paper section 3): one "
+               "shaft, one inertia"},
+    {"suspension", "one set of three springs (x, y, z) per axle box, in parallel with dampers "
+                   "(paper section 3); the resulting static normal load per wheel is "
+                   "0.5 * (900.85 + 14.504 * 9.81) = 521.6 N (docs/parameters.md)"},
+    {"contact", "normal loads from the wheelset's vertical and roll balance through the "
+                "contact constraint (csrc/rig/rr_rig.h), the 3-D form of paper eq. 3-6; eq. "
+                "1's contact stiffness k_HZ = 1e7 N/mm is not needed"},
+    {"roller_drive", "gains, torques and inertias are referred to the roller axle (no gear "
+                     "data published)"},
+    {"wheelset_drive", "gains, torques and inertias are referred to the wheelset axle"},
+    {"creepage_controller", "eq. 13-14 adapt the coefficient K of eq. 15, omega_ref = K "
+                            "(r_r / r_w) omega_roller (the paper: K \"is to be adapted to "
+                            "the desired value of the longitudinal creepage\"); alpha and "
+                            "beta are therefore dimensionless, per sample "
+                            "(csrc/rig/rr_control.h)"},
+    {"integration", ""},
+};
+
+static const rr_rig_retired retired[] = {
+    {"similarity", "it documented the similarity law the defaults were scaled by: "
+                   "docs/parameters.md, Similarity law"},
+    {"full_scale_reference", "it documented the full-scale values the defaults were scaled "
+                             "from: docs/parameters.md, Full-scale reference"},
+    {"scenario.initial_condition", "simulate's start argument sets it: 'rolling' or 'rest'"},
+    {"wheelset.roll_inertia_kg_m2", "the wheelset's roll follows the contact constraint; the "
+                                    "model has no roll dynamics"},
+    {"wheelset.contact_angle_rad", "the cone's angle is atan(wheelset.conicity)"},
+    {"roller.contact_half_spacing_m", "the crowns sit under wheelset.contact_half_spacing_m"},
+    {"roller.width_m", "it entered the estimate of roller.inertia_kg_m2 only"},
+    {"roller.rigidly_joined", "the model's two rollers are always on one shaft"},
+    {"suspension.preload_per_axlebox_N", "it is half of suspension.preload_total_N, which "
+                                         "acts"},
+    {"contact.normal_model", "the model's normal loads are always the 'balance' ones"},
+    {"roller_drive.gear_ratio", "gains, torques and inertias are referred to the roller "
+                                "axle, ratio 1"},
+    {"wheelset_drive.gear_ratio", "gains, torques and inertias are referred to the wheelset "
+                                  "axle, ratio 1"},
+};
+
+#define REC(name, unit, meaning) {name, 1, -1, unit, meaning}
+static const rr_rig_field records[] = {
+    REC("time", "s", "time at the end of the sample"),
+    REC("creepage", "-", "longitudinal creepage cx of the contact model, mean of both contacts "
+        "(Kalker's sign: > 0 braking, < 0 traction)"),
+    REC("xi_est", "-", "the creepage controller's estimate from the encoders (eq. 16), in the "
+        "drive's sense (> 0)"),
+    REC("xi_ref", "-", "the creepage target (> 0; NaN before the first target starts)"),
+    REC("roller_speed", "m/s", "roller surface speed, roller_spin R0"),
+    REC("wheelset_speed", "m/s", "wheel surface speed, spin r0"),
+    REC("fx", "N", "longitudinal creep force on the wheelset, both wheels (on the wheel: < 0 "
+        "braking, > 0 traction)"),
+    REC("fy", "N", "lateral creep force on the wheelset, both wheels"),
+    REC("normal_load_left", "N", "normal load of the left wheel"),
+    REC("normal_load_right", "N", "normal load of the right wheel"),
+    REC("adhesion", "-", "adhesion coefficient |fx| / (normal_load_left + normal_load_right)"),
+    REC("torque_roller", "N m", "roller drive torque (after its lag)"),
+    REC("torque_wheelset", "N m", "wheelset drive torque (after its lag)"),
+    REC("w_ref", "rad/s", "wheelset speed reference of the creepage controller (eq. 15)"),
+    REC("x", "m", "wheelset longitudinal position"),
+    REC("y", "m", "wheelset lateral position (+: to the left)"),
+    REC("yaw", "rad", "wheelset yaw angle"),
+    REC("creepage_left", "-", "longitudinal creepage of the left contact"),
+    REC("creepage_right", "-", "longitudinal creepage of the right contact"),
+    REC("torque_ref_roller", "N m", "roller torque reference held over the sample"),
+    REC("torque_ref_wheelset", "N m", "wheelset torque reference held over the sample"),
+    REC("vx", "m/s", "wheelset longitudinal velocity"),
+    REC("vy", "m/s", "wheelset lateral velocity"),
+    REC("yaw_rate", "rad/s", "wheelset yaw rate"),
+    REC("spin", "rad/s", "wheelset angular speed about its axle"),
+    REC("roller_spin", "rad/s", "roller angular speed"),
+    REC("sample_status", "-", "status of the sample: 0 OK, > 0 warning, < 0 error "
+        "(rollerrig.status_message)"),
+};
+/* one name per enum rr_rig_record_index entry: a compile-time check */
+typedef char records_complete[(sizeof records / sizeof records[0]) == RR_REC_COUNT ? 1 : -1];
+
+#define WF(name, width, member, unit, meaning) \
+    {name, width, (long)offsetof(rr_wheel_contact, member), unit, meaning}
+static const rr_rig_field wheel_fields[] = {
+    WF("p", 3, frame.p, "m", "contact point in the rig"),
+    WF("theta", 1, theta, "rad", "its angle round the roller axis from the top"),
+    WF("t1", 3, frame.t1, "-", "rolling direction (unit, rig frame)"),
+    WF("t2", 3, frame.t2, "-", "lateral direction in the contact plane"),
+    WF("n", 3, n, "-", "normal t1 x t2, into the wheel"),
+    WF("cx", 1, creep.cx, "-", "longitudinal creepage"),
+    WF("cy", 1, creep.cy, "-", "lateral creepage"),
+    WF("cphi", 1, creep.cphi, "rad/m", "spin creepage"),
+    WF("V", 1, creep.V, "m/s", "rolling speed used for the creepages"),
+    WF("N", 1, N, "N", "normal load"),
+    WF("a", 1, hertz.a, "m", "contact ellipse semi-axis along t1"),
+    WF("b", 1, hertz.b, "m", "contact ellipse semi-axis along t2"),
+    WF("p0", 1, hertz.p0, "Pa", "peak pressure"),
+    WF("fx", 1, f.fx, "N", "creep force on the wheel along t1"),
+    WF("fy", 1, f.fy, "N", "creep force on the wheel along t2"),
+    WF("mz", 1, f.mz, "N m", "spin moment on the wheel about n"),
+    WF("force", 3, force, "N", "contact force on the wheelset, rig frame"),
+    WF("moment", 3, moment, "N m", "its moment about the wheelset centre"),
+    WF("r", 1, geo.r, "m", "wheel rolling radius"),
+    WF("R", 1, geo.R, "m", "roller radius at the contact"),
+    WF("delta", 1, geo.delta, "rad", "contact angle"),
+    WF("s_wheel", 1, geo.s_wheel, "m", "profile coordinate of the contact point on the wheel"),
+    WF("s_roller", 1, geo.s_roller, "m", "profile coordinate of the contact point on the "
+       "roller"),
+};
+typedef char wheel_fields_complete[(sizeof wheel_fields / sizeof wheel_fields[0])
+                                   == RR_WHEEL_NFIELDS ? 1 : -1];
+
+#define COUNT(a) ((int)(sizeof a / sizeof a[0]))
+
+int rr_rig_param_count(void)
+{
+    return NPARAMS;
+}
+
+const rr_rig_param *rr_rig_param_at(int i)
+{
+    return i >= 0 && i < NPARAMS ? &params[i] : NULL;
+}
+
+const rr_rig_param *rr_rig_param_find(const char *name)
+{
+    int i;
+    if (!name)
+        return NULL;
+    for (i = 0; i < NPARAMS; i++)
+        if (strcmp(params[i].name, name) == 0)
+            return &params[i];
+    return NULL;
+}
+
+int rr_rig_section_count(void)
+{
+    return COUNT(sections);
+}
+
+const rr_rig_section *rr_rig_section_at(int i)
+{
+    return i >= 0 && i < COUNT(sections) ? &sections[i] : NULL;
+}
+
+int rr_rig_retired_count(void)
+{
+    return COUNT(retired);
+}
+
+const rr_rig_retired *rr_rig_retired_at(int i)
+{
+    return i >= 0 && i < COUNT(retired) ? &retired[i] : NULL;
+}
+
+const rr_rig_field *rr_rig_record_field(int i)
+{
+    return i >= 0 && i < RR_REC_COUNT ? &records[i] : NULL;
+}
+
+const rr_rig_field *rr_wheel_field(int i)
+{
+    return i >= 0 && i < RR_WHEEL_NFIELDS ? &wheel_fields[i] : NULL;
+}
+
+void rr_wheel_store(const rr_wheel_contact *w, double *v, long stride)
+{
+    int i, j;
+    long k = 0;
+    if (!w || !v)
+        return;
+    for (i = 0; i < RR_WHEEL_NFIELDS; i++) {
+        const double *src = (const double *)((const char *)w + wheel_fields[i].offset);
+        for (j = 0; j < wheel_fields[i].width; j++, k++)
+            v[k * stride] = src[j];
+    }
+}
+
+int rr_rig_param_choice(const rr_rig_param *row, const char *choice)
+{
+    int i;
+    if (!row || !choice || row->type != RR_RIG_CHOICE || !row->choices)
+        return -1;
+    for (i = 0; row->choices[i]; i++)
+        if (strcmp(row->choices[i], choice) == 0)
+            return i;
+    return -1;
+}
+
+static int nchoices(const rr_rig_param *row)
+{
+    int n = 0;
+    while (row->choices[n])
+        n++;
+    return n;
+}
+
+/* 0 if v is within the row's range (REAL, INT, LIST entries), else the status. */
+static int in_range(const rr_rig_param *row, double v)
+{
+    if (!isfinite(v))
+        return RR_ERR_NONFINITE;
+    if ((row->lo_open ? !(v > row->lo) : !(v >= row->lo))
+        || (row->hi_open ? !(v < row->hi) : !(v <= row->hi)))
+        return RR_ERR_PARAM;
+    return RR_OK;
+}
+
+/* 0 if v may be stored in a (non-LIST) row. */
+static int value_ok(const rr_rig_param *row, double v)
+{
+    int st;
+    switch (row->type) {
+    case RR_RIG_REAL:
+        return in_range(row, v);
+    case RR_RIG_INT:
+        if ((st = in_range(row, v)) != RR_OK)
+            return st;
+        return v == floor(v) ? RR_OK : RR_ERR_PARAM;
+    case RR_RIG_FLAG:
+        if (!isfinite(v))
+            return RR_ERR_NONFINITE;
+        return v == 0.0 || v == 1.0 ? RR_OK : RR_ERR_PARAM;
+    case RR_RIG_CHOICE:
+        if (!isfinite(v))
+            return RR_ERR_NONFINITE;
+        return v >= 0.0 && v < nchoices(row) && v == floor(v) ? RR_OK : RR_ERR_PARAM;
+    default:
+        return RR_ERR_PARAM;
+    }
+}
+
+static void store(rr_rig_config *c, const rr_rig_param *row, double v)
+{
+    char *at = (char *)c + row->offset;
+    if (row->type == RR_RIG_REAL)
+        *(double *)at = v;
+    else
+        *(int *)at = (int)v;
+}
+
+static double load(const rr_rig_config *c, const rr_rig_param *row)
+{
+    const char *at = (const char *)c + row->offset;
+    return row->type == RR_RIG_REAL ? *(const double *)at : (double)*(const int *)at;
+}
+
+/* the row `name` if the config may hold it: not NULL, not a creep row */
+static const rr_rig_param *settable(const char *name, int *st)
+{
+    const rr_rig_param *row = rr_rig_param_find(name);
+    *st = !name ? RR_ERR_NULL : !row || row->creep ? RR_ERR_PARAM : RR_OK;
+    return *st == RR_OK ? row : NULL;
+}
+
+int rr_rig_config_default(rr_rig_config *c)
+{
+    int i;
+    if (!c)
+        return RR_ERR_NULL;
+    memset(c, 0, sizeof *c);
+    for (i = 0; i < NPARAMS; i++) {
+        const rr_rig_param *row = &params[i];
+        if (row->creep)
+            continue;
+        if (row->type == RR_RIG_LIST) {
+            rr_rig_list *l = (rr_rig_list *)(void *)((char *)c + row->offset);
+            l->n = row->nlist;
+            memcpy(l->v, row->list, (size_t)row->nlist * sizeof l->v[0]);
+        } else {
+            store(c, row, row->value);
+        }
+    }
+    return RR_OK;
+}
+
+int rr_rig_config_set(rr_rig_config *c, const char *name, double v)
+{
+    int st;
+    const rr_rig_param *row = settable(name, &st);
+    if (!c)
+        return RR_ERR_NULL;
+    if (!row)
+        return st;
+    if ((st = value_ok(row, v)) != RR_OK)
+        return st;
+    store(c, row, v);
+    return RR_OK;
+}
+
+int rr_rig_config_set_choice(rr_rig_config *c, const char *name, const char *choice)
+{
+    int st, k;
+    const rr_rig_param *row = settable(name, &st);
+    if (!c || !choice)
+        return RR_ERR_NULL;
+    if (!row)
+        return st;
+    if ((k = rr_rig_param_choice(row, choice)) < 0)
+        return RR_ERR_PARAM;
+    store(c, row, k);
+    return RR_OK;
+}
+
+int rr_rig_config_set_list(rr_rig_config *c, const char *name, int n, const double *v)
+{
+    int st, i;
+    const rr_rig_param *row = settable(name, &st);
+    rr_rig_list *l;
+    if (!c || (!v && n > 0))
+        return RR_ERR_NULL;
+    if (!row)
+        return st;
+    if (row->type != RR_RIG_LIST || n < 1 || n > RR_RIG_MAX_LIST)
+        return RR_ERR_PARAM;
+    for (i = 0; i < n; i++)
+        if ((st = in_range(row, v[i])) != RR_OK)
+            return st;
+    l = (rr_rig_list *)(void *)((char *)c + row->offset);
+    l->n = n;
+    memcpy(l->v, v, (size_t)n * sizeof v[0]);
+    return RR_OK;
+}
+
+int rr_rig_config_check(const rr_rig_config *c, const char **bad)
+{
+    int i, k, st;
+    const char *who = NULL;
+    if (bad)
+        *bad = NULL;
+    if (!c)
+        return RR_ERR_NULL;
+    for (i = 0; i < NPARAMS; i++) {
+        const rr_rig_param *row = &params[i];
+        if (row->creep)
+            continue;
+        if (row->type == RR_RIG_LIST) {
+            const rr_rig_list *l = (const rr_rig_list *)(const void *)((const char *)c
+                                                                       + row->offset);
+            st = l->n >= 1 && l->n <= RR_RIG_MAX_LIST ? RR_OK : RR_ERR_PARAM;
+            for (k = 0; st == RR_OK && k < l->n; k++)
+                st = in_range(row, l->v[k]);
+        } else {
+            st = value_ok(row, load(c, row));
+        }
+        if (st != RR_OK) {
+            if (bad)
+                *bad = row->name;
+            return st;
+        }
+    }
+    /* the scenario: one start time per target, increasing, inside the duration */
+    st = RR_OK;
+    if (c->target_start.n != c->targets.n) {
+        who = "scenario.target_start_s";
+        st = RR_ERR_PARAM;
+    }
+    for (k = 1; st == RR_OK && k < c->target_start.n; k++)
+        if (!(c->target_start.v[k] > c->target_start.v[k - 1])) {
+            who = "scenario.target_start_s";
+            st = RR_ERR_PARAM;
+        }
+    if (st == RR_OK && !(c->target_start.v[c->target_start.n - 1] < c->duration)) {
+        who = "scenario.target_start_s";
+        st = RR_ERR_PARAM;
+    }
+    if (st == RR_OK && !(c->duration >= c->T * (1.0 - 1e-9))) {
+        who = "scenario.duration_s";
+        st = RR_ERR_PARAM;
+    }
+    if (st != RR_OK && bad)
+        *bad = who;
+    return st;
+}
+
+int rr_rig_params_set_table(rr_rig_params *p, const rr_contact_table *t)
+{
+    rr_wheelset_pose pose;
+    rr_contact_point cl, cr;
+    int st;
+    if (!p || !t)
+        return RR_ERR_NULL;
+    if ((st = rr_contact_table_lookup(t, 0.0, &pose, NULL, &cl, &cr)) < 0)
+        return st;
+    p->contact.table = t;
+    p->creepctl.r_w = cl.r;
+    p->creepctl.r_r = cl.R;
+    return st;
+}
+
+/* The rig's default creep-force method: the creep rows' defaults. */
+static void creep_default(rr_creep_opts *o)
+{
+    rr_creep_opts_default(RR_METHOD_FASTSIM, o);     /* contact.creep_method */
+    o->nx = (int)rr_rig_param_find("contact.fastsim_nx")->value;
+    o->ny = (int)rr_rig_param_find("contact.fastsim_ny")->value;
+    o->slip_speed = RR_SLIP_RIGID;                   /* contact.fastsim_slip_speed */
+}
+
+int rr_rig_params_from(const rr_rig_config *c, const rr_contact_table *t, rr_rig_params *p)
+{
+    int st;
+    if (!p)
+        return RR_ERR_NULL;
+    memset(p, 0, sizeof *p);
+    if ((st = rr_rig_config_check(c, NULL)) != RR_OK)
+        return st;
+    p->mass = c->mass;
+    p->Iyy = c->spin_inertia + c->drive_inertia;
+    p->Izz = c->yaw_inertia;
+    p->axlebox_y = c->axlebox_half_spacing;
+    p->kx = c->kx;
+    p->ky = c->ky;
+    p->kz = c->kz;
+    p->cx = c->cx;
+    p->cy = c->cy;
+    p->cz = c->cz;
+    p->preload = c->preload;
+    p->g = c->g;
+    p->roller_inertia = c->roller_inertia;
+    p->contact.R0 = c->roller_radius;
+    /* rollerrig.rig_contact.elastic_constants: the same doubles */
+    p->contact.estar = c->E / (2.0 * (1.0 - c->nu * c->nu));
+    p->contact.G = c->E / (2.0 * (1.0 + c->nu));
+    p->contact.nu = c->nu;
+    p->contact.friction.mu0 = c->mu0;
+    if (strcmp(friction_laws[c->friction_law], "coulomb") == 0) {
+        p->contact.friction.A = 1.0;
+        p->contact.friction.B = 0.0;
+    } else {
+        p->contact.friction.A = c->polach_A;
+        p->contact.friction.B = c->polach_B;
+    }
+    creep_default(&p->contact.creep);
+    p->contact.vmin = c->vmin;
+    p->T = c->T;
+    p->nsub = c->substeps;
+    p->method = ode_values[c->ode_method];
+    p->newton_iters = c->newton_iterations;
+    p->linear_tr = c->linear_first_stage;
+    p->newton_model = c->newton_model;
+    p->roller_pi.T = p->wheelset_pi.T = p->roller_enc.T = p->wheelset_enc.T = c->T;
+    p->roller_pi.Kp = c->roller_kp;
+    p->roller_pi.KI = c->roller_ki;
+    p->roller_pi.Tmax = c->roller_tmax;
+    p->wheelset_pi.Kp = c->wheelset_kp;
+    p->wheelset_pi.KI = c->wheelset_ki;
+    p->wheelset_pi.Tmax = c->wheelset_tmax;
+    p->roller_tau = c->roller_tau;
+    p->wheelset_tau = c->wheelset_tau;
+    p->roller_enc.counts = c->roller_counts;
+    p->wheelset_enc.counts = c->wheelset_counts;
+    p->creepctl.r_w = c->wheel_radius;
+    p->creepctl.r_r = c->roller_radius;
+    p->creepctl.alpha = c->ctl_alpha;
+    p->creepctl.beta = c->ctl_beta;
+    p->creepctl.vmin = c->ctl_vmin;
+    p->creepctl.sense = drive_senses[c->drive_mode];
+    return t ? rr_rig_params_set_table(p, t) : RR_OK;
+}
+
+int rr_rig_params_default(rr_rig_params *p)
+{
+    rr_rig_config c;
+    if (!p)
+        return RR_ERR_NULL;
+    rr_rig_config_default(&c);
+    return rr_rig_params_from(&c, NULL, p);
+}
+
+int rr_rig_geometry_from(const rr_rig_config *c, rr_rig_geometry *g)
+{
+    if (!c || !g)
+        return RR_ERR_NULL;
+    g->wheel_radius = c->wheel_radius;
+    g->roller_radius = c->roller_radius;
+    g->profile_half_width = c->profile_half_width;
+    g->cone_angle = atan(c->conicity);
+    g->crown_radius = c->crown_radius;
+    g->contact_half_spacing = c->contact_half_spacing;
+    g->table_half_range = c->table_half_range;
+    g->table_rows = c->table_rows;
+    return RR_OK;
+}
+
+long rr_rig_samples(const rr_rig_config *c)
+{
+    double n;
+    if (!c || !(c->T > 0.0) || !isfinite(c->duration))
+        return 0;
+    n = floor(c->duration / c->T + 0.5);
+    return n < 1.0 ? 1 : n > 1e15 ? 0 : (long)n;
+}
+
+int rr_rig_schedule(const rr_rig_config *c, long k, double *roller_ref, double *xi_ref)
+{
+    const double t = (double)k * (c ? c->T : 0.0);
+    int i, idx = -1;
+    if (!c || !roller_ref || !xi_ref)
+        return RR_ERR_NULL;
+    if (k < 0)
+        return RR_ERR_PARAM;
+    for (i = 0; i < c->target_start.n && i < RR_RIG_MAX_LIST; i++)
+        if (c->target_start.v[i] <= t)
+            idx = i;
+    *roller_ref = c->roller_speed / c->roller_radius;
+    *xi_ref = idx >= 0 && idx < c->targets.n ? c->targets.v[idx] : NAN;
+    return RR_OK;
+}

@@ -1,0 +1,249 @@
+/*
+ * rr_rig_params.h - the declaration of the rig's parameters, its scenario
+ * and its outputs: the one source of their names, units, defaults, ranges
+ * and origins.
+ *
+ * rr_rig_param_at(i) walks a const table with one row per parameter of the
+ * seed paper's rig (Bosso et al., the Politecnico di Torino 1/5 roller rig):
+ * its name as in rollerrig/data/rig_default.toml ("wheelset.mass_kg"), unit,
+ * type, default (as a number and as TOML text), range, origin (where the
+ * value comes from: "paper ...", "scaled ...", "cited ...", "choice ...")
+ * and where it lands in rr_rig_config, the flat struct of primary values.
+ * rollerrig/data/rig_default.toml is generated from this table (the Python
+ * binding exports it; tests/test_rig_params.py checks that the shipped file
+ * is current); docs/parameters.md gives the derivations.
+ *
+ * From primary values to the rig: rr_rig_params_from derives rr_rig_params
+ * (spin inertia plus drive inertia, E* and G from E and nu, the creepage
+ * controller's sense, the friction law's A and B, ...).  A C program gets
+ * the paper's rig with
+ *
+ *     rr_rig_config c;  rr_rig_geometry g;  rr_rig_params p;
+ *     rr_rig_config_default(&c);                 (the paper's values, 4 ms)
+ *     rr_rig_geometry_from(&c, &g);
+ *     rr_rig_table_build(&g, data, ..., work, ..., &t, NULL);   (rr_tables.h)
+ *     rr_rig_params_from(&c, &t, &p);            (table, calibrated radii)
+ *     rr_rig_init(&p, c.roller_speed / c.roller_radius, &rig);
+ *
+ * (examples/rig_paper.c runs the paper's scenario so, bitwise as
+ * rollerrig.simulate()), or rr_rig_params_default(&p) and then
+ * rr_rig_params_set_table(&p, &t).
+ *
+ * or, to change a value first, rr_rig_config_default, rr_rig_config_set*,
+ * rr_rig_params_from.  The scenario (roller speed, targets and their start
+ * times, duration, sample time) is part of rr_rig_config: rr_rig_samples
+ * and rr_rig_schedule give the paper's run sample by sample.
+ *
+ * Rows flagged creep (contact.creep_method, fastsim_*, polach_kA, kS) are the
+ * creep-force method's options: declared here with their defaults and
+ * origins, but checked and applied through rr_creep_opts (rr_creep.h), not
+ * through rr_rig_config.
+ *
+ * Statuses: RR_ERR_NULL for a NULL pointer, RR_ERR_PARAM for an unknown name,
+ * a value of the wrong type (a fraction for an integer, an unknown choice,
+ * a creep row given to rr_rig_config_set*) or out of its range,
+ * RR_ERR_NONFINITE for NaN or an infinity.  Nothing here allocates or keeps
+ * state.
+ */
+#ifndef RR_RIG_PARAMS_H
+#define RR_RIG_PARAMS_H
+
+#include <stddef.h>
+#include "rig/rr_rig.h"
+#include "geometry/rr_tables.h"
+
+enum rr_rig_param_type {
+    RR_RIG_REAL = 0,   /* a finite double in [lo, hi] (ends open if lo_open, hi_open) */
+    RR_RIG_INT,        /* an integer in [lo, hi], stored as int */
+    RR_RIG_FLAG,       /* 0 (false) or 1 (true), stored as int */
+    RR_RIG_CHOICE,     /* one of choices[] by index, stored as int */
+    RR_RIG_LIST        /* 1 to RR_RIG_MAX_LIST doubles, each in [lo, hi], an rr_rig_list */
+};
+
+#define RR_RIG_MAX_LIST 256
+
+typedef struct {
+    int n;
+    double v[RR_RIG_MAX_LIST];
+} rr_rig_list;
+
+/* The primary values of the rig and its scenario, one member per row. */
+typedef struct {
+    /* scenario */
+    double roller_speed;        /* roller surface speed [m/s] */
+    rr_rig_list targets;        /* creepage targets (magnitudes) */
+    rr_rig_list target_start;   /* their start times [s] */
+    double duration;            /* [s] */
+    double mu0;
+    int drive_mode;             /* index: braking, traction */
+    double T;                   /* control sample time [s] */
+    double g;                   /* [m/s^2] */
+    /* wheelset */
+    double mass, spin_inertia, yaw_inertia, wheel_radius, contact_half_spacing,
+        axlebox_half_spacing;
+    int wheel_profile;          /* index: conical */
+    double conicity, profile_half_width;
+    /* roller */
+    double roller_radius;
+    int roller_profile;         /* index: crowned cylinder */
+    double crown_radius, roller_inertia;
+    /* suspension, per axle box; preload of both boxes */
+    double kx, ky, kz, cx, cy, cz, preload;
+    /* contact */
+    double E, nu;
+    int friction_law;           /* index: polach_falling, coulomb */
+    double polach_A, polach_B, vmin;
+    /* drives */
+    double roller_kp, roller_ki, roller_tmax, roller_tau;
+    int roller_counts;
+    double wheelset_kp, wheelset_ki, wheelset_tmax, wheelset_tau;
+    int wheelset_counts;
+    double drive_inertia;
+    /* creepage controller */
+    double ctl_alpha, ctl_beta, ctl_vmin;
+    /* integration */
+    int ode_method;             /* index: trbdf2, ros2, lineuler */
+    int newton_iterations, linear_first_stage, newton_model, substeps;
+    double table_half_range;
+    int table_rows;
+} rr_rig_config;
+
+typedef struct {
+    const char *name;           /* "section.key" of rig_default.toml */
+    const char *unit;           /* "-" dimensionless, "" for a name or a flag */
+    int type;                   /* enum rr_rig_param_type */
+    double value;               /* default: REAL, INT, FLAG (0, 1), CHOICE (index) */
+    const char *text;           /* the default as TOML text */
+    double lo, hi;              /* range of REAL, INT and of each LIST entry */
+    int lo_open, hi_open;
+    const char *const *choices; /* CHOICE: the names, NULL-terminated */
+    const double *list;         /* LIST: the default entries */
+    int nlist;
+    long offset;                /* of the member in rr_rig_config; -1 for a creep row */
+    int creep;                  /* 1: an option of the creep-force method (see above) */
+    const char *origin;         /* where the default comes from */
+} rr_rig_param;
+
+/* A section of the parameter file: its name and a note on all its rows. */
+typedef struct {
+    const char *name;
+    const char *note;           /* "" when none */
+} rr_rig_section;
+
+/* A key the parameters no longer have (it acted on nothing), and why. */
+typedef struct {
+    const char *name;           /* "section.key", or a whole "section" */
+    const char *reason;
+} rr_rig_retired;
+
+/* A named output: record fields (RR_REC_*), the per-wheel contact block. */
+typedef struct {
+    const char *name;
+    int width;                  /* consecutive doubles: 1, or 3 for a vector */
+    long offset;                /* of the member in rr_wheel_contact (wheel fields; -1 else) */
+    const char *unit;
+    const char *meaning;
+} rr_rig_field;
+
+/* The tables: count and row i (NULL out of range), row by name (NULL if unknown). */
+int rr_rig_param_count(void);
+const rr_rig_param *rr_rig_param_at(int i);
+const rr_rig_param *rr_rig_param_find(const char *name);
+int rr_rig_section_count(void);
+const rr_rig_section *rr_rig_section_at(int i);
+int rr_rig_retired_count(void);
+const rr_rig_retired *rr_rig_retired_at(int i);
+
+/* rr_rig_param_choice - the index of `choice` among a CHOICE row's names, or -1. */
+int rr_rig_param_choice(const rr_rig_param *row, const char *choice);
+
+/* rr_rig_config_default - every member at its row's default.  RR_ERR_NULL. */
+int rr_rig_config_default(rr_rig_config *c);
+
+/*
+ * rr_rig_config_set - set the REAL, INT, FLAG or CHOICE (by index) row `name`
+ * to v, checked against its range; rr_rig_config_set_choice a CHOICE row by
+ * name; rr_rig_config_set_list a LIST row to v[0..n-1].  On error nothing
+ * changes.
+ */
+int rr_rig_config_set(rr_rig_config *c, const char *name, double v);
+int rr_rig_config_set_choice(rr_rig_config *c, const char *name, const char *choice);
+int rr_rig_config_set_list(rr_rig_config *c, const char *name, int n, const double *v);
+
+/*
+ * rr_rig_config_check - 0 if every member is within its row's range and the
+ * scenario holds together (one start time per target, increasing, all
+ * before the duration; at least one sample in the duration); else the
+ * status, and *bad (may be NULL) the name of the row at fault.
+ */
+int rr_rig_config_check(const rr_rig_config *c, const char **bad);
+
+/*
+ * rr_rig_params_from - the rig's parameters of checked primary values:
+ * mass, inertias (Iyy = wheelset.spin_inertia + wheelset_drive.drive_inertia),
+ * springs, dampers, preload, g; the contact model's R0 = roller.radius_m,
+ * E* = E / (2 (1 - nu^2)) and G = E / (2 (1 + nu)) (wheel and roller of one
+ * material), mu0, the falling law's A, B (coulomb: A = 1, B = 0), vmin; the
+ * sample time T of the PI controllers and encoders; the integrator; the
+ * creepage controller (sense from scenario.drive_mode) with the nominal
+ * radii wheelset.wheel_radius_m, roller.radius_m; the creep-force method at
+ * the rows' defaults (FASTSIM, contact.fastsim_nx x fastsim_ny, rigid slip
+ * speed): set p->contact.creep afterwards for another method.  With t not
+ * NULL, rr_rig_params_set_table(p, t) follows.  Status: rr_rig_config_check's
+ * (p zeroed), RR_ERR_NULL.
+ */
+int rr_rig_params_from(const rr_rig_config *c, const rr_contact_table *t, rr_rig_params *p);
+
+/*
+ * rr_rig_params_set_table - the contact table the rig reads, and eq. 15-16's
+ * radii r_w, r_r at the centred wheelset's rolling radii (a calibrated rig):
+ * the table's row at y = 0.  Status of the lookup; RR_ERR_NULL.
+ */
+int rr_rig_params_set_table(rr_rig_params *p, const rr_contact_table *t);
+
+/*
+ * rr_rig_params_default - the paper's rig at the defaults (sample time
+ * scenario.control_sample_time_s, 4 ms): rr_rig_params_from of the default
+ * config with no table.  The caller must then give the contact table:
+ * rr_rig_params_set_table (p->contact.table is NULL, and r_w, r_r the
+ * nominal radii, until then).  For another sample time set it in an
+ * rr_rig_config and use rr_rig_params_from (T is also in the PI and encoder
+ * parameters).  Status: RR_ERR_NULL.
+ */
+int rr_rig_params_default(rr_rig_params *p);
+
+/*
+ * rr_rig_geometry_from - the geometry of the rig's contact table
+ * (rr_rig_table_build): radii, profile half width, cone angle
+ * atan(wheelset.conicity), crown, contact half spacing, table half range and
+ * rows.  Status: RR_ERR_NULL.
+ */
+int rr_rig_geometry_from(const rr_rig_config *c, rr_rig_geometry *g);
+
+/* rr_rig_samples - samples of the scenario: round(duration / T), at least 1; 0 for NULL. */
+long rr_rig_samples(const rr_rig_config *c);
+
+/*
+ * rr_rig_schedule - the references of sample k (which starts at t = k T):
+ * roller_ref = roller_speed / roller_radius [rad/s]; xi_ref = the target of
+ * the last start time <= t, NaN before the first (no creepage control), as
+ * rollerrig.rig.schedule.  Status: RR_ERR_NULL, RR_ERR_PARAM for k < 0.
+ */
+int rr_rig_schedule(const rr_rig_config *c, long k, double *roller_ref, double *xi_ref);
+
+/* The record fields of rr_rig_step, in the order of enum rr_rig_record_index. */
+const rr_rig_field *rr_rig_record_field(int i);   /* NULL unless 0 <= i < RR_REC_COUNT */
+
+/*
+ * The per-wheel contact block: the rr_wheel_contact members a caller (the
+ * binding) stores as RR_WHEEL_NVALUES consecutive doubles, field by field
+ * (offset, width).
+ */
+#define RR_WHEEL_NFIELDS 23
+#define RR_WHEEL_NVALUES 35
+const rr_rig_field *rr_wheel_field(int i);        /* NULL unless 0 <= i < RR_WHEEL_NFIELDS */
+
+/* rr_wheel_store - the block of w into v[RR_WHEEL_NVALUES]; stride between values. */
+void rr_wheel_store(const rr_wheel_contact *w, double *v, long stride);
+
+#endif

@@ -1,0 +1,81 @@
+"""The rig's parameters, record fields and per-wheel block are declared once
+in C (csrc/rig/rr_rig_params.c) and exported; everything else follows."""
+import math
+
+import numpy as np
+import pytest
+
+import rollerrig as rr
+from rollerrig import _core, rig
+from rollerrig.rig import DEFAULTS_PATH, PARAMETERS, RETIRED, defaults_toml
+
+try:
+    import tomllib
+except ImportError:                                     # Python < 3.11
+    import tomli as tomllib
+
+
+def test_the_shipped_defaults_file_is_generated_from_the_c_table():
+    """rig_default.toml is the C declaration written out (rig.write_defaults)."""
+    with open(DEFAULTS_PATH, encoding="utf-8") as fh:
+        assert fh.read() == defaults_toml(), \
+            "rig_default.toml is stale: run python -c 'import rollerrig.rig; " \
+            "rollerrig.rig.write_defaults()'"
+    with open(DEFAULTS_PATH, "rb") as fh:
+        assert tomllib.load(fh) == rr.default_parameters()
+
+
+def test_every_row_is_complete_and_its_text_is_its_value():
+    names = [p.name for p in PARAMETERS]
+    assert len(set(names)) == len(names)
+    for p in PARAMETERS:
+        assert p.origin and p.name.count(".") == 1, p.name
+        assert p.type in ("real", "int", "flag", "choice", "list"), p.name
+        if p.creep:
+            continue
+        if p.type in ("real", "int"):
+            assert float(p.text) == p.default, p.name
+            assert rig._rule(p)(p.default) is None
+            assert rig._rule(p)(math.nan) is not None
+        if p.type == "list":
+            assert list(tomllib.loads(f"v = {p.text}")["v"]) == list(p.default), p.name
+        if p.type == "choice":
+            assert p.default in p.choices
+    assert not set(names) & set(RETIRED)
+
+
+def test_record_and_wheel_fields_come_from_c():
+    assert rig.RECORD_FIELDS == tuple(r[0] for r in _core.RIG_RECORD)
+    assert len(rig.RECORD_FIELDS) == _core.REC_COUNT
+    assert sum(w for _, w, _, _ in _core.RIG_WHEEL_FIELDS) == 35
+    from rollerrig.rig_contact import WheelContact
+    assert WheelContact._fields[:-1] == tuple(f[0] for f in _core.RIG_WHEEL_FIELDS)
+
+
+def test_binding_takes_declared_names_and_refuses_the_rest():
+    P = rr.default_parameters()
+    table = rig._geometry(P)
+    opts = rr.contact._options("t", **rig._creep_options("t", P, None, None, None, {}))
+    for bad, msg in (({"wheelset.mass": 1.0}, "not a rig parameter"),
+                     ({"contact.fastsim_nx": 20}, "creep-force option"),
+                     ({"wheelset.mass_kg": -1.0}, "wheelset.mass_kg = -1.0"),
+                     ({"integration.method": "rk4"}, "integration.method = 'rk4'"),
+                     ({"integration.table_rows": 2.5}, "integration.table_rows = 2.5"),
+                     ({"scenario.targets": [0.1, math.nan]}, "scenario.targets"),
+                     ({"scenario.targets": [0.1]}, "scenario.target_start_s")):
+        with pytest.raises(ValueError, match=msg):
+            _core.Rig(table.data, table.y0, table.dy, bad, opts, 10.0)
+
+
+def test_schedule_is_the_c_schedule():
+    """rig.schedule (numpy) and rr_rig_schedule (C, the paper program's) agree
+    on the paper's run: the C program's bitwise records prove it there; here
+    the rule itself, at the start times and either side of them."""
+    P = rr.default_parameters()
+    S = P["scenario"]
+    roller, xi = rig.schedule(P, S["duration_s"], S["control_sample_time_s"], S["targets"],
+                              S["target_start_s"], S["roller_speed_m_s"])
+    k = np.arange(roller.size)
+    idx = np.searchsorted(S["target_start_s"], k * S["control_sample_time_s"], "right") - 1
+    assert np.array_equal(xi, np.asarray(S["targets"])[idx])
+    assert np.all(roller == S["roller_speed_m_s"] / P["roller"]["radius_m"])
