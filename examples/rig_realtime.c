@@ -94,9 +94,9 @@ static void rig_defaults(rr_rig_params *p, const rr_contact_table *t, double T)
     p->contact.friction.mu0 = 0.4;
     p->contact.friction.A = 0.4;
     p->contact.friction.B = 0.6;
-    rr_creep_opts_default(RR_METHOD_FASTSIM, &p->contact.creep);
-    p->contact.creep.nx = p->contact.creep.ny = 20;
-    p->contact.creep.slip_speed = RR_SLIP_RIGID;
+    rr_creep_opts_default(&p->contact.creep, RR_METHOD_FASTSIM);
+    p->contact.creep.v[RR_FASTSIM_NX] = p->contact.creep.v[RR_FASTSIM_NY] = 20;
+    p->contact.creep.v[RR_FASTSIM_SLIP_SPEED] = RR_SLIP_RIGID;
     p->contact.vmin = 0.01;
     p->T = T;
     p->nsub = 1;

@@ -74,9 +74,9 @@ static inline void fz_rig_contact_default(rr_rig_contact_model *m)
     m->friction.mu0 = 0.4;
     m->friction.A = 0.4;
     m->friction.B = 0.6;
-    rr_creep_opts_default(RR_METHOD_FASTSIM, &m->creep);
-    m->creep.nx = m->creep.ny = 20;
-    m->creep.slip_speed = RR_SLIP_RIGID;
+    rr_creep_opts_default(&m->creep, RR_METHOD_FASTSIM);
+    m->creep.v[RR_FASTSIM_NX] = m->creep.v[RR_FASTSIM_NY] = 20;
+    m->creep.v[RR_FASTSIM_SLIP_SPEED] = RR_SLIP_RIGID;
     m->vmin = 0.01;
 }
 

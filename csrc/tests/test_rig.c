@@ -46,9 +46,9 @@ static void setup(rr_contact_table *t, rr_rig_params *p)
     p->contact.estar = rr_estar(2.1e11, 0.28, 2.1e11, 0.28);
     p->contact.G = 2.1e11 / 2.56; p->contact.nu = 0.28;
     p->contact.friction.mu0 = 0.4; p->contact.friction.A = 0.4; p->contact.friction.B = 0.6;
-    rr_creep_opts_default(RR_METHOD_FASTSIM, &p->contact.creep);
-    p->contact.creep.nx = p->contact.creep.ny = 20;
-    p->contact.creep.slip_speed = RR_SLIP_RIGID;
+    rr_creep_opts_default(&p->contact.creep, RR_METHOD_FASTSIM);
+    p->contact.creep.v[RR_FASTSIM_NX] = p->contact.creep.v[RR_FASTSIM_NY] = 20;
+    p->contact.creep.v[RR_FASTSIM_SLIP_SPEED] = RR_SLIP_RIGID;
     p->contact.vmin = 0.01;
     p->T = 0.004; p->nsub = 1; p->method = RR_ODE_TRBDF2; p->newton_iters = 1;
     p->linear_tr = 1;
