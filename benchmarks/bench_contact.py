@@ -166,8 +166,9 @@ class Kernel(CProgram):
         """Time the kernel over the cases in `path` (write_cases); method None
         for Hertz.  Returns bench_kernel's JSON line as a dict."""
         args = ["hertz", path, str(repeats)] if method is None else \
-            ["creep", path, str(repeats), str(contact.METHODS[method]), str(nx), str(ny),
-             str(contact.GRIDS[grid])]
+            ["creep", path, str(repeats), method, str(nx), str(ny),
+             str(contact.METHODS[method].options["grid"].choices.index(grid))
+             if "grid" in contact.METHODS[method].options else "0"]
         proc = subprocess.run([self.exe] + args, capture_output=True, text=True)
         if proc.returncode != 0:
             raise RuntimeError(f"bench_kernel failed: {proc.stderr.strip()}")

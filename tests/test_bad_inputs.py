@@ -113,14 +113,17 @@ def test_incompressible_body_is_accepted():
 
 
 def test_binding_refuses_integers_outside_the_c_range():
-    """method = 2**32 + 1 was taken as FASTSIM (the C int wrapped to 1)."""
+    """method = 2**32 + 1 was taken as FASTSIM (the C int wrapped to 1).  The
+    binding now takes methods by name: a number is refused whatever it is."""
     args = [np.array([v]) for v in (1e-3, 0, 0, 6e-3, 6e-3, 1e4, 0.3, 8.2e10, 0.28, 0, 1, 0)]
-    with pytest.raises(ValueError, match="method must be an integer from 0 to"):
+    with pytest.raises(ValueError, match="method must be one of 'linear', .*got 4294967297"):
         _core.creep_forces(*args, method=2 ** 32 + 1)
     with pytest.raises(ValueError, match="nx must be an integer"):
-        _core.creep_forces(*args, method=1, nx=2 ** 40)
+        _core.creep_forces(*args, method="fastsim", nx=2 ** 40)
     with pytest.raises(ValueError, match="nx must be an integer"):
-        _core.creep_forces(*args, method=1, nx=True)
+        _core.creep_forces(*args, method="fastsim", nx=True)
+    with pytest.raises(ValueError, match=r"nx must be an integer in \[1, 4096\], got 4294967297"):
+        _core.creep_forces(*args, method="fastsim", nx=2 ** 32 + 1)
 
 
 # ------------------------------------------------------------------ the rig contact
