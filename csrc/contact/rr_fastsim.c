@@ -468,7 +468,7 @@ static int grid_of(const rr_creep_opts *o, int *nx, int *ny)
 /* The error path: NaN forces and, where its size is known, a NaN field. */
 static int fail(int st, const rr_creep_opts *o, rr_forces *out, rr_fastsim_field *f)
 {
-    int nx, ny;
+    int nx = 0, ny = 0;
     if (out)
         rr_forces_nan(out);
     if (f && o && grid_of(o, &nx, &ny)) {
@@ -498,7 +498,7 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
     flex fl;
     march m;
     group cache[GROUP_CACHE], tmp, *g;    /* the groups of the first rows, set up once */
-    int nx, ny;
+    int nx = 0, ny = 0;
     double dy, S = 0.0, fx = 0.0, fy = 0.0, mz = 0.0;
     int st, j, n, falling, local, converged = 1, nslip = 0;
 
