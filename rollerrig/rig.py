@@ -570,7 +570,9 @@ def _creep_options(func, P, method, nx, ny, creep):
                              f"options are {list(CREEP_OPTIONS)}")
     has = METHODS[method].options
     opts = {o: C[key] for key, o in _FILE_OPTIONS.items() if o in has and key in C}
-    opts.update({k: v for k, v in (("nx", nx), ("ny", ny)) if v is not None})
+    # nx, ny are arguments of their own, like the file's keys: the grid of a
+    # method that has one (a method without one takes no grid)
+    opts.update({k: v for k, v in (("nx", nx), ("ny", ny)) if v is not None and k in has})
     opts.update(creep)
     return check_creep_options(func, method, opts)
 

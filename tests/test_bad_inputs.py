@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 import rollerrig as rr
+from _options import own
 from rollerrig import _core
 
 from _child import run_python, start_python
@@ -96,7 +97,7 @@ def test_every_frictional_method_keeps_the_friction_limit_at_extremes(method):
     cphi = rng.normal(0, 5.0, n)
     a = 10 ** rng.uniform(-4, -1, n)
     b = a * 10 ** rng.uniform(-1.5, 1.5, n)
-    f = rr.creep_forces(cx, cy, cphi, a=a, b=b, N=1e4, mu=0.4, method=method, nx=12, ny=12)
+    f = rr.creep_forces(cx, cy, cphi, a=a, b=b, N=1e4, mu=0.4, **own(method, nx=12, ny=12))
     assert np.all(f.status >= 0)
     assert np.all(np.hypot(f.fx, f.fy) <= 0.4e4 * (1 + 1e-12))
 
