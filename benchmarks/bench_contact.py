@@ -19,8 +19,8 @@ several repeats (see benchmarks/README.md):
 2. the speed-up of two threads over one (concurrent.futures.ThreadPoolExecutor,
    the binding releases the GIL) for a large FASTSIM 20x20 and Polach batch
    split in two halves;
-3. the pure-Python twin (rollerrig.twin.fastsim) against the C batch on the
-   same FASTSIM 30x30 cases;
+3. the pure-Python twin (tests/twin.py's fastsim, the tests' slow reference)
+   against the C batch on the same FASTSIM 30x30 cases;
 4. a published reference figure for context (CONTACT, not measured here).
 
 Writes its Markdown report as the "contact" section of benchmarks/RESULTS.md
@@ -34,7 +34,6 @@ import argparse
 import concurrent.futures
 import datetime
 import gc
-import inspect
 import json
 import math
 import os
@@ -298,47 +297,34 @@ def threads(rng, sz):
 
 
 def twin_section(rng, sz):
-    """The pure-Python twin against the C batch on the same FASTSIM 30x30 cases."""
-    from rollerrig import twin
-    fn = twin.fastsim
-    params = inspect.signature(fn).parameters
-    has_grid = "grid" in params
-    grid = "rect" if has_grid else "strips"
+    """The pure-Python twin (tests/twin.py, the tests' slow reference) against
+    the C batch on the same FASTSIM 30x30 cases, rect grid."""
+    sys.path.insert(0, os.path.join(ROOT, "tests"))
+    import twin
+
     k = sz["twin_cases"]
     cases = creep_cases(rng, k)
-    fixed = dict(mu=MU, G=G, nu=NU, nx=30, ny=30, bound="parabolic", grid=grid,
-                 variant="fastsim", method="fastsim", speed=0.0, A=1.0, B=0.0)
-    accepts_any = any(p.kind is p.VAR_KEYWORD for p in params.values())
-    kwargs = {key: v for key, v in fixed.items() if key in params or
-              (accepts_any and key not in ("variant", "method"))}
-    per_case = [dict(kwargs, **{name: float(cases[name][i])
-                                for name in ("cx", "cy", "cphi", "a", "b", "N")})
+    per_case = [dict(cx=float(cases["cx"][i]), cy=float(cases["cy"][i]),
+                     cphi=float(cases["cphi"][i]), a=float(cases["a"][i]),
+                     b=float(cases["b"][i]), N=float(cases["N"][i]), mu=MU, G=G, nu=NU,
+                     nx=30, ny=30, bound="parabolic", grid="rect", variant="fastsim")
                 for i in range(k)]
-    known = set(per_case[0])
-    missing = [p.name for p in params.values()
-               if p.default is p.empty and p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY)
-               and p.name not in known]
-    if missing:
-        raise RuntimeError(f"twin.fastsim needs arguments this benchmark does not know: "
-                           f"{missing}")
-    log(f"  twin.fastsim{inspect.signature(fn)}"[:200])
-    log(f"  twin: {k} cases, grid={grid!r} ...")
-    twin_out = [fn(**kw)[:3] for kw in per_case]               # also the warm-up
-    c_out = call_creep(cases, "fastsim", 30, 30, grid)
+    log(f"  twin: {k} cases, grid='rect' ...")
+    twin_out = [twin.fastsim(**kw) for kw in per_case]         # also the warm-up
+    c_out = call_creep(cases, "fastsim", 30, 30, "rect")
     tiled = {name: np.tile(v, sz["twin_tile"]) for name, v in cases.items()}
 
     def c_small():                    # one call on the few cases: best of 20
-        return min(timed(lambda: call_creep(cases, "fastsim", 30, 30, grid))()
+        return min(timed(lambda: call_creep(cases, "fastsim", 30, 30, "rect"))()
                    for _ in range(20))
     t_twin, t_c, t_c_small = interleaved(
-        [timed(lambda: [fn(**kw) for kw in per_case]),
-         timed(lambda: call_creep(tiled, "fastsim", 30, 30, grid)), c_small],
+        [timed(lambda: [twin.fastsim(**kw) for kw in per_case]),
+         timed(lambda: call_creep(tiled, "fastsim", 30, 30, "rect")), c_small],
         sz["twin_repeats"])
     scale = MU * cases["N"]
     diff = max(math.hypot(tw[0] - fx, tw[1] - fy) / s
                for tw, fx, fy, s in zip(twin_out, c_out.fx, c_out.fy, scale))
-    return dict(cases=k, grid=grid, has_grid=has_grid, signature=str(inspect.signature(fn)),
-                twin_us=t_twin / k * 1e6, c_us=t_c / (k * sz["twin_tile"]) * 1e6,
+    return dict(cases=k, twin_us=t_twin / k * 1e6, c_us=t_c / (k * sz["twin_tile"]) * 1e6,
                 c_small_us=t_c_small / k * 1e6, tile=sz["twin_tile"],
                 repeats=sz["twin_repeats"], max_diff=diff)
 
@@ -346,12 +332,9 @@ def twin_section(rng, sz):
 # -------------------------------------------------------------------- report
 
 def twin_table(L, tw):
-    note = ("the twin has a `grid` parameter: both use grid=\"rect\"" if tw["has_grid"] else
-            "the twin has no `grid` parameter (it marches Kalker's strips), so the C side "
-            "uses grid=\"strips\" here")
-    L.append(f"rollerrig.twin.fastsim{tw['signature']} against creep_forces(method=\"fastsim\") "
-             f"at 30x30, parabolic bound, on the same {tw['cases']} cases; {note}. "
-             f"C batched: one call on the {tw['cases']} cases tiled {tw['tile']} times.")
+    L.append(f"tests/twin.py's fastsim against creep_forces(method=\"fastsim\") at 30x30, "
+             f"parabolic bound, rect grid, on the same {tw['cases']} cases. C batched: one "
+             f"call on the {tw['cases']} cases tiled {tw['tile']} times.")
     L.append("")
     L.append("| implementation | us/case | ratio twin / C |")
     L.append("| --- | ---: | ---: |")
@@ -362,7 +345,7 @@ def twin_table(L, tw):
              f"{tw['twin_us'] / tw['c_small_us']:.0f}x |")
     L.append("")
     L.append(f"Largest difference twin - C on these cases: |dF| = {fmt(tw['max_diff'])} "
-             "mu N (information only; the twin may lag a change of the C core).")
+             "mu N (tests/test_twin.py holds it within 1e-12 mu N).")
     L.append("")
 
 
@@ -466,11 +449,7 @@ def report(args, info, load0, load1, date, rows, thr, tw, kernel, kernel_ext, mo
 
     L.append("## Pure-Python twin")
     L.append("")
-    if "error" in tw:
-        L.append(f"Not measured: rollerrig.twin.fastsim failed ({tw['error']}).")
-        L.append("")
-    else:
-        twin_table(L, tw)
+    twin_table(L, tw)
 
     L.append("## Reference (not measured here)")
     L.append("")
@@ -544,11 +523,7 @@ def main(argv=None):
         log("threads ...")
         thr = mon.section("threads", threads, rng, sz)
         log("pure-Python twin ...")
-        try:
-            tw = mon.section("twin", twin_section, rng, sz)
-        except Exception as exc:      # the twin is another module's work in progress
-            log(f"  twin not measured: {exc!r}")
-            tw = dict(error=f"{type(exc).__name__}: {exc}")
+        tw = mon.section("twin", twin_section, rng, sz)
 
     load1 = load_average()
     text = report(args, info, load0, load1, date, rows, thr, tw, kernel, kernel_ext, mon,

@@ -23,6 +23,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 import rollerrig as rr  # noqa: E402
+from rollerrig import plot as rp  # noqa: E402
 from rollerrig import reference as ref  # noqa: E402
 
 GRID = dict(nx=30, ny=30)     # the FASTSIM variants on the 3220 cases
@@ -53,7 +54,7 @@ def draw_error_map(results, path):
                              constrained_layout=True)
     top = max(float(np.nanmax(r.error)) for r in pair)
     for row, r in zip(axes, pair):
-        ref.error_map(r, ax=row, vmax=top, colorbar=False)
+        rp.error_map(r, ax=row, vmax=top, colorbar=False)
         row[0].set_ylabel(f"{r.method}\ncreepage magnitude (normalised)")
     for axi in axes[0]:
         axi.set_xlabel("")

@@ -65,7 +65,7 @@ from ._optional import require
 from .contact import FallingFriction, creep_forces
 
 __all__ = ["FitResult", "fit_polach", "fit_modified_fastsim", "POLACH_PARAMETERS",
-           "MODIFIED_FASTSIM_PARAMETERS", "LOSSES"]
+           "MODIFIED_FASTSIM_PARAMETERS", "PARAMETER_UNITS", "LOSSES"]
 
 _TINY = 1e-6      # stands in for an open lower bound at 0 (all parameters are O(0.1 - 1))
 _INF = np.inf
@@ -79,6 +79,10 @@ POLACH_PARAMETERS = {
     "kA": (1.0, 0.0, 1.0, True, False),
     "kS": (0.4, 0.0, 1.0, True, False),
 }
+#: units of the fitted parameters ("-": dimensionless); A, B are the falling
+#: friction law's (FallingFriction; creep_forces' friction.A, friction.B)
+PARAMETER_UNITS = {"mu0": "-", "A": "-", "B": "s/m", "kA": "-", "kS": "-", "k0": "-",
+                   "alpha_inf": "-", "beta": "-"}
 # Spiryagin, Polach and Cole 2013 as in CONTACT's example: k0 0.54, alpha_inf 0.02, beta 0.62
 MODIFIED_FASTSIM_PARAMETERS = {
     "mu0": (None, 0.0, _INF, True, True),

@@ -16,7 +16,8 @@ tests/data; each CSV's first line names its source):
     r = ref.score("fastsim", nx=30, ny=30)     # r.error: |dF|/(mu N) per case
     r.overall["median"], r.by_spin[0.5]["p95"]
     print(ref.table([r, ref.score("fastsim_blended")]))
-    ref.error_map(r)                           # one panel per spin level
+    import rollerrig.plot as rp
+    rp.error_map(r)                            # one panel per spin level
     ref.score_curves("fastsim", nx=48, ny=44)[3].rms
 
 Errors are the vector |(dFx, dFy)| / (mu N) and |dMz| / (mu N cp), cp the
@@ -30,17 +31,15 @@ import inspect
 import math
 import os
 import re
-import warnings
 from typing import NamedTuple, Optional
 
 import numpy as np
 
 from ._errors import RollerRigError
-from ._optional import require
 from .contact import METHODS, FallingFriction, creep_forces
 
 __all__ = ["ExactCases", "ScoreResult", "CreepCurve", "CurveScore", "exact_cases", "score",
-           "table", "error_map", "creep_curves", "score_curves", "DATA_DIR", "TABLE_FILE",
+           "table", "creep_curves", "score_curves", "DATA_DIR", "TABLE_FILE",
            "CURVES_FILE"]
 
 DATA_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", "reference")
@@ -283,110 +282,6 @@ def table(results, split=True):
                  if not any(r.overall["n_failed"] for r in results)
                  else "; n+k!: k cases failed (NaN), left out"))
     return "\n".join(lines)
-
-
-def _map_grid(result, spin, quantity, reduce, ellipticity):
-    """(angles, magnitudes, values[n_mag, n_ang]) of one spin level."""
-    t = result.cases
-    err = result.error if quantity == "force" else result.mz_error
-    sel = t.spin == spin
-    if ellipticity is not None:
-        sel &= t.a_over_b == ellipticity
-    angles, magnitudes = np.unique(t.angle), np.unique(t.magnitude)
-    ia = np.searchsorted(angles, t.angle[sel])
-    im = np.searchsorted(magnitudes, t.magnitude[sel])
-    stack = np.full((magnitudes.size, angles.size, np.unique(t.a_over_b).size), np.nan)
-    count = np.zeros((magnitudes.size, angles.size), dtype=int)
-    for i, j, e in zip(im, ia, err[sel]):
-        stack[i, j, count[i, j]] = e
-        count[i, j] += 1
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", RuntimeWarning)      # all-NaN cells stay NaN
-        values = {"max": np.nanmax, "median": np.nanmedian, "mean": np.nanmean}[reduce](
-            stack, axis=2)
-    return angles, magnitudes, values
-
-
-def error_map(result, ax=None, *, spin=None, quantity="force", reduce="max",
-              ellipticity=None, vmax=None, cmap="viridis", colorbar=None, title=True):
-    """Draw a ScoreResult's error over the creepage direction / magnitude plane.
-
-    One panel per spin level (ax None: a new figure; or a sequence of as many
-    axes), or the one level `spin` on the axes `ax`.  x: the direction of
-    the creepage atan2(cy, cx) in degrees; y: its normalised magnitude (one
-    row per table value, not to scale).  Each cell shows the error of the
-    5 ellipticities reduced by `reduce` ("max", "median" or "mean"), or of
-    the one a/b `ellipticity`.  quantity: "force" (|dF|/(mu N)) or "mz"
-    (|dMz|/(mu N cp)).  vmax: top of the colour scale (default the largest
-    value drawn).  colorbar: add one (default: when a figure is made here).
-    Returns the axes (an array for several panels).  Needs matplotlib (a
-    dependency of the base install; extra "plot").
-    """
-    func = "error_map"
-    plt = require("matplotlib.pyplot", "rollerrig.reference.error_map", "plot",
-                  package="matplotlib")
-
-    if not isinstance(result, ScoreResult):
-        raise RollerRigError(f"{func}: result must be a ScoreResult from score(), "
-                             f"got {type(result).__name__}")
-    if quantity not in ("force", "mz"):
-        raise RollerRigError(f"{func}: quantity must be 'force' or 'mz', got {quantity!r}")
-    if reduce not in ("max", "median", "mean"):
-        raise RollerRigError(f"{func}: reduce must be 'max', 'median' or 'mean', "
-                             f"got {reduce!r}")
-    t = result.cases
-    levels = [float(v) for v in np.unique(t.spin)]
-    if ellipticity is not None and float(ellipticity) not in set(t.a_over_b.tolist()):
-        raise RollerRigError(f"{func}: ellipticity must be one of "
-                             f"{sorted(set(t.a_over_b.tolist()))}, got {ellipticity!r}")
-    if spin is not None:
-        if float(spin) not in levels:
-            raise RollerRigError(f"{func}: spin must be one of {levels}, got {spin!r}")
-        levels = [float(spin)]
-    made = ax is None
-    if made:
-        fig, axes = plt.subplots(1, len(levels), figsize=(2.6 * len(levels) + 1.2, 4.4),
-                                 sharey=True, squeeze=False, constrained_layout=True)
-        axes = axes[0]
-    else:
-        axes = np.atleast_1d(np.asarray(ax, dtype=object)).ravel()
-        if axes.size != len(levels):
-            raise RollerRigError(f"{func}: {len(levels)} spin level(s) to draw but "
-                                 f"{axes.size} axes given; pass spin= for one panel")
-        fig = axes[0].figure
-    grids = [_map_grid(result, s, quantity, reduce, ellipticity) for s in levels]
-    top = vmax if vmax is not None else max(np.nanmax(g[2]) for g in grids)
-    mesh = None
-    for axi, s, (angles, magnitudes, values) in zip(axes, levels, grids):
-        deg = np.degrees(angles)
-        step = deg[1] - deg[0] if deg.size > 1 else 30.0
-        xe = np.concatenate([deg - step / 2, [deg[-1] + step / 2]])
-        ye = np.arange(magnitudes.size + 1) - 0.5
-        mesh = axi.pcolormesh(xe, ye, values, cmap=cmap, vmin=0.0, vmax=top, shading="flat")
-        axi.set_xticks(deg[::max(1, deg.size // 4)] if deg.size > 7 else deg)
-        axi.set_xticklabels([f"{d:.0f}" for d in axi.get_xticks()])
-        show = [i for i, m in enumerate(magnitudes) if m in (0, 0.5, 1.1, 2, 3, 5, 8, 12)] \
-            or list(range(0, magnitudes.size, 3))
-        axi.set_yticks(show)
-        axi.set_yticklabels([f"{magnitudes[i]:g}" for i in show])
-        axi.set_xlabel("creepage direction [deg]")
-        if title:
-            sel = t.spin == s
-            if ellipticity is not None:
-                sel = sel & (t.a_over_b == float(ellipticity))
-            e = (result.error if quantity == "force" else result.mz_error)[sel]
-            st = _stats(e)
-            axi.set_title(f"spin {s:g}: median {st['median']:.3f}\n"
-                          f"p95 {st['p95']:.3f}, max {st['max']:.3f}", fontsize=9)
-    if made or axes[0].get_subplotspec() is None or axes[0].get_subplotspec().is_first_col():
-        axes[0].set_ylabel("creepage magnitude (normalised)")
-    if colorbar or (colorbar is None and made):
-        what = "|dF| / (mu N)" if quantity == "force" else "|dMz| / (mu N cp)"
-        how = f"a/b = {ellipticity:g}" if ellipticity is not None else f"{reduce} over a/b"
-        fig.colorbar(mesh, ax=list(axes), label=f"{what}, {how}", shrink=0.9)
-    if made and title:
-        fig.suptitle(f"{result.label} against CONTACT's exact theory", fontsize=10)
-    return axes[0] if len(axes) == 1 else axes
 
 
 # --------------------------------------------------------------------------

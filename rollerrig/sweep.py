@@ -11,6 +11,12 @@
     ds.reached.sel(mu0=0.4)               # dims ("mu0", "creep_method", "target")
     ds.mu0.attrs["parameter"]             # "scenario.mu0"
 
+Units are those of UNITS, or for a name whose meaning is the function's
+own those of FUNCTION_UNITS: hertz's curvature sums A, B are in 1/m, and
+creep_forces' friction law is swept as the axes friction.A [-] and
+friction.B [s/m] (ds = rr.sweep("creep_forces", {"friction.B": [0.3, 0.6]},
+...), selected as ds.fx.sel({"friction.B": 0.6})).
+
 The grid's axes are named after the function's arguments (for sweep) or
 parameter paths and simulate's arguments (for sweep_rig), in the order of
 the dimensions; every other keyword argument is passed unchanged to each
@@ -49,18 +55,21 @@ from ._optional import require
 from .rig import (CREEP_OPTIONS, _parameter_problems, check_parameters,
                   load_parameters, simulate)
 
-__all__ = ["sweep", "sweep_rig", "UNITS", "FUNCTIONS"]
+__all__ = ["sweep", "sweep_rig", "UNITS", "FUNCTION_UNITS", "FUNCTIONS"]
 
 #: the vectorised functions that sweep takes by name
 FUNCTIONS = {"creep_forces": contact.creep_forces, "hertz": contact.hertz,
              "kalker_coefficients": contact.kalker_coefficients}
 
-#: units of the names used across the library (inputs and outputs), for the
-#: Dataset's attrs; "-" is dimensionless
+#: units of the names that mean one thing across the library (inputs and
+#: outputs), for the Dataset's attrs; "-" is dimensionless.  Polach's
+#: friction law is friction.A [-] and friction.B [s/m] (a sweep axis of
+#: creep_forces, the names of its messages)
 UNITS = {
     "cx": "-", "cy": "-", "cphi": "rad/m", "a": "m", "b": "m", "N": "N", "mu": "-",
     "G": "Pa", "nu": "-", "speed": "m/s", "fx": "N", "fy": "N", "mz": "N m",
-    "A": "1/m", "B": "1/m", "E": "Pa", "E2": "Pa", "nu2": "-", "p0": "Pa", "delta": "m",
+    "friction.A": "-", "friction.B": "s/m",
+    "E": "Pa", "E2": "Pa", "nu2": "-", "p0": "Pa", "delta": "m",
     "a_over_b": "-", "c11": "-", "c22": "-", "c23": "-",
     "k0": "-", "alpha_inf": "-", "beta": "-", "kA": "-", "kS": "-",
     # sweep_rig: simulate's arguments, the summary metrics, dimensionless parameters
@@ -70,6 +79,12 @@ UNITS = {
     "alpha": "-", "polach_A": "-", "polach_kA": "-", "polach_kS": "-", "fastsim_nx": "-",
     "fastsim_ny": "-", "table_rows": "-", "gear_ratio": "-",
 }
+
+#: names whose meaning is the function's: hertz's A, B are its curvature sums
+FUNCTION_UNITS = {"hertz": {"A": "1/m", "B": "1/m"}}
+
+#: the grid axes of creep_forces that set a field of its friction law
+FRICTION_AXES = ("friction.A", "friction.B")
 
 # unit suffixes of the parameter file's keys (rig_default.toml), longest first
 _SUFFIXES = (("_N_m_s_per_rad", "N m s/rad"), ("_N_s_per_m", "N s/m"), ("_N_per_m", "N/m"),
@@ -95,9 +110,15 @@ OUTPUTS = ("xarray", "dict")
 CHUNK_CASES = 100_000      # cases per chunk by default: ~0.15 s of FASTSIM 20 x 20
 
 
-def _units(name):
-    """The units of a name or parameter path, or None when unknown."""
-    leaf = str(name).rsplit(".", 1)[-1]
+def _units(name, func=None):
+    """The units of a name of function `func`'s, or of a parameter path, or
+    None when unknown."""
+    name = str(name)
+    if name in FUNCTION_UNITS.get(func, {}):
+        return FUNCTION_UNITS[func][name]
+    if name in UNITS:
+        return UNITS[name]
+    leaf = name.rsplit(".", 1)[-1]
     if leaf in UNITS:
         return UNITS[leaf]
     for suffix, unit in _SUFFIXES:
@@ -289,6 +310,7 @@ def _chunk(bounds, func, names, axes, fixed):
     fn = FUNCTIONS[func] if isinstance(func, str) else func
     index = np.unravel_index(np.arange(start, stop), tuple(ax.size for ax in axes))
     kwargs = {name: ax[i] for name, ax, i in zip(names, axes, index)}
+    kwargs, fixed = _with_friction(kwargs, fixed)
     out = fn(**kwargs, **fixed)
     if hasattr(out, "_asdict"):
         out = out._asdict()
@@ -306,6 +328,29 @@ def _chunk(bounds, func, names, axes, fixed):
                                  f"expected one value per case ({n})")
         res[field] = arr.reshape(n)
     return res
+
+
+def _friction_base(friction):
+    """The law whose fields friction.A / friction.B axes replace: the fixed
+    `friction` (a FallingFriction), or FallingFriction's defaults without one."""
+    if friction is None:
+        return contact.FallingFriction()
+    if isinstance(friction, contact.FallingFriction):
+        return friction
+    raise RollerRigError(f"sweep: a grid axis {' or '.join(FRICTION_AXES)} sets a field of "
+                         f"a FallingFriction; the fixed friction must be None or a "
+                         f"FallingFriction, got {friction!r:.60}")
+
+
+def _with_friction(kwargs, fixed):
+    """(kwargs, fixed) with the friction.A / friction.B axes turned into the
+    argument friction=FallingFriction(A, B) of arrays, one value per case."""
+    swept = {n[len("friction."):]: kwargs.pop(n) for n in FRICTION_AXES if n in kwargs}
+    if not swept:
+        return kwargs, fixed
+    base = _friction_base(fixed.get("friction"))
+    law = contact.FallingFriction(**dict(dict(A=base.A, B=base.B), **swept))
+    return kwargs, dict(fixed, friction=law)
 
 
 def _grid_index(shape, i):
@@ -345,7 +390,10 @@ def sweep(func, grid, *, chunk=None, backend="threads", workers=None, client=Non
     func:    "creep_forces", "hertz", "kalker_coefficients", or a callable
              taking keyword arrays (one value per case) and returning a
              NamedTuple (or dict) of arrays, as rr.creep_forces does
-    grid:    dict name -> 1-D array: the axes, in the order of the dimensions
+    grid:    dict name -> 1-D array: the axes, in the order of the dimensions;
+             for creep_forces also "friction.A" [-] and "friction.B" [s/m],
+             fields of the FallingFriction law (the others from the fixed
+             friction=FallingFriction(...), or its defaults without one)
     chunk:   cases per chunk (default: 100 000, fewer when that keeps a worker idle)
     backend: "threads" (a ThreadPoolExecutor of `workers` threads, default
              os.cpu_count()), "serial", or "dask" (the client given or the
@@ -380,9 +428,18 @@ def sweep(func, grid, *, chunk=None, backend="threads", workers=None, client=Non
         params = inspect.signature(fn).parameters
     except (TypeError, ValueError):
         params = None
+    friction_axes = [n for n in names if n in FRICTION_AXES]
+    if friction_axes:
+        if name != "creep_forces":
+            raise RollerRigError(f"sweep: the grid axes {friction_axes} are creep_forces' "
+                                 f"friction law; {name} has none")
+        _friction_base(fixed.get("friction"))
     if params is not None:
+        called = dict(fixed, **{n: 0.0 for n in names if n not in FRICTION_AXES})
+        if friction_axes:
+            called["friction"] = None
         try:
-            inspect.signature(fn).bind(**{n: 0.0 for n in names}, **fixed)
+            inspect.signature(fn).bind(**called)
         except TypeError as exc:
             raise RollerRigError(f"sweep: {name}: {exc}") from None
     if known:
@@ -437,14 +494,15 @@ def sweep(func, grid, *, chunk=None, backend="threads", workers=None, client=Non
 
     attrs = {"function": name, **{k: _as_attr(v) for k, v in fixed.items()}}
     return _package(xr, dict(zip(names, axes)), {f: names for f in data}, data, attrs,
-                    {"status": _STATUS_ATTRS})
+                    {"status": _STATUS_ATTRS}, func=name if known else None)
 
 
-def _package(xr, coords, var_dims, data, attrs, extra_attrs, paths=None):
+def _package(xr, coords, var_dims, data, attrs, extra_attrs, paths=None, func=None):
     """An xarray.Dataset (xr the module), or with xr None the plain dict.
-    paths: {dimension: parameter path} of the dimensions named after one."""
+    paths: {dimension: parameter path} of the dimensions named after one;
+    func: the library function swept, whose names the units are of."""
     paths = paths or {}
-    units = {n: _units(paths.get(n, n)) for n in list(coords) + list(data)}
+    units = {n: _units(paths.get(n, n), func) for n in list(coords) + list(data)}
     units = {n: u for n, u in units.items() if u is not None and n != "status"}
 
     def attrs_of(n):

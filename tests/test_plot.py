@@ -293,6 +293,10 @@ def test_fit_plot(polach_fit):
     ax = rp.fit(res, s2.cx, s2.fx, mu=MU)
     assert isinstance(ax, Axes) and len(ax.get_lines()) == 2
     assert labels(ax)[0] == "data" and labels(ax)[1].startswith("polach fit: mu0")
+    # the friction law's B carries its unit, s/m (A, mu0, kA, kS are dimensionless)
+    assert {"A", "B"} <= set(res.fitted)
+    assert f"B {res.params['B']:.3g} s/m" in labels(ax)[1]
+    assert f"A {res.params['A']:.3g}," in labels(ax)[1] + ","
     assert ax.get_ylabel() == "-fx / (mu N)"
     np.testing.assert_allclose(ax.get_lines()[0].get_ydata(), -s2.fx / (MU * CASE["N"]))
     line = ax.get_lines()[1]
@@ -334,9 +338,8 @@ def test_without_matplotlib_the_figures_name_the_extra(run, monkeypatch, tmp_pat
     with pytest.raises(OptionalDependencyError, match=r"rollerrig.plot needs matplotlib"):
         rp.plot_run(run, str(tmp_path))
     res = rr.reference.score("polach")
-    with pytest.raises(OptionalDependencyError, match=r"rollerrig.reference.error_map needs "
-                                                      r"matplotlib"):
-        rr.reference.error_map(res)
+    with pytest.raises(OptionalDependencyError, match=r"rollerrig.plot needs matplotlib"):
+        rp.error_map(res)
 
 
 def test_plot_run_leaves_the_backend_alone(run, tmp_path):
@@ -349,3 +352,16 @@ def test_plot_run_leaves_the_backend_alone(run, tmp_path):
     finally:
         plt.switch_backend("Agg")
     assert all(open(p, "rb").read(4) == b"\x89PNG" for p in paths)
+
+
+def test_only_rollerrig_plot_draws():
+    """Every drawing function lives in rollerrig.plot: no other module of the
+    package names matplotlib, except the command line, which picks the
+    non-interactive backend before rollerrig.plot draws its figures."""
+    import pathlib
+    package = pathlib.Path(rr.__file__).parent
+    others = {p.name for p in package.glob("*.py")
+              if "matplotlib" in p.read_text() and p.name not in ("plot.py", "_optional.py")}
+    assert others == {"cli.py"}
+    assert "matplotlib" not in (package / "cli.py").read_text().replace(
+        'require("matplotlib", "rollerrig simulate\'s figures", "plot").use("Agg")', "")

@@ -195,7 +195,9 @@ def test_error_map_axes(fastsim):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    axes = ref.error_map(fastsim)
+    import rollerrig.plot as rp
+
+    axes = rp.error_map(fastsim)
     assert len(axes) == 4
     assert all(isinstance(a, plt.Axes) for a in axes)
     mesh = axes[0].collections[0]
@@ -205,12 +207,12 @@ def test_error_map_axes(fastsim):
     plt.close(axes[0].figure)
 
     fig, ax = plt.subplots()
-    out = ref.error_map(fastsim, ax=ax, spin=2.0, quantity="mz", ellipticity=1.0)
+    out = rp.error_map(fastsim, ax=ax, spin=2.0, quantity="mz", ellipticity=1.0)
     assert out is ax
     with pytest.raises(rr.RollerRigError, match="spin level"):
-        ref.error_map(fastsim, ax=ax)
+        rp.error_map(fastsim, ax=ax)
     with pytest.raises(rr.RollerRigError, match="spin must be one of"):
-        ref.error_map(fastsim, ax=ax, spin=3.0)
+        rp.error_map(fastsim, ax=ax, spin=3.0)
     with pytest.raises(rr.RollerRigError, match="quantity"):
-        ref.error_map(fastsim, ax=ax, spin=0.0, quantity="fz")
+        rp.error_map(fastsim, ax=ax, spin=0.0, quantity="fz")
     plt.close(fig)

@@ -9,7 +9,7 @@ import pytest
 
 import rollerrig as rr
 from rollerrig._optional import OptionalDependencyError
-from rollerrig.sweep import sweep, sweep_rig
+from rollerrig.sweep import UNITS, sweep, sweep_rig
 
 # a small FASTSIM case on the rig's scale (a ~ b ~ 4 mm, N ~ 500 N)
 FIXED = dict(a=4e-3, b=3.5e-3, G=8.2e10, nu=0.28, method="fastsim", nx=20, ny=20)
@@ -122,6 +122,45 @@ def test_dataset_has_named_dims_coords_and_units():
     # selection by value works: fx at cx = 0.01, N = 500, mu = 0.3 is that call's
     one = rr.creep_forces(0.01, N=500.0, mu=0.3, **FIXED)
     assert float(ds.fx.sel(cx=0.01, N=500.0, mu=0.3)) == one.fx
+
+
+def test_one_unit_per_name_friction_and_curvature():
+    """Polach's friction law is swept as friction.A [-] and friction.B [s/m];
+    hertz's A, B are its curvature sums [1/m]: each name has one unit, the
+    one of its function.  A friction axis gives each case FallingFriction
+    with that field (the other from the fixed law) bitwise."""
+    fixed = dict(cx=2e-3, a=4e-3, b=3.5e-3, N=500.0, mu=0.3, speed=5.0, method="polach")
+    B = np.array([0.0, 0.3, 0.6, 2.0])
+    out = sweep("creep_forces", {"friction.B": B}, output="dict", progress=False,
+                friction=rr.FallingFriction(A=0.5), **fixed)
+    assert out["units"]["friction.B"] == "s/m" and out["dims"]["fx"] == ("friction.B",)
+    one = rr.creep_forces(**fixed, friction=rr.FallingFriction(A=0.5, B=B))
+    assert np.array_equal(out["data"]["fx"], one.fx)
+    out = sweep("creep_forces", {"friction.A": [0.4, 1.0]}, output="dict", progress=False,
+                **fixed)
+    assert out["units"]["friction.A"] == "-"
+    assert np.array_equal(out["data"]["fx"], rr.creep_forces(
+        **fixed, friction=rr.FallingFriction(A=np.array([0.4, 1.0]))).fx)
+    out = sweep("hertz", {"A": [0.5, 0.8], "B": [0.2, 0.3]}, output="dict", progress=False,
+                N=1e5)
+    assert out["units"]["A"] == "1/m" and out["units"]["B"] == "1/m"
+    # a name that means nothing of its own gets no unit rather than another's
+    out = sweep(lambda A, B: {"y": A * B}, {"A": [1.0], "B": [2.0]}, output="dict",
+                progress=False)
+    assert "A" not in out["units"] and "B" not in out["units"]
+    assert "A" not in UNITS and "B" not in UNITS
+    # the rig's friction law: its parameter file's keys carry their units
+    ds = sweep_rig({"contact.polach_A": [0.4], "contact.polach_B_s_per_m": [0.6]},
+                   duration=0.1, targets=[0.02], backend="serial", progress=False,
+                   output="dict")
+    assert ds["units"]["polach_A"] == "-" and ds["units"]["polach_B_s_per_m"] == "s/m"
+    # the friction axes are creep_forces' and set a FallingFriction only
+    with pytest.raises(rr.RollerRigError, match=r"\['friction.B'\] are creep_forces' "
+                                                r"friction law; hertz has none"):
+        sweep("hertz", {"friction.B": [0.6]}, A=0.5, B=0.3, N=1e5)
+    with pytest.raises(rr.RollerRigError, match="the fixed friction must be None or a "
+                                                "FallingFriction, got 'coulomb'"):
+        sweep("creep_forces", {"friction.B": [0.6]}, friction="coulomb", **fixed)
 
 
 def test_without_xarray_the_sweep_refuses_before_running(monkeypatch):

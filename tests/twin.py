@@ -1,4 +1,7 @@
-"""Pure-Python twin of parts of the rollerrig C core (slow, for tests).
+"""Pure-Python twin of parts of the rollerrig C core: the tests' slow reference.
+
+Not part of the package: tests/test_twin.py compares each function here with
+the C function it mirrors (and benchmarks/bench_contact.py times fastsim).
 
 This module re-implements, with explicit loops and only the :mod:`math`
 module, Kalker's creep coefficients (``csrc/contact/rr_kalker.c``), the friction
@@ -11,7 +14,8 @@ the rows, the Newton iteration of falling friction with its start, stopping
 rule and step safeguard, the blending and modification of the
 flexibilities), so its results agree with the C core to about 1e-12
 relative.  It follows the C core as of commit 9bf61b0 (FASTSIM with the
-"rect" or "strips" grid and the rigid slip taken at element centres).
+"rect" or "strips" grid and the rigid slip taken at element centres); a
+change of the C core that it does not follow fails test_twin.py.
 
 Conventions (those of the C core, Kalker's and CONTACT's): SI units (m, s,
 N, Pa, rad); x is the rolling direction, y lateral, z the normal into the
