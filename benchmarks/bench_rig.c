@@ -11,14 +11,16 @@
  *               [--seed S] [--table-rows T] [--table-half-range H] [--only ITEM]
  *               [--dump FILE] [--check-states C]
  *
- * The rig is the default one of rollerrig/data/rig_default.toml, built here:
- * a conical 1:20 wheel (r0 = 0.092 m, profile +-15 mm, 61 knots) on a
- * crowned roller (R0 = 0.16 m, crown radius 0.06 m, profile +-20 mm, 81
- * knots), both natural cubic splines (rr_spline_init) of the analytic
- * curves, profile origins 0.15 m from the centre line on both sides; a
- * contact table of T rows (401) over y = -H .. +H (8 mm; the TOML's
- * [integration] table_rows, table_half_range_m), the search options of
- * rr_search_opts_default.  Contact: E = 2.1e11 Pa,
+ * The rig is the default one of rollerrig/data/rig_default.toml, built as
+ * rr.simulate() builds it (rr_rig_table_build, csrc/geometry/rr_tables.h):
+ * a conical 1:20 wheel (r0 = 0.092 m) on a crowned roller (R0 = 0.16 m,
+ * crown radius 0.06 m), both profiles over +-15 mm with
+ * RR_RIG_PROFILE_POINTS (121) knots, the profiles' not-a-knot splines
+ * (rr_spline_fit), profile origins 0.15 m from the centre line on both
+ * sides; a contact table of T rows (161) over y = -H .. +H (8 mm; the
+ * TOML's [integration] table_rows, table_half_range_m), the search options
+ * of rr_search_opts_default.  The search items use the same splines
+ * (rr_profile_surface).  Contact: E = 2.1e11 Pa,
  * nu = 0.28 (E* = rr_estar, G = E / (2 (1 + nu))), Polach's falling friction
  * mu0 = 0.4, A = 0.4, B = 0.6 s/m, vmin = 0.01 m/s; creep forces by FASTSIM
  * 20x20 (rect grid, parabolic bound, falling friction at the local slip
@@ -35,7 +37,7 @@
  * clock_gettime(CLOCK_MONOTONIC)):
  *   search          rr_contact_search of each wheel at the table's pose (per wheel)
  *   wheelset        rr_wheelset_contact: the direct pose solve (per wheelset)
- *   build           rr_contact_table_build of the T rows (per table; per row)
+ *   build           rr_rig_table_build of the T rows (per table; per row)
  *   lookup          rr_contact_table_lookup with slopes, both wheels (per wheelset)
  *   hertz           rr_hertz on the table's curvature sums (per wheel)
  *   creepage        rr_creepage on the motions and frames rr_rig_kinematics
@@ -73,7 +75,6 @@
 #define WHEEL_HALF 0.015        /* wheelset.profile_half_width_m */
 #define ROLLER_R0 0.160         /* roller.radius_m */
 #define CROWN 0.060             /* roller.crown_radius_m */
-#define ROLLER_HALF 0.020       /* roller.width_m / 2 */
 #define HALF_SPACING 0.15       /* wheelset / roller contact_half_spacing_m */
 #define YOUNG 2.1e11            /* contact.youngs_modulus_Pa */
 #define POISSON 0.28            /* contact.poisson_ratio */
@@ -86,9 +87,8 @@
 #define FASTSIM_N 20            /* contact.fastsim_nx, fastsim_ny */
 #define ROLLER_SPEED 5.0        /* scenario.roller_speed_m_s */
 
-#define NW 61                   /* wheel profile knots (0.5 mm apart) */
-#define NR 81                   /* roller profile knots (0.5 mm apart) */
-#define TABLE_ROWS 401           /* integration.table_rows */
+#define NP RR_RIG_PROFILE_POINTS  /* knots of each profile (0.25 mm apart) */
+#define TABLE_ROWS 161           /* integration.table_rows */
 #define TABLE_HALF 0.008         /* integration.table_half_range_m */
 
 #define NMETHODS 5
@@ -128,23 +128,39 @@ static double uniform(double lo, double hi)
     return lo + (hi - lo) * (double)(z >> 11) * (1.0 / 9007199254740992.0);
 }
 
-static double ws_[NW], wz[NW], wm[NW], rs[NR], rz[NR], rm[NR], work[NW + NR];
+static double wy[NP], wz[NP], wzup[NP], wm[NP], ry[NP], rz[NP], rzup[NP], rm[NP];
+static double work[RR_RIG_TABLE_WORK_LEN];
 
+/* the rig's geometry with the table's rows and half range */
+static rr_rig_geometry rig_geometry(int rows, double half)
+{
+    rr_rig_geometry g;
+    g.wheel_radius = WHEEL_R0;
+    g.roller_radius = ROLLER_R0;
+    g.profile_half_width = WHEEL_HALF;
+    g.cone_angle = atan(CONICITY);
+    g.crown_radius = CROWN;
+    g.contact_half_spacing = HALF_SPACING;
+    g.table_half_range = half;
+    g.table_rows = rows;
+    return g;
+}
+
+/* The wheel-roller pairs of the search items: the profiles and splines
+ * rr_rig_table_build makes. */
 static void rig_pair(rr_wheel_roller *left, rr_wheel_roller *right)
 {
-    int i;
-    for (i = 0; i < NW; i++) {
-        ws_[i] = -WHEEL_HALF + 2.0 * WHEEL_HALF * i / (NW - 1);
-        wz[i] = ws_[i] * CONICITY;                     /* z_w = s tan(alpha) */
-    }
-    for (i = 0; i < NR; i++) {
-        rs[i] = -ROLLER_HALF + 2.0 * ROLLER_HALF * i / (NR - 1);
-        rz[i] = sqrt(CROWN * CROWN - rs[i] * rs[i]) - CROWN;
-    }
-    if (rr_spline_init(NW, ws_, wz, wm, work) || rr_spline_init(NR, rs, rz, rm, work))
-        die("spline init failed");
-    left->wheel.n = NW; left->wheel.s = ws_; left->wheel.z = wz; left->wheel.m = wm;
-    left->roller.n = NR; left->roller.s = rs; left->roller.z = rz; left->roller.m = rm;
+    rr_profile_points w, r;
+    if (rr_profile_conical(atan(CONICITY), -WHEEL_HALF, WHEEL_HALF, NP, wy, wz)
+        || rr_profile_crowned(CROWN, -WHEEL_HALF, WHEEL_HALF, NP, ry, rz))
+        die("profiles failed");
+    w.n = r.n = NP;
+    w.y = wy; w.z = wz; r.y = ry; r.z = rz;
+    w.end = r.end = RR_SPLINE_NOT_A_KNOT;
+    if (rr_profile_surface(&w, wzup, wm, work) || rr_profile_surface(&r, rzup, rm, work))
+        die("profile splines failed");
+    left->wheel.n = NP; left->wheel.s = wy; left->wheel.z = wzup; left->wheel.m = wm;
+    left->roller.n = NP; left->roller.s = ry; left->roller.z = rzup; left->roller.m = rm;
     left->r0 = WHEEL_R0;
     left->R0 = ROLLER_R0;
     left->wheel_y = HALF_SPACING;
@@ -178,6 +194,7 @@ typedef struct {
     long n, nsearch, nsolve;
     rr_wheel_roller left, right;
     rr_search_opts so;
+    rr_rig_geometry geometry;
     rr_contact_table table, scratch;     /* scratch: the build item's own rows */
     rr_rig_contact_model model[NMETHODS];
     rr_rig_state *s;
@@ -201,13 +218,13 @@ static void setup(bench *b, long n, long nsearch, long nsolve, uint64_t seed, in
     b->nsolve = nsolve;
     rig_pair(&b->left, &b->right);
     rr_search_opts_default(&b->so);
-    b->table.y0 = b->scratch.y0 = -half;
-    b->table.dy = b->scratch.dy = 2.0 * half / (rows - 1);
-    b->table.n = b->scratch.n = rows;
+    b->geometry = rig_geometry(rows, half);
     b->table.data = alloc((size_t)rr_contact_table_len(rows), sizeof(double));
-    b->scratch.data = alloc((size_t)rr_contact_table_len(rows), sizeof(double));
-    if (rr_contact_table_build(&b->left, &b->right, &b->so, &b->table, NULL))
+    if (rr_rig_table_build(&b->geometry, b->table.data, rr_contact_table_len(rows), work,
+                           RR_RIG_TABLE_WORK_LEN, &b->table, NULL))
         die("table build failed");
+    b->scratch = b->table;
+    b->scratch.data = alloc((size_t)rr_contact_table_len(rows), sizeof(double));
     for (m = 0; m < NMETHODS; m++) {
         rr_rig_contact_model *md = &b->model[m];
         md->table = &b->table;
@@ -341,7 +358,9 @@ static double run_item(bench *b, int it, long *bad)
         }
         break;
     case IT_BUILD:
-        nbad += rr_contact_table_build(&b->left, &b->right, &b->so, &b->scratch, NULL) < 0;
+        nbad += rr_rig_table_build(&b->geometry, b->scratch.data,
+                                   rr_contact_table_len(b->scratch.n), work,
+                                   RR_RIG_TABLE_WORK_LEN, &b->scratch, NULL) < 0;
         acc += b->scratch.data[rr_contact_table_len(b->scratch.n) / 2];
         break;
     case IT_LOOKUP:
@@ -534,7 +553,7 @@ int main(int argc, char **argv)
            "\"E\": %.17g, \"nu\": %.17g, \"mu0\": %.17g, \"A\": %.17g, \"B\": %.17g, "
            "\"kA\": %.17g, \"kS\": %.17g, \"vmin\": %.17g, \"fastsim_n\": %d, "
            "\"roller_speed\": %.17g, \"nsamples\": %d}, ",
-           WHEEL_R0, CONICITY, WHEEL_HALF, ROLLER_R0, CROWN, ROLLER_HALF, HALF_SPACING, NW, NR,
+           WHEEL_R0, CONICITY, WHEEL_HALF, ROLLER_R0, CROWN, WHEEL_HALF, HALF_SPACING, NP, NP,
            YOUNG, POISSON, MU0, POLACH_A, POLACH_B, POLACH_KA, POLACH_KS, VMIN, FASTSIM_N,
            ROLLER_SPEED, b.so.nsamples);
     printf("\"table\": {\"rows\": %d, \"y0\": %.17g, \"dy\": %.17g}, ", b.table.n,

@@ -89,7 +89,9 @@ def rig_parameters():
     it = t.get("integration", {})
     return dict(r0=ws["wheel_radius_m"], conicity=ws["conicity"],
                 wheel_half_width=ws["profile_half_width_m"], R0=ro["radius_m"],
-                crown_radius=ro["crown_radius_m"], roller_half_width=ro["width_m"] / 2,
+                crown_radius=ro["crown_radius_m"],
+                # the rig's roller profile spans the wheel's (rig._rig_table)
+                roller_half_width=ws["profile_half_width_m"],
                 half_spacing=ws["contact_half_spacing_m"],
                 roller_half_spacing=ro["contact_half_spacing_m"],
                 E=co["youngs_modulus_Pa"], nu=co["poisson_ratio"], mu0=sc["mu0"],
@@ -100,7 +102,7 @@ def rig_parameters():
                 friction_law=co["friction_law"],
                 fastsim_slip_speed=co.get("fastsim_slip_speed", "local"),
                 # the time step's table; bench_rig.c's defaults where the TOML has none
-                table_rows=it.get("table_rows", 401),
+                table_rows=it.get("table_rows", 161),
                 table_half_range=it.get("table_half_range_m", 0.008),
                 table_from_toml="table_rows" in it and "table_half_range_m" in it)
 
@@ -122,17 +124,12 @@ def check_parameters(toml, params):
 
 
 def rig_geometry(p):
-    """The pair bench_rig.c builds, as a RigGeometry: the same knots and
-    values, natural splines (rr_spline_init's end conditions)."""
-    def knots(half, n):
-        return -half + 2.0 * half * np.arange(n) / (n - 1)
-    ws = knots(p["wheel_half_width"], p["wheel_knots"])
-    rs = knots(p["roller_half_width"], p["roller_knots"])
-    rho = p["crown_radius"]
-    wheel = rr.Profile(ws, -(ws * p["conicity"]), kind="wheel", bc="natural",
-                       name="conical wheel 1:20")
-    roller = rr.Profile(rs, rho - np.sqrt(rho * rho - rs * rs), kind="rail", bc="natural",
-                        name="crowned roller")
+    """The pair bench_rig.c builds (rr_rig_table_build), as a RigGeometry:
+    the rig's own profiles, Profile.conical and Profile.cylinder, whose
+    points and not-a-knot splines are the same C (rig._rig_table's)."""
+    n, hw = p["wheel_knots"], p["wheel_half_width"]
+    wheel = rr.Profile.conical(math.atan(p["conicity"]), (-hw, hw), r0=p["r0"], n=n)
+    roller = rr.Profile.cylinder((-hw, hw), crown_radius=p["crown_radius"], n=n)
     return rr.RigGeometry(wheel=wheel, roller=roller, wheel_radius=p["r0"],
                           roller_radius=p["R0"], wheel_y=p["half_spacing"],
                           roller_y=p["half_spacing"])
@@ -273,7 +270,7 @@ def report(args, info, load0, load1, date, params, toml, bad_params, c, py, kern
              f"(r0 = {params['r0']} m, profile +-{params['wheel_half_width'] * 1e3:g} mm, "
              f"{params['wheel_knots']} knots) on a crowned roller (R0 = {params['R0']} m, crown "
              f"radius {params['crown_radius']} m, profile +-{params['roller_half_width'] * 1e3:g}"
-             f" mm, {params['roller_knots']} knots), natural cubic splines of the exact curves, "
+             f" mm, {params['roller_knots']} knots), not-a-knot splines (rr_rig_table_build, as rr.simulate()), "
              f"contact half-spacing {params['half_spacing']} m; contact table of "
              f"{c['table']['rows']} rows over y = {c['table']['y0'] * 1e3:g} .. "
              f"{(c['table']['y0'] + c['table']['dy'] * (c['table']['rows'] - 1)) * 1e3:g} mm "
@@ -413,8 +410,8 @@ def report(args, info, load0, load1, date, params, toml, bad_params, c, py, kern
             and py["status_same"]
         L.append("## C = Python")
         L.append("")
-        L.append(f"The Python side builds the same pair from rollerrig.Profile (same knots, "
-                 f"natural splines) and its table with rollerrig.contact_table in "
+        L.append(f"The Python side builds the same pair (Profile.conical, Profile.cylinder: "
+                 f"the same C points and splines) and its table with rollerrig.contact_table in "
                  f"{py['build_s'] * 1e3:.0f} ms (C: {us['build'] * 1e-3:.0f} ms); largest "
                  f"difference from the C table {fmt(py['table_diff'])} (relative, at least "
                  f"absolute). On the first {py['check']} states with FASTSIM 20x20: "

@@ -17,6 +17,7 @@
  *   rr_creepage.h  kinematic creepages of a wheel on a roller
  *   rr_spline.h    natural cubic splines for profiles
  *   rr_geometry.h  contact search, wheelset pose, contact tables
+ *   rr_tables.h    tables from profile points, the rig's default table
  *   rr_rig_contact.h  one contact evaluation of the wheelset on the rollers
  *   rr_control.h   PI speed controllers, drive lag, encoders, creepage controller
  *   rr_ode.h       fixed-step L-stable integrators (ROS2, TR-BDF2, lin. Euler)
@@ -39,6 +40,7 @@
 #include "geometry/rr_creepage.h"
 #include "util/rr_spline.h"
 #include "geometry/rr_geometry.h"
+#include "geometry/rr_tables.h"
 #include "rig/rr_rig_contact.h"
 #include "rig/rr_control.h"
 #include "util/rr_ode.h"

@@ -15,11 +15,12 @@
  * run there would see.  Prints the creepage reached per target and the step
  * time's min, median, p99 and max.  The parameters are those of
  * rollerrig/data/rig_default.toml (conical 1:20 wheel on a crowned roller,
- * FASTSIM 20 x 20 with falling friction at the rigid slip speed, TR-BDF2),
- * set in rig_defaults() below.  As a real-time task it locks its memory
- * (mlockall), asks for the SCHED_FIFO policy and, on Linux, stays on the
- * last processor; where that is not allowed it says so and runs as an
- * ordinary process.
+ * FASTSIM 20 x 20 with falling friction at the rigid slip speed, TR-BDF2):
+ * the contact table built by rr_rig_table_build (rr.simulate()'s, bit for
+ * bit), the rest set in rig_defaults() below.  As a real-time task it
+ * locks its memory (mlockall), asks for the SCHED_FIFO policy and, on
+ * Linux, stays on the last processor; where that is not allowed it says so
+ * and runs as an ordinary process.
  */
 #define _GNU_SOURCE       /* sched_setaffinity (Linux); the rest is POSIX */
 #include <math.h>
@@ -33,45 +34,30 @@
 
 #include "rollerrig.h"
 
-#define NPROF 121
-#define NROWS 401
+#define NROWS 161          /* rig_default.toml's integration.table_rows */
 #define MAXSTEPS 200000
 
-static double ws[NPROF], wz[NPROF], wm[NPROF], rs[NPROF], rz[NPROF], rm[NPROF];
-static double work[NPROF], table_data[NROWS * RR_CONTACT_TABLE_ROW];
+static double work[RR_RIG_TABLE_WORK_LEN], table_data[NROWS * RR_CONTACT_TABLE_ROW];
 static double step_us[MAXSTEPS];
 
-/* Conical wheel, tan(alpha) = 1:20, r0 = 0.092 m; roller R0 = 0.16 m with a
- * 60 mm crown; contact points 0.15 m either side of the centre. */
-static int build_geometry(rr_wheel_roller pair[2], rr_contact_table *t)
+/* The rig's contact table from rig_default.toml's geometry: conical wheel,
+ * tan(alpha) = 1:20, r0 = 0.092 m, on a roller R0 = 0.16 m with a 60 mm
+ * crown, profiles over +-15 mm, contact points 0.15 m either side of the
+ * centre, rows over +-8 mm.  rr_rig_table_build computes it as rr.simulate()
+ * does (rollerrig.rig._rig_table calls it): the same table, bit for bit. */
+static int build_geometry(rr_contact_table *t)
 {
-    const double alpha = atan(0.05), crown = 0.06;
-    rr_search_opts o;
-    int i, st;
-    for (i = 0; i < NPROF; i++) {
-        ws[i] = rs[i] = -0.015 + 0.03 * i / (NPROF - 1);
-        wz[i] = ws[i] * tan(alpha);
-        rz[i] = sqrt(crown * crown - rs[i] * rs[i]) - crown;
-    }
-    if ((st = rr_spline_init(NPROF, ws, wz, wm, work)) != RR_OK
-        || (st = rr_spline_init(NPROF, rs, rz, rm, work)) != RR_OK)
-        return st;
-    for (i = 0; i < 2; i++) {
-        pair[i].wheel.n = NPROF; pair[i].wheel.s = ws; pair[i].wheel.z = wz; pair[i].wheel.m = wm;
-        pair[i].roller.n = NPROF; pair[i].roller.s = rs; pair[i].roller.z = rz;
-        pair[i].roller.m = rm;
-        pair[i].r0 = 0.092;
-        pair[i].R0 = 0.160;
-        pair[i].wheel_y = 0.15;
-        pair[i].roller_y = 0.15;
-        pair[i].side = i == 0 ? 1 : -1;
-    }
-    rr_search_opts_default(&o);
-    t->y0 = -0.008;
-    t->dy = 0.016 / (NROWS - 1);
-    t->n = NROWS;
-    t->data = table_data;
-    return rr_contact_table_build(&pair[0], &pair[1], &o, t, NULL);
+    rr_rig_geometry g;
+    g.wheel_radius = 0.092;
+    g.roller_radius = 0.160;
+    g.profile_half_width = 0.015;
+    g.cone_angle = atan(0.05);
+    g.crown_radius = 0.060;
+    g.contact_half_spacing = 0.15;
+    g.table_half_range = 0.008;
+    g.table_rows = NROWS;
+    return rr_rig_table_build(&g, table_data, (long)(sizeof table_data / sizeof *table_data),
+                              work, RR_RIG_TABLE_WORK_LEN, t, NULL);
 }
 
 static void rig_defaults(rr_rig_params *p, const rr_contact_table *t, double T)
@@ -150,7 +136,6 @@ int main(int argc, char **argv)
     const char *mode = argc > 3 ? argv[3] : "sleep";
     const int sleep_on = strcmp(mode, "free") != 0, floor_on = strcmp(mode, "floor") == 0;
     const double V = 5.0, R0 = 0.160;
-    rr_wheel_roller pair[2];
     rr_contact_table table;
     rr_rig_params p;
     static rr_rig rig;
@@ -168,7 +153,7 @@ int main(int argc, char **argv)
     nsteps = (long)(seconds / period + 0.5);
     if (nsteps > MAXSTEPS)
         nsteps = MAXSTEPS;
-    if ((st = build_geometry(pair, &table)) != RR_OK) {
+    if ((st = build_geometry(&table)) != RR_OK) {
         fprintf(stderr, "contact table: %s\n", rr_status_message(st));
         return 1;
     }

@@ -1701,6 +1701,205 @@ static PyTypeObject RigType = {
     .tp_new = PyType_GenericNew,
 };
 
+/* ------------------------------------ profile splines and tables (rr_tables.h) */
+
+/* Profile points as a contiguous 1-D float64 array of RR_SPLINE_MIN_POINTS
+ * to RR_SPLINE_MAX_POINTS values, or NULL with a ValueError naming it. */
+static PyArrayObject *points_array(PyObject *obj, const char *func, const char *name)
+{
+    PyArrayObject *a = (PyArrayObject *)PyArray_FROMANY(obj, NPY_DOUBLE, 1, 1,
+                                                          NPY_ARRAY_IN_ARRAY);
+    if (!a)
+        return NULL;
+    if (PyArray_DIM(a, 0) < RR_SPLINE_MIN_POINTS || PyArray_DIM(a, 0) > RR_SPLINE_MAX_POINTS) {
+        PyErr_Format(PyExc_ValueError, "%s: %s holds %zd points; a profile has from %d to %d",
+                     func, name, (Py_ssize_t)PyArray_DIM(a, 0), RR_SPLINE_MIN_POINTS,
+                     RR_SPLINE_MAX_POINTS);
+        Py_DECREF(a);
+        return NULL;
+    }
+    return a;
+}
+
+/* y and z of one profile, of one length; 0, or -1 with an exception. */
+static int points_pair(PyObject *yobj, PyObject *zobj, const char *func, const char *yname,
+                       const char *zname, PyArrayObject **y, PyArrayObject **z)
+{
+    if (!(*y = points_array(yobj, func, yname)) || !(*z = points_array(zobj, func, zname)))
+        return -1;
+    if (PyArray_DIM(*y, 0) != PyArray_DIM(*z, 0)) {
+        PyErr_Format(PyExc_ValueError, "%s: %s and %s differ in length (%zd, %zd)", func,
+                     yname, zname, (Py_ssize_t)PyArray_DIM(*y, 0),
+                     (Py_ssize_t)PyArray_DIM(*z, 0));
+        return -1;
+    }
+    return 0;
+}
+
+/* spline_fit(y, z, end) -> (status, slope, c2, c3, d2): rr_spline_fit and
+ * the knots' second derivatives, the arrays of rollerrig.profiles.Profile. */
+static PyObject *py_spline_fit(PyObject *self, PyObject *args)
+{
+    PyObject *yobj, *zobj, *endobj, *out[4] = {NULL, NULL, NULL, NULL};
+    PyArrayObject *y = NULL, *z = NULL;
+    double *work = NULL;
+    npy_intp n, n1;
+    int end, st, k;
+    (void)self;
+
+    if (!PyArg_ParseTuple(args, "OOO:spline_fit", &yobj, &zobj, &endobj))
+        return NULL;
+    if (int_arg(endobj, "spline_fit", "end", RR_SPLINE_NOT_A_KNOT, RR_SPLINE_NATURAL, &end) < 0
+        || points_pair(yobj, zobj, "spline_fit", "y", "z", &y, &z) < 0)
+        goto fail;
+    n = PyArray_DIM(y, 0);
+    n1 = n - 1;
+    out[0] = PyArray_SimpleNew(1, &n, NPY_DOUBLE);
+    out[1] = PyArray_SimpleNew(1, &n1, NPY_DOUBLE);
+    out[2] = PyArray_SimpleNew(1, &n1, NPY_DOUBLE);
+    out[3] = PyArray_SimpleNew(1, &n, NPY_DOUBLE);
+    work = PyMem_Malloc((size_t)n * sizeof(double));
+    for (k = 0; k < 4; k++)
+        if (!out[k])
+            goto fail;
+    if (!work) {
+        PyErr_NoMemory();
+        goto fail;
+    }
+    st = rr_spline_fit((int)n, (const double *)PyArray_DATA(y), (const double *)PyArray_DATA(z),
+                       end, OUT(out[0]), OUT(out[1]), OUT(out[2]), work);
+    if (st == RR_OK)
+        st = rr_spline_knot_d2((int)n, (const double *)PyArray_DATA(y), OUT(out[1]),
+                               OUT(out[2]), OUT(out[3]));
+    PyMem_Free(work);
+    Py_DECREF(y);
+    Py_DECREF(z);
+    return Py_BuildValue("iNNNN", st, out[0], out[1], out[2], out[3]);
+fail:
+    PyMem_Free(work);
+    Py_XDECREF(y);
+    Py_XDECREF(z);
+    release(out, 4);
+    return NULL;
+}
+
+/* analytic_profile(kind, param, y_min, y_max, n) -> (status, y, z):
+ * rr_profile_conical (kind 0, param the cone angle) or rr_profile_crowned
+ * (kind 1, param the crown radius, 0 for a cylinder). */
+static PyObject *py_analytic_profile(PyObject *self, PyObject *args)
+{
+    PyObject *kobj, *nobj, *y = NULL, *z = NULL;
+    double param, y_min, y_max;
+    npy_intp len;
+    int kind, n, st;
+    (void)self;
+
+    if (!PyArg_ParseTuple(args, "OdddO:analytic_profile", &kobj, &param, &y_min, &y_max, &nobj)
+        || int_arg(kobj, "analytic_profile", "kind", 0, 1, &kind) < 0
+        || int_arg(nobj, "analytic_profile", "n", RR_SPLINE_MIN_POINTS, RR_SPLINE_MAX_POINTS,
+                   &n) < 0)
+        return NULL;
+    len = n;
+    if (!(y = PyArray_SimpleNew(1, &len, NPY_DOUBLE)) || !(z = PyArray_SimpleNew(1, &len,
+                                                                                 NPY_DOUBLE))) {
+        Py_XDECREF(y);
+        return NULL;
+    }
+    st = kind == 0 ? rr_profile_conical(param, y_min, y_max, n, OUT(y), OUT(z))
+                   : rr_profile_crowned(param, y_min, y_max, n, OUT(y), OUT(z));
+    return Py_BuildValue("iNN", st, y, z);
+}
+
+/* profile_table(wheel_y, wheel_z, wheel_end, roller_y, roller_z, roller_end,
+ * (r0, R0, wheel_y, roller_y), y0, dy, n, nsamples, tol, sep)
+ * -> (data, status, bad_y): rr_profile_table_build, the GIL released. */
+static PyObject *py_profile_table(PyObject *self, PyObject *args)
+{
+    PyObject *wyo, *wzo, *weo, *ryo, *rzo, *reo, *rows, *nobj, *data = NULL;
+    PyArrayObject *arr[4] = {NULL, NULL, NULL, NULL};
+    rr_profile_points wheel, roller;
+    rr_profile_placement place;
+    rr_search_opts o;
+    rr_contact_table t;
+    double tol, sep, bad_y = NAN, *work = NULL;
+    npy_intp len;
+    long work_len;
+    int st;
+    (void)self;
+
+    if (!PyArg_ParseTuple(args, "OOOOOO(dddd)ddOOdd:profile_table", &wyo, &wzo, &weo, &ryo,
+                          &rzo, &reo, &place.wheel_radius, &place.roller_radius,
+                          &place.wheel_y, &place.roller_y, &t.y0, &t.dy, &rows, &nobj, &tol,
+                          &sep))
+        return NULL;
+    if (int_arg(weo, "profile_table", "wheel_end", 0, 1, &wheel.end) < 0
+        || int_arg(reo, "profile_table", "roller_end", 0, 1, &roller.end) < 0
+        || int_arg(rows, "profile_table", "n", 2, RR_RIG_TABLE_MAX_ROWS, &t.n) < 0
+        || parse_search(nobj, tol, sep, "profile_table", &o) < 0
+        || points_pair(wyo, wzo, "profile_table", "wheel_y", "wheel_z", &arr[0], &arr[1]) < 0
+        || points_pair(ryo, rzo, "profile_table", "roller_y", "roller_z", &arr[2], &arr[3]) < 0)
+        goto fail;
+    wheel.n = (int)PyArray_DIM(arr[0], 0);
+    wheel.y = (const double *)PyArray_DATA(arr[0]);
+    wheel.z = (const double *)PyArray_DATA(arr[1]);
+    roller.n = (int)PyArray_DIM(arr[2], 0);
+    roller.y = (const double *)PyArray_DATA(arr[2]);
+    roller.z = (const double *)PyArray_DATA(arr[3]);
+    len = (npy_intp)rr_contact_table_len(t.n);
+    work_len = rr_profile_table_work_len(wheel.n, roller.n);
+    if (!(data = PyArray_SimpleNew(1, &len, NPY_DOUBLE)))
+        goto fail;
+    if (!(work = PyMem_Malloc((size_t)work_len * sizeof(double)))) {
+        PyErr_NoMemory();
+        goto fail;
+    }
+    t.data = OUT(data);
+    Py_BEGIN_ALLOW_THREADS
+    st = rr_profile_table_build(&wheel, &roller, &place, &o, &t, (long)len, work, work_len,
+                                &bad_y);
+    Py_END_ALLOW_THREADS
+    PyMem_Free(work);
+    release((PyObject **)arr, 4);
+    return Py_BuildValue("Nid", data, st, bad_y);
+fail:
+    PyMem_Free(work);
+    release((PyObject **)arr, 4);
+    Py_XDECREF(data);
+    return NULL;
+}
+
+/* rig_table(r0, R0, half_width, alpha, crown, half_spacing, half_range, rows)
+ * -> (data, y0, dy, status, bad_y): rr_rig_table_build, the GIL released. */
+static PyObject *py_rig_table(PyObject *self, PyObject *args)
+{
+    rr_rig_geometry g;
+    rr_contact_table t;
+    PyObject *rows, *data;
+    double bad_y = NAN, *work;
+    npy_intp len;
+    int st;
+    (void)self;
+
+    if (!PyArg_ParseTuple(args, "dddddddO:rig_table", &g.wheel_radius, &g.roller_radius,
+                          &g.profile_half_width, &g.cone_angle, &g.crown_radius,
+                          &g.contact_half_spacing, &g.table_half_range, &rows)
+        || int_arg(rows, "rig_table", "rows", 2, RR_RIG_TABLE_MAX_ROWS, &g.table_rows) < 0)
+        return NULL;
+    len = (npy_intp)rr_rig_table_data_len(&g);
+    if (!(data = PyArray_SimpleNew(1, &len, NPY_DOUBLE)))
+        return NULL;
+    if (!(work = PyMem_Malloc(RR_RIG_TABLE_WORK_LEN * sizeof(double)))) {
+        Py_DECREF(data);
+        return PyErr_NoMemory();
+    }
+    t.y0 = t.dy = NAN;
+    Py_BEGIN_ALLOW_THREADS
+    st = rr_rig_table_build(&g, OUT(data), (long)len, work, RR_RIG_TABLE_WORK_LEN, &t, &bad_y);
+    Py_END_ALLOW_THREADS
+    PyMem_Free(work);
+    return Py_BuildValue("Nddid", data, t.y0, t.dy, st, bad_y);
+}
+
 static PyObject *py_status_message(PyObject *self, PyObject *arg)
 {
     long code = PyLong_AsLong(arg);
@@ -1741,6 +1940,17 @@ static PyMethodDef core_methods[] = {
      "rig_contact(data, y0, dy, (R0, estar, G, nu, mu0, A, B, vmin), x, y, yaw, vx, vy,"
      " yaw_rate, spin, roller_spin, N_left, N_right, *, kinematics_only, <creep options>)"
      " -> (status, pose, left, right, left_status, right_status)"},
+    {"spline_fit", py_spline_fit, METH_VARARGS,
+     "spline_fit(y, z, end) -> (status, slope, c2, c3, d2)"},
+    {"analytic_profile", py_analytic_profile, METH_VARARGS,
+     "analytic_profile(kind (0 conical, 1 crowned), alpha or crown radius, y_min, y_max, n)"
+     " -> (status, y, z)"},
+    {"profile_table", py_profile_table, METH_VARARGS,
+     "profile_table(wheel_y, wheel_z, wheel_end, roller_y, roller_z, roller_end,"
+     " (r0, R0, wheel_y, roller_y), y0, dy, n, nsamples, tol, sep) -> (data, status, bad_y)"},
+    {"rig_table", py_rig_table, METH_VARARGS,
+     "rig_table(r0, R0, half_width, alpha, crown, half_spacing, half_range, rows)"
+     " -> (data, y0, dy, status, bad_y)"},
     {"status_message", py_status_message, METH_O, "status_message(code) -> str"},
     {NULL, NULL, 0, NULL}
 };
@@ -1857,6 +2067,9 @@ PyMODINIT_FUNC PyInit__core(void)
     if (add_methods(m) < 0
         || PyModule_AddIntConstant(m, "TABLE_ROW", (int)rr_contact_table_len(1)) < 0
         || PyModule_AddIntConstant(m, "SEARCH_MAX_SAMPLES", RR_SEARCH_MAX_SAMPLES) < 0
+        || PyModule_AddIntConstant(m, "SPLINE_NOT_A_KNOT", RR_SPLINE_NOT_A_KNOT) < 0
+        || PyModule_AddIntConstant(m, "SPLINE_NATURAL", RR_SPLINE_NATURAL) < 0
+        || PyModule_AddIntConstant(m, "RIG_PROFILE_POINTS", RR_RIG_PROFILE_POINTS) < 0
         || PyModule_AddIntConstant(m, "RIG_NSTATE", RR_RIG_NSTATE) < 0
         || PyModule_AddIntConstant(m, "REC_COUNT", RR_REC_COUNT) < 0
         || PyModule_AddIntConstant(m, "ODE_ROS2", RR_ODE_ROS2) < 0

@@ -124,12 +124,14 @@ class RigGeometry:
 
     def _arrays(self):
         """The four profiles as the core takes them: each the Profile's own
-        spline (knots, values, second derivatives), heights up, so -z."""
+        spline (knots, values, the second derivatives at the knots that
+        rr_spline_fit gave), heights up, so -z (rr_profile_surface does the
+        same in C, csrc/geometry/rr_tables.h)."""
         def spline(p, kind):
             if not isinstance(p, Profile):
                 raise RollerRigError(f"RigGeometry: {kind} must be a Profile, got {p!r:.60}")
             return (np.ascontiguousarray(p.y), np.ascontiguousarray(-p.z),
-                    np.ascontiguousarray(-p.second_derivative(p.y)))
+                    np.ascontiguousarray(-p._d2))
         out = []
         for w, r in ((self.wheel, self.roller),
                      (self.wheel_right or self.wheel, self.roller_right or self.roller)):

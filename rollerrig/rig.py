@@ -44,7 +44,7 @@ from ._errors import RollerRigError, RollerRigWarning, status_message
 from ._optional import require
 from ._binding import METHODS, _as_float, check_creep_options, core
 from .rig_contact import elastic_constants
-from .geometry import RigGeometry, contact_table
+from .geometry import MAX_ROWS, ContactTable, RigGeometry
 from .profiles import Profile
 
 try:
@@ -540,12 +540,28 @@ def _geometry(P):
 # The table is a pure function of these numbers and read-only, so runs on the
 # same geometry (a sweep over controller or friction settings, a notebook
 # re-running a cell) share one build instead of repeating its ~50 ms.
+# The rows come from the C core's rr_rig_table_build (csrc/geometry/rr_tables.h),
+# so a C program building the rig's table has this one, bit for bit; the
+# profiles made here (the same points and spline, by the same C) are the
+# table's geometry and check the numbers with messages that name them.
 @functools.lru_cache(maxsize=8)
 def _rig_table(r0, R0, hw, alpha, crown, span, reach, rows):
-    g = RigGeometry(wheel=Profile.conical(alpha, (-hw, hw), r0=r0, n=121),
-                    roller=Profile.cylinder((-hw, hw), crown_radius=crown, n=121),
+    n = _core.RIG_PROFILE_POINTS
+    g = RigGeometry(wheel=Profile.conical(alpha, (-hw, hw), r0=r0, n=n),
+                    roller=Profile.cylinder((-hw, hw), crown_radius=crown, n=n),
                     wheel_radius=r0, roller_radius=R0, wheel_y=span, roller_y=span)
-    return contact_table(g, -reach, reach, rows)
+    g._params()
+    if not (math.isfinite(reach) and reach > 0):
+        raise RollerRigError(f"rig_table: the table's half range must be > 0 [m], got {reach!r}")
+    if not 2 <= rows <= MAX_ROWS:
+        raise RollerRigError(f"rig_table: the table's rows must be from 2 to {MAX_ROWS}, "
+                             f"got {rows!r}")
+    data, y0, dy, status, bad_y = _core.rig_table(r0, R0, hw, alpha, crown, span, reach, rows)
+    if status < 0:
+        where = f"at y_ws = {bad_y!r}: " if math.isfinite(bad_y) else ""
+        raise RollerRigError(f"rig_table: {where}{status_message(status)}")
+    data.setflags(write=False)
+    return ContactTable(g, y0, dy, rows, data)
 
 
 #: the keyword options of simulate / build_rig / replay that go to the creep-force

@@ -717,3 +717,25 @@ def test_package_exports_and_data():
     cfg = configparser.ConfigParser()
     cfg.read(os.path.join(ROOT, "setup.cfg"))
     assert "data/profiles/*" in cfg["options.package_data"]["rollerrig"].split()
+
+
+def test_readers_table_is_the_dispatch(tmp_path, monkeypatch):
+    # a new format is one reader returning RawProfile and one READERS entry
+    from rollerrig.profiles import READERS, Format, RawProfile
+    assert set(READERS) == {".prr", ".prw", ".ban", ".whl", ".txt", ".csv", ".dat"}
+    seen = []
+
+    def read_xyz(path, where, kind, units):
+        seen.append((path, kind, units))
+        y = np.linspace(-0.02, 0.02, 9)
+        return RawProfile(y, 1e-3 * y * y, np.arange(1, 10), None, {"source": "xyz"})
+
+    monkeypatch.setitem(READERS, ".xyz", Format("xyz", read_xyz, "rail", False))
+    path = tmp_path / "p.xyz"
+    path.write_text("anything")
+    p = read_profile(path)
+    assert seen == [(str(path), None, None)]
+    assert p.kind == "rail" and p.meta["format"] == "xyz" and p.meta["source"] == "xyz"
+    assert len(p) == 9 and p.name == "p"
+    with pytest.raises(RollerRigError, match=r"units is for plain text"):
+        read_profile(path, units="mm")

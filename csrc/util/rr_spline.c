@@ -120,3 +120,142 @@ int rr_spline_eval_at(const rr_spline *sp, double s, int *k, double *z, double *
     }
     return RR_OK;
 }
+
+/* ------------------------------------------------------------ the profile spline */
+
+/* One row of the slopes' tridiagonal system: sub s_(i-1) + diag s_i + sup s_(i+1) = rhs. */
+typedef struct {
+    double sub, diag, sup, rhs;
+} tri_row;
+
+/* Interior row i (1 <= i <= n-2): continuity of z'' at knot i. */
+static tri_row interior_row(const double *y, const double *z, int i)
+{
+    const double h0 = y[i] - y[i - 1], h1 = y[i + 1] - y[i];
+    const double d0 = (z[i] - z[i - 1]) / h0, d1 = (z[i + 1] - z[i]) / h1;
+    tri_row r;
+    r.sub = h1;
+    r.diag = 2.0 * (h0 + h1);
+    r.sup = h0;
+    r.rhs = 3.0 * (h1 * d0 + h0 * d1);
+    return r;
+}
+
+/* Thomas' algorithm on rows lo..hi of the system: rows lo and hi given
+ * (first, last), the others interior rows.  x[lo..hi] the solution, c[]
+ * the modified super-diagonal.  The operations, in their order, are those
+ * of the numpy version this replaced (profiles._solve_tridiagonal), so the
+ * slopes are bitwise the same. */
+static void solve_rows(const double *y, const double *z, int lo, int hi, tri_row first,
+                       tri_row last, double *x, double *c)
+{
+    int i;
+    c[lo] = first.sup / first.diag;
+    x[lo] = first.rhs / first.diag;
+    for (i = lo + 1; i <= hi; i++) {
+        const tri_row r = i == hi ? last : interior_row(y, z, i);
+        const double m = r.diag - r.sub * c[i - 1];
+        c[i] = i < hi ? r.sup / m : 0.0;
+        x[i] = (r.rhs - r.sub * x[i - 1]) / m;
+    }
+    for (i = hi - 1; i >= lo; i--)
+        x[i] -= c[i] * x[i + 1];
+}
+
+static void fill_nan(double *v, int n)
+{
+    int i;
+    if (v)
+        for (i = 0; i < n; i++)
+            v[i] = NAN;
+}
+
+int rr_spline_fit(int n, const double *y, const double *z, int end, double *slope,
+                  double *c2, double *c3, double *work)
+{
+    int i, st = RR_OK;
+
+    if (!(n >= RR_SPLINE_MIN_POINTS && n <= RR_SPLINE_MAX_POINTS))
+        st = RR_ERR_PARAM;
+    else if (!y || !z)
+        st = RR_ERR_NULL;
+    else if (!slope || !c2 || !c3 || !work)
+        st = RR_ERR_WORKSPACE;
+    else if (end != RR_SPLINE_NOT_A_KNOT && end != RR_SPLINE_NATURAL)
+        st = RR_ERR_PARAM;
+    else if (!rr_all_finite(y, n) || !rr_all_finite(z, n))
+        st = RR_ERR_NONFINITE;
+    else
+        for (i = 1; i < n; i++)
+            if (!(y[i] > y[i - 1]))
+                st = RR_ERR_GEOMETRY;
+    if (st != RR_OK) {
+        if (n >= 1 && n <= RR_SPLINE_MAX_POINTS) {
+            fill_nan(slope, n);
+            fill_nan(c2, n - 1);
+            fill_nan(c3, n - 1);
+        }
+        return st;
+    }
+    if (end == RR_SPLINE_NATURAL) {
+        const double d0 = (z[1] - z[0]) / (y[1] - y[0]);
+        const double dn = (z[n - 1] - z[n - 2]) / (y[n - 1] - y[n - 2]);
+        const tri_row first = {0.0, 2.0, 1.0, 3.0 * d0}, last = {1.0, 2.0, 0.0, 3.0 * dn};
+        solve_rows(y, z, 0, n - 1, first, last, slope, work);
+    } else {
+        /* not-a-knot: each end row (not dominant) is eliminated into its
+         * neighbour; s_0 and s_(n-1) follow from the end rows.  pow(h, 2.0),
+         * not h * h: numpy's h ** 2 is libm's pow, and the two can differ in
+         * the last bit (the slopes stay those the numpy version gave) */
+        const double h0 = y[1] - y[0], h1 = y[2] - y[1];
+        const double hl = y[n - 1] - y[n - 2], hm = y[n - 2] - y[n - 3];
+        const double d0 = (z[1] - z[0]) / h0, d1 = (z[2] - z[1]) / h1;
+        const double dl = (z[n - 1] - z[n - 2]) / hl, dm = (z[n - 2] - z[n - 3]) / hm;
+        const double w0 = h0 + h1, a0 = h1, cc0 = w0;
+        const double r0 = ((h0 + 2.0 * w0) * h1 * d0 + pow(h0, 2.0) * d1) / w0;
+        const double w1 = hl + hm, an = hm, bn = w1;
+        const double rn = (pow(hl, 2.0) * dm + (2.0 * w1 + hl) * hm * dl) / w1;
+        tri_row first = interior_row(y, z, 1), last = interior_row(y, z, n - 2);
+        const double f = first.sub / a0, g = last.sup / an;
+        first.diag -= f * cc0;
+        first.rhs -= f * r0;
+        first.sub = 0.0;
+        last.diag -= g * bn;
+        last.rhs -= g * rn;
+        last.sup = 0.0;
+        solve_rows(y, z, 1, n - 2, first, last, slope, work);
+        slope[0] = (r0 - cc0 * slope[1]) / a0;
+        slope[n - 1] = (rn - bn * slope[n - 2]) / an;
+    }
+    for (i = 0; i < n - 1; i++) {
+        const double h = y[i + 1] - y[i], d = (z[i + 1] - z[i]) / h;
+        c2[i] = (3.0 * d - 2.0 * slope[i] - slope[i + 1]) / h;
+        c3[i] = (slope[i] + slope[i + 1] - 2.0 * d) / (h * h);
+    }
+    if (!rr_all_finite(slope, n) || !rr_all_finite(c2, n - 1) || !rr_all_finite(c3, n - 1)) {
+        fill_nan(slope, n);
+        fill_nan(c2, n - 1);
+        fill_nan(c3, n - 1);
+        return RR_ERR_RANGE;
+    }
+    return RR_OK;
+}
+
+int rr_spline_knot_d2(int n, const double *y, const double *c2, const double *c3, double *d2)
+{
+    int i;
+    if (!(n >= RR_SPLINE_MIN_POINTS && n <= RR_SPLINE_MAX_POINTS))
+        return RR_ERR_PARAM;
+    if (!y || !c2 || !c3)
+        return RR_ERR_NULL;
+    if (!d2)
+        return RR_ERR_WORKSPACE;
+    /* z'' = 2 c2 + 6 c3 t as the Profile evaluates it, t = 0 written out so
+     * that a zero keeps the sign that evaluation gives it */
+    for (i = 0; i < n - 1; i++) {
+        const double t = 0.0;
+        d2[i] = 2.0 * c2[i] + 6.0 * c3[i] * t;
+    }
+    d2[n - 1] = 2.0 * c2[n - 2] + 6.0 * c3[n - 2] * (y[n - 1] - y[n - 2]);
+    return RR_OK;
+}

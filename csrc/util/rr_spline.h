@@ -1,5 +1,7 @@
 /*
- * rr_spline.h - natural cubic splines for profile curves z(s).
+ * rr_spline.h - cubic splines for profile curves z(s): the interpolating
+ * spline of the profiles (rr_spline_fit, the numbers of
+ * rollerrig.profiles.Profile, which calls it) and its evaluation.
  *
  * A cubic spline has a continuous second derivative, so the profile
  * curvature that the Hertz module needs is continuous along the profile;
@@ -53,5 +55,44 @@ int rr_spline_eval(const rr_spline *sp, double s, double *z, double *d1, double 
  * interval in O(1) instead of by bisection.  Same results.
  */
 int rr_spline_eval_at(const rr_spline *sp, double s, int *k, double *z, double *d1, double *d2);
+
+/* End conditions of rr_spline_fit. */
+enum rr_spline_end {
+    RR_SPLINE_NOT_A_KNOT = 0,  /* z''' continuous at the second and the last-but-one knot */
+    RR_SPLINE_NATURAL = 1      /* z'' = 0 at both ends */
+};
+
+/* Points of a fitted profile spline, as rollerrig.profiles.MIN_POINTS and
+ * MAX_POINTS (more than any measured profile has). */
+#define RR_SPLINE_MIN_POINTS 4
+#define RR_SPLINE_MAX_POINTS 100000
+
+/*
+ * rr_spline_fit - the C2 cubic spline through (y_i, z_i), the one
+ * rollerrig.profiles.Profile uses (it calls this function): the node slopes
+ * s_i from the continuity of z'' (a tridiagonal system, the not-a-knot end
+ * rows eliminated into their neighbours so that it stays diagonally
+ * dominant), then on [y_i, y_i+1], t = y - y_i,
+ *     z = z_i + t (s_i + t (c2_i + t c3_i)).
+ *   given:   n in [RR_SPLINE_MIN_POINTS, RR_SPLINE_MAX_POINTS] points, y
+ *            strictly increasing; end an rr_spline_end; work, n doubles
+ *   returns: slope[n], c2[n-1], c3[n-1]
+ *   status:  0 OK; RR_ERR_NULL (y or z NULL), RR_ERR_WORKSPACE (slope, c2,
+ *            c3 or work NULL), RR_ERR_PARAM (n out of range, end unknown),
+ *            RR_ERR_NONFINITE, RR_ERR_GEOMETRY (y not strictly increasing),
+ *            RR_ERR_RANGE (a coefficient not finite: points far too close
+ *            for their values).  On error the outputs it can reach are NaN.
+ */
+int rr_spline_fit(int n, const double *y, const double *z, int end, double *slope,
+                  double *c2, double *c3, double *work);
+
+/*
+ * rr_spline_knot_d2 - the second derivatives at the knots of a fitted
+ * spline, as its coefficients give them (2 c2_i at y_i, 2 c2 + 6 c3 h at
+ * the last knot): the m of an rr_spline for the same curve.
+ *   status:  0 OK; RR_ERR_NULL (y, c2 or c3 NULL), RR_ERR_WORKSPACE (d2
+ *            NULL), RR_ERR_PARAM (n out of range)
+ */
+int rr_spline_knot_d2(int n, const double *y, const double *c2, const double *c3, double *d2);
 
 #endif

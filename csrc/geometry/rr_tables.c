@@ -1,0 +1,238 @@
+/* rr_tables.c - contact tables from profile points; the rig's default table. */
+#include <math.h>
+#include "util/rr_common.h"
+#include "geometry/rr_tables.h"
+
+static void fill_nan(double *v, long n)
+{
+    long i;
+    if (v)
+        for (i = 0; i < n; i++)
+            v[i] = NAN;
+}
+
+/* What rollerrig.profiles._range_points checks of (y_min, y_max, n). */
+static int range_check(double y_min, double y_max, int n)
+{
+    if (!(n >= RR_SPLINE_MIN_POINTS && n <= RR_SPLINE_MAX_POINTS))
+        return RR_ERR_PARAM;
+    if (!isfinite(y_min) || !isfinite(y_max))
+        return RR_ERR_NONFINITE;
+    if (!(y_max > y_min) || fabs(y_min) > RR_PROFILE_MAX_COORD
+        || fabs(y_max) > RR_PROFILE_MAX_COORD || !(y_max - y_min >= RR_PROFILE_MIN_WIDTH))
+        return RR_ERR_PARAM;
+    return RR_OK;
+}
+
+/* numpy.linspace(y_min, y_max, n): i * step + y_min, the last point y_max
+ * (step is never 0 here: the range is at least RR_PROFILE_MIN_WIDTH). */
+static void linspace(double y_min, double y_max, int n, double *y)
+{
+    const double step = (y_max - y_min) / (double)(n - 1);
+    int i;
+    for (i = 0; i < n; i++)
+        y[i] = (double)i * step + y_min;
+    y[n - 1] = y_max;
+}
+
+int rr_profile_conical(double alpha, double y_min, double y_max, int n, double *y, double *z)
+{
+    int i, st;
+    if (!y || !z)
+        st = RR_ERR_NULL;
+    else if ((st = range_check(y_min, y_max, n)) == RR_OK && !isfinite(alpha))
+        st = RR_ERR_NONFINITE;
+    else if (st == RR_OK && !(fabs(alpha) < RR_PI / 2.0))
+        st = RR_ERR_PARAM;
+    if (st != RR_OK) {
+        if (n >= 1 && n <= RR_SPLINE_MAX_POINTS) {
+            fill_nan(y, n);
+            fill_nan(z, n);
+        }
+        return st;
+    }
+    linspace(y_min, y_max, n, y);
+    for (i = 0; i < n; i++)
+        z[i] = -tan(alpha) * y[i];
+    return RR_OK;
+}
+
+int rr_profile_crowned(double crown_radius, double y_min, double y_max, int n, double *y,
+                       double *z)
+{
+    const double R = crown_radius;
+    int i, st;
+    if (!y || !z)
+        st = RR_ERR_NULL;
+    else if ((st = range_check(y_min, y_max, n)) == RR_OK && !isfinite(R))
+        st = RR_ERR_NONFINITE;
+    else if (st == RR_OK && !(R >= 0.0))
+        st = RR_ERR_PARAM;
+    else if (st == RR_OK && R > 0.0 && !(fmax(fabs(y_min), fabs(y_max)) < R))
+        st = RR_ERR_GEOMETRY;
+    if (st != RR_OK) {
+        if (n >= 1 && n <= RR_SPLINE_MAX_POINTS) {
+            fill_nan(y, n);
+            fill_nan(z, n);
+        }
+        return st;
+    }
+    linspace(y_min, y_max, n, y);
+    for (i = 0; i < n; i++)
+        z[i] = R == 0.0 ? 0.0 : y[i] * y[i] / (R + sqrt(R - y[i]) * sqrt(R + y[i]));
+    return RR_OK;
+}
+
+int rr_profile_surface(const rr_profile_points *p, double *zup, double *mup, double *work)
+{
+    int i, st;
+    if (!p)
+        return RR_ERR_NULL;
+    if (!zup || !mup || !work) {
+        if (p->n >= 1 && p->n <= RR_SPLINE_MAX_POINTS) {
+            fill_nan(zup, p->n);
+            fill_nan(mup, p->n);
+        }
+        return RR_ERR_WORKSPACE;
+    }
+    /* work: slopes, c2, c3 (n - 1 used), the fit's own n */
+    st = rr_spline_fit(p->n, p->y, p->z, p->end, work, work + p->n, work + 2 * p->n,
+                       work + 3 * p->n);
+    if (st == RR_OK)
+        st = rr_spline_knot_d2(p->n, p->y, work + p->n, work + 2 * p->n, mup);
+    if (st != RR_OK) {
+        if (p->n >= 1 && p->n <= RR_SPLINE_MAX_POINTS) {
+            fill_nan(zup, p->n);
+            fill_nan(mup, p->n);
+        }
+        return st;
+    }
+    for (i = 0; i < p->n; i++) {
+        zup[i] = -p->z[i];
+        mup[i] = -mup[i];
+    }
+    return RR_OK;
+}
+
+static int count_ok(int n)
+{
+    return n >= RR_SPLINE_MIN_POINTS && n <= RR_SPLINE_MAX_POINTS;
+}
+
+long rr_profile_table_work_len(int n_wheel, int n_roller)
+{
+    if (!count_ok(n_wheel) || !count_ok(n_roller))
+        return 0;
+    return 2L * n_wheel + 2L * n_roller + 4L * (n_wheel > n_roller ? n_wheel : n_roller);
+}
+
+int rr_profile_table_build(const rr_profile_points *wheel, const rr_profile_points *roller,
+                           const rr_profile_placement *place, const rr_search_opts *o,
+                           rr_contact_table *t, long data_len, double *work, long work_len,
+                           double *bad_y)
+{
+    rr_wheel_roller pair[2];
+    double *wz, *wm, *rz, *rm, *scratch;
+    int k, st;
+
+    if (bad_y)
+        *bad_y = NAN;
+    if (!wheel || !roller || !place || !o || !t || !wheel->y || !wheel->z || !roller->y
+        || !roller->z)
+        return RR_ERR_NULL;
+    if (!count_ok(wheel->n) || !count_ok(roller->n))
+        return RR_ERR_PARAM;
+    if (!work || !t->data || work_len < rr_profile_table_work_len(wheel->n, roller->n)
+        || t->n < 2 || data_len < rr_contact_table_len(t->n))
+        return t->n < 2 ? RR_ERR_PARAM : RR_ERR_WORKSPACE;
+    if (!isfinite(place->wheel_radius) || !isfinite(place->roller_radius)
+        || !isfinite(place->wheel_y) || !isfinite(place->roller_y))
+        return RR_ERR_NONFINITE;
+    if (!(place->wheel_radius > 0.0) || !(place->roller_radius > 0.0))
+        return RR_ERR_PARAM;
+    wz = work;
+    wm = wz + wheel->n;
+    rz = wm + wheel->n;
+    rm = rz + roller->n;
+    scratch = rm + roller->n;
+    if ((st = rr_profile_surface(wheel, wz, wm, scratch)) != RR_OK
+        || (st = rr_profile_surface(roller, rz, rm, scratch)) != RR_OK)
+        return st;
+    for (k = 0; k < 2; k++) {
+        pair[k].wheel.n = wheel->n;
+        pair[k].wheel.s = wheel->y;
+        pair[k].wheel.z = wz;
+        pair[k].wheel.m = wm;
+        pair[k].roller.n = roller->n;
+        pair[k].roller.s = roller->y;
+        pair[k].roller.z = rz;
+        pair[k].roller.m = rm;
+        pair[k].r0 = place->wheel_radius;
+        pair[k].R0 = place->roller_radius;
+        pair[k].wheel_y = place->wheel_y;
+        pair[k].roller_y = place->roller_y;
+        pair[k].side = k == 0 ? 1 : -1;
+    }
+    return rr_contact_table_build(&pair[0], &pair[1], o, t, bad_y);
+}
+
+long rr_rig_table_data_len(const rr_rig_geometry *g)
+{
+    if (!g || !(g->table_rows >= 2 && g->table_rows <= RR_RIG_TABLE_MAX_ROWS))
+        return 0;
+    return rr_contact_table_len(g->table_rows);
+}
+
+int rr_rig_table_build(const rr_rig_geometry *g, double *data, long data_len, double *work,
+                       long work_len, rr_contact_table *t, double *bad_y)
+{
+    enum { N = RR_RIG_PROFILE_POINTS };
+    const double v[7] = {g ? g->wheel_radius : 0.0, g ? g->roller_radius : 0.0,
+                         g ? g->profile_half_width : 0.0, g ? g->cone_angle : 0.0,
+                         g ? g->crown_radius : 0.0, g ? g->contact_half_spacing : 0.0,
+                         g ? g->table_half_range : 0.0};
+    rr_profile_points wheel, roller;
+    rr_profile_placement place;
+    rr_search_opts o;
+    double *wy, *wz, *ry, *rz, hw, reach;
+    int st;
+
+    if (bad_y)
+        *bad_y = NAN;
+    if (!g || !t)
+        return RR_ERR_NULL;
+    if (!rr_all_finite(v, 7))
+        return RR_ERR_NONFINITE;
+    if (!(g->table_rows >= 2 && g->table_rows <= RR_RIG_TABLE_MAX_ROWS)
+        || !(g->wheel_radius > 0.0) || !(g->roller_radius > 0.0)
+        || !(g->profile_half_width > 0.0) || !(g->table_half_range > 0.0))
+        return RR_ERR_PARAM;
+    if (!data || !work || data_len < rr_rig_table_data_len(g) || work_len < RR_RIG_TABLE_WORK_LEN)
+        return RR_ERR_WORKSPACE;
+    hw = g->profile_half_width;
+    reach = g->table_half_range;
+    wy = work;
+    wz = wy + N;
+    ry = wz + N;
+    rz = ry + N;
+    if ((st = rr_profile_conical(g->cone_angle, -hw, hw, N, wy, wz)) != RR_OK
+        || (st = rr_profile_crowned(g->crown_radius, -hw, hw, N, ry, rz)) != RR_OK)
+        return st;
+    wheel.n = roller.n = N;
+    wheel.y = wy;
+    wheel.z = wz;
+    roller.y = ry;
+    roller.z = rz;
+    wheel.end = roller.end = RR_SPLINE_NOT_A_KNOT;
+    place.wheel_radius = g->wheel_radius;
+    place.roller_radius = g->roller_radius;
+    place.wheel_y = place.roller_y = g->contact_half_spacing;
+    rr_search_opts_default(&o);
+    /* rollerrig.contact_table's rows: y0 = y_min, dy = (y_max - y_min)/(n - 1) */
+    t->y0 = -reach;
+    t->dy = (reach - -reach) / (double)(g->table_rows - 1);
+    t->n = g->table_rows;
+    t->data = data;
+    return rr_profile_table_build(&wheel, &roller, &place, &o, t, data_len, rz + N,
+                                  work_len - 4L * N, bad_y);
+}

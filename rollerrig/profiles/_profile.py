@@ -1,0 +1,425 @@
+"""The Profile class: an immutable profile z(y) with its cubic spline."""
+import contextlib
+import math
+import os
+from types import MappingProxyType
+
+import numpy as np
+
+from .. import _core
+from .._errors import RollerRigError, status_message
+from ._checks import (MAX_COORD, MAX_POINTS, MIN_POINTS, MIN_SPACING, MIN_WIDTH,
+                      UNITS, _as_float_array, _check_bc, _check_kind, _check_number,
+                      _check_scale, _prepare)
+from ._spline import _smooth, _spline_fit
+
+class Profile:
+    """An immutable wheel or rail/roller profile z(y) with its cubic spline.
+
+    Profile(y, z, kind=..., name="", meta=None, bc=None, smoothing=None)
+
+    y, z:      1-D arrays [m]: y strictly increasing, towards the field side;
+               z downward (rollerrig.profiles docstring).  At least 4 finite points,
+               |y|, |z| <= 2 m, at least 1 mm wide.
+    kind:      "wheel" or "rail" (a roller is "rail").
+    name:      a label; meta: a dict of header values, read-only afterwards.
+    bc:        spline end conditions, "not-a-knot" (default) or "natural".
+    smoothing: None (interpolate the points) or a wavelength L [m]: the
+               natural smoothing spline with lam = (L / 2 pi)^4 (module
+               docstring).  ``z`` then holds the smoothed values at the nodes
+               and ``z_input`` the points given.
+
+    The constructor is strict (it raises RollerRigError for points out of
+    order); ``Profile.from_points`` and ``read_profile`` reorder points and
+    remove folds first.  Evaluation (``z_at``, ``slope``, ``second_derivative``,
+    ``curvature``, ``evaluate``) takes numbers or arrays, returns floats or
+    arrays of the same shape, and gives NaN outside [y_min, y_max].
+    """
+
+    __slots__ = ("_y", "_z", "_z_input", "_s", "_c2", "_c3", "_d2", "_kind", "_name",
+                 "_meta", "_bc", "_smoothing")
+
+    def __init__(self, y, z, *, kind, name="", meta=None, bc=None, smoothing=None):
+        func = "Profile"
+        _check_kind(func, kind)
+        smoothing = _check_number(func, "smoothing", smoothing, positive=True,
+                                  allow_none=True)
+        if smoothing is not None and smoothing > MAX_COORD:
+            raise RollerRigError(f"{func}: smoothing is a wavelength [m] up to {MAX_COORD:g} "
+                                 f"m (the profile's own scale), got {smoothing!r}")
+        bc = _check_bc(func, bc, smoothing)
+        y = _as_float_array(func, "y", y)
+        z = _as_float_array(func, "z", z)
+        if y.ndim != 1 or z.ndim != 1 or y.shape != z.shape:
+            raise RollerRigError(f"{func}: y and z must be 1-D arrays of one length, got "
+                                 f"shapes {y.shape} and {z.shape}")
+        if not MIN_POINTS <= len(y) <= MAX_POINTS:
+            raise RollerRigError(f"{func}: y and z hold {len(y)} point(s); a profile has "
+                                 f"from {MIN_POINTS} to {MAX_POINTS}")
+        bad = np.flatnonzero(~(np.isfinite(y) & np.isfinite(z)))
+        if bad.size:
+            i = int(bad[0])
+            raise RollerRigError(f"{func}: non-finite value at index {i}: y = {y[i]!r}, "
+                                 f"z = {z[i]!r}")
+        dy = np.diff(y)
+        close = np.flatnonzero((dy > 0.0) & (dy < MIN_SPACING))
+        if close.size:
+            i = int(close[0])
+            raise RollerRigError(
+                f"{func}: y[{i}] = {y[i]!r} and y[{i + 1}] = {y[i + 1]!r} are less than "
+                f"{MIN_SPACING:g} m apart: no spline through such points is meaningful")
+        if np.any(dy <= 0.0):
+            i = int(np.flatnonzero(dy <= 0.0)[0])
+            what = "duplicate y" if dy[i] == 0.0 else "y decreases"
+            raise RollerRigError(
+                f"{func}: y must be strictly increasing: {what} at index {i + 1} "
+                f"(y[{i}] = {y[i]!r}, y[{i + 1}] = {y[i + 1]!r}); Profile.from_points "
+                f"reorders points and removes folds")
+        _check_scale(func, y, z, (np.arange(len(y)), "index"))
+        zn = z
+        if smoothing is not None:
+            zn, j = _smooth(y, z, (smoothing / (2.0 * math.pi)) ** 4)
+            if zn is None:
+                raise RollerRigError(
+                    f"{func}: smoothing = {smoothing!r} m is numerically singular on these "
+                    f"points near index {j} (y[{j}] = {y[j]!r}; point spacings from "
+                    f"{np.min(np.diff(y)):.3g} to {np.max(np.diff(y)):.3g} m): space the "
+                    f"points more evenly, remove near-duplicates, or smooth less")
+        s, c2, c3, d2 = _spline_fit(y, zn, bc)
+        for arr in (y, zn, z, s, c2, c3, d2):
+            arr.flags.writeable = False
+        meta = dict(meta or {})
+        set_ = object.__setattr__
+        set_(self, "_y", y)
+        set_(self, "_z", zn)
+        set_(self, "_z_input", z)
+        set_(self, "_s", s)
+        set_(self, "_c2", c2)
+        set_(self, "_c3", c3)
+        set_(self, "_d2", d2)
+        set_(self, "_kind", kind)
+        set_(self, "_name", str(name))
+        set_(self, "_meta", MappingProxyType(meta))
+        set_(self, "_bc", bc)
+        set_(self, "_smoothing", smoothing)
+
+    # -- immutability, pickling, display
+
+    def __setattr__(self, name, value):
+        raise AttributeError(f"Profile is immutable (cannot set {name!r}); use shifted(), "
+                             f"mirrored() or a new Profile")
+
+    def __delattr__(self, name):
+        raise AttributeError(f"Profile is immutable (cannot delete {name!r})")
+
+    def __reduce__(self):
+        return (_rebuild, (np.array(self._y), np.array(self._z_input), self._kind,
+                           self._name, dict(self._meta), self._bc, self._smoothing))
+
+    def __repr__(self):
+        sm = f", smoothing={self._smoothing:g}" if self._smoothing is not None else ""
+        return (f"Profile(kind={self._kind!r}, name={self._name!r}, {len(self._y)} points, "
+                f"y {self._y[0] * 1e3:.4g} .. {self._y[-1] * 1e3:.4g} mm, bc={self._bc!r}{sm})")
+
+    def __len__(self):
+        return len(self._y)
+
+    # -- attributes
+
+    @property
+    def y(self):
+        """Node abscissae [m], strictly increasing (read-only array)."""
+        return self._y
+
+    @property
+    def z(self):
+        """Spline values at the nodes [m]: the points given, or their smoothed values."""
+        return self._z
+
+    @property
+    def z_input(self):
+        """The z values given (equal to ``z`` unless smoothing is set)."""
+        return self._z_input
+
+    @property
+    def kind(self):
+        return self._kind
+
+    @property
+    def name(self):
+        return self._name
+
+    @property
+    def meta(self):
+        """Header values and reading notes (a read-only mapping)."""
+        return self._meta
+
+    @property
+    def bc(self):
+        return self._bc
+
+    @property
+    def smoothing(self):
+        return self._smoothing
+
+    @property
+    def y_min(self):
+        return float(self._y[0])
+
+    @property
+    def y_max(self):
+        return float(self._y[-1])
+
+    # -- evaluation
+
+    def _locate(self, func, y):
+        arr = _as_float_array(f"Profile.{func}", "y", y)
+        flat = arr.reshape(-1)
+        i = np.clip(np.searchsorted(self._y, flat, side="right") - 1, 0, len(self._y) - 2)
+        out = ~((flat >= self._y[0]) & (flat <= self._y[-1]))   # also NaN
+        t = np.where(out, 0.0, flat - self._y[i])     # no overflow far outside
+        return arr, i, t, out
+
+    @staticmethod
+    def _shape(arr, values):
+        values = values.reshape(arr.shape)
+        return float(values) if arr.ndim == 0 else values
+
+    def evaluate(self, y):
+        """(z, dz/dy, d2z/dy2) at y: three floats or arrays; NaN outside the profile."""
+        return self._evaluate("evaluate", y)
+
+    def _evaluate(self, func, y):
+        arr, i, t, out = self._locate(func, y)
+        s, c2, c3 = self._s[i], self._c2[i], self._c3[i]
+        z = self._z[i] + t * (s + t * (c2 + t * c3))
+        dz = s + t * (2.0 * c2 + 3.0 * c3 * t)
+        d2z = 2.0 * c2 + 6.0 * c3 * t
+        for v in (z, dz, d2z):
+            v[out] = np.nan
+        return self._shape(arr, z), self._shape(arr, dz), self._shape(arr, d2z)
+
+    def z_at(self, y):
+        """z(y) [m] (NaN outside [y_min, y_max])."""
+        arr, i, t, out = self._locate("z_at", y)
+        z = self._z[i] + t * (self._s[i] + t * (self._c2[i] + t * self._c3[i]))
+        z[out] = np.nan
+        return self._shape(arr, z)
+
+    def slope(self, y):
+        """dz/dy (z down, y to the field side: a wheel coned as usual has
+        slope -tan(cone angle) on its tread)."""
+        return self._evaluate("slope", y)[1]
+
+    def second_derivative(self, y):
+        """d2z/dy2 [1/m]."""
+        return self._evaluate("second_derivative", y)[2]
+
+    def curvature(self, y):
+        """Signed curvature z'' / (1 + z'^2)^1.5 [1/m]: positive where the
+        curve bends downward (+z): convex for a rail or roller, concave for a
+        wheel.  Hertz: B = (kappa_rail - kappa_wheel) / 2."""
+        _, dz, d2z = self._evaluate("curvature", y)
+        return d2z / (1.0 + np.square(dz)) ** 1.5
+
+    # -- new profiles from this one
+
+    def _derived(self, func, y, z, name, note):
+        meta = dict(self._meta)
+        meta["derived"] = tuple(meta.get("derived", ())) + (note,)
+        with _named(func):
+            return Profile(y, z, kind=self._kind, name=name, meta=meta, bc=self._bc,
+                           smoothing=self._smoothing)
+
+    def shifted(self, dy=0.0, dz=0.0):
+        """The profile moved by dy laterally and dz downward [m]."""
+        dy = _check_number("Profile.shifted", "dy", dy)
+        dz = _check_number("Profile.shifted", "dz", dz)
+        return self._derived("Profile.shifted", self._y + dy, self._z_input + dz, self._name,
+                             f"shifted by dy = {dy!r} m, dz = {dz!r} m")
+
+    def gauge_point(self, depth=0.014):
+        """Lateral position [m] of a rail's (or roller's) gauge face at `depth`
+        below z = 0, the top of the head in rail profiles (the gauge is
+        measured there: 14 mm, EN 13848-1), on the gauge side of the top;
+        bisection on the spline."""
+        func = "Profile.gauge_point"
+        depth = _check_number(func, "depth", depth, positive=True)
+        lo, hi = self.y_min, float(self._y[np.argmin(self._z)])
+        if not self.z_at(lo) >= depth:
+            raise RollerRigError(f"{func}: the profile does not reach {depth!r} m below z = 0 "
+                                 "on the gauge side")
+        for _ in range(100):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if self.z_at(mid) > depth else (lo, mid)
+        return 0.5 * (lo + hi)
+
+    def canted(self, inclination):
+        """The profile turned about its origin as a rail or roller head canted
+        inward by `inclination` (a slope, e.g. 1/40): the field side drops,
+        y' = y cos c - z sin c, z' = y sin c + z cos c, c = atan(inclination).
+        Points where the turn folds the curve back (a steep face) are an
+        error; keep |inclination| small (<= 0.1)."""
+        func = "Profile.canted"
+        inc = _check_number(func, "inclination", inclination)
+        if not abs(inc) <= 0.1:
+            raise RollerRigError(f"{func}: inclination must be within [-0.1, 0.1], got {inc!r}")
+        c = math.atan(inc)
+        y = self._y * math.cos(c) - self._z_input * math.sin(c)
+        z = self._y * math.sin(c) + self._z_input * math.cos(c)
+        if not np.all(np.diff(y) > 0):
+            raise RollerRigError(f"{func}: canting by {inc!r} folds the profile back "
+                                 "(a face steeper than the cant)")
+        return self._derived(func, y, z, self._name, f"canted by {inc!r}")
+
+    def mirrored(self):
+        """The mirror image y -> -y: the same profile for the other side of the
+        track (field side positive again there).  Smoothing commutes with it."""
+        return self._derived("Profile.mirrored", -self._y[::-1], self._z_input[::-1], self._name,
+                             "mirrored y -> -y")
+
+    def write_text(self, path, units="mm"):
+        """Write the nodes (y, z) as plain two-column text, readable by
+        read_profile: '#' header lines 'key = value' carry name, kind, units
+        and bc; 17 significant digits."""
+        if units not in UNITS:
+            raise RollerRigError(f"Profile.write_text: units must be one of {sorted(UNITS)}, "
+                                 f"got {units!r}")
+        f = UNITS[units]
+        with open(path, "w", encoding="utf-8") as out:
+            out.write("# rollerrig profile: lateral y towards the field side, vertical z "
+                      "downward\n")
+            out.write(f"# name = {self._name}\n# kind = {self._kind}\n# units = {units}\n"
+                      f"# bc = {self._bc}\n")
+            for yy, zz in zip(self._y / f, self._z / f):
+                out.write(f"{yy:.17g} {zz:.17g}\n")
+
+    # -- other constructors
+
+    @classmethod
+    def from_points(cls, y, z, *, kind, name="", units="m", on_fold="trim", mirror_y=False,
+                    mirror_z=False, bc=None, smoothing=None, meta=None):
+        """A profile from points in any order: converts units ("m", "cm",
+        "mm"), mirrors on request, reverses descending points, removes folds
+        (with a RollerRigWarning; on_fold="raise" to refuse them) and checks
+        as read_profile does."""
+        func = "Profile.from_points"
+        _check_kind(func, kind)
+        if units not in UNITS:
+            raise RollerRigError(f"{func}: units must be one of {sorted(UNITS)}, "
+                                 f"got {units!r}")
+        y = _as_float_array(func, "y", y)
+        z = _as_float_array(func, "z", z)
+        if y.ndim != 1 or y.shape != z.shape:
+            raise RollerRigError(f"{func}: y and z must be 1-D arrays of one length, got "
+                                 f"shapes {y.shape} and {z.shape}")
+        f = UNITS[units]
+        y, z, notes = _prepare(func, y * f, z * f, kind, (np.arange(len(y)), "point"),
+                               on_fold, mirror_y, mirror_z)
+        with _named(func):
+            return cls(y, z, kind=kind, name=name, meta={**(meta or {}), **notes}, bc=bc,
+                       smoothing=smoothing)
+
+    @classmethod
+    def s1002(cls, smoothing=None):
+        """The S1002 wheel of the Manchester contact benchmark (MBench_S1002_v3.prw,
+        shipped in rollerrig/data/profiles): y = 0 at the taping line, flange at y < 0."""
+        from .readers import DATA_DIR, read_profile   # the readers make Profiles
+        return read_profile(os.path.join(DATA_DIR, "MBench_S1002_v3.prw"),
+                            smoothing=smoothing)
+
+    @classmethod
+    def uic60(cls, smoothing=None):
+        """The UIC60 rail of the Manchester contact benchmark (MBench_UIC60_v3.prr),
+        already canted 1:40: top of head z = 0 near y = 0, gauge face at y < 0."""
+        from .readers import DATA_DIR, read_profile
+        return read_profile(os.path.join(DATA_DIR, "MBench_UIC60_v3.prr"),
+                            smoothing=smoothing)
+
+    @classmethod
+    def conical(cls, alpha, y_range=(-0.02, 0.02), r0=None, n=41):
+        """The paper's conical wheel: z = -tan(alpha) y on y_range [m], so the
+        rolling radius r0 + z decreases towards the field side for alpha > 0
+        (slope -tan(alpha)).  r0, the radius at y = 0 [m], is kept in meta
+        for the contact geometry."""
+        func = "Profile.conical"
+        alpha = _check_number(func, "alpha", alpha)
+        if not abs(alpha) < math.pi / 2:
+            raise RollerRigError(f"{func}: alpha must be within (-pi/2, pi/2) rad, "
+                                 f"got {alpha!r}")
+        y0, y1, n = _range_points(func, y_range, n)
+        r0 = _check_number(func, "r0", r0, positive=True, allow_none=True)
+        y, z = _analytic(func, 0, alpha, y0, y1, n)
+        with _named(func):
+            return cls(y, z, kind="wheel",
+                       name=f"conical wheel, alpha = {alpha:.6g} rad",
+                       meta={"alpha": alpha, "r0": r0})
+
+    @classmethod
+    def cylinder(cls, y_range=(-0.02, 0.02), crown_radius=None, n=81):
+        """A roller (kind "rail") with a flat lateral profile z = 0 (a
+        cylinder), or with a crown of the given radius [m] centred at y = 0:
+        z = R - sqrt(R^2 - y^2), curvature +1/R."""
+        func = "Profile.cylinder"
+        y0, y1, n = _range_points(func, y_range, n)
+        R = _check_number(func, "crown_radius", crown_radius, positive=True, allow_none=True)
+        if R is not None and max(abs(y0), abs(y1)) >= R:
+            raise RollerRigError(f"{func}: y_range {y_range!r} reaches beyond the crown "
+                                 f"radius {R!r} m")
+        # z = y^2 / (R + sqrt(R - y) sqrt(R + y)): R - sqrt(R^2 - y^2) without its
+        # cancellation, nor R^2 overflowing; R = 0 in C is the cylinder, z = 0
+        y, z = _analytic(func, 1, 0.0 if R is None else R, y0, y1, n)
+        name = "cylinder" if R is None else f"crowned roller, R = {R:.6g} m"
+        with _named(func):
+            return cls(y, z, kind="rail", name=name, meta={"crown_radius": R})
+
+
+@contextlib.contextmanager
+def _named(func):
+    """Profile's own checks, reported under the constructor the caller used."""
+    try:
+        yield
+    except RollerRigError as e:
+        msg = str(e)
+        raise RollerRigError(f"{func}: {msg[len('Profile: '):]}" if msg.startswith("Profile: ")
+                             else msg) from None
+
+
+def _rebuild(y, z, kind, name, meta, bc, smoothing):
+    return Profile(y, z, kind=kind, name=name, meta=meta, bc=bc, smoothing=smoothing)
+
+
+def _range_points(func, y_range, n):
+    """y_range and n checked: (y_min, y_max, n)."""
+    try:
+        y0, y1 = (float(v) for v in y_range)
+    except (TypeError, ValueError):
+        raise RollerRigError(f"{func}: y_range must be two numbers (y_min, y_max) [m], "
+                             f"got {y_range!r}") from None
+    if not (math.isfinite(y0) and math.isfinite(y1) and y1 > y0):
+        raise RollerRigError(f"{func}: y_range must be finite with y_min < y_max, "
+                             f"got {y_range!r}")
+    if max(abs(y0), abs(y1)) > MAX_COORD:
+        raise RollerRigError(f"{func}: y_range must lie within +-{MAX_COORD:g} m (metres, "
+                             f"not millimetres), got {y_range!r}")
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) \
+            or not MIN_POINTS <= n <= MAX_POINTS:
+        raise RollerRigError(f"{func}: n must be an integer from {MIN_POINTS} to "
+                             f"{MAX_POINTS}, got {n!r}")
+    # (at most MAX_POINTS over MIN_WIDTH: the points are far over MIN_SPACING apart)
+    if not y1 - y0 >= MIN_WIDTH:
+        raise RollerRigError(f"{func}: y_range {y_range!r} spans less than "
+                             f"{MIN_WIDTH * 1e3:g} mm: metres read as millimetres?")
+    return y0, y1, int(n)
+
+
+def _analytic(func, kind, param, y0, y1, n):
+    """The points of an analytic profile from the C core (rr_profile_conical,
+    kind 0, param alpha; rr_profile_crowned, kind 1, param the crown radius
+    or 0), so that a C program has the same points: numpy.linspace(y0, y1,
+    n) and z.  The arguments are checked already: an error is a bug."""
+    status, y, z = _core.analytic_profile(kind, param, y0, y1, n)
+    if status < 0:
+        raise RollerRigError(f"{func}: {status_message(status)} (y_range ({y0!r}, {y1!r}), "
+                             f"n = {n!r}, parameter {param!r})")
+    return y, z
