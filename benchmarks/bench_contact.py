@@ -117,10 +117,16 @@ def slice_cases(cases, start, stop):
     return {k: v[start:stop] for k, v in cases.items()}
 
 
+def grid_options(method, nx, ny, grid):
+    """The grid options the method has (the registry refuses the others)."""
+    return {k: v for k, v in dict(nx=nx, ny=ny, grid=grid).items()
+            if k in contact.METHODS[method].options}
+
+
 def call_creep(cases, method, nx=30, ny=30, grid="rect"):
     return contact.creep_forces(cases["cx"], cases["cy"], cases["cphi"], a=cases["a"],
                                 b=cases["b"], N=cases["N"], mu=MU, G=G, nu=NU,
-                                method=method, nx=nx, ny=ny, grid=grid)
+                                method=method, **grid_options(method, nx, ny, grid))
 
 
 def call_hertz(cases):
@@ -134,11 +140,11 @@ def creep_loop(cases, k, method, nx, ny, grid):
     cols = [cases[name][:k].tolist() for name in ("cx", "cy", "cphi", "a", "b", "N")]
     rows = list(zip(*cols))
     f = contact.creep_forces
+    opts = grid_options(method, nx, ny, grid)
 
     def run():
         for cx, cy, cphi, a, b, N in rows:
-            f(cx, cy, cphi, a=a, b=b, N=N, mu=MU, G=G, nu=NU, method=method, nx=nx, ny=ny,
-              grid=grid)
+            f(cx, cy, cphi, a=a, b=b, N=N, mu=MU, G=G, nu=NU, method=method, **opts)
     return run
 
 
@@ -165,8 +171,9 @@ class Kernel(CProgram):
         """Time the kernel over the cases in `path` (write_cases); method None
         for Hertz.  Returns bench_kernel's JSON line as a dict."""
         args = ["hertz", path, str(repeats)] if method is None else \
-            ["creep", path, str(repeats), str(contact.METHODS[method]), str(nx), str(ny),
-             str(contact.GRIDS[grid])]
+            ["creep", path, str(repeats), method, str(nx), str(ny),
+             str(contact.METHODS[method].options["grid"].choices.index(grid))
+             if "grid" in contact.METHODS[method].options else "0"]
         proc = subprocess.run([self.exe] + args, capture_output=True, text=True)
         if proc.returncode != 0:
             raise RuntimeError(f"bench_kernel failed: {proc.stderr.strip()}")

@@ -3,7 +3,7 @@
  * very cases that benchmarks/bench_contact.py times through the binding.
  *
  * Built and run by bench_contact.py:
- *   cc -O3 -std=c99 -I csrc benchmarks/bench_kernel.c csrc/*/rr_*.c -lm -o bench_kernel
+ *   cc -O3 -std=c99 -I csrc benchmarks/bench_kernel.c csrc/{util,contact,geometry,rig}/rr_*.c -lm -o bench_kernel
  *   bench_kernel hertz FILE REPEATS
  *   bench_kernel creep FILE REPEATS METHOD NX NY GRID
  *
@@ -110,10 +110,14 @@ int main(int argc, char **argv)
     if (!hertz) {
         if (argc != 8)
             die("creep needs METHOD NX NY GRID");
-        rr_creep_opts_default(atoi(argv[4]), &opts);
-        opts.nx = atoi(argv[5]);
-        opts.ny = atoi(argv[6]);
-        opts.grid = atoi(argv[7]);
+        /* METHOD by name; NX, NY, GRID (its index) where the method has them */
+        if (rr_creep_opts_default(&opts, rr_method_find(argv[4])) < 0)
+            die("unknown METHOD");
+        if (rr_method_option(rr_method_get(opts.method), "nx") >= 0
+            && (rr_creep_opts_set(&opts, "nx", atof(argv[5])) < 0
+                || rr_creep_opts_set(&opts, "ny", atof(argv[6])) < 0
+                || rr_creep_opts_set(&opts, "grid", atof(argv[7])) < 0))
+            die("invalid creep options");
         if (rr_creep_opts_check(&opts) < 0)
             die("invalid creep options");
     }

@@ -175,13 +175,15 @@ static void method_opts(int k, rr_creep_opts *o)
     static const int methods[NMETHODS] = {RR_METHOD_FASTSIM, RR_METHOD_FASTSIM,
                                           RR_METHOD_POLACH, RR_METHOD_LINEAR,
                                           RR_METHOD_FASTSIM};
-    rr_creep_opts_default(methods[k], o);    /* rect grid, parabolic bound, local slip */
-    o->nx = o->ny = k == 1 ? 10 : FASTSIM_N;
-    if (k == 4)
-        o->slip_speed = RR_SLIP_RIGID;       /* one friction value per contact */
+    rr_creep_opts_default(o, methods[k]);    /* rect grid, parabolic bound, local slip */
+    if (methods[k] == RR_METHOD_FASTSIM) {
+        o->v[RR_FASTSIM_NX] = o->v[RR_FASTSIM_NY] = k == 1 ? 10 : FASTSIM_N;
+        if (k == 4)
+            o->v[RR_FASTSIM_SLIP_SPEED] = RR_SLIP_RIGID;   /* one friction value per contact */
+    }
     if (methods[k] == RR_METHOD_POLACH) {
-        o->kA = POLACH_KA;
-        o->kS = POLACH_KS;
+        o->v[RR_POLACH_KA] = POLACH_KA;
+        o->v[RR_POLACH_KS] = POLACH_KS;
     }
     if (rr_creep_opts_check(o))
         die("invalid creep options");

@@ -9,8 +9,11 @@
  *   rr_kalker.h    Kalker's creep coefficients C11, C22, C23
  *   rr_friction.h  Coulomb and Polach's falling friction
  *   rr_contact.h   the contact case and the forces every method returns
- *   rr_creep.h     method options, linear theory, Polach, dispatcher
+ *   rr_creep_opts.h  method options and descriptors, what every method shares
+ *   rr_linear.h    Kalker's linear theory
+ *   rr_polach.h    Polach's method
  *   rr_fastsim.h   FASTSIM, blended and modified, with its traction field
+ *   rr_creep.h     the methods' registry (rr_methods.def) and dispatcher
  *   rr_creepage.h  kinematic creepages of a wheel on a roller
  *   rr_spline.h    natural cubic splines for profiles
  *   rr_geometry.h  contact search, wheelset pose, contact tables
@@ -31,8 +34,11 @@
 #include "contact/rr_kalker.h"
 #include "contact/rr_friction.h"
 #include "contact/rr_contact.h"
-#include "contact/rr_creep.h"
+#include "contact/rr_creep_opts.h"
+#include "contact/rr_linear.h"
+#include "contact/rr_polach.h"
 #include "contact/rr_fastsim.h"
+#include "contact/rr_creep.h"
 #include "geometry/rr_creepage.h"
 #include "util/rr_spline.h"
 #include "geometry/rr_geometry.h"

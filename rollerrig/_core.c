@@ -326,56 +326,243 @@ static void load_case(const input *in, npy_intp i, rr_contact_case *c, rr_fricti
     fr->B = IN(in[11], i);
 }
 
-/* Options come as keywords: integers are range-checked into C ints here
- * (so that 2**32 + 1 is not taken as 1), the rest by rr_creep_opts_check. */
-static int parse_opts(PyObject *kwargs, const char *func, rr_creep_opts *o)
-{
-    static const char *const keys[] = {"method", "nx", "ny", "bound", "slip_speed", "grid",
-                                       "k0", "alpha_inf", "beta", "kA", "kS"};
-    PyObject *v;
-    int method = 0, k, st;
+/* ---- creep-force options, parsed from the registry's descriptors ------- */
 
-    if (kwargs && (v = PyDict_GetItemString(kwargs, "method")) != NULL
-        && int_arg(v, func, "method", 0, RR_METHOD_COUNT - 1, &method) < 0)
-        return -1;
-    rr_creep_opts_default(method, o);
-    for (k = 1; k < 11 && kwargs; k++) {
-        v = PyDict_GetItemString(kwargs, keys[k]);
-        if (!v)
-            continue;
-        if (k <= 5) {
-            int *dst = k == 1 ? &o->nx : k == 2 ? &o->ny : k == 3 ? &o->bound
-                     : k == 4 ? &o->slip_speed : &o->grid;
-            if (int_arg(v, func, keys[k], INT_MIN, INT_MAX, dst) < 0)
-                return -1;
-        } else {
-            double x = PyFloat_AsDouble(v);
-            if (x == -1.0 && PyErr_Occurred())
-                return -1;
-            if (k == 6) o->k0 = x;
-            else if (k == 7) o->alpha_inf = x;
-            else if (k == 8) o->beta = x;
-            else if (k == 9) o->kA = x;
-            else o->kS = x;
+/* ", ".join of the quoted names */
+static PyObject *quoted_names(const char *const *names, int n)
+{
+    PyObject *list = PyList_New(0), *sep, *res = NULL;
+    int k;
+    if (!list)
+        return NULL;
+    for (k = 0; k < n; k++) {
+        PyObject *q = PyUnicode_FromFormat("'%s'", names[k]);
+        if (!q || PyList_Append(list, q) < 0) {
+            Py_XDECREF(q);
+            Py_DECREF(list);
+            return NULL;
+        }
+        Py_DECREF(q);
+    }
+    if ((sep = PyUnicode_FromString(", ")) != NULL) {
+        res = PyUnicode_Join(sep, list);
+        Py_DECREF(sep);
+    }
+    Py_DECREF(list);
+    return res;
+}
+
+static PyObject *method_names(void)
+{
+    const char *names[RR_METHOD_COUNT];
+    int k;
+    for (k = 0; k < rr_method_count(); k++)
+        names[k] = rr_method_get(k)->name;
+    return quoted_names(names, rr_method_count());
+}
+
+static PyObject *option_names(const rr_method_desc *d)
+{
+    const char *names[RR_CREEP_MAX_OPTS];
+    int k;
+    for (k = 0; k < d->nopts; k++)
+        names[k] = d->opts[k].name;
+    return quoted_names(names, d->nopts);
+}
+
+static int choice_count(const rr_creep_option *op)
+{
+    int n = 0;
+    while (op->choices[n])
+        n++;
+    return n;
+}
+
+/* A range end as Python writes the number ("1", "0.54", "inf"). */
+static PyObject *number_str(double x)
+{
+    char *t = PyOS_double_to_string(x, 'r', 0, 0, NULL);
+    PyObject *r;
+    if (!t)
+        return NULL;
+    r = PyUnicode_FromString(t);
+    PyMem_Free(t);
+    return r;
+}
+
+/* ValueError: "func: name must be <what the option takes>, got value" */
+static int option_error(const char *func, const rr_creep_option *op, PyObject *value)
+{
+    PyObject *lo = NULL, *hi = NULL, *names = NULL;
+    if (op->type == RR_OPT_CHOICE) {
+        if ((names = quoted_names(op->choices, choice_count(op))) != NULL)
+            PyErr_Format(PyExc_ValueError, "%s: %s must be one of %U (or None: the default), "
+                         "got %R", func, op->name, names, value);
+    } else if ((lo = number_str(op->lo)) != NULL && (hi = number_str(op->hi)) != NULL) {
+        PyErr_Format(PyExc_ValueError, "%s: %s must be %s in %s%U, %U%s, got %R", func, op->name,
+                     op->type == RR_OPT_INT ? "an integer" : "a real number",
+                     op->lo_open ? "(" : "[", lo, hi, op->hi_open ? ")" : "]", value);
+    }
+    Py_XDECREF(lo);
+    Py_XDECREF(hi);
+    Py_XDECREF(names);
+    return -1;
+}
+
+/* One option's value from Python: None (the default), a choice's name, an
+ * integer (never wrapped: 2**32 + 1 stays out of range) or a real; 0, or
+ * -1 with a ValueError naming the option, its range and the value. */
+static int option_value(PyObject *v, const char *func, const rr_creep_option *op, double *out)
+{
+    double x;
+    if (v == Py_None) {
+        *out = op->def;
+        return 0;
+    }
+    if (op->type == RR_OPT_CHOICE) {
+        int k;
+        const char *name = PyUnicode_Check(v) ? PyUnicode_AsUTF8(v) : NULL;
+        if (PyUnicode_Check(v) && !name)
+            return -1;
+        for (k = 0; name && op->choices[k]; k++)
+            if (strcmp(name, op->choices[k]) == 0) {
+                *out = k;
+                return 0;
+            }
+        return option_error(func, op, v);
+    }
+    if (PyBool_Check(v) || PyUnicode_Check(v) || PyBytes_Check(v))
+        return option_error(func, op, v);
+    if (op->type == RR_OPT_INT) {
+        PyObject *i;
+        long n;
+        int overflow = 0;
+        if (!PyIndex_Check(v))
+            return option_error(func, op, v);
+        if (!(i = PyNumber_Index(v)))
+            return -1;
+        n = PyLong_AsLongAndOverflow(i, &overflow);
+        Py_DECREF(i);
+        if (n == -1 && PyErr_Occurred())
+            return -1;
+        if (overflow || n < -(1L << 30) || n > (1L << 30))
+            return option_error(func, op, v);
+        x = (double)n;
+    } else {
+        x = PyFloat_AsDouble(v);
+        if (x == -1.0 && PyErr_Occurred()) {
+            PyErr_Clear();          /* not a number, or an int beyond the doubles */
+            return option_error(func, op, v);
         }
     }
-    st = rr_creep_opts_check(o);
+    if (rr_method_option_check(op, x) != RR_OK)
+        return option_error(func, op, v);
+    *out = x;
+    return 0;
+}
+
+/* The method and its options from keywords: method= a name of the registry,
+ * every other keyword (but own, the call's own keyword, or NULL) an option of
+ * that method; then the method's constraints across options.  0, or -1 with
+ * a ValueError naming the method, the option, its range and the value. */
+static int parse_opts(PyObject *kwargs, const char *func, const char *own, rr_creep_opts *o)
+{
+    PyObject *v = kwargs ? PyDict_GetItemString(kwargs, "method") : NULL, *key, *names;
+    const rr_method_desc *d;
+    const char *mname = v && PyUnicode_Check(v) ? PyUnicode_AsUTF8(v) : NULL;
+    Py_ssize_t pos = 0;
+    int method, bad, st;
+
+    if (v && PyUnicode_Check(v) && !mname)
+        return -1;
+    method = mname ? rr_method_find(mname) : RR_ERR_METHOD;
+    if (method < 0) {
+        if ((names = method_names()) != NULL) {
+            if (v)
+                PyErr_Format(PyExc_ValueError, "%s: method must be one of %U, got %R", func,
+                             names, v);
+            else
+                PyErr_Format(PyExc_ValueError, "%s: method is required (one of %U)", func,
+                             names);
+            Py_DECREF(names);
+        }
+        return -1;
+    }
+    d = rr_method_get(method);
+    rr_creep_opts_default(o, method);
+    while (kwargs && PyDict_Next(kwargs, &pos, &key, &v)) {
+        const char *name = PyUnicode_Check(key) ? PyUnicode_AsUTF8(key) : NULL;
+        int i;
+        if (!name)
+            return PyErr_Occurred() ? -1 : (PyErr_SetString(PyExc_TypeError, "keywords must "
+                                                            "be strings"), -1);
+        if (strcmp(name, "method") == 0 || (own && strcmp(name, own) == 0))
+            continue;
+        if ((i = rr_method_option(d, name)) < 0) {
+            if ((names = option_names(d)) != NULL) {
+                if (d->nopts > 0)
+                    PyErr_Format(PyExc_ValueError, "%s: method '%s' has no option %s (its "
+                                 "options: %U), got %s=%R", func, d->name, name, names, name, v);
+                else
+                    PyErr_Format(PyExc_ValueError, "%s: method '%s' has no options, got %s=%R",
+                                 func, d->name, name, v);
+                Py_DECREF(names);
+            }
+            return -1;
+        }
+        if (option_value(v, func, &d->opts[i], &o->v[i]) < 0)
+            return -1;
+    }
+    st = rr_creep_opts_check_at(o, &bad);
     if (st < 0) {
-        PyErr_Format(PyExc_ValueError, "%s: invalid options (method %d, nx %d, ny %d, bound %d, "
-                     "grid %d, slip_speed %d, k0 %g, alpha_inf %g, beta %g, kA %g, kS %g): %s",
-                     func, o->method, o->nx, o->ny, o->bound, o->grid, o->slip_speed, o->k0,
-                     o->alpha_inf, o->beta, o->kA, o->kS, rr_status_message(st));
+        /* each option passed its own range: a constraint across options */
+        PyObject *got = PyUnicode_FromString(""), *part;
+        int k;
+        for (k = 0; got && k < d->nopts; k++) {
+            PyObject *num = number_str(o->v[k]);
+            part = num ? PyUnicode_FromFormat("%s%s = %U", k ? ", " : "", d->opts[k].name, num)
+                       : NULL;
+            Py_XDECREF(num);
+            if (!part) {
+                Py_CLEAR(got);
+                break;
+            }
+            PyUnicode_Append(&got, part);
+            Py_DECREF(part);
+        }
+        if (got) {
+            PyErr_Format(PyExc_ValueError, "%s: %s must satisfy %s (method '%s'), got %U: %s",
+                         func, bad >= 0 ? d->opts[bad].name : "the options",
+                         d->check_doc ? d->check_doc : "the method's constraints", d->name, got,
+                         rr_status_message(st));
+            Py_DECREF(got);
+        }
         return -1;
     }
     return 0;
 }
 
-/* Work units of one case of a method, for the batch loop's chunks. */
+/* check_creep_options(func, options): the options (a dict with method=)
+ * checked as every call checks them, messages naming func; None, or a
+ * ValueError. */
+static PyObject *py_check_creep_options(PyObject *self, PyObject *args)
+{
+    const char *func;
+    PyObject *d;
+    rr_creep_opts o;
+    (void)self;
+    if (!PyArg_ParseTuple(args, "sO!:check_creep_options", &func, &PyDict_Type, &d))
+        return NULL;
+    if (parse_opts(d, func, NULL, &o) < 0)
+        return NULL;
+    Py_RETURN_NONE;
+}
+
+/* Work units of one case of a method (its descriptor's: FASTSIM elements,
+ * 1 for a closed form), for the batch loop's chunks. */
 static double creep_cost(const rr_creep_opts *o)
 {
-    return o->method == RR_METHOD_LINEAR || o->method == RR_METHOD_POLACH
-               ? 1.0
-               : (double)o->nx * o->ny;
+    return rr_creep_cost(o);
 }
 
 typedef struct {
@@ -417,7 +604,7 @@ static PyObject *py_creep_forces(PyObject *self, PyObject *args, PyObject *kwarg
     }
     for (k = 0; k < NCASE; k++)
         objs[k] = PyTuple_GET_ITEM(args, k);
-    if (parse_opts(kwargs, "creep_forces", &b.o) < 0)
+    if (parse_opts(kwargs, "creep_forces", NULL, &b.o) < 0)
         return NULL;
     if (parse_inputs("creep_forces", objs, case_names, NCASE, &n, b.in) < 0
         || new_outputs(n, 3, out) < 0)
@@ -450,7 +637,7 @@ static int CreepOptions_init(CreepOptionsObject *self, PyObject *args, PyObject 
         PyErr_SetString(PyExc_TypeError, "CreepOptions: options are keywords only");
         return -1;
     }
-    if (parse_opts(kwargs, "creep_forces", &self->o) < 0)
+    if (parse_opts(kwargs, "creep_forces", NULL, &self->o) < 0)
         return -1;
     self->ready = 1;
     return 0;
@@ -519,19 +706,21 @@ static int fastsim_field_kernel(void *ctx, npy_intp start, npy_intp stop)
     fastsim_field_call *k = ctx;
     (void)start;
     (void)stop;
-    k->st = rr_fastsim(&k->c, &k->fr, k->o, &k->f, &k->field);
+    k->st = rr_creep_field(&k->c, &k->fr, k->o, &k->f, &k->field);
     return 0;
 }
 
-/* One FASTSIM case with its traction field, arrays of shape (ny, nx). */
+/* One case with its traction field (methods that have one, as the registry
+ * says), arrays of shape (rows, cols) of the method's field_shape. */
 static PyObject *py_fastsim_field(PyObject *self, PyObject *args, PyObject *kwargs)
 {
-    PyObject *objs[NCASE], *arr[6] = {NULL, NULL, NULL, NULL, NULL, NULL};
+    PyObject *objs[NCASE], *arr[7] = {NULL, NULL, NULL, NULL, NULL, NULL, NULL};
     input in[NCASE];
     rr_creep_opts o;
+    const rr_method_desc *d;
     fastsim_field_call call;
     npy_intp n, dims[2];
-    int k;
+    int k, rows, cols;
     (void)self;
 
     if (PyTuple_GET_SIZE(args) != NCASE) {
@@ -540,11 +729,21 @@ static PyObject *py_fastsim_field(PyObject *self, PyObject *args, PyObject *kwar
     }
     for (k = 0; k < NCASE; k++)
         objs[k] = PyTuple_GET_ITEM(args, k);
-    if (parse_opts(kwargs, "fastsim_field", &o) < 0)
+    if (parse_opts(kwargs, "fastsim_field", NULL, &o) < 0)
         return NULL;
-    if (o.method != RR_METHOD_FASTSIM && o.method != RR_METHOD_FASTSIM_BLENDED
-        && o.method != RR_METHOD_MODIFIED_FASTSIM) {
-        PyErr_SetString(PyExc_ValueError, "fastsim_field: method must be a FASTSIM variant");
+    d = rr_method_get(o.method);
+    if (!d->field) {
+        const char *names[RR_METHOD_COUNT];
+        PyObject *list;
+        int m = 0;
+        for (k = 0; k < rr_method_count(); k++)
+            if (rr_method_get(k)->field)
+                names[m++] = rr_method_get(k)->name;
+        if ((list = quoted_names(names, m)) != NULL) {
+            PyErr_Format(PyExc_ValueError, "fastsim_field: method must have a traction field "
+                         "(%U), got '%s'", list, d->name);
+            Py_DECREF(list);
+        }
         return NULL;
     }
     if (parse_inputs("fastsim_field", objs, case_names, NCASE, &n, in) < 0)
@@ -554,10 +753,11 @@ static PyObject *py_fastsim_field(PyObject *self, PyObject *args, PyObject *kwar
                      (Py_ssize_t)n);
         return NULL;
     }
-    dims[0] = o.ny;
-    dims[1] = o.nx;
-    for (k = 0; k < 6; k++) {
-        arr[k] = PyArray_SimpleNew(2, dims, k < 5 ? NPY_DOUBLE : NPY_INT8);
+    d->field_shape(&o, &rows, &cols);
+    dims[0] = rows;
+    dims[1] = cols;
+    for (k = 0; k < 7; k++) {
+        arr[k] = PyArray_SimpleNew(2, dims, k != 5 ? NPY_DOUBLE : NPY_INT8);
         if (!arr[k])
             goto fail;
     }
@@ -567,14 +767,15 @@ static PyObject *py_fastsim_field(PyObject *self, PyObject *args, PyObject *kwar
     call.field.px = OUT(arr[3]);
     call.field.py = OUT(arr[4]);
     call.field.slip = (signed char *)PyArray_DATA((PyArrayObject *)arr[5]);
+    call.field.area = OUT(arr[6]);
     load_case(in, 0, &call.c, &call.fr);
     call.o = &o;
     if (run_batch(fastsim_field_kernel, &call, 1, 1.0) < 0)
         goto fail;
-    return Py_BuildValue("(dddiNNNNNN)", call.f.fx, call.f.fy, call.f.mz, call.st, arr[0],
-                         arr[1], arr[2], arr[3], arr[4], arr[5]);
+    return Py_BuildValue("(dddiNNNNNNN)", call.f.fx, call.f.fy, call.f.mz, call.st, arr[0],
+                         arr[1], arr[2], arr[3], arr[4], arr[5], arr[6]);
 fail:
-    release(arr, 6);
+    release(arr, 7);
     return NULL;
 }
 
@@ -1033,7 +1234,7 @@ static PyObject *py_rig_contact(PyObject *self, PyObject *args, PyObject *kwargs
         if (kin_only < 0)
             return NULL;
     }
-    if (parse_opts(kwargs, "rig_contact", &m.creep) < 0)
+    if (parse_opts(kwargs, "rig_contact", "kinematics_only", &m.creep) < 0)
         return NULL;
     {
         int st = rr_rig_contact_check(&m);
@@ -1218,7 +1419,7 @@ static int Rig_init(RigObject *self, PyObject *args, PyObject *kwargs)
             return -1;
         }
     }
-    if (parse_opts(creep, "Rig", &self->p.contact.creep) < 0)
+    if (parse_opts(creep, "Rig", NULL, &self->p.contact.creep) < 0)
         return -1;
     Py_INCREF(dobj);
     Py_XSETREF(self->data, dobj);
@@ -1715,13 +1916,15 @@ static PyMethodDef core_methods[] = {
     {"kalker", py_kalker, METH_VARARGS,
      "kalker(a_over_b, nu) -> (c11, c22, c23, status)"},
     {"creep_forces", (PyCFunction)(void (*)(void))py_creep_forces, METH_VARARGS | METH_KEYWORDS,
-     "creep_forces(cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B, *, method, nx, ny, bound,"
-     " slip_speed, grid, k0, alpha_inf, beta, kA, kS) -> (fx, fy, mz, status)"},
+     "creep_forces(cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B, *, method, <its options>)"
+     " -> (fx, fy, mz, status); METHODS lists the methods and their options"},
+    {"check_creep_options", py_check_creep_options, METH_VARARGS,
+     "check_creep_options(func, {method: ..., <its options>}) -> None, or ValueError"},
     {"creep_forces1", (PyCFunction)(void (*)(void))py_creep_forces1, METH_FASTCALL,
      "creep_forces1(opts, cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B) -> (fx, fy, mz, status)"},
     {"fastsim_field", (PyCFunction)(void (*)(void))py_fastsim_field,
      METH_VARARGS | METH_KEYWORDS,
-     "fastsim_field(<as creep_forces, one case>) -> (fx, fy, mz, status, x, y, pn, px, py, slip)"},
+     "fastsim_field(<as creep_forces, one case>) -> (fx, fy, mz, status, x, y, pn, px, py, slip, area)"},
     {"wheelset_contact", py_wheelset_contact, METH_VARARGS,
      "wheelset_contact(12 profile arrays (s, z, z'' each), 8 params, y_ws, nsamples, tol, sep)"
      " -> (status, z, roll, left, right)"},
@@ -1886,6 +2089,77 @@ static int add_rows(PyObject *m, const char *name, int n, PyObject *(*row)(int))
     return 0;
 }
 
+/* The registry as _core.METHODS: a tuple of (name, doc, options, has_field,
+ * saturates), options a tuple of (name, type, unit, default, lo, hi,
+ * lo_open, hi_open, choices, doc): type "int", "real" or "choice"; an
+ * integer's default and range as ints, a choice's default as its name (its
+ * range None), choices a tuple of names (empty but for a choice). */
+static PyObject *option_tuple(const rr_creep_option *op)
+{
+    static const char *const types[] = {"int", "real", "choice"};
+    PyObject *choices, *def, *lo, *hi;
+    int k, n = op->type == RR_OPT_CHOICE ? choice_count(op) : 0;
+    if (!(choices = PyTuple_New(n)))
+        return NULL;
+    for (k = 0; k < n; k++) {
+        PyObject *c = PyUnicode_FromString(op->choices[k]);
+        if (!c) {
+            Py_DECREF(choices);
+            return NULL;
+        }
+        PyTuple_SET_ITEM(choices, k, c);
+    }
+    if (op->type == RR_OPT_CHOICE) {
+        def = PyUnicode_FromString(op->choices[(int)op->def]);
+        Py_INCREF(Py_None);
+        Py_INCREF(Py_None);
+        lo = hi = Py_None;
+    } else if (op->type == RR_OPT_INT) {
+        def = PyLong_FromDouble(op->def);
+        lo = PyLong_FromDouble(op->lo);
+        hi = PyLong_FromDouble(op->hi);
+    } else {
+        def = PyFloat_FromDouble(op->def);
+        lo = PyFloat_FromDouble(op->lo);
+        hi = PyFloat_FromDouble(op->hi);
+    }
+    return Py_BuildValue("(sssNNNNNNs)", op->name, types[op->type], op->unit, def, lo, hi,
+                         PyBool_FromLong(op->lo_open), PyBool_FromLong(op->hi_open), choices,
+                         op->doc);
+}
+
+static int add_methods(PyObject *m)
+{
+    PyObject *all = PyTuple_New(rr_method_count());
+    int i, k;
+    if (!all)
+        return -1;
+    for (i = 0; i < rr_method_count(); i++) {
+        const rr_method_desc *d = rr_method_get(i);
+        PyObject *opts = PyTuple_New(d->nopts), *row;
+        if (!opts)
+            goto fail;
+        for (k = 0; k < d->nopts; k++) {
+            PyObject *t = option_tuple(&d->opts[k]);
+            if (!t) {
+                Py_DECREF(opts);
+                goto fail;
+            }
+            PyTuple_SET_ITEM(opts, k, t);
+        }
+        row = Py_BuildValue("(ssNNN)", d->name, d->doc, opts, PyBool_FromLong(d->field != NULL),
+                            PyBool_FromLong(d->saturates));
+        if (!row)
+            goto fail;
+        PyTuple_SET_ITEM(all, i, row);
+    }
+    if (PyModule_AddObject(m, "METHODS", all) == 0)
+        return 0;
+fail:
+    Py_DECREF(all);
+    return -1;
+}
+
 PyMODINIT_FUNC PyInit__core(void)
 {
     PyObject *m;
@@ -1907,18 +2181,7 @@ PyMODINIT_FUNC PyInit__core(void)
         Py_DECREF(m);
         return NULL;
     }
-    if (PyModule_AddIntConstant(m, "METHOD_LINEAR", RR_METHOD_LINEAR) < 0
-        || PyModule_AddIntConstant(m, "METHOD_FASTSIM", RR_METHOD_FASTSIM) < 0
-        || PyModule_AddIntConstant(m, "METHOD_FASTSIM_BLENDED", RR_METHOD_FASTSIM_BLENDED) < 0
-        || PyModule_AddIntConstant(m, "METHOD_MODIFIED_FASTSIM", RR_METHOD_MODIFIED_FASTSIM) < 0
-        || PyModule_AddIntConstant(m, "METHOD_POLACH", RR_METHOD_POLACH) < 0
-        || PyModule_AddIntConstant(m, "BOUND_PARABOLIC", RR_BOUND_PARABOLIC) < 0
-        || PyModule_AddIntConstant(m, "BOUND_ELLIPTIC", RR_BOUND_ELLIPTIC) < 0
-        || PyModule_AddIntConstant(m, "GRID_RECT", RR_GRID_RECT) < 0
-        || PyModule_AddIntConstant(m, "GRID_STRIPS", RR_GRID_STRIPS) < 0
-        || PyModule_AddIntConstant(m, "SLIP_LOCAL", RR_SLIP_LOCAL) < 0
-        || PyModule_AddIntConstant(m, "SLIP_RIGID", RR_SLIP_RIGID) < 0
-        || PyModule_AddIntConstant(m, "FASTSIM_MAX_GRID", RR_FASTSIM_MAX_GRID) < 0
+    if (add_methods(m) < 0
         || PyModule_AddIntConstant(m, "TABLE_ROW", (int)rr_contact_table_len(1)) < 0
         || PyModule_AddIntConstant(m, "SEARCH_MAX_SAMPLES", RR_SEARCH_MAX_SAMPLES) < 0
         || PyModule_AddIntConstant(m, "SPLINE_NOT_A_KNOT", RR_SPLINE_NOT_A_KNOT) < 0

@@ -26,7 +26,7 @@ import numpy as np
 
 from . import _core
 from ._errors import RollerRigError, RollerRigWarning, check_status, status_message
-from .contact import _as_float
+from ._binding import _as_float
 from .profiles import DATA_DIR, Profile, read_profile
 
 __all__ = ["RigGeometry", "ContactSide", "WheelsetContact", "wheelset_contact",

@@ -36,7 +36,7 @@ from typing import NamedTuple, Optional
 import numpy as np
 
 from ._errors import RollerRigError
-from .contact import FallingFriction, creep_forces
+from .contact import METHODS, FallingFriction, creep_forces
 
 __all__ = ["ExactCases", "ScoreResult", "CreepCurve", "CurveScore", "exact_cases", "score",
            "table", "creep_curves", "score_curves", "DATA_DIR", "TABLE_FILE",
@@ -153,17 +153,22 @@ def exact_cases():
 
 #: creep_forces arguments that the reference cases set
 _CASE_ARGS = ("cx", "cy", "cphi", "a", "b", "N", "mu", "G", "nu")
-_OPTION_ARGS = tuple(p for p in inspect.signature(creep_forces).parameters
-                     if p not in _CASE_ARGS)
+_OPTION_ARGS = tuple(p for p, v in inspect.signature(creep_forces).parameters.items()
+                     if p not in _CASE_ARGS and v.kind is not v.VAR_KEYWORD)
+#: every option of the registry's methods (which method has which: METHODS)
+_METHOD_OPTIONS = tuple(dict.fromkeys(o for m in METHODS.values() for o in m.options))
 
 
 def _check_options(func, options, fixed):
+    """The case's own arguments are refused; an option no method has is named
+    here, the others are checked for the method by the registry."""
+    known = _OPTION_ARGS + _METHOD_OPTIONS
     for k in options:
         if k in fixed:
             raise RollerRigError(f"{func}: {k} is set by the reference cases, not an option")
-        if k not in _OPTION_ARGS:
+        if k not in known:
             raise RollerRigError(f"{func}: unknown option {k!r}; creep_forces takes "
-                                 f"{', '.join(o for o in _OPTION_ARGS if o != 'method')}")
+                                 f"{', '.join(o for o in known if o != 'method')}")
 
 
 def _stats(err):

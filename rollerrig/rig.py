@@ -43,7 +43,7 @@ import numpy as np
 from . import _core
 from ._errors import RollerRigError, RollerRigWarning, status_message
 from ._optional import require
-from .contact import METHODS, _as_float, _options
+from ._binding import METHODS, _as_float, check_creep_options, core
 from .geometry import MAX_ROWS, ContactTable, RigGeometry
 from .profiles import Profile
 
@@ -329,6 +329,22 @@ def _rule(p):
     return _numbers(entry, f"at most {_core.RIG_MAX_LIST} numbers{need}",
                     _core.RIG_MAX_LIST)
 
+#: the parameter file's keys (contact section) that set a creep-force option:
+#: key -> the option's name in the registry (rollerrig.METHODS); each is given
+#: to the chosen method where it has that option, and checked as the registry says
+_FILE_OPTIONS = {"fastsim_nx": "nx", "fastsim_ny": "ny", "fastsim_slip_speed": "slip_speed",
+                 "polach_kA": "kA", "polach_kS": "kS"}
+
+
+def _option_rule(name):
+    """A parameter check from the registry's option `name` (its range or names)."""
+    op = next(m.options[name] for m in METHODS.values() if name in m.options)
+    if op.type == "choice":
+        return _choice(*op.choices)
+    if op.type == "int":
+        return _integer(op.lo + op.lo_open, op.hi - op.hi_open)
+    return _real(op.lo, op.hi, lo_open=op.lo_open, hi_open=op.hi_open)
+
 
 #: the check of every key the model reads: the declared ones (PARAMETERS),
 #: and the creep-force method's options
@@ -339,10 +355,7 @@ for _p in PARAMETERS:
         _RULES.setdefault(_section, {})[_key] = _rule(_p)
 _RULES["contact"].update({
     "creep_method": _choice(*METHODS),
-    "fastsim_nx": _integer(1, _core.FASTSIM_MAX_GRID),
-    "fastsim_ny": _integer(1, _core.FASTSIM_MAX_GRID),
-    "fastsim_slip_speed": _choice("rigid", "local"),
-    "polach_kA": _real(0.0, 1.0, lo_open=True), "polach_kS": _real(0.0, 1.0, lo_open=True),
+    **{key: _option_rule(option) for key, option in _FILE_OPTIONS.items()},
 })
 
 #: keys (or whole sections) the parameters no longer have, since they acted
@@ -528,26 +541,33 @@ def _rig_table(r0, R0, hw, alpha, crown, span, reach, rows):
     return ContactTable(g, y0, dy, rows, data)
 
 
-#: the keyword options of simulate / build_rig / replay that go to the creep-force method
-CREEP_OPTIONS = ("bound", "grid", "slip_speed", "k0", "alpha_inf", "beta", "kA", "kS")
+#: the keyword options of simulate / build_rig / replay that go to the creep-force
+#: method: every option of the registry's methods (nx, ny are arguments of their own)
+CREEP_OPTIONS = tuple(dict.fromkeys(o for m in METHODS.values() for o in m.options
+                                    if o not in ("nx", "ny")))
 
 
 def _creep_options(func, P, method, nx, ny, creep):
     """The creep-force method and its options: the parameters' contact
-    section, overridden by the caller's (method, nx, ny, and `creep`:
-    CREEP_OPTIONS)."""
+    section (the keys of _FILE_OPTIONS the method has), overridden by the
+    caller's (method, nx, ny, and `creep`: the method's options); checked
+    by the registry.  Returns the keywords for the binding (method=...)."""
     C = P["contact"]
-    opts = dict(method=method if method is not None else C["creep_method"],
-                nx=nx if nx is not None else C["fastsim_nx"],
-                ny=ny if ny is not None else C["fastsim_ny"], bound="parabolic", grid="rect",
-                slip_speed=C["fastsim_slip_speed"], k0=0.54, alpha_inf=0.02, beta=0.62,
-                kA=C["polach_kA"], kS=C["polach_kS"])
-    unknown = set(creep) - set(opts)
+    method = method if method is not None else C["creep_method"]
+    if not (isinstance(method, str) and method in METHODS):
+        raise RollerRigError(f"{func}: method must be one of {', '.join(map(repr, METHODS))}, "
+                             f"got {method!r:.60}")
+    unknown = set(creep) - set(CREEP_OPTIONS)
     if unknown:
         raise RollerRigError(f"{func}: unknown option(s) {sorted(unknown)}; the creep "
                              f"options are {list(CREEP_OPTIONS)}")
+    has = METHODS[method].options
+    opts = {o: C[key] for key, o in _FILE_OPTIONS.items() if o in has and key in C}
+    # nx, ny are arguments of their own, like the file's keys: the grid of a
+    # method that has one (a method without one takes no grid)
+    opts.update({k: v for k, v in (("nx", nx), ("ny", ny)) if v is not None and k in has})
     opts.update(creep)
-    return opts
+    return check_creep_options(func, method, opts)
 
 
 def schedule(P, duration, dt, targets, target_times, roller_speed, first=0, stop=None):
@@ -677,7 +697,7 @@ def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, c
     if ode not in ODE_METHODS:
         raise RollerRigError(f"{func}: ode must be one of {sorted(ODE_METHODS)}, got {ode!r}")
     opts = _creep_options(func, P, method, nx, ny, creep)
-    c_opts = _options(func, **opts)
+    c_opts = opts
     V = _real_arg(func, "roller_speed", roller_speed if roller_speed is not None
                   else S["roller_speed_m_s"], unit="m/s")
     if start not in ("rolling", "rest"):
@@ -691,9 +711,9 @@ def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, c
         # centred wheelset's rolling radii, as a rig is calibrated: the
         # profiles' nominal radii would bias the creepage by
         # (r - r0)/r0 + (R0 - R)/R0, about 0.2 % of creepage here
-        return table, _core.Rig(table.data, table.y0, table.dy, cp, c_opts,
-                                V / float(P["roller"]["radius_m"]) if start == "rolling"
-                                else 0.0)
+        return table, core(_core.Rig, table.data, table.y0, table.dy, cp, c_opts,
+                           V / float(P["roller"]["radius_m"]) if start == "rolling"
+                           else 0.0)
     given_V = None if roller_speed is None else V      # None: the scenario's own
     try:
         table, rig = make(P, given_V)

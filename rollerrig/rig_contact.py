@@ -33,7 +33,7 @@ import numpy as np
 
 from . import _core
 from ._errors import RollerRigError, status_message
-from .contact import _broadcast, _finish, _friction, _options
+from ._binding import _broadcast, _finish, _friction, check_creep_options, core, method_info
 from .geometry import ContactTable
 
 __all__ = ["RigPose", "WheelContact", "RigContact", "rig_contact", "LinearCreepages",
@@ -116,9 +116,7 @@ def _model(func, table, mu, E, nu, vmin, friction):
 
 def rig_contact(table, *, x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spin,
                 roller_spin, N_left, N_right, mu=0.4, friction=None, E=2.1e11, nu=0.28,
-                vmin=1e-3, method="fastsim", nx=20, ny=20, bound="parabolic", grid="rect",
-                slip_speed=None, k0=0.54, alpha_inf=0.02, beta=0.62, kA=1.0, kS=1.0,
-                kinematics_only=False, errors=None):
+                vmin=1e-3, method="fastsim", kinematics_only=False, errors=None, **options):
     """Contact of both wheels for wheelset states (numpy-broadcast arrays).
 
     table:     ContactTable of the rig's wheel/roller pair
@@ -130,21 +128,23 @@ def rig_contact(table, *, x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, s
     mu, friction: static friction coefficient; None (Coulomb) or a FallingFriction
     E, nu:     Young's modulus [Pa] and Poisson ratio of wheel and roller steel
     vmin:      least rolling speed for the creepages [m/s] (standstill)
-    method, nx, ny, ...: the creep-force method and its options, as for
-               creep_forces (default FASTSIM on a 20 x 20 grid)
+    method, **options: the creep-force method and its options, as for
+               creep_forces (rollerrig.METHODS); FASTSIM's grid defaults to
+               20 x 20 here
     kinematics_only: skip Hertz and the forces (their fields are NaN)
     Returns RigContact(pose, left, right, status); one wheel's error leaves
     the other's results valid (see each wheel's status).
     """
     func = "rig_contact"
     _check_table(func, table)
-    opts = _options(func, method, nx, ny, bound, grid, slip_speed, k0, alpha_inf, beta, kA,
-                    kS)
+    # the rig's grid, 20 x 20, where the method has one (the registry's default is 30 x 30)
+    grid = {k: 20 for k in ("nx", "ny") if k in method_info(func, method).options}
+    opts = check_creep_options(func, method, {**grid, **options})
     model = _model(func, table, mu, E, nu, vmin, friction)
     named = dict(x=x, y=y, yaw=yaw, vx=vx, vy=vy, yaw_rate=yaw_rate, spin=spin,
                  roller_spin=roller_spin, N_left=N_left, N_right=N_right)
     shape, scalar, full, flat = _broadcast(func, named)
-    status, pose, left, right, sl, sr = _core.rig_contact(
+    status, pose, left, right, sl, sr = core(_core.rig_contact,
         table.data, table.y0, table.dy, model, *flat, kinematics_only=bool(kinematics_only),
         **opts)
     if kinematics_only:

@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 import rollerrig as rr
+from _options import own
 from rollerrig import _core
 
 from _child import run_python, start_python
@@ -96,7 +97,7 @@ def test_every_frictional_method_keeps_the_friction_limit_at_extremes(method):
     cphi = rng.normal(0, 5.0, n)
     a = 10 ** rng.uniform(-4, -1, n)
     b = a * 10 ** rng.uniform(-1.5, 1.5, n)
-    f = rr.creep_forces(cx, cy, cphi, a=a, b=b, N=1e4, mu=0.4, method=method, nx=12, ny=12)
+    f = rr.creep_forces(cx, cy, cphi, a=a, b=b, N=1e4, mu=0.4, **own(method, nx=12, ny=12))
     assert np.all(f.status >= 0)
     assert np.all(np.hypot(f.fx, f.fy) <= 0.4e4 * (1 + 1e-12))
 
@@ -113,14 +114,17 @@ def test_incompressible_body_is_accepted():
 
 
 def test_binding_refuses_integers_outside_the_c_range():
-    """method = 2**32 + 1 was taken as FASTSIM (the C int wrapped to 1)."""
+    """method = 2**32 + 1 was taken as FASTSIM (the C int wrapped to 1).  The
+    binding now takes methods by name: a number is refused whatever it is."""
     args = [np.array([v]) for v in (1e-3, 0, 0, 6e-3, 6e-3, 1e4, 0.3, 8.2e10, 0.28, 0, 1, 0)]
-    with pytest.raises(ValueError, match="method must be an integer from 0 to"):
+    with pytest.raises(ValueError, match="method must be one of 'linear', .*got 4294967297"):
         _core.creep_forces(*args, method=2 ** 32 + 1)
     with pytest.raises(ValueError, match="nx must be an integer"):
-        _core.creep_forces(*args, method=1, nx=2 ** 40)
+        _core.creep_forces(*args, method="fastsim", nx=2 ** 40)
     with pytest.raises(ValueError, match="nx must be an integer"):
-        _core.creep_forces(*args, method=1, nx=True)
+        _core.creep_forces(*args, method="fastsim", nx=True)
+    with pytest.raises(ValueError, match=r"nx must be an integer in \[1, 4096\], got 4294967297"):
+        _core.creep_forces(*args, method="fastsim", nx=2 ** 32 + 1)
 
 
 # ------------------------------------------------------------------ the rig contact

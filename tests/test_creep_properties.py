@@ -5,6 +5,7 @@ import numpy as np
 import pytest
 
 import rollerrig as rr
+from _options import own
 
 FASTSIMS = ("fastsim", "fastsim_blended", "modified_fastsim")
 BOUNDS = ("parabolic", "elliptic")
@@ -39,7 +40,7 @@ def forces(case, **kw):
 @pytest.mark.parametrize("falling", [False, True], ids=["coulomb", "falling"])
 def test_force_bounded_by_mu_N(method, bound, grid, falling):
     case = random_cases(1)
-    kw = dict(method=method, bound=bound, grid=grid, nx=12, ny=10)
+    kw = own(method, bound=bound, grid=grid, nx=12, ny=10)
     if falling:                               # mu(w) <= mu0: the bound still holds
         kw.update(friction=rr.FallingFriction(0.4, 0.6), speed=20.0)
     f = forces(case, **kw)
@@ -71,7 +72,7 @@ def test_full_sliding_gives_mu_N(method, bound, grid):
              / np.hypot(case["cx"], case["cy"]))
     case["cx"] = case["cx"] * scale
     case["cy"] = case["cy"] * scale
-    f = forces(case, method=method, bound=bound, grid=grid, nx=nx, ny=ny)
+    f = forces(case, **own(method, bound=bound, grid=grid, nx=nx, ny=ny))
     # every element slides in the same direction at mu p, the pressure sums to N on the
     # grid: |F| = mu N up to rounding, 1e-12 relative
     np.testing.assert_allclose(np.hypot(f.fx, f.fy), case["mu"] * case["N"], rtol=1e-12)
@@ -91,8 +92,8 @@ def test_odd_symmetry(method, grid):
     for kw in ({}, dict(friction=rr.FallingFriction(0.4, 0.6), speed=15.0)):
         if method == "linear" and kw:
             continue
-        f1 = forces(case, method=method, grid=grid, nx=9, ny=8, **kw)
-        f2 = forces(neg, method=method, grid=grid, nx=9, ny=8, **kw)
+        f1 = forces(case, **own(method, grid=grid, nx=9, ny=8, **kw))
+        f2 = forces(neg, **own(method, grid=grid, nx=9, ny=8, **kw))
         np.testing.assert_array_equal(f2.fx, -f1.fx)
         np.testing.assert_array_equal(f2.fy, -f1.fy)
         np.testing.assert_array_equal(f2.mz, -f1.mz)
@@ -105,8 +106,8 @@ def test_lateral_mirror_symmetry(method, grid):
     are mirrored exactly but summed in the other order: 1e-12 of mu N (mu N a for mz)."""
     case = random_cases(5, n=200)
     mir = dict(case, cy=-case["cy"], cphi=-case["cphi"])
-    f1 = forces(case, method=method, grid=grid, nx=10, ny=9)
-    f2 = forces(mir, method=method, grid=grid, nx=10, ny=9)
+    f1 = forces(case, **own(method, grid=grid, nx=10, ny=9))
+    f2 = forces(mir, **own(method, grid=grid, nx=10, ny=9))
     s = case["mu"] * case["N"]
     np.testing.assert_allclose(f2.fx / s, f1.fx / s, rtol=0, atol=1e-12)
     np.testing.assert_allclose(f2.fy / s, -f1.fy / s, rtol=0, atol=1e-12)
@@ -208,8 +209,8 @@ def test_falling_friction_peaks_then_falls_to_kinetic(method, slip_speed):
     a, b, N, mu0 = 5e-3, 4e-3, 1e4, 0.4
     fr = rr.FallingFriction(A=0.4, B=0.6)
     cx = np.geomspace(1e-5, 20.0, 80)
-    f = rr.creep_forces(cx, a=a, b=b, N=N, mu=mu0, G=G, nu=NU, method=method, nx=20, ny=20,
-                        speed=10.0, friction=fr, slip_speed=slip_speed, errors="raise")
+    f = rr.creep_forces(cx, a=a, b=b, N=N, mu=mu0, G=G, nu=NU, speed=10.0, friction=fr,
+                        errors="raise", **own(method, nx=20, ny=20, slip_speed=slip_speed))
     F = np.abs(f.fx) / (mu0 * N)
     i = int(np.argmax(F))
     assert 0 < i < cx.size - 1, "the peak must lie inside the creepage range"

@@ -17,6 +17,7 @@ from hypothesis import assume, example, given, strategies as st
 from hypothesis.extra import numpy as hnp
 
 import rollerrig as rr
+from _options import own
 from rollerrig import RollerRigError, _core
 from _properties import (BAD_TYPES, FASTSIMS, FRICTIONAL, METHODS, _units,
                          assert_batch_consistent, assert_finite, creep_options,
@@ -191,7 +192,7 @@ def test_poisson_ratio_up_to_one_half_accepted(nu, aob):
     assert rr.hertz(1.0, aob, 1e4, nu=nu).status >= 0
     for method in METHODS:
         f = rr.creep_forces(1e-3, 2e-4, 0.1, a=5e-3, b=5e-3 / aob, N=1e4, mu=0.3, nu=nu,
-                            method=method, nx=8, ny=8)
+                            **own(method, nx=8, ny=8))
         assert f.status >= 0 and np.isfinite(f.fx)
 
 
@@ -463,13 +464,15 @@ def test_binding_option_integers_never_wrap(option, value):
     """The binding takes an option integer as it is: a value outside the
     option's range is an error (ValueError, or a negative status), never
     wrapped round into a valid one."""
-    valid = {"method": range(5), "bound": range(2), "grid": range(2), "slip_speed": range(2),
+    # the binding takes a method and the choices by name: any integer is
+    # refused for those, and for nx, ny any integer outside [1, 4096]
+    valid = {"method": (), "bound": (), "grid": (), "slip_speed": (),
              "nx": range(1, 4097), "ny": range(1, 4097)}[option]
     assume(value not in valid)
     arrays = [np.array([v]) for v in (1e-3, 2e-4, 0.1, 5e-3, 4e-3, 1e4, 0.3, 8.2e10, 0.28,
                                       5.0, 0.4, 0.6)]
     # the grid options are FASTSIM's: the other methods do not read them
-    kw = {option: value} if option == "method" else {"method": 1, option: value}
+    kw = {option: value} if option == "method" else {"method": "fastsim", option: value}
     try:
         fx, fy, mz, status = _core.creep_forces(*arrays, **kw)
     except ValueError as e:

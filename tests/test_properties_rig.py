@@ -17,6 +17,7 @@ import pytest
 from hypothesis import example, given, strategies as st
 
 import rollerrig as rr
+from _options import own
 from rollerrig import RollerRigError, RollerRigWarning
 from rollerrig.rig import RECORD_FIELDS
 from _properties import (BAD_TYPES, FRICTIONAL, METHODS, _units, assert_batch_consistent,
@@ -145,13 +146,13 @@ def test_rig_contact_free_rolling_has_no_creepage(table, y, spin, side, method):
     to 5e-6 of creepage near S1002's flange root), so it cannot serve."""
     t = TABLES[table]
     first = rr.rig_contact(t, y=y, spin=spin, roller_spin=spin, N_left=1e3, N_right=1e3,
-                           method=method, nx=10, ny=10)
+                           **own(method, nx=10, ny=10))
     p, c, roll = getattr(first, side).p, first.pose.c, float(first.pose.roll)
     # x-velocities at p: wheel spin (axle x (p - c))_x, roller roller_spin (p_z + R0)
     r_eff = math.sin(roll) * (p[1] - c[1]) - math.cos(roll) * (p[2] - c[2])
     R_eff = p[2] + float(t.geometry.roller_radius)
     c = rr.rig_contact(t, y=y, spin=spin, roller_spin=spin * r_eff / R_eff, N_left=1e3,
-                       N_right=1e3, method=method, nx=10, ny=10)
+                       N_right=1e3, **own(method, nx=10, ny=10))
     w = getattr(c, side)
     assert abs(w.cx) <= 1e-12 and abs(w.cy) <= 1e-12, (w.cx, w.cy)
     assert abs(w.fx) <= 1e-9 * 0.4 * 1e3, w.fx

@@ -1,4 +1,5 @@
-/* rr_fastsim.c - FASTSIM (Kalker 1982) with blended and modified variants. */
+/* rr_fastsim.c - FASTSIM (Kalker 1982) with blended and modified variants, and
+ * their three descriptors (one algorithm). */
 #include <float.h>
 #include <math.h>
 #include "util/rr_common.h"
@@ -42,8 +43,9 @@ static void flexibilities(const rr_contact_case *c, const rr_friction *fr, int m
         if (fabs(nphi) < fabs(c->cy))
             nphi = c->cy;
         mu = rr_friction_mu(fr, c->speed * hypot(c->cx, c->cy));
-        eps = RR_PI * G * a * b * o->k0 * k->c11 * hypot(c->cx, nphi) / (4.0 * mu * c->N);
-        kf = o->k0 * (o->alpha_inf + (1.0 - o->alpha_inf) / (1.0 + o->beta * eps));
+        const double k0 = o->v[RR_FASTSIM_K0], alpha_inf = o->v[RR_FASTSIM_ALPHA_INF];
+        eps = RR_PI * G * a * b * k0 * k->c11 * hypot(c->cx, nphi) / (4.0 * mu * c->N);
+        kf = k0 * (alpha_inf + (1.0 - alpha_inf) / (1.0 + o->v[RR_FASTSIM_BETA] * eps));
         fl->L1 /= kf;
         fl->L2 /= kf;
         fl->L3 /= kf;
@@ -428,7 +430,7 @@ static void group_march(const march *m, const group *g, int local, rr_fastsim_fi
 
 /* The field as if no element lay inside: positions, zero pressure and
  * traction; the march overwrites the inside. */
-static void field_fill(const march *m, rr_fastsim_field *f)
+static void field_fill(const march *m, double dy, rr_fastsim_field *f)
 {
     int j, i, k;
     for (j = 0; j < m->ny; j += k) {
@@ -441,6 +443,7 @@ static void field_fill(const march *m, rr_fastsim_field *f)
                 elem_q(m, &g, k, i, &x);
                 if (f->x) f->x[idx] = x;
                 if (f->y) f->y[idx] = g.y[k];
+                if (f->area) f->area[idx] = g.h[k] * dy;
                 if (f->pn) f->pn[idx] = 0.0;
                 if (f->px) f->px[idx] = 0.0;
                 if (f->py) f->py[idx] = 0.0;
@@ -450,18 +453,31 @@ static void field_fill(const march *m, rr_fastsim_field *f)
     }
 }
 
+/* The grid of valid options (1), or 0 where nx or ny is not a grid size. */
+static int grid_of(const rr_creep_opts *o, int *nx, int *ny)
+{
+    const double x = o->v[RR_FASTSIM_NX], y = o->v[RR_FASTSIM_NY];
+    if (!(x >= 1.0 && x <= RR_FASTSIM_MAX_GRID && x == floor(x) && y >= 1.0
+          && y <= RR_FASTSIM_MAX_GRID && y == floor(y)))
+        return 0;
+    *nx = (int)x;
+    *ny = (int)y;
+    return 1;
+}
+
 /* The error path: NaN forces and, where its size is known, a NaN field. */
 static int fail(int st, const rr_creep_opts *o, rr_forces *out, rr_fastsim_field *f)
 {
+    int nx = 0, ny = 0;
     if (out)
         rr_forces_nan(out);
-    if (f && o && o->nx >= 1 && o->ny >= 1 && o->nx <= RR_FASTSIM_MAX_GRID
-        && o->ny <= RR_FASTSIM_MAX_GRID) {
-        const long n = (long)o->nx * o->ny;
+    if (f && o && grid_of(o, &nx, &ny)) {
+        const long n = (long)nx * ny;
         long i;
         for (i = 0; i < n; i++) {
             if (f->x) f->x[i] = NAN;
             if (f->y) f->y[i] = NAN;
+            if (f->area) f->area[i] = NAN;
             if (f->pn) f->pn[i] = NAN;
             if (f->px) f->px[i] = NAN;
             if (f->py) f->py[i] = NAN;
@@ -472,34 +488,34 @@ static int fail(int st, const rr_creep_opts *o, rr_forces *out, rr_fastsim_field
     return st;
 }
 
+static const rr_method_desc *variant(int method);
+
 int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_opts *o,
                rr_forces *out, rr_fastsim_field *field)
 {
+    const rr_method_desc *d;
     rr_kalker_coeffs k;
     flex fl;
     march m;
     group cache[GROUP_CACHE], tmp, *g;    /* the groups of the first rows, set up once */
-    int nx, ny;
+    int nx = 0, ny = 0;
     double dy, S = 0.0, fx = 0.0, fy = 0.0, mz = 0.0;
     int st, j, n, falling, local, converged = 1, nslip = 0;
 
     if (!c || !fr || !o || !out)
         return fail(RR_ERR_NULL, o, out, field);
-    st = rr_creep_opts_check(o);
-    if (st == RR_OK && o->method != RR_METHOD_FASTSIM && o->method != RR_METHOD_FASTSIM_BLENDED
-        && o->method != RR_METHOD_MODIFIED_FASTSIM)
-        st = RR_ERR_METHOD;
+    d = variant(o->method);
+    st = d ? rr_method_check(d, o, NULL) : RR_ERR_METHOD;
     if (st == RR_OK)
         st = rr_creep_prepare(c, fr, &k);
     if (st < 0)
         return fail(st, o, out, field);
-    nx = o->nx;
-    ny = o->ny;
+    grid_of(o, &nx, &ny);
     flexibilities(c, fr, o->method, o, &k, &fl);
     falling = rr_friction_is_falling(fr);
     /* local: mu from each element's own slip speed; rigid: one mu at the
      * rigid slip speed |(cx, cy)| speed for the whole patch. */
-    local = falling && o->slip_speed == RR_SLIP_LOCAL;
+    local = falling && o->v[RR_FASTSIM_SLIP_SPEED] == RR_SLIP_LOCAL;
 
     m.c = c;
     m.fl = &fl;
@@ -512,8 +528,8 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
     m.h_rect = 2.0 * c->a / nx;
     m.nx = nx;
     m.ny = ny;
-    m.strips = o->grid == RR_GRID_STRIPS;
-    m.parabolic = o->bound == RR_BOUND_PARABOLIC;
+    m.strips = o->v[RR_FASTSIM_GRID] == RR_GRID_STRIPS;
+    m.parabolic = o->v[RR_FASTSIM_BOUND] == RR_BOUND_PARABOLIC;
     m.lanes = fastsim_lanes();
 
     /* Rows j at y_j = -b + (j + 1/2) dy.  RR_GRID_RECT: every row spans the
@@ -537,7 +553,7 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
         return fail(RR_ERR_RANGE, o, out, field);
 
     if (field)
-        field_fill(&m, field);
+        field_fill(&m, dy, field);
     for (j = 0, n = 0; j < ny; j += g->nr, n++) {
         sums s;
         int r;
@@ -569,4 +585,102 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
     if (!converged && st == RR_OK)
         st = RR_WARN_NOT_CONVERGED;
     return st;
+}
+
+/* ---- the descriptors ---------------------------------------------------- */
+
+static const char *const bound_names[] = {"parabolic", "elliptic", NULL};
+static const char *const grid_names[] = {"rect", "strips", NULL};
+static const char *const slip_names[] = {"local", "rigid", NULL};
+
+/* the options every variant has, then modified FASTSIM's; slip_speed's
+ * default is set per variant */
+#define FASTSIM_OPTS(slip_default)                                                          \
+    {"nx", RR_OPT_INT, "", 30.0, 1.0, RR_FASTSIM_MAX_GRID, 0, 0, NULL, RR_ERR_GRID,         \
+     "elements along x per row"},                                                           \
+    {"ny", RR_OPT_INT, "", 30.0, 1.0, RR_FASTSIM_MAX_GRID, 0, 0, NULL, RR_ERR_GRID,         \
+     "rows (strips) across the patch"},                                                     \
+    {"bound", RR_OPT_CHOICE, "", RR_BOUND_PARABOLIC, 0.0, 1.0, 0, 0, bound_names,           \
+     RR_ERR_METHOD, "traction bound: parabolic (Kalker's) or elliptic (Hertzian)"},         \
+    {"grid", RR_OPT_CHOICE, "", RR_GRID_RECT, 0.0, 1.0, 0, 0, grid_names, RR_ERR_METHOD,    \
+     "rows over the ellipse's bounding box (rect, CONTACT's) or each its own chord "        \
+     "(strips, Kalker's: converges faster)"},                                               \
+    {"slip_speed", RR_OPT_CHOICE, "", slip_default, 0.0, 1.0, 0, 0, slip_names,             \
+     RR_ERR_METHOD, "falling friction at each element's own slip speed (local) or at the "  \
+     "rigid slip speed (rigid)"}
+
+static const rr_creep_option fastsim_opts[] = {FASTSIM_OPTS(RR_SLIP_LOCAL)};
+
+/* modified FASTSIM was calibrated with friction at the rigid slip speed */
+static const rr_creep_option modified_opts[] = {
+    FASTSIM_OPTS(RR_SLIP_RIGID),
+    {"k0", RR_OPT_REAL, "", 0.54, 0.0, 1.0, 1, 0, NULL, RR_ERR_PARAM,
+     "initial slope over Kalker's"},
+    {"alpha_inf", RR_OPT_REAL, "", 0.02, 0.0, 1.0, 0, 0, NULL, RR_ERR_PARAM,
+     "slope reduction at large creepage"},
+    {"beta", RR_OPT_REAL, "", 0.62, 0.0, HUGE_VAL, 0, 1, NULL, RR_ERR_PARAM,
+     "rate of the slope reduction with the creepage"},
+};
+
+static double fastsim_cost(const rr_creep_opts *o)
+{
+    return o->v[RR_FASTSIM_NX] * o->v[RR_FASTSIM_NY];
+}
+
+/* modified FASTSIM's small-creepage slope: k0 times the plain one's */
+static double modified_slope(const rr_creep_opts *o)
+{
+    return o->v[RR_FASTSIM_K0];
+}
+
+static int fastsim_forces(const rr_contact_case *c, const rr_friction *fr,
+                          const rr_creep_opts *o, double *work, rr_forces *out)
+{
+    (void)work;
+    return rr_fastsim(c, fr, o, out, NULL);
+}
+
+static void fastsim_shape(const rr_creep_opts *o, int *rows, int *cols)
+{
+    *rows = (int)o->v[RR_FASTSIM_NY];
+    *cols = (int)o->v[RR_FASTSIM_NX];
+}
+
+#define FASTSIM_ENTRIES                                                          \
+    fastsim_cost, rr_method_unit_slope, rr_method_no_workspace, fastsim_forces, \
+        fastsim_shape, rr_fastsim
+
+const rr_method_desc rr_method_fastsim = {
+    "fastsim", "FASTSIM, Kalker 1982: three flexibilities", 5, fastsim_opts, 1, NULL, NULL,
+    FASTSIM_ENTRIES
+};
+
+const rr_method_desc rr_method_fastsim_blended = {
+    "fastsim_blended",
+    "FASTSIM with flexibilities blended from three to one as the creepage grows "
+    "(Vollebregt and Voltr 2023)",
+    5, fastsim_opts, 1, NULL, NULL, FASTSIM_ENTRIES
+};
+
+const rr_method_desc rr_method_modified_fastsim = {
+    "modified_fastsim",
+    "modified FASTSIM (Spiryagin, Polach and Cole 2013): the slope reduced with the creepage",
+    8, modified_opts, 1, NULL, NULL,
+    fastsim_cost, modified_slope, rr_method_no_workspace, fastsim_forces, fastsim_shape,
+    rr_fastsim
+};
+
+/* The descriptor of a FASTSIM variant's number, else NULL. */
+static const rr_method_desc *variant(int method)
+{
+    switch (method) {
+    case RR_METHOD_FASTSIM:
+        return &rr_method_fastsim;
+    case RR_METHOD_FASTSIM_BLENDED:
+        return &rr_method_fastsim_blended;
+    case RR_METHOD_MODIFIED_FASTSIM:
+        return &rr_method_modified_fastsim;
+    default:
+        return NULL;
+    }
 }

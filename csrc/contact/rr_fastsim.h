@@ -39,32 +39,60 @@
 #ifndef RR_FASTSIM_H
 #define RR_FASTSIM_H
 
-#include "contact/rr_creep.h"
+#include "contact/rr_creep_opts.h"
 
-/*
- * Optional traction field of one FASTSIM evaluation: every pointer either
- * NULL (not wanted) or an array of nx * ny elements.  Element (i, j) is
- * stored at j * nx + i, rows j along y, i along increasing x; elements
- * outside the ellipse have zero pressure and traction.
- */
-typedef struct {
-    double *x, *y;        /* element centre [m] */
-    double *pn;           /* pressure [Pa] */
-    double *px, *py;      /* tangential traction on the wheel [Pa] */
-    signed char *slip;    /* 1 slip, 0 adhesion */
-    int nslip;            /* output: number of slipping elements */
-} rr_fastsim_field;
+/* The FASTSIM variants' options in rr_creep_opts.v (descriptors
+ * rr_method_fastsim, rr_method_fastsim_blended: the first five;
+ * rr_method_modified_fastsim: all eight). */
+enum {
+    RR_FASTSIM_NX = 0,          /* elements along x per row, 1 .. RR_FASTSIM_MAX_GRID */
+    RR_FASTSIM_NY = 1,          /* rows (strips), 1 .. RR_FASTSIM_MAX_GRID */
+    RR_FASTSIM_BOUND = 2,       /* enum rr_bound */
+    RR_FASTSIM_GRID = 3,        /* enum rr_grid */
+    RR_FASTSIM_SLIP_SPEED = 4,  /* falling friction: enum rr_slip_speed */
+    RR_FASTSIM_K0 = 5,          /* modified: flexibility divided by */
+    RR_FASTSIM_ALPHA_INF = 6,   /*   k0 (alpha_inf + (1 - alpha_inf)/(1 + beta eps)) */
+    RR_FASTSIM_BETA = 7
+};
+
+enum rr_bound {
+    RR_BOUND_PARABOLIC = 0,  /* Kalker's original: p ~ 1 - x^2/a^2 - y^2/b^2 */
+    RR_BOUND_ELLIPTIC = 1    /* Hertzian: p ~ sqrt(1 - x^2/a^2 - y^2/b^2) */
+};
+
+enum rr_grid {
+    RR_GRID_RECT = 0,    /* nx x ny elements on the ellipse's bounding box; those
+                            outside the ellipse are empty (CONTACT's grid) */
+    RR_GRID_STRIPS = 1   /* ny strips, each cut into nx elements along its own
+                            chord (Kalker's strips; converges faster) */
+};
+
+enum rr_slip_speed {
+    RR_SLIP_LOCAL = 0,  /* falling friction at each element's own slip speed */
+    RR_SLIP_RIGID = 1   /* one friction value at the rigid slip speed
+                           |(cx, cy)| speed (Spiryagin et al. 2013, CONTACT) */
+};
+
+/* Largest FASTSIM grid dimension accepted (elements along x or strips). */
+#define RR_FASTSIM_MAX_GRID 4096
+
+/* The traction field: nx * ny elements (rr_creep_opts.h). */
+typedef rr_traction_field rr_fastsim_field;
 
 /*
  * rr_fastsim - creep forces by FASTSIM.
  *   given:   c   the contact case; fr the friction law; o the options with
  *                o->method one of RR_METHOD_FASTSIM, RR_METHOD_FASTSIM_BLENDED,
- *                RR_METHOD_MODIFIED_FASTSIM
+ *                RR_METHOD_MODIFIED_FASTSIM (the defaults: 30 x 30, RR_GRID_RECT,
+ *                RR_BOUND_PARABOLIC, RR_SLIP_LOCAL but RR_SLIP_RIGID for modified
+ *                FASTSIM, whose slope reduction was calibrated so; k0 = 0.54,
+ *                alpha_inf = 0.02, beta = 0.62 after CONTACT's user guide and
+ *                Spiryagin et al. 2013)
  *            field  NULL, or buffers for the traction field
  *   returns: *out (and *field)
  *   status:  0 OK; RR_WARN_NOT_CONVERGED (falling-friction iteration hit
  *            its cap in some element; results usable); errors as
- *            rr_contact_check, rr_friction_check, rr_creep_opts_check,
+ *            rr_contact_check, rr_friction_check, rr_method_check,
  *            RR_ERR_METHOD (not a FASTSIM method), RR_ERR_SPEED (falling
  *            friction with speed 0), RR_ERR_RANGE (the bound mu p outside
  *            [1e-80, 1e100] Pa, a rigid-slip increment over 1e150 Pa per

@@ -39,31 +39,40 @@ static int friction_invalid(const rr_friction *f)
         || f->mu0 > RR_FRICTION_MAX || f->B > RR_FRICTION_MAX;
 }
 
+/* the methods with a traction field: FASTSIM's variants, as the registry says */
 static int is_fastsim(int m)
 {
-    return m == RR_METHOD_FASTSIM || m == RR_METHOD_FASTSIM_BLENDED
-        || m == RR_METHOD_MODIFIED_FASTSIM;
+    const rr_method_desc *d = rr_method_get(m);
+    return d && d->field;
 }
 
-/* The fields the method uses, against rr_creep_opts_check's documentation. */
+/* not an integer in [lo, hi] (NaN included) */
+static int bad_int(double v, double lo, double hi)
+{
+    return !(v >= lo && v <= hi && v == floor(v));
+}
+
+/* The options the method has, against rr_creep_opts_check's documentation. */
 static int opts_invalid(const rr_creep_opts *o)
 {
+    const double *v = o->v;
     if (o->method < 0 || o->method >= RR_METHOD_COUNT)
         return 1;
     if (is_fastsim(o->method)
-        && ((o->bound != RR_BOUND_PARABOLIC && o->bound != RR_BOUND_ELLIPTIC)
-            || (o->grid != RR_GRID_RECT && o->grid != RR_GRID_STRIPS)
-            || (o->slip_speed != RR_SLIP_LOCAL && o->slip_speed != RR_SLIP_RIGID)
-            || o->nx < 1 || o->ny < 1 || o->nx > RR_FASTSIM_MAX_GRID
-            || o->ny > RR_FASTSIM_MAX_GRID))
+        && (bad_int(v[RR_FASTSIM_BOUND], 0, 1) || bad_int(v[RR_FASTSIM_GRID], 0, 1)
+            || bad_int(v[RR_FASTSIM_SLIP_SPEED], 0, 1)
+            || bad_int(v[RR_FASTSIM_NX], 1, RR_FASTSIM_MAX_GRID)
+            || bad_int(v[RR_FASTSIM_NY], 1, RR_FASTSIM_MAX_GRID)))
         return 1;
     if (o->method == RR_METHOD_MODIFIED_FASTSIM
-        && !(isfinite(o->k0) && isfinite(o->alpha_inf) && isfinite(o->beta) && o->k0 > 0.0
-             && o->k0 <= 1.0 && o->alpha_inf >= 0.0 && o->alpha_inf <= 1.0 && o->beta >= 0.0))
+        && !(isfinite(v[RR_FASTSIM_K0]) && isfinite(v[RR_FASTSIM_ALPHA_INF])
+             && isfinite(v[RR_FASTSIM_BETA]) && v[RR_FASTSIM_K0] > 0.0 && v[RR_FASTSIM_K0] <= 1.0
+             && v[RR_FASTSIM_ALPHA_INF] >= 0.0 && v[RR_FASTSIM_ALPHA_INF] <= 1.0
+             && v[RR_FASTSIM_BETA] >= 0.0))
         return 1;
     if (o->method == RR_METHOD_POLACH
-        && !(isfinite(o->kA) && isfinite(o->kS) && o->kS > 0.0 && o->kS <= o->kA
-             && o->kA <= 1.0))
+        && !(isfinite(v[RR_POLACH_KA]) && isfinite(v[RR_POLACH_KS]) && v[RR_POLACH_KS] > 0.0
+             && v[RR_POLACH_KS] <= v[RR_POLACH_KA] && v[RR_POLACH_KA] <= 1.0))
         return 1;
     return 0;
 }
@@ -101,25 +110,36 @@ static int decode_dim(fz_in *in)
     return big ? fz_range(in, 1, RR_FASTSIM_MAX_GRID + 1) : small;
 }
 
+/* A method's defaults, or (half the time) every option of the method drawn,
+ * valid or not: grids outside [1, 4096] or not integers, k0 or kS out of
+ * range; the method itself may be unknown. */
 static void decode_opts(fz_in *in, rr_creep_opts *o)
 {
-    rr_creep_opts_default(fz_range(in, 0, RR_METHOD_COUNT - 1), o);
+    double *v = o->v;
+    rr_creep_opts_default(o, fz_range(in, 0, RR_METHOD_COUNT - 1));
     if (fz_choice(in, 2) == 0)
         return;             /* the defaults of a method */
-    o->method = fz_int(in, 0, RR_METHOD_COUNT - 1);
-    o->nx = decode_dim(in);
-    o->ny = decode_dim(in);
-    if (o->nx >= 1 && o->ny >= 1 && o->nx <= RR_FASTSIM_MAX_GRID && o->ny <= RR_FASTSIM_MAX_GRID
-        && (long)o->nx * o->ny > MAX_ELEMENTS)
-        o->ny = MAX_ELEMENTS / o->nx;
-    o->bound = fz_int(in, 0, 1);
-    o->grid = fz_int(in, 0, 1);
-    o->slip_speed = fz_int(in, 0, 1);
-    o->k0 = fz_lin(in, 0.01, 1.0);
-    o->alpha_inf = fz_lin(in, 0.0, 1.0);
-    o->beta = fz_lin(in, 0.0, 5.0);
-    o->kA = fz_lin(in, 0.01, 1.0);
-    o->kS = o->kA * fz_lin(in, 0.01, 1.0);
+    rr_creep_opts_default(o, fz_int(in, 0, RR_METHOD_COUNT - 1));
+    if (is_fastsim(o->method) || o->method < 0 || o->method >= RR_METHOD_COUNT) {
+        v[RR_FASTSIM_NX] = decode_dim(in);
+        v[RR_FASTSIM_NY] = decode_dim(in);
+        if (v[RR_FASTSIM_NX] >= 1 && v[RR_FASTSIM_NY] >= 1
+            && v[RR_FASTSIM_NX] <= RR_FASTSIM_MAX_GRID && v[RR_FASTSIM_NY] <= RR_FASTSIM_MAX_GRID
+            && v[RR_FASTSIM_NX] * v[RR_FASTSIM_NY] > MAX_ELEMENTS)
+            v[RR_FASTSIM_NY] = floor(MAX_ELEMENTS / v[RR_FASTSIM_NX]);
+        if (fz_choice(in, 16) == 0)
+            v[RR_FASTSIM_NX] += 0.5;            /* not an integer */
+        v[RR_FASTSIM_BOUND] = fz_int(in, 0, 1);
+        v[RR_FASTSIM_GRID] = fz_int(in, 0, 1);
+        v[RR_FASTSIM_SLIP_SPEED] = fz_int(in, 0, 1);
+        /* modified FASTSIM's (the other variants do not look at them) */
+        v[RR_FASTSIM_K0] = fz_lin(in, 0.01, 1.0);
+        v[RR_FASTSIM_ALPHA_INF] = fz_lin(in, 0.0, 1.0);
+        v[RR_FASTSIM_BETA] = fz_lin(in, 0.0, 5.0);
+    } else if (o->method == RR_METHOD_POLACH) {
+        v[RR_POLACH_KA] = fz_lin(in, 0.01, 1.0);
+        v[RR_POLACH_KS] = v[RR_POLACH_KA] * fz_lin(in, 0.01, 1.0);
+    }
 }
 
 static int in_range(double v, double lo, double hi)
@@ -180,8 +200,8 @@ static void check_field(int st, const rr_contact_case *c, const rr_friction *fr,
                         const rr_creep_opts *o, const rr_forces *f, const rr_fastsim_field *fl)
 {
     const char *fn = "rr_fastsim (field)";
-    const int n = o->nx * o->ny;
-    const double area = (2.0 * c->a / o->nx) * (2.0 * c->b / o->ny);
+    const int n = (int)(o->v[RR_FASTSIM_NX] * o->v[RR_FASTSIM_NY]);
+    const double area = (2.0 * c->a / o->v[RR_FASTSIM_NX]) * (2.0 * c->b / o->v[RR_FASTSIM_NY]);
     double sum_p = 0.0, sum_x = 0.0, sum_y = 0.0, scale;
     int i, nslip = 0;
 
@@ -219,7 +239,7 @@ static void check_field(int st, const rr_contact_case *c, const rr_friction *fr,
     }
     if (fl->slip && nslip != fl->nslip)
         fz_fail("%s: nslip = %d but %d elements flagged", fn, fl->nslip, nslip);
-    if (o->grid != RR_GRID_RECT || !isfinite(area))
+    if (o->v[RR_FASTSIM_GRID] != RR_GRID_RECT || !isfinite(area))
         return;
     if (fl->pn && isfinite(sum_p * area) && !(fabs(sum_p * area - c->N) <= 1e-9 * c->N))
         fz_fail("%s: pressure sums to %.17g, not N = %.17g", fn, sum_p * area, c->N);
@@ -234,15 +254,19 @@ static void run_fastsim(fz_in *in, const rr_contact_case *c, const rr_friction *
                         rr_creep_opts *o)
 {
     const int mode = fz_choice(in, 3), mask = (int)fz_u8(in);
-    const int grid_ok = o->nx >= 1 && o->ny >= 1 && o->nx <= RR_FASTSIM_MAX_GRID
-                        && o->ny <= RR_FASTSIM_MAX_GRID;
-    const size_t n = grid_ok ? (size_t)o->nx * (size_t)o->ny : 0;
+    const int grid_ok = !bad_int(o->v[RR_FASTSIM_NX], 1, RR_FASTSIM_MAX_GRID)
+                        && !bad_int(o->v[RR_FASTSIM_NY], 1, RR_FASTSIM_MAX_GRID);
+    const size_t n = grid_ok ? (size_t)o->v[RR_FASTSIM_NX] * (size_t)o->v[RR_FASTSIM_NY] : 0;
     rr_fastsim_field fl;
     rr_forces f, f2;
     int st, st2, invalid;
 
-    if (fz_choice(in, 2))   /* mostly a FASTSIM method: the others must be refused */
+    if (fz_choice(in, 2)) {   /* mostly a FASTSIM method: the others must be refused */
+        const int from = o->method;
         o->method = RR_METHOD_FASTSIM + fz_choice(in, 3);
+        if (!is_fastsim(from))
+            rr_creep_opts_default(o, o->method);    /* the others' values mean other options */
+    }
     fz_note("; rr_fastsim method %d, field mode %d mask %d", o->method, mode, mask);
     invalid = contact_invalid(c) || friction_invalid(fr) || opts_invalid(o) || !is_fastsim(o->method)
               || (falling(fr) && !(c->speed > 0.0));
@@ -323,7 +347,7 @@ static void run_shared(fz_in *in, const rr_contact_case *c, const rr_friction *f
         rr_creep_opts d;
         int m;
         for (m = 0; m < RR_METHOD_COUNT; m++) {
-            rr_creep_opts_default(m, &d);
+            rr_creep_opts_default(&d, m);
             if ((st = rr_creep_opts_check(&d)) != RR_OK)
                 fz_fail("rr_creep_opts_check: status %d for method %d's defaults", st, m);
         }
@@ -345,10 +369,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     decode_opts(&in, &o);
     fz_note("op %d; case a = %.17g, b = %.17g, N = %.17g, G = %.17g, nu = %.17g, cx = %.17g, "
             "cy = %.17g, cphi = %.17g, speed = %.17g; friction mu0 = %.17g, A = %.17g, B = %.17g; "
-            "opts method %d, nx %d, ny %d, bound %d, grid %d, slip_speed %d, k0 = %.17g, "
-            "alpha_inf = %.17g, beta = %.17g, kA = %.17g, kS = %.17g", op, c.a, c.b, c.N, c.G,
-            c.nu, c.cx, c.cy, c.cphi, c.speed, fr.mu0, fr.A, fr.B, o.method, o.nx, o.ny, o.bound,
-            o.grid, o.slip_speed, o.k0, o.alpha_inf, o.beta, o.kA, o.kS);
+            "opts method %d, v = %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g", op, c.a, c.b,
+            c.N, c.G, c.nu, c.cx, c.cy, c.cphi, c.speed, fr.mu0, fr.A, fr.B, o.method, o.v[0],
+            o.v[1], o.v[2], o.v[3], o.v[4], o.v[5], o.v[6], o.v[7]);
     switch (op) {
     case 0: {
         const int invalid = opts_invalid(&o) || contact_invalid(&c)
@@ -381,9 +404,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     case 2: {
         const int invalid = contact_invalid(&c) || friction_invalid(&fr)
                             || (falling(&fr) && !(c.speed > 0.0))
-                            || !(isfinite(o.kA) && isfinite(o.kS) && o.kS > 0.0
-                                 && o.kS <= o.kA && o.kA <= 1.0);
-        st = rr_polach(&c, &fr, o.kA, o.kS, &f);
+                            || !(isfinite(o.v[RR_POLACH_KA]) && isfinite(o.v[RR_POLACH_KS]) && o.v[RR_POLACH_KS] > 0.0
+                                 && o.v[RR_POLACH_KS] <= o.v[RR_POLACH_KA] && o.v[RR_POLACH_KA] <= 1.0);
+        st = rr_polach(&c, &fr, o.v[RR_POLACH_KA], o.v[RR_POLACH_KS], &f);
         if (st >= 0 && (fz_known("extreme", known_extreme(&c, &fr))
                         || fz_known("polach", known_polach(&c))))
             break;

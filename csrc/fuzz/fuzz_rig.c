@@ -39,8 +39,7 @@ static const double_field double_fields[] = {
     DF(preload, 10.0), DF(g, 3.0), DF(roller_inertia, 10.0), DF(contact.R0, 1.5),
     DF(contact.estar, 100.0), DF(contact.G, 100.0), DF(contact.nu, 1.7),
     DF(contact.friction.mu0, 2.5), DF(contact.friction.A, 2.5), DF(contact.friction.B, 10.0),
-    DF(contact.creep.k0, 1.5), DF(contact.creep.alpha_inf, 10.0), DF(contact.creep.beta, 10.0),
-    DF(contact.creep.kA, 1.5), DF(contact.creep.kS, 3.0), DF(contact.vmin, 100.0), DF(T, 10.0),
+    DF(contact.vmin, 100.0), DF(T, 10.0),
     DF(roller_pi.T, 2.0), DF(roller_pi.Kp, 10.0), DF(roller_pi.KI, 10.0),
     DF(roller_pi.Tmax, 10.0), DF(wheelset_pi.T, 2.0), DF(wheelset_pi.Kp, 10.0),
     DF(wheelset_pi.KI, 10.0), DF(wheelset_pi.Tmax, 10.0), DF(roller_tau, 10.0),
@@ -59,9 +58,7 @@ typedef struct {
 
 static const int_field int_fields[] = {
     IF(nsub, 1, 4), IF(method, 0, 2), IF(newton_iters, 0, RR_ODE_MAX_NEWTON),
-    IF(linear_tr, 0, 1), IF(newton_model, 0, 1), IF(contact.creep.method, 0, RR_METHOD_COUNT - 1),
-    IF(contact.creep.nx, 1, 24), IF(contact.creep.ny, 1, 24), IF(contact.creep.bound, 0, 1),
-    IF(contact.creep.grid, 0, 1), IF(contact.creep.slip_speed, 0, 1),
+    IF(linear_tr, 0, 1), IF(newton_model, 0, 1),
     IF(roller_enc.counts, 1, 16777216), IF(wheelset_enc.counts, 1, 16777216),
     IF(creepctl.sense, -1, 1)
 };
@@ -97,10 +94,10 @@ static void cap_work(rr_rig_params *p)
 {
     if (p->nsub > 5 && p->nsub <= 1000)
         p->nsub = 5;
-    if (p->contact.creep.nx > 25 && p->contact.creep.nx <= RR_FASTSIM_MAX_GRID)
-        p->contact.creep.nx = 25;
-    if (p->contact.creep.ny > 25 && p->contact.creep.ny <= RR_FASTSIM_MAX_GRID)
-        p->contact.creep.ny = 25;
+    if (rr_creep_cost(&p->contact.creep) > 625.0) {
+        p->contact.creep.v[RR_FASTSIM_NX] = 25;     /* a FASTSIM variant's grid */
+        p->contact.creep.v[RR_FASTSIM_NY] = 25;
+    }
 }
 
 static void perturb_field(fz_in *in, rr_rig_params *p, int which)
@@ -118,6 +115,30 @@ static void perturb_field(fz_in *in, rr_rig_params *p, int which)
         *v = fz_int(in, f->lo, f->hi);
         fz_note(" int field %d (offset %lu) = %d;", which - NDOUBLE, (unsigned long)f->offset,
                 *v);
+    } else if (which == NDOUBLE + NINT) {
+        /* another method, its defaults (FASTSIM's grid as the default rig's) */
+        rr_creep_opts *o = &p->contact.creep;
+        rr_creep_opts_default(o, fz_int(in, 0, RR_METHOD_COUNT - 1));
+        if (rr_creep_cost(o) > 400.0)
+            o->v[RR_FASTSIM_NX] = o->v[RR_FASTSIM_NY] = 20;
+        fz_note(" creep method %d;", o->method);
+    } else if (which == NDOUBLE + NINT + 1) {
+        /* one option of the method, from its descriptor: an integer or a
+         * choice's index near its range, a real near its value */
+        rr_creep_opts *o = &p->contact.creep;
+        const rr_method_desc *d = rr_method_get(o->method);
+        if (d && d->nopts > 0) {
+            const int i = fz_choice(in, d->nopts);
+            const rr_creep_option *op = &d->opts[i];
+            if (op->type == RR_OPT_REAL) {
+                const double was = o->v[i];
+                o->v[i] = fz_near(in, was, 3.0);
+                taint_param(o->v[i], was);
+            } else {
+                o->v[i] = fz_int(in, (int)op->lo, op->hi < 24.0 ? (int)op->hi : 24);
+            }
+            fz_note(" creep option %s = %.17g;", op->name, o->v[i]);
+        }
     } else {
         /* the sample time of all sampled elements at once (they must agree) */
         const double T = fz_near(in, p->T, 10.0);
@@ -138,9 +159,9 @@ static void decode_params(fz_in *in, rr_rig_params *p)
     if (mode == 1 || mode == 2) {
         const int k = fz_range(in, 1, 8);
         for (i = 0; i < k; i++)
-            perturb_field(in, p, fz_choice(in, NDOUBLE + NINT + 1));
+            perturb_field(in, p, fz_choice(in, NDOUBLE + NINT + 3));
     } else if (mode == 3) {
-        for (i = 0; i < NDOUBLE + NINT + 1; i++)
+        for (i = 0; i < NDOUBLE + NINT + 3; i++)
             perturb_field(in, p, i);
     }
     if (table == 0)

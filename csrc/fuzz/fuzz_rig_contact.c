@@ -47,17 +47,28 @@ static void decode_model(fz_in *in, rr_rig_contact_model *m, rr_contact_table *t
     m->friction.mu0 = fz_lin(in, 0.05, 1.0);
     m->friction.A = fz_lin(in, 0.05, 1.0);
     m->friction.B = fz_lin(in, 0.0, 3.0);
-    rr_creep_opts_default(fz_int(in, 0, RR_METHOD_COUNT - 1), &m->creep);
-    m->creep.nx = fz_int(in, 1, 24);
-    m->creep.ny = fz_int(in, 1, 24);
-    m->creep.bound = fz_int(in, 0, 1);
-    m->creep.grid = fz_int(in, 0, 1);
-    m->creep.slip_speed = fz_int(in, 0, 1);
-    m->creep.k0 = fz_near(in, m->creep.k0, 1.5);
-    m->creep.alpha_inf = fz_near(in, m->creep.alpha_inf, 3.0);
-    m->creep.beta = fz_near(in, m->creep.beta, 3.0);
-    m->creep.kA = fz_lin(in, 0.01, 1.0);
-    m->creep.kS = m->creep.kA * fz_lin(in, 0.01, 1.0);
+    rr_creep_opts_default(&m->creep, fz_int(in, 0, RR_METHOD_COUNT - 1));
+    {
+        /* each method's own options: FASTSIM's grid and choices (and modified
+         * FASTSIM's k0, alpha_inf, beta), Polach's kA, kS */
+        const rr_method_desc *d = rr_method_get(m->creep.method);
+        double *v = m->creep.v;
+        if (d && d->field) {
+            v[RR_FASTSIM_NX] = fz_int(in, 1, 24);
+            v[RR_FASTSIM_NY] = fz_int(in, 1, 24);
+            v[RR_FASTSIM_BOUND] = fz_int(in, 0, 1);
+            v[RR_FASTSIM_GRID] = fz_int(in, 0, 1);
+            v[RR_FASTSIM_SLIP_SPEED] = fz_int(in, 0, 1);
+            if (m->creep.method == RR_METHOD_MODIFIED_FASTSIM) {
+                v[RR_FASTSIM_K0] = fz_near(in, v[RR_FASTSIM_K0], 1.5);
+                v[RR_FASTSIM_ALPHA_INF] = fz_near(in, v[RR_FASTSIM_ALPHA_INF], 3.0);
+                v[RR_FASTSIM_BETA] = fz_near(in, v[RR_FASTSIM_BETA], 3.0);
+            }
+        } else if (m->creep.method == RR_METHOD_POLACH) {
+            v[RR_POLACH_KA] = fz_lin(in, 0.01, 1.0);
+            v[RR_POLACH_KS] = v[RR_POLACH_KA] * fz_lin(in, 0.01, 1.0);
+        }
+    }
     m->vmin = fz_near(in, m->vmin, 100.0);
 }
 
@@ -236,14 +247,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (fz_known("table_struct", known_table(&m)) || fz_known("extreme", known_extreme(&m, &s, N)))
         return 0;
     fz_note("op %d; model table %s (y0 %.17g, dy %.17g, n %d, data %s), R0 %.17g, estar %.17g, "
-            "G %.17g, nu %.17g, mu0 %.17g, A %.17g, B %.17g, method %d, nx %d, ny %d, bound %d, "
-            "grid %d, slip %d, k0 %.17g, alpha_inf %.17g, beta %.17g, kA %.17g, kS %.17g, "
-            "vmin %.17g; state x %.17g, y %.17g, yaw %.17g, vx %.17g, vy %.17g, yaw_rate %.17g, "
+            "G %.17g, nu %.17g, mu0 %.17g, A %.17g, B %.17g, method %d, options %.17g %.17g "
+            "%.17g %.17g %.17g %.17g %.17g %.17g, vmin %.17g; state x %.17g, y %.17g, yaw %.17g, vx %.17g, vy %.17g, yaw_rate %.17g, "
             "spin %.17g, roller_spin %.17g; N %.17g, %.17g", op, m.table ? "set" : "NULL", t.y0,
             t.dy, t.n, t.data ? "set" : "NULL", m.R0, m.estar, m.G, m.nu, m.friction.mu0,
-            m.friction.A, m.friction.B, m.creep.method, m.creep.nx, m.creep.ny, m.creep.bound,
-            m.creep.grid, m.creep.slip_speed, m.creep.k0, m.creep.alpha_inf, m.creep.beta,
-            m.creep.kA, m.creep.kS, m.vmin, s.x, s.y, s.yaw, s.vx, s.vy, s.yaw_rate, s.spin,
+            m.friction.A, m.friction.B, m.creep.method, m.creep.v[0], m.creep.v[1], m.creep.v[2], m.creep.v[3],
+            m.creep.v[4], m.creep.v[5], m.creep.v[6], m.creep.v[7], m.vmin, s.x, s.y, s.yaw, s.vx, s.vy, s.yaw_rate, s.spin,
             s.roller_spin, N[0], N[1]);
 
     st = rr_rig_contact_check(&m);

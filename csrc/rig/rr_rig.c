@@ -290,7 +290,7 @@ static void simplified_forces(const rr_rig_params *p, const rr_rig_creep_lin *l,
     double mu, dmu, e, s2, g3, F, dS[2], uh[2];
     int i, j;
 
-    if (p->contact.creep.method == RR_METHOD_LINEAR || !(u > 0.0)) {
+    if (!rr_creep_saturates(&p->contact.creep) || !(u > 0.0)) {
         f[0] = -ux;
         f[1] = -uy;
         if (D) {
@@ -341,13 +341,9 @@ static int linearise(rr_rig *rig, const double *y)
         l->ok = rr_kalker(w->hertz.a / w->hertz.b, p->contact.nu, &kc) == RR_OK;
         if (!l->ok)
             continue;
-        /* the methods' own initial slopes: Polach's (kA + kS)/2 of the
-         * linear theory, modified FASTSIM's k0 */
-        gab = p->contact.G * w->hertz.a * w->hertz.b
-            * (p->contact.creep.method == RR_METHOD_POLACH
-                   ? 0.5 * (p->contact.creep.kA + p->contact.creep.kS)
-                   : p->contact.creep.method == RR_METHOD_MODIFIED_FASTSIM
-                         ? p->contact.creep.k0 : 1.0);
+        /* the method's own initial slope over the linear theory's (its
+         * descriptor's: Polach's (kA + kS)/2, modified FASTSIM's k0) */
+        gab = p->contact.G * w->hertz.a * w->hertz.b * rr_creep_slope_scale(&p->contact.creep);
         l->f11 = gab * kc.c11;
         l->f22 = gab * kc.c22;
         l->N = w->N;

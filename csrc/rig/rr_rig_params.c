@@ -2,6 +2,7 @@
 #include <math.h>
 #include <string.h>
 #include "util/rr_common.h"
+#include "contact/rr_creep.h"
 #include "rig/rr_rig_params.h"
 
 #define OFF(member) ((long)offsetof(rr_rig_config, member))
@@ -609,13 +610,49 @@ int rr_rig_params_set_table(rr_rig_params *p, const rr_contact_table *t)
     return st;
 }
 
-/* The rig's default creep-force method: the creep rows' defaults. */
+/* A creep row's default as a name: its TOML text without the quotes. */
+static void row_text(const rr_rig_param *row, char *buf, size_t len)
+{
+    size_t n = 0;
+    const char *t = row->text;
+    for (; *t && n + 1 < len; t++)
+        if (*t != '"')
+            buf[n++] = *t;
+    buf[n] = '\0';
+}
+
+/* The rig's default creep-force method from the creep rows: the method of
+ * contact.creep_method, then each other row "contact.<family>_<option>" as
+ * the option <option> where the method has it (fastsim_nx -> nx, polach_kS
+ * -> kS); a choice's text is looked up among the option's names. */
 static void creep_default(rr_creep_opts *o)
 {
-    rr_creep_opts_default(RR_METHOD_FASTSIM, o);     /* contact.creep_method */
-    o->nx = (int)rr_rig_param_find("contact.fastsim_nx")->value;
-    o->ny = (int)rr_rig_param_find("contact.fastsim_ny")->value;
-    o->slip_speed = RR_SLIP_RIGID;                   /* contact.fastsim_slip_speed */
+    char text[64];
+    const rr_method_desc *d;
+    int i, k;
+    row_text(rr_rig_param_find("contact.creep_method"), text, sizeof text);
+    rr_creep_opts_default(o, rr_method_find(text));
+    d = rr_method_get(o->method);
+    for (i = 0; d && i < rr_rig_param_count(); i++) {
+        const rr_rig_param *row = rr_rig_param_at(i);
+        const char *opt = strchr(row->name, '_');
+        if (!row->creep || !opt || strcmp(row->name, "contact.creep_method") == 0)
+            continue;
+        for (k = 0; k < d->nopts; k++) {
+            const rr_creep_option *op = &d->opts[k];
+            double v = row->value;
+            if (strcmp(op->name, opt + 1) != 0)
+                continue;
+            if (op->type == RR_OPT_CHOICE) {
+                int j;
+                row_text(row, text, sizeof text);
+                for (j = 0; op->choices[j] && strcmp(op->choices[j], text) != 0; j++)
+                    ;
+                v = j;
+            }
+            rr_creep_opts_set(o, op->name, v);
+        }
+    }
 }
 
 int rr_rig_params_from(const rr_rig_config *c, const rr_contact_table *t, rr_rig_params *p)

@@ -14,6 +14,8 @@
 #include "contact/rr_friction.h"
 #include "contact/rr_contact.h"
 #include "contact/rr_creep.h"
+#include "contact/rr_linear.h"
+#include "contact/rr_polach.h"
 #include "contact/rr_fastsim.h"
 #include "rr_test.h"
 
@@ -59,11 +61,11 @@ static rr_friction falling(double mu0, double A, double B)
 static rr_creep_opts opts(int method, int nx, int ny, int bound, int grid)
 {
     rr_creep_opts o;
-    rr_creep_opts_default(method, &o);
-    o.nx = nx;
-    o.ny = ny;
-    o.bound = bound;
-    o.grid = grid;
+    rr_creep_opts_default(&o, method);
+    o.v[RR_FASTSIM_NX] = nx;
+    o.v[RR_FASTSIM_NY] = ny;
+    o.v[RR_FASTSIM_BOUND] = bound;
+    o.v[RR_FASTSIM_GRID] = grid;
     return o;
 }
 
@@ -414,7 +416,7 @@ static void test_fastsim_bound(void)
                     rr_creep_opts o = opts(methods[im], 8 + n % 23, 7 + n % 19, bound, grid);
                     rr_forces f;
                     int st;
-                    o.slip_speed = n % 2 == 0 ? RR_SLIP_LOCAL : RR_SLIP_RIGID;
+                    o.v[RR_FASTSIM_SLIP_SPEED] = n % 2 == 0 ? RR_SLIP_LOCAL : RR_SLIP_RIGID;
                     st = rr_fastsim(&c, &fr, &o, &f, 0);
                     ncase++;
                     if (st != RR_OK) {
@@ -463,7 +465,7 @@ static void test_full_sliding(void)
                 rr_contact_case c = base_case();
                 rr_friction fr = coulomb(0.3);
                 rr_creep_opts o = opts(RR_METHOD_FASTSIM, 31, 24, bound, grid);
-                rr_fastsim_field fld = {0, 0, 0, 0, 0, 0, 0};
+                rr_fastsim_field fld = {0, 0, 0, 0, 0, 0, 0, 0};
                 rr_forces f;
                 int st, i, ninside = 0;
                 fld.pn = fld_pn;
@@ -482,7 +484,7 @@ static void test_full_sliding(void)
                     CHECK(f.fy == 0.0, "full sliding with cy = 0: fy exactly 0");
                 if (c.cx == 0.0)
                     CHECK(f.fx == 0.0, "full sliding with cx = 0: fx exactly 0");
-                for (i = 0; i < o.nx * o.ny; i++)
+                for (i = 0; i < o.v[RR_FASTSIM_NX] * o.v[RR_FASTSIM_NY]; i++)
                     if (fld_pn[i] > 0.0)
                         ninside++;
                 CHECK(fld.nslip == ninside, "full sliding: every loaded element slips");
@@ -635,7 +637,7 @@ static void test_falling(void)
         rr_creep_opts o = opts(RR_METHOD_FASTSIM, 30, 30, RR_BOUND_PARABOLIC, RR_GRID_RECT);
         double F[24], cxs[24], cx = 1e-5, peak = 0.0;
         int i, ipeak = 0, up = 1, down = 1, st, allok = 1;
-        o.slip_speed = sm;
+        o.v[RR_FASTSIM_SLIP_SPEED] = sm;
         for (i = 0; i < 24; i++, cx *= 2.0) {
             rr_forces f;
             c.cx = cx;
@@ -757,7 +759,7 @@ static void test_bad_options(void)
     c.cx = 1e-3;
 #define BAD_OPT(method_, stmt, want, what)                                   \
     do {                                                                     \
-        rr_creep_opts_default((method_), &o);                                \
+        rr_creep_opts_default(&o, (method_));                                \
         stmt;                                                                \
         CHECK_STATUS(rr_creep_opts_check(&o), (want), what " (opts_check)"); \
         f.fx = f.fy = f.mz = 0.0;                                            \
@@ -766,42 +768,42 @@ static void test_bad_options(void)
         CHECK(forces_nan(&f), what " (rr_creep_forces NaN)");                \
     } while (0)
 
-    BAD_OPT(RR_METHOD_FASTSIM, o.nx = 0, RR_ERR_GRID, "nx = 0");
-    BAD_OPT(RR_METHOD_FASTSIM, o.ny = 0, RR_ERR_GRID, "ny = 0");
-    BAD_OPT(RR_METHOD_FASTSIM, o.nx = -3, RR_ERR_GRID, "nx < 0");
-    BAD_OPT(RR_METHOD_FASTSIM, o.nx = RR_FASTSIM_MAX_GRID + 1, RR_ERR_GRID, "nx > max");
-    BAD_OPT(RR_METHOD_FASTSIM_BLENDED, o.ny = RR_FASTSIM_MAX_GRID + 1, RR_ERR_GRID, "ny > max");
-    BAD_OPT(RR_METHOD_FASTSIM, o.bound = 7, RR_ERR_METHOD, "bound = 7");
-    BAD_OPT(RR_METHOD_FASTSIM, o.bound = -1, RR_ERR_METHOD, "bound = -1");
-    BAD_OPT(RR_METHOD_FASTSIM, o.grid = 5, RR_ERR_METHOD, "grid = 5");
-    BAD_OPT(RR_METHOD_FASTSIM, o.slip_speed = 2, RR_ERR_METHOD, "slip_speed = 2");
-    BAD_OPT(RR_METHOD_MODIFIED_FASTSIM, o.k0 = 0.0, RR_ERR_PARAM, "k0 = 0");
-    BAD_OPT(RR_METHOD_MODIFIED_FASTSIM, o.k0 = 1.5, RR_ERR_PARAM, "k0 = 1.5");
-    BAD_OPT(RR_METHOD_MODIFIED_FASTSIM, o.alpha_inf = -0.1, RR_ERR_PARAM, "alpha_inf < 0");
-    BAD_OPT(RR_METHOD_MODIFIED_FASTSIM, o.alpha_inf = 1.1, RR_ERR_PARAM, "alpha_inf > 1");
-    BAD_OPT(RR_METHOD_MODIFIED_FASTSIM, o.beta = -1.0, RR_ERR_PARAM, "beta < 0");
-    BAD_OPT(RR_METHOD_MODIFIED_FASTSIM, o.k0 = NAN, RR_ERR_NONFINITE, "k0 NaN");
-    BAD_OPT(RR_METHOD_POLACH, o.kA = 2.0, RR_ERR_PARAM, "kA = 2");
-    BAD_OPT(RR_METHOD_POLACH, o.kS = 0.0, RR_ERR_PARAM, "kS = 0");
-    BAD_OPT(RR_METHOD_POLACH, o.kS = INFINITY, RR_ERR_NONFINITE, "kS inf");
+    BAD_OPT(RR_METHOD_FASTSIM, o.v[RR_FASTSIM_NX] = 0, RR_ERR_GRID, "nx = 0");
+    BAD_OPT(RR_METHOD_FASTSIM, o.v[RR_FASTSIM_NY] = 0, RR_ERR_GRID, "ny = 0");
+    BAD_OPT(RR_METHOD_FASTSIM, o.v[RR_FASTSIM_NX] = -3, RR_ERR_GRID, "nx < 0");
+    BAD_OPT(RR_METHOD_FASTSIM, o.v[RR_FASTSIM_NX] = RR_FASTSIM_MAX_GRID + 1, RR_ERR_GRID, "nx > max");
+    BAD_OPT(RR_METHOD_FASTSIM_BLENDED, o.v[RR_FASTSIM_NY] = RR_FASTSIM_MAX_GRID + 1, RR_ERR_GRID, "ny > max");
+    BAD_OPT(RR_METHOD_FASTSIM, o.v[RR_FASTSIM_BOUND] = 7, RR_ERR_METHOD, "bound = 7");
+    BAD_OPT(RR_METHOD_FASTSIM, o.v[RR_FASTSIM_BOUND] = -1, RR_ERR_METHOD, "bound = -1");
+    BAD_OPT(RR_METHOD_FASTSIM, o.v[RR_FASTSIM_GRID] = 5, RR_ERR_METHOD, "grid = 5");
+    BAD_OPT(RR_METHOD_FASTSIM, o.v[RR_FASTSIM_SLIP_SPEED] = 2, RR_ERR_METHOD, "slip_speed = 2");
+    BAD_OPT(RR_METHOD_MODIFIED_FASTSIM, o.v[RR_FASTSIM_K0] = 0.0, RR_ERR_PARAM, "k0 = 0");
+    BAD_OPT(RR_METHOD_MODIFIED_FASTSIM, o.v[RR_FASTSIM_K0] = 1.5, RR_ERR_PARAM, "k0 = 1.5");
+    BAD_OPT(RR_METHOD_MODIFIED_FASTSIM, o.v[RR_FASTSIM_ALPHA_INF] = -0.1, RR_ERR_PARAM, "alpha_inf < 0");
+    BAD_OPT(RR_METHOD_MODIFIED_FASTSIM, o.v[RR_FASTSIM_ALPHA_INF] = 1.1, RR_ERR_PARAM, "alpha_inf > 1");
+    BAD_OPT(RR_METHOD_MODIFIED_FASTSIM, o.v[RR_FASTSIM_BETA] = -1.0, RR_ERR_PARAM, "beta < 0");
+    BAD_OPT(RR_METHOD_MODIFIED_FASTSIM, o.v[RR_FASTSIM_K0] = NAN, RR_ERR_NONFINITE, "k0 NaN");
+    BAD_OPT(RR_METHOD_POLACH, o.v[RR_POLACH_KA] = 2.0, RR_ERR_PARAM, "kA = 2");
+    BAD_OPT(RR_METHOD_POLACH, o.v[RR_POLACH_KS] = 0.0, RR_ERR_PARAM, "kS = 0");
+    BAD_OPT(RR_METHOD_POLACH, o.v[RR_POLACH_KS] = INFINITY, RR_ERR_NONFINITE, "kS inf");
     BAD_OPT(RR_METHOD_FASTSIM, o.method = 99, RR_ERR_METHOD, "method = 99");
     BAD_OPT(RR_METHOD_FASTSIM, o.method = -1, RR_ERR_METHOD, "method = -1");
 #undef BAD_OPT
 
-    /* only the fields a method uses are checked */
-    rr_creep_opts_default(RR_METHOD_LINEAR, &o);
-    o.nx = 0;
-    o.kA = 2.0;
-    o.k0 = 0.0;
-    CHECK_STATUS(rr_creep_opts_check(&o), RR_OK, "linear ignores grid, kA, k0");
-    rr_creep_opts_default(RR_METHOD_FASTSIM, &o);
-    o.kA = 2.0;
-    o.k0 = 0.0;
-    CHECK_STATUS(rr_creep_opts_check(&o), RR_OK, "FASTSIM ignores kA, k0");
-    rr_creep_opts_default(RR_METHOD_POLACH, &o);
-    o.nx = 0;
-    o.bound = 7;
-    CHECK_STATUS(rr_creep_opts_check(&o), RR_OK, "Polach ignores the grid and bound");
+    /* only the values of a method's own options are checked (each method
+     * has its own indices: values past its options are not looked at) */
+    rr_creep_opts_default(&o, RR_METHOD_LINEAR);
+    o.v[0] = 0;
+    o.v[1] = 2.0;
+    o.v[RR_FASTSIM_K0] = 0.0;
+    CHECK_STATUS(rr_creep_opts_check(&o), RR_OK, "linear (no options) ignores every value");
+    rr_creep_opts_default(&o, RR_METHOD_FASTSIM);
+    o.v[RR_FASTSIM_K0] = 0.0;
+    o.v[RR_FASTSIM_BETA] = -1.0;
+    CHECK_STATUS(rr_creep_opts_check(&o), RR_OK, "FASTSIM ignores modified FASTSIM's k0, beta");
+    rr_creep_opts_default(&o, RR_METHOD_POLACH);
+    o.v[RR_FASTSIM_BOUND] = 7;
+    CHECK_STATUS(rr_creep_opts_check(&o), RR_OK, "Polach ignores the values past kA, kS");
     /* the largest grid is accepted (one strip keeps it cheap) */
     o = opts(RR_METHOD_FASTSIM, RR_FASTSIM_MAX_GRID, 1, RR_BOUND_PARABOLIC, RR_GRID_STRIPS);
     st = rr_fastsim(&c, &fr, &o, &f, 0);
@@ -913,7 +915,7 @@ static void test_blended(void)
             rr_friction fr = coulomb(0.3);
             rr_creep_opts op = opts(RR_METHOD_FASTSIM, 24, 20, RR_BOUND_PARABOLIC, RR_GRID_RECT);
             rr_creep_opts ob = opts(RR_METHOD_FASTSIM_BLENDED, 24, 20, RR_BOUND_PARABOLIC, RR_GRID_RECT);
-            rr_fastsim_field fld = {0, 0, 0, 0, 0, 0, 0};
+            rr_fastsim_field fld = {0, 0, 0, 0, 0, 0, 0, 0};
             rr_forces fb, f1, f2, f3;
             double ab = c.a * c.b, cc = sqrt(ab), sat, fxn, fyn, fpn, w, pe, L, L1, L2, L3;
             double r1, r2, r3, ex, ey, em, scale;
@@ -997,10 +999,10 @@ static void test_modified(void)
                 rr_creep_opts om = opts(RR_METHOD_MODIFIED_FASTSIM, 25, 20, RR_BOUND_ELLIPTIC, grid);
                 rr_forces fp, fm;
                 double scale = fr.mu0 * c.N;
-                om.k0 = 1.0;
-                om.alpha_inf = 1.0;
-                om.beta = 0.62;
-                op.slip_speed = om.slip_speed = sm == 2 ? RR_SLIP_RIGID : RR_SLIP_LOCAL;
+                om.v[RR_FASTSIM_K0] = 1.0;
+                om.v[RR_FASTSIM_ALPHA_INF] = 1.0;
+                om.v[RR_FASTSIM_BETA] = 0.62;
+                op.v[RR_FASTSIM_SLIP_SPEED] = om.v[RR_FASTSIM_SLIP_SPEED] = sm == 2 ? RR_SLIP_RIGID : RR_SLIP_LOCAL;
                 c.cx = cr[ic][0];
                 c.cy = cr[ic][1];
                 c.cphi = cr[ic][2];
@@ -1024,7 +1026,7 @@ static void test_modified(void)
         rr_fastsim(&c, &fr, &op, &fp, 0);
         rr_fastsim(&c, &fr, &om, &fm, 0);
         /* eps ~ 1e-7 at this creepage: k = k0 (1 - (1 - alpha_inf) beta eps): 1e-6 */
-        CHECK_CLOSE(fm.fx, om.k0 * fp.fx, 0.0, 1e-6, "modified FASTSIM: initial slope k0 x plain");
+        CHECK_CLOSE(fm.fx, om.v[RR_FASTSIM_K0] * fp.fx, 0.0, 1e-6, "modified FASTSIM: initial slope k0 x plain");
     }
     /* The documented slope reduction where no element slips: all L_i are
      * divided by k, so every traction, and the forces, are k times plain's.
@@ -1044,7 +1046,7 @@ static void test_modified(void)
                 rr_creep_opts op = opts(RR_METHOD_FASTSIM, 24, 20, RR_BOUND_PARABOLIC, RR_GRID_RECT);
                 rr_creep_opts om = opts(RR_METHOD_MODIFIED_FASTSIM, 24, 20, RR_BOUND_PARABOLIC,
                                         RR_GRID_RECT);
-                rr_fastsim_field fld = {0, 0, 0, 0, 0, 0, 0};
+                rr_fastsim_field fld = {0, 0, 0, 0, 0, 0, 0, 0};
                 rr_forces fp, fm;
                 double nphi, mu, eps, kf, scale;
                 c.cx = cr[ic][0];
@@ -1052,13 +1054,13 @@ static void test_modified(void)
                 c.cphi = cr[ic][2];
                 nphi = fabs(c.cy + c.a * c.cphi) > fabs(c.cy) ? c.cy + c.a * c.cphi : c.cy;
                 mu = rr_friction_mu(&fr, c.speed * hypot(c.cx, c.cy));
-                eps = RR_PI * c.G * c.a * c.b * om.k0 * k.c11 * hypot(c.cx, nphi) / (4.0 * mu * c.N);
-                kf = om.k0 * (om.alpha_inf + (1.0 - om.alpha_inf) / (1.0 + om.beta * eps));
+                eps = RR_PI * c.G * c.a * c.b * om.v[RR_FASTSIM_K0] * k.c11 * hypot(c.cx, nphi) / (4.0 * mu * c.N);
+                kf = om.v[RR_FASTSIM_K0] * (om.v[RR_FASTSIM_ALPHA_INF] + (1.0 - om.v[RR_FASTSIM_ALPHA_INF]) / (1.0 + om.v[RR_FASTSIM_BETA] * eps));
                 rr_fastsim(&c, &fr, &op, &fp, 0);
                 fld.slip = fld_slip;
                 rr_fastsim(&c, &fr, &om, &fm, &fld);
                 snprintf(buf, sizeof buf, "modified FASTSIM k as documented, case %d friction %d "
-                         "(k/k0 - 1 = %.2e)", ic, sm, kf / om.k0 - 1.0);
+                         "(k/k0 - 1 = %.2e)", ic, sm, kf / om.v[RR_FASTSIM_K0] - 1.0);
                 CHECK(fld.nslip == 0, buf);
                 scale = hypot(fp.fx, fp.fy);
                 /* one common factor on every traction: rounding only; the
@@ -1102,6 +1104,7 @@ static void test_field(void)
                         fld.py = fld_py;
                         fld.slip = fld_slip;
                         fld.nslip = -1;
+                        fld.area = NULL;   /* not wanted here */
                         st = rr_fastsim(&c, &fr, &o, &f, &fld);
                         rr_fastsim(&c, &fr, &o, &f0, 0);
                         snprintf(buf, sizeof buf, "field %s %s case %d method %d friction %d",
@@ -1162,7 +1165,7 @@ static void test_field(void)
         rr_contact_case c = base_case();
         rr_friction fr = coulomb(0.3);
         rr_creep_opts o = opts(RR_METHOD_FASTSIM, 12, 10, RR_BOUND_PARABOLIC, RR_GRID_RECT);
-        rr_fastsim_field fld = {0, 0, 0, 0, 0, 0, 0};
+        rr_fastsim_field fld = {0, 0, 0, 0, 0, 0, 0, 0};
         rr_forces f, f0;
         int st, i, ok = 1;
         for (i = 0; i < 120; i++)
@@ -1212,10 +1215,10 @@ static void test_vector_kernel(void)
                                                lcg_range(0.1, 2.0))
                                      : coulomb(lcg_range(0.1, 0.6));
             rr_creep_opts o = opts(methods[(int)(3 * lcg())], nx, ny, bound, grid);
-            rr_fastsim_field fld = {0, 0, 0, 0, 0, 0, 0};
+            rr_fastsim_field fld = {0, 0, 0, 0, 0, 0, 0, 0};
             rr_forces f, f0;
             int st, st0;
-            o.slip_speed = RR_SLIP_RIGID;
+            o.v[RR_FASTSIM_SLIP_SPEED] = RR_SLIP_RIGID;
             c.a = lcg_range(1e-3, 8e-3);
             c.b = c.a * lcg_range(0.2, 5.0);
             c.N = lcg_range(1e2, 1e5);
@@ -1258,7 +1261,7 @@ static void test_dispatch(void)
     c.cphi = 0.4;
     for (im = 0; im < 3; im++) {
         rr_creep_opts o;
-        rr_creep_opts_default(methods[im], &o);
+        rr_creep_opts_default(&o, methods[im]);
         st = rr_creep_forces(&c, &fr, &o, &f);
         rr_fastsim(&c, &fr, &o, &g, 0);
         CHECK(st == RR_OK && f.fx == g.fx && f.fy == g.fy && f.mz == g.mz,
@@ -1266,9 +1269,9 @@ static void test_dispatch(void)
     }
     {
         rr_creep_opts o;
-        rr_creep_opts_default(RR_METHOD_POLACH, &o);
-        o.kA = 0.9;
-        o.kS = 0.6;
+        rr_creep_opts_default(&o, RR_METHOD_POLACH);
+        o.v[RR_POLACH_KA] = 0.9;
+        o.v[RR_POLACH_KS] = 0.6;
         st = rr_creep_forces(&c, &fr, &o, &f);
         rr_polach(&c, &fr, 0.9, 0.6, &g);
         CHECK(st == RR_OK && f.fx == g.fx && f.fy == g.fy && f.mz == g.mz,
@@ -1277,12 +1280,15 @@ static void test_dispatch(void)
     {
         /* documented defaults */
         rr_creep_opts o;
-        rr_creep_opts_default(RR_METHOD_MODIFIED_FASTSIM, &o);
-        CHECK(o.nx == 30 && o.ny == 30 && o.bound == RR_BOUND_PARABOLIC && o.grid == RR_GRID_RECT
-              && o.slip_speed == RR_SLIP_RIGID && o.k0 == 0.54 && o.alpha_inf == 0.02
-              && o.beta == 0.62, "modified FASTSIM defaults");
-        rr_creep_opts_default(RR_METHOD_FASTSIM, &o);
-        CHECK(o.slip_speed == RR_SLIP_LOCAL && o.kA == 1.0 && o.kS == 1.0, "FASTSIM defaults");
+        rr_creep_opts_default(&o, RR_METHOD_MODIFIED_FASTSIM);
+        CHECK(o.v[RR_FASTSIM_NX] == 30 && o.v[RR_FASTSIM_NY] == 30 && o.v[RR_FASTSIM_BOUND] == RR_BOUND_PARABOLIC && o.v[RR_FASTSIM_GRID] == RR_GRID_RECT
+              && o.v[RR_FASTSIM_SLIP_SPEED] == RR_SLIP_RIGID && o.v[RR_FASTSIM_K0] == 0.54 && o.v[RR_FASTSIM_ALPHA_INF] == 0.02
+              && o.v[RR_FASTSIM_BETA] == 0.62, "modified FASTSIM defaults");
+        rr_creep_opts_default(&o, RR_METHOD_FASTSIM);
+        CHECK(o.v[RR_FASTSIM_SLIP_SPEED] == RR_SLIP_LOCAL && isnan(o.v[RR_FASTSIM_K0]),
+              "FASTSIM defaults (no k0: not its option)");
+        rr_creep_opts_default(&o, RR_METHOD_POLACH);
+        CHECK(o.v[RR_POLACH_KA] == 1.0 && o.v[RR_POLACH_KS] == 1.0, "Polach defaults");
     }
 }
 
@@ -1300,20 +1306,20 @@ static void test_extremes(void)
 
     c.a = 2.2e-308; c.b = 0.0068; c.N = 1e4; c.G = 8.2e10; c.nu = 0.28;
     c.cx = 0.0068; c.cy = 0.001; c.cphi = 0.094; c.speed = 0.0;
-    rr_creep_opts_default(RR_METHOD_FASTSIM, &o);
+    rr_creep_opts_default(&o, RR_METHOD_FASTSIM);
     st = rr_creep_forces(&c, &fr, &o, &f);
     CHECK_STATUS(st, RR_ERR_RANGE, "FASTSIM a = 2.2e-308 (was NaN with status 0)");
     CHECK(isnan(f.fx) && isnan(f.fy) && isnan(f.mz), "RANGE: NaN forces");
 
     c.a = 1e12; c.cx = 1e300; c.cy = 0.0; c.cphi = 0.0;
-    rr_creep_opts_default(RR_METHOD_LINEAR, &o);
+    rr_creep_opts_default(&o, RR_METHOD_LINEAR);
     st = rr_creep_forces(&c, &fr, &o, &f);
     CHECK_STATUS(st, RR_ERR_RANGE, "linear cx = 1e300, a = 1e12 (was -inf)");
     CHECK(isnan(f.fx), "RANGE: NaN");
 
     /* huge creepage on an ordinary patch: full sliding, |F| = mu N */
     c.a = c.b = 0.006; c.cx = 1e3;
-    rr_creep_opts_default(RR_METHOD_FASTSIM, &o);
+    rr_creep_opts_default(&o, RR_METHOD_FASTSIM);
     st = rr_creep_forces(&c, &fr, &o, &f);
     CHECK_STATUS(st, RR_OK, "FASTSIM cx = 1e3");
     CHECK_CLOSE(f.fx, -0.3e4, 0.0, 1e-12, "FASTSIM cx = 1e3: full sliding");

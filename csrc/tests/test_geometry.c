@@ -180,8 +180,8 @@ static void test_rig_contact(void)
     m.G = 2.1e11 / 2.56;
     m.nu = 0.28;
     m.friction.mu0 = 0.4; m.friction.A = 1.0; m.friction.B = 0.0;
-    rr_creep_opts_default(RR_METHOD_FASTSIM, &m.creep);
-    m.creep.nx = m.creep.ny = 20;
+    rr_creep_opts_default(&m.creep, RR_METHOD_FASTSIM);
+    m.creep.v[RR_FASTSIM_NX] = m.creep.v[RR_FASTSIM_NY] = 20;
     m.vmin = 1e-3;
     CHECK_STATUS(rr_rig_contact_check(&m), RR_OK, "rig: model");
 

@@ -1,0 +1,96 @@
+/* rr_creep_opts.c - option checks driven by a method's descriptor, and
+ * what every creep-force method starts with. */
+#include <math.h>
+#include <string.h>
+#include "util/rr_common.h"
+#include "contact/rr_creep_opts.h"
+
+double rr_method_unit_cost(const rr_creep_opts *o)
+{
+    (void)o;
+    return 1.0;
+}
+
+double rr_method_unit_slope(const rr_creep_opts *o)
+{
+    (void)o;
+    return 1.0;
+}
+
+size_t rr_method_no_workspace(const rr_creep_opts *o)
+{
+    (void)o;
+    return 0;
+}
+
+int rr_method_option(const rr_method_desc *d, const char *name)
+{
+    int i;
+    if (!d || !name)
+        return -1;
+    for (i = 0; i < d->nopts; i++)
+        if (strcmp(d->opts[i].name, name) == 0)
+            return i;
+    return -1;
+}
+
+int rr_method_option_check(const rr_creep_option *op, double x)
+{
+    if (!op)
+        return RR_ERR_NULL;
+    if (op->type == RR_OPT_REAL && !isfinite(x))
+        return RR_ERR_NONFINITE;
+    if (x != x || (op->lo_open ? !(x > op->lo) : !(x >= op->lo))
+        || (op->hi_open ? !(x < op->hi) : !(x <= op->hi)))
+        return op->status;
+    if (op->type != RR_OPT_REAL && x != floor(x))
+        return op->status;          /* an integer or a choice's index */
+    return RR_OK;
+}
+
+int rr_method_check(const rr_method_desc *d, const rr_creep_opts *o, int *bad)
+{
+    int i, st;
+    if (bad)
+        *bad = -1;
+    if (!d || !o)
+        return RR_ERR_NULL;
+    for (i = 0; i < d->nopts; i++)
+        if ((st = rr_method_option_check(&d->opts[i], o->v[i])) != RR_OK) {
+            if (bad)
+                *bad = i;
+            return st;
+        }
+    if (d->check) {
+        int b = -1;
+        if ((st = d->check(o, &b)) != RR_OK) {
+            if (bad)
+                *bad = b;
+            return st;
+        }
+    }
+    return RR_OK;
+}
+
+int rr_creep_kalker(const rr_contact_case *c, rr_kalker_coeffs *k)
+{
+    const double q = c->a / c->b;
+    if (!isnormal(q)) {
+        k->c11 = k->c22 = k->c23 = NAN;
+        return RR_ERR_RANGE;
+    }
+    return rr_kalker(q, c->nu, k);
+}
+
+int rr_creep_prepare(const rr_contact_case *c, const rr_friction *fr, rr_kalker_coeffs *k)
+{
+    int st = k ? rr_contact_check(c) : RR_ERR_NULL;
+
+    if (st == RR_OK)
+        st = rr_friction_check(fr);
+    if (st == RR_OK && rr_friction_is_falling(fr) && !(c->speed > 0.0))
+        st = RR_ERR_SPEED;
+    if (st == RR_OK)
+        st = rr_creep_kalker(c, k);
+    return st;
+}

@@ -1,0 +1,149 @@
+/*
+ * rr_creep_opts.h - the bottom of the creep-force methods: the options of a
+ * method call, the descriptor every method publishes (its name, options,
+ * cost, slope, entry points), and what all methods share.
+ *
+ * Layering: rr_creep_opts.h <- each method (rr_linear.h, rr_fastsim.h,
+ * rr_polach.h, ...) <- rr_creep.h (the registry of rr_methods.def and the
+ * dispatcher).  No method includes the registry; the registry includes
+ * no method header (it only names the descriptors).
+ */
+#ifndef RR_CREEP_OPTS_H
+#define RR_CREEP_OPTS_H
+
+#include <stddef.h>
+#include "contact/rr_contact.h"
+#include "contact/rr_friction.h"
+#include "contact/rr_kalker.h"
+
+/* The methods' numbers, in the order of rr_methods.def: RR_METHOD_LINEAR,
+ * RR_METHOD_FASTSIM, ...; RR_METHOD_COUNT of them. */
+enum rr_method {
+#define RR_METHOD(tag, desc) RR_METHOD_##tag,
+#include "contact/rr_methods.def"
+#undef RR_METHOD
+    RR_METHOD_COUNT
+};
+
+/* Most options any method may have. */
+#define RR_CREEP_MAX_OPTS 16
+
+/*
+ * The options of one call: the method's number and its option values, v[i]
+ * the value of the method's option i (its descriptor's opts[i]; each method
+ * names its indices in its header, e.g. RR_FASTSIM_NX).  Integers and
+ * choices are stored as doubles holding an integer (a choice: the index of
+ * its name).  Fill with rr_creep_opts_default, change with
+ * rr_creep_opts_set (by name) or v[index], check with rr_creep_opts_check
+ * (rr_creep.h).
+ */
+typedef struct {
+    int method;
+    double v[RR_CREEP_MAX_OPTS];
+} rr_creep_opts;
+
+enum rr_opt_type {
+    RR_OPT_INT = 0,      /* an integer in [lo, hi] (ends per lo_open, hi_open) */
+    RR_OPT_REAL = 1,     /* a finite real in the range */
+    RR_OPT_CHOICE = 2    /* one of choices[]: the value is the name's index */
+};
+
+typedef struct {
+    const char *name;              /* as given by keyword: "nx", "k0", ... */
+    int type;                      /* enum rr_opt_type */
+    const char *unit;              /* "" for a dimensionless number or a choice */
+    double def;                    /* default (a choice: the index) */
+    double lo, hi;                 /* valid range; -HUGE_VAL/HUGE_VAL for none */
+    int lo_open, hi_open;          /* 1: the end itself is excluded */
+    const char *const *choices;    /* RR_OPT_CHOICE: the names, NULL-terminated */
+    int status;                    /* status of a value outside the range:
+                                      RR_ERR_GRID, RR_ERR_PARAM, RR_ERR_METHOD */
+    const char *doc;               /* one line */
+} rr_creep_option;
+
+/*
+ * The traction field of one evaluation (methods that have one: FASTSIM's
+ * variants): every pointer either NULL (not wanted) or an array of
+ * rows * cols elements (the method's field_shape).  Element (i, j) is stored
+ * at j * cols + i, rows j along y, i along increasing x; elements outside
+ * the ellipse have zero pressure and traction.
+ */
+typedef struct {
+    double *x, *y;        /* element centre [m] */
+    double *area;         /* element area [m^2] */
+    double *pn;           /* pressure [Pa] */
+    double *px, *py;      /* tangential traction on the wheel [Pa] */
+    signed char *slip;    /* 1 slip, 0 adhesion */
+    int nslip;            /* output: number of slipping elements */
+} rr_traction_field;
+
+/*
+ * A method's descriptor: all the rest of the library and the binding know
+ * of a method.  Entry points get options already checked by
+ * rr_method_check (and the method's check hook); they still return
+ * RR_ERR_NULL for NULL pointers.
+ */
+typedef struct {
+    const char *name;                   /* "fastsim" */
+    const char *doc;                    /* one line */
+    int nopts;                          /* <= RR_CREEP_MAX_OPTS */
+    const rr_creep_option *opts;
+    int saturates;                      /* 1: |F| <= mu N; 0: no friction limit (linear theory) */
+    /* cross-option constraints beyond each option's range (NULL: none):
+     * RR_OK, or a status with *bad the offending option's index */
+    int (*check)(const rr_creep_opts *o, int *bad);
+    const char *check_doc;              /* the constraint, for messages ("0 < kS <= kA <= 1") */
+    /* work of one case in units of one FASTSIM element (1 for a closed form): chunk sizes */
+    double (*cost)(const rr_creep_opts *o);
+    /* small-creepage slope over the linear theory's, for the rig's
+     * linearisation (Polach: (kA + kS)/2) */
+    double (*slope_scale)(const rr_creep_opts *o);
+    /* doubles of caller workspace one call needs (0: none) */
+    size_t (*workspace_len)(const rr_creep_opts *o);
+    int (*forces)(const rr_contact_case *c, const rr_friction *fr, const rr_creep_opts *o,
+                  double *work, rr_forces *out);
+    /* NULL, or the traction field's rows, columns and the evaluation with it */
+    void (*field_shape)(const rr_creep_opts *o, int *rows, int *cols);
+    int (*field)(const rr_contact_case *c, const rr_friction *fr, const rr_creep_opts *o,
+                 rr_forces *out, rr_traction_field *field);
+} rr_method_desc;
+
+/* Helpers for descriptors: a cost of 1 and a slope scale of 1, and no workspace. */
+double rr_method_unit_cost(const rr_creep_opts *o);
+double rr_method_unit_slope(const rr_creep_opts *o);
+size_t rr_method_no_workspace(const rr_creep_opts *o);
+
+/* The index of d's option named name, or -1 (also for NULL arguments). */
+int rr_method_option(const rr_method_desc *d, const char *name);
+
+/*
+ * rr_method_option_check - RR_OK if x is a valid value of option op, else
+ * RR_ERR_NONFINITE (a real NaN or infinite), op->status (out of range, not
+ * an integer for an integer option, not a choice's index; NaN too) or
+ * RR_ERR_NULL.
+ */
+int rr_method_option_check(const rr_creep_option *op, double x);
+
+/*
+ * rr_method_check - the options o->v checked against d's descriptors, in
+ * the order of d->opts, then d's check hook: RR_OK, or the first failing
+ * status with *bad (may be NULL) the option's index (-1 when d or o is
+ * NULL).  o->method is not looked at.
+ */
+int rr_method_check(const rr_method_desc *d, const rr_creep_opts *o, int *bad);
+
+/*
+ * rr_creep_prepare - the checks every frictional method starts with, then
+ * Kalker's coefficients of the case.
+ *   status: rr_contact_check, rr_friction_check, RR_ERR_SPEED (falling
+ *   friction needs speed > 0), rr_kalker, RR_ERR_RANGE (a/b not a normal
+ *   double), RR_ERR_NULL.
+ */
+int rr_creep_prepare(const rr_contact_case *c, const rr_friction *fr, rr_kalker_coeffs *k);
+
+/* Kalker's coefficients of a checked case; RR_ERR_RANGE (NaN coefficients)
+ * where a/b is not a normal double (semi-axes some 300 orders of magnitude
+ * apart). */
+int rr_creep_kalker(const rr_contact_case *c, rr_kalker_coeffs *k);
+
+#endif

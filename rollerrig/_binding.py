@@ -1,0 +1,187 @@
+"""The binding's Python half, shared by every module that calls rollerrig._core:
+input conversion and broadcasting, status handling, friction laws, and the
+creep-force methods as the C registry lists them (csrc/contact/rr_methods.def).
+
+Private: the public names are re-exported by rollerrig.contact."""
+from dataclasses import dataclass
+from types import MappingProxyType
+from typing import NamedTuple
+
+import numpy as np
+
+from . import _core
+from ._errors import RollerRigError, check_status
+
+
+class OptionInfo(NamedTuple):
+    """One option of a creep-force method, from its C descriptor."""
+    name: str
+    type: str          #: "int", "real" or "choice"
+    unit: str
+    default: object    #: int, float, or a choice's name
+    lo: object         #: valid range (None for a choice)
+    hi: object
+    lo_open: bool      #: True: lo itself excluded
+    hi_open: bool
+    choices: tuple     #: a choice's names
+    doc: str
+
+    def describe(self):
+        """The option's valid values, as the binding's messages give them."""
+        if self.type == "choice":
+            return "one of " + ", ".join(repr(c) for c in self.choices)
+        kind = "an integer" if self.type == "int" else "a real number"
+        return (f"{kind} in {'(' if self.lo_open else '['}{self.lo:g}, {self.hi:g}"
+                f"{')' if self.hi_open else ']'}")
+
+
+class MethodInfo(NamedTuple):
+    """A creep-force method of the registry: its doc, options (name ->
+    OptionInfo, in the descriptor's order), whether it has a traction field
+    (fastsim_field) and whether it saturates (|F| <= mu N)."""
+    name: str
+    doc: str
+    options: MappingProxyType
+    has_field: bool
+    saturates: bool
+
+    def defaults(self):
+        """Option name -> default value."""
+        return {n: o.default for n, o in self.options.items()}
+
+
+#: name -> MethodInfo, in the registry's order (read-only)
+METHODS = MappingProxyType({
+    name: MethodInfo(name, doc, MappingProxyType({o[0]: OptionInfo(*o) for o in opts}),
+                     bool(field), bool(sat))
+    for name, doc, opts, field, sat in _core.METHODS})
+
+
+def methods_doc():
+    """The methods and their options, one block each (for docstrings)."""
+    lines = []
+    for m in METHODS.values():
+        lines.append(f"    {m.name!r}: {m.doc}")
+        for o in m.options.values():
+            unit = f" [{o.unit}]" if o.unit else ""
+            lines.append(f"        {o.name}={o.default!r}{unit}: {o.doc}; {o.describe()}")
+    return "\n".join(lines)
+
+
+def method_info(func, method):
+    """The MethodInfo of a method name, or RollerRigError naming it."""
+    if isinstance(method, str) and method in METHODS:
+        return METHODS[method]
+    names = ", ".join(repr(k) for k in METHODS)
+    raise RollerRigError(f"{func}: method must be one of {names}, got {method!r:.60}")
+
+
+def core(call, *args, **kwargs):
+    """A call into _core whose ValueErrors (bad options, named by the binding)
+    become RollerRigError."""
+    try:
+        return call(*args, **kwargs)
+    except RollerRigError:
+        raise
+    except ValueError as e:
+        raise RollerRigError(str(e)) from None
+
+
+def check_creep_options(func, method, options):
+    """The method and options checked by the binding from the registry
+    (RollerRigError naming the method, option, range and value); returns
+    the keywords for _core (method= and the options given)."""
+    method_info(func, method)
+    opts = dict(options, method=method)
+    core(_core.check_creep_options, func, opts)
+    return opts
+
+
+def used_numbers(method, options):
+    """The method's real options as 0-d arrays, for messages on failed elements."""
+    info = METHODS[method]
+    return {n: np.asarray(float(options[n] if options.get(n) is not None else o.default))
+            for n, o in info.options.items() if o.type == "real"}
+
+
+@dataclass(frozen=True)
+class FallingFriction:
+    """Polach's falling friction mu(w) = mu [(1 - A) exp(-B w) + A].
+
+    mu is the static coefficient given to creep_forces; w the slip speed
+    [m/s]; A the ratio of the friction at infinite slip to mu (0 < A <= 1); B the
+    decay rate [s/m].  Polach (Wear 258, 2005) fits dry rail with about
+    A = 0.4, B = 0.6 s/m.  Falling friction needs the rolling speed.
+    """
+
+    A: float = 0.4
+    B: float = 0.6
+
+    def mu(self, mu0, w):
+        """The friction coefficient at slip speed w for static value mu0."""
+        return mu0 * ((1.0 - self.A) * np.exp(-self.B * np.asarray(w, dtype=float)) + self.A)
+
+
+def _friction(func, friction):
+    if friction is None or friction == "coulomb":
+        return 1.0, 0.0
+    if isinstance(friction, FallingFriction):
+        return friction.A, friction.B
+    raise RollerRigError(f"{func}: friction must be None, 'coulomb' or a FallingFriction, "
+                         f"got {friction!r}")
+
+
+def _choice(func, name, value, table, none_ok=False):
+    """One of a table's names (a str: a list or a dict is not looked up)."""
+    if (value is None and none_ok) or (isinstance(value, str) and value in table):
+        return
+    names = ", ".join(repr(k) for k in table) + (" or None" if none_ok else "")
+    raise RollerRigError(f"{func}: {name} must be one of {names}, got {value!r:.60}")
+
+
+def _as_float(func, name, value):
+    arr = np.asarray(value)
+    if arr.dtype.kind not in "iuf":
+        raise RollerRigError(f"{func}: {name} must be real numbers, got dtype {arr.dtype} "
+                             f"({value!r:.60})")
+    if arr.size == 0:
+        raise RollerRigError(f"{func}: {name} is empty")
+    return arr.astype(np.float64, copy=False)
+
+
+def _broadcast(func, named):
+    """Convert, broadcast and flatten the inputs for the binding.
+
+    Returns (shape, scalar, {name: array as given}, [1-D arrays]) where a
+    1-element input stays 1 element long (the binding broadcasts it)."""
+    arrays = {name: _as_float(func, name, v) for name, v in named.items()}
+    try:
+        shape = np.broadcast_shapes(*(a.shape for a in arrays.values()))
+    except ValueError:
+        shapes = ", ".join(f"{n}{a.shape}" for n, a in arrays.items() if a.ndim)
+        raise RollerRigError(f"{func}: shapes do not broadcast: {shapes}") from None
+    flat = []
+    for a in arrays.values():
+        if a.size == 1:
+            flat.append(a.reshape(1))
+        else:
+            flat.append(np.ascontiguousarray(np.broadcast_to(a, shape)).reshape(-1))
+    scalar = all(a.ndim == 0 for a in arrays.values())
+    # broadcast_to only where a shape differs: it costs 5 us an input, most of
+    # a scalar call's time (full is read, never written)
+    full = {n: a if a.shape == shape else np.broadcast_to(a, shape) for n, a in arrays.items()}
+    return shape, scalar, full, flat
+
+
+def _finish(func, shape, scalar, full, outputs, status, errors):
+    if errors is None:
+        errors = "raise" if scalar else "warn"
+    if errors not in ("raise", "warn", "ignore"):
+        raise RollerRigError(f"{func}: errors must be 'raise', 'warn' or 'ignore', "
+                             f"got {errors!r}")
+    status = status.reshape(shape)
+    check_status(func, status, full, errors)
+    outs = [o.reshape(shape) for o in outputs]
+    if scalar:
+        return [float(o) for o in outs] + [int(status)]
+    return outs + [status]
