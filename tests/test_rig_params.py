@@ -55,7 +55,7 @@ def test_record_and_wheel_fields_come_from_c():
 def test_binding_takes_declared_names_and_refuses_the_rest():
     P = rr.default_parameters()
     table = rig._geometry(P)
-    opts = rr.contact._options("t", **rig._creep_options("t", P, None, None, None, {}))
+    opts = rig._creep_options("t", P, None, None, None, {})
     for bad, msg in (({"wheelset.mass": 1.0}, "not a rig parameter"),
                      ({"contact.fastsim_nx": 20}, "creep-force option"),
                      ({"wheelset.mass_kg": -1.0}, "wheelset.mass_kg = -1.0"),
