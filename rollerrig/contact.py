@@ -85,6 +85,62 @@ class TractionField:
     status: int
 
 
+# The scalar path: a call on plain numbers skips numpy (arrays, broadcasting,
+# per-element checks: some 40 us) and takes one case straight to C, with the
+# method's options parsed once and kept.  Only a clean result (status 0) is
+# returned from it; anything else goes the general way, which names the
+# culprit.  Results are bitwise those of the general path (the same kernel on
+# the same doubles: tests/test_scalar_path.py).
+_PLAIN = frozenset((float, int, np.float64))
+_tuple_new = tuple.__new__
+_SCALAR_OPTIONS = {}
+_SCALAR_OPTIONS_MAX = 64
+
+
+def _scalar_options(method, options):
+    """The CreepOptions of a method and its options, parsed once; None where
+    they are not hashable or not valid (the general path says why)."""
+    try:
+        key = (method, tuple(sorted(options.items()))) if options else method
+        return _SCALAR_OPTIONS[key]
+    except KeyError:
+        pass
+    except TypeError:
+        return None
+    if not isinstance(method, str):
+        return None
+    try:
+        o = _core.CreepOptions(method=method, **options)
+    except (ValueError, TypeError, OverflowError):
+        return None
+    if len(_SCALAR_OPTIONS) >= _SCALAR_OPTIONS_MAX:
+        _SCALAR_OPTIONS.clear()
+    _SCALAR_OPTIONS[key] = o
+    return o
+
+
+def _scalar_creep(method, options, friction, case):
+    """CreepForces of one case of plain numbers with status 0, else None."""
+    if friction is None:
+        fA, fB = 1.0, 0.0
+    elif type(friction) is FallingFriction:
+        fA, fB = friction.A, friction.B
+    else:
+        return None
+    if not _PLAIN.issuperset(map(type, case)) or type(fA) not in _PLAIN \
+            or type(fB) not in _PLAIN:
+        return None
+    o = _scalar_options(method, options)
+    if o is None:
+        return None
+    try:
+        r = _core.creep_forces1(o, *case, fA, fB)
+    except OverflowError:                            # an int beyond the doubles
+        return None
+    # (fx, fy, mz, status) as it came, without a second tuple
+    return _tuple_new(CreepForces, r) if r[3] == 0 else None
+
+
 def hertz(A, B, N, E=2.1e11, nu=0.28, E2=None, nu2=None, *, errors=None):
     """Hertzian contact ellipse of two elastic bodies.
 
@@ -103,6 +159,13 @@ def hertz(A, B, N, E=2.1e11, nu=0.28, E2=None, nu2=None, *, errors=None):
     """
     E2 = E if E2 is None else E2
     nu2 = nu if nu2 is None else nu2
+    if errors is None and _PLAIN.issuperset(map(type, (A, B, N, E, nu, E2, nu2))):
+        try:
+            r = _core.hertz1(A, B, N, E, nu, E2, nu2)
+        except OverflowError:                        # an int beyond the doubles
+            r = (-1,)
+        if r[-1] == 0:                               # the scalar path (see creep_forces)
+            return _tuple_new(HertzContact, r)
     named = dict(A=A, B=B, N=N, E=E, nu=nu, E2=E2, nu2=nu2)
     shape, scalar, full, flat = _broadcast("hertz", named)
     a, b, p0, delta, status = _core.hertz(*flat)
@@ -158,6 +221,10 @@ def creep_forces(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, method
     C33 is not in our table).
     """
     func = "creep_forces"
+    if errors is None:
+        fast = _scalar_creep(method, options, friction, (cx, cy, cphi, a, b, N, mu, G, nu, speed))
+        if fast is not None:
+            return fast
     opts = check_creep_options(func, method, options)
     shape, scalar, full, flat = _case(func, cx, cy, cphi, a, b, N, mu, G, nu, speed, friction)
     fx, fy, mz, status = _core.creep_forces(*flat, **opts)
