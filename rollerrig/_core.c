@@ -184,25 +184,62 @@ static int int_arg(PyObject *v, const char *func, const char *name, long lo, lon
 
 /* ---------------------------------------------------------------- hertz */
 
+/* An elementwise batch: its inputs, its double outputs and status, and for
+ * creep_forces the method's options. */
+#define MAX_IN 12
+#define MAX_OUT 4
 typedef struct {
-    input in[7];
-    double *a, *b, *p0, *delta;
+    input in[MAX_IN];
+    double *out[MAX_OUT];
     npy_int8 *st;
-} hertz_batch;
+    rr_creep_opts o;
+} elementwise;
+
+/* The elementwise call func(*arrays): nin input arrays from args, named
+ * names[], nout float64 outputs and the int8 status computed by kernel at
+ * cost units a case; (outputs..., status), or NULL with an exception. */
+static PyObject *elementwise_call(const char *func, PyObject *args, const char *const *names,
+                                  int nin, int nout, batch_kernel kernel, elementwise *b,
+                                  double cost)
+{
+    PyObject *objs[MAX_IN], *out[MAX_OUT + 1] = {NULL, NULL, NULL, NULL, NULL}, *res;
+    npy_intp n;
+    int k;
+    if (!PyTuple_Check(args) || PyTuple_GET_SIZE(args) != nin) {
+        PyErr_Format(PyExc_TypeError, "%s: expected %d arrays (%s, ...)", func, nin, names[0]);
+        return NULL;
+    }
+    for (k = 0; k < nin; k++)
+        objs[k] = PyTuple_GET_ITEM(args, k);
+    if (parse_inputs(func, objs, names, nin, &n, b->in) < 0 || new_outputs(n, nout, out) < 0)
+        goto fail;
+    for (k = 0; k < nout; k++)
+        b->out[k] = OUT(out[k]);
+    b->st = OUT8(out[nout]);
+    if (run_batch(kernel, b, n, cost) < 0)
+        goto fail;
+    if ((res = outputs_tuple(out, nout + 1)) != NULL)
+        return res;
+fail:
+    release(out, nout + 1);
+    return NULL;
+}
+
+/* ---------------------------------------------------------------- hertz */
 
 static int hertz_kernel(void *ctx, npy_intp start, npy_intp stop)
 {
-    hertz_batch *k = ctx;
+    elementwise *b = ctx;
     npy_intp i;
     for (i = start; i < stop; i++) {
         rr_hertz_result h;
-        k->st[i] = (npy_int8)rr_hertz_bodies(IN(k->in[0], i), IN(k->in[1], i), IN(k->in[2], i),
-                                             IN(k->in[3], i), IN(k->in[4], i), IN(k->in[5], i),
-                                             IN(k->in[6], i), &h);
-        k->a[i] = h.a;
-        k->b[i] = h.b;
-        k->p0[i] = h.p0;
-        k->delta[i] = h.delta;
+        b->st[i] = (npy_int8)rr_hertz_bodies(IN(b->in[0], i), IN(b->in[1], i), IN(b->in[2], i),
+                                             IN(b->in[3], i), IN(b->in[4], i), IN(b->in[5], i),
+                                             IN(b->in[6], i), &h);
+        b->out[0][i] = h.a;
+        b->out[1][i] = h.b;
+        b->out[2][i] = h.p0;
+        b->out[3][i] = h.delta;
     }
     return 0;
 }
@@ -210,28 +247,9 @@ static int hertz_kernel(void *ctx, npy_intp start, npy_intp stop)
 static PyObject *py_hertz(PyObject *self, PyObject *args)
 {
     static const char *const names[] = {"A", "B", "N", "E1", "nu1", "E2", "nu2"};
-    PyObject *objs[7], *out[5] = {NULL, NULL, NULL, NULL, NULL}, *res;
-    hertz_batch k;
-    npy_intp n;
+    elementwise b;
     (void)self;
-
-    if (!PyArg_ParseTuple(args, "OOOOOOO:hertz", &objs[0], &objs[1], &objs[2], &objs[3],
-                          &objs[4], &objs[5], &objs[6]))
-        return NULL;
-    if (parse_inputs("hertz", objs, names, 7, &n, k.in) < 0 || new_outputs(n, 4, out) < 0)
-        goto fail;
-    k.a = OUT(out[0]);
-    k.b = OUT(out[1]);
-    k.p0 = OUT(out[2]);
-    k.delta = OUT(out[3]);
-    k.st = OUT8(out[4]);
-    if (run_batch(hertz_kernel, &k, n, 1.0) < 0)
-        goto fail;
-    if ((res = outputs_tuple(out, 5)) != NULL)
-        return res;
-fail:
-    release(out, 5);
-    return NULL;
+    return elementwise_call("hertz", args, names, 7, 4, hertz_kernel, &b, 1.0);
 }
 
 /* hertz1(A, B, N, E1, nu1, E2, nu2) -> (a, b, p0, delta, status): one case
@@ -258,22 +276,16 @@ static PyObject *py_hertz1(PyObject *self, PyObject *const *args, Py_ssize_t nar
 
 /* --------------------------------------------------------------- kalker */
 
-typedef struct {
-    input in[2];
-    double *c11, *c22, *c23;
-    npy_int8 *st;
-} kalker_batch;
-
 static int kalker_kernel(void *ctx, npy_intp start, npy_intp stop)
 {
-    kalker_batch *b = ctx;
+    elementwise *b = ctx;
     npy_intp i;
     for (i = start; i < stop; i++) {
         rr_kalker_coeffs k;
         b->st[i] = (npy_int8)rr_kalker(IN(b->in[0], i), IN(b->in[1], i), &k);
-        b->c11[i] = k.c11;
-        b->c22[i] = k.c22;
-        b->c23[i] = k.c23;
+        b->out[0][i] = k.c11;
+        b->out[1][i] = k.c22;
+        b->out[2][i] = k.c23;
     }
     return 0;
 }
@@ -281,27 +293,9 @@ static int kalker_kernel(void *ctx, npy_intp start, npy_intp stop)
 static PyObject *py_kalker(PyObject *self, PyObject *args)
 {
     static const char *const names[] = {"a_over_b", "nu"};
-    PyObject *objs[2], *out[4] = {NULL, NULL, NULL, NULL}, *res;
-    kalker_batch b;
-    npy_intp n;
+    elementwise b;
     (void)self;
-
-    if (!PyArg_ParseTuple(args, "OO:kalker_coefficients", &objs[0], &objs[1]))
-        return NULL;
-    if (parse_inputs("kalker_coefficients", objs, names, 2, &n, b.in) < 0
-        || new_outputs(n, 3, out) < 0)
-        goto fail;
-    b.c11 = OUT(out[0]);
-    b.c22 = OUT(out[1]);
-    b.c23 = OUT(out[2]);
-    b.st = OUT8(out[3]);
-    if (run_batch(kalker_kernel, &b, n, 1.0) < 0)
-        goto fail;
-    if ((res = outputs_tuple(out, 4)) != NULL)
-        return res;
-fail:
-    release(out, 4);
-    return NULL;
+    return elementwise_call("kalker_coefficients", args, names, 2, 3, kalker_kernel, &b, 1.0);
 }
 
 /* --------------------------------------------------------- creep forces */
@@ -565,16 +559,9 @@ static double creep_cost(const rr_creep_opts *o)
     return rr_creep_cost(o);
 }
 
-typedef struct {
-    input in[NCASE];
-    rr_creep_opts o;
-    double *fx, *fy, *mz;
-    npy_int8 *st;
-} creep_batch;
-
 static int creep_kernel(void *ctx, npy_intp start, npy_intp stop)
 {
-    creep_batch *b = ctx;
+    elementwise *b = ctx;
     npy_intp i;
     for (i = start; i < stop; i++) {
         rr_contact_case c;
@@ -582,44 +569,21 @@ static int creep_kernel(void *ctx, npy_intp start, npy_intp stop)
         rr_forces f;
         load_case(b->in, i, &c, &fr);
         b->st[i] = (npy_int8)rr_creep_forces(&c, &fr, &b->o, &f);
-        b->fx[i] = f.fx;
-        b->fy[i] = f.fy;
-        b->mz[i] = f.mz;
+        b->out[0][i] = f.fx;
+        b->out[1][i] = f.fy;
+        b->out[2][i] = f.mz;
     }
     return 0;
 }
 
 static PyObject *py_creep_forces(PyObject *self, PyObject *args, PyObject *kwargs)
 {
-    PyObject *objs[NCASE], *out[4] = {NULL, NULL, NULL, NULL}, *res;
-    creep_batch b;
-    npy_intp n;
-    int k;
+    elementwise b;
     (void)self;
-
-    if (PyTuple_GET_SIZE(args) != NCASE) {
-        PyErr_Format(PyExc_TypeError, "creep_forces: expected %d arrays (%s, ...)", NCASE,
-                     case_names[0]);
-        return NULL;
-    }
-    for (k = 0; k < NCASE; k++)
-        objs[k] = PyTuple_GET_ITEM(args, k);
     if (parse_opts(kwargs, "creep_forces", NULL, &b.o) < 0)
         return NULL;
-    if (parse_inputs("creep_forces", objs, case_names, NCASE, &n, b.in) < 0
-        || new_outputs(n, 3, out) < 0)
-        goto fail;
-    b.fx = OUT(out[0]);
-    b.fy = OUT(out[1]);
-    b.mz = OUT(out[2]);
-    b.st = OUT8(out[3]);
-    if (run_batch(creep_kernel, &b, n, creep_cost(&b.o)) < 0)
-        goto fail;
-    if ((res = outputs_tuple(out, 4)) != NULL)
-        return res;
-fail:
-    release(out, 4);
-    return NULL;
+    return elementwise_call("creep_forces", args, case_names, NCASE, 3, creep_kernel, &b,
+                            creep_cost(&b.o));
 }
 
 /* CreepOptions(**options): a method and its options, parsed and checked

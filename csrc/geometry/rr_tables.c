@@ -35,6 +35,16 @@ static void linspace(double y_min, double y_max, int n, double *y)
     y[n - 1] = y_max;
 }
 
+/* A constructor's failure: st, its points NaN where n gives their length. */
+static int points_failed(int st, int n, double *y, double *z)
+{
+    if (n >= 1 && n <= RR_SPLINE_MAX_POINTS) {      /* fill_nan skips a NULL */
+        fill_nan(y, n);
+        fill_nan(z, n);
+    }
+    return st;
+}
+
 int rr_profile_conical(double alpha, double y_min, double y_max, int n, double *y, double *z)
 {
     int i, st;
@@ -44,13 +54,8 @@ int rr_profile_conical(double alpha, double y_min, double y_max, int n, double *
         st = RR_ERR_NONFINITE;
     else if (st == RR_OK && !(fabs(alpha) < RR_PI / 2.0))
         st = RR_ERR_PARAM;
-    if (st != RR_OK) {
-        if (n >= 1 && n <= RR_SPLINE_MAX_POINTS) {
-            fill_nan(y, n);
-            fill_nan(z, n);
-        }
-        return st;
-    }
+    if (st != RR_OK)
+        return points_failed(st, n, y, z);
     linspace(y_min, y_max, n, y);
     for (i = 0; i < n; i++)
         z[i] = -tan(alpha) * y[i];
@@ -70,13 +75,8 @@ int rr_profile_crowned(double crown_radius, double y_min, double y_max, int n, d
         st = RR_ERR_PARAM;
     else if (st == RR_OK && R > 0.0 && !(fmax(fabs(y_min), fabs(y_max)) < R))
         st = RR_ERR_GEOMETRY;
-    if (st != RR_OK) {
-        if (n >= 1 && n <= RR_SPLINE_MAX_POINTS) {
-            fill_nan(y, n);
-            fill_nan(z, n);
-        }
-        return st;
-    }
+    if (st != RR_OK)
+        return points_failed(st, n, y, z);
     linspace(y_min, y_max, n, y);
     for (i = 0; i < n; i++)
         z[i] = R == 0.0 ? 0.0 : y[i] * y[i] / (R + sqrt(R - y[i]) * sqrt(R + y[i]));
