@@ -62,7 +62,7 @@ import numpy as np
 
 from ._errors import RollerRigError
 from ._optional import require
-from .contact import FallingFriction, creep_forces
+from .contact import METHODS, FallingFriction, creep_forces
 
 __all__ = ["FitResult", "fit_polach", "fit_modified_fastsim", "POLACH_PARAMETERS",
            "MODIFIED_FASTSIM_PARAMETERS", "PARAMETER_UNITS", "LOSSES"]
@@ -71,27 +71,36 @@ _TINY = 1e-6      # stands in for an open lower bound at 0 (all parameters are O
 _INF = np.inf
 
 # name: (default, lower, upper, lower bound open, upper bound open); default None: the
-# data's peak |force| / N.  Polach 2005, dry rail: A = 0.4, B = 0.6 s/m, kA = 1, kS = 0.4.
-POLACH_PARAMETERS = {
+# data's peak |force| / N.  The friction law's mu0, A, B are the fit's own; a
+# method's options take their range from the registry (rollerrig.METHODS), with
+# the fit's starting value.
+_FRICTION_PARAMETERS = {
     "mu0": (None, 0.0, _INF, True, True),
     "A": (0.4, 0.0, 1.0, True, False),
     "B": (0.6, 0.0, _INF, False, True),
-    "kA": (1.0, 0.0, 1.0, True, False),
-    "kS": (0.4, 0.0, 1.0, True, False),
 }
+
+
+def _method_parameters(method, **start):
+    """The fitted options of a method: start value and the registry's range."""
+    options = METHODS[method].options
+    return {**_FRICTION_PARAMETERS,
+            **{n: (v, options[n].lo, options[n].hi, options[n].lo_open, options[n].hi_open)
+               for n, v in start.items()}}
+
+
+# Polach 2005, dry rail: A = 0.4, B = 0.6 s/m, kA = 1, kS = 0.4.
+POLACH_PARAMETERS = _method_parameters("polach", kA=1.0, kS=0.4)
+# Spiryagin, Polach and Cole 2013 as in CONTACT's example: k0 0.54, alpha_inf 0.02, beta 0.62
+MODIFIED_FASTSIM_PARAMETERS = _method_parameters("modified_fastsim", k0=0.54, alpha_inf=0.02,
+                                                 beta=0.62)
 #: units of the fitted parameters ("-": dimensionless); A, B are the falling
 #: friction law's (FallingFriction; creep_forces' friction.A, friction.B)
-PARAMETER_UNITS = {"mu0": "-", "A": "-", "B": "s/m", "kA": "-", "kS": "-", "k0": "-",
-                   "alpha_inf": "-", "beta": "-"}
-# Spiryagin, Polach and Cole 2013 as in CONTACT's example: k0 0.54, alpha_inf 0.02, beta 0.62
-MODIFIED_FASTSIM_PARAMETERS = {
-    "mu0": (None, 0.0, _INF, True, True),
-    "A": (0.4, 0.0, 1.0, True, False),
-    "B": (0.6, 0.0, _INF, False, True),
-    "k0": (0.54, 0.0, 1.0, True, False),
-    "alpha_inf": (0.02, 0.0, 1.0, False, False),
-    "beta": (0.62, 0.0, _INF, False, True),
-}
+PARAMETER_UNITS = {"mu0": "-", "A": "-", "B": "s/m",
+                   **{n: METHODS[m].options[n].unit or "-" for m, P in
+                      (("polach", POLACH_PARAMETERS),
+                       ("modified_fastsim", MODIFIED_FASTSIM_PARAMETERS))
+                      for n in P if n not in _FRICTION_PARAMETERS}}
 LOSSES = ("linear", "soft_l1", "huber", "cauchy", "arctan")
 _RATIO = "kS/kA"
 
