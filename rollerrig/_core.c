@@ -1771,9 +1771,33 @@ static PyObject *py_analytic_profile(PyObject *self, PyObject *args)
     return Py_BuildValue("iNN", st, y, z);
 }
 
+typedef struct {
+    const rr_profile_points *wheel, *roller;
+    const rr_profile_placement *place;
+    const rr_search_opts *o;
+    const rr_rig_geometry *g;       /* the rig's table: NULL for two point lists */
+    rr_contact_table *t;
+    long data_len, work_len;
+    double *work, bad_y;
+    int st;
+} points_table_batch;
+
+/* rows [start, stop) of a table from point lists or of the rig's; the first
+ * error stops the build */
+static int points_table_kernel(void *ctx, npy_intp start, npy_intp stop)
+{
+    points_table_batch *b = ctx;
+    b->st = b->g ? rr_rig_table_build_rows(b->g, b->t->data, b->data_len, b->work, b->work_len,
+                                           (int)start, (int)stop, b->t, &b->bad_y)
+                 : rr_profile_table_build_rows(b->wheel, b->roller, b->place, b->o, b->t,
+                                               b->data_len, b->work, b->work_len, (int)start,
+                                               (int)stop, &b->bad_y);
+    return b->st < 0;
+}
+
 /* profile_table(wheel_y, wheel_z, wheel_end, roller_y, roller_z, roller_end,
  * (r0, R0, wheel_y, roller_y), y0, dy, n, nsamples, tol, sep)
- * -> (data, status, bad_y): rr_profile_table_build, the GIL released. */
+ * -> (data, status, bad_y): rr_profile_table_build_rows through the batch loop. */
 static PyObject *py_profile_table(PyObject *self, PyObject *args)
 {
     PyObject *wyo, *wzo, *weo, *ryo, *rzo, *reo, *rows, *nobj, *data = NULL;
@@ -1782,10 +1806,10 @@ static PyObject *py_profile_table(PyObject *self, PyObject *args)
     rr_profile_placement place;
     rr_search_opts o;
     rr_contact_table t;
-    double tol, sep, bad_y = NAN, *work = NULL;
+    points_table_batch b;
+    double tol, sep, *work = NULL;
     npy_intp len;
     long work_len;
-    int st;
     (void)self;
 
     if (!PyArg_ParseTuple(args, "OOOOOO(dddd)ddOOdd:profile_table", &wyo, &wzo, &weo, &ryo,
@@ -1815,13 +1839,22 @@ static PyObject *py_profile_table(PyObject *self, PyObject *args)
         goto fail;
     }
     t.data = OUT(data);
-    Py_BEGIN_ALLOW_THREADS
-    st = rr_profile_table_build(&wheel, &roller, &place, &o, &t, (long)len, work, work_len,
-                                &bad_y);
-    Py_END_ALLOW_THREADS
+    b.wheel = &wheel;
+    b.roller = &roller;
+    b.place = &place;
+    b.o = &o;
+    b.g = NULL;
+    b.t = &t;
+    b.data_len = (long)len;
+    b.work = work;
+    b.work_len = work_len;
+    b.bad_y = NAN;
+    b.st = RR_OK;
+    if (run_batch(points_table_kernel, &b, t.n, search_cost(&o)) < 0)
+        goto fail;
     PyMem_Free(work);
     release((PyObject **)arr, 4);
-    return Py_BuildValue("Nid", data, st, bad_y);
+    return Py_BuildValue("Nid", data, b.st, b.bad_y);
 fail:
     PyMem_Free(work);
     release((PyObject **)arr, 4);
@@ -1830,13 +1863,15 @@ fail:
 }
 
 /* rig_table(r0, R0, half_width, alpha, crown, half_spacing, half_range, rows)
- * -> (data, y0, dy, status, bad_y): rr_rig_table_build, the GIL released. */
+ * -> (data, y0, dy, status, bad_y): rr_rig_table_build_rows through the batch loop. */
 static PyObject *py_rig_table(PyObject *self, PyObject *args)
 {
     rr_rig_geometry g;
     rr_contact_table t;
+    rr_search_opts o;
+    points_table_batch b;
     PyObject *rows, *data;
-    double bad_y = NAN, *work;
+    double *work;
     npy_intp len;
     int st;
     (void)self;
@@ -1854,11 +1889,23 @@ static PyObject *py_rig_table(PyObject *self, PyObject *args)
         return PyErr_NoMemory();
     }
     t.y0 = t.dy = NAN;
-    Py_BEGIN_ALLOW_THREADS
-    st = rr_rig_table_build(&g, OUT(data), (long)len, work, RR_RIG_TABLE_WORK_LEN, &t, &bad_y);
-    Py_END_ALLOW_THREADS
+    t.data = OUT(data);
+    rr_search_opts_default(&o);
+    b.g = &g;
+    b.t = &t;
+    b.data_len = (long)len;
+    b.work = work;
+    b.work_len = RR_RIG_TABLE_WORK_LEN;
+    b.bad_y = NAN;
+    b.st = RR_OK;
+    /* a row is one wheelset solve at the default search's samples */
+    st = run_batch(points_table_kernel, &b, len ? g.table_rows : 1, search_cost(&o));
     PyMem_Free(work);
-    return Py_BuildValue("Nddid", data, t.y0, t.dy, st, bad_y);
+    if (st < 0) {
+        Py_DECREF(data);
+        return NULL;
+    }
+    return Py_BuildValue("Nddid", data, t.y0, t.dy, b.st, b.bad_y);
 }
 
 static PyObject *py_status_message(PyObject *self, PyObject *arg)

@@ -131,6 +131,21 @@ int rr_profile_table_build(const rr_profile_points *wheel, const rr_profile_poin
                            rr_contact_table *t, long data_len, double *work, long work_len,
                            double *bad_y)
 {
+    if (!t) {
+        if (bad_y)
+            *bad_y = NAN;
+        return RR_ERR_NULL;
+    }
+    return rr_profile_table_build_rows(wheel, roller, place, o, t, data_len, work, work_len,
+                                       0, t->n, bad_y);
+}
+
+int rr_profile_table_build_rows(const rr_profile_points *wheel,
+                                const rr_profile_points *roller,
+                                const rr_profile_placement *place, const rr_search_opts *o,
+                                rr_contact_table *t, long data_len, double *work,
+                                long work_len, int i0, int i1, double *bad_y)
+{
     rr_wheel_roller pair[2];
     double *wz, *wm, *rz, *rm, *scratch;
     int k, st;
@@ -173,7 +188,7 @@ int rr_profile_table_build(const rr_profile_points *wheel, const rr_profile_poin
         pair[k].roller_y = place->roller_y;
         pair[k].side = k == 0 ? 1 : -1;
     }
-    return rr_contact_table_build(&pair[0], &pair[1], o, t, bad_y);
+    return rr_contact_table_build_rows(&pair[0], &pair[1], o, t, i0, i1, bad_y);
 }
 
 long rr_rig_table_data_len(const rr_rig_geometry *g)
@@ -185,6 +200,14 @@ long rr_rig_table_data_len(const rr_rig_geometry *g)
 
 int rr_rig_table_build(const rr_rig_geometry *g, double *data, long data_len, double *work,
                        long work_len, rr_contact_table *t, double *bad_y)
+{
+    return rr_rig_table_build_rows(g, data, data_len, work, work_len, 0, g ? g->table_rows : 0,
+                                   t, bad_y);
+}
+
+int rr_rig_table_build_rows(const rr_rig_geometry *g, double *data, long data_len,
+                            double *work, long work_len, int i0, int i1, rr_contact_table *t,
+                            double *bad_y)
 {
     enum { N = RR_RIG_PROFILE_POINTS };
     const double v[7] = {g ? g->wheel_radius : 0.0, g ? g->roller_radius : 0.0,
@@ -233,6 +256,6 @@ int rr_rig_table_build(const rr_rig_geometry *g, double *data, long data_len, do
     t->dy = (reach - -reach) / (double)(g->table_rows - 1);
     t->n = g->table_rows;
     t->data = data;
-    return rr_profile_table_build(&wheel, &roller, &place, &o, t, data_len, rz + N,
-                                  work_len - 4L * N, bad_y);
+    return rr_profile_table_build_rows(&wheel, &roller, &place, &o, t, data_len, rz + N,
+                                       work_len - 4L * N, i0, i1, bad_y);
 }

@@ -105,6 +105,15 @@ int rr_profile_table_build(const rr_profile_points *wheel, const rr_profile_poin
                            rr_contact_table *t, long data_len, double *work, long work_len,
                            double *bad_y);
 
+/* rr_profile_table_build_rows - the same, rows i0 <= i < i1 only (0 <= i0 <=
+ * i1 <= t->n; else RR_ERR_PARAM): a caller builds a table in chunks, each
+ * call fitting the profiles' splines again (a few microseconds). */
+int rr_profile_table_build_rows(const rr_profile_points *wheel,
+                                const rr_profile_points *roller,
+                                const rr_profile_placement *place, const rr_search_opts *o,
+                                rr_contact_table *t, long data_len, double *work,
+                                long work_len, int i0, int i1, double *bad_y);
+
 /* The rig's geometry: rollerrig.rig.GEOMETRY_KEYS (rig_default.toml), the
  * cone angle as an angle (rig.py: atan of wheelset.conicity). */
 typedef struct {
@@ -148,5 +157,11 @@ long rr_rig_table_data_len(const rr_rig_geometry *g);
  */
 int rr_rig_table_build(const rr_rig_geometry *g, double *data, long data_len, double *work,
                        long work_len, rr_contact_table *t, double *bad_y);
+
+/* rr_rig_table_build_rows - the same, rows i0 <= i < i1 only (t set in full
+ * at every call; rows out of [0, table_rows]: RR_ERR_PARAM). */
+int rr_rig_table_build_rows(const rr_rig_geometry *g, double *data, long data_len,
+                            double *work, long work_len, int i0, int i1, rr_contact_table *t,
+                            double *bad_y);
 
 #endif
