@@ -188,7 +188,13 @@ def c_section(kernel, sz):
 
 def rig_kwargs(toml):
     return dict(mu=toml["mu0"], friction=rr.FallingFriction(A=toml["A"], B=toml["B"]),
-                E=toml["E"], nu=toml["nu"], vmin=toml["vmin"], kA=toml["kA"], kS=toml["kS"])
+                E=toml["E"], nu=toml["nu"], vmin=toml["vmin"])
+
+
+def method_kwargs(kw, toml):
+    """A method's options: Polach's reduction factors from the parameters (the
+    other methods have none: the registry refuses options a method lacks)."""
+    return dict(kw, kA=toml["kA"], kS=toml["kS"]) if kw["method"] == "polach" else kw
 
 
 def python_section(kernel_ext, sz, toml, params, dump):
@@ -230,6 +236,7 @@ def python_section(kernel_ext, sz, toml, params, dump):
         + [(f"contact_{key}", label, kw) for key, label, kw in METHODS]
     n = dump["n"]
     for item, label, kw in specs:
+        kw = method_kwargs(kw, toml)
         log(f"  {label}: Python batched on {n} states, C kernel (extension's flags) ...")
 
         last = {}

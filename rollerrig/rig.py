@@ -330,10 +330,12 @@ def _rule(p):
                     _core.RIG_MAX_LIST)
 
 #: the parameter file's keys (contact section) that set a creep-force option:
-#: key -> the option's name in the registry (rollerrig.METHODS); each is given
-#: to the chosen method where it has that option, and checked as the registry says
-_FILE_OPTIONS = {"fastsim_nx": "nx", "fastsim_ny": "ny", "fastsim_slip_speed": "slip_speed",
-                 "polach_kA": "kA", "polach_kS": "kS"}
+#: key -> the option's name in the registry (rollerrig.METHODS), the declared
+#: creep rows "contact.<family>_<option>" read as the C side reads them
+#: (rr_rig_params.c, creep_default); each is given to the chosen method where
+#: it has that option, and checked as the registry says
+_FILE_OPTIONS = {p.name.split(".", 1)[1]: p.name.split("_", 1)[1] for p in PARAMETERS
+                 if p.creep and p.name != "contact.creep_method"}
 
 
 def _option_rule(name):

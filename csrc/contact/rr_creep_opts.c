@@ -38,13 +38,15 @@ int rr_method_option_check(const rr_creep_option *op, double x)
 {
     if (!op)
         return RR_ERR_NULL;
-    if (op->type == RR_OPT_REAL && !isfinite(x))
-        return RR_ERR_NONFINITE;
-    if (x != x || (op->lo_open ? !(x > op->lo) : !(x >= op->lo))
+    if (!isfinite(x))
+        return op->type == RR_OPT_REAL ? RR_ERR_NONFINITE : op->status;
+    if ((op->lo_open ? !(x > op->lo) : !(x >= op->lo))
         || (op->hi_open ? !(x < op->hi) : !(x <= op->hi)))
         return op->status;
-    if (op->type != RR_OPT_REAL && x != floor(x))
-        return op->status;          /* an integer or a choice's index */
+    /* an integer or a choice's index: a C int (the cast, not floor(): this
+     * check runs at every creep-force call, the rig's time step included) */
+    if (op->type != RR_OPT_REAL && !(fabs(x) < 2147483647.0 && x == (double)(int)x))
+        return op->status;
     return RR_OK;
 }
 

@@ -282,7 +282,7 @@ static void jac_const(const rr_rig_params *p, double *J)
  * row-major 2 x 2: along u the curve's slope, across it F/|u| (a saturated
  * contact turns its force with the slip, it does not stiffen).
  */
-static void simplified_forces(const rr_rig_params *p, const rr_rig_creep_lin *l, double cx,
+static void simplified_forces(const rr_rig *rig, const rr_rig_creep_lin *l, double cx,
                               double cy, double f[2], double D[4])
 {
     const double ux = l->f11 * cx, uy = l->f22 * cy, u = hypot(ux, uy), c = hypot(cx, cy);
@@ -290,7 +290,7 @@ static void simplified_forces(const rr_rig_params *p, const rr_rig_creep_lin *l,
     double mu, dmu, e, s2, g3, F, dS[2], uh[2];
     int i, j;
 
-    if (!rr_creep_saturates(&p->contact.creep) || !(u > 0.0)) {
+    if (!rig->creep_saturates || !(u > 0.0)) {
         f[0] = -ux;
         f[1] = -uy;
         if (D) {
@@ -300,7 +300,7 @@ static void simplified_forces(const rr_rig_params *p, const rr_rig_creep_lin *l,
         }
         return;
     }
-    mu = rr_friction_mu(&p->contact.friction, c * l->V);
+    mu = rr_friction_mu(&rig->p->contact.friction, c * l->V);
     e = u / (3.0 * mu * l->N);
     s2 = e < 1.0 ? (1.0 - e) * (1.0 - e) : 0.0;
     g3 = e < 1.0 ? 1.0 - s2 * (1.0 - e) : 1.0;
@@ -312,7 +312,7 @@ static void simplified_forces(const rr_rig_params *p, const rr_rig_creep_lin *l,
     if (!D)
         return;
     /* dF/dc_j = s2 uh_j f_jj + N V mu' (c_j/|c|) (g3 - 3 eps s2) */
-    dmu = rr_friction_dmu(&p->contact.friction, c * l->V);
+    dmu = rr_friction_dmu(&rig->p->contact.friction, c * l->V);
     for (j = 0; j < 2; j++)
         dS[j] = s2 * uh[j] * fc[j] + l->N * l->V * dmu * (cc[j] / c) * (g3 - 3.0 * e * s2);
     for (i = 0; i < 2; i++)
@@ -343,7 +343,7 @@ static int linearise(rr_rig *rig, const double *y)
             continue;
         /* the method's own initial slope over the linear theory's (its
          * descriptor's: Polach's (kA + kS)/2, modified FASTSIM's k0) */
-        gab = p->contact.G * w->hertz.a * w->hertz.b * rr_creep_slope_scale(&p->contact.creep);
+        gab = p->contact.G * w->hertz.a * w->hertz.b * rig->creep_slope_scale;
         l->f11 = gab * kc.c11;
         l->f22 = gab * kc.c22;
         l->N = w->N;
@@ -368,7 +368,7 @@ static int linearise(rr_rig *rig, const double *y)
             l->rx[RR_RIG_ROLLER_SPIN] = R / p->roller_inertia;
             l->ry[RR_RIG_VY] = 1.0 / p->mass;
         }
-        simplified_forces(p, l, l->cx, l->cy, f, l->D);
+        simplified_forces(rig, l, l->cx, l->cy, f, l->D);
         l->fx = f[0];
         l->fy = f[1];
     }
@@ -430,7 +430,6 @@ int rr_rig_jac(rr_rig *rig, double t, const double *y, double *J)
 static int model_cb(void *ctx, double t, const double *y0, const double *z, double *df)
 {
     rr_rig *rig = (rr_rig *)ctx;
-    const rr_rig_params *p = rig->p;
     double d[NS];
     int i, j, k, st;
     (void)t;
@@ -455,7 +454,7 @@ static int model_cb(void *ctx, double t, const double *y0, const double *z, doub
             dcx += l->dcx[j] * d[j];
             dcy += l->dcy[j] * d[j];
         }
-        simplified_forces(p, l, l->cx + dcx, l->cy + dcy, f, NULL);
+        simplified_forces(rig, l, l->cx + dcx, l->cy + dcy, f, NULL);
         for (i = 0; i < NS; i++)
             df[i] += l->rx[i] * (f[0] - l->fx) + l->ry[i] * (f[1] - l->fy);
     }
@@ -542,6 +541,8 @@ int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig)
     rig->status = RR_ERR_PARAM;
     if ((st = rr_rig_check(p)) != RR_OK)
         return rig->status = st;
+    rig->creep_saturates = rr_creep_saturates(&p->contact.creep);
+    rig->creep_slope_scale = rr_creep_slope_scale(&p->contact.creep);
     if (!isfinite(roller_speed))
         return rig->status = RR_ERR_NONFINITE;
     if ((st = rr_contact_table_lookup(p->contact.table, 0.0, &tp, 0, &cl, &cr)) != RR_OK)

@@ -141,6 +141,10 @@ typedef struct {
 
 typedef struct {
     const rr_rig_params *p;
+    /* the creep method's registry facts, taken at rr_rig_init (its options
+     * checked there): does it saturate, its small-creepage slope scale */
+    int creep_saturates;
+    double creep_slope_scale;
     double t;                      /* time [s] */
     double y[RR_RIG_NSTATE];       /* plant state */
     double z_ref;                  /* axle height at which the springs carry the preload [m] */
