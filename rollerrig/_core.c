@@ -1908,6 +1908,57 @@ static PyObject *py_rig_table(PyObject *self, PyObject *args)
     return Py_BuildValue("Nddid", data, t.y0, t.dy, b.st, b.bad_y);
 }
 
+/* A list of up to RR_RIG_MAX_LIST finite numbers into l; 0, or -1 with a ValueError. */
+static int rig_list(PyObject *obj, const char *name, rr_rig_list *l)
+{
+    PyArrayObject *a = (PyArrayObject *)PyArray_FROMANY(obj, NPY_DOUBLE, 1, 1,
+                                                          NPY_ARRAY_IN_ARRAY);
+    npy_intp k;
+    if (!a)
+        return -1;
+    if (PyArray_DIM(a, 0) < 1 || PyArray_DIM(a, 0) > RR_RIG_MAX_LIST) {
+        PyErr_Format(PyExc_ValueError, "rig_schedule: %s must have 1 to %d entries, got %zd",
+                     name, RR_RIG_MAX_LIST, (Py_ssize_t)PyArray_DIM(a, 0));
+        Py_DECREF(a);
+        return -1;
+    }
+    l->n = (int)PyArray_DIM(a, 0);
+    for (k = 0; k < l->n; k++)
+        l->v[k] = ((const double *)PyArray_DATA(a))[k];
+    Py_DECREF(a);
+    return 0;
+}
+
+/* rig_schedule(roller_speed, roller_radius, targets, target_start, T, first, stop)
+ * -> (roller_ref, xi_ref) of samples first <= k < stop: rr_rig_schedule, the
+ * rule the C programs follow. */
+static PyObject *py_rig_schedule(PyObject *self, PyObject *args)
+{
+    PyObject *tobj, *sobj, *out[2] = {NULL, NULL};
+    rr_rig_config c;
+    Py_ssize_t first, stop, k;
+    npy_intp n;
+    (void)self;
+    if (!PyArg_ParseTuple(args, "ddOOdnn:rig_schedule", &c.roller_speed, &c.roller_radius,
+                          &tobj, &sobj, &c.T, &first, &stop)
+        || rig_list(tobj, "targets", &c.targets) < 0
+        || rig_list(sobj, "target_start", &c.target_start) < 0)
+        return NULL;
+    if (first < 0 || stop < first) {
+        PyErr_Format(PyExc_ValueError, "rig_schedule: samples %zd to %zd", first, stop);
+        return NULL;
+    }
+    n = stop - first;
+    if (!(out[0] = PyArray_SimpleNew(1, &n, NPY_DOUBLE))
+        || !(out[1] = PyArray_SimpleNew(1, &n, NPY_DOUBLE))) {
+        release(out, 2);
+        return NULL;
+    }
+    for (k = 0; k < n; k++)
+        rr_rig_schedule(&c, (long)(first + k), OUT(out[0]) + k, OUT(out[1]) + k);
+    return outputs_tuple(out, 2);
+}
+
 static PyObject *py_status_message(PyObject *self, PyObject *arg)
 {
     long code = PyLong_AsLong(arg);
@@ -1956,6 +2007,9 @@ static PyMethodDef core_methods[] = {
     {"profile_table", py_profile_table, METH_VARARGS,
      "profile_table(wheel_y, wheel_z, wheel_end, roller_y, roller_z, roller_end,"
      " (r0, R0, wheel_y, roller_y), y0, dy, n, nsamples, tol, sep) -> (data, status, bad_y)"},
+    {"rig_schedule", py_rig_schedule, METH_VARARGS,
+     "rig_schedule(roller_speed, roller_radius, targets, target_start, T, first, stop)"
+     " -> (roller_ref, xi_ref)"},
     {"rig_table", py_rig_table, METH_VARARGS,
      "rig_table(r0, R0, half_width, alpha, crown, half_spacing, half_range, rows)"
      " -> (data, y0, dy, status, bad_y)"},

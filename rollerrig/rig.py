@@ -575,14 +575,13 @@ def _creep_options(func, P, method, nx, ny, creep):
 def schedule(P, duration, dt, targets, target_times, roller_speed, first=0, stop=None):
     """The references of samples first <= k < stop (default: all of the
     duration): roller speed [rad/s] and creepage target (NaN before the
-    first target's start).  Sample k starts at k dt."""
+    first target's start).  Sample k starts at k dt.  The rule is the C
+    side's (rr_rig_schedule), which a C program of the rig follows too."""
     n = int(round(duration / dt))
     stop = n if stop is None else min(stop, n)
-    at = np.arange(first, stop) * dt
-    idx = np.searchsorted(np.asarray(target_times), at, side="right") - 1
-    xi_ref = np.where(idx >= 0, np.asarray(targets, dtype=float)[np.clip(idx, 0, None)],
-                      np.nan)
-    return np.full(at.size, roller_speed / P["roller"]["radius_m"]), xi_ref
+    return _core.rig_schedule(float(roller_speed), float(P["roller"]["radius_m"]),
+                              [float(x) for x in targets], [float(t) for t in target_times],
+                              float(dt), int(first), max(int(stop), int(first)))
 
 
 def _real_arg(func, name, v, lo=-math.inf, hi=math.inf, lo_open=False, unit=""):
@@ -984,11 +983,13 @@ class RigResult:
 def _target_schedule(S, duration, targets, target_times):
     """(targets, start times) of a run; the rules are simulate's."""
     def listed(v):
-        return isinstance(v, (list, tuple, np.ndarray)) and np.ndim(v) == 1 and len(v) > 0
+        return isinstance(v, (list, tuple, np.ndarray)) and np.ndim(v) == 1 \
+            and 0 < len(v) <= _core.RIG_MAX_LIST
     if targets is not None and (not listed(targets)
                                 or any(_real(0.0, 1.0, hi_open=True)(x) for x in targets)):
-        raise RollerRigError(f"simulate: targets must be a non-empty list of creepages in "
-                             f"[0, 1), got {_short(targets)}")
+        raise RollerRigError(f"simulate: targets must be a non-empty list of at most "
+                             f"{_core.RIG_MAX_LIST} creepages in [0, 1), got "
+                             f"{_short(targets)}")
     if targets is None:
         targets = S["targets"]
         if target_times is None:

@@ -68,9 +68,9 @@ def test_binding_takes_declared_names_and_refuses_the_rest():
 
 
 def test_schedule_is_the_c_schedule():
-    """rig.schedule (numpy) and rr_rig_schedule (C, the paper program's) agree
-    on the paper's run: the C program's bitwise records prove it there; here
-    the rule itself, at the start times and either side of them."""
+    """rig.schedule is rr_rig_schedule (C, the paper program's rule); held here
+    against the rule written with numpy: the target of the last start time
+    <= k T, NaN before the first."""
     P = rr.default_parameters()
     S = P["scenario"]
     roller, xi = rig.schedule(P, S["duration_s"], S["control_sample_time_s"], S["targets"],
@@ -79,3 +79,12 @@ def test_schedule_is_the_c_schedule():
     idx = np.searchsorted(S["target_start_s"], k * S["control_sample_time_s"], "right") - 1
     assert np.array_equal(xi, np.asarray(S["targets"])[idx])
     assert np.all(roller == S["roller_speed_m_s"] / P["roller"]["radius_m"])
+    # a late first start, samples from the middle, start times between samples
+    targets, starts, dt = [0.01, 0.03, 0.02], [0.0105, 0.02, 0.0333], 0.004
+    roller, xi = rig.schedule(P, 0.1, dt, targets, starts, 5.0, first=2, stop=20)
+    t = np.arange(2, 20) * dt
+    idx = np.searchsorted(starts, t, "right") - 1
+    want = np.where(idx >= 0, np.asarray(targets)[np.clip(idx, 0, None)], np.nan)
+    assert np.array_equal(xi, want, equal_nan=True) and np.isnan(xi[0])
+    with pytest.raises(ValueError, match="targets must have 1 to 256"):
+        rig.schedule(P, 1.0, dt, [0.01] * 257, [0.0] * 257, 5.0)
