@@ -101,6 +101,25 @@ static void test_spline_fit(void)
     }
     CHECK_STATUS(rr_spline_fit(NP, y, z, 0, s, c2, c3, w), RR_ERR_RANGE, "fit: overflow");
     CHECK(all_nan(s, NP) && all_nan(c2, NP - 1) && all_nan(c3, NP - 1), "fit: overflow -> NaN");
+    for (i = 0; i < NP; i++) {
+        y[i] = i < NP - 1 ? i * 1e-3 : 1e150;   /* fuzz_spline_fit: h^3 overflows, c3 = 0 */
+        z[i] = 3.5e-4;
+    }
+    z[1] = 0.0;
+    CHECK_STATUS(rr_spline_fit(NP, y, z, 1, s, c2, c3, w), RR_ERR_RANGE, "fit: h^3 overflows");
+    CHECK(all_nan(s, NP) && all_nan(c2, NP - 1) && all_nan(c3, NP - 1), "fit: h^3 -> NaN");
+    {
+        /* fuzz_spline_fit: c3 finite but 6 c3 infinite, times t = 0 NaN */
+        double cc2[NP], cc3[NP];
+        for (i = 0; i < NP; i++) {
+            y[i] = i * 1e-5;
+            cc2[i] = 0.0;
+            cc3[i] = 1e308;
+        }
+        CHECK_STATUS(rr_spline_knot_d2(NP, y, cc2, cc3, d2), RR_ERR_RANGE,
+                     "knot d2: 6 c3 overflows");
+        CHECK(all_nan(d2, NP), "knot d2: overflow -> NaN");
+    }
     CHECK_STATUS(rr_spline_knot_d2(3, y, c2, c3, d2), RR_ERR_PARAM, "knot d2: n = 3");
     CHECK_STATUS(rr_spline_knot_d2(NP, NULL, c2, c3, d2), RR_ERR_NULL, "knot d2: y NULL");
     CHECK_STATUS(rr_spline_knot_d2(NP, y, c2, NULL, d2), RR_ERR_NULL, "knot d2: c3 NULL");
