@@ -1,6 +1,7 @@
 /* test_tables.c - the profile spline (rr_spline_fit), the analytic
  * profiles, and contact tables from points and from the rig's geometry
  * (rr_tables.h), with every error status. */
+#include <limits.h>
 #include <math.h>
 #include <string.h>
 #include "rr_test.h"
@@ -242,6 +243,17 @@ static void test_rig_table(void)
     wheel.end = 7;
     CHECK_STATUS(rr_profile_surface(&wheel, zup, mup, work), RR_ERR_PARAM, "surface: bad end");
     wheel.end = RR_SPLINE_NOT_A_KNOT;
+    /* fuzz_tables: n out of range refused before work + 3 n (2 INT_MIN
+     * overflowed), nothing written */
+    zup[0] = mup[0] = 7.0;
+    wheel.n = INT_MIN;
+    CHECK_STATUS(rr_profile_surface(&wheel, zup, mup, work), RR_ERR_PARAM, "surface: n INT_MIN");
+    wheel.n = INT_MAX;
+    CHECK_STATUS(rr_profile_surface(&wheel, zup, mup, work), RR_ERR_PARAM, "surface: n INT_MAX");
+    CHECK(zup[0] == 7.0 && mup[0] == 7.0, "surface: n out of range writes nothing");
+    wheel.n = 3;
+    CHECK_STATUS(rr_profile_surface(&wheel, zup, mup, work), RR_ERR_PARAM, "surface: n = 3");
+    CHECK(all_nan(zup, 3) && all_nan(mup, 3), "surface: n = 3 -> NaN");
     wheel.n = RR_RIG_PROFILE_POINTS;
 
     /* rr_profile_table_build's errors */
