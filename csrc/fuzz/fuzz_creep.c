@@ -603,8 +603,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         check_forces("rr_polach", st, &c, &fr, 1, invalid, &f);
         o.method = RR_METHOD_POLACH;
         st2 = rr_creep_forces(&c, &fr, &o, &f2);
-        if (st2 != st || memcmp(&f, &f2, sizeof f) != 0)
+        /* the dispatcher checks the options first, in the descriptor's
+         * order (kA, then kS); rr_polach both for finiteness first: with
+         * invalid options only the dispatcher's own status is promised */
+        if (rr_creep_opts_check(&o) != RR_OK) {
+            if (st2 != rr_creep_opts_check(&o) || !isnan(f2.fx) || !isnan(f2.fy) || !isnan(f2.mz))
+                fz_fail("rr_creep_forces: invalid Polach options, status %d (check %d)", st2,
+                        rr_creep_opts_check(&o));
+        } else if (st2 != st || memcmp(&f, &f2, sizeof f) != 0) {
             fz_fail("rr_creep_forces: Polach differs from rr_polach");
+        }
         break;
     }
     case 3:
