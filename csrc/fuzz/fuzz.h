@@ -326,4 +326,59 @@ static inline void *fz_alloc(size_t n)
     return p;
 }
 
+/* Guarded caller buffers: nbytes for the call between FZ_GUARD bytes of a
+ * canary on either side, the inside filled with the canary too (so that
+ * "left alone" can be checked against it), on the heap.  fz_guard_ok fails
+ * the oracle if a canary byte changed: a write beyond the documented
+ * length that lands inside the allocation, which ASan cannot see. */
+#define FZ_GUARD 64
+#define FZ_CANARY 0xA5
+
+static inline void *fz_guarded(size_t nbytes)
+{
+    unsigned char *p = fz_alloc(nbytes + 2 * FZ_GUARD);
+    memset(p, FZ_CANARY, nbytes + 2 * FZ_GUARD);
+    return p + FZ_GUARD;
+}
+
+static inline void fz_guard_ok(const char *fn, const void *buf, size_t nbytes, const char *what)
+{
+    const unsigned char *p = buf;
+    size_t i;
+    if (!p)
+        return;
+    for (i = 0; i < FZ_GUARD; i++)
+        if (p[-(ptrdiff_t)FZ_GUARD + (ptrdiff_t)i] != FZ_CANARY || p[nbytes + i] != FZ_CANARY)
+            fz_fail("%s: wrote outside %s (%zu bytes): guard byte %s%zu changed", fn, what,
+                    nbytes, p[nbytes + i] != FZ_CANARY ? "+" : "-",
+                    p[nbytes + i] != FZ_CANARY ? i : FZ_GUARD - i);
+}
+
+/* 1 if the nbytes inside the guards are all still the canary. */
+static inline int fz_untouched(const void *buf, size_t nbytes)
+{
+    const unsigned char *p = buf;
+    size_t i;
+    for (i = 0; i < nbytes; i++)
+        if (p[i] != FZ_CANARY)
+            return 0;
+    return 1;
+}
+
+static inline void fz_guard_free(void *buf)
+{
+    if (buf)
+        free((unsigned char *)buf - FZ_GUARD);
+}
+
+/* 1 if v[0..n-1] are all NaN. */
+static inline int fz_all_nan(const double *v, long n)
+{
+    long i;
+    for (i = 0; i < n; i++)
+        if (!isnan(v[i]))
+            return 0;
+    return 1;
+}
+
 #endif

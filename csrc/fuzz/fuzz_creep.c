@@ -1,7 +1,10 @@
 /*
  * fuzz_creep.c - the creep-force methods: rr_creep_forces over every method
  * and option, rr_linear, rr_polach, rr_fastsim with and without (parts of)
- * its traction field, and the checks and friction law they share.
+ * its traction field, and the checks and friction law they share; and the
+ * registry: rr_method_count/get/find, rr_creep_opts_default/set/check_at,
+ * rr_creep_cost/saturates/slope_scale/workspace_len, rr_creep_forces_work
+ * and rr_creep_field.
  *
  * Input: one byte choosing the entry point, then the contact case (semi-
  * axes 0.1 .. 20 mm, load 1 N .. 100 kN, G 1 .. 100 GPa, creepages of
@@ -17,7 +20,16 @@
  * gives, and for the traction field: finite values, pn >= 0, the traction
  * bound per element, the slip flags and their count, pressure summing to N
  * and tractions to (fx, fy) (on the rectangular grid, whose elements are
- * all 2a/nx by 2b/ny).
+ * all 2a/nx by 2b/ny).  Registry: count, get and find agree (and refuse
+ * what is none); a method's defaults its descriptor's, NaN past them; a
+ * setter's status predicted from the option's type and range, the options
+ * unchanged on error and only that value on success; check_at = check, *bad
+ * an option's index (-1 for an unknown method); cost >= 1, slope scale > 0
+ * finite and saturates as the descriptor (0 only for the linear theory)
+ * for valid options, 0, NaN, 0, 0 else; rr_creep_forces_work with the
+ * workspace asked for exactly rr_creep_forces, one double short refused;
+ * rr_creep_field's arrays of the descriptor's field_shape between canaries,
+ * RR_ERR_METHOD for a method without a field, NaN forces on error.
  */
 #include "fuzz.h"
 
@@ -254,9 +266,8 @@ static void run_fastsim(fz_in *in, const rr_contact_case *c, const rr_friction *
                         rr_creep_opts *o)
 {
     const int mode = fz_choice(in, 3), mask = (int)fz_u8(in);
-    const int grid_ok = !bad_int(o->v[RR_FASTSIM_NX], 1, RR_FASTSIM_MAX_GRID)
-                        && !bad_int(o->v[RR_FASTSIM_NY], 1, RR_FASTSIM_MAX_GRID);
-    const size_t n = grid_ok ? (size_t)o->v[RR_FASTSIM_NX] * (size_t)o->v[RR_FASTSIM_NY] : 0;
+    int grid_ok;
+    size_t n;
     rr_fastsim_field fl;
     rr_forces f, f2;
     int st, st2, invalid;
@@ -267,6 +278,11 @@ static void run_fastsim(fz_in *in, const rr_contact_case *c, const rr_friction *
         if (!is_fastsim(from))
             rr_creep_opts_default(o, o->method);    /* the others' values mean other options */
     }
+    /* the grid of the options as they are now (a switch of method above
+     * resets them: sized before it, the field was too short for them) */
+    grid_ok = !bad_int(o->v[RR_FASTSIM_NX], 1, RR_FASTSIM_MAX_GRID)
+              && !bad_int(o->v[RR_FASTSIM_NY], 1, RR_FASTSIM_MAX_GRID);
+    n = grid_ok ? (size_t)o->v[RR_FASTSIM_NX] * (size_t)o->v[RR_FASTSIM_NY] : 0;
     fz_note("; rr_fastsim method %d, field mode %d mask %d", o->method, mode, mask);
     invalid = contact_invalid(c) || friction_invalid(fr) || opts_invalid(o) || !is_fastsim(o->method)
               || (falling(fr) && !(c->speed > 0.0));
@@ -354,10 +370,184 @@ static void run_shared(fz_in *in, const rr_contact_case *c, const rr_friction *f
     }
 }
 
+/* the status rr_creep_opts_set must give for value on option op */
+static int predict_option(const rr_creep_option *op, double x)
+{
+    if (op->type == RR_OPT_REAL && !isfinite(x))
+        return RR_ERR_NONFINITE;
+    if (!isfinite(x))
+        return op->status;
+    if ((op->lo_open ? !(x > op->lo) : !(x >= op->lo)) || (op->hi_open ? !(x < op->hi) : !(x <= op->hi)))
+        return op->status;
+    if (op->type == RR_OPT_INT && x != floor(x))
+        return op->status;
+    if (op->type == RR_OPT_CHOICE) {
+        int n = 0;
+        while (op->choices && op->choices[n])
+            n++;
+        if (!(x == floor(x) && x >= 0.0 && x < n))
+            return op->status;
+    }
+    return RR_OK;
+}
+
+/* The registry: rr_method_count/get/find, rr_creep_opts_default/set/
+ * check_at, cost, saturates, slope scale, workspace length, and
+ * rr_creep_forces_work and rr_creep_field against rr_creep_forces. */
+static void run_registry(fz_in *in, const rr_contact_case *c, const rr_friction *fr,
+                         rr_creep_opts *o)
+{
+    const int m = fz_int(in, 0, RR_METHOD_COUNT - 1);
+    const rr_method_desc *d = rr_method_get(m);
+    const int nset = fz_range(in, 0, 4);
+    rr_creep_opts before;
+    rr_forces f, f2;
+    int i, st, st2, bad = -99;
+
+    if (rr_method_count() != RR_METHOD_COUNT || rr_method_get(-1) || rr_method_get(RR_METHOD_COUNT)
+        || rr_method_find(NULL) != RR_ERR_NULL || rr_method_find("no-such-method") != RR_ERR_METHOD)
+        fz_fail("rr_method_count/get/find: the edges not as documented");
+    if ((m >= 0 && m < RR_METHOD_COUNT) != (d != NULL)
+        || (d && rr_method_find(d->name) != m))
+        fz_fail("rr_method_get/find: method %d", m);
+    /* the defaults of method m (known or not) */
+    st = rr_creep_opts_default(o, m);
+    if (st != (d ? RR_OK : RR_ERR_METHOD) || o->method != m)
+        fz_fail("rr_creep_opts_default(%d): status %d, method %d", m, st, o->method);
+    for (i = 0; i < RR_CREEP_MAX_OPTS; i++) {
+        const int own = d && i < d->nopts;
+        if (own ? !(o->v[i] == d->opts[i].def) : !isnan(o->v[i]))
+            fz_fail("rr_creep_opts_default(%d): v[%d] = %g", m, i, o->v[i]);
+    }
+    if (rr_creep_opts_default(NULL, 0) != RR_ERR_NULL)
+        fz_fail("rr_creep_opts_default(NULL): not RR_ERR_NULL");
+    for (i = 0; i < nset; i++) {
+        const int k = fz_int(in, 0, d ? d->nopts - 1 : 0);
+        const rr_creep_option *op = d && k >= 0 && k < d->nopts ? &d->opts[k] : NULL;
+        const char *name = op ? op->name : fz_choice(in, 4) == 0 ? NULL : "no-such-option";
+        const double x = op && op->type != RR_OPT_REAL && fz_choice(in, 2)
+                             ? (double)fz_int(in, (int)fmax(op->lo, -1e6), (int)fmin(op->hi, 64.0))
+                             : fz_lin(in, op ? fmax(op->lo, -10.0) : 0.0, op ? fmin(op->hi, 10.0) : 1.0);
+        const int want = !name ? RR_ERR_NULL : !d ? RR_ERR_METHOD : !op ? RR_ERR_PARAM
+                         : predict_option(op, x);
+        before = *o;
+        st = rr_creep_opts_set(o, name, x);
+        fz_note("; opts_set %s = %.17g: %d", name ? name : "NULL", x, st);
+        fz_status("rr_creep_opts_set", st);
+        if (st != want && !(want == RR_ERR_METHOD && st == RR_ERR_METHOD))
+            fz_fail("rr_creep_opts_set: %s = %.17g: status %d, the header's %d",
+                    name ? name : "NULL", x, st, want);
+        if (st != RR_OK) {
+            fz_same("rr_creep_opts_set", &before, o, sizeof *o, "the options (on error)");
+        } else {
+            before.v[k] = x;
+            if (memcmp(&before, o, sizeof *o) != 0)
+                fz_fail("rr_creep_opts_set: %s = %.17g: not exactly that option changed", name, x);
+        }
+    }
+    if (fz_choice(in, 4) == 0 && d && d->nopts > 0)
+        o->v[fz_range(in, 0, d->nopts - 1)] = fz_lin(in, -2.0, 5000.0);   /* by index, unchecked */
+    st = rr_creep_opts_check_at(o, &bad);
+    st2 = rr_creep_opts_check(o);
+    fz_status("rr_creep_opts_check_at", st);
+    if (st != st2 || (st < 0) != opts_invalid(o))
+        fz_fail("rr_creep_opts_check_at: status %d, rr_creep_opts_check %d, options %s", st, st2,
+                opts_invalid(o) ? "invalid" : "valid");
+    if (st < 0 && !(d ? bad >= 0 && bad < d->nopts : bad == -1))
+        fz_fail("rr_creep_opts_check_at: *bad = %d for method %d", bad, m);
+    {
+        const double cost = rr_creep_cost(o), slope = rr_creep_slope_scale(o);
+        const int sat = rr_creep_saturates(o);
+        const size_t wl = rr_creep_workspace_len(o);
+        if (st < 0 ? !(cost == 0.0 && isnan(slope) && sat == 0 && wl == 0)
+                   : !(isfinite(cost) && cost >= 1.0 && isfinite(slope) && slope > 0.0
+                       && sat == d->saturates && (sat == 0) == (m == RR_METHOD_LINEAR)))
+            fz_fail("rr_creep_cost %g, slope_scale %g, saturates %d, workspace %zu for %s "
+                    "options", cost, slope, sat, wl, st < 0 ? "invalid" : "valid");
+        if (st == RR_OK && !(cost <= (double)MAX_ELEMENTS * 2.0 + 1.0)
+            && d->field_shape == NULL)
+            fz_fail("rr_creep_cost %g for a closed form", cost);
+        /* rr_creep_forces_work with exactly the workspace asked for */
+        {
+            const size_t n = wl > 0 ? wl : 1;
+            double *work = fz_guarded(n * sizeof(double));
+            st = rr_creep_forces_work(c, fr, o, work, wl, &f);
+            fz_guard_ok("rr_creep_forces_work", work, n * sizeof(double), "work");
+            st2 = rr_creep_forces(c, fr, o, &f2);
+            if (wl == 0 && (st != st2 || memcmp(&f, &f2, sizeof f) != 0))
+                fz_fail("rr_creep_forces_work: status %d (%g, %g, %g), rr_creep_forces %d "
+                        "(%g, %g, %g)", st, f.fx, f.fy, f.mz, st2, f2.fx, f2.fy, f2.mz);
+            if (wl > 0 && (rr_creep_forces_work(c, fr, o, work, wl - 1, &f2) != RR_ERR_WORKSPACE
+                           || st2 != RR_ERR_WORKSPACE))
+                fz_fail("rr_creep_forces_work: a workspace one double short not refused");
+            if (st < 0 && (!isnan(f.fx) || !isnan(f.fy) || !isnan(f.mz)))
+                fz_fail("rr_creep_forces_work: error %d but the forces are not NaN", st);
+            if (st >= 0 && !(fz_known("extreme", known_extreme(c, fr))
+                             || fz_known("blended", known_blended(c, m))
+                             || fz_known("polach", m == RR_METHOD_POLACH && known_polach(c)))) {
+                FZ_FINITE("rr_creep_forces_work", st, f.fx);
+                FZ_FINITE("rr_creep_forces_work", st, f.fy);
+                FZ_FINITE("rr_creep_forces_work", st, f.mz);
+            }
+            fz_guard_free(work);
+        }
+    }
+    /* rr_creep_field: the field's shape, every array between canaries */
+    {
+        rr_traction_field fl;
+        int rows = 0, cols = 0;
+        size_t n = 1;
+        const int has = st2 >= 0 || (d && rr_creep_opts_check(o) == RR_OK);
+        memset(&fl, 0, sizeof fl);
+        if (has && d && d->field_shape) {
+            d->field_shape(o, &rows, &cols);
+            if (!(rows >= 1 && cols >= 1 && (size_t)rows * (size_t)cols <= (size_t)MAX_ELEMENTS))
+                fz_fail("field_shape: %d x %d for valid options", rows, cols);
+            n = (size_t)rows * (size_t)cols;
+        }
+        fl.x = fz_guarded(n * sizeof(double));
+        fl.y = fz_guarded(n * sizeof(double));
+        fl.area = fz_guarded(n * sizeof(double));
+        fl.pn = fz_guarded(n * sizeof(double));
+        fl.px = fz_guarded(n * sizeof(double));
+        fl.py = fz_guarded(n * sizeof(double));
+        fl.slip = fz_guarded(n);
+        st = rr_creep_field(c, fr, o, &f, &fl);
+        fz_status("rr_creep_field", st);
+        fz_guard_ok("rr_creep_field", fl.x, n * sizeof(double), "x");
+        fz_guard_ok("rr_creep_field", fl.y, n * sizeof(double), "y");
+        fz_guard_ok("rr_creep_field", fl.area, n * sizeof(double), "area");
+        fz_guard_ok("rr_creep_field", fl.pn, n * sizeof(double), "pn");
+        fz_guard_ok("rr_creep_field", fl.px, n * sizeof(double), "px");
+        fz_guard_ok("rr_creep_field", fl.py, n * sizeof(double), "py");
+        fz_guard_ok("rr_creep_field", fl.slip, n, "slip");
+        if (d && !d->field && rr_creep_opts_check(o) == RR_OK && st != RR_ERR_METHOD)
+            fz_fail("rr_creep_field: method %s has no field, status %d", d->name, st);
+        if (st < 0 && (!isnan(f.fx) || !isnan(f.fy) || !isnan(f.mz)))
+            fz_fail("rr_creep_field: error %d but the forces are not NaN", st);
+        if (st >= 0 && !(fz_known("extreme", known_extreme(c, fr))
+                         || fz_known("blended", known_blended(c, m)))) {
+            FZ_FINITE("rr_creep_field", st, f.fx);
+            FZ_FINITE("rr_creep_field", st, f.fy);
+            FZ_FINITE("rr_creep_field", st, f.mz);
+            fz_bound("rr_creep_field", st, f.fx, f.fy, fr->mu0, c->N);
+            if (!(fl.nslip >= 0 && (size_t)fl.nslip <= n))
+                fz_fail("rr_creep_field: nslip = %d of %zu elements", fl.nslip, n);
+        }
+        fz_guard_free(fl.x);
+        fz_guard_free(fl.y);
+        fz_guard_free(fl.area);
+        fz_guard_free(fl.pn);
+        fz_guard_free(fl.px);
+        fz_guard_free(fl.py);
+        fz_guard_free(fl.slip);
+    }
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fz_in in = fz_start(data, size);
-    const int op = fz_choice(&in, 5);
+    const int op = fz_choice(&in, 6);
     rr_contact_case c;
     rr_friction fr;
     rr_creep_opts o;
@@ -413,15 +603,26 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         check_forces("rr_polach", st, &c, &fr, 1, invalid, &f);
         o.method = RR_METHOD_POLACH;
         st2 = rr_creep_forces(&c, &fr, &o, &f2);
-        if (st2 != st || memcmp(&f, &f2, sizeof f) != 0)
+        /* the dispatcher checks the options first, in the descriptor's
+         * order (kA, then kS); rr_polach both for finiteness first: with
+         * invalid options only the dispatcher's own status is promised */
+        if (rr_creep_opts_check(&o) != RR_OK) {
+            if (st2 != rr_creep_opts_check(&o) || !isnan(f2.fx) || !isnan(f2.fy) || !isnan(f2.mz))
+                fz_fail("rr_creep_forces: invalid Polach options, status %d (check %d)", st2,
+                        rr_creep_opts_check(&o));
+        } else if (st2 != st || memcmp(&f, &f2, sizeof f) != 0) {
             fz_fail("rr_creep_forces: Polach differs from rr_polach");
+        }
         break;
     }
     case 3:
         run_fastsim(&in, &c, &fr, &o);
         break;
-    default:
+    case 4:
         run_shared(&in, &c, &fr, &o);
+        break;
+    default:
+        run_registry(&in, &c, &fr, &o);
         break;
     }
     return 0;

@@ -10,7 +10,8 @@ import os
 import random
 
 TARGETS = ("fuzz_control", "fuzz_creep", "fuzz_creepage", "fuzz_geometry", "fuzz_hertz",
-           "fuzz_kalker", "fuzz_ode", "fuzz_rig", "fuzz_rig_contact", "fuzz_spline")
+           "fuzz_kalker", "fuzz_ode", "fuzz_rig", "fuzz_rig_contact", "fuzz_rig_params",
+           "fuzz_spline", "fuzz_spline_fit", "fuzz_tables")
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 

@@ -83,6 +83,11 @@ int rr_profile_crowned(double crown_radius, double y_min, double y_max, int n, d
     return RR_OK;
 }
 
+static int count_ok(int n)
+{
+    return n >= RR_SPLINE_MIN_POINTS && n <= RR_SPLINE_MAX_POINTS;
+}
+
 int rr_profile_surface(const rr_profile_points *p, double *zup, double *mup, double *work)
 {
     int i, st;
@@ -94,6 +99,16 @@ int rr_profile_surface(const rr_profile_points *p, double *zup, double *mup, dou
             fill_nan(mup, p->n);
         }
         return RR_ERR_WORKSPACE;
+    }
+    /* a count out of range is refused before work + 3 n is formed (for
+     * n near INT_MAX or INT_MIN the products overflow, and any n beyond the
+     * buffer makes the pointers undefined) */
+    if (!count_ok(p->n)) {
+        if (p->n >= 1 && p->n <= RR_SPLINE_MAX_POINTS) {
+            fill_nan(zup, p->n);
+            fill_nan(mup, p->n);
+        }
+        return RR_ERR_PARAM;
     }
     /* work: slopes, c2, c3 (n - 1 used), the fit's own n */
     st = rr_spline_fit(p->n, p->y, p->z, p->end, work, work + p->n, work + 2 * p->n,
@@ -112,11 +127,6 @@ int rr_profile_surface(const rr_profile_points *p, double *zup, double *mup, dou
         mup[i] = -mup[i];
     }
     return RR_OK;
-}
-
-static int count_ok(int n)
-{
-    return n >= RR_SPLINE_MIN_POINTS && n <= RR_SPLINE_MAX_POINTS;
 }
 
 long rr_profile_table_work_len(int n_wheel, int n_roller)

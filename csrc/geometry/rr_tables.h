@@ -73,7 +73,8 @@ typedef struct {
  *   given:   p; work, 4 p->n doubles
  *   returns: zup[n], mup[n]; with p->y they make an rr_spline
  *   status:  0 OK; RR_ERR_NULL (p NULL), RR_ERR_WORKSPACE (zup, mup or
- *            work NULL), errors of rr_spline_fit
+ *            work NULL), errors of rr_spline_fit and rr_spline_knot_d2
+ *            (RR_ERR_RANGE); zup, mup NaN on error (when p->n is in range)
  */
 int rr_profile_surface(const rr_profile_points *p, double *zup, double *mup, double *work);
 

@@ -714,6 +714,14 @@ int rr_rig_params_from(const rr_rig_config *c, const rr_contact_table *t, rr_rig
     p->creepctl.beta = c->ctl_beta;
     p->creepctl.vmin = c->ctl_vmin;
     p->creepctl.sense = drive_senses[c->drive_mode];
+    /* the derived doubles: values each in range can overflow together */
+    {
+        const double derived[3] = {p->Iyy, p->contact.estar, p->contact.G};
+        if (!rr_all_finite(derived, 3)) {
+            memset(p, 0, sizeof *p);
+            return RR_ERR_RANGE;
+        }
+    }
     return t ? rr_rig_params_set_table(p, t) : RR_OK;
 }
 
@@ -763,5 +771,11 @@ int rr_rig_schedule(const rr_rig_config *c, long k, double *roller_ref, double *
             idx = i;
     *roller_ref = c->roller_speed / c->roller_radius;
     *xi_ref = idx >= 0 && idx < c->targets.n ? c->targets.v[idx] : NAN;
+    if (!isfinite(*roller_ref)) {
+        /* a radius so small (each value in its range) that the speed over
+         * it overflows */
+        *roller_ref = *xi_ref = NAN;
+        return RR_ERR_RANGE;
+    }
     return RR_OK;
 }

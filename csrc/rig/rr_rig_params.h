@@ -190,7 +190,8 @@ int rr_rig_config_check(const rr_rig_config *c, const char **bad);
  * the rows' defaults (FASTSIM, contact.fastsim_nx x fastsim_ny, rigid slip
  * speed): set p->contact.creep afterwards for another method.  With t not
  * NULL, rr_rig_params_set_table(p, t) follows.  Status: rr_rig_config_check's
- * (p zeroed), RR_ERR_NULL.
+ * (p zeroed), RR_ERR_RANGE (p zeroed: a derived value overflows, e.g. the
+ * sum of two inertias each near DBL_MAX), RR_ERR_NULL.
  */
 int rr_rig_params_from(const rr_rig_config *c, const rr_contact_table *t, rr_rig_params *p);
 
@@ -227,7 +228,8 @@ long rr_rig_samples(const rr_rig_config *c);
  * rr_rig_schedule - the references of sample k (which starts at t = k T):
  * roller_ref = roller_speed / roller_radius [rad/s]; xi_ref = the target of
  * the last start time <= t, NaN before the first (no creepage control), as
- * rollerrig.rig.schedule.  Status: RR_ERR_NULL, RR_ERR_PARAM for k < 0.
+ * rollerrig.rig.schedule.  Status: RR_ERR_NULL, RR_ERR_PARAM for k < 0,
+ * RR_ERR_RANGE (both NaN) where roller_ref overflows (a radius near 0).
  */
 int rr_rig_schedule(const rr_rig_config *c, long k, double *roller_ref, double *xi_ref);
 

@@ -87,5 +87,16 @@ int main(void)
     d.target_start.v[0] = 1.0;
     CHECK_STATUS(rr_rig_schedule(&d, 0, &r, &xi), RR_OK, "before the first");
     CHECK(isnan(xi), "NaN before the first start");
+    /* fuzz_rig_params: values each in range whose derived values overflow */
+    rr_rig_config_default(&c);
+    CHECK_STATUS(rr_rig_config_set(&c, "roller.radius_m", 1e-322), RR_OK, "tiny radius in range");
+    CHECK_STATUS(rr_rig_schedule(&c, 0, &r, &xi), RR_ERR_RANGE, "schedule: speed/radius overflows");
+    CHECK(isnan(r) && isnan(xi), "schedule: overflow -> NaN");
+    rr_rig_config_default(&c);
+    CHECK_STATUS(rr_rig_config_set(&c, "wheelset.spin_inertia_kg_m2", 1.5e308), RR_OK, "Iyy 1");
+    CHECK_STATUS(rr_rig_config_set(&c, "wheelset_drive.drive_inertia_kg_m2", 1.5e308), RR_OK,
+                 "Iyy 2");
+    CHECK_STATUS(rr_rig_params_from(&c, NULL, &p), RR_ERR_RANGE, "from: Iyy overflows");
+    CHECK(p.mass == 0.0 && p.Iyy == 0.0, "from: overflow -> p zeroed");
     return rr_test_summary();
 }

@@ -1,6 +1,7 @@
 /* test_tables.c - the profile spline (rr_spline_fit), the analytic
  * profiles, and contact tables from points and from the rig's geometry
  * (rr_tables.h), with every error status. */
+#include <limits.h>
 #include <math.h>
 #include <string.h>
 #include "rr_test.h"
@@ -101,6 +102,25 @@ static void test_spline_fit(void)
     }
     CHECK_STATUS(rr_spline_fit(NP, y, z, 0, s, c2, c3, w), RR_ERR_RANGE, "fit: overflow");
     CHECK(all_nan(s, NP) && all_nan(c2, NP - 1) && all_nan(c3, NP - 1), "fit: overflow -> NaN");
+    for (i = 0; i < NP; i++) {
+        y[i] = i < NP - 1 ? i * 1e-3 : 1e150;   /* fuzz_spline_fit: h^3 overflows, c3 = 0 */
+        z[i] = 3.5e-4;
+    }
+    z[1] = 0.0;
+    CHECK_STATUS(rr_spline_fit(NP, y, z, 1, s, c2, c3, w), RR_ERR_RANGE, "fit: h^3 overflows");
+    CHECK(all_nan(s, NP) && all_nan(c2, NP - 1) && all_nan(c3, NP - 1), "fit: h^3 -> NaN");
+    {
+        /* fuzz_spline_fit: c3 finite but 6 c3 infinite, times t = 0 NaN */
+        double cc2[NP], cc3[NP];
+        for (i = 0; i < NP; i++) {
+            y[i] = i * 1e-5;
+            cc2[i] = 0.0;
+            cc3[i] = 1e308;
+        }
+        CHECK_STATUS(rr_spline_knot_d2(NP, y, cc2, cc3, d2), RR_ERR_RANGE,
+                     "knot d2: 6 c3 overflows");
+        CHECK(all_nan(d2, NP), "knot d2: overflow -> NaN");
+    }
     CHECK_STATUS(rr_spline_knot_d2(3, y, c2, c3, d2), RR_ERR_PARAM, "knot d2: n = 3");
     CHECK_STATUS(rr_spline_knot_d2(NP, NULL, c2, c3, d2), RR_ERR_NULL, "knot d2: y NULL");
     CHECK_STATUS(rr_spline_knot_d2(NP, y, c2, NULL, d2), RR_ERR_NULL, "knot d2: c3 NULL");
@@ -223,6 +243,17 @@ static void test_rig_table(void)
     wheel.end = 7;
     CHECK_STATUS(rr_profile_surface(&wheel, zup, mup, work), RR_ERR_PARAM, "surface: bad end");
     wheel.end = RR_SPLINE_NOT_A_KNOT;
+    /* fuzz_tables: n out of range refused before work + 3 n (2 INT_MIN
+     * overflowed), nothing written */
+    zup[0] = mup[0] = 7.0;
+    wheel.n = INT_MIN;
+    CHECK_STATUS(rr_profile_surface(&wheel, zup, mup, work), RR_ERR_PARAM, "surface: n INT_MIN");
+    wheel.n = INT_MAX;
+    CHECK_STATUS(rr_profile_surface(&wheel, zup, mup, work), RR_ERR_PARAM, "surface: n INT_MAX");
+    CHECK(zup[0] == 7.0 && mup[0] == 7.0, "surface: n out of range writes nothing");
+    wheel.n = 3;
+    CHECK_STATUS(rr_profile_surface(&wheel, zup, mup, work), RR_ERR_PARAM, "surface: n = 3");
+    CHECK(all_nan(zup, 3) && all_nan(mup, 3), "surface: n = 3 -> NaN");
     wheel.n = RR_RIG_PROFILE_POINTS;
 
     /* rr_profile_table_build's errors */

@@ -231,6 +231,11 @@ int rr_spline_fit(int n, const double *y, const double *z, int end, double *slop
         const double h = y[i + 1] - y[i], d = (z[i + 1] - z[i]) / h;
         c2[i] = (3.0 * d - 2.0 * slope[i] - slope[i + 1]) / h;
         c3[i] = (slope[i] + slope[i + 1] - 2.0 * d) / (h * h);
+        /* an interval so long that h^3 overflows: c3 (of the order of
+         * z / h^3) rounds to 0 and the coefficients no longer give the
+         * spline (a finite wrong answer) */
+        if (!isfinite(h * h * h))
+            c3[i] = NAN;
     }
     if (!rr_all_finite(slope, n) || !rr_all_finite(c2, n - 1) || !rr_all_finite(c3, n - 1)) {
         fill_nan(slope, n);
@@ -257,5 +262,11 @@ int rr_spline_knot_d2(int n, const double *y, const double *c2, const double *c3
         d2[i] = 2.0 * c2[i] + 6.0 * c3[i] * t;
     }
     d2[n - 1] = 2.0 * c2[n - 2] + 6.0 * c3[n - 2] * (y[n - 1] - y[n - 2]);
+    /* a c3 beyond DBL_MAX / 6 (finite, so the fit accepted it) makes 6 c3
+     * infinite, and times t = 0 NaN: no second derivative to give */
+    if (!rr_all_finite(d2, n)) {
+        fill_nan(d2, n);
+        return RR_ERR_RANGE;
+    }
     return RR_OK;
 }

@@ -81,7 +81,8 @@ enum rr_spline_end {
  *            c3 or work NULL), RR_ERR_PARAM (n out of range, end unknown),
  *            RR_ERR_NONFINITE, RR_ERR_GEOMETRY (y not strictly increasing),
  *            RR_ERR_RANGE (a coefficient not finite: points far too close
- *            for their values).  On error the outputs it can reach are NaN.
+ *            for their values, or an interval so long, beyond 5e102, that
+ *            its cube overflows).  On error the outputs it can reach are NaN.
  */
 int rr_spline_fit(int n, const double *y, const double *z, int end, double *slope,
                   double *c2, double *c3, double *work);
@@ -91,7 +92,8 @@ int rr_spline_fit(int n, const double *y, const double *z, int end, double *slop
  * spline, as its coefficients give them (2 c2_i at y_i, 2 c2 + 6 c3 h at
  * the last knot): the m of an rr_spline for the same curve.
  *   status:  0 OK; RR_ERR_NULL (y, c2 or c3 NULL), RR_ERR_WORKSPACE (d2
- *            NULL), RR_ERR_PARAM (n out of range)
+ *            NULL), RR_ERR_PARAM (n out of range), RR_ERR_RANGE (a second
+ *            derivative not finite: coefficients near DBL_MAX; d2 NaN)
  */
 int rr_spline_knot_d2(int n, const double *y, const double *c2, const double *c3, double *d2);
 
