@@ -552,13 +552,6 @@ static PyObject *py_check_creep_options(PyObject *self, PyObject *args)
     Py_RETURN_NONE;
 }
 
-/* Work units of one case of a method (its descriptor's: FASTSIM elements,
- * 1 for a closed form), for the batch loop's chunks. */
-static double creep_cost(const rr_creep_opts *o)
-{
-    return rr_creep_cost(o);
-}
-
 static int creep_kernel(void *ctx, npy_intp start, npy_intp stop)
 {
     elementwise *b = ctx;
@@ -583,7 +576,7 @@ static PyObject *py_creep_forces(PyObject *self, PyObject *args, PyObject *kwarg
     if (parse_opts(kwargs, "creep_forces", NULL, &b.o) < 0)
         return NULL;
     return elementwise_call("creep_forces", args, case_names, NCASE, 3, creep_kernel, &b,
-                            creep_cost(&b.o));
+                            rr_creep_cost(&b.o));
 }
 
 /* CreepOptions(**options): a method and its options, parsed and checked
@@ -1233,7 +1226,7 @@ static PyObject *py_rig_contact(PyObject *self, PyObject *args, PyObject *kwargs
     b.right_status = OUT8(out[5]);
     /* two contacts a case, plus the kinematics (about 8 closed-form cases' work) */
     if (run_batch(rig_contact_kernel, &b, n,
-                  kin_only ? 8.0 : 8.0 + 2.0 * creep_cost(&m.creep)) < 0)
+                  kin_only ? 8.0 : 8.0 + 2.0 * rr_creep_cost(&m.creep)) < 0)
         goto fail;
     if ((res = outputs_tuple(out, 6)) != NULL)
         return res;
@@ -2071,16 +2064,17 @@ static PyObject *param_default(const rr_rig_param *r)
     }
 }
 
-static PyObject *param_choices(const rr_rig_param *r)
+/* A NULL-terminated list of names (NULL: none) as a tuple of str. */
+static PyObject *names_tuple(const char *const *names)
 {
     Py_ssize_t n = 0, k;
     PyObject *t;
-    while (r->choices && r->choices[n])
+    while (names && names[n])
         n++;
     if (!(t = PyTuple_New(n)))
         return NULL;
     for (k = 0; k < n; k++) {
-        PyObject *x = PyUnicode_FromString(r->choices[k]);
+        PyObject *x = PyUnicode_FromString(names[k]);
         if (!x) {
             Py_DECREF(t);
             return NULL;
@@ -2094,7 +2088,7 @@ static PyObject *param_tuple(int i)
 {
     static const char *const types[] = {"real", "int", "flag", "choice", "list"};
     const rr_rig_param *r = rr_rig_param_at(i);
-    PyObject *dflt = param_default(r), *choices = param_choices(r), *res = NULL;
+    PyObject *dflt = param_default(r), *choices = names_tuple(r->choices), *res = NULL;
     if (dflt && choices)
         res = Py_BuildValue("(sssOddOOOzOs)", r->name, r->unit, types[r->type], dflt, r->lo,
                             r->hi, r->lo_open ? Py_True : Py_False,
@@ -2163,17 +2157,8 @@ static PyObject *option_tuple(const rr_creep_option *op)
 {
     static const char *const types[] = {"int", "real", "choice"};
     PyObject *choices, *def, *lo, *hi;
-    int k, n = op->type == RR_OPT_CHOICE ? choice_count(op) : 0;
-    if (!(choices = PyTuple_New(n)))
+    if (!(choices = names_tuple(op->type == RR_OPT_CHOICE ? op->choices : NULL)))
         return NULL;
-    for (k = 0; k < n; k++) {
-        PyObject *c = PyUnicode_FromString(op->choices[k]);
-        if (!c) {
-            Py_DECREF(choices);
-            return NULL;
-        }
-        PyTuple_SET_ITEM(choices, k, c);
-    }
     if (op->type == RR_OPT_CHOICE) {
         def = PyUnicode_FromString(op->choices[(int)op->def]);
         Py_INCREF(Py_None);

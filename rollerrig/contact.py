@@ -121,11 +121,9 @@ def _scalar_options(method, options):
 
 def _scalar_creep(method, options, friction, case):
     """CreepForces of one case of plain numbers with status 0, else None."""
-    if friction is None:
-        fA, fB = 1.0, 0.0
-    elif type(friction) is FallingFriction:
-        fA, fB = friction.A, friction.B
-    else:
+    try:
+        fA, fB = _friction("creep_forces", friction)
+    except RollerRigError:                           # the general path says why
         return None
     if not _PLAIN.issuperset(map(type, case)) or type(fA) not in _PLAIN \
             or type(fB) not in _PLAIN:

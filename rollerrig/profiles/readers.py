@@ -350,29 +350,27 @@ def _read_text(path, where, kind, units):
                                  f"'lateral vertical', got {len(vals)}")
         rows.append(vals)
         lines.append(lineno)
-    file_units = meta.get("units")
-    if file_units is not None and file_units not in UNITS:
-        raise RollerRigError(f"{where}: units = {file_units!r} in the file is not one of "
-                             f"{sorted(UNITS)}")
-    if units is not None and file_units is not None and units != file_units:
-        raise RollerRigError(f"{where}: units = {units!r} contradicts the file's "
-                             f"units = {file_units!r}")
+    file_units = _header_value(where, meta, "units", UNITS, f"one of {sorted(UNITS)}", units)
     units = units or file_units or "mm"
     if not rows:
         raise RollerRigError(f"{where}: no points")
     pts = np.array(rows, dtype=float) * UNITS[units]
-    file_kind = meta.get("kind")
-    if file_kind is not None and file_kind not in KINDS:
-        raise RollerRigError(f"{where}: kind = {file_kind!r} in the file is not 'wheel' or "
-                             f"'rail'")
-    if file_kind is not None and kind is not None and file_kind != kind:
-        raise RollerRigError(f"{where}: kind = {kind!r} contradicts the file's "
-                             f"kind = {file_kind!r}")
-    bc = meta.get("bc")
-    if bc is not None and bc not in BCS:
-        raise RollerRigError(f"{where}: bc = {bc!r} in the file is not one of {BCS}")
+    file_kind = _header_value(where, meta, "kind", KINDS, "'wheel' or 'rail'", kind)
+    bc = _header_value(where, meta, "bc", BCS, f"one of {BCS}")
     return RawProfile(pts[:, 0], pts[:, 1], np.array(lines, dtype=int), kind or file_kind,
                       meta, units, bc)
+
+
+def _header_value(where, meta, key, allowed, shown, given=None):
+    """A header key's value (None if absent): one of `allowed`, and the same
+    as the caller's `given` where both are set."""
+    value = meta.get(key)
+    if value is not None and value not in allowed:
+        raise RollerRigError(f"{where}: {key} = {value!r} in the file is not {shown}")
+    if value is not None and given is not None and given != value:
+        raise RollerRigError(f"{where}: {key} = {given!r} contradicts the file's "
+                             f"{key} = {value!r}")
+    return value
 
 
 def _not_number(field):
