@@ -193,6 +193,8 @@ typedef struct {
     double *out[MAX_OUT];
     npy_int8 *st;
     rr_creep_opts o;
+    double *work;          /* the method's workspace (creep_forces), NULL if none */
+    size_t work_len;
 } elementwise;
 
 /* The elementwise call func(*arrays): nin input arrays from args, named
@@ -561,7 +563,7 @@ static int creep_kernel(void *ctx, npy_intp start, npy_intp stop)
         rr_friction fr;
         rr_forces f;
         load_case(b->in, i, &c, &fr);
-        b->st[i] = (npy_int8)rr_creep_forces(&c, &fr, &b->o, &f);
+        b->st[i] = (npy_int8)rr_creep_forces_work(&c, &fr, &b->o, b->work, b->work_len, &f);
         b->out[0][i] = f.fx;
         b->out[1][i] = f.fy;
         b->out[2][i] = f.mz;
@@ -572,11 +574,21 @@ static int creep_kernel(void *ctx, npy_intp start, npy_intp stop)
 static PyObject *py_creep_forces(PyObject *self, PyObject *args, PyObject *kwargs)
 {
     elementwise b;
+    PyObject *res;
     (void)self;
     if (parse_opts(kwargs, "creep_forces", NULL, &b.o) < 0)
         return NULL;
-    return elementwise_call("creep_forces", args, case_names, NCASE, 3, creep_kernel, &b,
-                            rr_creep_cost(&b.o));
+    /* one workspace for the whole batch, zero-filled: a method may keep
+     * what it can reuse from one case to the next there (the exact
+     * solver's kernel spectra); each call, so each thread, has its own */
+    b.work_len = rr_creep_workspace_len(&b.o);
+    b.work = NULL;
+    if (b.work_len > 0 && !(b.work = PyMem_Calloc(b.work_len, sizeof(double))))
+        return PyErr_NoMemory();
+    res = elementwise_call("creep_forces", args, case_names, NCASE, 3, creep_kernel, &b,
+                           rr_creep_cost(&b.o));
+    PyMem_Free(b.work);
+    return res;
 }
 
 /* CreepOptions(**options): a method and its options, parsed and checked
@@ -645,7 +657,22 @@ static PyObject *py_creep_forces1(PyObject *self, PyObject *const *args, Py_ssiz
     c.speed = v[9];
     fr.A = v[10];
     fr.B = v[11];
-    st = rr_creep_forces(&c, &fr, &((CreepOptionsObject *)args[0])->o, &f);
+    {
+        const rr_creep_opts *o = &((CreepOptionsObject *)args[0])->o;
+        const size_t work_len = rr_creep_workspace_len(o);
+        if (work_len == 0) {
+            st = rr_creep_forces(&c, &fr, o, &f);
+        } else {
+            /* a method with a workspace is a long computation: the GIL is let go */
+            double *work = PyMem_Calloc(work_len, sizeof(double));
+            if (!work)
+                return PyErr_NoMemory();
+            Py_BEGIN_ALLOW_THREADS
+            st = rr_creep_forces_work(&c, &fr, o, work, work_len, &f);
+            Py_END_ALLOW_THREADS
+            PyMem_Free(work);
+        }
+    }
     return Py_BuildValue("(dddi)", f.fx, f.fy, f.mz, st);
 }
 
@@ -736,6 +763,146 @@ fail:
     return NULL;
 }
 
+
+/* ------------------------------------------------------------ exact theory */
+
+/* exact_hertz_problem(<as creep_forces, one case>, method="exact", <options>)
+ * -> (status, mx, my, dx, dy, x0, y0, A, B, N, G, nu, mu, cx, cy, cphi,
+ * spin_shift, tol, maxit): the problem rr_exact_solve gets for a Hertzian
+ * case (rr_exact_hertz_problem), for exact_solve and its field. */
+static PyObject *py_exact_hertz_problem(PyObject *self, PyObject *args, PyObject *kwargs)
+{
+    PyObject *objs[NCASE];
+    input in[NCASE];
+    rr_creep_opts o;
+    rr_contact_case c;
+    rr_friction fr;
+    rr_exact_problem pb;
+    npy_intp n;
+    int k, st;
+    (void)self;
+
+    if (PyTuple_GET_SIZE(args) != NCASE) {
+        PyErr_Format(PyExc_TypeError, "exact_hertz_problem: expected %d arrays", NCASE);
+        return NULL;
+    }
+    for (k = 0; k < NCASE; k++)
+        objs[k] = PyTuple_GET_ITEM(args, k);
+    if (parse_opts(kwargs, "exact_field", NULL, &o) < 0)
+        return NULL;
+    if (o.method != RR_METHOD_EXACT) {
+        PyErr_Format(PyExc_ValueError, "exact_field: method must be 'exact', got '%s'",
+                     rr_method_get(o.method)->name);
+        return NULL;
+    }
+    if (parse_inputs("exact_field", objs, case_names, NCASE, &n, in) < 0)
+        return NULL;
+    if (n != 1) {
+        PyErr_Format(PyExc_ValueError, "exact_field: one case expected, got %zd",
+                     (Py_ssize_t)n);
+        return NULL;
+    }
+    load_case(in, 0, &c, &fr);
+    st = rr_exact_hertz_problem(&c, &fr, &o, &pb);
+    return Py_BuildValue("(iiidddddddddddddddi)", st, pb.grid.mx, pb.grid.my, pb.grid.dx,
+                         pb.grid.dy, pb.grid.x0, pb.grid.y0, pb.A, pb.B, pb.N, pb.G, pb.nu,
+                         pb.mu, pb.cx, pb.cy, pb.cphi, pb.spin_shift, pb.tol, pb.maxit);
+}
+
+typedef struct {
+    rr_exact_problem pb;
+    double *work;
+    size_t work_len;
+    rr_exact_result res;
+    rr_exact_field field;
+    int st;
+} exact_call;
+
+static int exact_kernel(void *ctx, npy_intp start, npy_intp stop)
+{
+    exact_call *k = ctx;
+    (void)start;
+    (void)stop;
+    k->st = rr_exact_solve(&k->pb, k->work, k->work_len, &k->res, &k->field);
+    return 0;
+}
+
+/* exact_solve(mx, my, dx, dy, x0, y0, h, A, B, N, G, nu, mu, cx, cy, cphi,
+ * spin_shift, tol, maxit) -> (status, (fx, fy, mz, fn, delta, area, pmax,
+ * ncontact, nslip, normal_products, tang_products, newton_steps,
+ * normal_residual, tang_residual), pn, px, py, sx, sy, state): one case of
+ * rr_exact_solve with its fields, arrays of shape (my, mx); h None for the
+ * Hertzian A x^2 + B y^2, else an array of my x mx values. */
+static PyObject *py_exact_solve(PyObject *self, PyObject *args)
+{
+    exact_call call;
+    rr_exact_problem *pb = &call.pb;
+    PyObject *hobj, *arr[6] = {NULL, NULL, NULL, NULL, NULL, NULL}, *res;
+    PyArrayObject *h = NULL;
+    npy_intp dims[2];
+    int k;
+    (void)self;
+
+    memset(&call, 0, sizeof call);
+    if (!PyArg_ParseTuple(args, "iiddddOdddddddddddi:exact_solve", &pb->grid.mx, &pb->grid.my,
+                          &pb->grid.dx, &pb->grid.dy, &pb->grid.x0, &pb->grid.y0, &hobj,
+                          &pb->A, &pb->B, &pb->N, &pb->G, &pb->nu, &pb->mu, &pb->cx, &pb->cy,
+                          &pb->cphi, &pb->spin_shift, &pb->tol, &pb->maxit))
+        return NULL;
+    if (pb->grid.mx < 1 || pb->grid.my < 1 || pb->grid.mx > RR_EXACT_MAX_GRID
+        || pb->grid.my > RR_EXACT_MAX_GRID) {
+        PyErr_Format(PyExc_ValueError, "exact_solve: the grid must have 1 to %d elements a "
+                     "side, got %d x %d", RR_EXACT_MAX_GRID, pb->grid.mx, pb->grid.my);
+        return NULL;
+    }
+    dims[0] = pb->grid.my;
+    dims[1] = pb->grid.mx;
+    if (hobj != Py_None) {
+        h = (PyArrayObject *)PyArray_FROMANY(hobj, NPY_DOUBLE, 2, 2, NPY_ARRAY_IN_ARRAY);
+        if (!h)
+            return NULL;
+        if (PyArray_DIM(h, 0) != dims[0] || PyArray_DIM(h, 1) != dims[1]) {
+            PyErr_Format(PyExc_ValueError, "exact_solve: h must have shape (%d, %d) (my, mx), "
+                         "got (%zd, %zd)", pb->grid.my, pb->grid.mx,
+                         (Py_ssize_t)PyArray_DIM(h, 0), (Py_ssize_t)PyArray_DIM(h, 1));
+            Py_DECREF(h);
+            return NULL;
+        }
+        pb->h = (const double *)PyArray_DATA(h);
+    }
+    for (k = 0; k < 6; k++)
+        if (!(arr[k] = PyArray_SimpleNew(2, dims, k < 5 ? NPY_DOUBLE : NPY_INT8)))
+            goto fail;
+    call.field.pn = OUT(arr[0]);
+    call.field.px = OUT(arr[1]);
+    call.field.py = OUT(arr[2]);
+    call.field.sx = OUT(arr[3]);
+    call.field.sy = OUT(arr[4]);
+    call.field.state = (signed char *)PyArray_DATA((PyArrayObject *)arr[5]);
+    call.work_len = rr_exact_workspace_len(pb->grid.mx, pb->grid.my);
+    if (!(call.work = PyMem_Calloc(call.work_len, sizeof(double)))) {
+        PyErr_NoMemory();
+        goto fail;
+    }
+    k = run_batch(exact_kernel, &call, 1, 1.0);
+    PyMem_Free(call.work);
+    if (k < 0)
+        goto fail;
+    Py_XDECREF(h);
+    {
+        const rr_exact_result *r = &call.res;
+        res = Py_BuildValue("(i(dddddddiiiiidd)NNNNNN)", call.st, r->fx, r->fy, r->mz, r->fn,
+                            r->delta, r->area, r->pmax, r->ncontact, r->nslip,
+                            r->normal_products, r->tang_products, r->newton_steps,
+                            r->normal_residual, r->tang_residual, arr[0], arr[1], arr[2],
+                            arr[3], arr[4], arr[5]);
+    }
+    return res;
+fail:
+    Py_XDECREF(h);
+    release(arr, 6);
+    return NULL;
+}
 
 /* ------------------------------------------------------- contact geometry */
 
@@ -1977,6 +2144,13 @@ static PyMethodDef core_methods[] = {
      "check_creep_options(func, {method: ..., <its options>}) -> None, or ValueError"},
     {"creep_forces1", (PyCFunction)(void (*)(void))py_creep_forces1, METH_FASTCALL,
      "creep_forces1(opts, cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B) -> (fx, fy, mz, status)"},
+    {"exact_hertz_problem", (PyCFunction)(void (*)(void))py_exact_hertz_problem,
+     METH_VARARGS | METH_KEYWORDS,
+     "exact_hertz_problem(<as creep_forces, one case>, method='exact', <options>) -> (status, "
+     "mx, my, dx, dy, x0, y0, A, B, N, G, nu, mu, cx, cy, cphi, spin_shift, tol, maxit)"},
+    {"exact_solve", py_exact_solve, METH_VARARGS,
+     "exact_solve(mx, my, dx, dy, x0, y0, h, A, B, N, G, nu, mu, cx, cy, cphi, spin_shift, "
+     "tol, maxit) -> (status, results, pn, px, py, sx, sy, state)"},
     {"fastsim_field", (PyCFunction)(void (*)(void))py_fastsim_field,
      METH_VARARGS | METH_KEYWORDS,
      "fastsim_field(<as creep_forces, one case>) -> (fx, fy, mz, status, x, y, pn, px, py, slip, area)"},

@@ -145,3 +145,57 @@ int rr_hertz_bodies(double A, double B, double N, double E1, double nu1, double 
     }
     return rr_hertz(A, B, N, estar, out);
 }
+
+int rr_hertz_curvatures(double a, double b, double N, double estar, double *A, double *B)
+{
+    double major, minor, k, e2, K, d_lo, d_hi, p0, s, c_lo, c_hi;
+    int st = RR_OK;
+
+    if (!A || !B)
+        return RR_ERR_NULL;
+    if (!isfinite(a) || !isfinite(b) || !isfinite(N) || !isfinite(estar))
+        st = RR_ERR_NONFINITE;
+    else if (!(a > 0.0) || !(b > 0.0) || !isnormal(a) || !isnormal(b))
+        st = RR_ERR_GEOMETRY;
+    else if (!(N > 0.0))
+        st = RR_ERR_LOAD;
+    else if (!(estar > 0.0))
+        st = RR_ERR_MATERIAL;
+    if (st < 0) {
+        *A = *B = NAN;
+        return st;
+    }
+    major = a > b ? a : b;
+    minor = a > b ? b : a;
+    k = minor / major;
+    if (!(k > 1e-150)) {
+        *A = *B = NAN;
+        return RR_ERR_GEOMETRY;
+    }
+    e2 = (1.0 - k) * (1.0 + k);
+    rr_ellip_agm(k, &K, &d_lo, &d_hi);
+    /* Johnson (3.64) with p0 = 3N/(2 pi a b): the major axis lies along the
+     * smaller curvature, (p0 minor / (E* major^2)) (K - E)/e^2, the other
+     * (.. ) (E/k^2 - K)/e^2 = (.. ) (E - k^2 K)/(k^2 e^2); both -> pi/4 as
+     * e -> 0, where the AGM's differences are of order e^2 */
+    if (e2 > 1e-12) {
+        c_lo = K * d_lo / e2;
+        c_hi = K * d_hi / (k * k * e2);
+    } else {
+        c_lo = c_hi = 0.25 * RR_PI;
+    }
+    p0 = 1.5 / RR_PI * (N / major) / minor;
+    s = (p0 / estar) * (minor / major) / major;
+    if (a >= b) {
+        *A = s * c_lo;
+        *B = s * c_hi;
+    } else {
+        *A = s * c_hi;
+        *B = s * c_lo;
+    }
+    if (!isnormal(*A) || !isnormal(*B)) {
+        *A = *B = NAN;
+        return RR_ERR_RANGE;
+    }
+    return RR_OK;
+}

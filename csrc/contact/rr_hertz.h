@@ -51,4 +51,16 @@ int rr_hertz(double A, double B, double N, double estar, rr_hertz_result *out);
 int rr_hertz_bodies(double A, double B, double N, double E1, double nu1, double E2, double nu2,
                     rr_hertz_result *out);
 
+/*
+ * rr_hertz_curvatures - the inverse of rr_hertz: the curvature sums A (along
+ * x) and B of the Hertzian contact with semi-axes a (along x) and b under
+ * load N, contact modulus estar (Johnson eq. 3.64).  rr_hertz(A, B, N,
+ * estar) gives a and b back.
+ *   status: 0 OK; RR_ERR_NONFINITE, RR_ERR_GEOMETRY (a, b not positive
+ *   normal numbers, or min/max below 1e-150), RR_ERR_LOAD (N <= 0),
+ *   RR_ERR_MATERIAL (estar <= 0), RR_ERR_RANGE (A or B not a normal double),
+ *   RR_ERR_NULL.  Outputs NaN on error.
+ */
+int rr_hertz_curvatures(double a, double b, double N, double estar, double *A, double *B);
+
 #endif

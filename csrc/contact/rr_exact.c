@@ -1,0 +1,838 @@
+/* rr_exact.c - Kalker's exact theory of steady rolling: the normal and the
+ * tangential problem on a grid, with FFT products (see rr_exact.h). */
+#include <math.h>
+#ifdef RR_EXACT_DEBUG
+#include <stdio.h>
+#endif
+#include <stdlib.h>
+#include <string.h>
+#include "util/rr_common.h"
+#include "util/rr_fft.h"
+#include "contact/rr_influence.h"
+#include "contact/rr_hertz.h"
+#include "contact/rr_exact.h"
+
+/* Krylov vectors kept by GMRES before it restarts. */
+#define GMRES_M 30
+/* The workspace's header: a tag, then the key of the cached spectra. */
+#define HDR_LEN 8
+#define HDR_TAG 20261202.5
+
+enum { OUTSIDE = -1, ADHESION = 0, SLIP = 1 };
+
+/* Pointers into the caller's workspace (rr_exact_workspace_len). */
+typedef struct {
+    int mx, my, n;
+    double *hdr;
+    double *conv;
+    size_t conv_len;
+    double *snn, *sxx, *syy, *sxy;        /* kernel spectra */
+    double *ta, *tb, *tr, *kern;          /* coefficient tables (while building) */
+    double *h, *pn, *gap, *r, *rold, *d, *v;          /* normal problem */
+    double *p, *s, *w, *f, *nz, *fac, *dlt, *mdl, *t1, *t2;   /* tangential, 2n each */
+    double *V, *MV, *H, *gv, *cs, *sn, *y;            /* GMRES */
+    signed char *state;
+} layout;
+
+/* The workspace's carving; lengths in doubles.  With base NULL only the
+ * total is computed. */
+static size_t carve(layout *L, int mx, int my, double *base)
+{
+    const size_t n = (size_t)mx * (size_t)my, n2 = 2 * n;
+    const size_t conv_len = rr_conv2d_workspace_len(mx, my);
+    size_t spec_len, off = 0;
+
+#define TAKE(ptr, len) do { (ptr) = base ? base + off : NULL; off += (len); } while (0)
+    if (conv_len == 0)
+        return 0;
+    spec_len = rr_conv2d_spectrum_len(mx, my);
+    L->mx = mx;
+    L->my = my;
+    L->n = (int)n;
+    TAKE(L->hdr, HDR_LEN);
+    TAKE(L->conv, conv_len);
+    L->conv_len = conv_len;
+    TAKE(L->snn, spec_len);
+    TAKE(L->sxx, spec_len);
+    TAKE(L->syy, spec_len);
+    TAKE(L->sxy, spec_len);
+    TAKE(L->ta, (size_t)(mx + 1) * my);
+    TAKE(L->tb, (size_t)(mx + 1) * my);
+    TAKE(L->tr, (size_t)(mx + 1) * my);
+    TAKE(L->kern, (size_t)(2 * mx - 1) * (2 * my - 1));
+    TAKE(L->h, n);
+    TAKE(L->pn, n);
+    TAKE(L->gap, n);
+    TAKE(L->r, n);
+    TAKE(L->rold, n);
+    TAKE(L->d, n);
+    TAKE(L->v, n);
+    TAKE(L->p, n2);
+    TAKE(L->s, n2);
+    TAKE(L->w, n2);
+    TAKE(L->f, n2);
+    TAKE(L->nz, n2);
+    TAKE(L->fac, n2);
+    TAKE(L->dlt, n2);
+    TAKE(L->mdl, n2);
+    TAKE(L->t1, n2);
+    TAKE(L->t2, n2);
+    TAKE(L->V, (GMRES_M + 1) * n2);
+    TAKE(L->MV, GMRES_M * n2);
+    TAKE(L->H, (GMRES_M + 1) * GMRES_M);
+    TAKE(L->gv, GMRES_M + 1);
+    TAKE(L->cs, GMRES_M);
+    TAKE(L->sn, GMRES_M);
+    TAKE(L->y, GMRES_M);
+    {
+        double *st;
+        TAKE(st, n / sizeof(double) + 1);
+        L->state = (signed char *)st;
+    }
+#undef TAKE
+    return off;
+}
+
+size_t rr_exact_workspace_len(int mx, int my)
+{
+    layout L;
+    if (mx < 1 || my < 1 || mx > RR_EXACT_MAX_GRID || my > RR_EXACT_MAX_GRID)
+        return 0;
+    return carve(&L, mx, my, NULL);
+}
+
+int rr_exact_hertz_grid(double a, double b, int nx, int ny, rr_exact_grid *g)
+{
+    if (!g)
+        return RR_ERR_NULL;
+    memset(g, 0, sizeof *g);
+    if (!isfinite(a) || !isfinite(b))
+        return RR_ERR_NONFINITE;
+    if (!(a > 0.0) || !(b > 0.0))
+        return RR_ERR_GEOMETRY;
+    if (nx < 1 || ny < 1 || nx > RR_EXACT_MAX_GRID - 2 * RR_EXACT_MARGIN
+        || ny > RR_EXACT_MAX_GRID - 2 * RR_EXACT_MARGIN)
+        return RR_ERR_GRID;
+    g->mx = nx + 2 * RR_EXACT_MARGIN;
+    g->my = ny + 2 * RR_EXACT_MARGIN;
+    g->dx = 2.0 * a / nx;
+    g->dy = 2.0 * b / ny;
+    if (!isnormal(g->dx) || !isnormal(g->dy))
+        return RR_ERR_GEOMETRY;
+    g->x0 = -0.5 * (g->mx - 1) * g->dx;
+    g->y0 = -0.5 * (g->my - 1) * g->dy;
+    return RR_OK;
+}
+
+/* ---- kernels -------------------------------------------------------------- */
+
+/* The spectra of the normal kernel A_nn/dx and of the steady tangential one
+ * (A(k) - A(k + e_x))/dx, for the grid shape (mx, my, dy/dx) and nu; kept
+ * in the workspace and rebuilt only when the key changes. */
+static int build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu)
+{
+    const int mx = L->mx, my = L->my, nkx = mx + 1, kw = 2 * mx - 1;
+    int st, kx, ky;
+
+    if (L->hdr[0] == HDR_TAG && L->hdr[1] == mx && L->hdr[2] == my && L->hdr[3] == aspect
+        && L->hdr[4] == nu)
+        return RR_OK;
+    L->hdr[0] = 0.0;
+    st = rr_influence_boxes(nkx, my, 1.0, aspect, L->ta, L->tb, L->tr);
+    if (st < 0)
+        return st;
+#define QA(i, j) (L->ta[(j) * nkx + (i)])
+#define QB(i, j) (L->tb[(j) * nkx + (i)])
+#define QR(i, j) (L->tr[(j) * nkx + (i)])
+#define KERN(i, j) (L->kern[((j) + my - 1) * kw + ((i) + mx - 1)])
+    for (ky = -(my - 1); ky < my; ky++)
+        for (kx = -(mx - 1); kx < mx; kx++)
+            KERN(kx, ky) = (1.0 - nu) / RR_PI * (QA(abs(kx), abs(ky)) + QB(abs(kx), abs(ky)));
+    if ((st = rr_conv2d_spectrum(cv, L->kern, L->snn)) < 0)
+        return st;
+    for (ky = -(my - 1); ky < my; ky++)
+        for (kx = -(mx - 1); kx < mx; kx++) {
+            const int i0 = abs(kx), i1 = abs(kx + 1), j = abs(ky);
+            KERN(kx, ky) = ((1.0 - nu) * (QA(i0, j) - QA(i1, j)) + (QB(i0, j) - QB(i1, j))) / RR_PI;
+        }
+    if ((st = rr_conv2d_spectrum(cv, L->kern, L->sxx)) < 0)
+        return st;
+    for (ky = -(my - 1); ky < my; ky++)
+        for (kx = -(mx - 1); kx < mx; kx++) {
+            const int i0 = abs(kx), i1 = abs(kx + 1), j = abs(ky);
+            KERN(kx, ky) = ((QA(i0, j) - QA(i1, j)) + (1.0 - nu) * (QB(i0, j) - QB(i1, j))) / RR_PI;
+        }
+    if ((st = rr_conv2d_spectrum(cv, L->kern, L->syy)) < 0)
+        return st;
+    for (ky = -(my - 1); ky < my; ky++)
+        for (kx = -(mx - 1); kx < mx; kx++) {
+            /* A_xy is odd in kx and ky: sign(k) [[r]](|k|), 0 on the axes */
+            const double sy = (ky > 0) - (ky < 0);
+            const double s0 = (kx > 0) - (kx < 0), s1 = (kx + 1 > 0) - (kx + 1 < 0);
+            const int j = abs(ky);
+            KERN(kx, ky) = -nu / RR_PI * sy
+                           * (s0 * QR(abs(kx), j) - s1 * QR(abs(kx + 1), j));
+        }
+    if ((st = rr_conv2d_spectrum(cv, L->kern, L->sxy)) < 0)
+        return st;
+#undef QA
+#undef QB
+#undef QR
+#undef KERN
+    L->hdr[1] = mx;
+    L->hdr[2] = my;
+    L->hdr[3] = aspect;
+    L->hdr[4] = nu;
+    L->hdr[0] = HDR_TAG;
+    return RR_OK;
+}
+
+/* The diagonal of the steady operator (per 1/G): (A(0) - A(e_x))/dx, mean of xx and yy. */
+static double steady_diagonal(double aspect, double nu)
+{
+    double a0[4], a1[4];
+    rr_influence_at(0, 0, 1.0, aspect, nu, a0);
+    rr_influence_at(1, 0, 1.0, aspect, nu, a1);
+    return 0.5 * ((a0[1] - a1[1]) + (a0[2] - a1[2]));
+}
+
+/* ---- the normal problem ---------------------------------------------------- */
+
+typedef struct {
+    const rr_exact_problem *pb;
+    layout *L;
+    rr_conv2d *cv;
+    int products;
+} solver;
+
+/* u = (dx/G) A_nn * p */
+static int normal_product(solver *S, const double *p, double *u)
+{
+    const double sc = S->pb->grid.dx / S->pb->G;
+    int k, st = rr_conv2d_apply(S->cv, S->L->snn, p, u);
+    for (k = 0; k < S->L->n; k++)
+        u[k] *= sc;
+    S->products++;
+    return st;
+}
+
+static double mean_on(const double *v, const signed char *in, int n, int *count)
+{
+    double sum = 0.0;
+    int k, c = 0;
+    for (k = 0; k < n; k++)
+        if (in[k] != OUTSIDE) {
+            sum += v[k];
+            c++;
+        }
+    *count = c;
+    return c ? sum / c : 0.0;
+}
+
+/* NormCG: min 1/2 p.Ap + h.p over p >= 0 with dA sum p = N; the approach is
+ * the multiplier, eliminated by keeping every search direction mean-free on
+ * the contact set C.  Returns the status; res gets delta, the products and
+ * the residual. */
+static int solve_normal(solver *S, rr_exact_result *res)
+{
+    const rr_exact_problem *pb = S->pb;
+    layout *L = S->L;
+    const int n = L->n;
+    const double dA = pb->grid.dx * pb->grid.dy;
+    double *h = L->h, *p = L->pn, *g = L->gap, *r = L->r, *rold = L->rold, *d = L->d,
+           *v = L->v;
+    signed char *in = L->state;
+    double hmin = HUGE_VAL, hmax = -HUGE_VAL, delta = 0.0, rr_old = 0.0, step_rms = HUGE_VAL;
+    rr_hertz_result hz;
+    int k, cnt, restart = 1, st, converged = 0;
+
+    for (k = 0; k < n; k++) {
+        if (h[k] < hmin) hmin = h[k];
+        if (h[k] > hmax) hmax = h[k];
+    }
+    /* start: Hertz's pressure where h is Hertzian (the discrete solution
+     * differs by about 1 % rms: a few CG steps), else the lowest tenth of h
+     * under a uniform pressure */
+    cnt = 0;
+    if (!pb->h && rr_hertz(pb->A, pb->B, pb->N, pb->G / (1.0 - pb->nu), &hz) == RR_OK) {
+        double psum = 0.0;
+        for (k = 0; k < n; k++) {
+            const double x = (pb->grid.x0 + (k % L->mx) * pb->grid.dx) / hz.a;
+            const double y = (pb->grid.y0 + (k / L->mx) * pb->grid.dy) / hz.b;
+            const double q = 1.0 - x * x - y * y;
+            in[k] = q > 0.0 ? ADHESION : OUTSIDE;
+            p[k] = q > 0.0 ? sqrt(q) : 0.0;
+            psum += p[k];
+            cnt += in[k] != OUTSIDE;
+        }
+        if (cnt > 0)
+            for (k = 0; k < n; k++)
+                p[k] *= pb->N / (dA * psum);
+    }
+    if (cnt == 0) {
+        for (k = 0; k < n; k++) {
+            in[k] = (h[k] <= hmin + 0.1 * (hmax - hmin)) ? ADHESION : OUTSIDE;
+            cnt += in[k] != OUTSIDE;
+        }
+        for (k = 0; k < n; k++)
+            p[k] = in[k] != OUTSIDE ? pb->N / (dA * cnt) : 0.0;
+    }
+    if ((st = normal_product(S, p, g)) < 0)
+        return st;
+    for (k = 0; k < n; k++)
+        g[k] += h[k];
+
+    while (S->products < pb->maxit) {
+        double rr = 0.0, rrold = 0.0, rd = 0.0, dv = 0.0, alpha, beta, psum = 0.0, p2 = 0.0,
+               s2 = 0.0;
+        int changed = 0, nc;
+
+        delta = mean_on(g, in, n, &nc);
+        for (k = 0; k < n; k++) {
+            r[k] = in[k] != OUTSIDE ? delta - g[k] : 0.0;
+            rr += r[k] * r[k];
+            if (!restart)
+                rrold += r[k] * rold[k];
+        }
+        if (rr == 0.0) {
+            converged = 1;
+            break;
+        }
+        /* Polak-Ribiere, reset to steepest descent after a change of C */
+        beta = restart ? 0.0 : fmax(0.0, (rr - rrold) / rr_old);
+        for (k = 0; k < n; k++) {
+            d[k] = in[k] != OUTSIDE ? r[k] + beta * d[k] : 0.0;
+            rold[k] = r[k];
+        }
+        rr_old = rr;
+        restart = 0;
+        if ((st = normal_product(S, d, v)) < 0)
+            return st;
+        for (k = 0; k < n; k++) {
+            rd += r[k] * d[k];
+            dv += d[k] * v[k];
+        }
+        if (!(dv > 0.0))
+            return RR_ERR_RANGE;
+        alpha = rd / dv;
+        /* the gap changes everywhere, the pressure only on C */
+        for (k = 0; k < n; k++) {
+            g[k] += alpha * v[k];
+            if (in[k] != OUTSIDE) {
+                p[k] += alpha * d[k];
+                s2 += (alpha * d[k]) * (alpha * d[k]);
+            }
+        }
+        /* elements pulled below zero leave C; the load is restored by scaling */
+        for (k = 0; k < n; k++)
+            if (in[k] != OUTSIDE && p[k] < 0.0) {
+                p[k] = 0.0;
+                in[k] = OUTSIDE;
+                changed = 1;
+            }
+        if (changed) {
+            for (k = 0; k < n; k++)
+                psum += p[k];
+            if (!(psum > 0.0))
+                return RR_ERR_GEOMETRY;
+            for (k = 0; k < n; k++)
+                p[k] *= pb->N / (dA * psum);
+            if ((st = normal_product(S, p, g)) < 0)
+                return st;
+            for (k = 0; k < n; k++)
+                g[k] += h[k];
+            restart = 1;
+            continue;
+        }
+        /* exterior elements that the surfaces would penetrate join C */
+        delta = mean_on(g, in, n, &nc);
+        for (k = 0; k < n; k++)
+            if (in[k] == OUTSIDE && g[k] < delta) {
+                in[k] = ADHESION;
+                changed = 1;
+            }
+        for (k = 0; k < n; k++)
+            p2 += p[k] * p[k];
+        step_rms = sqrt(s2 / (p2 > 0.0 ? p2 : 1.0));
+        if (changed) {
+            restart = 1;
+            continue;
+        }
+        if (step_rms <= pb->tol) {
+            converged = 1;
+            break;
+        }
+    }
+    res->delta = mean_on(g, in, n, &cnt);
+#ifdef RR_EXACT_DEBUG
+    {
+        double cmax = 0.0, emin = HUGE_VAL, pmin = HUGE_VAL;
+        for (k = 0; k < n; k++) {
+            if (in[k] != OUTSIDE) { cmax = fmax(cmax, fabs(g[k] - res->delta)); pmin = fmin(pmin, p[k]); }
+            else emin = fmin(emin, g[k] - res->delta);
+        }
+        fprintf(stderr, "KKT: max|g-d| on C %.3e, min g-d outside %.3e, min p %.3e, delta %.6e\n", cmax, emin, pmin, res->delta);
+    }
+#endif
+    res->normal_products = S->products;
+    res->normal_residual = step_rms;
+    return converged ? RR_OK : RR_WARN_NOT_CONVERGED;
+}
+
+/* ---- the tangential problem -------------------------------------------------- */
+
+/* s = (1/G) M * p for p = (px, py) packed as p[0..n) and p[n..2n) */
+static int tang_product(solver *S, const double *p, double *out)
+{
+    layout *L = S->L;
+    const int n = L->n;
+    const double sc = 1.0 / S->pb->G;
+    int k, st = rr_conv2d_apply2(S->cv, L->sxx, L->sxy, L->sxy, L->syy, p, p + n, out,
+                                 out + n);
+    for (k = 0; k < 2 * n; k++)
+        out[k] *= sc;
+    S->products++;
+    return st;
+}
+
+/* The preconditioner: out = P in, the inverse of the upwind difference
+ * along each run of adhering elements (from the leading edge, +x, down);
+ * slipping elements map to themselves. */
+static void precondition(const layout *L, const double *in, double *out)
+{
+    const int mx = L->mx, my = L->my, n = L->n;
+    int i, j, c;
+    for (c = 0; c < 2; c++)
+        for (j = 0; j < my; j++) {
+            const double *a = in + c * n + j * mx;
+            double *o = out + c * n + j * mx;
+            const signed char *stt = L->state + j * mx;
+            for (i = mx - 1; i >= 0; i--) {
+                if (stt[i] == OUTSIDE)
+                    o[i] = 0.0;
+                else if (stt[i] == ADHESION && i + 1 < mx && stt[i + 1] != OUTSIDE)
+                    o[i] = a[i] + o[i + 1];
+                else
+                    o[i] = a[i];
+            }
+        }
+}
+
+/* out = J v, J = I - D (I - rho M) on C, with Mv given (0 outside C) */
+static void jacobian(const layout *L, double rho, const double *v, const double *Mv,
+                     double *out)
+{
+    const int n = L->n;
+    int k;
+    for (k = 0; k < n; k++) {
+        if (L->state[k] == OUTSIDE) {
+            out[k] = out[k + n] = 0.0;
+        } else if (L->state[k] == ADHESION) {
+            out[k] = rho * Mv[k];
+            out[k + n] = rho * Mv[k + n];
+        } else {
+            const double ex = v[k] - rho * Mv[k], ey = v[k + n] - rho * Mv[k + n];
+            const double nx = L->nz[k], ny = L->nz[k + n], dot = nx * ex + ny * ey;
+            out[k] = v[k] - L->fac[k] * (ex - nx * dot);
+            out[k + n] = v[k + n] - L->fac[k] * (ey - ny * dot);
+        }
+    }
+}
+
+/* a.b with four partial sums (independent chains: the loop pipelines and
+ * vectorises without reassociating a single sum) */
+static double dot2(const double *a, const double *b, int n2)
+{
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    int k;
+    for (k = 0; k + 4 <= n2; k += 4) {
+        s0 += a[k] * b[k];
+        s1 += a[k + 1] * b[k + 1];
+        s2 += a[k + 2] * b[k + 2];
+        s3 += a[k + 3] * b[k + 3];
+    }
+    for (; k < n2; k++)
+        s0 += a[k] * b[k];
+    return (s0 + s1) + (s2 + s3);
+}
+
+/* F = p - Proj_g(p - rho s) on C; also the states and the projection's
+ * derivative data (unit z and g/|z| of slipping elements).  Returns ||F||. */
+static double residual(layout *L, double rho, const double *p, const double *s, double *F)
+{
+    const int n = L->n;
+    double f2 = 0.0;
+    int k;
+    for (k = 0; k < n; k++) {
+        double zx, zy, z, g;
+        if (L->state[k] == OUTSIDE) {
+            F[k] = F[k + n] = 0.0;
+            continue;
+        }
+        g = L->fac[k + n];               /* the traction bound, kept in fac's upper half */
+        zx = p[k] - rho * s[k];
+        zy = p[k + n] - rho * s[k + n];
+        z = hypot(zx, zy);
+        if (z <= g) {
+            L->state[k] = ADHESION;
+            F[k] = p[k] - zx;
+            F[k + n] = p[k + n] - zy;
+        } else {
+            const double f = g / z;
+            L->state[k] = SLIP;
+            L->nz[k] = zx / z;
+            L->nz[k + n] = zy / z;
+            L->fac[k] = f;
+            F[k] = p[k] - f * zx;
+            F[k + n] = p[k + n] - f * zy;
+        }
+        f2 += F[k] * F[k] + F[k + n] * F[k + n];
+    }
+    return sqrt(f2);
+}
+
+/* GMRES(m) on J P u = b, right-preconditioned; on return dlt = P u and
+ * mdl = M dlt (kept from the products, no extra one).  Stops at
+ * ||b - J P u|| <= eta ||b|| or when the product budget is spent. */
+static int gmres(solver *S, double rho, const double *b, double eta, double *dlt, double *mdl)
+{
+    layout *L = S->L;
+    const int n2 = 2 * L->n, m = GMRES_M;
+    const double bnorm = sqrt(dot2(b, b, n2));
+    double *V = L->V, *MV = L->MV, *H = L->H, *gv = L->gv, *cs = L->cs, *sn = L->sn,
+           *y = L->y, *t = L->t1, *q = L->t2;
+    double beta = bnorm;
+    int k, j, i, st;
+
+    memset(dlt, 0, (size_t)n2 * sizeof *dlt);
+    memset(mdl, 0, (size_t)n2 * sizeof *mdl);
+    if (bnorm == 0.0)
+        return RR_OK;
+    memcpy(V, b, (size_t)n2 * sizeof *V);
+    while (S->products < S->pb->maxit) {
+        int jm = 0;
+        /* V[0] = r / |r| */
+        for (k = 0; k < n2; k++)
+            V[k] /= beta;
+        memset(gv, 0, (GMRES_M + 1) * sizeof *gv);
+        gv[0] = beta;
+        for (j = 0; j < m && S->products < S->pb->maxit; j++) {
+            double *vj = V + (size_t)j * n2, *w = V + (size_t)(j + 1) * n2, hn;
+            precondition(L, vj, t);
+            if ((st = tang_product(S, t, MV + (size_t)j * n2)) < 0)
+                return st;
+            jacobian(L, rho, t, MV + (size_t)j * n2, w);
+            /* modified Gram-Schmidt, twice where it lost much (keeps V orthogonal) */
+            for (i = 0; i <= j; i++) {
+                const double hij = dot2(w, V + (size_t)i * n2, n2);
+                H[i * m + j] = hij;
+                for (k = 0; k < n2; k++)
+                    w[k] -= hij * V[(size_t)i * n2 + k];
+            }
+            hn = sqrt(dot2(w, w, n2));
+            H[(j + 1) * m + j] = hn;
+            if (hn > 0.0)
+                for (k = 0; k < n2; k++)
+                    w[k] /= hn;
+            /* Givens rotations keep H upper triangular and give the residual */
+            for (i = 0; i < j; i++) {
+                const double a = H[i * m + j], c = H[(i + 1) * m + j];
+                H[i * m + j] = cs[i] * a + sn[i] * c;
+                H[(i + 1) * m + j] = -sn[i] * a + cs[i] * c;
+            }
+            {
+                const double a = H[j * m + j], c = H[(j + 1) * m + j], rr = hypot(a, c);
+                cs[j] = rr > 0.0 ? a / rr : 1.0;
+                sn[j] = rr > 0.0 ? c / rr : 0.0;
+                H[j * m + j] = rr;
+                H[(j + 1) * m + j] = 0.0;
+                gv[j + 1] = -sn[j] * gv[j];
+                gv[j] = cs[j] * gv[j];
+            }
+            jm = j + 1;
+            if (fabs(gv[j + 1]) <= eta * bnorm || hn == 0.0)
+                break;
+        }
+        /* y = H^-1 g, then dlt += P V y and mdl += (M P V) y */
+        for (i = jm - 1; i >= 0; i--) {
+            double sum = gv[i];
+            for (k = i + 1; k < jm; k++)
+                sum -= H[i * m + k] * y[k];
+            y[i] = H[i * m + i] != 0.0 ? sum / H[i * m + i] : 0.0;
+        }
+        memset(q, 0, (size_t)n2 * sizeof *q);
+        for (i = 0; i < jm; i++)
+            for (k = 0; k < n2; k++) {
+                q[k] += y[i] * V[(size_t)i * n2 + k];
+                mdl[k] += y[i] * MV[(size_t)i * n2 + k];
+            }
+        precondition(L, q, t);
+        for (k = 0; k < n2; k++)
+            dlt[k] += t[k];
+        beta = fabs(gv[jm]);
+        if (jm == 0 || beta <= eta * bnorm)
+            break;
+        /* restart from the true residual b - J dlt */
+        jacobian(L, rho, dlt, mdl, V);
+        for (k = 0; k < n2; k++)
+            V[k] = b[k] - V[k];
+        beta = sqrt(dot2(V, V, n2));
+        if (beta <= eta * bnorm)
+            break;
+    }
+    return RR_OK;
+}
+
+static int solve_tangential(solver *S, rr_exact_result *res)
+{
+    const rr_exact_problem *pb = S->pb;
+    layout *L = S->L;
+    const int n = L->n, mx = L->mx, n2 = 2 * n;
+    const double rho = pb->G / steady_diagonal(pb->grid.dy / pb->grid.dx, pb->nu);
+    double *p = L->p, *s = L->s, *w = L->w, *F = L->f, *dl = L->dlt, *md = L->mdl, *pt = L->t1,
+           *stt = L->t2;
+    double g2 = 0.0, nF, nFold = 0.0, eta = 0.3;
+    int k, st, newton = 0, converged = 0;
+    const int start = S->products;
+
+    S->products = 0;
+    for (k = 0; k < n; k++) {
+        const double x = pb->grid.x0 + (k % mx) * pb->grid.dx;
+        const double y = pb->grid.y0 + (k / mx) * pb->grid.dy;
+        const double xs = x + pb->spin_shift * pb->grid.dx;
+        L->state[k] = L->pn[k] > 0.0 ? ADHESION : OUTSIDE;
+        L->fac[k + n] = pb->mu * L->pn[k];     /* traction bound */
+        g2 += L->fac[k + n] * L->fac[k + n];
+        w[k] = L->state[k] != OUTSIDE ? pb->cx - pb->cphi * y : 0.0;
+        w[k + n] = L->state[k] != OUTSIDE ? pb->cy + pb->cphi * xs : 0.0;
+        p[k] = p[k + n] = 0.0;
+        s[k] = w[k];
+        s[k + n] = w[k + n];
+    }
+    (void)start;
+    g2 = sqrt(g2);
+    nF = residual(L, rho, p, s, F);
+    while (1) {
+        double t = 1.0, nFt = 0.0;
+        int ls;
+        if (!isfinite(nF))
+            return RR_ERR_RANGE;
+        if (nF <= pb->tol * g2) {
+            converged = 1;
+            break;
+        }
+        if (S->products >= pb->maxit)
+            break;
+        /* Eisenstat-Walker forcing, safeguarded, never finer than the goal */
+        if (newton > 0) {
+            double e = 0.9 * (nF / nFold) * (nF / nFold);
+            if (0.9 * eta * eta > 0.1)
+                e = fmax(e, 0.9 * eta * eta);
+            eta = fmin(0.3, fmax(e, 1e-3));
+        }
+        eta = fmax(eta, 0.5 * pb->tol * g2 / nF);
+        for (k = 0; k < n2; k++)
+            F[k] = -F[k];
+        if ((st = gmres(S, rho, F, eta, dl, md)) < 0)
+            return st;
+        for (k = 0; k < n2; k++)
+            F[k] = -F[k];
+        newton++;
+        nFold = nF;
+        /* backtracking on ||F||: s(p + t dl) = s + t M dl, no product needed */
+        for (ls = 0; ls < 30; ls++) {
+            for (k = 0; k < n2; k++) {
+                pt[k] = p[k] + t * dl[k];
+                stt[k] = s[k] + t * md[k];
+            }
+            nFt = residual(L, rho, pt, stt, F);
+            if (nFt <= (1.0 - 1e-4 * t) * nF)
+                break;
+            t *= 0.5;
+        }
+        memcpy(p, pt, (size_t)n2 * sizeof *p);
+        memcpy(s, stt, (size_t)n2 * sizeof *s);
+        if (ls == 30) {
+            nF = nFt;
+            break;               /* no descent: stalled */
+        }
+        nF = nFt;
+    }
+    res->tang_products = S->products;
+    res->newton_steps = newton;
+    res->tang_residual = g2 > 0.0 ? nF / g2 : 0.0;
+    return converged ? RR_OK : RR_WARN_NOT_CONVERGED;
+}
+
+/* ---- the driver ------------------------------------------------------------ */
+
+static void result_nan(rr_exact_result *res)
+{
+    res->fx = res->fy = res->mz = res->fn = res->delta = res->area = res->pmax = NAN;
+    res->normal_residual = res->tang_residual = NAN;
+    res->ncontact = res->nslip = 0;
+    res->normal_products = res->tang_products = res->newton_steps = 0;
+}
+
+static void field_nan(const rr_exact_problem *pb, rr_exact_field *f)
+{
+    size_t k, n;
+    if (!f || !pb || pb->grid.mx < 1 || pb->grid.my < 1 || pb->grid.mx > RR_EXACT_MAX_GRID
+        || pb->grid.my > RR_EXACT_MAX_GRID)
+        return;
+    n = (size_t)pb->grid.mx * (size_t)pb->grid.my;
+    for (k = 0; k < n; k++) {
+        if (f->pn) f->pn[k] = NAN;
+        if (f->px) f->px[k] = NAN;
+        if (f->py) f->py[k] = NAN;
+        if (f->sx) f->sx[k] = NAN;
+        if (f->sy) f->sy[k] = NAN;
+        if (f->state) f->state[k] = OUTSIDE;
+    }
+}
+
+static int check_problem(const rr_exact_problem *pb, size_t work_len)
+{
+    const rr_exact_grid *g = &pb->grid;
+    const double reals[] = {g->dx, g->dy, g->x0, g->y0, pb->N, pb->G, pb->nu, pb->mu,
+                            pb->cx, pb->cy, pb->cphi, pb->spin_shift, pb->tol};
+    size_t k, need;
+
+    if (g->mx < 1 || g->my < 1 || g->mx > RR_EXACT_MAX_GRID || g->my > RR_EXACT_MAX_GRID)
+        return RR_ERR_GRID;
+    if (!rr_all_finite(reals, (int)(sizeof reals / sizeof reals[0])))
+        return RR_ERR_NONFINITE;
+    if (pb->h) {
+        if (!rr_all_finite(pb->h, g->mx * g->my))
+            return RR_ERR_NONFINITE;
+    } else if (!isfinite(pb->A) || !isfinite(pb->B)) {
+        return RR_ERR_NONFINITE;
+    }
+    if (!(g->dx > 0.0) || !(g->dy > 0.0) || !isnormal(g->dx) || !isnormal(g->dy)
+        || !isnormal(g->dx * g->dy) || g->dx / g->dy > 1e6 || g->dy / g->dx > 1e6)
+        return RR_ERR_GEOMETRY;
+    if (!pb->h && (!(pb->A > 0.0) || !(pb->B > 0.0)))
+        return RR_ERR_GEOMETRY;
+    if (!(pb->N > 0.0))
+        return RR_ERR_LOAD;
+    if (!(pb->G > 0.0) || !isnormal(pb->G) || !(pb->nu >= 0.0 && pb->nu <= 0.5))
+        return RR_ERR_MATERIAL;
+    if (!(pb->mu > 0.0))
+        return RR_ERR_FRICTION;
+    if (!(pb->tol >= 1e-14 && pb->tol <= 0.1) || pb->maxit < 1
+        || !(pb->spin_shift >= -1.0 && pb->spin_shift <= 1.0))
+        return RR_ERR_PARAM;
+    need = rr_exact_workspace_len(g->mx, g->my);
+    if (work_len < need)
+        return RR_ERR_WORKSPACE;
+    /* the mean pressure and the tractions must be finite doubles */
+    {
+        const double pmean = pb->N / (g->dx * g->dy) / ((double)g->mx * g->my);
+        if (!isnormal(pmean) || !isfinite(pmean * pb->mu * 1e3) || !isfinite(pmean / pb->G))
+            return RR_ERR_RANGE;
+    }
+    (void)k;
+    return RR_OK;
+}
+
+int rr_exact_solve(const rr_exact_problem *pb, double *work, size_t work_len,
+                   rr_exact_result *res, rr_exact_field *field)
+{
+    layout L;
+    rr_conv2d cv;
+    solver S;
+    int st, st2, k, n, mx;
+    double fx = 0.0, fy = 0.0, mz = 0.0, fn = 0.0, pmax = 0.0, dA;
+
+    if (!res)
+        return RR_ERR_NULL;
+    if (!pb || !work) {
+        result_nan(res);
+        field_nan(pb, field);
+        return RR_ERR_NULL;
+    }
+    st = check_problem(pb, work_len);
+    if (st < 0) {
+        result_nan(res);
+        field_nan(pb, field);
+        return st;
+    }
+    result_nan(res);
+    mx = pb->grid.mx;
+    n = mx * pb->grid.my;
+    carve(&L, mx, pb->grid.my, work);
+    st = rr_conv2d_init(&cv, mx, pb->grid.my, L.conv, L.conv_len);
+    if (st == RR_OK)
+        st = build_spectra(&L, &cv, pb->grid.dy / pb->grid.dx, pb->nu);
+    if (st < 0) {
+        field_nan(pb, field);
+        return st;
+    }
+    for (k = 0; k < n; k++) {
+        if (pb->h) {
+            L.h[k] = pb->h[k];
+        } else {
+            const double x = pb->grid.x0 + (k % mx) * pb->grid.dx;
+            const double y = pb->grid.y0 + (k / mx) * pb->grid.dy;
+            L.h[k] = pb->A * x * x + pb->B * y * y;
+        }
+    }
+    if (!rr_all_finite(L.h, n)) {
+        result_nan(res);
+        field_nan(pb, field);
+        return RR_ERR_RANGE;
+    }
+    S.pb = pb;
+    S.L = &L;
+    S.cv = &cv;
+    S.products = 0;
+    st = solve_normal(&S, res);
+    if (st >= 0)
+        st2 = solve_tangential(&S, res);
+    else
+        st2 = st;
+    if (st < 0 || st2 < 0) {
+        result_nan(res);
+        field_nan(pb, field);
+        return st < 0 ? st : st2;
+    }
+    dA = pb->grid.dx * pb->grid.dy;
+    res->ncontact = res->nslip = 0;
+    for (k = 0; k < n; k++) {
+        const double x = pb->grid.x0 + (k % mx) * pb->grid.dx;
+        const double y = pb->grid.y0 + (k / mx) * pb->grid.dy;
+        const double px = L.p[k], py = L.p[k + n];
+        int state = L.pn[k] > 0.0 ? L.state[k] : OUTSIDE;
+        fx += px;
+        fy += py;
+        mz += x * py - y * px;
+        fn += L.pn[k];
+        if (L.pn[k] > pmax)
+            pmax = L.pn[k];
+        res->ncontact += state != OUTSIDE;
+        res->nslip += state == SLIP;
+        if (field) {
+            if (field->pn) field->pn[k] = L.pn[k];
+            if (field->px) field->px[k] = px;
+            if (field->py) field->py[k] = py;
+            if (field->sx) field->sx[k] = state == SLIP ? L.s[k] : 0.0;
+            if (field->sy) field->sy[k] = state == SLIP ? L.s[k + n] : 0.0;
+            if (field->state) field->state[k] = (signed char)state;
+        }
+    }
+    res->fx = fx * dA;
+    res->fy = fy * dA;
+    res->mz = mz * dA;
+    res->fn = fn * dA;
+    res->pmax = pmax;
+    res->area = res->ncontact * dA;
+    {
+        const double out[] = {res->fx, res->fy, res->mz, res->fn, res->delta, res->area};
+        if (!rr_all_finite(out, 6)) {
+            result_nan(res);
+            field_nan(pb, field);
+            return RR_ERR_RANGE;
+        }
+    }
+    return st != RR_OK ? st : st2;
+}

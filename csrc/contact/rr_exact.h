@@ -1,0 +1,136 @@
+/*
+ * rr_exact.h - Kalker's exact ("complete") theory of steady rolling contact
+ * between two quasi-identical elastic half-spaces with Coulomb friction.
+ *
+ * The potential contact area is a rectangular grid of mx x my elements of
+ * dx x dy with piecewise-constant tractions; the displacements are
+ * collocated at the element centres through the half-space's influence
+ * coefficients (rr_influence.h), and every product with them is a 2-D
+ * convolution done by FFT (rr_fft.h), O(N log N) instead of O(N^2).
+ *   Normal problem: given the undeformed distance h and the load N, find
+ *   the pressure pn >= 0 and the approach: a bound-constrained quadratic
+ *   programme, solved by conjugate gradients on the active set with the
+ *   load kept by deflation (Vollebregt's NormCG, J. Comput. Phys. 257,
+ *   2014).
+ *   Tangential problem: given the creepages, the slip s = w + (u(x) -
+ *   u(x + dx))/dx (steady rolling: the material derivative as the upwind
+ *   difference over one element, CONTACT's discretisation), with w the
+ *   rigid slip, find p with s = 0, |p| <= mu pn in adhesion and p = -mu pn
+ *   s/|s| in slip.  Solved as p = Proj(p - rho s) by a semismooth Newton
+ *   method whose linear systems go to GMRES, preconditioned by the
+ *   inverse of the upwind difference along each run of adhering elements
+ *   (which turns the steady operator into the symmetric half-space one).
+ * Conventions as rr_contact.h (CONTACT's): x rolling, material entering at
+ * +x, tractions and forces on body 1 (the wheel), rigid slip (cx - cphi y,
+ * cy + cphi x) about the reference point.  Element (i, j) of every field
+ * is stored at j * mx + i, its centre at (x0 + i dx, y0 + j dy).
+ *
+ * Memory: caller workspace only (rr_exact_workspace_len doubles for the
+ * largest grid used), zero-filled before its first use: the solver keeps
+ * the kernel spectra of the last grid shape and Poisson ratio there and
+ * reuses them for the next case of the same shape (a batch of cases with
+ * the same a/b and grid builds them once).  One workspace per thread.
+ */
+#ifndef RR_EXACT_H
+#define RR_EXACT_H
+
+#include <stddef.h>
+#include "contact/rr_creep_opts.h"
+
+/* Largest mx, my accepted. */
+#define RR_EXACT_MAX_GRID 1024
+/* Elements the Hertzian grid adds on each side of the ellipse (as CONTACT's
+ * potential contact area with SCALE = mx / (mx - 4)). */
+#define RR_EXACT_MARGIN 2
+
+typedef struct {
+    int mx, my;          /* elements along x (rolling) and y */
+    double dx, dy;       /* element size [m] */
+    double x0, y0;       /* centre of element (0, 0) relative to the reference point [m] */
+} rr_exact_grid;
+
+typedef struct {
+    rr_exact_grid grid;
+    const double *h;     /* undeformed distance at the element centres [m], mx * my
+                            (any constant offset: the approach is solved for);
+                            NULL: the Hertzian h = A x^2 + B y^2 */
+    double A, B;         /* curvature sums [1/m] where h is NULL */
+    double N;            /* normal load [N], > 0 */
+    double G, nu;        /* combined shear modulus [Pa], Poisson ratio in [0, 0.5] */
+    double mu;           /* Coulomb friction coefficient, > 0 */
+    double cx, cy, cphi; /* creepages [-], [-], [1/m] */
+    double spin_shift;   /* the spin's rigid slip taken at x + spin_shift dx: CONTACT
+                            uses 1/6 (closer on coarse grids); 0 keeps the discrete
+                            reciprocity C23 = C32; in [-1, 1] */
+    double tol;          /* relative tolerance, in [1e-14, 0.1] */
+    int maxit;           /* cap on FFT products of each problem, >= 1 */
+} rr_exact_problem;
+
+typedef struct {
+    double fx, fy, mz;   /* forces on body 1 [N], spin moment about the reference point [N m] */
+    double fn;           /* normal force found (N to the tolerance) [N] */
+    double delta;        /* approach: the constant subtracted from h [m] */
+    double area;         /* contact area: elements in contact times dx dy [m^2] */
+    double pmax;         /* peak pressure [Pa] */
+    int ncontact, nslip; /* elements in contact, of them slipping */
+    int normal_products, tang_products;  /* FFT products used */
+    int newton_steps;
+    double normal_residual, tang_residual;  /* final relative residuals */
+} rr_exact_result;
+
+/* Fields of a solution, each NULL (not wanted) or mx * my values. */
+typedef struct {
+    double *pn;          /* pressure [Pa] */
+    double *px, *py;     /* tangential traction on body 1 [Pa] */
+    double *sx, *sy;     /* slip velocity over the rolling speed [-] (0 in adhesion) */
+    signed char *state;  /* -1 outside the contact, 0 adhesion, 1 slip */
+} rr_exact_field;
+
+/* The options of the registry's method "exact" (rr_exact_method.c), by index. */
+enum {
+    RR_EXACT_NX = 0,          /* elements across 2a */
+    RR_EXACT_NY = 1,          /* elements across 2b */
+    RR_EXACT_TOL = 2,
+    RR_EXACT_MAXIT = 3,
+    RR_EXACT_SPIN_SHIFT = 4
+};
+
+/* Doubles of workspace for grids up to mx x my; 0 for sizes outside
+ * [1, RR_EXACT_MAX_GRID]. */
+size_t rr_exact_workspace_len(int mx, int my);
+
+/*
+ * rr_exact_solve - the normal, then the tangential problem of pb.
+ *   status: RR_OK; RR_WARN_NOT_CONVERGED (a problem hit maxit: results
+ *   are the last iterate, residuals say how far); errors (outputs NaN):
+ *   RR_ERR_NONFINITE, RR_ERR_GRID (mx, my outside [1, RR_EXACT_MAX_GRID]),
+ *   RR_ERR_GEOMETRY (dx, dy not positive or too elongated, A or B not
+ *   positive, or no element where h is lowest can carry load), RR_ERR_LOAD,
+ *   RR_ERR_MATERIAL, RR_ERR_FRICTION, RR_ERR_PARAM (tol, maxit,
+ *   spin_shift), RR_ERR_RANGE (sizes so extreme that a result is not
+ *   finite), RR_ERR_WORKSPACE, RR_ERR_NULL.  field may be NULL.
+ */
+int rr_exact_solve(const rr_exact_problem *pb, double *work, size_t work_len,
+                   rr_exact_result *res, rr_exact_field *field);
+
+/*
+ * rr_exact_hertz_grid - the grid of a Hertzian ellipse with semi-axes a
+ * (along x) and b: nx x ny elements across 2a x 2b, RR_EXACT_MARGIN more
+ * on each side, centred on the ellipse (whose edges on the axes are
+ * element edges).  Status: RR_OK, RR_ERR_NONFINITE, RR_ERR_GEOMETRY,
+ * RR_ERR_GRID, RR_ERR_NULL.
+ */
+int rr_exact_hertz_grid(double a, double b, int nx, int ny, rr_exact_grid *g);
+
+/*
+ * rr_exact_hertz_problem - *pb for the Hertzian case c (its ellipse, load
+ * and material; the curvatures from rr_hertz_curvatures) on the grid and
+ * with the settings of o, options of the method "exact".  Coulomb
+ * friction only: a falling law is RR_ERR_FRICTION.  Status as
+ * rr_contact_check, rr_friction_check, rr_exact_hertz_grid,
+ * rr_hertz_curvatures.
+ */
+int rr_exact_hertz_problem(const rr_contact_case *c, const rr_friction *fr,
+                           const rr_creep_opts *o, rr_exact_problem *pb);
+
+#endif

@@ -1,0 +1,101 @@
+/* rr_exact_method.c - the exact theory as a creep-force method of the
+ * registry ("exact"): the Hertzian case of an rr_contact_case on the
+ * ellipse's own grid, Coulomb friction. */
+#include <math.h>
+#include "util/rr_common.h"
+#include "contact/rr_hertz.h"
+#include "contact/rr_exact.h"
+#include "contact/rr_creep_opts.h"
+
+int rr_exact_hertz_problem(const rr_contact_case *c, const rr_friction *fr,
+                           const rr_creep_opts *o, rr_exact_problem *pb)
+{
+    int st;
+
+    if (!pb)
+        return RR_ERR_NULL;
+    pb->h = NULL;
+    if (!c || !fr || !o)
+        return RR_ERR_NULL;
+    st = rr_contact_check(c);
+    if (st == RR_OK)
+        st = rr_friction_check(fr);
+    /* built for Coulomb friction: a falling law would need the slip speed in
+     * the traction bound, which this solver does not iterate on */
+    if (st == RR_OK && rr_friction_is_falling(fr))
+        st = RR_ERR_FRICTION;
+    if (st == RR_OK)
+        st = rr_exact_hertz_grid(c->a, c->b, (int)o->v[RR_EXACT_NX], (int)o->v[RR_EXACT_NY],
+                                 &pb->grid);
+    if (st == RR_OK)
+        st = rr_hertz_curvatures(c->a, c->b, c->N, c->G / (1.0 - c->nu), &pb->A, &pb->B);
+    pb->N = c->N;
+    pb->G = c->G;
+    pb->nu = c->nu;
+    pb->mu = fr->mu0;
+    pb->cx = c->cx;
+    pb->cy = c->cy;
+    pb->cphi = c->cphi;
+    pb->tol = o->v[RR_EXACT_TOL];
+    pb->maxit = (int)o->v[RR_EXACT_MAXIT];
+    pb->spin_shift = o->v[RR_EXACT_SPIN_SHIFT];
+    return st;
+}
+
+static double exact_cost(const rr_creep_opts *o)
+{
+    /* some 60 products of about 10 N log2 N each, in FASTSIM elements (~10 flops) */
+    const double n = (o->v[RR_EXACT_NX] + 2 * RR_EXACT_MARGIN)
+                     * (o->v[RR_EXACT_NY] + 2 * RR_EXACT_MARGIN);
+    return 60.0 * 4.0 * n * log2(4.0 * n);
+}
+
+static size_t exact_workspace(const rr_creep_opts *o)
+{
+    return rr_exact_workspace_len((int)o->v[RR_EXACT_NX] + 2 * RR_EXACT_MARGIN,
+                                  (int)o->v[RR_EXACT_NY] + 2 * RR_EXACT_MARGIN);
+}
+
+static int exact_forces(const rr_contact_case *c, const rr_friction *fr,
+                        const rr_creep_opts *o, double *work, rr_forces *out)
+{
+    rr_exact_problem pb;
+    rr_exact_result res;
+    int st;
+
+    if (!out)
+        return RR_ERR_NULL;
+    st = rr_exact_hertz_problem(c, fr, o, &pb);
+    if (st == RR_OK)
+        st = rr_exact_solve(&pb, work, exact_workspace(o), &res, NULL);
+    if (st < 0) {
+        rr_forces_nan(out);
+        return st;
+    }
+    out->fx = res.fx;
+    out->fy = res.fy;
+    out->mz = res.mz;
+    return rr_forces_checked(st, out);
+}
+
+static const rr_creep_option exact_opts[] = {
+    {"nx", RR_OPT_INT, "", 27.0, 1.0, RR_EXACT_MAX_GRID - 2 * RR_EXACT_MARGIN, 0, 0, NULL,
+     RR_ERR_GRID, "elements across the ellipse's 2a (the grid adds 2 on each side)"},
+    {"ny", RR_OPT_INT, "", 27.0, 1.0, RR_EXACT_MAX_GRID - 2 * RR_EXACT_MARGIN, 0, 0, NULL,
+     RR_ERR_GRID, "elements across the ellipse's 2b"},
+    {"tol", RR_OPT_REAL, "", 1e-6, 1e-14, 0.1, 0, 0, NULL, RR_ERR_PARAM,
+     "relative tolerance of the normal and the tangential solution"},
+    {"maxit", RR_OPT_INT, "", 5000.0, 1.0, 1e7, 0, 0, NULL, RR_ERR_PARAM,
+     "most FFT products each problem may use (then the status warns)"},
+    {"spin_shift", RR_OPT_REAL, "", 1.0 / 6.0, -1.0, 1.0, 0, 0, NULL, RR_ERR_PARAM,
+     "spin's rigid slip taken at x + spin_shift dx: CONTACT's 1/6; 0 keeps C23 = C32 on "
+     "every grid"},
+};
+
+const rr_method_desc rr_method_exact = {
+    "exact",
+    "Kalker's exact theory (CONTACT's discretisation: steady rolling on the half-space, "
+    "Coulomb friction), FFT-accelerated",
+    5, exact_opts, 1, NULL, NULL, exact_cost, rr_method_unit_slope, exact_workspace,
+    exact_forces, NULL, NULL
+};
