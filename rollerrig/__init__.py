@@ -30,6 +30,7 @@ from .rig import (Rig, RigResult, build_rig, default_parameters, load_parameters
                   simulate)
 from .fit import FitResult, fit_modified_fastsim, fit_polach
 from .sweep import sweep, sweep_rig
+from .exact import ExactSolution, exact_field, exact_richardson, exact_solve
 from . import reference
 from .rig_contact import (LinearCreepages, RigContact, RigPose, WheelContact, linear_creepages,
                           rig_contact)
@@ -43,5 +44,6 @@ __all__ = [
     "RigContact", "rig_contact", "LinearCreepages", "linear_creepages",
     "equivalent_conicity", "rolling_radius_difference", "simulate", "RigResult",
     "default_parameters", "load_parameters", "build_rig", "Rig", "replay", "fit_polach",
-    "fit_modified_fastsim", "FitResult", "sweep", "sweep_rig", "reference",
+    "fit_modified_fastsim", "FitResult", "sweep", "sweep_rig", "reference", "ExactSolution",
+    "exact_field", "exact_solve", "exact_richardson",
 ]
