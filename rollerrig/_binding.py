@@ -38,12 +38,14 @@ class OptionInfo(NamedTuple):
 class MethodInfo(NamedTuple):
     """A creep-force method of the registry: its doc, options (name ->
     OptionInfo, in the descriptor's order), whether it has a traction field
-    (fastsim_field) and whether it saturates (|F| <= mu N)."""
+    (fastsim_field), whether it saturates (|F| <= mu N) and whether it is a
+    time-loop method (no workspace, bounded cost: the rig can run it)."""
     name: str
     doc: str
     options: MappingProxyType
     has_field: bool
     saturates: bool
+    in_loop: bool
 
     def defaults(self):
         """Option name -> default value."""
@@ -53,8 +55,8 @@ class MethodInfo(NamedTuple):
 #: name -> MethodInfo, in the registry's order (read-only)
 METHODS = MappingProxyType({
     name: MethodInfo(name, doc, MappingProxyType({o[0]: OptionInfo(*o) for o in opts}),
-                     bool(field), bool(sat))
-    for name, doc, opts, field, sat in _core.METHODS})
+                     bool(field), bool(sat), bool(loop))
+    for name, doc, opts, field, sat, loop in _core.METHODS})
 
 
 def methods_doc():
@@ -74,6 +76,18 @@ def method_info(func, method):
         return METHODS[method]
     names = ", ".join(repr(k) for k in METHODS)
     raise RollerRigError(f"{func}: method must be one of {names}, got {method!r:.60}")
+
+
+def loop_method(func, method):
+    """The MethodInfo of a method the rig's time loop can run, else
+    RollerRigError saying why and naming the ones it can."""
+    info = method_info(func, method)
+    if not info.in_loop:
+        names = ", ".join(repr(k) for k, m in METHODS.items() if m.in_loop)
+        raise RollerRigError(f"{func}: method {method!r} is not a time-loop method (it solves "
+                             f"each contact iteratively on a grid, milliseconds a case, in a "
+                             f"workspace of its own); the rig runs {names}")
+    return info
 
 
 def core(call, *args, **kwargs):

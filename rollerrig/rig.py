@@ -43,7 +43,7 @@ import numpy as np
 from . import _core
 from ._errors import RollerRigError, RollerRigWarning, status_message
 from ._optional import require
-from ._binding import METHODS, _as_float, check_creep_options, core
+from ._binding import METHODS, _as_float, check_creep_options, core, loop_method
 from .geometry import MAX_ROWS, ContactTable, RigGeometry
 from .profiles import Profile
 
@@ -559,6 +559,7 @@ def _creep_options(func, P, method, nx, ny, creep):
     if not (isinstance(method, str) and method in METHODS):
         raise RollerRigError(f"{func}: method must be one of {', '.join(map(repr, METHODS))}, "
                              f"got {method!r:.60}")
+    loop_method(func, method)
     unknown = set(creep) - set(CREEP_OPTIONS)
     if unknown:
         raise RollerRigError(f"{func}: unknown option(s) {sorted(unknown)}; the creep "

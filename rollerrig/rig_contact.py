@@ -33,7 +33,7 @@ import numpy as np
 
 from . import _core
 from ._errors import RollerRigError, status_message
-from ._binding import _broadcast, _finish, _friction, check_creep_options, core, method_info
+from ._binding import _broadcast, _finish, _friction, check_creep_options, core, loop_method
 from .geometry import ContactTable
 
 __all__ = ["RigPose", "WheelContact", "RigContact", "rig_contact", "LinearCreepages",
@@ -138,7 +138,7 @@ def rig_contact(table, *, x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, s
     func = "rig_contact"
     _check_table(func, table)
     # the rig's grid, 20 x 20, where the method has one (the registry's default is 30 x 30)
-    grid = {k: 20 for k in ("nx", "ny") if k in method_info(func, method).options}
+    grid = {k: 20 for k in ("nx", "ny") if k in loop_method(func, method).options}
     opts = check_creep_options(func, method, {**grid, **options})
     model = _model(func, table, mu, E, nu, vmin, friction)
     named = dict(x=x, y=y, yaw=yaw, vx=vx, vy=vy, yaw_rate=yaw_rate, spin=spin,

@@ -227,3 +227,9 @@ def test_bad_inputs():
         rr.exact_solve(h, dx=1e-3, dy=1e-3, N=1e3, mu=0.3)
     with pytest.raises(rr.RollerRigError, match="one case"):
         rr.exact_field(np.array([1e-3, 2e-3]), **kw)
+
+
+def test_the_rig_refuses_the_exact_solver_clearly():
+    assert not rr.METHODS["exact"].in_loop and rr.METHODS["fastsim"].in_loop
+    with pytest.raises(rr.RollerRigError, match="not a time-loop method"):
+        rr.simulate(method="exact")    # refused before any step

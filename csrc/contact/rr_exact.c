@@ -43,6 +43,7 @@ static size_t carve(layout *L, int mx, int my, double *base)
     size_t spec_len, off = 0;
 
 #define TAKE(ptr, len) do { (ptr) = base ? base + off : NULL; off += (len); } while (0)
+    memset(L, 0, sizeof *L);
     if (conv_len == 0)
         return 0;
     spec_len = rr_conv2d_spectrum_len(mx, my);

@@ -93,7 +93,8 @@ static int model_invalid(const rr_rig_contact_model *m)
     return !m->table || !m->table->data || !isfinite(m->R0) || !isfinite(m->estar)
         || !isfinite(m->G) || !isfinite(m->nu) || !isfinite(m->vmin) || !(m->R0 > 0.0)
         || !(m->estar > 0.0) || !(m->G > 0.0) || !(m->nu >= 0.0 && m->nu <= 0.5)
-        || !(m->vmin > 0.0) || rr_friction_check(f) != RR_OK || rr_creep_opts_check(o) != RR_OK;
+        || !(m->vmin > 0.0) || rr_friction_check(f) != RR_OK || rr_creep_opts_check(o) != RR_OK
+        || rr_creep_workspace_len(o) > 0;   /* the exact solver: not a time-step method */
 }
 
 static int state_nonfinite(const rr_rig_state *s)

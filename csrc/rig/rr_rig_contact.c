@@ -23,7 +23,13 @@ int rr_rig_contact_check(const rr_rig_contact_model *m)
         if (st)
             return st;
     }
-    return rr_creep_opts_check(&m->creep);
+    {
+        int st = rr_creep_opts_check(&m->creep);
+        if (st)
+            return st;
+    }
+    /* a method with a workspace (the exact solver) is not for a time step */
+    return rr_creep_workspace_len(&m->creep) > 0 ? RR_ERR_METHOD : RR_OK;
 }
 
 static void vec_nan(double *v, int n)

@@ -94,7 +94,8 @@ typedef struct {
  * rr_rig_contact_check - 0 if the model is usable, else RR_ERR_WORKSPACE
  * (no table), RR_ERR_NONFINITE, RR_ERR_GEOMETRY (R0 <= 0), RR_ERR_MATERIAL
  * (E*, G not positive, nu outside [0, 0.5]), RR_ERR_FRICTION, RR_ERR_SPEED
- * (vmin <= 0), rr_creep_opts_check, RR_ERR_NULL (m NULL).
+ * (vmin <= 0), rr_creep_opts_check, RR_ERR_METHOD (a method that needs a
+ * workspace, the exact solver: not a time-step method), RR_ERR_NULL.
  */
 int rr_rig_contact_check(const rr_rig_contact_model *m);
 
