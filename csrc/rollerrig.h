@@ -6,7 +6,7 @@
  *   rr_common.h    status codes and their messages
  *   rr_elliptic.h  Carlson's R_F, R_D; complete elliptic integrals K, E
  *   rr_hertz.h     Hertzian contact ellipse
- *   rr_kalker.h    Kalker's creep coefficients C11, C22, C23
+ *   rr_kalker.h    Kalker's creep coefficients C11, C22, C23, C33
  *   rr_friction.h  Coulomb and Polach's falling friction
  *   rr_contact.h   the contact case and the forces every method returns
  *   rr_creep_opts.h  method options and descriptors, what every method shares

@@ -4,7 +4,7 @@ The contact core (C99, vectorised, GIL released):
 
     import rollerrig as rr
     h = rr.hertz(A, B, N)                      # h.a, h.b [m], h.p0 [Pa], h.delta [m]
-    k = rr.kalker_coefficients(a_over_b, nu)   # k.c11, k.c22, k.c23
+    k = rr.kalker_coefficients(a_over_b, nu)   # k.c11, k.c22, k.c23, k.c33
     f = rr.creep_forces(cx, cy, cphi, a=..., b=..., N=..., mu=..., method="fastsim")
     t = rr.fastsim_field(cx, cy, cphi, a=..., b=..., N=..., mu=...)
 

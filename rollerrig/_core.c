@@ -288,6 +288,7 @@ static int kalker_kernel(void *ctx, npy_intp start, npy_intp stop)
         b->out[0][i] = k.c11;
         b->out[1][i] = k.c22;
         b->out[2][i] = k.c23;
+        b->out[3][i] = k.c33;
     }
     return 0;
 }
@@ -297,7 +298,7 @@ static PyObject *py_kalker(PyObject *self, PyObject *args)
     static const char *const names[] = {"a_over_b", "nu"};
     elementwise b;
     (void)self;
-    return elementwise_call("kalker_coefficients", args, names, 2, 3, kalker_kernel, &b, 1.0);
+    return elementwise_call("kalker_coefficients", args, names, 2, 4, kalker_kernel, &b, 1.0);
 }
 
 /* --------------------------------------------------------- creep forces */
@@ -2136,7 +2137,7 @@ static PyMethodDef core_methods[] = {
     {"hertz1", (PyCFunction)(void (*)(void))py_hertz1, METH_FASTCALL,
      "hertz1(A, B, N, E1, nu1, E2, nu2) -> (a, b, p0, delta, status)"},
     {"kalker", py_kalker, METH_VARARGS,
-     "kalker(a_over_b, nu) -> (c11, c22, c23, status)"},
+     "kalker(a_over_b, nu) -> (c11, c22, c23, c33, status)"},
     {"creep_forces", (PyCFunction)(void (*)(void))py_creep_forces, METH_VARARGS | METH_KEYWORDS,
      "creep_forces(cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B, *, method, <its options>)"
      " -> (fx, fy, mz, status); METHODS lists the methods and their options"},

@@ -56,6 +56,7 @@ class KalkerCoefficients(NamedTuple):
     c11: np.ndarray
     c22: np.ndarray
     c23: np.ndarray
+    c33: np.ndarray     #: spin coefficient (Mz = G c^3 C23 cy - G c^4 C33 cphi)
     status: np.ndarray
 
 
@@ -172,19 +173,22 @@ def hertz(A, B, N, E=2.1e11, nu=0.28, E2=None, nu2=None, *, errors=None):
 
 
 def kalker_coefficients(a_over_b, nu=0.28, *, errors=None):
-    """Kalker's creep coefficients C11, C22, C23 (Kalker 1990, Table E.3).
+    """Kalker's creep and spin coefficients C11, C22, C23, C33 (Kalker 1990,
+    Table E.3).
 
     Exact at the table's nodes; linear in g = min(a/b, b/a) between them, a
-    parabola through 1/C in nu; Kalker's asymptotes below g = 0.1.
+    parabola through 1/C in nu; Kalker's asymptotes below g = 0.1 (for C33,
+    which has none in CONTACT, the continuation csrc/contact/rr_kalker.h
+    describes).
     a_over_b: semi-axis along the rolling direction over the lateral one
     (> 0); nu: Poisson ratio, 0 <= nu <= 0.5.  errors: as for hertz.
-    Returns KalkerCoefficients(c11, c22, c23, status), dimensionless.
+    Returns KalkerCoefficients(c11, c22, c23, c33, status), dimensionless.
     """
     shape, scalar, full, flat = _broadcast("kalker_coefficients",
                                            dict(a_over_b=a_over_b, nu=nu))
-    c11, c22, c23, status = _core.kalker(*flat)
+    c11, c22, c23, c33, status = _core.kalker(*flat)
     return KalkerCoefficients(*_finish("kalker_coefficients", shape, scalar, full,
-                                       (c11, c22, c23), status, errors))
+                                       (c11, c22, c23, c33), status, errors))
 
 
 def _case(func, cx, cy, cphi, a, b, N, mu, G, nu, speed, friction):
@@ -215,8 +219,7 @@ def creep_forces(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, method
     its cap somewhere, < 0 an error with NaN forces; rollerrig.STATUS).
     Every method that saturates (all but "linear") keeps |(fx, fy)| <= mu N
     (the static mu).  The Polach method has no spin moment (mz = 0); the
-    linear theory's spin moment uses the simplified theory's C33 (Kalker's
-    C33 is not in our table).
+    linear theory's spin moment uses Kalker's C33 (kalker_coefficients).
     """
     func = "creep_forces"
     if errors is None:

@@ -70,7 +70,7 @@ UNITS = {
     "G": "Pa", "nu": "-", "speed": "m/s", "fx": "N", "fy": "N", "mz": "N m",
     "friction.A": "-", "friction.B": "s/m",
     "E": "Pa", "E2": "Pa", "nu2": "-", "p0": "Pa", "delta": "m",
-    "a_over_b": "-", "c11": "-", "c22": "-", "c23": "-",
+    "a_over_b": "-", "c11": "-", "c22": "-", "c23": "-", "c33": "-",
     "k0": "-", "alpha_inf": "-", "beta": "-", "kA": "-", "kS": "-",
     # sweep_rig: simulate's arguments, the summary metrics (a parameter path's
     # unit is its declaration's, rollerrig.rig.PARAMETERS)

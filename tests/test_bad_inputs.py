@@ -69,8 +69,10 @@ def test_hertz_beyond_the_double_range_is_an_error():
 
 
 def test_kalker_coefficients_at_extreme_ratios():
-    k = rr.kalker_coefficients(5e-324)          # c23 = inf before: 16/g overflowed
-    assert k.status == 0 and np.isfinite(k.c23) and k.c23 > 0
+    k = rr.kalker_coefficients(1e-308)          # c23 = inf before: 16/g overflowed
+    assert k.status == 0 and np.isfinite(k.c23) and k.c23 > 0 and np.isfinite(k.c33)
+    k = rr.kalker_coefficients(5e-324, errors="ignore")  # C33 ~ 1/g: not representable
+    assert k.status == RANGE and np.isnan(k.c23) and np.isnan(k.c33)
     k = rr.kalker_coefficients(1e300, errors="ignore")   # C23 ~ g^(-3/2): not representable
     assert k.status == RANGE and np.isnan(k.c11)
 
@@ -106,6 +108,7 @@ def test_incompressible_body_is_accepted():
     """Kalker's table has nu = 0.5; an incompressible body is physical."""
     k = rr.kalker_coefficients(0.1, 0.5)
     assert k.c11 == 4.85 and k.c22 == 2.53 and k.c23 == 0.731   # Table E.3, g = 0.1
+    assert k.c33 == 11.7
     assert rr.hertz(0.8, 0.28, 1e5, nu=0.5).status == 0
     f = rr.creep_forces(1e-3, 0.0, 0.0, a=6e-3, b=6e-3, N=1e4, mu=0.3, nu=0.5)
     assert f.status == 0 and np.isfinite(f.fx)

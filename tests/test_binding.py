@@ -34,7 +34,7 @@ def test_scalars_give_floats():
     h = rr.hertz(1.0, 2.0, 1e4)
     assert all(type(v) is float for v in (h.a, h.b, h.p0, h.delta)) and type(h.status) is int
     k = rr.kalker_coefficients(0.5)
-    assert all(type(v) is float for v in (k.c11, k.c22, k.c23))
+    assert all(type(v) is float for v in (k.c11, k.c22, k.c23, k.c33))
     # numpy scalars and 0-d arrays count as scalars; Python ints are accepted
     f2 = creep(np.float64(1e-3), np.array(2e-4), 0.1, N=20000)
     assert type(f2.fx) is float and (f2.fx, f2.fy, f2.mz) == (f.fx, f.fy, f.mz)

@@ -167,7 +167,7 @@ def test_kalker_scalar_finite_or_named_error(args):
 @example(args=dict(a_over_b=np.array([5e-324, 1.0, np.nan]), nu=0.28))
 def test_kalker_batch_good_elements_unaffected(args):
     k = kalker(args, errors="ignore")
-    assert_batch_consistent(dict(c11=k.c11, c22=k.c22, c23=k.c23), k.status)
+    assert_batch_consistent(dict(c11=k.c11, c22=k.c22, c23=k.c23, c33=k.c33), k.status)
     good = np.flatnonzero(k.status >= 0)
     if good.size:
         assert_same([v[good] for v in k], kalker(subset(args, good), errors="ignore"))
@@ -177,7 +177,7 @@ def test_kalker_batch_good_elements_unaffected(args):
 @given(args=cases(dict(KALKER, nu=NU_OPEN), wild_share=0))
 def test_kalker_plausible_positive(args):
     k = kalker(args, errors="ignore")
-    assert k.status >= 0 and min(k.c11, k.c22, k.c23) > 0, k
+    assert k.status >= 0 and min(k.c11, k.c22, k.c23, k.c33) > 0, k
 
 
 # ================================================================== Poisson's ratio

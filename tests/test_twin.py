@@ -68,12 +68,13 @@ KALKER_RATIOS = np.concatenate([np.geomspace(1e-3, 1e3, 121),      # asymptotes 
 def test_kalker_matches_c(nu):
     k = rr.kalker_coefficients(KALKER_RATIOS, nu)
     for i, aob in enumerate(KALKER_RATIOS):
-        c11, c22, c23 = twin.kalker(float(aob), nu)
+        c11, c22, c23, c33 = twin.kalker(float(aob), nu)
         # the same table, interpolation in g, parabola in 1/C over nu and asymptotes
         # below g = 0.1, in the C order of operations: 1e-14 relative (bitwise today)
         assert c11 == pytest.approx(k.c11[i], rel=1e-14, abs=0), (aob, nu)
         assert c22 == pytest.approx(k.c22[i], rel=1e-14, abs=0), (aob, nu)
         assert c23 == pytest.approx(k.c23[i], rel=1e-14, abs=0), (aob, nu)
+        assert c33 == pytest.approx(k.c33[i], rel=1e-14, abs=0), (aob, nu)
 
 
 # ------------------------------------------------------------------ friction law

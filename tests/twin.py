@@ -41,7 +41,8 @@ References:
 * J. J. Kalker, Three-Dimensional Elastic Bodies in Rolling Contact,
   Kluwer 1990, Table E.3 (creep coefficients), and the asymptotic formulas
   for g -> 0 of Kalker's thesis (1967) as used by E. Vollebregt's CONTACT
-  (m_hertz.f90, linrol).
+  (m_hertz.f90, linrol); C33 as transcribed in OpenVSD (tests/data/
+  kalker_c33.csv).
 * J. J. Kalker, "A fast algorithm for the simplified theory of rolling
   contact", Vehicle System Dynamics 11 (1982) 1-13 (FASTSIM).
 * E. Vollebregt, P. Voltr, "Improved accuracy for FASTSIM using one or
@@ -66,32 +67,32 @@ MAX_GRID = 4096
 #: Newton iterations for the falling-friction bound (FALLING_MAX_ITER).
 FALLING_MAX_ITER = 50
 
-# Kalker (1990) Table E.3: [half][row g = 0.1 * (i + 1)][C11, C22, C23][nu = 0, 0.25, 0.5].
+# Kalker (1990) Table E.3: [half][row g = 0.1 * (i + 1)][C11, C22, C23, C33][nu = 0, 0.25, 0.5].
 # half 0: a <= b (g = a/b); half 1: a >= b (g = b/a).  Row 9 (g = 1) is shared.
 _KALKER_TABLE = (
     (   # a <= b
-        ((2.51, 3.31, 4.85), (2.51, 2.52, 2.53), (0.334, 0.473, 0.731)),
-        ((2.59, 3.37, 4.81), (2.59, 2.63, 2.66), (0.483, 0.603, 0.809)),
-        ((2.68, 3.44, 4.80), (2.68, 2.75, 2.81), (0.607, 0.715, 0.889)),
-        ((2.78, 3.53, 4.82), (2.78, 2.88, 2.98), (0.720, 0.823, 0.977)),
-        ((2.88, 3.62, 4.83), (2.88, 3.01, 3.14), (0.827, 0.929, 1.07)),
-        ((2.98, 3.72, 4.91), (2.98, 3.14, 3.31), (0.930, 1.03, 1.18)),
-        ((3.09, 3.81, 4.97), (3.09, 3.28, 3.48), (1.03, 1.14, 1.29)),
-        ((3.19, 3.91, 5.05), (3.19, 3.41, 3.65), (1.13, 1.25, 1.40)),
-        ((3.29, 4.01, 5.12), (3.29, 3.54, 3.82), (1.23, 1.36, 1.51)),
-        ((3.40, 4.12, 5.20), (3.40, 3.67, 3.98), (1.33, 1.47, 1.63)),
+        ((2.51, 3.31, 4.85), (2.51, 2.52, 2.53), (0.334, 0.473, 0.731), (6.42, 8.28, 11.7)),
+        ((2.59, 3.37, 4.81), (2.59, 2.63, 2.66), (0.483, 0.603, 0.809), (3.46, 4.27, 5.66)),
+        ((2.68, 3.44, 4.80), (2.68, 2.75, 2.81), (0.607, 0.715, 0.889), (2.49, 2.96, 3.72)),
+        ((2.78, 3.53, 4.82), (2.78, 2.88, 2.98), (0.720, 0.823, 0.977), (2.02, 2.32, 2.77)),
+        ((2.88, 3.62, 4.83), (2.88, 3.01, 3.14), (0.827, 0.929, 1.07), (1.74, 1.93, 2.22)),
+        ((2.98, 3.72, 4.91), (2.98, 3.14, 3.31), (0.930, 1.03, 1.18), (1.56, 1.68, 1.86)),
+        ((3.09, 3.81, 4.97), (3.09, 3.28, 3.48), (1.03, 1.14, 1.29), (1.43, 1.50, 1.60)),
+        ((3.19, 3.91, 5.05), (3.19, 3.41, 3.65), (1.13, 1.25, 1.40), (1.34, 1.37, 1.42)),
+        ((3.29, 4.01, 5.12), (3.29, 3.54, 3.82), (1.23, 1.36, 1.51), (1.27, 1.27, 1.27)),
+        ((3.40, 4.12, 5.20), (3.40, 3.67, 3.98), (1.33, 1.47, 1.63), (1.21, 1.19, 1.16)),
     ),
     (   # a >= b
-        ((10.7, 11.7, 12.9), (10.7, 12.8, 16.0), (12.2, 14.6, 18.0)),
-        ((6.96, 7.78, 8.82), (6.96, 8.14, 9.79), (5.72, 6.63, 7.89)),
-        ((5.57, 6.34, 7.34), (5.57, 6.40, 7.51), (3.79, 4.32, 5.01)),
-        ((4.84, 5.57, 6.57), (4.84, 5.48, 6.31), (2.88, 3.24, 3.70)),
-        ((4.37, 5.10, 6.11), (4.37, 4.90, 5.56), (2.35, 2.62, 2.96)),
-        ((4.06, 4.78, 5.80), (4.06, 4.50, 5.04), (2.01, 2.23, 2.50)),
-        ((3.82, 4.54, 5.58), (3.82, 4.21, 4.67), (1.76, 1.95, 2.18)),
-        ((3.65, 4.36, 5.42), (3.65, 3.99, 4.39), (1.58, 1.75, 1.94)),
-        ((3.51, 4.22, 5.30), (3.51, 3.81, 4.16), (1.44, 1.59, 1.77)),
-        ((3.40, 4.12, 5.20), (3.40, 3.67, 3.98), (1.33, 1.47, 1.63)),
+        ((10.7, 11.7, 12.9), (10.7, 12.8, 16.0), (12.2, 14.6, 18.0), (0.795, 0.526, 0.228)),
+        ((6.96, 7.78, 8.82), (6.96, 8.14, 9.79), (5.72, 6.63, 7.89), (0.828, 0.601, 0.341)),
+        ((5.57, 6.34, 7.34), (5.57, 6.40, 7.51), (3.79, 4.32, 5.01), (0.868, 0.674, 0.446)),
+        ((4.84, 5.57, 6.57), (4.84, 5.48, 6.31), (2.88, 3.24, 3.70), (0.912, 0.747, 0.549)),
+        ((4.37, 5.10, 6.11), (4.37, 4.90, 5.56), (2.35, 2.62, 2.96), (0.958, 0.819, 0.650)),
+        ((4.06, 4.78, 5.80), (4.06, 4.50, 5.04), (2.01, 2.23, 2.50), (1.01, 0.892, 0.751)),
+        ((3.82, 4.54, 5.58), (3.82, 4.21, 4.67), (1.76, 1.95, 2.18), (1.05, 0.965, 0.852)),
+        ((3.65, 4.36, 5.42), (3.65, 3.99, 4.39), (1.58, 1.75, 1.94), (1.10, 1.04, 0.954)),
+        ((3.51, 4.22, 5.30), (3.51, 3.81, 4.16), (1.44, 1.59, 1.77), (1.16, 1.11, 1.06)),
+        ((3.40, 4.12, 5.20), (3.40, 3.67, 3.98), (1.33, 1.47, 1.63), (1.21, 1.19, 1.16)),
     ),
 )
 
@@ -212,13 +213,19 @@ def _nu_parabola(c, nu):
 def _kalker_asymptotic(half, g, nu):
     """Kalker's asymptotes (thesis 1967, as in CONTACT's linrol) for
     g = min(a/b, b/a) -> 0.  ``half`` 0: a << b (narrow in the rolling
-    direction); 1: a >> b (long in the rolling direction).
-    Returns (C11, C22, C23)."""
+    direction); 1: a >> b (long in the rolling direction).  CONTACT has none
+    for C33: for a << b strip theory's pi^2 / (16 (1 - nu) g) plus the
+    constant that meets the table at g = 0.1, for a >> b the table's value
+    at g = 0.1 (rr_kalker.h).
+    Returns (C11, C22, C23, C33)."""
     pi = math.pi
+    c33_row0 = _nu_parabola(_KALKER_TABLE[half][0][3], nu)
     if half == 0:
+        k33 = pi * pi / (16.0 * (1.0 - nu))
         c11 = pi * pi / (4.0 * (1.0 - nu))
         c22 = pi * pi / 4.0
         c23 = pi * math.sqrt(g) / (3.0 * (1.0 - nu)) * (1.0 + nu * (math.log(16.0 / g) - 5.0))
+        c33 = k33 / g + (c33_row0 - 10.0 * k33)
     else:
         lam = math.log(16.0) - 2.0 * math.log(g)     # g * g may underflow
         d22 = (1.0 - nu) * lam + 2.0 * nu
@@ -226,13 +233,14 @@ def _kalker_asymptotic(half, g, nu):
                * (1.0 + (3.0 - math.log(4.0)) / (lam - 2.0 * nu)))
         c22 = 2.0 * pi / g * (1.0 + (1.0 - nu) * (3.0 - math.log(4.0)) / d22) / d22
         c23 = 2.0 * pi / (3.0 * g * math.sqrt(g) * ((1.0 - nu) * lam - 2.0 + 4.0 * nu))
-    return c11, c22, c23
+        c33 = c33_row0
+    return c11, c22, c23, c33
 
 
 def _kalker_tabulated(half, g, nu):
     """Kalker (1990) Table E.3 for 0.1 <= g <= 1: linear interpolation in g
     of C at each tabulated nu, then the parabola in 1/C over nu.
-    Returns (C11, C22, C23)."""
+    Returns (C11, C22, C23, C33)."""
     # rows are g = 0.1 (row 0) ... 1.0 (row 9); the last interval ends at row 9
     pos = 10.0 * g - 1.0
     if abs(pos - math.floor(pos + 0.5)) < 1e-12:
@@ -242,7 +250,7 @@ def _kalker_tabulated(half, g, nu):
         row = 8
     frac = pos - row
     coeffs = []
-    for k in range(3):              # C11, C22, C23
+    for k in range(4):              # C11, C22, C23, C33
         col = []
         for j in range(3):          # nu = 0, 0.25, 0.5
             c0 = _KALKER_TABLE[half][row][k][j]
@@ -253,19 +261,21 @@ def _kalker_tabulated(half, g, nu):
 
 
 def kalker(a_over_b, nu):
-    """Kalker's creep coefficients (C11, C22, C23) of the linear theory.
+    """Kalker's creep coefficients (C11, C22, C23, C33) of the linear theory.
 
     Reference: J. J. Kalker, Three-Dimensional Elastic Bodies in Rolling
     Contact, Kluwer 1990, Table E.3 (g = 0.1 ... 1; nu = 0, 0.25, 0.5), and
     the asymptotic formulas for g -> 0 of Kalker's thesis (1967) as used by
-    E. Vollebregt's CONTACT (m_hertz.f90, linrol).
+    E. Vollebregt's CONTACT (m_hertz.f90, linrol); C33's continuation below
+    g = 0.1 (none in CONTACT) as in rr_kalker.h.
 
     ``a_over_b`` is the semi-axis along the rolling direction over the
     lateral one (> 0), g = min(a/b, b/a); ``nu`` the Poisson ratio,
     0 <= nu <= 0.5.  For 0.1 <= g <= 1 the table is interpolated linearly in
     g on C at each tabulated nu, then a parabola through 1/C over nu; for
     g < 0.1 Kalker's asymptotes are used.  The linear theory then reads
-    Fx = -G c^2 C11 xi, Fy = -G c^2 C22 eta - G c^3 C23 phi, c = sqrt(ab).
+    Fx = -G c^2 C11 xi, Fy = -G c^2 C22 eta - G c^3 C23 phi,
+    Mz = G c^3 C23 eta - G c^4 C33 phi, c = sqrt(ab).
 
     Raises ValueError naming the argument for invalid input.
     """
@@ -327,19 +337,15 @@ def linear(cx, cy, cphi, a, b, N, G, nu):
     """Creep forces on the wheel by Kalker's linear theory: (fx, fy, mz).
 
     Reference: J. J. Kalker, Three-Dimensional Elastic Bodies in Rolling
-    Contact, Kluwer 1990 (Table E.3 for C11, C22, C23):
+    Contact, Kluwer 1990 (Table E.3 for C11, C22, C23, C33):
         fx = -G c^2 C11 cx,  fy = -G c^2 C22 cy - G c^3 C23 cphi,
         mz = G c^3 C23 cy - G c^4 C33 cphi,  c = sqrt(ab).
-    C33 is not in the transcribed table; as in the C core it is taken from
-    the simplified theory with flexibility L3 (Kalker 1982),
-    C33 = 32/(15 pi) C23 (b/a)^(3/2).  N does not enter (no saturation) but
-    is checked like the C core does.
+    N does not enter (no saturation) but is checked like the C core does.
     """
     a, b, N, G, nu, cx, cy, cphi, _ = _check_contact(a, b, N, G, nu, cx, cy, cphi, 0.0)
-    c11, c22, c23 = kalker(a / b, nu)
+    c11, c22, c23, c33 = kalker(a / b, nu)
     ab = a * b
     c3 = ab * math.sqrt(ab)
-    c33 = 32.0 / (15.0 * math.pi) * c23 * math.pow(b / a, 1.5)
     fx = -G * ab * c11 * cx
     fy = -G * (ab * c22 * cy + c3 * c23 * cphi)
     mz = G * (c3 * c23 * cy - ab * ab * c33 * cphi)
@@ -388,7 +394,7 @@ def polach(cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0, kA=1.0, kS
     kA = _in_range("kA", kA, 0.0, 1.0, lo_open=True)
     kS = _in_range("kS", kS, 0.0, kA, lo_open=True)      # Polach: kS <= kA
     _check_falling_speed(A, B, speed)
-    c11, c22, c23 = kalker(a / b, nu)
+    c11, c22, c23, _ = kalker(a / b, nu)
 
     fx = fy = mz = 0.0
     # spin adds to the lateral creepage only where it increases it
@@ -650,7 +656,7 @@ def fastsim(cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0, nx=30, ny
     a, b, N, G, nu, cx, cy, cphi, speed = _check_contact(a, b, N, G, nu, cx, cy, cphi, speed)
     mu0, A, B = _check_friction(mu, A, B)
     _check_falling_speed(A, B, speed)
-    c11, c22, c23 = kalker(a / b, nu)
+    c11, c22, c23, _ = kalker(a / b, nu)
 
     falling = _is_falling(A, B)
     mu_rigid = _mu(speed * math.hypot(cx, cy), mu0, A, B)

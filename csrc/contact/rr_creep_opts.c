@@ -78,7 +78,7 @@ int rr_creep_kalker(const rr_contact_case *c, rr_kalker_coeffs *k)
 {
     const double q = c->a / c->b;
     if (!isnormal(q)) {
-        k->c11 = k->c22 = k->c23 = NAN;
+        k->c11 = k->c22 = k->c23 = k->c33 = NAN;
         return RR_ERR_RANGE;
     }
     return rr_kalker(q, c->nu, k);

@@ -6,7 +6,7 @@
 int rr_linear(const rr_contact_case *c, rr_forces *out)
 {
     rr_kalker_coeffs k;
-    double ab, c3, c33;
+    double ab, c3;
     int st = out ? rr_contact_check(c) : RR_ERR_NULL;
 
     if (st == RR_OK)
@@ -17,10 +17,9 @@ int rr_linear(const rr_contact_case *c, rr_forces *out)
     }
     ab = c->a * c->b;
     c3 = ab * sqrt(ab);
-    c33 = 32.0 / (15.0 * RR_PI) * k.c23 * pow(c->b / c->a, 1.5);
     out->fx = -c->G * ab * k.c11 * c->cx;
     out->fy = -c->G * (ab * k.c22 * c->cy + c3 * k.c23 * c->cphi);
-    out->mz = c->G * (c3 * k.c23 * c->cy - ab * ab * c33 * c->cphi);
+    out->mz = c->G * (c3 * k.c23 * c->cy - ab * ab * k.c33 * c->cphi);
     return rr_forces_checked(st, out);    /* no saturation: large inputs overflow */
 }
 

@@ -111,7 +111,7 @@ static void test_linear(void)
     rr_forces f, fd, f1, f2, f3, fn;
     rr_creep_opts o = opts(RR_METHOD_LINEAR, 30, 30, RR_BOUND_PARABOLIC, RR_GRID_RECT);
     rr_friction fr = coulomb(0.3);
-    double ab = c.a * c.b, c3 = ab * sqrt(ab), c33;
+    double ab = c.a * c.b, c3 = ab * sqrt(ab);
     int st;
 
     c.cx = 1e-3;
@@ -119,13 +119,34 @@ static void test_linear(void)
     c.cphi = 0.7;
     st = rr_linear(&c, &f);
     CHECK_STATUS(st, RR_OK, "rr_linear status");
-    c33 = 32.0 / (15.0 * RR_PI) * k.c23 * pow(c.b / c.a, 1.5);
     /* the documented formulas with the same coefficients: a few roundings */
     CHECK_CLOSE(f.fx, -c.G * ab * k.c11 * c.cx, 0.0, 1e-14, "linear fx = -G c^2 C11 cx");
     CHECK_CLOSE(f.fy, -c.G * ab * k.c22 * c.cy - c.G * c3 * k.c23 * c.cphi, 0.0, 1e-14,
                 "linear fy = -G c^2 C22 cy - G c^3 C23 cphi");
-    CHECK_CLOSE(f.mz, c.G * c3 * k.c23 * c.cy - c.G * ab * ab * c33 * c.cphi, 0.0, 1e-14,
+    CHECK_CLOSE(f.mz, c.G * c3 * k.c23 * c.cy - c.G * ab * ab * k.c33 * c.cphi, 0.0, 1e-14,
                 "linear mz = G c^3 C23 cy - G c^4 C33 cphi");
+    {
+        /* pure spin at table nodes against Kalker's C33 typed from Table E.3
+         * (kalker_c33.csv): a/b = 0.5 and 2, nu = 0.25 */
+        static const struct { double a, b, c33; } node[] = {
+            {3e-3, 6e-3, 1.93}, {6e-3, 3e-3, 0.819}
+        };
+        unsigned i;
+        for (i = 0; i < sizeof node / sizeof node[0]; i++) {
+            rr_contact_case s = c;
+            rr_forces fs;
+            double sab = node[i].a * node[i].b;
+            s.a = node[i].a;
+            s.b = node[i].b;
+            s.nu = 0.25;
+            s.cx = s.cy = 0.0;
+            s.cphi = 0.7;
+            CHECK_STATUS(rr_linear(&s, &fs), RR_OK, "rr_linear pure spin at a node: status");
+            /* a node of the table: C33 exact, then three roundings: 1e-14 */
+            CHECK_CLOSE(fs.mz, -s.G * sab * sab * node[i].c33 * s.cphi, 0.0, 1e-14,
+                        "linear pure-spin mz = -G c^4 C33 cphi with Table E.3's C33");
+        }
+    }
 
     /* the dispatcher gives the same, and ignores friction */
     st = rr_creep_forces(&c, &fr, &o, &fd);
