@@ -668,7 +668,7 @@ static int solve_tangential(solver *S, rr_exact_result *res)
     const double rho = 0.5 * pb->G / steady_diagonal(pb->grid.dy / pb->grid.dx, pb->nu);
     double *p = L->p, *s = L->s, *w = L->w, *F = L->f, *dl = L->dlt, *md = L->mdl, *pt = L->t1,
            *stt = L->t2;
-    double g2 = 0.0, nF, nFold = 0.0, eta = 0.3;
+    double g2 = 0.0, nF, nFold = 0.0, eta = 0.3, goal = 0.0;
     int k, st = RR_OK, newton = 0, converged = 0;
     const int start = S->products;
 
@@ -700,7 +700,10 @@ static int solve_tangential(solver *S, rr_exact_result *res)
         int ls;
         if (!isfinite(nF))
             return RR_ERR_RANGE;
-        if (nF <= pb->tol * g2) {
+        /* the tolerance is relative to the traction found, not to the
+         * bound: at small creepage p is orders of magnitude below mu pn */
+        goal = fmax(pb->tol * sqrt(dot2(p, p, n2)), 1e-15 * g2);
+        if (nF <= goal) {
             converged = 1;
             break;
         }
@@ -713,7 +716,7 @@ static int solve_tangential(solver *S, rr_exact_result *res)
                 e = fmax(e, 0.9 * eta * eta);
             eta = fmin(0.3, fmax(e, 1e-3));
         }
-        eta = fmax(eta, 0.5 * pb->tol * g2 / nF);
+        eta = fmax(eta, 0.5 * goal / nF);
         for (k = 0; k < n2; k++)
             F[k] = -F[k];
         if ((st = gmres(S, rho, F, eta, dl, md)) < 0)
@@ -735,7 +738,7 @@ static int solve_tangential(solver *S, rr_exact_result *res)
         }
 #ifdef RR_EXACT_DEBUG
         fprintf(stderr, "newton %d: |F| %.3e -> %.3e (goal %.3e), eta %.2e, t %g, products %d\n",
-                newton, nF, nFt, pb->tol * g2, eta, t, S->products);
+                newton, nF, nFt, goal, eta, t, S->products);
 #endif
         memcpy(p, pt, (size_t)n2 * sizeof *p);
         memcpy(s, stt, (size_t)n2 * sizeof *s);
@@ -747,7 +750,10 @@ static int solve_tangential(solver *S, rr_exact_result *res)
     }
     res->tang_products = S->products;
     res->newton_steps = newton;
-    res->tang_residual = g2 > 0.0 ? nF / g2 : 0.0;
+    {
+        const double pnorm = sqrt(dot2(p, p, n2));
+        res->tang_residual = pnorm > 0.0 ? nF / pnorm : 0.0;
+    }
     return converged ? RR_OK : RR_WARN_NOT_CONVERGED;
 }
 
