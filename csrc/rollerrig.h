@@ -21,6 +21,8 @@
  *   rr_rig_contact.h  one contact evaluation of the wheelset on the rollers
  *   rr_control.h   PI speed controllers, drive lag, encoders, creepage controller
  *   rr_ode.h       fixed-step L-stable integrators (ROS2, TR-BDF2, lin. Euler)
+ *   rr_fft.h       mixed-radix FFT and the 2-D convolutions of the exact
+ *                  contact solver (influence coefficients by FFT)
  *   rr_rig.h       the rig in time: plant, normal loads, sampled-data control
  *   rr_rig_params.h  the rig's parameters (names, units, defaults, ranges, origins),
  *                  its scenario and its outputs, declared once

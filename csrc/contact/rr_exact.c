@@ -28,12 +28,21 @@ typedef struct {
     double *conv;
     size_t conv_len;
     double *snn, *sxx, *syy, *sxy;        /* kernel spectra */
-    double *ta, *tb, *tr, *kern;          /* coefficient tables (while building) */
+    double *ta, *tb, *tr, *kern, *kern2;  /* coefficient tables (while building) */
     double *h, *pn, *gap, *r, *rold, *d, *v;          /* normal problem */
     double *p, *s, *w, *f, *nz, *fac, *dlt, *mdl, *t1, *t2;   /* tangential, 2n each */
     double *V, *MV, *H, *gv, *cs, *sn, *y;            /* GMRES */
     signed char *state;
 } layout;
+
+/* Doubles of one kernel spectrum of rr_conv2d for an mx x my grid: the
+ * torus L1 x (L2/2 + 1) of complex values (rr_fft.h); checked against
+ * rr_conv2d_spectrum_len once the engine exists. */
+static size_t spectrum_len(int mx, int my)
+{
+    const int L1 = rr_fft_good_size(2 * mx - 1), L2 = rr_fft_good_size(2 * my - 1);
+    return 2 * (size_t)L1 * (size_t)(L2 / 2 + 1);
+}
 
 /* The workspace's carving; lengths in doubles.  With base NULL only the
  * total is computed. */
@@ -47,7 +56,7 @@ static size_t carve(layout *L, int mx, int my, double *base)
     memset(L, 0, sizeof *L);
     if (conv_len == 0)
         return 0;
-    spec_len = rr_conv2d_spectrum_len(mx, my);
+    spec_len = spectrum_len(mx, my);
     L->mx = mx;
     L->my = my;
     L->n = (int)n;
@@ -62,6 +71,7 @@ static size_t carve(layout *L, int mx, int my, double *base)
     TAKE(L->tb, (size_t)(mx + 1) * my);
     TAKE(L->tr, (size_t)(mx + 1) * my);
     TAKE(L->kern, (size_t)(2 * mx - 1) * (2 * my - 1));
+    TAKE(L->kern2, (size_t)(2 * mx - 1) * (2 * my - 1));
     TAKE(L->h, n);
     TAKE(L->pn, n);
     TAKE(L->gap, n);
@@ -146,41 +156,34 @@ static int build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu)
 #define QA(i, j) (L->ta[(j) * nkx + (i)])
 #define QB(i, j) (L->tb[(j) * nkx + (i)])
 #define QR(i, j) (L->tr[(j) * nkx + (i)])
-#define KERN(i, j) (L->kern[((j) + my - 1) * kw + ((i) + mx - 1)])
-    for (ky = -(my - 1); ky < my; ky++)
-        for (kx = -(mx - 1); kx < mx; kx++)
-            KERN(kx, ky) = (1.0 - nu) / RR_PI * (QA(abs(kx), abs(ky)) + QB(abs(kx), abs(ky)));
-    if ((st = rr_conv2d_spectrum(cv, L->kern, L->snn)) < 0)
-        return st;
-    for (ky = -(my - 1); ky < my; ky++)
-        for (kx = -(mx - 1); kx < mx; kx++) {
-            const int i0 = abs(kx), i1 = abs(kx + 1), j = abs(ky);
-            KERN(kx, ky) = ((1.0 - nu) * (QA(i0, j) - QA(i1, j)) + (QB(i0, j) - QB(i1, j))) / RR_PI;
-        }
-    if ((st = rr_conv2d_spectrum(cv, L->kern, L->sxx)) < 0)
-        return st;
-    for (ky = -(my - 1); ky < my; ky++)
-        for (kx = -(mx - 1); kx < mx; kx++) {
-            const int i0 = abs(kx), i1 = abs(kx + 1), j = abs(ky);
-            KERN(kx, ky) = ((QA(i0, j) - QA(i1, j)) + (1.0 - nu) * (QB(i0, j) - QB(i1, j))) / RR_PI;
-        }
-    if ((st = rr_conv2d_spectrum(cv, L->kern, L->syy)) < 0)
-        return st;
+    /* two kernels a table: (nn, xy), then (xx, yy) */
     for (ky = -(my - 1); ky < my; ky++)
         for (kx = -(mx - 1); kx < mx; kx++) {
             /* A_xy is odd in kx and ky: sign(k) [[r]](|k|), 0 on the axes */
+            const int i0 = abs(kx), i1 = abs(kx + 1), j = abs(ky);
             const double sy = (ky > 0) - (ky < 0);
             const double s0 = (kx > 0) - (kx < 0), s1 = (kx + 1 > 0) - (kx + 1 < 0);
-            const int j = abs(ky);
-            KERN(kx, ky) = -nu / RR_PI * sy
-                           * (s0 * QR(abs(kx), j) - s1 * QR(abs(kx + 1), j));
+            const size_t k = (size_t)(ky + my - 1) * kw + (kx + mx - 1);
+            L->kern[k] = (1.0 - nu) / RR_PI * (QA(i0, j) + QB(i0, j));
+            L->kern2[k] = -nu / RR_PI * sy * (s0 * QR(i0, j) - s1 * QR(i1, j));
         }
-    if ((st = rr_conv2d_spectrum(cv, L->kern, L->sxy)) < 0)
+    if ((st = rr_conv2d_spectrum(cv, L->kern, L->snn)) < 0
+        || (st = rr_conv2d_spectrum(cv, L->kern2, L->sxy)) < 0)
+        return st;
+    for (ky = -(my - 1); ky < my; ky++)
+        for (kx = -(mx - 1); kx < mx; kx++) {
+            const int i0 = abs(kx), i1 = abs(kx + 1), j = abs(ky);
+            const double da = QA(i0, j) - QA(i1, j), db = QB(i0, j) - QB(i1, j);
+            const size_t k = (size_t)(ky + my - 1) * kw + (kx + mx - 1);
+            L->kern[k] = ((1.0 - nu) * da + db) / RR_PI;
+            L->kern2[k] = (da + (1.0 - nu) * db) / RR_PI;
+        }
+    if ((st = rr_conv2d_spectrum(cv, L->kern, L->sxx)) < 0
+        || (st = rr_conv2d_spectrum(cv, L->kern2, L->syy)) < 0)
         return st;
 #undef QA
 #undef QB
 #undef QR
-#undef KERN
     L->hdr[1] = mx;
     L->hdr[2] = my;
     L->hdr[3] = aspect;
@@ -855,6 +858,8 @@ int rr_exact_solve(const rr_exact_problem *pb, double *work, size_t work_len,
     n = mx * pb->grid.my;
     carve(&L, mx, pb->grid.my, work);
     st = rr_conv2d_init(&cv, mx, pb->grid.my, L.conv, L.conv_len);
+    if (st == RR_OK && rr_conv2d_spectrum_len(&cv) > spectrum_len(mx, pb->grid.my))
+        st = RR_ERR_WORKSPACE;
     if (st == RR_OK)
         st = build_spectra(&L, &cv, pb->grid.dy / pb->grid.dx, pb->nu);
     if (st < 0) {

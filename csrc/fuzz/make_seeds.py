@@ -9,9 +9,9 @@ random bytes: the corpus is the same on every run.  The regression inputs
 import os
 import random
 
-TARGETS = ("fuzz_control", "fuzz_creep", "fuzz_creepage", "fuzz_geometry", "fuzz_hertz",
-           "fuzz_kalker", "fuzz_ode", "fuzz_rig", "fuzz_rig_contact", "fuzz_rig_params",
-           "fuzz_spline", "fuzz_spline_fit", "fuzz_tables")
+TARGETS = ("fuzz_control", "fuzz_creep", "fuzz_creepage", "fuzz_fft", "fuzz_geometry",
+           "fuzz_hertz", "fuzz_kalker", "fuzz_ode", "fuzz_rig", "fuzz_rig_contact",
+           "fuzz_rig_params", "fuzz_spline", "fuzz_spline_fit", "fuzz_tables")
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
@@ -25,12 +25,30 @@ def seeds(rng):
         yield f"mixed-{n}", bytes(rng.randrange(256) for _ in range(n))
 
 
+#: fuzz_fft: grids (mx, my) whose tori take the stages random sides seldom reach:
+#: radix 8 (32 = 4 8, 64 = 4 8 2), 9 (27 = 9 3, 36 = 4 9, 45 = 9 5), 6 (72 = 4 6 3),
+#: single stages (3, 5, 9), a lone row or column, the largest side
+FFT_GRIDS = ((16, 5), (32, 2), (14, 23), (18, 3), (23, 18), (36, 4), (2, 3), (5, 40),
+             (1, 33), (40, 1), (40, 40))
+
+
+def fft_grid_seeds(rng):
+    """fuzz_fft's decoder: big (one byte, 0 = sides up to 40), mx and my (a
+    selector below 224, then four little-endian bytes: side - 1), the
+    workspace (2: exact), no misuse (1); then plausible bytes."""
+    for mx, my in FFT_GRIDS:
+        head = bytes([0, 0]) + (mx - 1).to_bytes(4, "little") + bytes([0]) \
+            + (my - 1).to_bytes(4, "little") + bytes([2, 1])
+        yield f"grid-{mx}x{my}", head + bytes(rng.randrange(160) for _ in range(1024))
+
+
 def main():
     for t in TARGETS:
         rng = random.Random(t)                # one stream per target: stable names
         d = os.path.join(HERE, "corpus", t)
         os.makedirs(d, exist_ok=True)
-        for name, data in seeds(rng):
+        extra = fft_grid_seeds(random.Random(t + "-grids")) if t == "fuzz_fft" else ()
+        for name, data in list(seeds(rng)) + list(extra):
             with open(os.path.join(d, name), "wb") as f:
                 f.write(data)
 
