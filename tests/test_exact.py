@@ -234,3 +234,46 @@ def test_the_rig_refuses_the_exact_solver_clearly():
     assert not rr.METHODS["exact"].in_loop and rr.METHODS["fastsim"].in_loop
     with pytest.raises(rr.RollerRigError, match="not a time-loop method"):
         rr.simulate(method="exact")    # refused before any step
+
+
+def test_contact_test_table_3220_cases_on_its_grid():
+    # CONTACT's test_table (11 x 11 grid: 7 elements across plus 2-element
+    # margins, as ours).  The table's creepages are rebuilt from rho and cp
+    # printed to 4 digits in its header, a few 1e-4 of each creepage: that,
+    # not the solvers, bounds the agreement (measured max 6.2e-5 muN).
+    r = rr.reference.score("exact", nx=7, ny=7)
+    assert r.overall["n_failed"] == 0
+    assert r.overall["max"] < 2e-4, r.overall
+    assert r.mz_overall["max"] < 2e-4, r.mz_overall
+
+
+def test_spin_case_of_contacts_user_guide():
+    # fastsim_vs_exact_spin_case.csv case 1: a/b = 2, large spin, exact on
+    # 44 x 44 (40 across + margins); 4 printed digits
+    s = rr.exact_field(0.0, -6.25e-4, 0.625, a=8e-3, b=4e-3, N=82000.0, mu=0.3, G=8.2e10,
+                       nu=0.28, nx=40, ny=40, tol=1e-8)
+    assert s.fy == pytest.approx(-1.494e4, rel=5e-4)
+    assert s.mz == pytest.approx(-4.821e4 * 1e-3, rel=5e-4)
+    assert s.pmax == pytest.approx(1223e6, rel=5e-4)
+    assert abs(s.fx) < 1e-9 * 82000.0
+
+
+def test_exact_creep_curve_series_1():
+    # creep_curves_exact_vs_fastsim.csv series 1 (Eurosprinter, a/b = 0.5):
+    # CONTACT's potential area 1.1 times the ellipse on 48 x 44 elements, h
+    # from A1 = 0.0008/mm and a/b; fx_n printed to 4 digits (5e-5), the
+    # adhesion element counts exact
+    rows = [r for r in csv.DictReader(line for line in open(data_path(
+        "creep_curves_exact_vs_fastsim.csv")) if not line.startswith("#")) if r["series"] == "1"]
+    N, G, nu, mu, A = 106700.0, 8.2e10, 0.28, 0.33, 0.8
+    B = A * np.divide(*_curvatures(0.5e-2, 1e-2, N, G, nu)[::-1])
+    h = rr.hertz(A, B, N, E=2 * G * (1 + nu), nu=nu)
+    assert h.a / h.b == pytest.approx(0.5, rel=1e-9)
+    mx, my = 48, 44
+    dx, dy = 2.2 * h.a / mx, 2.2 * h.b / my
+    X, Y = np.meshgrid((np.arange(mx) - (mx - 1) / 2) * dx, (np.arange(my) - (my - 1) / 2) * dy)
+    for r in rows:
+        g = rr.exact_solve(A * X ** 2 + B * Y ** 2, dx=dx, dy=dy, N=N, mu=mu, G=G, nu=nu,
+                           cx=float(r["cksi"]), tol=1e-8)
+        assert g.fx / (mu * N) == pytest.approx(float(r["fx_n"]), abs=6e-5)
+        assert int((g.contact & ~g.slip).sum()) == int(r["nadh"])
