@@ -22,29 +22,22 @@ import numpy as np
 from . import _core
 from ._binding import _as_float, check_creep_options, used_numbers
 from ._errors import RollerRigError, check_status
+from .contact import TractionField
 
 __all__ = ["ExactSolution", "exact_field", "exact_solve", "exact_richardson"]
 
 
 @dataclass(frozen=True)
-class ExactSolution:
-    """One case solved by the exact theory; arrays of shape (my, mx), rows at
-    increasing y, columns along increasing x (the leading edge, where the
-    material enters, is the last column), as rollerrig.TractionField."""
+class ExactSolution(TractionField):
+    """One case solved by the exact theory: a TractionField (x, y, pn, px,
+    py, slip, area; fx, fy, mz on the wheel [N], [N m] about the reference
+    point; status), arrays of shape (my, mx), rows at increasing y, columns
+    along increasing x (the leading edge, where the material enters, is the
+    last column), and what the exact theory adds:"""
 
-    x: np.ndarray       #: element centre, rolling direction [m]
-    y: np.ndarray       #: element centre, lateral [m]
-    pn: np.ndarray      #: pressure [Pa]
-    px: np.ndarray      #: tangential traction on the wheel [Pa]
-    py: np.ndarray
-    slip: np.ndarray    #: True where the element slips
-    area: np.ndarray    #: element area [m^2]
     sx: np.ndarray      #: slip velocity over the rolling speed [-], 0 in adhesion
     sy: np.ndarray
     contact: np.ndarray  #: True where the element carries pressure
-    fx: float           #: force on the wheel [N]
-    fy: float
-    mz: float           #: spin moment about the reference point [N m]
     fn: float           #: normal force found [N]
     delta: float        #: approach [m]
     contact_area: float  #: area of the elements in contact [m^2]
@@ -52,7 +45,6 @@ class ExactSolution:
     products: tuple     #: FFT products (normal, tangential)
     newton_steps: int
     residuals: tuple    #: final relative residuals (normal, tangential)
-    status: int
 
 
 def _solution(func, grid, out, args):

@@ -269,7 +269,8 @@ def _cell_sizes(t):
 
 def traction_field(t, ax=None, *, quantity="|p_t|", show_slip=True, arrows=True,
                    colorbar=None, cmap="viridis", title=True):
-    """The FASTSIM traction field of rr.fastsim_field, element by element.
+    """A traction field element by element: FASTSIM's (rr.fastsim_field) or
+    the exact theory's (rr.exact_field, rr.exact_solve).
 
     quantity: one of TRACTION_QUANTITIES, the elements' colour ("slip": blue
     adhesion, red slip); show_slip: hatch the elements that slip and outline
@@ -283,7 +284,8 @@ def traction_field(t, ax=None, *, quantity="|p_t|", show_slip=True, arrows=True,
     func = "traction_field"
     from .contact import TractionField
     if not isinstance(t, TractionField):
-        raise RollerRigError(f"{func}: t must be a TractionField from rr.fastsim_field, got "
+        raise RollerRigError(f"{func}: t must be a TractionField (rr.fastsim_field, "
+                             f"rr.exact_field), got "
                              f"{type(t).__name__}")
     if quantity not in TRACTION_QUANTITIES:
         raise RollerRigError(f"{func}: quantity must be one of {list(TRACTION_QUANTITIES)}, "
