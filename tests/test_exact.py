@@ -277,3 +277,20 @@ def test_exact_creep_curve_series_1():
                            cx=float(r["cksi"]), tol=1e-8)
         assert g.fx / (mu * N) == pytest.approx(float(r["fx_n"]), abs=6e-5)
         assert int((g.contact & ~g.slip).sum()) == int(r["nadh"])
+
+
+def test_a_batch_gives_what_each_case_gives_alone():
+    # A creep curve repeats the normal problem (reused from the workspace,
+    # bit for bit) and the kernel spectra; the results must not depend on
+    # the batch: each case alone gives the same doubles.
+    kw = dict(a=0.006, b=0.004, N=5e4, mu=0.3, method="exact", nx=19, ny=19)
+    cx = np.array([1e-4, 5e-4, 5e-4, 2e-3, 0.0])
+    batch = rr.creep_forces(cx, 1e-4, 0.3, **kw)
+    for i, c in enumerate(cx):
+        one = rr.creep_forces(np.array([c]), 1e-4, 0.3, **kw)
+        assert (one.fx[0], one.fy[0], one.mz[0]) == (batch.fx[i], batch.fy[i], batch.mz[i])
+    # a different load in the middle of the batch is solved afresh
+    N = np.array([5e4, 3e4, 5e4])
+    mixed = rr.creep_forces(5e-4, 1e-4, 0.3, **{**kw, "N": N})
+    alone = [rr.creep_forces(np.array([5e-4]), 1e-4, 0.3, **{**kw, "N": n}).fx[0] for n in N]
+    np.testing.assert_array_equal(mixed.fx, alone)

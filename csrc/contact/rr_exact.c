@@ -18,6 +18,10 @@
 /* The workspace's header: a tag, then the key of the cached spectra. */
 #define HDR_LEN 8
 #define HDR_TAG 20261202.5
+/* The key of the cached normal solution: a tag, the problem's numbers, then
+ * its status, approach and residual. */
+#define NKEY_LEN 20
+#define NKEY_TAG 20261202.25
 
 enum { OUTSIDE = -1, ADHESION = 0, SLIP = 1 };
 
@@ -25,6 +29,7 @@ enum { OUTSIDE = -1, ADHESION = 0, SLIP = 1 };
 typedef struct {
     int mx, my, n;
     double *hdr;
+    double *nkey, *pn_cache, *h_cache;     /* the last normal problem and its solution */
     double *conv;
     size_t conv_len;
     double *snn, *sxx, *syy, *sxy;        /* kernel spectra */
@@ -61,6 +66,9 @@ static size_t carve(layout *L, int mx, int my, double *base)
     L->my = my;
     L->n = (int)n;
     TAKE(L->hdr, HDR_LEN);
+    TAKE(L->nkey, NKEY_LEN);
+    TAKE(L->pn_cache, n);
+    TAKE(L->h_cache, n);
     TAKE(L->conv, conv_len);
     L->conv_len = conv_len;
     TAKE(L->snn, spec_len);
@@ -760,6 +768,59 @@ static int solve_tangential(solver *S, rr_exact_result *res)
     return converged ? RR_OK : RR_WARN_NOT_CONVERGED;
 }
 
+/* ---- the normal solution of the previous case ------------------------------- */
+
+/* The numbers that decide the normal problem, in key order. */
+static void normal_key(const rr_exact_problem *pb, double *k)
+{
+    k[0] = pb->grid.mx;
+    k[1] = pb->grid.my;
+    k[2] = pb->grid.dx;
+    k[3] = pb->grid.dy;
+    k[4] = pb->grid.x0;
+    k[5] = pb->grid.y0;
+    k[6] = pb->N;
+    k[7] = pb->G;
+    k[8] = pb->nu;
+    k[9] = pb->tol;
+    k[10] = pb->maxit;
+    k[11] = pb->h ? 1.0 : 0.0;
+    k[12] = pb->h ? 0.0 : pb->A;     /* the Hertzian start depends on them */
+    k[13] = pb->h ? 0.0 : pb->B;
+}
+#define NKEY_USED 14
+
+/* A sweep over creepages (a creep curve, a table) repeats the normal
+ * problem: where every number of it and every value of h equal the last
+ * one's bit for bit, its solution is the one a fresh solve would give
+ * (the same operations on the same doubles), so it is reused.  Returns the
+ * cached status (pressure in L->pn), or 2 where there is none. */
+static int normal_cached(const rr_exact_problem *pb, layout *L, rr_exact_result *res)
+{
+    double k[NKEY_USED];
+    normal_key(pb, k);
+    if (L->nkey[0] != NKEY_TAG || memcmp(L->nkey + 1, k, sizeof k) != 0
+        || memcmp(L->h_cache, L->h, (size_t)L->n * sizeof(double)) != 0)
+        return 2;
+    memcpy(L->pn, L->pn_cache, (size_t)L->n * sizeof(double));
+    res->delta = L->nkey[1 + NKEY_USED + 1];
+    res->normal_residual = L->nkey[1 + NKEY_USED + 2];
+    res->normal_products = 0;
+    return (int)L->nkey[1 + NKEY_USED];
+}
+
+static void normal_keep(const rr_exact_problem *pb, layout *L, const rr_exact_result *res,
+                        int st)
+{
+    normal_key(pb, L->nkey + 1);
+    L->nkey[1 + NKEY_USED] = st;
+    L->nkey[1 + NKEY_USED + 1] = res->delta;
+    L->nkey[1 + NKEY_USED + 2] = res->normal_residual;
+    memcpy(L->pn_cache, L->pn, (size_t)L->n * sizeof(double));
+    memcpy(L->h_cache, L->h, (size_t)L->n * sizeof(double));
+    L->nkey[0] = NKEY_TAG;
+}
+
 /* ---- the driver ------------------------------------------------------------ */
 
 static void result_nan(rr_exact_result *res)
@@ -884,7 +945,14 @@ int rr_exact_solve(const rr_exact_problem *pb, double *work, size_t work_len,
     S.L = &L;
     S.cv = &cv;
     S.products = 0;
-    st = solve_normal(&S, res);
+    st = normal_cached(pb, &L, res);
+    if (st == 2) {
+        /* a new normal problem: solved, and kept for the next case */
+        L.nkey[0] = 0.0;
+        st = solve_normal(&S, res);
+        if (st >= 0)
+            normal_keep(pb, &L, res, st);
+    }
     if (st >= 0)
         st2 = solve_tangential(&S, res);
     else
