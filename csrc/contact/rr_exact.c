@@ -226,7 +226,8 @@ static int normal_product(solver *S, const double *p, double *u)
     for (k = 0; k < S->L->n; k++)
         u[k] *= sc;
     S->products++;
-    return st;
+    /* the inputs were checked: a product that fails has overflowed */
+    return st < 0 ? RR_ERR_RANGE : st;
 }
 
 static double mean_on(const double *v, const signed char *in, int n, int *count)
@@ -256,6 +257,7 @@ static int solve_normal(solver *S, rr_exact_result *res)
            *v = L->v;
     signed char *in = L->state;
     double hmin = HUGE_VAL, hmax = -HUGE_VAL, delta = 0.0, rr_old = 0.0, step_rms = HUGE_VAL;
+    double h0;
     rr_hertz_result hz;
     int k, cnt, restart = 1, st, converged = 0;
 
@@ -263,6 +265,13 @@ static int solve_normal(solver *S, rr_exact_result *res)
         if (h[k] < hmin) hmin = h[k];
         if (h[k] > hmax) hmax = h[k];
     }
+    /* h from its lowest value: a large offset would drown the gap's
+     * variation in round-off (the approach absorbs any constant) */
+    for (k = 0; k < n; k++)
+        h[k] -= hmin;
+    hmax -= hmin;
+    h0 = hmin;
+    hmin = 0.0;
     /* start: Hertz's pressure where h is Hertzian (the discrete solution
      * differs by about 1 % rms: a few CG steps), else the lowest tenth of h
      * under a uniform pressure */
@@ -316,6 +325,13 @@ static int solve_normal(solver *S, rr_exact_result *res)
         for (k = 0; k < n; k++) {
             d[k] = in[k] != OUTSIDE ? r[k] + beta * d[k] : 0.0;
             rold[k] = r[k];
+        }
+        /* mean-free on C to round-off, so that the load stays N */
+        {
+            const double dm = mean_on(d, in, n, &nc);
+            for (k = 0; k < n; k++)
+                if (in[k] != OUTSIDE)
+                    d[k] -= dm;
         }
         rr_old = rr;
         restart = 0;
@@ -376,13 +392,13 @@ static int solve_normal(solver *S, rr_exact_result *res)
             break;
         }
     }
-    res->delta = mean_on(g, in, n, &cnt);
+    res->delta = mean_on(g, in, n, &cnt) + h0;
 #ifdef RR_EXACT_DEBUG
     {
         double cmax = 0.0, emin = HUGE_VAL, pmin = HUGE_VAL;
         for (k = 0; k < n; k++) {
-            if (in[k] != OUTSIDE) { cmax = fmax(cmax, fabs(g[k] - res->delta)); pmin = fmin(pmin, p[k]); }
-            else emin = fmin(emin, g[k] - res->delta);
+            if (in[k] != OUTSIDE) { cmax = fmax(cmax, fabs(g[k] + h0 - res->delta)); pmin = fmin(pmin, p[k]); }
+            else emin = fmin(emin, g[k] + h0 - res->delta);
         }
         fprintf(stderr, "KKT: max|g-d| on C %.3e, min g-d outside %.3e, min p %.3e, delta %.6e\n", cmax, emin, pmin, res->delta);
     }
@@ -405,7 +421,7 @@ static int tang_product(solver *S, const double *p, double *out)
     for (k = 0; k < 2 * n; k++)
         out[k] *= sc;
     S->products++;
-    return st;
+    return st < 0 ? RR_ERR_RANGE : st;
 }
 
 /* The preconditioner: out = P in, the inverse of the upwind difference
@@ -666,7 +682,12 @@ static int start_fastsim(const rr_exact_problem *pb, layout *L, const double *w)
             L->p[k + n] = qy;
         }
     }
-    return rr_all_finite(L->p, 2 * n) ? RR_OK : RR_ERR_RANGE;
+    if (!rr_all_finite(L->p, 2 * n))
+        return RR_ERR_RANGE;
+    for (i = 0; i < 2 * n; i++)
+        if (L->p[i] != 0.0)
+            return RR_OK;
+    return RR_ERR_RANGE;      /* no traction (no creepage): the zero start needs no product */
 }
 
 static int solve_tangential(solver *S, rr_exact_result *res)
@@ -699,11 +720,13 @@ static int solve_tangential(solver *S, rr_exact_result *res)
     }
     (void)start;
     g2 = sqrt(g2);
-    if (start_fastsim(pb, L, w) == RR_OK && (st = tang_product(S, p, s)) >= 0) {
+    if (start_fastsim(pb, L, w) == RR_OK) {
+        if ((st = tang_product(S, p, s)) < 0)
+            return st;
         for (k = 0; k < n2; k++)
             s[k] += w[k];
-    } else if (st < 0) {
-        return st;
+    } else {
+        memset(p, 0, (size_t)n2 * sizeof *p);       /* from zero traction: s = w */
     }
     nF = residual(L, rho, p, s, F);
     while (1) {
@@ -758,6 +781,16 @@ static int solve_tangential(solver *S, rr_exact_result *res)
             break;               /* no descent: stalled */
         }
         nF = nFt;
+    }
+    /* the last iterate onto the traction bound (a change of the order of
+     * the tolerance): |p| <= mu pn holds in every element, so |F| <= mu N
+     * whatever the status */
+    for (k = 0; k < n; k++) {
+        const double g = L->fac[k + n], t = hypot(p[k], p[k + n]);
+        if (t > g) {
+            p[k] *= g / t;
+            p[k + n] *= g / t;
+        }
     }
     res->tang_products = S->products;
     res->newton_steps = newton;
@@ -817,8 +850,7 @@ static void normal_keep(const rr_exact_problem *pb, layout *L, const rr_exact_re
     L->nkey[1 + NKEY_USED + 1] = res->delta;
     L->nkey[1 + NKEY_USED + 2] = res->normal_residual;
     memcpy(L->pn_cache, L->pn, (size_t)L->n * sizeof(double));
-    memcpy(L->h_cache, L->h, (size_t)L->n * sizeof(double));
-    L->nkey[0] = NKEY_TAG;
+    L->nkey[0] = NKEY_TAG;        /* h_cache was kept before the solve */
 }
 
 /* ---- the driver ------------------------------------------------------------ */
@@ -885,8 +917,9 @@ static int check_problem(const rr_exact_problem *pb, size_t work_len)
     /* the mean pressure and the tractions must be finite doubles */
     {
         const double pmean = pb->N / (g->dx * g->dy) / ((double)g->mx * g->my);
-        if (!isnormal(pmean) || !isfinite(pmean * pb->mu * 1e3) || !isfinite(pmean / pb->G))
-            return RR_ERR_RANGE;
+        if (!isnormal(pmean) || !isfinite(pmean * pb->mu * 1e3) || !isfinite(pmean / pb->G)
+            || !isnormal(pb->mu * pb->N) || !isnormal(pb->mu * pmean))
+            return RR_ERR_RANGE;      /* forces or bounds without a double's digits */
     }
     (void)k;
     return RR_OK;
@@ -949,6 +982,7 @@ int rr_exact_solve(const rr_exact_problem *pb, double *work, size_t work_len,
     if (st == 2) {
         /* a new normal problem: solved, and kept for the next case */
         L.nkey[0] = 0.0;
+        memcpy(L.h_cache, L.h, (size_t)n * sizeof(double));
         st = solve_normal(&S, res);
         if (st >= 0)
             normal_keep(pb, &L, res, st);

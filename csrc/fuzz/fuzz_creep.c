@@ -82,6 +82,13 @@ static int opts_invalid(const rr_creep_opts *o)
              && v[RR_FASTSIM_ALPHA_INF] >= 0.0 && v[RR_FASTSIM_ALPHA_INF] <= 1.0
              && v[RR_FASTSIM_BETA] >= 0.0))
         return 1;
+    if (o->method == RR_METHOD_EXACT
+        && (bad_int(v[RR_EXACT_NX], 1, RR_EXACT_MAX_GRID - 2 * RR_EXACT_MARGIN)
+            || bad_int(v[RR_EXACT_NY], 1, RR_EXACT_MAX_GRID - 2 * RR_EXACT_MARGIN)
+            || bad_int(v[RR_EXACT_MAXIT], 1, 1e7)
+            || !(v[RR_EXACT_TOL] >= 1e-14 && v[RR_EXACT_TOL] <= 0.1)
+            || !(v[RR_EXACT_SPIN_SHIFT] >= -1.0 && v[RR_EXACT_SPIN_SHIFT] <= 1.0)))
+        return 1;
     if (o->method == RR_METHOD_POLACH
         && !(isfinite(v[RR_POLACH_KA]) && isfinite(v[RR_POLACH_KS]) && v[RR_POLACH_KS] > 0.0
              && v[RR_POLACH_KS] <= v[RR_POLACH_KA] && v[RR_POLACH_KA] <= 1.0))
@@ -464,8 +471,10 @@ static void run_registry(fz_in *in, const rr_contact_case *c, const rr_friction 
                        && sat == d->saturates && (sat == 0) == (m == RR_METHOD_LINEAR)))
             fz_fail("rr_creep_cost %g, slope_scale %g, saturates %d, workspace %zu for %s "
                     "options", cost, slope, sat, wl, st < 0 ? "invalid" : "valid");
+        /* a closed form: no traction field, no workspace (the exact solver
+         * has neither field entry nor a bounded cost) */
         if (st == RR_OK && !(cost <= (double)MAX_ELEMENTS * 2.0 + 1.0)
-            && d->field_shape == NULL)
+            && d->field_shape == NULL && wl == 0)
             fz_fail("rr_creep_cost %g for a closed form", cost);
         /* rr_creep_forces_work with exactly the workspace asked for */
         {

@@ -1,0 +1,238 @@
+/*
+ * fuzz_exact.c - Kalker's exact theory (rr_exact.h): rr_exact_solve on
+ * small grids, Hertzian or with any undeformed distance h, and the method
+ * "exact" through rr_exact_hertz_problem.
+ *
+ * Input: the grid (1 .. 14 elements a side, sometimes 0, negative or past
+ * RR_EXACT_MAX_GRID), its element sizes and placement, h (a bowl, a bowl
+ * with noise, two bowls, or any values, edges included) or the Hertzian
+ * curvatures, the load, material, friction, creepages, spin shift,
+ * tolerance and product cap, valid or not; the workspace exact, one double
+ * short or NULL; the fields wanted or not.
+ *
+ * Oracles: a documented status; the documented errors for invalid inputs,
+ * with NaN results and NaN fields; on success finite results, the normal
+ * force N to 1e-6, |(fx, fy)| <= mu fn (the tractions are kept on the
+ * bound), every field value finite, |p| <= mu pn per element, the counts
+ * consistent with the state map; nothing written past the workspace or a
+ * field; a second solve with the same workspace (its cached normal
+ * solution and spectra) gives the same doubles.
+ */
+#include "fuzz.h"
+
+#define MAX_SIDE 14
+
+static int grid_side(fz_in *in)
+{
+    switch (fz_choice(in, 16)) {
+    case 0: return fz_int(in, -2, 0);
+    case 1: return RR_EXACT_MAX_GRID + fz_range(in, 1, 3);
+    default: return fz_int(in, 1, MAX_SIDE);
+    }
+}
+
+static int problem_invalid(const rr_exact_problem *pb)
+{
+    const rr_exact_grid *g = &pb->grid;
+    int k, n;
+    if (g->mx < 1 || g->my < 1 || g->mx > RR_EXACT_MAX_GRID || g->my > RR_EXACT_MAX_GRID)
+        return 1;
+    if (!isfinite(g->dx) || !isfinite(g->dy) || !isfinite(g->x0) || !isfinite(g->y0)
+        || !isfinite(pb->N) || !isfinite(pb->G) || !isfinite(pb->nu) || !isfinite(pb->mu)
+        || !isfinite(pb->cx) || !isfinite(pb->cy) || !isfinite(pb->cphi)
+        || !isfinite(pb->spin_shift) || !isfinite(pb->tol))
+        return 1;
+    n = g->mx * g->my;
+    if (pb->h) {
+        for (k = 0; k < n; k++)
+            if (!isfinite(pb->h[k]))
+                return 1;
+    } else if (!isfinite(pb->A) || !isfinite(pb->B) || !(pb->A > 0.0) || !(pb->B > 0.0)) {
+        return 1;
+    }
+    return !(g->dx > 0.0) || !(g->dy > 0.0) || !isnormal(g->dx) || !isnormal(g->dy)
+        || !isnormal(g->dx * g->dy) || g->dx / g->dy > 1e6 || g->dy / g->dx > 1e6
+        || !(pb->N > 0.0) || !(pb->G > 0.0) || !isnormal(pb->G)
+        || !(pb->nu >= 0.0 && pb->nu <= 0.5) || !(pb->mu > 0.0)
+        || !(pb->tol >= 1e-14 && pb->tol <= 0.1) || pb->maxit < 1
+        || !(pb->spin_shift >= -1.0 && pb->spin_shift <= 1.0);
+}
+
+static void decode_h(fz_in *in, const rr_exact_grid *g, double *h)
+{
+    const int kind = fz_choice(in, 4), n = g->mx * g->my;
+    const double A = fz_log(in, 0.01, 100.0), B = fz_log(in, 0.01, 100.0);
+    const double noise = fz_log(in, 1e-12, 1e-5);
+    const double sep = fz_lin(in, 0.0, 0.6) * g->mx * g->dx;
+    int i, j;
+    for (j = 0; j < g->my; j++)
+        for (i = 0; i < g->mx; i++) {
+            const double x = g->x0 + i * g->dx, y = g->y0 + j * g->dy;
+            double v;
+            switch (kind) {
+            case 0: v = A * x * x + B * y * y; break;
+            case 1: v = A * x * x + B * y * y + noise * fz_lin(in, -1.0, 1.0); break;
+            case 2: v = fmin(A * (x - sep) * (x - sep), A * (x + sep) * (x + sep)) + B * y * y;
+                    break;
+            default: v = fz_slog(in, 1e-9, 1e-2); break;
+            }
+            h[j * g->mx + i] = v;
+        }
+    (void)n;
+}
+
+static void check_fields(const rr_exact_problem *pb, int st, const rr_exact_result *r,
+                         const rr_exact_field *f)
+{
+    const int n = pb->grid.mx * pb->grid.my;
+    int k, nc = 0, ns = 0;
+    for (k = 0; k < n; k++) {
+        const double pn = f->pn[k], px = f->px[k], py = f->py[k];
+        if (st < 0) {
+            if (!isnan(pn) || !isnan(px) || !isnan(py) || !isnan(f->sx[k]) || !isnan(f->sy[k]))
+                fz_fail("rr_exact_solve: error %d but field value %d is not NaN", st, k);
+            continue;
+        }
+        if (!isfinite(pn) || !isfinite(px) || !isfinite(py) || !isfinite(f->sx[k])
+            || !isfinite(f->sy[k]))
+            fz_fail("rr_exact_solve: status %d with a non-finite field at %d", st, k);
+        if (pn < 0.0 || (f->state[k] < 0) != !(pn > 0.0) || f->state[k] < -1 || f->state[k] > 1)
+            fz_fail("rr_exact_solve: element %d: pn %.17g, state %d", k, pn, f->state[k]);
+        /* 1e-300: the rounding of subnormal tractions at the patch's edge */
+        if (!(hypot(px, py) <= pb->mu * pn * (1.0 + 1e-12) + 1e-300))
+            fz_fail("rr_exact_solve: element %d: |p| %.17g above mu pn %.17g", k,
+                    hypot(px, py), pb->mu * pn);
+        nc += f->state[k] >= 0;
+        ns += f->state[k] == 1;
+    }
+    if (st >= 0 && (nc != r->ncontact || ns != r->nslip))
+        fz_fail("rr_exact_solve: counts %d, %d but the map says %d, %d", r->ncontact, r->nslip,
+                nc, ns);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    fz_in in = fz_start(data, size);
+    rr_exact_problem pb;
+    rr_exact_result r, r2;
+    rr_exact_field f;
+    double *h = NULL, *work = NULL;
+    size_t wl = 0, wgive = 0;
+    int st, st2, n = 0, invalid, wmode, want_field;
+
+    memset(&pb, 0, sizeof pb);
+    memset(&f, 0, sizeof f);
+    pb.grid.mx = grid_side(&in);
+    pb.grid.my = grid_side(&in);
+    pb.grid.dx = fz_log(&in, 1e-5, 1e-2);
+    pb.grid.dy = pb.grid.dx * fz_log(&in, 0.1, 10.0);
+    if (fz_choice(&in, 8) == 0)
+        pb.grid.dy = fz_slog(&in, 1e-9, 1.0);                 /* any, valid or not */
+    pb.grid.x0 = -0.5 * ((double)pb.grid.mx - 1.0) * pb.grid.dx * fz_lin(&in, 0.5, 1.5);
+    pb.grid.y0 = -0.5 * ((double)pb.grid.my - 1.0) * pb.grid.dy * fz_lin(&in, 0.5, 1.5);
+    pb.N = fz_log(&in, 1.0, 2e5);
+    if (fz_choice(&in, 8) == 0)
+        pb.N = fz_slog(&in, 1e-6, 1e6);
+    pb.G = fz_log(&in, 1e9, 3e11);
+    pb.nu = fz_choice(&in, 8) == 0 ? fz_lin(&in, -0.1, 0.6) : fz_lin(&in, 0.0, 0.5);
+    pb.mu = fz_choice(&in, 8) == 0 ? fz_slog(&in, 1e-3, 2.0) : fz_lin(&in, 0.05, 0.8);
+    pb.cx = fz_slog(&in, 1e-7, 0.05);
+    pb.cy = fz_slog(&in, 1e-7, 0.05);
+    pb.cphi = fz_choice(&in, 2) ? fz_slog(&in, 1e-4, 50.0) : 0.0;
+    pb.spin_shift = fz_choice(&in, 8) == 0 ? fz_lin(&in, -2.0, 2.0) : 1.0 / 6.0;
+    pb.tol = fz_choice(&in, 8) == 0 ? fz_slog(&in, 1e-16, 1.0) : fz_log(&in, 1e-10, 1e-3);
+    pb.maxit = fz_choice(&in, 8) == 0 ? fz_int(&in, -2, 3) : fz_range(&in, 1, 400);
+    if (pb.grid.mx >= 1 && pb.grid.my >= 1 && pb.grid.mx <= MAX_SIDE && pb.grid.my <= MAX_SIDE)
+        n = pb.grid.mx * pb.grid.my;
+    if (n > 0 && fz_choice(&in, 2)) {
+        h = fz_alloc((size_t)n * sizeof *h);
+        decode_h(&in, &pb.grid, h);
+        pb.h = h;
+    } else {
+        pb.A = fz_log(&in, 0.01, 100.0);
+        pb.B = fz_log(&in, 0.01, 100.0);
+        if (fz_choice(&in, 8) == 0)
+            pb.B = fz_slog(&in, 1e-3, 1.0);
+    }
+    wmode = fz_choice(&in, 8);            /* 0: one double short, 1: NULL, else exact */
+    want_field = n > 0 && fz_choice(&in, 2);
+    invalid = problem_invalid(&pb) || n == 0;
+    fz_note("grid %d x %d, d %.17g x %.17g at (%.17g, %.17g), h %s, A %.17g B %.17g, N %.17g, "
+            "G %.17g nu %.17g mu %.17g, c (%.17g, %.17g, %.17g), shift %.17g tol %.17g maxit %d, "
+            "work mode %d, field %d", pb.grid.mx, pb.grid.my, pb.grid.dx, pb.grid.dy,
+            pb.grid.x0, pb.grid.y0, pb.h ? "given" : "Hertz", pb.A, pb.B, pb.N, pb.G, pb.nu,
+            pb.mu, pb.cx, pb.cy, pb.cphi, pb.spin_shift, pb.tol, pb.maxit, wmode, want_field);
+    if (n == 0) {
+        /* a grid outside the sizes this target allocates: only refusal is allowed */
+        double w1[4];
+        st = rr_exact_solve(&pb, w1, 4, &r, NULL);
+        fz_status("rr_exact_solve", st);
+        fz_error("rr_exact_solve", st, 1, "the grid is out of range or too large a workspace");
+        free(h);
+        return 0;
+    }
+    wl = rr_exact_workspace_len(pb.grid.mx, pb.grid.my);
+    if (wl == 0)
+        fz_fail("rr_exact_workspace_len(%d, %d) = 0", pb.grid.mx, pb.grid.my);
+    wgive = wmode == 0 ? wl - 1 : wl;
+    work = wmode == 1 ? NULL : fz_guarded(wl * sizeof *work);
+    if (work)
+        memset(work, 0, wl * sizeof *work);
+    if (want_field) {
+        f.pn = fz_guarded((size_t)n * sizeof(double));
+        f.px = fz_guarded((size_t)n * sizeof(double));
+        f.py = fz_guarded((size_t)n * sizeof(double));
+        f.sx = fz_guarded((size_t)n * sizeof(double));
+        f.sy = fz_guarded((size_t)n * sizeof(double));
+        f.state = fz_guarded((size_t)n);
+    }
+    st = rr_exact_solve(&pb, work, wgive, &r, want_field ? &f : NULL);
+    fz_status("rr_exact_solve", st);
+    fz_error("rr_exact_solve", st, invalid || wmode <= 1, "an input or the workspace is invalid");
+    if (work)
+        fz_guard_ok("rr_exact_solve", work, wl * sizeof *work, "work");
+    if (want_field) {
+        fz_guard_ok("rr_exact_solve", f.pn, (size_t)n * sizeof(double), "pn");
+        fz_guard_ok("rr_exact_solve", f.sy, (size_t)n * sizeof(double), "sy");
+        fz_guard_ok("rr_exact_solve", f.state, (size_t)n, "state");
+    }
+    if (st < 0) {
+        if (!isnan(r.fx) || !isnan(r.fy) || !isnan(r.mz) || !isnan(r.fn))
+            fz_fail("rr_exact_solve: error %d but the results are not NaN", st);
+    } else {
+        FZ_FINITE("rr_exact_solve", st, r.fx);
+        FZ_FINITE("rr_exact_solve", st, r.fy);
+        FZ_FINITE("rr_exact_solve", st, r.mz);
+        FZ_FINITE("rr_exact_solve", st, r.fn);
+        FZ_FINITE("rr_exact_solve", st, r.delta);
+        FZ_FINITE("rr_exact_solve", st, r.area);
+        FZ_FINITE("rr_exact_solve", st, r.pmax);
+        if (!(fabs(r.fn - pb.N) <= 1e-6 * pb.N))
+            fz_fail("rr_exact_solve: fn %.17g, not N %.17g", r.fn, pb.N);
+        if (!(hypot(r.fx, r.fy) <= pb.mu * r.fn * (1.0 + 1e-9)))
+            fz_fail("rr_exact_solve: |F| %.17g above mu fn %.17g", hypot(r.fx, r.fy),
+                    pb.mu * r.fn);
+        if (r.ncontact < 1 || r.nslip < 0 || r.nslip > r.ncontact)
+            fz_fail("rr_exact_solve: %d elements in contact, %d slipping", r.ncontact, r.nslip);
+    }
+    if (want_field)
+        check_fields(&pb, st, &r, &f);
+    if (st >= 0) {
+        /* again, with the workspace as the first solve left it */
+        st2 = rr_exact_solve(&pb, work, wgive, &r2, NULL);
+        if (st2 != st || memcmp(&r.fx, &r2.fx, sizeof r.fx) != 0
+            || memcmp(&r.fy, &r2.fy, sizeof r.fy) != 0 || memcmp(&r.mz, &r2.mz, sizeof r.mz) != 0)
+            fz_fail("rr_exact_solve: a second solve gave status %d (%.17g, %.17g, %.17g), the "
+                    "first %d (%.17g, %.17g, %.17g)", st2, r2.fx, r2.fy, r2.mz, st, r.fx, r.fy,
+                    r.mz);
+    }
+    free(h);
+    fz_guard_free(work);
+    fz_guard_free(f.pn);
+    fz_guard_free(f.px);
+    fz_guard_free(f.py);
+    fz_guard_free(f.sx);
+    fz_guard_free(f.sy);
+    fz_guard_free(f.state);
+    return 0;
+}

@@ -1,0 +1,135 @@
+/*
+ * test_exact.c - Kalker's exact theory (rr_exact.h) from C: the Hertzian
+ * normal problem against Hertz's closed form (approach and peak pressure
+ * to 0.2 %, the discretisation error at 15 elements across), full sliding
+ * (|F| = mu N to 1e-6), a creepage-free case (no traction at all), the
+ * workspace's cached normal solution giving a fresh solve's doubles, the
+ * field's sums, and every documented error.
+ */
+#include <stdlib.h>
+#include <string.h>
+#include "tests/rr_test.h"
+#include "contact/rr_exact.h"
+#include "contact/rr_hertz.h"
+
+static rr_exact_problem hertz_case(double a, double b, int n)
+{
+    rr_exact_problem pb;
+    memset(&pb, 0, sizeof pb);
+    rr_exact_hertz_grid(a, b, n, n, &pb.grid);
+    pb.N = 5e4;
+    pb.G = 8.2e10;
+    pb.nu = 0.28;
+    pb.mu = 0.3;
+    rr_hertz_curvatures(a, b, pb.N, pb.G / (1.0 - pb.nu), &pb.A, &pb.B);
+    pb.tol = 1e-9;
+    pb.maxit = 2000;
+    pb.spin_shift = 1.0 / 6.0;
+    return pb;
+}
+
+int main(void)
+{
+    rr_exact_problem pb = hertz_case(0.006, 0.004, 15);
+    const size_t len = rr_exact_workspace_len(pb.grid.mx, pb.grid.my);
+    const int n = pb.grid.mx * pb.grid.my;
+    double *w = calloc(len, sizeof *w), *px = malloc(n * sizeof *px), *pn = malloc(n * sizeof *pn);
+    signed char *state = malloc(n);
+    rr_exact_result r, r2;
+    rr_exact_field f;
+    rr_hertz_result h;
+    int st, k;
+
+    CHECK(pb.grid.mx == 19 && pb.grid.my == 19, "15 across plus two margins a side");
+    /* no creepage: Hertz's pressure, no traction */
+    st = rr_exact_solve(&pb, w, len, &r, NULL);
+    CHECK_STATUS(st, RR_OK, "Hertzian solve");
+    rr_hertz(pb.A, pb.B, pb.N, pb.G / (1.0 - pb.nu), &h);
+    CHECK_CLOSE(r.fn, pb.N, 0.0, 1e-9, "normal force");
+    CHECK_CLOSE(r.delta, h.delta, 0.0, 2e-3, "approach against Hertz");
+    CHECK_CLOSE(r.pmax, h.p0, 0.0, 2e-3, "peak pressure against Hertz");
+    CHECK(r.fx == 0.0 && r.fy == 0.0 && r.mz == 0.0 && r.tang_products == 0,
+          "no creepage, no traction, no tangential product");
+    /* full sliding */
+    pb.cx = 3.0;
+    pb.cy = 4.0;
+    st = rr_exact_solve(&pb, w, len, &r, NULL);
+    CHECK_STATUS(st, RR_OK, "full sliding");
+    CHECK_CLOSE(hypot(r.fx, r.fy), pb.mu * pb.N, 0.0, 1e-7, "|F| = mu N");
+    CHECK_CLOSE(r.fx / r.fy, 0.75, 0.0, 1e-5, "along the creepage");
+    CHECK(r.nslip == r.ncontact && r.normal_products == 0, "all slip; normal problem reused");
+    /* partial slip with spin; the cached normal solution gives a fresh solve's doubles */
+    pb.cx = 2e-4;
+    pb.cy = 0.0;
+    pb.cphi = 0.5;
+    memset(&f, 0, sizeof f);
+    f.px = px;
+    f.pn = pn;
+    f.state = state;
+    st = rr_exact_solve(&pb, w, len, &r, &f);
+    CHECK_STATUS(st, RR_OK, "partial slip");
+    {
+        double *fresh = calloc(len, sizeof *fresh), sum = 0.0;
+        CHECK_STATUS(rr_exact_solve(&pb, fresh, len, &r2, NULL), RR_OK, "fresh workspace");
+        CHECK(memcmp(&r.fx, &r2.fx, sizeof r.fx) == 0 && memcmp(&r.mz, &r2.mz, sizeof r.mz) == 0,
+              "cached normal solution: the same doubles as a fresh solve");
+        CHECK(r2.normal_products > 0 && r.normal_products == 0, "cache used, fresh solved");
+        for (k = 0; k < n; k++)
+            sum += px[k];
+        CHECK_CLOSE(sum * pb.grid.dx * pb.grid.dy, r.fx, 0.0, 1e-12, "field sums to fx");
+        CHECK(r.nslip > 0 && r.nslip < r.ncontact, "adhesion and slip");
+        free(fresh);
+    }
+    /* errors: outputs NaN */
+    CHECK_STATUS(rr_exact_solve(&pb, w, len - 1, &r, NULL), RR_ERR_WORKSPACE, "short workspace");
+    CHECK(isnan(r.fx) && isnan(r.fn), "NaN on error");
+    CHECK_STATUS(rr_exact_solve(&pb, NULL, len, &r, NULL), RR_ERR_NULL, "NULL workspace");
+    CHECK_STATUS(rr_exact_solve(NULL, w, len, &r, NULL), RR_ERR_NULL, "NULL problem");
+    CHECK_STATUS(rr_exact_solve(&pb, w, len, NULL, NULL), RR_ERR_NULL, "NULL result");
+    {
+        rr_exact_problem bad = pb;
+        bad.tol = 0.5;
+        CHECK_STATUS(rr_exact_solve(&bad, w, len, &r, &f), RR_ERR_PARAM, "tol");
+        CHECK(isnan(f.px[0]) && isnan(f.pn[n - 1]) && f.state[0] == -1, "NaN field on error");
+        bad = pb;
+        bad.N = -1.0;
+        CHECK_STATUS(rr_exact_solve(&bad, w, len, &r, NULL), RR_ERR_LOAD, "N < 0");
+        bad = pb;
+        bad.nu = 0.6;
+        CHECK_STATUS(rr_exact_solve(&bad, w, len, &r, NULL), RR_ERR_MATERIAL, "nu");
+        bad = pb;
+        bad.mu = 0.0;
+        CHECK_STATUS(rr_exact_solve(&bad, w, len, &r, NULL), RR_ERR_FRICTION, "mu");
+        bad = pb;
+        bad.cx = NAN;
+        CHECK_STATUS(rr_exact_solve(&bad, w, len, &r, NULL), RR_ERR_NONFINITE, "NaN");
+        bad = pb;
+        bad.grid.mx = 0;
+        CHECK_STATUS(rr_exact_solve(&bad, w, len, &r, NULL), RR_ERR_GRID, "grid");
+        bad = pb;
+        bad.B = -1.0;
+        CHECK_STATUS(rr_exact_solve(&bad, w, len, &r, NULL), RR_ERR_GEOMETRY, "B < 0");
+        bad = pb;
+        bad.N = 1e-320;
+        CHECK_STATUS(rr_exact_solve(&bad, w, len, &r, NULL), RR_ERR_RANGE, "subnormal load");
+        bad = pb;
+        bad.maxit = 3;
+        CHECK_STATUS(rr_exact_solve(&bad, w, len, &r, NULL), RR_WARN_NOT_CONVERGED,
+                     "the product cap warns");
+        CHECK(isfinite(r.fx) && hypot(r.fx, r.fy) <= bad.mu * r.fn * (1 + 1e-12),
+              "a capped solve still within mu N");
+    }
+    CHECK(rr_exact_workspace_len(0, 5) == 0 && rr_exact_workspace_len(5, RR_EXACT_MAX_GRID + 1) == 0,
+          "no workspace for bad sizes");
+    {
+        rr_exact_grid g;
+        CHECK_STATUS(rr_exact_hertz_grid(-1.0, 1.0, 5, 5, &g), RR_ERR_GEOMETRY, "a < 0");
+        CHECK_STATUS(rr_exact_hertz_grid(1.0, 1.0, 0, 5, &g), RR_ERR_GRID, "nx 0");
+        CHECK_STATUS(rr_exact_hertz_grid(1.0, 1.0, 5, 5, NULL), RR_ERR_NULL, "NULL grid");
+    }
+    free(w);
+    free(px);
+    free(pn);
+    free(state);
+    return rr_test_summary();
+}
