@@ -427,8 +427,9 @@ def undeformed_distance(geometry, y_ws, *, side="left", N=None, approach=None, n
     if not np.all(np.isfinite(h)):
         raise RollerRigError(f"{func}: at y_ws = {y_ws!r} m the patch reaches where a "
                              f"profile folds or ends in the tangent plane")
-    pen = -float(np.min(h))         # the pose's interpenetration along n (0 at zero gap)
-    h = h + pen
+    hmin_grid = float(np.min(h))
+    h = h - hmin_grid
+    pen = max(0.0, -hmin_grid)      # the pose's interpenetration along n (0 at zero gap)
     t1, t2, nn = sec.frame.vectors()
     P = np.array([0.0, *sec.frame.P])
     return Patch(h=h, dx=float(dx), dy=float(dy), x0=float(xs[0]), y0=float(ys[0]), point=P,
@@ -442,7 +443,7 @@ def undeformed_distance(geometry, y_ws, *, side="left", N=None, approach=None, n
 def _group(y, mask, deep, combine):
     """The runs of True in mask (as (y_lo, y_hi)): those within `combine`
     of the one holding index `deep`, merged step by step, and the rest."""
-    runs = [(y[a], y[b - 1]) for a, b in _runs(mask)]
+    runs = [tuple(sorted((y[a], y[b - 1]))) for a, b in _runs(mask)]
     lo, hi = next((a, b) for a, b in runs if a <= y[deep] <= b)
     kept, rest = [], []
     pending = sorted(runs, key=lambda iv: min(abs(iv[0] - y[deep]), abs(iv[1] - y[deep])))
