@@ -412,6 +412,21 @@ def test_rig_exact_with_creepages_given_is_exact_solve_on_its_patch():
     assert abs(p.lowered * np.cos(p.delta) - e.solution.delta) < 0.1 * e.solution.delta
 
 
+def test_rig_exact_finds_its_grid_from_a_poor_estimate():
+    # one pass from an approach four times too small: the contact reaches the
+    # grid's edge, and the grid is rebuilt from the approach found; the same
+    # forces as two passes (measured 3e-6 relative: the grids differ by the
+    # approach they were sized from)
+    g = geometry("miniprof")
+    kw = dict(Fz=6e4, mu=0.5, spin=12.4, roller_spin=5.587, n=30)
+    a = rr.rig_exact(g, 0.0035, **kw)
+    b = rr.rig_exact(g, 0.0035, passes=1, approach=2e-5, **kw)
+    assert b.passes > 2 and b.patch.approach > 3e-5
+    assert abs(b.solution.fx / a.solution.fx - 1) < 1e-4
+    assert abs(b.solution.fy / a.solution.fy - 1) < 1e-4
+    assert abs(b.solution.contact_area / a.solution.contact_area - 1) < 1e-3
+
+
 @pytest.mark.parametrize("kwargs, match", [
     (dict(side="middle"), "side"),
     (dict(reference="centre"), "reference"),
