@@ -31,6 +31,7 @@ from .rig import (Rig, RigResult, build_rig, default_parameters, load_parameters
 from .fit import FitResult, fit_modified_fastsim, fit_polach
 from .sweep import sweep, sweep_rig
 from .exact import ExactSolution, exact_field, exact_richardson, exact_solve
+from .patch import Patch, PatchShape, RigExact, patch_shape, rig_exact, undeformed_distance
 from . import reference
 from .rig_contact import (LinearCreepages, RigContact, RigPose, WheelContact, linear_creepages,
                           rig_contact)
@@ -45,5 +46,6 @@ __all__ = [
     "equivalent_conicity", "rolling_radius_difference", "simulate", "RigResult",
     "default_parameters", "load_parameters", "build_rig", "Rig", "replay", "fit_polach",
     "fit_modified_fastsim", "FitResult", "sweep", "sweep_rig", "reference", "ExactSolution",
-    "exact_field", "exact_solve", "exact_richardson",
+    "exact_field", "exact_solve", "exact_richardson", "Patch", "undeformed_distance",
+    "PatchShape", "patch_shape", "RigExact", "rig_exact",
 ]
