@@ -38,14 +38,16 @@ class OptionInfo(NamedTuple):
 class MethodInfo(NamedTuple):
     """A creep-force method of the registry: its doc, options (name ->
     OptionInfo, in the descriptor's order), whether it has a traction field
-    (fastsim_field), whether it saturates (|F| <= mu N) and whether it is a
-    time-loop method (no workspace, bounded cost: the rig can run it)."""
+    (fastsim_field), whether it saturates (|F| <= mu N), whether it is a
+    time-loop method (no workspace, bounded cost: the rig can run it) and
+    whether it takes Coulomb friction only."""
     name: str
     doc: str
     options: MappingProxyType
     has_field: bool
     saturates: bool
     in_loop: bool
+    coulomb_only: bool
 
     def defaults(self):
         """Option name -> default value."""
@@ -55,8 +57,8 @@ class MethodInfo(NamedTuple):
 #: name -> MethodInfo, in the registry's order (read-only)
 METHODS = MappingProxyType({
     name: MethodInfo(name, doc, MappingProxyType({o[0]: OptionInfo(*o) for o in opts}),
-                     bool(field), bool(sat), bool(loop))
-    for name, doc, opts, field, sat, loop in _core.METHODS})
+                     bool(field), bool(sat), bool(loop), bool(coulomb))
+    for name, doc, opts, field, sat, loop, coulomb in _core.METHODS})
 
 
 def methods_doc():
@@ -136,9 +138,15 @@ class FallingFriction:
         return mu0 * ((1.0 - self.A) * np.exp(-self.B * np.asarray(w, dtype=float)) + self.A)
 
 
-def _friction(func, friction):
+def _friction(func, friction, method=None):
+    """(A, B) of the friction law; a falling law for a Coulomb-only method
+    (METHODS[method].coulomb_only) is refused, naming both."""
     if friction is None or friction == "coulomb":
         return 1.0, 0.0
+    if (isinstance(friction, FallingFriction) and method in METHODS
+            and METHODS[method].coulomb_only and friction.A < 1.0 and friction.B > 0.0):
+        raise RollerRigError(f"{func}: method {method!r} is built for Coulomb friction; "
+                             f"got {friction!r} (use friction=None)")
     if isinstance(friction, FallingFriction):
         return friction.A, friction.B
     raise RollerRigError(f"{func}: friction must be None, 'coulomb' or a FallingFriction, "

@@ -2324,8 +2324,9 @@ static int add_rows(PyObject *m, const char *name, int n, PyObject *(*row)(int))
 }
 
 /* The registry as _core.METHODS: a tuple of (name, doc, options, has_field,
- * saturates, in_loop), in_loop True where the method needs no workspace (a
- * time-loop method: the rig refuses the others), options a tuple of (name, type, unit, default, lo, hi,
+ * saturates, in_loop, coulomb_only), in_loop True where the method needs no
+ * workspace (a time-loop method: the rig refuses the others), coulomb_only
+ * True where it refuses a falling friction law, options a tuple of (name, type, unit, default, lo, hi,
  * lo_open, hi_open, choices, doc): type "int", "real" or "choice"; an
  * integer's default and range as ints, a choice's default as its name (its
  * range None), choices a tuple of names (empty but for a choice). */
@@ -2375,9 +2376,10 @@ static int add_methods(PyObject *m)
         }
         rr_creep_opts o;
         rr_creep_opts_default(&o, i);
-        row = Py_BuildValue("(ssNNNN)", d->name, d->doc, opts, PyBool_FromLong(d->field != NULL),
+        row = Py_BuildValue("(ssNNNNN)", d->name, d->doc, opts, PyBool_FromLong(d->field != NULL),
                             PyBool_FromLong(d->saturates),
-                            PyBool_FromLong(rr_creep_workspace_len(&o) == 0));
+                            PyBool_FromLong(rr_creep_workspace_len(&o) == 0),
+                            PyBool_FromLong(d->coulomb_only));
         if (!row)
             goto fail;
         PyTuple_SET_ITEM(all, i, row);

@@ -123,7 +123,7 @@ def _scalar_options(method, options):
 def _scalar_creep(method, options, friction, case):
     """CreepForces of one case of plain numbers with status 0, else None."""
     try:
-        fA, fB = _friction("creep_forces", friction)
+        fA, fB = _friction("creep_forces", friction, method)
     except RollerRigError:                           # the general path says why
         return None
     if not _PLAIN.issuperset(map(type, case)) or type(fA) not in _PLAIN \
@@ -191,8 +191,8 @@ def kalker_coefficients(a_over_b, nu=0.28, *, errors=None):
                                        (c11, c22, c23, c33), status, errors))
 
 
-def _case(func, cx, cy, cphi, a, b, N, mu, G, nu, speed, friction):
-    fA, fB = _friction(func, friction)
+def _case(func, cx, cy, cphi, a, b, N, mu, G, nu, speed, friction, method=None):
+    fA, fB = _friction(func, friction, method)
     named = dict(cx=cx, cy=cy, cphi=cphi, a=a, b=b, N=N, mu=mu, G=G, nu=nu, speed=speed)
     named["friction.A"] = fA
     named["friction.B"] = fB
@@ -227,7 +227,8 @@ def creep_forces(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, method
         if fast is not None:
             return fast
     opts = check_creep_options(func, method, options)
-    shape, scalar, full, flat = _case(func, cx, cy, cphi, a, b, N, mu, G, nu, speed, friction)
+    shape, scalar, full, flat = _case(func, cx, cy, cphi, a, b, N, mu, G, nu, speed, friction,
+                                      method)
     fx, fy, mz, status = _core.creep_forces(*flat, **opts)
     # the method's own numbers may explain a failure too (beta = 1e307)
     full.update(used_numbers(method, options))

@@ -211,7 +211,8 @@ def test_threads_give_the_same_results():
 
 def test_bad_inputs():
     kw = dict(a=0.005, b=0.004, N=3e4, mu=0.3)
-    with pytest.raises(rr.RollerRigError, match="friction"):
+    assert rr.METHODS["exact"].coulomb_only and not rr.METHODS["fastsim"].coulomb_only
+    with pytest.raises(rr.RollerRigError, match="built for Coulomb friction"):
         rr.creep_forces(1e-3, method="exact", friction=rr.FallingFriction(), speed=5.0, **kw)
     with pytest.raises(rr.RollerRigError, match="nx"):
         rr.creep_forces(1e-3, method="exact", nx=0, **kw)

@@ -46,7 +46,8 @@ static const rr_creep_option scaled_opts[] = {
 
 const rr_method_desc rr_method_scaled_linear = {
     "scaled_linear", "Kalker's linear theory times a factor", 1, scaled_opts, 0, NULL, NULL,
-    rr_method_unit_cost, rr_method_unit_slope, rr_method_no_workspace, scaled_forces, NULL, NULL
+    rr_method_unit_cost, rr_method_unit_slope, rr_method_no_workspace, scaled_forces, NULL, NULL,
+    0
 };
 '''
 

@@ -106,6 +106,9 @@ typedef struct {
     void (*field_shape)(const rr_creep_opts *o, int *rows, int *cols);
     int (*field)(const rr_contact_case *c, const rr_friction *fr, const rr_creep_opts *o,
                  rr_forces *out, rr_traction_field *field);
+    /* 1: Coulomb friction only (a falling law is RR_ERR_FRICTION); 0 (the
+     * default of a descriptor that leaves it out): any law */
+    int coulomb_only;
 } rr_method_desc;
 
 /* Helpers for descriptors: a cost of 1 and a slope scale of 1, and no workspace. */

@@ -97,5 +97,5 @@ const rr_method_desc rr_method_exact = {
     "Kalker's exact theory (CONTACT's discretisation: steady rolling on the half-space, "
     "Coulomb friction), FFT-accelerated",
     5, exact_opts, 1, NULL, NULL, exact_cost, rr_method_unit_slope, exact_workspace,
-    exact_forces, NULL, NULL
+    exact_forces, NULL, NULL, 1
 };
