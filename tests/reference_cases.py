@@ -17,6 +17,8 @@ benchmark scripts can import it as well::
 import csv
 import os
 
+import numpy as np
+
 import rollerrig as rr
 from rollerrig import reference
 
@@ -37,6 +39,20 @@ def read_csv(name):
         assert comment.startswith("#"), f"{name}: first line should be a # comment"
         rows = list(csv.DictReader(f))
     return comment[1:].strip(), rows
+
+
+def read_columns(name):
+    """{column: array} of a tests/data CSV, every # comment line skipped
+    (numbers as float64, other columns as strings)."""
+    with open(data_path(name), newline="") as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    out = {}
+    for k in rows[0]:
+        try:
+            out[k] = np.array([float(r[k]) for r in rows])
+        except ValueError:
+            out[k] = np.array([r[k] for r in rows])
+    return out
 
 
 # --------------------------------------------------------------------------

@@ -9,24 +9,11 @@ import numpy as np
 import pytest
 
 import rollerrig as rr
-from reference_cases import data_path
+from reference_cases import data_path, read_columns
 
 
 
-def _columns(name):
-    """{column: array} of a tests/data CSV, its # comment lines skipped."""
-    with open(data_path(name), newline="") as f:
-        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
-    out = {}
-    for k in rows[0]:
-        try:
-            out[k] = np.array([float(r[k]) for r in rows])
-        except ValueError:
-            out[k] = np.array([r[k] for r in rows])
-    return out
-
-
-CASES = _columns("contact_exact_cases.csv")
+CASES = read_columns("contact_exact_cases.csv")
 
 
 def _contact(nx, rows):
@@ -91,7 +78,7 @@ def _curvatures(a, b, N, G, nu):
 # (measured: at most 2.9 %, at a/b = 1).
 def _kalker(nu=0.25):
     """{a/b: (C11, C22, C23, C33)} of Kalker's Table E.3 (tests/data)."""
-    k, c33 = _columns("kalker_creep_coefficients.csv"), _columns("kalker_c33.csv")
+    k, c33 = read_columns("kalker_creep_coefficients.csv"), read_columns("kalker_c33.csv")
     out = {}
     for aob in (0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0):
         i = np.flatnonzero((np.abs(k["a_over_b"] - aob) < 1e-3 * aob) & (k["nu"] == nu))[0]

@@ -22,7 +22,6 @@ geometry adds the reference point and angle (ours: the same weighting as
 CONTACT's, on our profiles), the creepages from our kinematics and the
 normal load found from the vertical load.
 """
-import csv
 import functools
 import warnings
 
@@ -30,25 +29,12 @@ import numpy as np
 import pytest
 
 import rollerrig as rr
-from reference_cases import data_path
+from reference_cases import read_columns
 
 MM = 1e-3
 
 
-def _columns(name):
-    """{column: array} of a tests/data CSV, its # comment lines skipped."""
-    with open(data_path(name), newline="") as f:
-        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
-    out = {}
-    for k in rows[0]:
-        try:
-            out[k] = np.array([float(r[k]) for r in rows])
-        except ValueError:
-            out[k] = np.array([r[k] for r in rows])
-    return out
-
-
-C = _columns("roller_nonhertz_cases.csv")
+C = read_columns("roller_nonhertz_cases.csv")
 PAIRS = ("miniprof", "s1002_uic60")
 
 

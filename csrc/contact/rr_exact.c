@@ -1,9 +1,6 @@
 /* rr_exact.c - Kalker's exact theory of steady rolling: the normal and the
  * tangential problem on a grid, with FFT products (see rr_exact.h). */
 #include <math.h>
-#ifdef RR_EXACT_DEBUG
-#include <stdio.h>
-#endif
 #include <stdlib.h>
 #include <string.h>
 #include "util/rr_common.h"
@@ -438,16 +435,6 @@ static int solve_normal(solver *S, rr_exact_result *res)
         }
     }
     res->delta = mean_on(g, in, n, &cnt) + h0;
-#ifdef RR_EXACT_DEBUG
-    {
-        double cmax = 0.0, emin = HUGE_VAL, pmin = HUGE_VAL;
-        for (k = 0; k < n; k++) {
-            if (in[k] != OUTSIDE) { cmax = fmax(cmax, fabs(g[k] + h0 - res->delta)); pmin = fmin(pmin, p[k]); }
-            else emin = fmin(emin, g[k] + h0 - res->delta);
-        }
-        fprintf(stderr, "KKT: max|g-d| on C %.3e, min g-d outside %.3e, min p %.3e, delta %.6e\n", cmax, emin, pmin, res->delta);
-    }
-#endif
     res->normal_products = S->products;
     res->normal_residual = step_rms;
     return converged ? RR_OK : RR_WARN_NOT_CONVERGED;
@@ -747,8 +734,6 @@ static int solve_tangential(solver *S, rr_exact_result *res)
            *stt = L->t2;
     double g2 = 0.0, nF, nFold = 0.0, eta = 0.3, goal = 0.0;
     int k, st = RR_OK, newton = 0, converged = 0;
-    const int start = S->products;
-
     S->products = 0;
     for (k = 0; k < n; k++) {
         const double x = pb->grid.x0 + (k % mx) * pb->grid.dx;
@@ -763,7 +748,6 @@ static int solve_tangential(solver *S, rr_exact_result *res)
         s[k] = w[k];
         s[k + n] = w[k + n];
     }
-    (void)start;
     g2 = sqrt(g2);
     if (start_fastsim(pb, L, w) == RR_OK) {
         if ((st = tang_product(S, p, s)) < 0)
@@ -815,10 +799,6 @@ static int solve_tangential(solver *S, rr_exact_result *res)
                 break;
             t *= 0.5;
         }
-#ifdef RR_EXACT_DEBUG
-        fprintf(stderr, "newton %d: |F| %.3e -> %.3e (goal %.3e), eta %.2e, t %g, products %d\n",
-                newton, nF, nFt, goal, eta, t, S->products);
-#endif
         memcpy(p, pt, (size_t)n2 * sizeof *p);
         memcpy(s, stt, (size_t)n2 * sizeof *s);
         if (ls == 30) {
@@ -930,7 +910,7 @@ static int check_problem(const rr_exact_problem *pb, size_t work_len)
     const rr_exact_grid *g = &pb->grid;
     const double reals[] = {g->dx, g->dy, g->x0, g->y0, pb->N, pb->G, pb->nu, pb->mu,
                             pb->cx, pb->cy, pb->cphi, pb->spin_shift, pb->tol};
-    size_t k, need;
+    size_t need;
 
     if (g->mx < 1 || g->my < 1 || g->mx > RR_EXACT_MAX_GRID || g->my > RR_EXACT_MAX_GRID)
         return RR_ERR_GRID;
@@ -966,7 +946,6 @@ static int check_problem(const rr_exact_problem *pb, size_t work_len)
             || !isnormal(pb->mu * pb->N) || !isnormal(pb->mu * pmean))
             return RR_ERR_RANGE;      /* forces or bounds without a double's digits */
     }
-    (void)k;
     return RR_OK;
 }
 
