@@ -38,9 +38,9 @@ import numpy as np
 from ._errors import RollerRigError
 from .contact import METHODS, FallingFriction, creep_forces
 
-__all__ = ["ExactCases", "ScoreResult", "CreepCurve", "CurveScore", "exact_cases", "score",
-           "table", "creep_curves", "score_curves", "DATA_DIR", "TABLE_FILE",
-           "CURVES_FILE"]
+__all__ = ["ExactCases", "ScoreResult", "CreepCurve", "CurveScore", "exact_cases",
+           "random_cases", "own_exact_cases", "score", "table", "creep_curves", "score_curves",
+           "DATA_DIR", "TABLE_FILE", "CURVES_FILE"]
 
 DATA_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", "reference")
 TABLE_FILE = "contact_test_table_mx11.csv"
@@ -79,7 +79,9 @@ def _frozen(arr):
 # --------------------------------------------------------------------------
 
 class ExactCases(NamedTuple):
-    """The test table in SI.  Arrays have one element per case (3220)."""
+    """Exact reference cases in SI, one array element per case: CONTACT's
+    test table (exact_cases(), 3220; N, mu, G, nu one number each) or the
+    library's own (own_exact_cases(); N and mu per case)."""
 
     cx: np.ndarray          #: longitudinal creepage [-]
     cy: np.ndarray          #: lateral creepage [-]
@@ -95,8 +97,8 @@ class ExactCases(NamedTuple):
     spin: np.ndarray        #: normalised spin level (0, 0.5, 1, 2)
     angle: np.ndarray       #: creepage direction atan2(cy, cx) [rad] (-pi/2 .. pi/2)
     magnitude: np.ndarray   #: normalised creepage magnitude (0 .. 12)
-    N: float                #: normal load [N]
-    mu: float               #: friction coefficient
+    N: float                #: normal load [N] (an array in own_exact_cases)
+    mu: float               #: friction coefficient (an array in own_exact_cases)
     G: float                #: shear modulus [Pa]
     nu: float               #: Poisson's ratio
     source: str             #: the CSV's source line
@@ -145,6 +147,72 @@ def exact_cases():
         pct_slip=_frozen(col["pct_slip"]), a_over_b=_frozen(aob),
         spin=_frozen(col["spin_norm"]), angle=_frozen(ang), magnitude=_frozen(mgn),
         N=N, mu=mu, G=G, nu=nu, source=comment)
+
+
+# --------------------------------------------------------------------------
+# the library's own exact theory as the reference
+# --------------------------------------------------------------------------
+
+#: the split classes of own_exact_cases: a/b bins (their labels) and |psi| bins
+_AOB_EDGES = (0.1, 0.3, 0.7, 1.4, 3.3, 10.01)
+_AOB_LABELS = (0.2, 0.5, 1.0, 2.0, 5.0)
+
+
+def random_cases(n=3000, seed=20261202):
+    """Seeded random Hertzian cases, drawn as CONTACT's 300 of
+    tests/data/contact_exact_cases.csv were (wider a/b): a dict of arrays.
+
+    From numpy.random.default_rng(seed), in this order, each of size n:
+    a/b log-uniform in [0.1, 10]; c = sqrt(ab) uniform 3-9 mm; N uniform
+    5-120 kN; mu uniform 0.1-0.5; m uniform in [0, 3]; theta uniform in
+    [0, 2 pi); psi uniform in [-1, 1], set to 0 for the last third of a
+    random permutation.  G = 82 GPa, nu = 0.28; a = c sqrt(a/b), b = c /
+    sqrt(a/b); (cx, cy) = m xi_ch (cos theta, sin theta) with xi_ch = mu N /
+    (G c^2 C11), cphi = psi mu N / (G c^3 C23) (Kalker's coefficients).
+    """
+    rng = np.random.default_rng(seed)
+    aob = np.exp(rng.uniform(np.log(0.1), np.log(10.0), n))
+    c = rng.uniform(3e-3, 9e-3, n)
+    N = rng.uniform(5e3, 120e3, n)
+    mu = rng.uniform(0.1, 0.5, n)
+    m = rng.uniform(0.0, 3.0, n)
+    theta = rng.uniform(0.0, 2 * np.pi, n)
+    psi = rng.uniform(-1.0, 1.0, n)
+    psi[rng.permutation(n) >= (2 * n) // 3] = 0.0
+    G, nu = 8.2e10, 0.28
+    from .contact import kalker_coefficients
+    k = kalker_coefficients(aob, nu)
+    xi_ch = mu * N / (G * c * c * k.c11)
+    return dict(a_over_b=aob, a=c * np.sqrt(aob), b=c / np.sqrt(aob), c=c, N=N, mu=mu, G=G,
+                nu=nu, cx=m * xi_ch * np.cos(theta), cy=m * xi_ch * np.sin(theta),
+                cphi=psi * mu * N / (G * c ** 3 * k.c23), psi=psi, m=m)
+
+
+def own_exact_cases(n=3000, seed=20261202, nx=27):
+    """random_cases(n, seed) with the library's own exact theory as the
+    reference: method "exact" extrapolated to the continuum from nx and 2 nx
+    elements across (rr.exact_richardson).  An ExactCases for score(...,
+    cases=): forces over mu N, Mz over mu N c (cp = c = sqrt(ab)); a_over_b
+    and spin are the split classes (a/b bins labelled 0.2 ... 5; |psi| 0, up
+    to 0.5, up to 1 as 0, 0.5, 1).  About 20 ms a case at nx = 27."""
+    from .exact import exact_richardson
+    d = random_cases(n, seed)
+    est, _ = exact_richardson(d["cx"], d["cy"], d["cphi"], a=d["a"], b=d["b"], N=d["N"],
+                              mu=d["mu"], G=d["G"], nu=d["nu"], nx=nx)
+    muN = d["mu"] * d["N"]
+    edges, labels = np.array(_AOB_EDGES), np.array(_AOB_LABELS)
+    aob_class = labels[np.clip(np.searchsorted(edges, d["a_over_b"]) - 1, 0, len(labels) - 1)]
+    apsi = np.abs(d["psi"])
+    spin_class = np.where(apsi == 0, 0.0, np.where(apsi <= 0.5, 0.5, 1.0))
+    return ExactCases(
+        cx=_frozen(d["cx"]), cy=_frozen(d["cy"]), cphi=_frozen(d["cphi"]), a=_frozen(d["a"]),
+        b=_frozen(d["b"]), cp=_frozen(d["c"]), Fx=_frozen(est.fx / muN),
+        Fy=_frozen(est.fy / muN), Mz=_frozen(est.mz / (muN * d["c"])),
+        pct_slip=_frozen(np.full(n, np.nan)), a_over_b=_frozen(aob_class),
+        spin=_frozen(spin_class), angle=_frozen(np.arctan2(d["cy"], d["cx"])),
+        magnitude=_frozen(d["m"]), N=_frozen(d["N"]), mu=_frozen(d["mu"]), G=d["G"],
+        nu=d["nu"], source=f"rollerrig's exact theory, Richardson {nx}/{2 * nx} across, "
+                           f"{n} random cases (seed {seed})")
 
 
 # --------------------------------------------------------------------------

@@ -282,3 +282,20 @@ def test_a_batch_gives_what_each_case_gives_alone():
     mixed = rr.creep_forces(5e-4, 1e-4, 0.3, **{**kw, "N": N})
     alone = [rr.creep_forces(np.array([5e-4]), 1e-4, 0.3, **{**kw, "N": n}).fx[0] for n in N]
     np.testing.assert_array_equal(mixed.fx, alone)
+
+
+def test_scoring_against_the_librarys_own_exact_theory():
+    # rr.reference.own_exact_cases: seeded random cases with the exact
+    # theory's Richardson estimate as the reference; any method scores
+    # against it as against CONTACT's table
+    own = rr.reference.own_exact_cases(n=30, seed=7, nx=9)
+    assert own.Fx.shape == (30,) and np.all(np.isfinite(own.Fx)) and np.all(np.isfinite(own.Mz))
+    again = rr.reference.own_exact_cases(n=30, seed=7, nx=9)
+    np.testing.assert_array_equal(own.Fx, again.Fx)             # seeded: reproducible
+    coarse = rr.reference.score("exact", cases=own, nx=9, ny=9)
+    fine = rr.reference.score("exact", cases=own, nx=18, ny=18)
+    # the estimate is 2 F18 - F9: F18 is nearer to it than F9, by a factor 2
+    assert fine.overall["median"] == pytest.approx(coarse.overall["median"] / 2, rel=1e-6)
+    f = rr.reference.score("fastsim_blended", cases=own, nx=20, ny=20)
+    assert f.overall["n"] == 30 and f.overall["p95"] < 0.3
+    assert set(f.by_spin) <= {0.0, 0.5, 1.0} and set(f.by_ellipticity) <= {0.2, 0.5, 1.0, 2.0, 5.0}
