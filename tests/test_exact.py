@@ -299,3 +299,18 @@ def test_scoring_against_the_librarys_own_exact_theory():
     f = rr.reference.score("fastsim_blended", cases=own, nx=20, ny=20)
     assert f.overall["n"] == 30 and f.overall["p95"] < 0.3
     assert set(f.by_spin) <= {0.0, 0.5, 1.0} and set(f.by_ellipticity) <= {0.2, 0.5, 1.0, 2.0, 5.0}
+
+
+def test_forces_converge_at_about_first_order_in_the_element_size():
+    # |F| on 12, 24, 48, 96 elements across: the changes shrink by a factor
+    # of about 2 a halving (first order: the upwind difference of steady
+    # rolling), irregularly, because the discrete contact area jumps
+    # (measured ratios 1.4 to 3.2; the notes' prototype saw orders of 0.3-3.6)
+    kw = dict(a=0.005, b=0.005, N=3e4, mu=0.3, method="exact")
+    orders = []
+    for c in ((2e-4, 0.0, 0.0), (0.0, 2e-4, 0.0), (1e-4, 0.0, 0.5)):
+        F = np.array([np.hypot(*rr.creep_forces(*c, nx=n, ny=n, **kw)[:2]) for n in (12, 24, 48, 96)])
+        d = np.abs(np.diff(F))
+        assert np.all(d[1:] < d[:-1]), (c, F)
+        orders.extend(np.log2(d[:-1] / d[1:]))
+    assert 0.4 < min(orders) and max(orders) < 2.0 and 0.8 < np.mean(orders) < 1.5, orders
