@@ -22,7 +22,7 @@ import numpy as np
 from . import _core
 from ._binding import _as_float, check_creep_options, used_numbers
 from ._errors import RollerRigError, check_status
-from .contact import TractionField
+from .contact import TractionField, _case
 
 __all__ = ["ExactSolution", "exact_field", "exact_solve", "exact_richardson"]
 
@@ -75,14 +75,9 @@ def exact_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, nx=None
     options = {k: v for k, v in dict(nx=nx, ny=ny, tol=tol, maxit=maxit,
                                      spin_shift=spin_shift).items() if v is not None}
     opts = check_creep_options(func, "exact", options)
-    named = dict(cx=cx, cy=cy, cphi=cphi, a=a, b=b, N=N, mu=mu, G=G, nu=nu)
-    full = {}
-    for k, v in named.items():
-        arr = _as_float(func, k, v)
-        if arr.size != 1:
-            raise RollerRigError(f"{func}: one case at a time; {k} has shape {arr.shape}")
-        full[k] = arr.reshape(())
-    flat = [full[k].reshape(1) for k in named] + [np.zeros(1), np.ones(1), np.zeros(1)]
+    shape, scalar, full, flat = _case(func, cx, cy, cphi, a, b, N, mu, G, nu, 0.0, None, "exact")
+    if not scalar:
+        raise RollerRigError(f"{func}: one case at a time; got inputs of shape {shape}")
     pb = _core.exact_hertz_problem(*flat, **opts)
     full.update(used_numbers("exact", options))
     check_status(func, np.array(pb[0], dtype=np.int8), full, "raise")

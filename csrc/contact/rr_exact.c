@@ -227,6 +227,15 @@ static int normal_product(solver *S, const double *p, double *u)
     return st < 0 ? RR_ERR_RANGE : st;
 }
 
+/* g = h + u(p): the gap before the approach, from a fresh product */
+static int gap_of(solver *S, const double *p, double *g)
+{
+    int k, st = normal_product(S, p, g);
+    for (k = 0; k < S->L->n; k++)
+        g[k] += S->L->h[k];
+    return st;
+}
+
 static double mean_on(const double *v, const signed char *in, int n, int *count)
 {
     double sum = 0.0;
@@ -240,6 +249,28 @@ static double mean_on(const double *v, const signed char *in, int n, int *count)
     return c ? sum / c : 0.0;
 }
 
+/* A start from q (in p on entry): the pressure sqrt(q) where q > 0 (those
+ * elements make the first contact set), scaled to the load N.  Returns the
+ * elements in contact, 0 where none or not finite. */
+static int start_from_q(const rr_exact_problem *pb, layout *L, double *p)
+{
+    const int n = L->n;
+    double psum = 0.0;
+    int k, cnt = 0;
+    for (k = 0; k < n; k++) {
+        const double q = p[k];
+        L->state[k] = q > 0.0 ? ADHESION : OUTSIDE;
+        p[k] = q > 0.0 ? sqrt(q) : 0.0;
+        psum += p[k];
+        cnt += q > 0.0;
+    }
+    if (cnt == 0 || !(psum > 0.0))
+        return 0;
+    for (k = 0; k < n; k++)
+        p[k] *= pb->N / (pb->grid.dx * pb->grid.dy * psum);
+    return rr_all_finite(p, n) ? cnt : 0;
+}
+
 /* A start for any h: Hertz's pressure of the curvatures of h at its
  * lowest element (second differences), laid over the level sets of h:
  * p = sqrt(1 - h/h_c) with h_c the gap at the Hertzian ellipse's rim.  A
@@ -249,9 +280,9 @@ static double mean_on(const double *v, const signed char *in, int n, int *count)
 static int start_from_h(const rr_exact_problem *pb, layout *L, const double *h, double *p)
 {
     const int mx = L->mx, my = L->my, n = L->n;
-    const double dx = pb->grid.dx, dy = pb->grid.dy, dA = dx * dy;
-    int k, i, j, km = 0, cnt = 0;
-    double A, B, hc, psum = 0.0;
+    const double dx = pb->grid.dx, dy = pb->grid.dy;
+    int k, i, j, km = 0;
+    double A, B, hc;
     rr_hertz_result hz;
 
     for (k = 1; k < n; k++)
@@ -269,18 +300,9 @@ static int start_from_h(const rr_exact_problem *pb, layout *L, const double *h, 
     hc = 0.5 * (A * hz.a * hz.a + B * hz.b * hz.b);
     if (!(hc > 0.0) || !isfinite(hc))
         return 0;
-    for (k = 0; k < n; k++) {
-        const double q = 1.0 - (h[k] - h[km]) / hc;
-        L->state[k] = q > 0.0 ? ADHESION : OUTSIDE;
-        p[k] = q > 0.0 ? sqrt(q) : 0.0;
-        psum += p[k];
-        cnt += q > 0.0;
-    }
-    if (cnt == 0 || !(psum > 0.0))
-        return 0;
     for (k = 0; k < n; k++)
-        p[k] *= pb->N / (dA * psum);
-    return rr_all_finite(p, n) ? cnt : 0;
+        p[k] = 1.0 - (h[k] - h[km]) / hc;
+    return start_from_q(pb, L, p);
 }
 
 /* NormCG: min 1/2 p.Ap + h.p over p >= 0 with dA sum p = N; the approach is
@@ -317,19 +339,12 @@ static int solve_normal(solver *S, rr_exact_result *res)
      * under a uniform pressure */
     cnt = 0;
     if (!pb->h && rr_hertz(pb->A, pb->B, pb->N, pb->G / (1.0 - pb->nu), &hz) == RR_OK) {
-        double psum = 0.0;
         for (k = 0; k < n; k++) {
             const double x = (pb->grid.x0 + (k % L->mx) * pb->grid.dx) / hz.a;
             const double y = (pb->grid.y0 + (k / L->mx) * pb->grid.dy) / hz.b;
-            const double q = 1.0 - x * x - y * y;
-            in[k] = q > 0.0 ? ADHESION : OUTSIDE;
-            p[k] = q > 0.0 ? sqrt(q) : 0.0;
-            psum += p[k];
-            cnt += in[k] != OUTSIDE;
+            p[k] = 1.0 - x * x - y * y;
         }
-        if (cnt > 0)
-            for (k = 0; k < n; k++)
-                p[k] *= pb->N / (dA * psum);
+        cnt = start_from_q(pb, L, p);
     }
     if (cnt == 0)
         cnt = start_from_h(pb, L, h, p);
@@ -341,10 +356,8 @@ static int solve_normal(solver *S, rr_exact_result *res)
         for (k = 0; k < n; k++)
             p[k] = in[k] != OUTSIDE ? pb->N / (dA * cnt) : 0.0;
     }
-    if ((st = normal_product(S, p, g)) < 0)
+    if ((st = gap_of(S, p, g)) < 0)
         return st;
-    for (k = 0; k < n; k++)
-        g[k] += h[k];
 
     while (S->products < pb->maxit) {
         double rr = 0.0, rrold = 0.0, rd = 0.0, dv = 0.0, alpha, beta, psum = 0.0, p2 = 0.0,
@@ -408,10 +421,8 @@ static int solve_normal(solver *S, rr_exact_result *res)
                 return RR_ERR_GEOMETRY;
             for (k = 0; k < n; k++)
                 p[k] *= pb->N / (dA * psum);
-            if ((st = normal_product(S, p, g)) < 0)
+            if ((st = gap_of(S, p, g)) < 0)
                 return st;
-            for (k = 0; k < n; k++)
-                g[k] += h[k];
             restart = 1;
             continue;
         }
@@ -566,14 +577,14 @@ static double residual(layout *L, double rho, const double *p, const double *s, 
     return sqrt(f2);
 }
 
-/* GMRES(m) on J P u = b, right-preconditioned; on return dlt = P u and
- * mdl = M dlt (kept from the products, no extra one).  Stops at
- * ||b - J P u|| <= eta ||b|| or when the product budget is spent. */
-static int gmres(solver *S, double rho, const double *b, double eta, double *dlt, double *mdl)
+/* GMRES(m) on J P u = -F (the Newton step), right-preconditioned; on
+ * return dlt = P u and mdl = M dlt (kept from the products, no extra one).
+ * Stops at ||F + J P u|| <= eta ||F|| or when the product budget is spent. */
+static int gmres(solver *S, double rho, const double *F, double eta, double *dlt, double *mdl)
 {
     layout *L = S->L;
     const int n2 = 2 * L->n, m = GMRES_M;
-    const double bnorm = sqrt(dot2(b, b, n2));
+    const double bnorm = sqrt(dot2(F, F, n2));
     double *V = L->V, *MV = L->MV, *H = L->H, *gv = L->gv, *cs = L->cs, *sn = L->sn,
            *y = L->y, *t = L->t1, *q = L->t2;
     double beta = bnorm;
@@ -583,7 +594,8 @@ static int gmres(solver *S, double rho, const double *b, double eta, double *dlt
     memset(mdl, 0, (size_t)n2 * sizeof *mdl);
     if (bnorm == 0.0)
         return RR_OK;
-    memcpy(V, b, (size_t)n2 * sizeof *V);
+    for (k = 0; k < n2; k++)
+        V[k] = -F[k];
     while (S->products < S->pb->maxit) {
         int jm = 0;
         /* V[0] = r / |r| */
@@ -597,7 +609,7 @@ static int gmres(solver *S, double rho, const double *b, double eta, double *dlt
             if ((st = tang_product(S, t, MV + (size_t)j * n2)) < 0)
                 return st;
             jacobian(L, rho, t, MV + (size_t)j * n2, w);
-            /* modified Gram-Schmidt, twice where it lost much (keeps V orthogonal) */
+            /* modified Gram-Schmidt */
             for (i = 0; i <= j; i++) {
                 const double hij = dot2(w, V + (size_t)i * n2, n2);
                 H[i * m + j] = hij;
@@ -647,10 +659,10 @@ static int gmres(solver *S, double rho, const double *b, double eta, double *dlt
         beta = fabs(gv[jm]);
         if (jm == 0 || beta <= eta * bnorm)
             break;
-        /* restart from the true residual b - J dlt */
+        /* restart from the true residual -F - J dlt */
         jacobian(L, rho, dlt, mdl, V);
         for (k = 0; k < n2; k++)
-            V[k] = b[k] - V[k];
+            V[k] = -F[k] - V[k];
         beta = sqrt(dot2(V, V, n2));
         if (beta <= eta * bnorm)
             break;
@@ -668,7 +680,7 @@ static int start_fastsim(const rr_exact_problem *pb, layout *L, const double *w)
     const int mx = L->mx, my = L->my, n = L->n;
     const double dx = pb->grid.dx, dy = pb->grid.dy;
     int i, j, imin = mx, imax = -1, jmin = my, jmax = -1;
-    double a, b, L1, L2, L3;
+    double a, b, fl[3];
     rr_kalker_coeffs kc;
 
     for (j = 0; j < my; j++)
@@ -685,9 +697,7 @@ static int start_fastsim(const rr_exact_problem *pb, layout *L, const double *w)
     b = 0.5 * (jmax - jmin + 1) * dy;
     if (rr_kalker(a / b, pb->nu, &kc) != RR_OK)
         return RR_ERR_RANGE;
-    L1 = 8.0 * a / (3.0 * pb->G * kc.c11);
-    L2 = 8.0 * a / (3.0 * pb->G * kc.c22);
-    L3 = RR_PI * a * sqrt(a / b) / (4.0 * pb->G * kc.c23);
+    rr_kalker_flexibilities(a, b, pb->G, &kc, fl);
     for (j = 0; j < my; j++) {
         double qx = 0.0, qy = 0.0;
         for (i = mx - 1; i >= 0; i--) {
@@ -701,8 +711,8 @@ static int start_fastsim(const rr_exact_problem *pb, layout *L, const double *w)
             /* the rigid slip split into its creepage and spin parts */
             {
                 const double spx = w[k] - pb->cx, spy = w[k + n] - pb->cy;
-                qx -= dx * (pb->cx / L1 + spx / L3);
-                qy -= dx * (pb->cy / L2 + spy / L3);
+                qx -= dx * (pb->cx / fl[0] + spx / fl[2]);
+                qy -= dx * (pb->cy / fl[1] + spy / fl[2]);
             }
             g = L->fac[k + n];
             t = hypot(qx, qy);
@@ -780,12 +790,8 @@ static int solve_tangential(solver *S, rr_exact_result *res)
             eta = fmin(0.3, fmax(e, 1e-3));
         }
         eta = fmax(eta, 0.5 * goal / nF);
-        for (k = 0; k < n2; k++)
-            F[k] = -F[k];
         if ((st = gmres(S, rho, F, eta, dl, md)) < 0)
             return st;
-        for (k = 0; k < n2; k++)
-            F[k] = -F[k];
         newton++;
         nFold = nF;
         /* backtracking on ||F||: s(p + t dl) = s + t M dl, no product needed */

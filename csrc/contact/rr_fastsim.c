@@ -14,9 +14,11 @@ static void flexibilities(const rr_contact_case *c, const rr_friction *fr, int m
                           const rr_creep_opts *o, const rr_kalker_coeffs *k, flex *fl)
 {
     const double a = c->a, b = c->b, G = c->G;
-    fl->L1 = 8.0 * a / (3.0 * k->c11 * G);
-    fl->L2 = 8.0 * a / (3.0 * k->c22 * G);
-    fl->L3 = RR_PI * a * sqrt(a / b) / (4.0 * k->c23 * G);
+    double L[3];
+    rr_kalker_flexibilities(a, b, G, k, L);
+    fl->L1 = L[0];
+    fl->L2 = L[1];
+    fl->L3 = L[2];
 
     if (method == RR_METHOD_FASTSIM_BLENDED) {
         const double ab = a * b, cc = sqrt(ab), sat = fr->mu0 * c->N / G;

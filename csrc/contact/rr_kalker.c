@@ -142,3 +142,11 @@ int rr_kalker(double a_over_b, double nu, rr_kalker_coeffs *out)
     }
     return RR_OK;
 }
+
+void rr_kalker_flexibilities(double a, double b, double G, const rr_kalker_coeffs *k,
+                             double L[3])
+{
+    L[0] = 8.0 * a / (3.0 * k->c11 * G);
+    L[1] = 8.0 * a / (3.0 * k->c22 * G);
+    L[2] = RR_PI * a * sqrt(a / b) / (4.0 * k->c23 * G);
+}

@@ -54,4 +54,15 @@ typedef struct {
  */
 int rr_kalker(double a_over_b, double nu, rr_kalker_coeffs *out);
 
+/*
+ * rr_kalker_flexibilities - the simplified theory's flexibilities [m/Pa]
+ * that reproduce Kalker's linear theory (Kalker 1982, FASTSIM):
+ *   L[0] = 8a / (3 C11 G), L[1] = 8a / (3 C22 G),
+ *   L[2] = pi a sqrt(a/b) / (4 C23 G)   (spin)
+ * for semi-axes a (rolling direction), b, modulus G and coefficients k.
+ * No checks: the callers pass values they checked (NaN in, NaN out).
+ */
+void rr_kalker_flexibilities(double a, double b, double G, const rr_kalker_coeffs *k,
+                             double L[3]);
+
 #endif
