@@ -92,6 +92,10 @@ int rr_creep_prepare(const rr_contact_case *c, const rr_friction *fr, rr_kalker_
         st = rr_friction_check(fr);
     if (st == RR_OK && rr_friction_is_falling(fr) && !(c->speed > 0.0))
         st = RR_ERR_SPEED;
+    /* the friction limit itself must have a double's digits: a subnormal
+     * mu0 N rounds the saturated force above it */
+    if (st == RR_OK && !isnormal(fr->mu0 * c->N))
+        st = RR_ERR_RANGE;
     if (st == RR_OK)
         st = rr_creep_kalker(c, k);
     return st;

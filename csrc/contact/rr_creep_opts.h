@@ -139,8 +139,8 @@ int rr_method_check(const rr_method_desc *d, const rr_creep_opts *o, int *bad);
  * rr_creep_prepare - the checks every frictional method starts with, then
  * Kalker's coefficients of the case.
  *   status: rr_contact_check, rr_friction_check, RR_ERR_SPEED (falling
- *   friction needs speed > 0), rr_kalker, RR_ERR_RANGE (a/b not a normal
- *   double), RR_ERR_NULL.
+ *   friction needs speed > 0), RR_ERR_RANGE (mu0 N not a normal double),
+ *   rr_kalker, RR_ERR_RANGE (a/b not a normal double), RR_ERR_NULL.
  */
 int rr_creep_prepare(const rr_contact_case *c, const rr_friction *fr, rr_kalker_coeffs *k);
 
