@@ -188,4 +188,24 @@ int rr_conv2d_apply2(rr_conv2d *cv, const double *sxx, const double *sxy,
                      const double *syx, const double *syy, const double *inx,
                      const double *iny, double *outx, double *outy);
 
+/* Not API: the two builds of the three convolutions on x86-64 with GCC or
+ * clang (rr_fft.c says why), the baseline and AVX2, for rr_fft.c's
+ * dispatch and for the test that they give the same doubles. */
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(RR_PORTABLE)
+#define RR_FFT_DISPATCH 1
+
+int rr_conv2d_spectrum_baseline(rr_conv2d *cv, const double *kern, double *spec);
+int rr_conv2d_apply_baseline(rr_conv2d *cv, const double *spec, const double *in, double *out);
+int rr_conv2d_apply2_baseline(rr_conv2d *cv, const double *sxx, const double *sxy,
+                              const double *syx, const double *syy, const double *inx,
+                              const double *iny, double *outx, double *outy);
+int rr_conv2d_spectrum_avx2(rr_conv2d *cv, const double *kern, double *spec);
+int rr_conv2d_apply_avx2(rr_conv2d *cv, const double *spec, const double *in, double *out);
+int rr_conv2d_apply2_avx2(rr_conv2d *cv, const double *sxx, const double *sxy,
+                          const double *syx, const double *syy, const double *inx,
+                          const double *iny, double *outx, double *outy);
+#else
+#define RR_FFT_DISPATCH 0
+#endif
+
 #endif
