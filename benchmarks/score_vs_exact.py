@@ -15,7 +15,9 @@ import time
 from rollerrig import reference as ref
 
 FAST = [("linear", {}), ("fastsim", dict(nx=30, ny=30)),
-        ("fastsim_blended", dict(nx=30, ny=30)), ("modified_fastsim", dict(nx=30, ny=30)),
+        ("fastsim_blended", dict(nx=30, ny=30)),
+        ("fastsim_blended", dict(nx=30, ny=30, blend_rule="spin")),  # the former default
+        ("modified_fastsim", dict(nx=30, ny=30)),
         ("polach", {})]
 
 

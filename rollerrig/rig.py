@@ -765,7 +765,7 @@ def build_rig(params=None, *, dt=None, method=None, substeps=None, ode=None, nx=
     dt:      control sample time [s], 1e-6 to 0.1 (default
              scenario.control_sample_time_s, 4 ms)
     method, nx, ny, **creep: the creep-force method, its FASTSIM grid and
-             options (CREEP_OPTIONS: bound, grid, slip_speed, k0,
+             options (CREEP_OPTIONS: bound, grid, slip_speed, blend_rule, k0,
              alpha_inf, beta, kA, kS; see rollerrig.creep_forces); default
              the parameters' contact section
     substeps, ode: plant steps per sample (1 to 1000) and the integrator
@@ -1083,7 +1083,8 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
                before it starts, with the record_every that would fit
     progress:  print a progress bar on stderr
     **creep:   the creep-force method's options: bound, grid, slip_speed,
-               k0, alpha_inf, beta (modified FASTSIM), kA, kS (Polach); see
+               blend_rule (blended FASTSIM), k0, alpha_inf, beta (modified
+               FASTSIM), kA, kS (Polach); see
                rollerrig.creep_forces
     Returns RigResult (its fields, units and status codes are in its
     docstring).  A run that fails (a wheel off its roller, lift-off, NaN)

@@ -13,8 +13,8 @@ random cases, with its tolerance and the reason for it next to the check:
 
 Each C call passes only the options its method has (creep_forces refuses
 the others): none for linear; speed, friction, kA, kS for polach; nx, ny,
-bound, grid, speed, friction, slip_speed for the FASTSIM variants, and k0,
-alpha_inf, beta for modified FASTSIM.  A twin that no longer follows the C
+bound, grid, speed, friction, slip_speed for the FASTSIM variants, blend_rule
+for blended FASTSIM, and k0, alpha_inf, beta for modified FASTSIM.  A twin that no longer follows the C
 core fails here; nothing is skipped.
 """
 import zlib
@@ -169,6 +169,8 @@ def fastsim_cases(method, bound, grid, n=50):
         extra = {}
         if friction is not None:
             extra["slip_speed"] = str(rng.choice(["local", "rigid"]))
+        if method == "fastsim_blended":
+            extra["blend_rule"] = str(rng.choice(["contact", "spin"]))
         if method == "modified_fastsim":
             extra.update(k0=rng.uniform(0.2, 1.0), alpha_inf=rng.uniform(0.0, 1.0),
                          beta=rng.uniform(0.0, 2.0))
@@ -233,6 +235,8 @@ BAD = [
      lambda: rr.creep_forces(**CASE, method="polach", friction=rr.FallingFriction(0.4, 0.6))),
     ("nx", lambda: twin.fastsim(**CASE, nx=0),
      lambda: rr.creep_forces(**CASE, method="fastsim", nx=0)),
+    ("blend_rule", lambda: twin.fastsim(**CASE, variant="blended", blend_rule="both"),
+     lambda: rr.creep_forces(**CASE, method="fastsim_blended", blend_rule="both")),
     ("k0", lambda: twin.fastsim(**CASE, variant="modified", k0=1.5),
      lambda: rr.creep_forces(**CASE, method="modified_fastsim", k0=1.5)),
 ]

@@ -100,6 +100,7 @@ _VARIANTS = ("fastsim", "blended", "modified")
 _BOUNDS = ("parabolic", "elliptic")
 _GRIDS = ("rect", "strips")
 _SLIP_SPEEDS = ("local", "rigid")
+_BLEND_RULES = ("contact", "spin")
 
 
 # ---------------------------------------------------------------------------
@@ -434,19 +435,27 @@ def _kalker_flexibilities(a, b, G, c11, c22, c23):
     return L1, L2, L3
 
 
-def _blend_flexibilities(L1, L2, L3, cx, cy, cphi, a, b, N, G, mu0, c11, c22, c23):
+def _blend_flexibilities(L1, L2, L3, cx, cy, cphi, a, b, N, G, mu0, c11, c22, c23,
+                         rule="contact"):
     """Blended FASTSIM (Vollebregt and Voltr 2023): move each L_i toward the
     single flexibility L = (cx^2 + cy^2 + pe^2)/(cx^2/L1 + cy^2/L2 + pe^2/L3),
-    pe = 3 pi a cphi/32 (CONTACT's simpflex), with weight w = min(1, f/3),
-    f = |(cx/ch_x, cy/ch_y, cphi/ch_phi)| and the characteristic creepages
-    mu0 N/(G c^2 C11), mu0 N/(G c^2 C22), mu0 N/(G c^3 C23)."""
+    pe = 3 pi a cphi/32 (CONTACT's simpflex), with weight w = min(1, f/3).
+    With the characteristic creepages ch_x = mu0 N/(G c^2 C11),
+    ch_y = mu0 N/(G c^2 C22), ch_phi = mu0 N/(G c^3 C23): rule "contact"
+    (CONTACT's simpflex) f = |(cx, cy)|/|(ch_x, ch_y)|, no spin; rule
+    "spin" f = |(cx/ch_x, cy/ch_y, cphi/ch_phi)|."""
     ab = a * b
     cc = math.sqrt(ab)
     sat = mu0 * N / G
-    fx = cx * ab * c11 / sat
-    fy = cy * ab * c22 / sat
-    fp = cphi * ab * cc * c23 / sat
-    w = math.sqrt(fx * fx + fy * fy + fp * fp) / 3.0
+    if rule == "contact":
+        chx = sat / (ab * c11)
+        chy = sat / (ab * c22)
+        w = math.hypot(cx, cy) / math.hypot(chx, chy) / 3.0
+    else:
+        fx = cx * ab * c11 / sat
+        fy = cy * ab * c22 / sat
+        fp = cphi * ab * cc * c23 / sat
+        w = math.sqrt(fx * fx + fy * fy + fp * fp) / 3.0
     if w > 1.0:
         w = 1.0
     if w > 0.0:
@@ -606,7 +615,7 @@ def _march_row(j, nx, ny, a, b, bound, grid, scale, L1, L2, L3, cx, cy, cphi,
 
 def fastsim(cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0, nx=30, ny=30,
             bound="parabolic", variant="fastsim", k0=0.54, alpha_inf=0.02, beta=0.62,
-            slip_speed=None, field=False, grid="rect"):
+            slip_speed=None, field=False, grid="rect", blend_rule="contact"):
     """Creep forces on the wheel by FASTSIM: (fx, fy, mz), or with
     ``field=True`` (fx, fy, mz, dict(x, y, pn, px, py, slip)).
 
@@ -632,7 +641,8 @@ def fastsim(cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0, nx=30, ny
     speed (Newton's method), "rigid" one mu at the rigid slip speed
     |(cx, cy)| speed; None means "rigid" for the modified variant, else
     "local".  ``k0``, ``alpha_inf``, ``beta`` are used (and checked) only
-    by the modified variant.
+    by the modified variant, ``blend_rule`` ("contact" or "spin", see
+    _blend_flexibilities) only by the blended one.
 
     The field is given as nested lists [ny][nx], rows j along y and x
     increasing along the inner index i (the C layout j * nx + i); ``slip``
@@ -645,6 +655,8 @@ def fastsim(cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0, nx=30, ny
     if slip_speed is None:
         slip_speed = "rigid" if variant == "modified" else "local"
     slip_speed = _check_choice("slip_speed", slip_speed, _SLIP_SPEEDS)
+    if variant == "blended":
+        blend_rule = _check_choice("blend_rule", blend_rule, _BLEND_RULES)
     nx = _check_grid_size("nx", nx)
     ny = _check_grid_size("ny", ny)
     if variant == "modified":
@@ -663,7 +675,7 @@ def fastsim(cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0, nx=30, ny
     L1, L2, L3 = _kalker_flexibilities(a, b, G, c11, c22, c23)
     if variant == "blended":
         L1, L2, L3 = _blend_flexibilities(L1, L2, L3, cx, cy, cphi, a, b, N, G, mu0,
-                                          c11, c22, c23)
+                                          c11, c22, c23, blend_rule)
     elif variant == "modified":
         L1, L2, L3 = _modify_flexibilities(L1, L2, L3, cx, cy, cphi, a, b, N, G, c11,
                                            mu_rigid, k0, alpha_inf, beta)

@@ -55,6 +55,15 @@ enum {
     RR_FASTSIM_BETA = 7
 };
 
+/* Blended FASTSIM's sixth option (rr_method_fastsim_blended only; the same
+ * index as modified FASTSIM's k0, another method's option). */
+enum { RR_FASTSIM_BLEND_RULE = 5 };   /* enum rr_blend_rule */
+
+enum rr_blend_rule {
+    RR_BLEND_CONTACT = 0,  /* CONTACT's simpflex: w = |(cx, cy)| / |(ch_x, ch_y)| / 3 */
+    RR_BLEND_SPIN = 1      /* w = |(cx/ch_x, cy/ch_y, cphi/ch_phi)| / 3 */
+};
+
 enum rr_bound {
     RR_BOUND_PARABOLIC = 0,  /* Kalker's original: p ~ 1 - x^2/a^2 - y^2/b^2 */
     RR_BOUND_ELLIPTIC = 1    /* Hertzian: p ~ sqrt(1 - x^2/a^2 - y^2/b^2) */
@@ -101,14 +110,26 @@ typedef rr_traction_field rr_fastsim_field;
  *            the field (where o gives its size) are NaN.
  *   Flexibilities (Kalker 1982): L1 = 8a/(3 C11 G), L2 = 8a/(3 C22 G),
  *   L3 = pi a sqrt(a/b)/(4 C23 G).
- *   Blended: with characteristic creepages ch_i = mu0 N / (G c^2 C11),
- *   mu0 N / (G c^2 C22), mu0 N / (G c^3 C23) and
- *   f = |(cx/ch_x, cy/ch_y, cphi/ch_phi)|, the weight w = min(1, f/3) blends
- *   each L_i toward the single flexibility
+ *   Blended: with characteristic creepages ch_x = mu0 N / (G c^2 C11),
+ *   ch_y = mu0 N / (G c^2 C22), ch_phi = mu0 N / (G c^3 C23), the weight
+ *   w = min(1, f/3) blends each L_i toward the single flexibility
  *   L = (cx^2 + cy^2 + pe^2)/(cx^2/L1 + cy^2/L2 + pe^2/L3), pe = 3 pi a cphi/32
- *   (CONTACT's simpflex; we normalise each creepage by its own
- *   characteristic value so that the weight does not depend on the unit of
- *   length).
+ *   (spin enters L under either rule), L_i' = (1 - w) L_i + w L, where
+ *   o->v[RR_FASTSIM_BLEND_RULE] chooses f:
+ *     RR_BLEND_CONTACT (the default): f = |(cx, cy)| / |(ch_x, ch_y)|, no
+ *       spin (CONTACT's m_hertz simpflex, as shipped: its blended FASTSIM
+ *       to the plain FASTSIM's grid-convention level, p95 0.01 mu N at 45
+ *       across); nearer the exact theory than RR_BLEND_SPIN, with spin and
+ *       without (tests/test_blend_rule.py);
+ *     RR_BLEND_SPIN: f = |(cx/ch_x, cy/ch_y, cphi/ch_phi)|, each creepage
+ *       over its own characteristic one, spin too (the library's rule
+ *       before issue 14).
+ *   Either f is dimensionless (independent of the unit of length).  CONTACT
+ *   also floors f at 1e-10 and the denominator of L at 1e-14 (its units);
+ *   here w = 0 leaves the L_i as they are (a weight of 3e-11 changes no
+ *   force beyond rounding), and a creepage below 1e-154, whose square
+ *   underflows, still makes L 0/0 (NaN forces: the fuzzers' known
+ *   "blended").
  *   Modified: all L_i divided by k = k0 (alpha_inf + (1-alpha_inf)/(1 + beta eps)),
  *   eps = pi G a b k0 C11 |(cx, cy + a cphi)| / (4 mu N) with mu at the
  *   rigid slip speed (CONTACT's fastsim_params).

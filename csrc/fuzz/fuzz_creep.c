@@ -76,6 +76,8 @@ static int opts_invalid(const rr_creep_opts *o)
             || bad_int(v[RR_FASTSIM_NX], 1, RR_FASTSIM_MAX_GRID)
             || bad_int(v[RR_FASTSIM_NY], 1, RR_FASTSIM_MAX_GRID)))
         return 1;
+    if (o->method == RR_METHOD_FASTSIM_BLENDED && bad_int(v[RR_FASTSIM_BLEND_RULE], 0, 1))
+        return 1;
     if (o->method == RR_METHOD_MODIFIED_FASTSIM
         && !(isfinite(v[RR_FASTSIM_K0]) && isfinite(v[RR_FASTSIM_ALPHA_INF])
              && isfinite(v[RR_FASTSIM_BETA]) && v[RR_FASTSIM_K0] > 0.0 && v[RR_FASTSIM_K0] <= 1.0
@@ -155,6 +157,10 @@ static void decode_opts(fz_in *in, rr_creep_opts *o)
         v[RR_FASTSIM_K0] = fz_lin(in, 0.01, 1.0);
         v[RR_FASTSIM_ALPHA_INF] = fz_lin(in, 0.0, 1.0);
         v[RR_FASTSIM_BETA] = fz_lin(in, 0.0, 5.0);
+        /* blended FASTSIM's blend_rule shares k0's index: 0, 1 or (k0 > 10/11)
+         * the invalid 2, from the same byte */
+        if (o->method == RR_METHOD_FASTSIM_BLENDED)
+            v[RR_FASTSIM_BLEND_RULE] = floor(2.2 * v[RR_FASTSIM_K0]);
     } else if (o->method == RR_METHOD_POLACH) {
         v[RR_POLACH_KA] = fz_lin(in, 0.01, 1.0);
         v[RR_POLACH_KS] = v[RR_POLACH_KA] * fz_lin(in, 0.01, 1.0);

@@ -926,10 +926,13 @@ static void test_blended(void)
             }
     /* The documented blend, checked where no element slips: the tractions
      * are then linear in c_i / L_i, so the blended forces are the plain
-     * forces of each creepage alone times L_i / L_i' (exact superposition). */
+     * forces of each creepage alone times L_i / L_i' (exact superposition).
+     * Both rules (cases 1 and 2 have spin: it enters rule "spin"'s weight
+     * and not CONTACT's). */
     {
         static const double cr[3][3] = {{1e-6, 2e-6, 0.0}, {-1e-6, 5e-7, 2e-4}, {0.0, 1e-6, -1e-3}};
-        int ic;
+        int ic, rule;
+        for (rule = 0; rule < 2; rule++)
         for (ic = 0; ic < 3; ic++) {
             rr_contact_case c = base_case(), c1, c2, c3;
             rr_kalker_coeffs k = coeffs(&c);
@@ -951,7 +954,14 @@ static void test_blended(void)
             fxn = c.cx / (sat / (c.G * ab * k.c11));
             fyn = c.cy / (sat / (c.G * ab * k.c22));
             fpn = c.cphi / (sat / (c.G * ab * cc * k.c23));
-            w = sqrt(fxn * fxn + fyn * fyn + fpn * fpn) / 3.0;
+            ob.v[RR_FASTSIM_BLEND_RULE] = rule;
+            if (rule == RR_BLEND_CONTACT) {
+                /* CONTACT's simpflex: |(cx, cy)| / |(ch_x, ch_y)| / 3, no spin */
+                const double chx = sat / (c.G * ab * k.c11), chy = sat / (c.G * ab * k.c22);
+                w = sqrt((c.cx * c.cx + c.cy * c.cy) / (chx * chx + chy * chy)) / 3.0;
+            } else {
+                w = sqrt(fxn * fxn + fyn * fyn + fpn * fpn) / 3.0;
+            }
             if (w > 1.0)
                 w = 1.0;
             pe = 3.0 * RR_PI * c.a * c.cphi / 32.0;
@@ -969,8 +979,8 @@ static void test_blended(void)
             rr_fastsim(&c3, &fr, &op, &f3, 0);
             fld.slip = fld_slip;
             rr_fastsim(&c, &fr, &ob, &fb, &fld);
-            snprintf(buf, sizeof buf, "blended flexibilities as documented, case %d (w = %.2e)",
-                     ic, w);
+            snprintf(buf, sizeof buf, "blended flexibilities as documented, rule %d, case %d "
+                     "(w = %.2e)", rule, ic, w);
             CHECK(fld.nslip == 0 && w > 1e-5, buf);
             ex = f1.fx * r1 + f2.fx * r2 + f3.fx * r3;
             ey = f1.fy * r1 + f2.fy * r2 + f3.fy * r3;
