@@ -737,6 +737,9 @@ def exact_table(table, cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0
         sign, x, y, z = -1.0, -x, -y, -z
     if x < 0.0:
         sx, x = -1.0, -x
+    sy = 1.0
+    if z == 0.0 and y < 0.0:
+        sy, y = -1.0, -y
     R = m * math.sqrt((x / m) ** 2 + (y / m) ** 2 + (z / m) ** 2) / (muN / (G * cc * cc))
     q = (la, math.atan2(math.hypot(x, y), z), math.atan2(y, x), 1.0 / (1.0 + table.r0 / R))
     n = table.values.shape[:4]
@@ -750,7 +753,11 @@ def exact_table(table, cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0
                     v = table.values[base[0] + i0, base[1] + i1, base[2] + i2, base[3] + i3]
                     for k in range(3):
                         f[k] += wt * float(v[k])
+    if x == 0.0:
+        f[0] = 0.0
+    if y == 0.0 and z == 0.0:
+        f[1] = f[2] = 0.0
     h = math.hypot(f[0], f[1])
     if h > 1.0:
         f[0], f[1] = f[0] / h, f[1] / h
-    return sign * sx * f[0] * muN, sign * f[1] * muN, sign * f[2] * muN * cc
+    return sign * sx * f[0] * muN, sign * sy * f[1] * muN, sign * sy * f[2] * muN * cc

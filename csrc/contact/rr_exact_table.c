@@ -103,7 +103,7 @@ int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
                           const rr_friction *fr, rr_forces *out)
 {
     rr_kalker_coeffs k;
-    double q[4], f[3], cc, mu, muN, x, y, z, m, R, sign = 1.0, sx = 1.0, aob;
+    double q[4], f[3], cc, mu, muN, x, y, z, m, R, sign = 1.0, sx = 1.0, sy = 1.0, aob;
     int st;
 
     if (!out)
@@ -145,6 +145,10 @@ int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
         sx = -1.0;
         x = -x;
     }
+    if (z == 0.0 && y < 0.0) {      /* without spin the mirror alone: y >= 0 */
+        sy = -1.0;
+        y = -y;
+    }
     /* R = |(x, y, z)| / s, scaled by m so that no square overflows */
     R = m * sqrt((x / m) * (x / m) + (y / m) * (y / m) + (z / m) * (z / m))
         / (muN / (c->G * cc * cc));
@@ -152,6 +156,13 @@ int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
     q[2] = atan2(y, x);
     q[3] = 1.0 / (1.0 + t->r0 / R);  /* R = inf: full sliding, u = 1 */
     interpolate(t, q, f);
+    /* points that the symmetries map onto themselves with a force reversed
+     * have no such force (the nodes hold the solver's round-off there):
+     * fx at x = 0 (reversed and mirrored), fy and mz at y = z = 0 (mirrored) */
+    if (x == 0.0)
+        f[0] = 0.0;
+    if (y == 0.0 && z == 0.0)
+        f[1] = f[2] = 0.0;
     {
         /* the cubic may overshoot the bound near full sliding by its error */
         const double h = hypot(f[0], f[1]);
@@ -161,8 +172,8 @@ int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
         }
     }
     out->fx = sign * sx * f[0] * muN;
-    out->fy = sign * f[1] * muN;
-    out->mz = sign * f[2] * muN * cc;
+    out->fy = sign * sy * f[1] * muN;
+    out->mz = sign * sy * f[2] * muN * cc;
     return rr_forces_checked(RR_OK, out);
 }
 

@@ -8,7 +8,8 @@
  *     x = cx C11 / s,  y = cy C22 / s,  z = cphi c C11 / s,  s = mu N / (G c^2)
  * (Kalker's coefficients).  Reversing all creepages reverses the forces and
  * the moment; mirroring the patch in y maps (x, y, z) to (x, -y, -z) and
- * (fx, fy, mz) to (fx, -fy, -mz); so the table holds z >= 0, x >= 0 only, at
+ * (fx, fy, mz) to (fx, -fy, -mz); so the table holds z >= 0, x >= 0 only
+ * (and y >= 0 where z = 0), at
  *     log(a/b),  alpha = atan2(hypot(x, y), z),  theta = atan2(y, x),
  *     u = R / (R + r0), R = |(x, y, z)|,
  * u = 0 no force, u = 1 full sliding (rollerrig/exact_table.py builds it).
