@@ -211,7 +211,8 @@ def one_thread(rng, sz, kernel, kernel_ext):
     cheap = creep_cases(rng, sz["cheap"])
     hcases = hertz_cases(rng, sz["cheap"])
     specs = [("Hertz", "hertz", 0, 0, "")] \
-        + [("Linear theory", "linear", 30, 30, "rect"), ("Polach", "polach", 30, 30, "rect")] \
+        + [("Linear theory", "linear", 30, 30, "rect"), ("Polach", "polach", 30, 30, "rect"),
+           ("Exact-theory table", "exact_table", 30, 30, "rect")] \
         + FASTSIM_ROWS
     for name, method, nx, ny, grid in specs:
         fast = method.startswith("fastsim")

@@ -21,6 +21,7 @@
  *   rr_rig_contact.h  one contact evaluation of the wheelset on the rollers
  *   rr_control.h   PI speed controllers, drive lag, encoders, creepage controller
  *   rr_ode.h       fixed-step L-stable integrators (ROS2, TR-BDF2, lin. Euler)
+ *   rr_exact_table.h  the exact theory's forces from a table (method exact_table)
  *   rr_fft.h       mixed-radix FFT and the 2-D convolutions of the exact
  *                  contact solver (influence coefficients by FFT)
  *   rr_rig.h       the rig in time: plant, normal loads, sampled-data control
@@ -43,6 +44,7 @@
 #include "util/rr_fft.h"
 #include "contact/rr_influence.h"
 #include "contact/rr_exact.h"
+#include "contact/rr_exact_table.h"
 #include "contact/rr_creep.h"
 #include "geometry/rr_creepage.h"
 #include "util/rr_spline.h"

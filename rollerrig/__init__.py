@@ -33,6 +33,8 @@ from .sweep import sweep, sweep_rig
 from .exact import ExactSolution, exact_field, exact_richardson, exact_solve
 from .patch import Patch, PatchShape, RigExact, patch_shape, rig_exact, undeformed_distance
 from . import reference
+from . import exact_table
+from .exact_table import ExactTable, build_exact_table
 from .rig_contact import (LinearCreepages, RigContact, RigPose, WheelContact, linear_creepages,
                           rig_contact)
 
@@ -47,5 +49,6 @@ __all__ = [
     "default_parameters", "load_parameters", "build_rig", "Rig", "replay", "fit_polach",
     "fit_modified_fastsim", "FitResult", "sweep", "sweep_rig", "reference", "ExactSolution",
     "exact_field", "exact_solve", "exact_richardson", "Patch", "undeformed_distance",
-    "PatchShape", "patch_shape", "RigExact", "rig_exact",
+    "PatchShape", "patch_shape", "RigExact", "rig_exact", "exact_table", "ExactTable",
+    "build_exact_table",
 ]

@@ -293,6 +293,20 @@ static int kalker_kernel(void *ctx, npy_intp start, npy_intp stop)
     return 0;
 }
 
+/* The built-in exact-theory table: (shape, lo, hi, nu, r0, nx, the bytes of
+ * its float32 values). */
+static PyObject *py_exact_table_builtin(PyObject *self, PyObject *unused)
+{
+    const rr_exact_table *t = &rr_exact_table_builtin;
+    const Py_ssize_t n = (Py_ssize_t)t->n[0] * t->n[1] * t->n[2] * t->n[3] * 3;
+    (void)self;
+    (void)unused;
+    return Py_BuildValue("(iiii)(dddd)(dddd)ddiy#", t->n[0], t->n[1], t->n[2], t->n[3], t->lo[0],
+                         t->lo[1], t->lo[2], t->lo[3], t->hi[0], t->hi[1], t->hi[2], t->hi[3],
+                         t->nu, t->r0, t->nx, (const char *)t->v,
+                         n * (Py_ssize_t)sizeof(float));
+}
+
 static PyObject *py_kalker(PyObject *self, PyObject *args)
 {
     static const char *const names[] = {"a_over_b", "nu"};
@@ -2136,6 +2150,8 @@ static PyMethodDef core_methods[] = {
      "hertz(A, B, N, E1, nu1, E2, nu2) -> (a, b, p0, delta, status)"},
     {"hertz1", (PyCFunction)(void (*)(void))py_hertz1, METH_FASTCALL,
      "hertz1(A, B, N, E1, nu1, E2, nu2) -> (a, b, p0, delta, status)"},
+    {"exact_table_builtin", py_exact_table_builtin, METH_NOARGS,
+     "exact_table_builtin() -> (shape, lo, hi, nu, r0, nx, float32 bytes): the built-in table"},
     {"kalker", py_kalker, METH_VARARGS,
      "kalker(a_over_b, nu) -> (c11, c22, c23, c33, status)"},
     {"creep_forces", (PyCFunction)(void (*)(void))py_creep_forces, METH_VARARGS | METH_KEYWORDS,

@@ -49,6 +49,8 @@ _STATUS_ARGS = {
     -5: {"mu": _positive, "friction.A": lambda v: 0.0 < v <= 1.0,
          "friction.B": lambda v: v >= 0.0},
     -7: {"speed": _positive},
+    # outside the exact-theory table: the semi-axes and nu together decide
+    -14: {"a": lambda v: False, "b": lambda v: False, "nu": lambda v: False},
 }
 # a result out of range: any argument may share the blame; name the extreme ones
 _RANGE = -12

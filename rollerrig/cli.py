@@ -133,6 +133,45 @@ def _positive_int(text):
     return value
 
 
+def _shape(text):
+    try:
+        shape = tuple(int(v) for v in text.split(","))
+    except ValueError:
+        shape = ()
+    if len(shape) != 4 or min(shape) < 4:
+        raise argparse.ArgumentTypeError(f"four node counts >= 4 like 17,11,19,21, got {text!r}")
+    return shape
+
+
+def _exact_table(args):
+    from ._errors import RollerRigError
+    from .exact_table import build_exact_table
+    client = None
+    if args.dask:
+        try:
+            import distributed
+        except ImportError:
+            print("rollerrig exact-table: --dask needs dask.distributed "
+                  '(pip install "rollerrig[distributed]")', file=sys.stderr)
+            return 2
+        client = distributed.Client(args.dask)
+    try:
+        table = build_exact_table(args.shape, nu=args.nu, nx=args.nx, workers=args.workers,
+                                  client=client, progress=not args.quiet)
+    except RollerRigError as e:
+        print(f"rollerrig exact-table: {e}", file=sys.stderr)
+        return 2
+    finally:
+        if client is not None:
+            client.close()
+    table.write_c(args.out)
+    if args.npz:
+        table.save(args.npz)
+    print(f"wrote {args.out}: {'x'.join(map(str, table.shape))} nodes, nu = {table.nu}, "
+          f"exact theory from {table.nx} and {2 * table.nx} elements across")
+    return 0
+
+
 def build_parser():
     parser = argparse.ArgumentParser(
         prog="rollerrig",
@@ -162,6 +201,22 @@ def build_parser():
                    "rig_force.png are replaced")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.set_defaults(func=_simulate)
+    p = sub.add_parser("exact-table", help="build the exact-theory table (method exact_table)",
+                       description="Build the table of method exact_table with the library's "
+                       "exact theory (rollerrig/exact_table.py) and write it as C source; "
+                       "the shipped one is csrc/contact/rr_exact_table_data.c (reinstall to "
+                       "use a new one).  About 20 CPU minutes at the defaults.")
+    p.add_argument("out", help="the C file to write")
+    p.add_argument("--shape", type=_shape, default=(17, 11, 19, 21),
+                   help="nodes along log(a/b), alpha, theta, u (default 17,11,19,21)")
+    p.add_argument("--nu", type=float, default=0.28, help="Poisson's ratio (default 0.28)")
+    p.add_argument("--nx", type=_positive_int, default=27, help="elements across of the "
+                   "coarser grid of the Richardson pair (default 27: 27 and 54)")
+    p.add_argument("--workers", type=_positive_int, help="threads (default: all cores)")
+    p.add_argument("--dask", metavar="ADDRESS", help="build on the Dask scheduler at ADDRESS")
+    p.add_argument("--npz", metavar="FILE", help="also save the table as .npz")
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    p.set_defaults(func=_exact_table)
     return parser
 
 

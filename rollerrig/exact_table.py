@@ -108,12 +108,21 @@ class ExactTable:
             f"    {{{n[0]}, {n[1]}, {n[2]}, {n[3]}}},",
             "    {" + ", ".join(repr(float(v)) for v in self.lo) + "},",
             "    {" + ", ".join(repr(float(v)) for v in self.hi) + "},",
-            f"    {self.nu!r}, {self.r0!r}, values",
+            f"    {self.nu!r}, {self.r0!r}, {self.nx}, values",
             "};",
             "",
         ]
         with open(path, "w") as f:
             f.write("\n".join(lines))
+
+
+def builtin_table():
+    """The table compiled into the C core (the one method "exact_table" uses)."""
+    from . import _core
+    shape, lo, hi, nu, r0, nx, raw = _core.exact_table_builtin()
+    values = np.frombuffer(raw, dtype=np.float32).reshape(tuple(shape) + (3,)).copy()
+    values.setflags(write=False)
+    return ExactTable(tuple(lo), tuple(hi), values, nu, r0, nx)
 
 
 def _node_case(log_aob, alpha, theta, u, nu, r0):

@@ -194,6 +194,17 @@ def cases(draw, spec, wild_share=4):
 METHODS = tuple(m for m in rr.METHODS if m != "exact")
 FRICTIONAL = tuple(m for m in METHODS if m != "linear")
 FASTSIMS = ("fastsim", "fastsim_blended", "modified_fastsim")
+_TABLE = rr.exact_table.builtin_table()
+
+
+def table_refuses(method, status, a, b, nu):
+    """Where method "exact_table" rightly refuses (RR_ERR_TABLE): its table
+    holds one nu and a/b in [0.1, 10] only.  A mask like status."""
+    aob = np.asarray(a, float) / np.asarray(b, float)
+    with np.errstate(all="ignore"):
+        outside = ((np.abs(np.asarray(nu, float) - _TABLE.nu) > 1e-9)
+                   | ~((aob >= 0.1 * (1 - 1e-12)) & (aob <= 10.0 * (1 + 1e-12))))
+    return (method == "exact_table") & (np.asarray(status) == -14) & outside
 
 
 @st.composite

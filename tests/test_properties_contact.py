@@ -23,7 +23,7 @@ from _properties import (BAD_TYPES, FASTSIMS, FRICTIONAL, METHODS, _units,
                          assert_batch_consistent, assert_finite, creep_options,
                          assert_names_argument, assert_same, assert_truthful, batches, cases,
                          examples, log_uniform, or_zero, signed, subset, uniform, watchdog,
-                         wild)
+                         wild, table_refuses)
 
 assert watchdog  # the autouse hang detector, imported to take effect here
 
@@ -192,7 +192,9 @@ def test_poisson_ratio_up_to_one_half_accepted(nu, aob):
     assert rr.hertz(1.0, aob, 1e4, nu=nu).status >= 0
     for method in METHODS:
         f = rr.creep_forces(1e-3, 2e-4, 0.1, a=5e-3, b=5e-3 / aob, N=1e4, mu=0.3, nu=nu,
-                            **own(method, nx=8, ny=8))
+                            errors="ignore", **own(method, nx=8, ny=8))
+        if table_refuses(method, f.status, 5e-3, 5e-3 / aob, nu):
+            continue        # the table holds one nu: another is refused, not approximated
         assert f.status >= 0 and np.isfinite(f.fx)
 
 
@@ -244,8 +246,9 @@ def test_creep_forces_batch_good_elements_unaffected(args, opts, friction):
          friction=rr.FallingFriction(A=2.2250738585e-313, B=7.0))
 def test_creep_forces_plausible_inputs_succeed(args, opts, friction):
     f = creep(args, opts, friction, errors="ignore")
-    assert np.all(f.status >= 0), f.status
-    assert_finite(forces(f))
+    ok = ~table_refuses(opts["method"], f.status, args["a"], args["b"], args["nu"])
+    assert np.all((f.status >= 0) | ~ok), f.status
+    assert_finite({k: np.broadcast_to(v, ok.shape)[ok] for k, v in forces(f).items()})
 
 
 def _bound(args):

@@ -14,13 +14,14 @@ import warnings
 
 import numpy as np
 import pytest
-from hypothesis import example, given, strategies as st
+from hypothesis import assume, example, given, strategies as st
 
 import rollerrig as rr
 from _options import own
 from rollerrig import RollerRigError, RollerRigWarning
 from rollerrig.rig import RECORD_FIELDS
 from _properties import (BAD_TYPES, FRICTIONAL, METHODS, _units, assert_batch_consistent,
+                         table_refuses,
                          assert_finite, assert_names_argument, assert_same, batches, cases,
                          creep_options, examples, log_uniform, run_isolated, signed, subset,
                          uniform, watchdog, wild)
@@ -146,7 +147,10 @@ def test_rig_contact_free_rolling_has_no_creepage(table, y, spin, side, method):
     to 5e-6 of creepage near S1002's flange root), so it cannot serve."""
     t = TABLES[table]
     first = rr.rig_contact(t, y=y, spin=spin, roller_spin=spin, N_left=1e3, N_right=1e3,
-                           **own(method, nx=10, ny=10))
+                           errors="ignore", **own(method, nx=10, ny=10))
+    # the exact-theory table holds a/b in [0.1, 10]: a flange contact beyond is refused
+    assume(not any(table_refuses(method, w.status, w.a, w.b, 0.28)
+                   for w in (first.left, first.right)))
     p, c, roll = getattr(first, side).p, first.pose.c, float(first.pose.roll)
     # x-velocities at p: wheel spin (axle x (p - c))_x, roller roller_spin (p_z + R0)
     r_eff = math.sin(roll) * (p[1] - c[1]) - math.cos(roll) * (p[2] - c[2])

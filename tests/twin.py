@@ -703,3 +703,73 @@ def fastsim(cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0, nx=30, ny
     out = {name: [[element[k] for element in row] for row in rows]
            for k, name in enumerate(names)}
     return forces + (out,)
+
+
+# --------------------------------------------------------------------------
+# the exact-theory table (csrc/contact/rr_exact_table.c)
+# --------------------------------------------------------------------------
+
+def _table_weights(n, lo, hi, q):
+    """Catmull-Rom weights of nodes j0 .. j0 + 3 on an axis of n nodes, the
+    node past an end replaced by the quadratic through the nearest three."""
+    pos = (q - lo) / (hi - lo) * (n - 1)
+    pos = min(max(pos, 0.0), n - 1)
+    i = min(int(pos), n - 2)
+    s = pos - i
+    s2, s3 = s * s, s * s * s
+    g = (0.5 * (-s3 + 2.0 * s2 - s), 0.5 * (3.0 * s3 - 5.0 * s2 + 2.0),
+         0.5 * (-3.0 * s3 + 4.0 * s2 + s), 0.5 * (s3 - s2))
+    if i == 0:
+        return 0, (g[1] + 3.0 * g[0], g[2] - 3.0 * g[0], g[3] + g[0], 0.0)
+    if i == n - 2:
+        return n - 4, (0.0, g[0] + g[3], g[1] - 3.0 * g[3], g[2] + 3.0 * g[3])
+    return i - 1, g
+
+
+def exact_table(table, cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0):
+    """Forces from an exact-theory table (rollerrig.exact_table.ExactTable):
+    the C lookup in loops, (fx, fy, mz) on the wheel."""
+    _check_contact(a, b, N, G, nu, cx, cy, cphi, speed)
+    _check_friction(mu, A, B)
+    _check_falling_speed(A, B, speed)
+    if abs(nu - table.nu) > 1e-9:
+        raise ValueError(f"nu = {nu!r}: the table holds nu = {table.nu!r}")
+    la = math.log(a / b)
+    if not table.lo[0] - 1e-12 * abs(table.lo[0]) <= la <= table.hi[0] + 1e-12 * abs(table.hi[0]):
+        raise ValueError(f"a/b = {a / b!r} outside the table")
+    c11, c22, c23, c33 = kalker(a / b, nu)
+    cc = math.sqrt(a) * math.sqrt(b)
+    x, y, z = cx * c11, cy * c22, cphi * cc * c11
+    m = max(abs(x), abs(y), abs(z))
+    if m == 0.0:
+        return 0.0, 0.0, 0.0
+    muN = friction_mu(speed * math.hypot(cx, cy), mu, A, B) * N
+    sign = sx = 1.0
+    if z < 0.0:
+        sign, x, y, z = -1.0, -x, -y, -z
+    if x < 0.0:
+        sx, x = -1.0, -x
+    sy = 1.0
+    if z == 0.0 and y < 0.0:
+        sy, y = -1.0, -y
+    R = m * math.sqrt((x / m) ** 2 + (y / m) ** 2 + (z / m) ** 2) / (muN / (G * cc * cc))
+    q = (la, math.atan2(math.hypot(x, y), z), math.atan2(y, x), 1.0 / (1.0 + table.r0 / R))
+    n = table.values.shape[:4]
+    base, w = zip(*(_table_weights(n[d], table.lo[d], table.hi[d], q[d]) for d in range(4)))
+    f = [0.0, 0.0, 0.0]
+    for i0 in range(4):
+        for i1 in range(4):
+            for i2 in range(4):
+                for i3 in range(4):
+                    wt = w[0][i0] * w[1][i1] * w[2][i2] * w[3][i3]
+                    v = table.values[base[0] + i0, base[1] + i1, base[2] + i2, base[3] + i3]
+                    for k in range(3):
+                        f[k] += wt * float(v[k])
+    if x == 0.0:
+        f[0] = 0.0
+    if y == 0.0 and z == 0.0:
+        f[1] = f[2] = 0.0
+    h = math.hypot(f[0], f[1])
+    if h > 1.0:
+        f[0], f[1] = f[0] / h, f[1] / h
+    return sign * sx * f[0] * muN, sign * sy * f[1] * muN, sign * sy * f[2] * muN * cc

@@ -38,11 +38,12 @@ enum rr_status {
     RR_ERR_SINGULAR = -11,      /* a linear system (e.g. I - gamma h J) is singular */
     RR_ERR_RANGE = -12,         /* finite inputs so extreme that a result would overflow,
                                    underflow to zero or lose its precision */
-    RR_ERR_NULL = -13           /* a required pointer is NULL, or an object was never
+    RR_ERR_NULL = -13,          /* a required pointer is NULL, or an object was never
                                    initialised */
+    RR_ERR_TABLE = -14          /* outside a table: a/b beyond its range, nu not its own */
 };
 
-#define RR_STATUS_MIN (-13)
+#define RR_STATUS_MIN (-14)
 #define RR_STATUS_MAX 1
 
 /* Message of a status code; a fixed string, never NULL. */

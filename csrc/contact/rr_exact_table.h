@@ -1,0 +1,52 @@
+/*
+ * rr_exact_table.h - the exact theory's forces from a table (method
+ * "exact_table"): the normalised forces of Kalker's exact theory, extrapolated
+ * to the continuum, on four uniform axes, interpolated by Catmull-Rom cubics.
+ *
+ * For quasi-identical bodies and Coulomb friction fx / (mu N), fy / (mu N)
+ * and mz / (mu N c) (c = sqrt(ab)) depend only on nu, a/b and
+ *     x = cx C11 / s,  y = cy C22 / s,  z = cphi c C11 / s,  s = mu N / (G c^2)
+ * (Kalker's coefficients).  Reversing all creepages reverses the forces and
+ * the moment; mirroring the patch in y maps (x, y, z) to (x, -y, -z) and
+ * (fx, fy, mz) to (fx, -fy, -mz); so the table holds z >= 0, x >= 0 only
+ * (and y >= 0 where z = 0), at
+ *     log(a/b),  alpha = atan2(hypot(x, y), z),  theta = atan2(y, x),
+ *     u = R / (R + r0), R = |(x, y, z)|,
+ * u = 0 no force, u = 1 full sliding (rollerrig/exact_table.py builds it).
+ * Falling friction: mu taken at the rigid slip speed speed |(cx, cy)|, as
+ * modified FASTSIM and CONTACT's FASTSIM do; the forces are then the
+ * Coulomb table's at that mu.
+ */
+#ifndef RR_EXACT_TABLE_H
+#define RR_EXACT_TABLE_H
+
+#include "contact/rr_contact.h"
+#include "contact/rr_friction.h"
+
+typedef struct {
+    int n[4];             /* nodes along log(a/b), alpha, theta, u; each >= 4 */
+    double lo[4], hi[4];  /* the axes' ends, lo < hi */
+    double nu;            /* Poisson's ratio it holds */
+    double r0;            /* u = R / (R + r0), r0 > 0 */
+    int nx;               /* built from nx and 2 nx elements across (a record) */
+    const float *v;       /* [n0][n1][n2][n3][3]: fx/(mu N), fy/(mu N), mz/(mu N c) */
+} rr_exact_table;
+
+/* the table shipped with the library (rr_exact_table_data.c): nu = 0.28 */
+extern const rr_exact_table rr_exact_table_builtin;
+
+/* RR_OK, or RR_ERR_PARAM (fewer than 4 nodes on an axis, lo >= hi, an end or
+ * r0 not finite, r0 <= 0, more than 2^28 nodes), RR_ERR_NULL (t or t->v). */
+int rr_exact_table_check(const rr_exact_table *t);
+
+/*
+ * rr_exact_table_forces - the forces of a Hertzian case from table t.
+ *   status: RR_OK; the checks of rr_creep_prepare; RR_ERR_TABLE (a/b
+ *   outside the table's range, nu more than 1e-9 from the table's);
+ *   rr_exact_table_check's.  |(fx, fy)| <= mu N holds (the interpolation's
+ *   overshoot near full sliding is clipped).  Cost: 256 interpolation nodes.
+ */
+int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
+                          const rr_friction *fr, rr_forces *out);
+
+#endif
