@@ -45,6 +45,7 @@ VARIANTS = [               # (label, build_rig keywords)
     ("TR-BDF2, FASTSIM 10x10", dict(nx=10, ny=10)),
     ("TR-BDF2, Polach", dict(method="polach")),
     ("ROS2, Polach", dict(ode="ros2", method="polach")),
+    ("TR-BDF2, exact-theory table", dict(method="exact_table")),
     ("TR-BDF2, FASTSIM 20x20, friction at the local slip speed", dict(slip_speed="local")),
 ]
 

@@ -145,7 +145,7 @@ def _shape(text):
 
 def _exact_table(args):
     from ._errors import RollerRigError
-    from .exact_table import build_exact_table
+    from .exact_table import DEFAULT_SHAPE, build_exact_table
     client = None
     if args.dask:
         try:
@@ -156,8 +156,9 @@ def _exact_table(args):
             return 2
         client = distributed.Client(args.dask)
     try:
-        table = build_exact_table(args.shape, nu=args.nu, nx=args.nx, workers=args.workers,
-                                  client=client, progress=not args.quiet)
+        table = build_exact_table(args.shape or DEFAULT_SHAPE, nu=args.nu, nx=args.nx,
+                                  workers=args.workers, client=client,
+                                  progress=not args.quiet)
     except RollerRigError as e:
         print(f"rollerrig exact-table: {e}", file=sys.stderr)
         return 2
@@ -205,10 +206,11 @@ def build_parser():
                        description="Build the table of method exact_table with the library's "
                        "exact theory (rollerrig/exact_table.py) and write it as C source; "
                        "the shipped one is csrc/contact/rr_exact_table_data.c (reinstall to "
-                       "use a new one).  About 20 CPU minutes at the defaults.")
+                       "use a new one).  About 40 CPU minutes at the defaults.")
     p.add_argument("out", help="the C file to write")
-    p.add_argument("--shape", type=_shape, default=(17, 11, 19, 21),
-                   help="nodes along log(a/b), alpha, theta, u (default 17,11,19,21)")
+    p.add_argument("--shape", type=_shape, default=None,
+                   help="nodes along log(a/b), alpha, theta, u (default the shipped "
+                   "table's, 21,13,23,21)")
     p.add_argument("--nu", type=float, default=0.28, help="Poisson's ratio (default 0.28)")
     p.add_argument("--nx", type=_positive_int, default=27, help="elements across of the "
                    "coarser grid of the Richardson pair (default 27: 27 and 54)")

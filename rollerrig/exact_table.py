@@ -26,7 +26,7 @@ node is the exact theory extrapolated to the continuum (Richardson from nx
 and 2 nx elements across, rr.exact_richardson).  The C core interpolates
 with Catmull-Rom cubics along each axis (csrc/contact/rr_exact_table.c).
 
-Rebuild the shipped table (about 70 000 nodes, some 20 CPU minutes):
+Rebuild the shipped table (about 130 000 nodes, some 40 CPU minutes):
 
     python -m rollerrig exact-table csrc/contact/rr_exact_table_data.c
 
@@ -38,7 +38,7 @@ import math
 import numpy as np
 
 #: the shipped table's nodes along (log a/b, alpha, theta, u) and its r0
-DEFAULT_SHAPE = (17, 11, 19, 21)
+DEFAULT_SHAPE = (21, 13, 23, 21)
 R0 = 1.0
 AOB_RANGE = (0.1, 10.0)
 #: the case every node is solved on (the normalised forces do not depend on it)
@@ -211,5 +211,21 @@ def build_exact_table(shape=DEFAULT_SHAPE, *, nu=0.28, nx=27, r0=R0, backend="th
     res = sweep(node_values, grid, backend=backend, workers=workers, client=client,
                 progress=progress, output="dict", chunk=64, nu=float(nu), nx=int(nx),
                 r0=float(r0))
-    values = np.stack([res["data"][k] for k in ("fx", "fy", "mz")], -1).astype(np.float32)
-    return ExactTable(lo, hi, values, float(nu), float(r0), int(nx))
+    values = np.stack([res["data"][k] for k in ("fx", "fy", "mz")], -1)
+    return ExactTable(lo, hi, symmetry_zeros(values).astype(np.float32), float(nu), float(r0),
+                      int(nx))
+
+
+def symmetry_zeros(values):
+    """The forces that the symmetries make vanish, set to zero at the nodes
+    (the solver leaves its round-off there, some 1e-7): fx where x = 0
+    (pure spin, alpha = 0, and theta = +-pi/2: reversed and mirrored, such a
+    point maps onto itself with fx reversed); fy and mz where y = z = 0
+    (alpha = pi/2, theta = 0: mirrored onto itself).  Needs odd theta nodes
+    for the middle one."""
+    v = np.array(values, dtype=float)
+    v[:, 0, :, :, 0] = 0.0
+    v[:, :, 0, :, 0] = v[:, :, -1, :, 0] = 0.0
+    if v.shape[2] % 2:
+        v[:, -1, v.shape[2] // 2, :, 1:] = 0.0
+    return v
