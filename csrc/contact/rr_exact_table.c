@@ -70,33 +70,32 @@ static int weights(const rr_exact_table *t, int d, double q, double *w)
     return i - 1;
 }
 
-/* sum over the 4^4 nodes of the weight products times the three values */
+/* sum over the 4^4 nodes of the weight products times the three values:
+ * along u (the last axis) the four nodes' 12 values are contiguous, so the
+ * inner loop runs over those 12 lanes with the u weights spread over them
+ * (it vectorises), the lanes summed per component at the end */
 static void interpolate(const rr_exact_table *t, const double q[4], double f[3])
 {
-    double w[4][4];
-    int j[4], a, b, c, e;
-    const long s3 = 3, s2 = s3 * t->n[3], s1 = s2 * t->n[2], s0 = s1 * t->n[1];
+    double w[4][4], wu[12], acc[12] = {0.0};
+    int j[4], a, b, c, k;
+    const long s2 = 3L * t->n[3], s1 = s2 * t->n[2], s0 = s1 * t->n[1];
     for (a = 0; a < 4; a++)
         j[a] = weights(t, a, q[a], w[a]);
-    f[0] = f[1] = f[2] = 0.0;
+    for (k = 0; k < 12; k++)
+        wu[k] = w[3][k / 3];
     for (a = 0; a < 4; a++)
         for (b = 0; b < 4; b++) {
             const double wab = w[0][a] * w[1][b];
+            const float *vab = t->v + (j[0] + a) * s0 + (j[1] + b) * s1 + 3L * j[3];
             for (c = 0; c < 4; c++) {
                 const double wabc = wab * w[2][c];
-                const float *v = t->v + (j[0] + a) * s0 + (j[1] + b) * s1 + (j[2] + c) * s2
-                                 + j[3] * s3;
-                double g0 = 0.0, g1 = 0.0, g2 = 0.0;
-                for (e = 0; e < 4; e++) {
-                    g0 += w[3][e] * v[3 * e];
-                    g1 += w[3][e] * v[3 * e + 1];
-                    g2 += w[3][e] * v[3 * e + 2];
-                }
-                f[0] += wabc * g0;
-                f[1] += wabc * g1;
-                f[2] += wabc * g2;
+                const float *v = vab + (j[2] + c) * s2;
+                for (k = 0; k < 12; k++)
+                    acc[k] += wabc * (wu[k] * v[k]);
             }
         }
+    for (k = 0; k < 3; k++)
+        f[k] = (acc[k] + acc[k + 3]) + (acc[k + 6] + acc[k + 9]);
 }
 
 int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
