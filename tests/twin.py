@@ -739,7 +739,11 @@ def exact_table(table, cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0
         raise ValueError(f"a/b = {a / b!r} outside the table")
     c11, c22, c23, c33 = kalker(a / b, nu)
     cc = math.sqrt(a) * math.sqrt(b)
-    x, y, z = cx * c11, cy * c22, cphi * cc * c11
+    for e in range(5):
+        x, y = math.ldexp(cx, -600 * e) * c11, math.ldexp(cy, -600 * e) * c22
+        z = math.ldexp(cphi, -600 * e) * cc * c11
+        if all(math.isfinite(v) for v in (x, y, z)):
+            break
     m = max(abs(x), abs(y), abs(z))
     if m == 0.0:
         return 0.0, 0.0, 0.0
@@ -752,7 +756,8 @@ def exact_table(table, cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0
     sy = 1.0
     if z == 0.0 and y < 0.0:
         sy, y = -1.0, -y
-    R = m * math.sqrt((x / m) ** 2 + (y / m) ** 2 + (z / m) ** 2) / (muN / (G * cc * cc))
+    R = m * math.sqrt((x / m) ** 2 + (y / m) ** 2 + (z / m) ** 2) / (muN / G / cc / cc)
+    R = math.ldexp(R, 600 * e)
     q = (la, math.atan2(math.hypot(x, y), z), math.atan2(y, x), 1.0 / (1.0 + table.r0 / R))
     n = table.values.shape[:4]
     base, w = zip(*(_table_weights(n[d], table.lo[d], table.hi[d], q[d]) for d in range(4)))

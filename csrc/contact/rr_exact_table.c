@@ -103,6 +103,8 @@ int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
 {
     rr_kalker_coeffs k;
     double q[4], f[3], cc, mu, muN, x, y, z, m, R, sign = 1.0, sx = 1.0, sy = 1.0, aob;
+    double sat;
+    int e;
     int st;
 
     if (!out)
@@ -124,16 +126,29 @@ int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
     }
     out->fx = out->fy = out->mz = 0.0;
     cc = sqrt(c->a) * sqrt(c->b);
-    /* the creepages times s (the saturation scale cancels in the direction) */
-    x = c->cx * k.c11;
-    y = c->cy * k.c22;
-    z = c->cphi * cc * k.c11;
+    /* the creepages times s (the saturation scale cancels in the direction),
+     * scaled down by 2^-600 at a time until no product overflows (a, b and
+     * the creepages may be anything finite) */
+    for (e = 0; e <= 4; e++) {
+        x = ldexp(c->cx, -600 * e) * k.c11;
+        y = ldexp(c->cy, -600 * e) * k.c22;
+        z = ldexp(c->cphi, -600 * e) * cc * k.c11;
+        if (isfinite(x) && isfinite(y) && isfinite(z))
+            break;
+    }
     m = fmax(fabs(x), fmax(fabs(y), fabs(z)));
     if (m == 0.0)
         return RR_OK;
-    /* falling friction at the rigid slip speed */
+    /* falling friction at the rigid slip speed; the saturation scale s of
+     * the normalised creepages must be a normal double (else the inputs are
+     * too extreme for the table's coordinates) */
     mu = rr_friction_mu(fr, c->speed * hypot(c->cx, c->cy));
     muN = mu * c->N;
+    sat = muN / c->G / cc / cc;
+    if (!isnormal(muN) || !isnormal(sat)) {
+        rr_forces_nan(out);
+        return RR_ERR_RANGE;
+    }
     if (z < 0.0) {                  /* all creepages reversed */
         sign = -1.0;
         x = -x;
@@ -149,8 +164,8 @@ int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
         y = -y;
     }
     /* R = |(x, y, z)| / s, scaled by m so that no square overflows */
-    R = m * sqrt((x / m) * (x / m) + (y / m) * (y / m) + (z / m) * (z / m))
-        / (muN / (c->G * cc * cc));
+    R = m * sqrt((x / m) * (x / m) + (y / m) * (y / m) + (z / m) * (z / m)) / sat;
+    R = ldexp(R, 600 * e);
     q[1] = atan2(hypot(x, y), z);
     q[2] = atan2(y, x);
     q[3] = 1.0 / (1.0 + t->r0 / R);  /* R = inf: full sliding, u = 1 */

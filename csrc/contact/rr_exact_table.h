@@ -43,6 +43,8 @@ int rr_exact_table_check(const rr_exact_table *t);
  * rr_exact_table_forces - the forces of a Hertzian case from table t.
  *   status: RR_OK; the checks of rr_creep_prepare; RR_ERR_TABLE (a/b
  *   outside the table's range, nu more than 1e-9 from the table's);
+ *   RR_ERR_RANGE (mu N or the saturation scale mu N / (G a b) not a normal
+ *   double: inputs some 300 orders of magnitude from a contact's);
  *   rr_exact_table_check's.  |(fx, fy)| <= mu N holds (the interpolation's
  *   overshoot near full sliding is clipped).  Cost: 256 interpolation nodes.
  */

@@ -2,8 +2,7 @@
 #include "util/rr_common.h"
 
 static const char *const rr_messages[] = {
-    /* -14 */ "outside the exact-theory table: a/b beyond [0.1, 10], or nu not the table's "
-              "(rollerrig.exact_table)",
+    /* -14 */ "outside the exact-theory table (a/b beyond [0.1, 10], or nu not the table's)",
     /* -13 */ "a required pointer is NULL, or the object was never initialised",
     /* -12 */ "inputs too extreme: a result would overflow, underflow or lose its precision",
     /* -11 */ "matrix singular to working precision (e.g. I - gamma h J)",
