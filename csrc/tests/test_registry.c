@@ -21,10 +21,10 @@ static rr_contact_case base_case(void)
 static void test_lookup(void)
 {
     static const char *const names[] = {"linear", "fastsim", "fastsim_blended",
-                                        "modified_fastsim", "polach", "exact"};
+                                        "modified_fastsim", "polach", "exact", "fastrip"};
     int i;
-    CHECK(rr_method_count() == RR_METHOD_COUNT && RR_METHOD_COUNT == 6, "six methods");
-    for (i = 0; i < 6; i++) {
+    CHECK(rr_method_count() == RR_METHOD_COUNT && RR_METHOD_COUNT == 7, "seven methods");
+    for (i = 0; i < 7; i++) {
         const rr_method_desc *d = rr_method_get(i);
         CHECK(d && strcmp(d->name, names[i]) == 0, "method names in rr_methods.def's order");
         CHECK(rr_method_find(names[i]) == i, "rr_method_find");
@@ -32,7 +32,7 @@ static void test_lookup(void)
               && d->workspace_len && d->doc && d->doc[0], "descriptor complete");
         CHECK(d && (d->field == NULL) == (d->field_shape == NULL), "field and its shape paired");
     }
-    CHECK(rr_method_get(-1) == NULL && rr_method_get(6) == NULL, "rr_method_get out of range");
+    CHECK(rr_method_get(-1) == NULL && rr_method_get(7) == NULL, "rr_method_get out of range");
     CHECK_STATUS(rr_method_find("kalker"), RR_ERR_METHOD, "unknown name");
     CHECK_STATUS(rr_method_find(NULL), RR_ERR_NULL, "NULL name");
     CHECK(rr_method_get(RR_METHOD_LINEAR)->saturates == 0, "linear does not saturate");
@@ -60,8 +60,8 @@ static void test_defaults_and_costs(void)
         CHECK((rr_creep_workspace_len(&o) > 0) == (m == RR_METHOD_EXACT),
               "workspace only for the exact solver");
     }
-    CHECK_STATUS(rr_creep_opts_default(&o, 6), RR_ERR_METHOD, "default of method 6");
-    CHECK(o.method == 6 && isnan(o.v[0]), "method 6: set, values NaN");
+    CHECK_STATUS(rr_creep_opts_default(&o, 7), RR_ERR_METHOD, "default of method 7");
+    CHECK(o.method == 7 && isnan(o.v[0]), "method 7: set, values NaN");
     CHECK_STATUS(rr_creep_opts_default(NULL, 0), RR_ERR_NULL, "default NULL");
     rr_creep_opts_default(&o, RR_METHOD_FASTSIM);
     CHECK(rr_creep_cost(&o) == 900.0, "FASTSIM 30 x 30 costs 900");
