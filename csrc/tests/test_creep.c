@@ -1438,7 +1438,7 @@ static void test_fastrip(void)
     c.cy = -c.cy;
     c.cphi = -c.cphi;
     rr_fastrip(&c, &fr, &o, &g);
-    CHECK_CLOSE(g.fx, f.fx, 1e-9 * c.N, 0.0, "all signs: fx odd");
+    CHECK_CLOSE(g.fx, -f.fx, 1e-9 * c.N, 0.0, "all signs: fx odd");
     CHECK_CLOSE(g.fy, -f.fy, 1e-9 * c.N, 0.0, "all signs: fy odd");
     CHECK_CLOSE(g.mz, -f.mz, 1e-9 * c.N * c.a, 0.0, "all signs: mz odd");
 
