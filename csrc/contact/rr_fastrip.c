@@ -19,10 +19,11 @@ typedef struct {
     int nx, contact;
 } strip_setup;
 
-/* Element i's centre x and q = 1 - x^2/a^2 - y^2/b^2 (inside if q > 0). */
+/* Element i's centre x and q = 1 - x^2/a^2 - y^2/b^2 (inside if q > 0).
+ * Centres (and rows) as (i + 1/2 - n/2) h: mirror images exactly. */
 static double elem_q(const strip_setup *s, int i, double w2, double *x)
 {
-    const double xc = -s->a + (i + 0.5) * s->h, t = xc / s->a;
+    const double xc = (i + 0.5 - 0.5 * s->nx) * s->h, t = xc / s->a;
     *x = xc;
     return w2 - t * t;
 }
@@ -233,7 +234,7 @@ int rr_fastrip(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
 
     /* the grid's elements in contact (centre inside) and their extent */
     for (j = 0; j < ny; j++) {
-        const double y = -c->b + (j + 0.5) * s.dy, t = y / c->b, w2 = 1.0 - t * t;
+        const double y = (j + 0.5 - 0.5 * ny) * s.dy, t = y / c->b, w2 = 1.0 - t * t;
         for (i = 0; i < s.nx; i++) {
             double x, q = elem_q(&s, i, w2, &x);
             if (q > 0.0) {
@@ -268,7 +269,7 @@ int rr_fastrip(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
          * pi a (1 - y^2/b^2) / 2; the pressure sums to N over the rows */
         double R = 0.0;
         for (j = 0; j < ny; j++) {
-            const double t = (-c->b + (j + 0.5) * s.dy) / c->b;
+            const double t = (j + 0.5 - 0.5 * ny) * s.dy / c->b;
             R += 0.5 * RR_PI * c->a * (1.0 - t * t);
         }
         s.aa = c->a;
@@ -314,7 +315,7 @@ int rr_fastrip(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
     }
 
     for (j = jmin; j <= jmax; j++) {
-        const double y = -c->b + (j + 0.5) * s.dy, t = y / c->b;
+        const double y = (j + 0.5 - 0.5 * ny) * s.dy, t = y / c->b;
         strip_row(&s, y, 1.0 - t * t, sums);
     }
     out->fx = sums[0] * s.h * s.dy;
