@@ -70,18 +70,16 @@ static double slip_length(const strip_setup *s, double y)
     return d < 0.0 || isnan(d) ? HUGE_VAL : d;
 }
 
-/* The integral of sqrt(R^2 - (u - u0)^2) over [lo, hi] (0 outside |u - u0| <= R). */
-static double disc_integral(double R, double u0, double lo, double hi)
+/* The antiderivative of sqrt(R^2 - (u - u0)^2), held constant outside
+ * |u - u0| <= R (0 for R <= 0): differences of it at a cell's edges are the
+ * cell's integral of a semi-ellipse, and neighbours share an edge. */
+static double disc_prim(double R, double u0, double u)
 {
-    double p, q;
+    double p;
     if (!(R > 0.0))
         return 0.0;
-    p = fmin(R, fmax(-R, lo - u0));
-    q = fmin(R, fmax(-R, hi - u0));
-    if (!(q > p))
-        return 0.0;
-    return 0.5 * (q * sqrt(fmax(0.0, R * R - q * q)) - p * sqrt(fmax(0.0, R * R - p * p))
-                  + R * R * (asin(q / R) - asin(p / R)));
+    p = fmin(R, fmax(-R, u - u0));
+    return 0.5 * (p * sqrt(fmax(0.0, R * R - p * p)) + R * R * asin(p / R));
 }
 
 /* One row y (w2 = 1 - y^2/b^2): its Fx, Fy, Mz sums (times dA later) added
@@ -138,66 +136,76 @@ static void strip_row(const strip_setup *s, double y, double w2, double sums[3])
     } else {
         xb = HUGE_VAL;
     }
-    /* FASTSIM from the leading edge x = +a: material enters there */
-    for (i = hi; i >= lo; i--) {
-        const double q = elem_q(s, i, w2, &x);
-        const double x1 = x - 0.5 * s->h, x2 = x + 0.5 * s->h;
-        double px, py, pn, m, cnt = 0.0;
-        if (s->contact) {
-            pn = q > 0.0 ? s->pn0 * sqrt(q) : 0.0;
-        } else {
-            cnt = disc_integral(aj, 0.0, x1, x2);    /* [m^2]: over a, times pn0, the load */
-            pn = s->pn0 * cnt / (s->a * s->h);
+    /* FASTSIM from the leading edge x = +a: material enters there.  Cell i
+     * spans [e_i, e_(i+1)], e_i = (i - nx/2) h; fc, fa: the antiderivatives
+     * of the chord's semi-ellipse and of the adhesion zone's at e_(i+1). */
+    {
+        const int adh = accept && d < HUGE_VAL && !s->contact;
+        double fc = 0.0, fa = 0.0;
+        if (!s->contact) {
+            const double e = (hi + 1 - 0.5 * s->nx) * s->h;
+            fc = disc_prim(aj, 0.0, e);
+            fa = adh ? disc_prim(aj - d, d, e) : 0.0;
         }
-        if (!(pn > 0.0)) {
-            ux = uy = 0.0;
-            continue;
-        }
-        ux -= s->wx0 + s->wxy * y;
-        uy -= s->wy0 + s->wyx * x;
-        px = ux * s->keff / s->L1;
-        py = uy * s->keff / s->L2;
-        m = hypot(px, py);
-        if (m > s->mu * pn) {
-            px *= s->mu * pn / m;
-            py *= s->mu * pn / m;
-            ux = s->L1 * px / s->keff;
-            uy = s->L2 * py / s->keff;
-            m = s->mu * pn;
-        }
-        if (accept && s->contact) {
-            if (x > xb) {
-                /* strip theory's adhesion zone */
-                const double sc = sqrt(fmax(0.0, aj * aj - x * x)) / s->aa;
-                const double sa = sqrt(fmax(0.0, (aj - d) * (aj - d) - (x - d) * (x - d))) / s->aa;
-                px = s->mu * s->pmax * kap * (sc - sa);
-                py = s->mu * s->pmax * (lam * sc - lamp * sa);
-            } else if (m > 0.0) {
-                /* its slip zone: at the bound, along FASTSIM's traction */
+        for (i = hi; i >= lo; i--) {
+            const double q = elem_q(s, i, w2, &x);
+            double px, py, pn, m, cnt = 0.0, sc = 0.0, sa = 0.0;
+            if (s->contact) {
+                pn = q > 0.0 ? s->pn0 * sqrt(q) : 0.0;
+            } else {
+                const double e = (i - 0.5 * s->nx) * s->h, fc_lo = disc_prim(aj, 0.0, e);
+                cnt = fc - fc_lo;            /* [m^2]: over a h, times pn0, the pressure */
+                if (adh) {
+                    const double fa_lo = disc_prim(aj - d, d, e);
+                    sa = fa - fa_lo;
+                    sc = xb <= e ? cnt : (xb < e + s->h ? fc - disc_prim(aj, 0.0, xb) : 0.0);
+                    fa = fa_lo;
+                }
+                fc = fc_lo;
+                pn = s->pn0 * cnt / (s->a * s->h);
+            }
+            if (!(pn > 0.0)) {
+                ux = uy = 0.0;
+                continue;
+            }
+            ux -= s->wx0 + s->wxy * y;
+            uy -= s->wy0 + s->wyx * x;
+            px = ux * s->keff / s->L1;
+            py = uy * s->keff / s->L2;
+            m = sqrt(px * px + py * py);
+            if (m > s->mu * pn) {
                 px *= s->mu * pn / m;
                 py *= s->mu * pn / m;
+                ux = s->L1 * px / s->keff;
+                uy = s->L2 * py / s->keff;
+                m = s->mu * pn;
             }
-        } else if (accept) {
-            /* the cell's averages: adhesion over (xb, x2], slip over [x1, xb] */
-            const double ad = fmax(x1, xb), scale = s->mu * s->pmax / (s->aa * s->h);
-            double sc = 0.0, sa = 0.0, sl = cnt;
-            if (ad < x2) {
-                sc = disc_integral(aj, 0.0, ad, x2);
-                sa = disc_integral(aj - d, d, ad, x2);
-                sl = cnt - sc;
+            if (accept && s->contact) {
+                if (x > xb) {
+                    /* strip theory's adhesion zone */
+                    const double c1 = sqrt(fmax(0.0, aj * aj - x * x)) / s->aa;
+                    const double a1 = sqrt(fmax(0.0, (aj - d) * (aj - d) - (x - d) * (x - d)))
+                                      / s->aa;
+                    px = s->mu * s->pmax * kap * (c1 - a1);
+                    py = s->mu * s->pmax * (lam * c1 - lamp * a1);
+                } else if (m > 0.0) {
+                    /* its slip zone: at the bound, along FASTSIM's traction */
+                    px *= s->mu * pn / m;
+                    py *= s->mu * pn / m;
+                }
+            } else if (accept) {
+                /* the cell's averages: adhesion over (xb, e_(i+1)], slip over the rest */
+                const double scale = s->mu * s->pmax / (s->aa * s->h);
+                const double sl = fmax(0.0, cnt - sc);
+                const double f = sl > 0.0 && m > 0.0 ? s->mu * s->pn0 * sl / (s->a * s->h * m)
+                                                     : 0.0;
+                px = scale * kap * (sc - sa) + f * px;
+                py = scale * (lam * sc - lamp * sa) + f * py;
             }
-            sl = fmax(0.0, sl);
-            px = scale * kap * (sc - sa);
-            py = scale * (lam * sc - lamp * sa);
-            if (sl > 0.0 && m > 0.0) {
-                const double f = s->mu * s->pn0 * sl / (s->a * s->h * m);
-                px += f * (ux * s->keff / s->L1);
-                py += f * (uy * s->keff / s->L2);
-            }
+            sums[0] += px;
+            sums[1] += py;
+            sums[2] += x * py - y * px;
         }
-        sums[0] += px;
-        sums[1] += py;
-        sums[2] += x * py - y * px;
     }
 }
 
