@@ -84,6 +84,7 @@ FASTSIM_ROWS = [
     ("FASTSIM 30x30", "fastsim", 30, 30, "rect"),
     ("FASTSIM blended 30x30", "fastsim_blended", 30, 30, "rect"),
     ("FASTSIM 30x30 strips", "fastsim", 30, 30, "strips"),
+    ("FaStrip 30x30", "fastrip", 30, 30, "rect"),
 ]
 
 
@@ -215,7 +216,7 @@ def one_thread(rng, sz, kernel, kernel_ext):
            ("Exact-theory table", "exact_table", 30, 30, "rect")] \
         + FASTSIM_ROWS
     for name, method, nx, ny, grid in specs:
-        fast = method.startswith("fastsim")
+        fast = method.startswith("fastsim") or method == "fastrip"    # grid methods
         if fast:
             n = max(1000, int(sz["fastsim_work"] // (nx * ny)))
             cases = creep_cases(rng, n)

@@ -13,6 +13,7 @@
  *   rr_linear.h    Kalker's linear theory
  *   rr_polach.h    Polach's method
  *   rr_fastsim.h   FASTSIM, blended and modified, with its traction field
+ *   rr_fastrip.h   FaStrip (CONTACT's modified FaStrip)
  *   rr_creep.h     the methods' registry (rr_methods.def) and dispatcher
  *   rr_creepage.h  kinematic creepages of a wheel on a roller
  *   rr_spline.h    natural cubic splines for profiles
@@ -41,6 +42,7 @@
 #include "contact/rr_linear.h"
 #include "contact/rr_polach.h"
 #include "contact/rr_fastsim.h"
+#include "contact/rr_fastrip.h"
 #include "util/rr_fft.h"
 #include "contact/rr_influence.h"
 #include "contact/rr_exact.h"

@@ -559,7 +559,10 @@ def _creep_options(func, P, method, nx, ny, creep):
     if not (isinstance(method, str) and method in METHODS):
         raise RollerRigError(f"{func}: method must be one of {', '.join(map(repr, METHODS))}, "
                              f"got {method!r:.60}")
-    loop_method(func, method)
+    if loop_method(func, method).coulomb_only and C["friction_law"] != "coulomb":
+        raise RollerRigError(f"{func}: method {method!r} is built for Coulomb friction; the "
+                             f"parameters' contact.friction_law is {C['friction_law']!r} "
+                             f"(set it to 'coulomb')")
     unknown = set(creep) - set(CREEP_OPTIONS)
     if unknown:
         raise RollerRigError(f"{func}: unknown option(s) {sorted(unknown)}; the creep "

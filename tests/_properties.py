@@ -223,6 +223,12 @@ def creep_options(draw, methods=METHODS, max_grid=24):
         # subnormal): RR_ERR_RANGE, not a plausible value
         opts.update(k0=draw(st.floats(1e-3, 1.0)),
                     alpha_inf=draw(st.floats(0.0, 1.0)), beta=draw(st.floats(0.0, 10.0)))
+    if method == "fastrip":
+        opts.update(nx=draw(st.integers(1, max_grid)), ny=draw(st.integers(1, max_grid)),
+                    flex=draw(st.sampled_from(("kalker", "blended"))),
+                    geometry=draw(st.sampled_from(("ellipse", "contact"))),
+                    k0=draw(st.floats(1e-3, 1.0)), alpha_inf=draw(st.floats(0.0, 1.0)),
+                    beta=draw(st.floats(0.0, 10.0)))
     if method == "polach":
         kA = draw(st.floats(0.0, 1.0, exclude_min=True))
         opts.update(kA=kA, kS=draw(st.floats(0.0, kA, exclude_min=True)))

@@ -32,8 +32,9 @@ def _same(x, y):
 @pytest.mark.parametrize("method", sorted(rr.METHODS))
 @pytest.mark.parametrize("friction", [None, rr.FallingFriction(0.4, 0.6)])
 def test_scalar_equals_array_bitwise(method, friction):
-    if method == "exact" and friction is not None:
-        pytest.skip("the exact solver is for Coulomb friction (refused: test_exact.py)")
+    if rr.METHODS[method].coulomb_only and friction is not None:
+        pytest.skip(f"{method} is for Coulomb friction (the refusal: test_exact.py, "
+                    "test_fastrip.py)")
     opts = own(method, nx=12, ny=9, slip_speed="rigid", kA=0.8, kS=0.5)
     del opts["method"]
     for case in _cases(40):

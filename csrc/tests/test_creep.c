@@ -1,7 +1,7 @@
 /*
  * test_creep.c - creep-force methods: Kalker's linear theory (rr_linear),
  * Polach's method (rr_polach), FASTSIM and its blended and modified variants
- * (rr_fastsim), the dispatcher (rr_creep_forces) and the option checks.
+ * (rr_fastsim), FaStrip (rr_fastrip), the dispatcher (rr_creep_forces) and the option checks.
  *
  * Conventions (rr_contact.h): forces on the wheel, fx = -G a b C11 cx for
  * small creepage; rigid slip (cx - cphi y, cy + cphi x).
@@ -17,6 +17,7 @@
 #include "contact/rr_linear.h"
 #include "contact/rr_polach.h"
 #include "contact/rr_fastsim.h"
+#include "contact/rr_fastrip.h"
 #include "rr_test.h"
 
 /* ---- helpers ------------------------------------------------------------- */
@@ -1395,6 +1396,80 @@ static void test_extremes(void)
     CHECK(isnan(rr_friction_mu(NULL, 1.0)), "mu of a NULL law: NaN");
 }
 
+/* ---- FaStrip ------------------------------------------------------------- */
+
+static void test_fastrip(void)
+{
+    rr_contact_case c = base_case();
+    rr_friction fr = coulomb(0.3), ff = falling(0.3, 0.4, 0.5);
+    rr_kalker_coeffs k;
+    rr_creep_opts o;
+    rr_forces f, g;
+    const double ab = c.a * c.b, cc = sqrt(ab);
+    rr_kalker(c.a / c.b, c.nu, &k);
+    rr_creep_opts_default(&o, RR_METHOD_FASTRIP);
+    o.v[RR_FASTRIP_NX] = o.v[RR_FASTRIP_NY] = 90.0;
+
+    CHECK_STATUS(rr_fastrip(&c, &fr, &o, &f), RR_OK, "fastrip zero creepage");
+    CHECK(f.fx == 0.0 && f.fy == 0.0 && f.mz == 0.0, "zero creepage, zero force");
+
+    /* linear limit: the strip theory's is Kalker's in the continuum; on 90 x
+     * 90 the trailing edge's square-root traction costs about 1 % */
+    c.cx = 1e-7;
+    CHECK_STATUS(rr_fastrip(&c, &fr, &o, &f), RR_OK, "fastrip small cx");
+    CHECK_CLOSE(f.fx, -c.G * ab * k.c11 * c.cx, 0.0, 0.02, "fastrip -> C11");
+    CHECK(fabs(f.fy) <= 1e-12 * fabs(f.fx), "no lateral force from cx");
+    c.cx = 0.0;
+    c.cy = 1e-7;
+    rr_fastrip(&c, &fr, &o, &f);
+    CHECK_CLOSE(f.fy, -c.G * ab * k.c22 * c.cy, 0.0, 0.02, "fastrip -> C22");
+    c.cy = 0.0;
+    c.cphi = 1e-5;
+    rr_fastrip(&c, &fr, &o, &f);
+    CHECK_CLOSE(f.fy, -c.G * ab * cc * k.c23 * c.cphi, 0.0, 0.03, "fastrip -> C23");
+
+    /* full sliding: |F| -> mu N on the pressure that sums to N */
+    c.cphi = 0.0;
+    c.cx = 0.3;
+    c.cy = -0.4;
+    rr_fastrip(&c, &fr, &o, &f);
+    CHECK_CLOSE(hypot(f.fx, f.fy), 0.3 * c.N, 0.0, 1e-3, "fastrip full sliding");
+    CHECK(hypot(f.fx, f.fy) <= 0.3 * c.N * (1.0 + 1e-12), "fastrip within mu N");
+
+    /* symmetry: xi odd in fx; (eta, phi) odd in (fy, mz) */
+    c.cx = 2e-4;
+    c.cy = 3e-4;
+    c.cphi = 0.3;
+    rr_fastrip(&c, &fr, &o, &f);
+    c.cx = -c.cx;
+    rr_fastrip(&c, &fr, &o, &g);
+    CHECK_CLOSE(g.fx, -f.fx, 1e-9 * c.N, 0.0, "fx odd in xi");
+    CHECK_CLOSE(g.fy, f.fy, 1e-9 * c.N, 0.0, "fy even in xi");
+    c.cy = -c.cy;
+    c.cphi = -c.cphi;
+    rr_fastrip(&c, &fr, &o, &g);
+    CHECK_CLOSE(g.fx, -f.fx, 1e-9 * c.N, 0.0, "all signs: fx odd");
+    CHECK_CLOSE(g.fy, -f.fy, 1e-9 * c.N, 0.0, "all signs: fy odd");
+    CHECK_CLOSE(g.mz, -f.mz, 1e-9 * c.N * c.a, 0.0, "all signs: mz odd");
+
+    /* refusals */
+    CHECK_STATUS(rr_fastrip(&c, &ff, &o, &f), RR_ERR_FRICTION, "falling friction refused");
+    CHECK(isnan(f.fx), "NaN on error");
+    CHECK_STATUS(rr_fastrip(NULL, &fr, &o, &f), RR_ERR_NULL, "NULL case");
+    o.v[RR_FASTRIP_NX] = 0.0;
+    CHECK_STATUS(rr_fastrip(&c, &fr, &o, &f), RR_ERR_GRID, "nx = 0");
+    o.v[RR_FASTRIP_NX] = 30.0;
+    o.v[RR_FASTRIP_K0] = 0.0;
+    CHECK_STATUS(rr_fastrip(&c, &fr, &o, &f), RR_ERR_PARAM, "k0 = 0");
+    o.v[RR_FASTRIP_K0] = 1.0;
+    o.v[RR_FASTRIP_GEOMETRY] = 2.0;
+    CHECK_STATUS(rr_fastrip(&c, &fr, &o, &f), RR_ERR_METHOD, "no geometry 2");
+    o.v[RR_FASTRIP_GEOMETRY] = RR_FASTRIP_CONTACT;
+    CHECK_STATUS(rr_creep_forces(&c, &fr, &o, &g), RR_OK, "dispatcher");
+    CHECK_STATUS(rr_fastrip(&c, &fr, &o, &f), RR_OK, "contact geometry");
+    CHECK(f.fx == g.fx && f.fy == g.fy && f.mz == g.mz, "dispatcher gives rr_fastrip's");
+}
+
 int main(void)
 {
     test_linear();
@@ -1411,5 +1486,6 @@ int main(void)
     test_vector_kernel();
     test_dispatch();
     test_extremes();
+    test_fastrip();
     return rr_test_summary();
 }

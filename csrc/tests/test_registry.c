@@ -21,7 +21,8 @@ static rr_contact_case base_case(void)
 static void test_lookup(void)
 {
     static const char *const names[] = {"linear", "fastsim", "fastsim_blended",
-                                        "modified_fastsim", "polach", "exact", "exact_table"};
+                                        "modified_fastsim", "polach", "exact", "fastrip",
+                                        "exact_table"};
     int i;
     CHECK(rr_method_count() == RR_METHOD_COUNT
           && RR_METHOD_COUNT == (int)(sizeof names / sizeof names[0]), "every method named");
