@@ -329,6 +329,15 @@ int rr_fastrip(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
     out->fx = sums[0] * s.h * s.dy;
     out->fy = sums[1] * s.h * s.dy;
     out->mz = sums[2] * s.h * s.dy;
+    if ((int)o->v[RR_FASTRIP_GEOMETRY] == RR_FASTRIP_ELLIPSE) {
+        /* the pressure sums to N: |F| <= mu N but for the rounding of the
+         * sums in full sliding (1e-11), which is taken off */
+        const double f = hypot(out->fx, out->fy), lim = s.mu * c->N;
+        if (f > lim) {
+            out->fx *= lim / f;
+            out->fy *= lim / f;
+        }
+    }
     return rr_forces_checked(st, out);
 }
 
