@@ -18,7 +18,7 @@ FAST = [("linear", {}), ("fastsim", dict(nx=30, ny=30)),
         ("fastsim_blended", dict(nx=30, ny=30)),
         ("fastsim_blended", dict(nx=30, ny=30, blend_rule="spin")),  # the former default
         ("modified_fastsim", dict(nx=30, ny=30)),
-        ("polach", {}), ("exact_table", {})]
+        ("polach", {}), ("fastrip", dict(nx=30, ny=30)), ("exact_table", {})]
 
 
 def main():
