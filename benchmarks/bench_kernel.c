@@ -115,8 +115,10 @@ int main(int argc, char **argv)
             die("unknown METHOD");
         if (rr_method_option(rr_method_get(opts.method), "nx") >= 0
             && (rr_creep_opts_set(&opts, "nx", atof(argv[5])) < 0
-                || rr_creep_opts_set(&opts, "ny", atof(argv[6])) < 0
-                || rr_creep_opts_set(&opts, "grid", atof(argv[7])) < 0))
+                || rr_creep_opts_set(&opts, "ny", atof(argv[6])) < 0))
+            die("invalid creep options");
+        if (rr_method_option(rr_method_get(opts.method), "grid") >= 0
+            && rr_creep_opts_set(&opts, "grid", atof(argv[7])) < 0)
             die("invalid creep options");
         if (rr_creep_opts_check(&opts) < 0)
             die("invalid creep options");

@@ -48,6 +48,16 @@ extern const rr_method_desc rr_method_fastrip;
  *   in the slip zone the traction is mu pn along FASTSIM's (three
  *   flexibilities, spin scaled by L1/L3, L2/L3).  A row whose closed-form
  *   tractions exceed mu pmax keeps FASTSIM's tractions.
+ *   RR_FASTRIP_ELLIPSE (default): a_j the ellipse's chord, every element
+ *   the average over its cell of the closed form and of the pressure (the
+ *   linear limit's square-root traction at the trailing edge, sampled at
+ *   centres, converges at h^(1/2) only), the pressure summing to N, so that
+ *   |F| <= mu N but for rounding.  RR_FASTRIP_CONTACT: CONTACT's values at
+ *   the centres, a_j the extent of the row's elements, the strip theory on
+ *   the elements' equivalent ellipse (Kik-Piotrowski), Hertz's pressure
+ *   1.5 N / (pi a b) unnormalised: CONTACT's M=5 to 2e-7 mu N.
+ *   Not done: CONTACT's "original" FaStrip (M=6, 7: per-row parabolic
+ *   pressure, a one-flexibility rerun when the leading edge slips).
  *   Coulomb friction only (mu0).  status: rr_creep_prepare's, RR_ERR_FRICTION
  *   (a falling law), rr_method_check's, RR_ERR_RANGE (results beyond the
  *   floating-point range), RR_ERR_NULL.
