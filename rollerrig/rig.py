@@ -304,12 +304,13 @@ def _flag(v):
     return None if isinstance(v, bool) else "must be true or false"
 
 
-def _numbers(item, need, most=math.inf):
-    """A check: a non-empty list of numbers (at most `most`), each passing `item`."""
+def _numbers(item, need, most=math.inf, empty=False):
+    """A check: a list of numbers (at most `most`, empty only if `empty`),
+    each passing `item`."""
     def check(v):
-        if not isinstance(v, (list, tuple)) or not v or len(v) > most \
+        if not isinstance(v, (list, tuple)) or (not v and not empty) or len(v) > most \
                 or any(item(x) for x in v):
-            return f"must be a non-empty list of {need}"
+            return f"must be a {'' if empty else 'non-empty '}list of {need}"
         return None
     return check
 
@@ -326,8 +327,9 @@ def _rule(p):
         return _choice(*p.choices)
     entry = _real(p.lo, p.hi, p.lo_open, p.hi_open)
     need = entry(math.nan)[len("must be a finite number"):]
+    # a list whose default is empty may be empty (rr_rig_params.h)
     return _numbers(entry, f"at most {_core.RIG_MAX_LIST} numbers{need}",
-                    _core.RIG_MAX_LIST)
+                    _core.RIG_MAX_LIST, empty=not p.default)
 
 #: the parameter file's keys (contact section) that set a creep-force option:
 #: key -> the option's name in the registry (rollerrig.METHODS), the declared
@@ -1082,7 +1084,7 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     record_every: keep the record of every record_every-th sample only (the
                run still takes every sample): for long runs
     max_record_bytes: cap on the records' memory (default RECORD_BYTES_CAP,
-               1 GiB: 216 bytes per kept sample); a run over it is refused
+               1 GiB: 232 bytes per kept sample); a run over it is refused
                before it starts, with the record_every that would fit
     progress:  print a progress bar on stderr
     **creep:   the creep-force method's options: bound, grid, slip_speed,
