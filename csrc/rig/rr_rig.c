@@ -154,7 +154,9 @@ static rr_friction patched(const rr_rig_params *p, rr_friction law, int side, do
     if (a->patch_length > 0.0 && (side == 0 || side == 1) && (a->patch_rollers & (1 << side))
         && isfinite(s)) {
         const double f = patch_fraction(a, 2.0 * RR_PI * p->contact.R0, s);
-        if (f > 0.0)
+        if (f >= 1.0)
+            law = a->patch;             /* inside: the patch's law, exactly */
+        else if (f > 0.0)
             law = blend(&law, &a->patch, f);
     }
     return law;
