@@ -857,6 +857,7 @@ int rr_rig_sample(rr_rig *rig, double roller_ref, double xi_ref)
     rr_rig_signals sig;
     rr_rig_command cmd;
     rr_encoder_state encs[2];
+    double w[2];
     int st;
 
     if ((st = usable(rig)) != RR_OK)
@@ -867,6 +868,7 @@ int rr_rig_sample(rr_rig *rig, double roller_ref, double xi_ref)
         return RR_ERR_NONFINITE;
     encs[0] = rig->roller_enc;
     encs[1] = rig->wheelset_enc;
+    memcpy(w, rig->enc_w, sizeof w);
     if ((st = rr_rig_read(rig, &sig)) < 0)
         return st;
     rr_rig_command_builtin(&cmd, roller_ref, xi_ref);
@@ -874,6 +876,7 @@ int rr_rig_sample(rr_rig *rig, double roller_ref, double xi_ref)
         /* nothing changes: the encoders as before the reading */
         rig->roller_enc = encs[0];
         rig->wheelset_enc = encs[1];
+        memcpy(rig->enc_w, w, sizeof w);
         rig->phase = 0;
     }
     return st;

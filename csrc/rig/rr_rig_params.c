@@ -536,7 +536,8 @@ int rr_rig_config_default(rr_rig_config *c)
         if (row->type == RR_RIG_LIST) {
             rr_rig_list *l = (rr_rig_list *)(void *)((char *)c + row->offset);
             l->n = row->nlist;
-            memcpy(l->v, row->list, (size_t)row->nlist * sizeof l->v[0]);
+            if (row->nlist > 0)
+                memcpy(l->v, row->list, (size_t)row->nlist * sizeof l->v[0]);
         } else {
             store(c, row, row->value);
         }
@@ -588,7 +589,8 @@ int rr_rig_config_set_list(rr_rig_config *c, const char *name, int n, const doub
             return st;
     l = (rr_rig_list *)(void *)((char *)c + row->offset);
     l->n = n;
-    memcpy(l->v, v, (size_t)n * sizeof v[0]);
+    if (n > 0)
+        memcpy(l->v, v, (size_t)n * sizeof v[0]);
     return RR_OK;
 }
 
