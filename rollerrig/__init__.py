@@ -28,6 +28,8 @@ from .geometry import (ContactSide, ContactTable, RigGeometry, WheelsetContact, 
 from .conicity import equivalent_conicity, rolling_radius_difference
 from .rig import (Rig, RigResult, build_rig, default_parameters, load_parameters, replay,
                   simulate)
+from . import control
+from .control import CreepageController, RigInfo, RigSignals
 from .fit import FitResult, fit_modified_fastsim, fit_polach
 from .sweep import sweep, sweep_rig
 from .exact import ExactSolution, exact_field, exact_richardson, exact_solve
@@ -50,5 +52,5 @@ __all__ = [
     "fit_modified_fastsim", "FitResult", "sweep", "sweep_rig", "reference", "ExactSolution",
     "exact_field", "exact_solve", "exact_richardson", "Patch", "undeformed_distance",
     "PatchShape", "patch_shape", "RigExact", "rig_exact", "exact_table", "ExactTable",
-    "build_exact_table",
+    "build_exact_table", "control", "RigSignals", "RigInfo", "CreepageController",
 ]
