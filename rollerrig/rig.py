@@ -71,7 +71,7 @@ RECORD_UNITS = {name: unit for name, unit, _ in RECORD}
 _RECORD_MEANING = {name: meaning for name, _, meaning in RECORD}
 
 #: the default cap on the memory of a run's records [bytes]: 1 GiB, about
-#: 5 million samples (5.5 hours at the 4 ms sample); simulate refuses a run
+#: 4.6 million samples (5.1 hours at the 4 ms sample); simulate refuses a run
 #: whose records would not fit and says which record_every would
 RECORD_BYTES_CAP = 1 << 30
 _BYTES_PER_SAMPLE = 8 * len(RECORD_FIELDS)
