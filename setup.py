@@ -11,7 +11,9 @@ The package's ``_c/`` folder, made by build_ext:
   lib/pkgconfig/rollerrig.pc      from csrc/rollerrig.pc.in, relocatable
                                   (${pcfiledir})
   include/                        csrc's headers with their layer folders
-  src/                            csrc's sources with their layer folders
+  src/                            csrc's sources and headers with their layer
+                                  folders: the core, compiled with -I src
+                                  (rr_fft_avx2.c includes util/rr_fft.c)
 An in-place build (``pip install -e .``) writes lib/ only, in the checkout,
 and its rollerrig.pc names csrc/ for the headers: rollerrig.capi gives the
 checkout's csrc/ for the headers and the sources then.
@@ -121,7 +123,7 @@ class BuildExt(build_ext):
         pairs = []
         for path in HEADERS:
             pairs.append((path, os.path.join(c_dir, "include", os.path.relpath(path, "csrc"))))
-        for path in CORE_SOURCES:
+        for path in HEADERS + CORE_SOURCES:
             pairs.append((path, os.path.join(c_dir, "src", os.path.relpath(path, "csrc"))))
         return pairs
 

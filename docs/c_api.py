@@ -86,7 +86,7 @@ $ python -c "import rollerrig; print(rollerrig.get_include())"
 | --- | --- | --- |
 | `rollerrig.get_include()` | `--includedir` (`--cflags`: `-I` it) | `rollerrig.h` and the layer folders of headers |
 | `rollerrig.get_library_dir()` | `--libdir` (`--libs`: `-L` it `-lrollerrig -lm`) | `librollerrig.a` |
-| `rollerrig.get_source_dir()` | `--srcdir` | the sources, `*/rr_*.c`, in their layer folders (compile them with `-I` the include folder) |
+| `rollerrig.get_source_dir()` | `--srcdir` | the core's sources (`*/rr_*.c`) and headers in their layer folders: compile them with `-I` it |
 | `rollerrig.get_pkgconfig_dir()` | `--pkgconfigdir` | `rollerrig.pc`, relocatable (`${pcfiledir}`) |
 
 A wheel keeps them in `rollerrig/_c/` (`include/`, `lib/`, `src/`); an

@@ -5,7 +5,7 @@ numpy's headers.
     import rollerrig
     rollerrig.get_include()        # pass to -I: it holds rollerrig.h
     rollerrig.get_library_dir()    # holds librollerrig.a (position-independent)
-    rollerrig.get_source_dir()     # the core's .c files in their layer folders
+    rollerrig.get_source_dir()     # the core: its .c and .h files in their layer folders
     rollerrig.get_pkgconfig_dir()  # holds rollerrig.pc (relocatable: ${pcfiledir})
 
 From a shell, the command ``rollerrig-config`` prints the same, as
@@ -60,9 +60,10 @@ def get_library_dir():
 
 
 def get_source_dir():
-    """The folder holding the core's sources in their layer folders
-    (util/, contact/, geometry/, rig/: every ``*/rr_*.c``), to compile
-    with ``-I get_include()``."""
+    """The folder holding the core's sources and headers in their layer
+    folders (util/, contact/, geometry/, rig/: every ``*/rr_*.c``), to
+    compile with ``-I`` it (a source may include another:
+    rr_fft_avx2.c includes util/rr_fft.c)."""
     return _folder("C sources", [(_C / "src", "rig/rr_rig.c"),
                                  (_CHECKOUT_CSRC, "rig/rr_rig.c")])
 
