@@ -343,13 +343,17 @@ def write_section(path, name, text, legacy="contact"):
         fh.write(new)
 
 
-def bench_args(doc, argv=None):
-    """The command line every benchmark script takes: --quick, --out."""
+def bench_args(doc, argv=None, repeats=None):
+    """The command line every benchmark script takes: --quick, --out (and
+    --repeats, default `repeats`, where a script takes it)."""
     import argparse
     parser = argparse.ArgumentParser(description=doc.split("\n\n")[0])
     parser.add_argument("--quick", action="store_true", help="small sizes: a smoke run")
     parser.add_argument("--out", help="report path (default benchmarks/RESULTS.md, or "
                         "benchmarks/out/RESULTS-quick.md with --quick)")
+    if repeats is not None:
+        parser.add_argument("--repeats", type=int, default=repeats,
+                            help=f"best of this many runs (default {repeats})")
     return parser.parse_args(argv)
 
 

@@ -25,27 +25,17 @@
  */
 #define _GNU_SOURCE       /* sched_setaffinity (Linux); the rest is POSIX */
 #include <math.h>
-#include <sched.h>
-#include <sys/mman.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
-#include <unistd.h>
 
+#include "rt_loop.h"
 #include "rollerrig.h"
 
 #define MAXSTEPS 200000
 
 static double table_data[1L << 16], table_work[RR_RIG_TABLE_WORK_LEN];
 static double step_us[MAXSTEPS];
-
-static double now_us(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return 1e6 * (double)ts.tv_sec + 1e-3 * (double)ts.tv_nsec;
-}
 
 /* Fixed work for the "floor" mode: n dependent multiply-adds through a
  * volatile, which the compiler can neither fold nor drop. */
@@ -56,12 +46,6 @@ static double busy(long n, double x)
     for (i = 0; i < n; i++)
         v = v * 0.999999 + 1e-6;
     return v;
-}
-
-static int cmp(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
 }
 
 int main(int argc, char **argv)
@@ -118,54 +102,31 @@ int main(int argc, char **argv)
         fprintf(stderr, "rig: %s\n", rr_status_message(st));
         return 1;
     }
-    {
-        /* real-time task: no page faults, not preempted by ordinary processes,
-         * not moved between processors */
-        struct sched_param sp;
-        const int locked = mlockall(MCL_CURRENT | MCL_FUTURE) == 0;
-        int pinned = 0;
-#ifdef __linux__
-        cpu_set_t cpus;
-        const long ncpu = sysconf(_SC_NPROCESSORS_ONLN);
-        CPU_ZERO(&cpus);
-        CPU_SET(ncpu > 1 ? (int)ncpu - 1 : 0, &cpus);
-        pinned = sched_setaffinity(0, sizeof cpus, &cpus) == 0;
-#endif
-        sp.sched_priority = sched_get_priority_max(SCHED_FIFO) - 1;
-        printf("memory %slocked, SCHED_FIFO %s, %s\n", locked ? "" : "not ",
-               sched_setscheduler(0, SCHED_FIFO, &sp) == 0 ? "on" : "refused",
-               pinned ? "pinned to the last processor" : "not pinned");
-    }
+    rt_task();
     if (floor_on) {
         /* as long as the rig's median step: calibrate on the step itself */
-        double t0 = now_us(), t_step, t_busy;
+        double t0 = rt_now_us(), t_step, t_busy;
         for (k = 0; k < 200; k++)
             rr_rig_step(&rig, V / R0, targets[0], rec);
-        t_step = (now_us() - t0) / 200.0;
+        t_step = (rt_now_us() - t0) / 200.0;
         rr_rig_init(&p, V / R0, &rig);
-        t0 = now_us();
+        t0 = rt_now_us();
         sink = busy(1000000, sink);
-        t_busy = (now_us() - t0) / 1e6;
+        t_busy = (rt_now_us() - t0) / 1e6;
         nbusy = (long)(t_step / t_busy);
     }
-    clock_gettime(CLOCK_MONOTONIC, &next);
+    rt_start(&next);
     for (n = 0; n < nsteps; n++) {
         const int target = (int)(n * period / (seconds / ntargets));
         double t0;
-        if (sleep_on) {
-            next.tv_nsec += (long)(period * 1e9);
-            while (next.tv_nsec >= 1000000000L) {
-                next.tv_nsec -= 1000000000L;
-                next.tv_sec++;
-            }
-            clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, NULL);
-        }
-        t0 = now_us();
+        if (sleep_on)
+            rt_wait(&next, period);
+        t0 = rt_now_us();
         if (floor_on)
             sink = busy(nbusy, sink);
         else
             st = rr_rig_step(&rig, V / R0, targets[target < ntargets ? target : ntargets - 1], rec);
-        step_us[n] = now_us() - t0;
+        step_us[n] = rt_now_us() - t0;
         if (st < 0) {
             fprintf(stderr, "t = %.3f s: %s\n", rig.t, rr_status_message(st));
             return 1;
@@ -188,11 +149,7 @@ int main(int argc, char **argv)
                    sink);
         printf("slowest step: number %ld (t = %.3f s)\n", kmax, (kmax + 1) * period);
     }
-    qsort(step_us, (size_t)nsteps, sizeof step_us[0], cmp);
-    printf("%ld steps of %.1f ms%s: step time min %.1f us, median %.1f us, p99 %.1f us, "
-           "max %.1f us\n", nsteps, period * 1e3, floor_on ? " (fixed-rate loop, fixed work: the floor)"
-           : sleep_on ? " (fixed-rate loop)" : " (free run)",
-           step_us[0], step_us[nsteps / 2], step_us[(long)(0.99 * (nsteps - 1))],
-           step_us[nsteps - 1]);
+    rt_report(step_us, nsteps, period, floor_on ? " (fixed-rate loop, fixed work: the floor)"
+              : sleep_on ? " (fixed-rate loop)" : " (free run)");
     return 0;
 }

@@ -33,6 +33,8 @@ from .geometry import (ContactSide, ContactTable, RigGeometry, WheelsetContact, 
 from .conicity import equivalent_conicity, rolling_radius_difference
 from .rig import (Rig, RigResult, build_rig, default_parameters, load_parameters, replay,
                   simulate)
+from . import control
+from .control import CreepageController, RigInfo, RigSignals
 from .fit import FitResult, fit_modified_fastsim, fit_polach
 from .sweep import sweep, sweep_rig
 from .exact import ExactSolution, exact_field, exact_richardson, exact_solve
@@ -56,5 +58,6 @@ __all__ = [
     "fit_modified_fastsim", "FitResult", "sweep", "sweep_rig", "reference", "ExactSolution",
     "exact_field", "exact_solve", "exact_richardson", "Patch", "undeformed_distance",
     "PatchShape", "patch_shape", "RigExact", "rig_exact", "exact_table", "ExactTable",
-    "build_exact_table", "get_include", "get_library_dir", "get_source_dir", "get_pkgconfig_dir",
+    "build_exact_table", "control", "RigSignals", "RigInfo", "CreepageController",
+    "get_include", "get_library_dir", "get_source_dir", "get_pkgconfig_dir",
 ]

@@ -1663,6 +1663,36 @@ static PyObject *Rig_sample(RigObject *self, PyObject *args)
     return PyLong_FromLong(st);
 }
 
+/* read() -> (signals, status): rr_rig_read; signals the tuple (t, roller_count,
+ * wheelset_count, roller_angle, wheelset_angle, roller_speed, wheelset_speed,
+ * roller_torque, wheelset_torque, xi_est), NaN on error */
+static PyObject *Rig_read(RigObject *self, PyObject *noargs)
+{
+    rr_rig_signals s;
+    int st;
+    (void)noargs;
+    if (rig_enter(self, "read") < 0)
+        return NULL;
+    st = rr_rig_read(&self->rig, &s);
+    rig_leave(self);
+    return Py_BuildValue("(dddddddddd)i", s.t, s.roller_count, s.wheelset_count,
+                         s.roller_angle, s.wheelset_angle, s.roller_speed, s.wheelset_speed,
+                         s.roller_torque, s.wheelset_torque, s.xi_est, st);
+}
+
+/* write(roller_mode, roller_ref, wheelset_mode, wheelset_ref, mu0) -> status: rr_rig_write */
+static PyObject *Rig_write(RigObject *self, PyObject *args)
+{
+    rr_rig_command c;
+    int st;
+    if (!PyArg_ParseTuple(args, "ididd:write", &c.roller_mode, &c.roller_ref, &c.wheelset_mode,
+                          &c.wheelset_ref, &c.mu0) || rig_enter(self, "write") < 0)
+        return NULL;
+    st = rr_rig_write(&self->rig, &c);
+    rig_leave(self);
+    return PyLong_FromLong(st);
+}
+
 /* A fresh record filled by fn (rr_rig_advance or rr_rig_record), with its status. */
 static PyObject *record_call(RigObject *self, int (*fn)(rr_rig *, double *), const char *name)
 {
@@ -1792,6 +1822,27 @@ static PyObject *Rig_get_y(RigObject *self, void *closure)
     return a;
 }
 
+/* info: what a controller is configured with, from the rig's parameters */
+static PyObject *Rig_get_info(RigObject *self, void *closure)
+{
+    const rr_rig_params *p = &self->p;
+    (void)closure;
+    if (!self->ready) {
+        PyErr_SetString(PyExc_RuntimeError, "Rig.info: the rig is not initialised");
+        return NULL;
+    }
+    return Py_BuildValue("{s:d,s:d,s:d,s:i,s:i,s:i,s:d,s:d,s:d,s:d,s:d,s:d}",
+                         "dt", p->T, "wheel_radius", p->creepctl.r_w,
+                         "roller_radius", p->creepctl.r_r, "sense", p->creepctl.sense,
+                         "roller_counts", p->roller_enc.counts,
+                         "wheelset_counts", p->wheelset_enc.counts,
+                         "roller_torque_limit", p->roller_pi.Tmax,
+                         "wheelset_torque_limit", p->wheelset_pi.Tmax,
+                         "alpha", p->creepctl.alpha, "beta", p->creepctl.beta,
+                         "min_reference_speed", p->creepctl.vmin,
+                         "roller_surface_radius", p->contact.R0);
+}
+
 static PyObject *Rig_get_status(RigObject *self, void *closure)
 {
     int st;
@@ -1808,6 +1859,11 @@ static PyMethodDef Rig_methods[] = {
      "run(roller_ref, xi_ref) -> (records, status): one sample per element"},
     {"sample", (PyCFunction)Rig_sample, METH_VARARGS,
      "sample(roller_ref, xi_ref) -> status: encoders and controllers at this instant"},
+    {"read", (PyCFunction)Rig_read, METH_NOARGS,
+     "read() -> (signals, status): the encoders and drives at this sample (rr_rig_read)"},
+    {"write", (PyCFunction)Rig_write, METH_VARARGS,
+     "write(roller_mode, roller_ref, wheelset_mode, wheelset_ref, mu0) -> status: the "
+     "references held over the sample (rr_rig_write)"},
     {"advance", (PyCFunction)Rig_advance, METH_NOARGS,
      "advance() -> (record, status): the plant over one sample"},
     {"record", (PyCFunction)Rig_record, METH_NOARGS, "record() -> (record, status)"},
@@ -1821,6 +1877,7 @@ static PyGetSetDef Rig_getset[] = {
     {"t", (getter)Rig_get_t, NULL, "time [s]", NULL},
     {"y", (getter)Rig_get_y, NULL, "plant state (a copy)", NULL},
     {"status", (getter)Rig_get_status, NULL, "status of the last sample", NULL},
+    {"info", (getter)Rig_get_info, NULL, "the controllers' settings (a dict)", NULL},
     {NULL, NULL, NULL, NULL, NULL}
 };
 
@@ -2437,6 +2494,10 @@ PyMODINIT_FUNC PyInit__core(void)
         || PyModule_AddIntConstant(m, "RIG_NSTATE", RR_RIG_NSTATE) < 0
         || PyModule_AddIntConstant(m, "REC_COUNT", RR_REC_COUNT) < 0
         || PyModule_AddIntConstant(m, "RIG_MAX_LIST", RR_RIG_MAX_LIST) < 0
+        || PyModule_AddIntConstant(m, "CMD_BUILTIN", RR_CMD_BUILTIN) < 0
+        || PyModule_AddIntConstant(m, "CMD_SPEED", RR_CMD_SPEED) < 0
+        || PyModule_AddIntConstant(m, "CMD_TORQUE", RR_CMD_TORQUE) < 0
+        || PyModule_AddIntConstant(m, "ERR_CONTROLLER", RR_ERR_CONTROLLER) < 0
         || add_rows(m, "RIG_PARAMETERS", rr_rig_param_count(), param_tuple) < 0
         || add_rows(m, "RIG_SECTIONS", rr_rig_section_count(), section_tuple) < 0
         || add_rows(m, "RIG_RETIRED", rr_rig_retired_count(), retired_tuple) < 0

@@ -441,7 +441,9 @@ def rig_force(res, ax=None, *, title=True):
     """The seed paper's Fig. 8: the longitudinal creep force of both wheels
     against time, in the sense the drive works against (braking: -fx, since
     fx on the wheel is < 0 when braking; driving: fx), with the friction
-    limit mu0 N (N both wheels' normal loads).  Returns the axes (2 lines)."""
+    limit mu0 N (N both wheels' normal loads; each wheel's own mu0 where the
+    adhesion changes, which is then drawn against time on a second y axis,
+    ax.mu_axis).  Returns the axes (2 lines)."""
     func = "rig_force"
     _check_result(func, res)
     fig, ax, made = _one_axes(func, ax, (8, 3.6))
@@ -449,10 +451,25 @@ def rig_force(res, ax=None, *, title=True):
     fx = "-fx" if sense > 0 else "fx"
     t = res.time
     mu0 = res.params["scenario"]["mu0"]
-    force, limit = -sense * res.fx, mu0 * res.normal_load
+    force = -sense * res.fx
+    limit = res.mu_left * res.normal_load_left + res.mu_right * res.normal_load_right
+    mus = np.concatenate([res.mu_left, res.mu_right])
+    mus = mus[np.isfinite(mus)]
+    changing = mus.size > 0 and np.ptp(mus) > 0
     ax.plot(t, force, lw=0.8, label=f"{mode} force {fx} on the wheels (both)")
-    ax.plot(t, limit, color="k", ls=":", label=f"friction limit mu0 N (mu0 = {mu0:g}, N "
-            "both normal loads)")
+    ax.plot(t, limit, color="k", ls=":",
+            label="friction limit mu0 N (each wheel's mu0 in time, N its normal load)"
+            if changing else f"friction limit mu0 N (mu0 = {mu0:g}, N both normal loads)")
+    if changing:
+        ax.mu_axis = ax.twinx()
+        ax.mu_axis.plot(t, res.mu_left, color="tab:green", lw=0.8, alpha=0.7,
+                        label="mu0 at the left contact")
+        if np.any(res.mu_right != res.mu_left):
+            ax.mu_axis.plot(t, res.mu_right, color="tab:olive", lw=0.8, alpha=0.7,
+                            label="mu0 at the right contact")
+        ax.mu_axis.set_ylabel("friction coefficient mu0 [-]")
+        ax.mu_axis.set_ylim(0.0, 1.1 * np.max(mus))
+        ax.mu_axis.legend(fontsize=8, loc="upper right")
     ax.set_xlabel("time [s]")
     ax.set_ylabel(f"{mode} force {fx} [N]")
     shown = np.concatenate([force[np.isfinite(force)], limit[np.isfinite(limit)]])

@@ -6,6 +6,9 @@
     res = rr.simulate(duration=4.0, dt=0.004, method="polach",
                       params={"scenario": {"mu0": 0.3}}, targets=[0.02])
     res = rr.simulate(params="my.toml")           # a parameter file: any subset of the defaults
+    res = rr.simulate(controller=my_controller)   # a controller of one's own in the loop
+    res = rr.simulate(params={"adhesion": {"schedule_times_s": [5, 6],
+                                           "schedule_mu0": [0.4, 0.1]}})   # mu in time
     res.summary()                                 # per target: creepage reached, settling, ...
     res.to_xarray(), res.to_dataframe()           # with xarray / pandas (extra "sweep")
 
@@ -41,6 +44,7 @@ from typing import NamedTuple
 import numpy as np
 
 from . import _core
+from . import control as _control
 from ._errors import RollerRigError, RollerRigWarning, status_message
 from ._optional import require
 from ._binding import METHODS, _as_float, check_creep_options, core, loop_method
@@ -304,12 +308,13 @@ def _flag(v):
     return None if isinstance(v, bool) else "must be true or false"
 
 
-def _numbers(item, need, most=math.inf):
-    """A check: a non-empty list of numbers (at most `most`), each passing `item`."""
+def _numbers(item, need, most=math.inf, empty=False):
+    """A check: a list of numbers (at most `most`, empty only if `empty`),
+    each passing `item`."""
     def check(v):
-        if not isinstance(v, (list, tuple)) or not v or len(v) > most \
+        if not isinstance(v, (list, tuple)) or (not v and not empty) or len(v) > most \
                 or any(item(x) for x in v):
-            return f"must be a non-empty list of {need}"
+            return f"must be a {'' if empty else 'non-empty '}list of {need}"
         return None
     return check
 
@@ -326,8 +331,9 @@ def _rule(p):
         return _choice(*p.choices)
     entry = _real(p.lo, p.hi, p.lo_open, p.hi_open)
     need = entry(math.nan)[len("must be a finite number"):]
+    # a list whose default is empty may be empty (rr_rig_params.h)
     return _numbers(entry, f"at most {_core.RIG_MAX_LIST} numbers{need}",
-                    _core.RIG_MAX_LIST)
+                    _core.RIG_MAX_LIST, empty=not p.default)
 
 #: the parameter file's keys (contact section) that set a creep-force option:
 #: key -> the option's name in the registry (rollerrig.METHODS), the declared
@@ -424,6 +430,22 @@ def _check_values(P):
         elif "scenario.duration_s" not in bad and starts[-1] >= S["duration_s"]:
             problems.append(f"scenario.target_start_s must fall inside scenario.duration_s "
                             f"= {S['duration_s']!r} s, got {_short(starts)}")
+    A = P["adhesion"]
+    if not bad & {f"adhesion.{k}" for k in A if k.startswith("schedule_")}:
+        times = A["schedule_times_s"]
+        for key in ("schedule_mu0", "schedule_polach_A", "schedule_polach_B_s_per_m"):
+            if len(A[key]) != len(times) and (key == "schedule_mu0" or A[key]):
+                problems.append(f"adhesion.{key} has {len(A[key])} entries but "
+                                f"adhesion.schedule_times_s has {len(times)}: give one per time"
+                                f"{'' if key == 'schedule_mu0' else ', or none'}")
+        if any(b < a for a, b in zip(times, times[1:])):
+            problems.append(f"adhesion.schedule_times_s must not decrease (two equal times make "
+                            f"a step), got {_short(times)}")
+    if not bad & {"adhesion.patch_length_m", "roller.radius_m"} \
+            and A["patch_length_m"] > 2 * math.pi * P["roller"]["radius_m"]:
+        problems.append(f"adhesion.patch_length_m must be at most the roller's circumference "
+                        f"2 pi roller.radius_m = {2 * math.pi * P['roller']['radius_m']:.6g} m, "
+                        f"got {A['patch_length_m']!r}")
     if not bad & {"contact.polach_kA", "contact.polach_kS"} \
             and C["polach_kS"] > C["polach_kA"]:
         problems.append(f"contact.polach_kS must be at most contact.polach_kA = "
@@ -607,7 +629,16 @@ class Rig:
     sample(roller_ref, xi_ref) -> status: the sampling instant (encoders,
         creepage controller, PI controllers); roller_ref the roller speed
         reference [rad/s], xi_ref the creepage target (NaN: no creepage
-        control, the wheelset held at free rolling)
+        control, the wheelset held at free rolling); the same as
+    read() -> (signals, status): the sampling instant's measurement (the
+        fields of rollerrig.control.RigSignals from t to xi_est), then
+    write(roller_mode, roller_ref, wheelset_mode, wheelset_ref, mu0=nan)
+        -> status: the references held over the sample; modes
+        _core.CMD_BUILTIN (the rig's controllers: roller speed, creepage
+        target), CMD_SPEED [rad/s], CMD_TORQUE [N m]; mu0 the friction
+        coefficient over the sample (NaN: the adhesion section's);
+        csrc/rig/rr_rig.h, rr_rig_read, rr_rig_write
+    info: the controllers' settings (rollerrig.control.RigInfo)
     advance() -> (record, status): the plant over one sample
     run(roller_ref, xi_ref) -> (records, status): one sample per element of
         the two 1-D arrays, records of shape (n, len(RECORD_FIELDS)); stops
@@ -658,6 +689,21 @@ class Rig:
         return self._core.sample(self._scalar("Rig.sample", "roller_ref", roller_ref),
                                  self._scalar("Rig.sample", "xi_ref", xi_ref))
 
+    def read(self):
+        return self._core.read()
+
+    def write(self, roller_mode, roller_ref, wheelset_mode, wheelset_ref, mu0=math.nan):
+        modes = (_core.CMD_BUILTIN, _core.CMD_SPEED, _core.CMD_TORQUE)
+        for name, mode in (("roller_mode", roller_mode), ("wheelset_mode", wheelset_mode)):
+            if mode not in modes or isinstance(mode, bool):
+                raise RollerRigError(f"Rig.write: {name} must be one of {modes} (builtin, "
+                                     f"speed, torque), got {_short(mode)}")
+        return self._core.write(int(roller_mode), self._scalar("Rig.write", "roller_ref",
+                                                               roller_ref),
+                                int(wheelset_mode), self._scalar("Rig.write", "wheelset_ref",
+                                                                 wheelset_ref),
+                                self._scalar("Rig.write", "mu0", mu0))
+
     def advance(self):
         return self._core.advance()
 
@@ -688,6 +734,10 @@ class Rig:
     @property
     def status(self):
         return self._core.status
+
+    @property
+    def info(self):
+        return _control.rig_info(self._core.info)
 
 
 def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, creep):
@@ -1049,7 +1099,7 @@ def _record_plan(n, dt, record_every, max_record_bytes):
 def simulate(duration=None, dt=None, method=None, params=None, targets=None,
              target_times=None, *, roller_speed=None, start="rolling", nx=None, ny=None,
              substeps=None, ode=None, record_every=1, max_record_bytes=RECORD_BYTES_CAP,
-             progress=False, **creep):
+             progress=False, controller=None, **creep):
     """Run the rig: by default the seed paper's scenario on the default parameters.
 
     duration:  simulated time [s], at least one sample and at most 1e5 s
@@ -1063,7 +1113,10 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     params:    None, a nested dict overriding rig_default.toml, e.g.
                {"scenario": {"mu0": 0.3}, "wheelset": {"mass_kg": 15.0}}, or
                the path of a TOML file of the same layout; every problem is
-               reported at once (check_parameters)
+               reported at once (check_parameters).  Its [adhesion] section
+               changes the friction: a schedule of mu0 (and the falling
+               law's A, B) in time, a contaminated patch on the roller
+               circumference; res.mu_left, res.mu_right record it
     targets:   creepage targets in sequence, magnitudes in [0, 1) in the
                drive's sense (default scenario.targets, the paper's 0.04,
                0.015, 0.02, 0.03); target_times their start times [s],
@@ -1082,9 +1135,22 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     record_every: keep the record of every record_every-th sample only (the
                run still takes every sample): for long runs
     max_record_bytes: cap on the records' memory (default RECORD_BYTES_CAP,
-               1 GiB: 216 bytes per kept sample); a run over it is refused
+               1 GiB: 232 bytes per kept sample); a run over it is refused
                before it starts, with the record_every that would fit
     progress:  print a progress bar on stderr
+    controller: None (the rig's own controllers), or a callable called at
+               each control sample with what a real controller sees
+               (rollerrig.control.RigSignals: time, encoder counts, angles
+               and speeds, drive torques, eq. 16's estimate, the scenario's
+               references) and returning the references held over the
+               sample: a dict with any of roller_speed [rad/s] or
+               roller_torque [N m], wheelset_speed, wheelset_torque or
+               xi_ref (a creepage target for the rig's own controller); a
+               drive left out (or None returned) keeps the rig's own
+               controller.  Its method start(info), if any, is called first
+               (rollerrig.control.RigInfo).  A controller that raises or
+               returns NaN ends the run with a RollerRigError naming the
+               sample, whose .result holds the history so far
     **creep:   the creep-force method's options: bound, grid, slip_speed,
                blend_rule (blended FASTSIM), k0, alpha_inf, beta (modified
                FASTSIM), kA, kS (Polach); see
@@ -1095,6 +1161,9 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     message say why.
     """
     t0 = time.perf_counter()
+    if controller is not None and not callable(controller):
+        raise RollerRigError(f"simulate: controller must be a callable (signals -> dict of "
+                             f"references), got {_short(controller)}")
     P = _parameters("simulate", params)
     S = P["scenario"]
     given_dt = dt is not None
@@ -1113,10 +1182,45 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
                                  start=start, creep=creep)
 
     out = np.full((kept, len(RECORD_FIELDS)), np.nan)
+    t1 = time.perf_counter()
+
+    def result(out, status, message, stepped):
+        wall = {"setup": t1 - t0, "run": time.perf_counter() - t1}
+        return RigResult(out, P, targets, target_times, dt, int(status), message, wall,
+                         record_every=record_every, method=used, samples=stepped)
+    if controller is not None:
+        out, stepped, status, worst, warned = _run_controlled(
+            rig, controller, P, duration, dt, targets, target_times, V, n, record_every, out,
+            progress, result)
+    else:
+        out, stepped, status, worst, warned = _run_builtin(
+            rig, P, duration, dt, targets, target_times, V, n, record_every, out, progress)
+    if progress:
+        sys.stderr.write("\n")
+    status = status if status < 0 else worst
+    if status == 0:
+        message = "ok"
+    elif status > 0:
+        message = (f"ok with warnings: {warned} of {stepped} samples warned "
+                   f"(sample_status {status}: {status_message(status)})")
+    else:
+        message = f"stopped at t = {rig.t:.4f} s: {status_message(status)}"
+    return result(out, status, message, stepped)
+
+
+def _progress(done):
+    sys.stderr.write(f"\rsimulate [{'#' * int(40 * done):<40}] {100 * done:5.1f} %")
+    sys.stderr.flush()
+
+
+def _run_builtin(rig, P, duration, dt, targets, target_times, V, n, record_every, out,
+                 progress):
+    """simulate's samples on the rig's own controllers, in chunks through
+    the C loop.  Returns (records kept, samples stepped, the run's status,
+    the worst sample status, samples warned)."""
     # about 50 steps of the progress bar; without one, as few calls as the bound allows
     chunk = max(1, min(n // 50 if progress else n, _CHUNK_SAMPLES))
     stepped, worst, warned, status = 0, 0, 0, 0
-    t1 = time.perf_counter()
     for first in range(0, n, chunk):
         stop = min(n, first + chunk)
         roller_ref, xi_ref = schedule(P, duration, dt, targets, target_times, V, first, stop)
@@ -1137,25 +1241,80 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
             worst = max(worst, status, int(np.max(rec[:, -1])))
             warned += int(np.count_nonzero(rec[:, -1] > 0))
         if progress:
-            done = stop / n
-            sys.stderr.write(f"\rsimulate [{'#' * int(40 * done):<40}] {100 * done:5.1f} %")
-            sys.stderr.flush()
+            _progress(stop / n)
         if status < 0:
             out = out[:stepped // record_every]
             break
-    wall = {"setup": t1 - t0, "run": time.perf_counter() - t1}
-    if progress:
-        sys.stderr.write("\n")
-    status = status if status < 0 else worst
-    if status == 0:
-        message = "ok"
-    elif status > 0:
-        message = (f"ok with warnings: {warned} of {stepped} samples warned "
-                   f"(sample_status {status}: {status_message(status)})")
-    else:
-        message = f"stopped at t = {rig.t:.4f} s: {status_message(status)}"
-    return RigResult(out, P, targets, target_times, dt, int(status), message, wall,
-                     record_every=record_every, method=used, samples=stepped)
+    return out, stepped, status, worst, warned
+
+
+_XI_REF = RECORD_FIELDS.index("xi_ref")
+
+
+def _run_controlled(rig, controller, P, duration, dt, targets, target_times, V, n,
+                    record_every, out, progress, result):
+    """simulate's samples with a controller of the user's
+    (rollerrig.control): read, call, write, advance, sample by sample; the
+    records' xi_ref is the scenario's target the controller was given.
+    Returns as _run_builtin; a controller that raises, or returns what is
+    not a command or a command the rig refuses (NaN), ends the run with a
+    RollerRigError whose .result holds the history so far."""
+    core = rig._core
+    stepped, worst, warned, status = 0, 0, 0, 0
+
+    def fail(k, t, what, code, cause=None):
+        kept = out[:k // record_every]
+        text = (f"simulate: the controller failed at sample {k} (t = {t:.4f} s): {what}; "
+                f"the history so far is in this error's .result")
+        e = RollerRigError(text)
+        e.result = result(kept, code, text.split(": ", 1)[1], k)
+        raise e from cause
+
+    start = getattr(controller, "start", None)
+    if start is not None:
+        try:
+            start(rig.info)
+        except Exception as exc:
+            fail(0, 0.0, f"its start(info) raised {type(exc).__name__}: {exc}",
+                 _core.ERR_CONTROLLER, exc)
+    chunk = max(1, min(n // 50 if progress else n, _CHUNK_SAMPLES))
+    for first in range(0, n, chunk):
+        stop = min(n, first + chunk)
+        roller_ref, xi_ref = schedule(P, duration, dt, targets, target_times, V, first, stop)
+        for k in range(first, stop):
+            vals, status = core.read()
+            if status < 0:
+                break
+            s = _control.RigSignals(k, *vals, float(roller_ref[k - first]),
+                                    float(xi_ref[k - first]))
+            try:
+                cmd = controller(s)
+            except Exception as exc:
+                fail(k, s.t, f"it raised {type(exc).__name__}: {exc}", _core.ERR_CONTROLLER,
+                     exc)
+            try:
+                modes = _control.command(cmd, s)
+            except ValueError as exc:
+                fail(k, s.t, str(exc), _core.ERR_CONTROLLER)
+            status = core.write(*modes, math.nan)
+            if status < 0:
+                fail(k, s.t, f"the rig refused its command {cmd!r:.80}: "
+                     f"{status_message(status)}", status)
+            rec, status = core.advance()
+            rec[_XI_REF] = s.xi_ref
+            if status < 0:
+                break
+            stepped = k + 1
+            worst = max(worst, status)
+            warned += status > 0
+            if stepped % record_every == 0:
+                out[stepped // record_every - 1] = rec
+        if progress:
+            _progress(stop / n)
+        if status < 0:
+            out = out[:stepped // record_every]
+            break
+    return out, stepped, status, worst, warned
 
 
 def replay(res, *, method=None, nx=None, ny=None, **creep):
@@ -1169,7 +1328,15 @@ def replay(res, *, method=None, nx=None, ny=None, **creep):
     from .contact import FallingFriction
 
     P = res.params
-    C = P["contact"]
+    C, A = P["contact"], P["adhesion"]
+    mu0 = P["scenario"]["mu0"]
+    patch = (A["patch_mu0"], A["patch_polach_A"], A["patch_polach_B_s_per_m"])
+    if (np.any(res.mu_left != mu0) or np.any(res.mu_right != mu0)
+            or A["schedule_polach_A"] or A["schedule_polach_B_s_per_m"]
+            or (A["patch_length_m"] > 0 and patch != (mu0, C["polach_A"], C["polach_B_s_per_m"]))):
+        raise RollerRigError("replay: the run's adhesion changed (its [adhesion] section: "
+                             "mu_left, mu_right vary, or A, B do); replay takes one friction "
+                             "law, scenario.mu0 with the contact section's")
     friction = (FallingFriction(A=C["polach_A"], B=C["polach_B_s_per_m"])
                 if C["friction_law"] == "polach_falling" else None)
     opts = _creep_options("replay", P, method, nx, ny, creep)

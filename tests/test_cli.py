@@ -113,7 +113,7 @@ def test_record_every_and_a_short_run(tmp_path, capsys):
 def test_a_long_run_is_refused_with_the_record_every_that_fits(tmp_path, capsys):
     code, out, err = run_cli(capsys, "--duration", "1e5", "--out", str(tmp_path))
     assert code == 2
-    assert "would take 5.03 GiB, over max_record_bytes = 1 GiB" in err
+    assert "would take 5.4 GiB, over max_record_bytes = 1 GiB" in err
     assert "--record-every 6" in err
 
 

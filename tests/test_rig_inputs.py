@@ -23,14 +23,18 @@ def full():
 
 # ------------------------------------------------------------------ memory
 
-@pytest.mark.parametrize("duration, dt, fit", [(1e5, None, 6), (1e5, 1e-6, 20117),
+#: bytes a kept sample's record takes: 8 per record field (29 fields)
+BYTES = 8 * len(rr.rig.RECORD_FIELDS)
+
+
+@pytest.mark.parametrize("duration, dt, fit", [(1e5, None, 6), (1e5, 1e-6, 21607),
                                                (300.0, 1e-5, 7)])
 def test_a_run_over_the_record_cap_is_refused_before_it_starts(duration, dt, fit):
-    """Today's cap (1 GiB of records, 216 bytes per sample) and the
+    """Today's cap (1 GiB of records, 232 bytes per sample) and the
     record_every that would fit, named before any memory is asked for: the
     refusal is immediate whatever the size (1e11 samples: 20 TB)."""
     n = int(round(duration / (dt or 0.004)))
-    need = n * 216 / 2 ** 30
+    need = n * BYTES / 2 ** 30
     with pytest.raises(rr.RollerRigError) as e:
         rr.simulate(duration=duration, dt=dt)
     text = str(e.value)
@@ -38,7 +42,7 @@ def test_a_run_over_the_record_cap_is_refused_before_it_starts(duration, dt, fit
     assert f"would take {need:.3g} GiB, over max_record_bytes = 1 GiB" in text
     assert f"record_every={fit}" in text and f"--record-every {fit}" in text
     # the advice fits, one less does not
-    assert n // fit * 216 <= RECORD_BYTES_CAP < n // (fit - 1) * 216
+    assert n // fit * BYTES <= RECORD_BYTES_CAP < n // (fit - 1) * BYTES
 
 
 def test_decimated_records_are_the_full_run_every_kth_sample(full):
@@ -46,14 +50,14 @@ def test_decimated_records_are_the_full_run_every_kth_sample(full):
     full run (the stepping is the same), the last one at the duration, in
     runs of several chunks (max_record_bytes sized to the records kept)."""
     for k in (1, 3, 7, 300):
-        res = rr.simulate(duration=1.2, record_every=k, max_record_bytes=300 // k * 216, **KW)
+        res = rr.simulate(duration=1.2, record_every=k, max_record_bytes=300 // k * BYTES, **KW)
         assert res.record_every == k and len(res) == 300 // k
         np.testing.assert_array_equal(res.records, full.records[k - 1::k][:len(res)])
         assert res.samples_run == 300 and res.duration == pytest.approx(1.2)
         assert res.record_dt == pytest.approx(k * 0.004)
     with pytest.raises(rr.RollerRigError, match="the records of 300 samples .* over "
                                                 "max_record_bytes"):
-        rr.simulate(duration=1.2, max_record_bytes=299 * 216, **KW)
+        rr.simulate(duration=1.2, max_record_bytes=299 * BYTES, **KW)
 
 
 def test_summary_of_decimated_records_matches(full):

@@ -1,8 +1,9 @@
 /*
  * fuzz_rig.c - the rig in time: rr_rig_check and rr_rig_init with parameters
- * perturbed from the default rig's, then a sequence of rr_rig_step, run,
- * sample, advance, rhs, jac, set_state and record; and each of these on a
- * zeroed, never-initialised rr_rig.
+ * perturbed from the default rig's (the adhesion's schedule and patch
+ * among them), then a sequence of rr_rig_step, run, sample, advance, rhs,
+ * jac, set_state, record, read and write (commands of every mode); and each
+ * of these on a zeroed, never-initialised rr_rig.
  *
  * Input: a byte for the zeroed-rig case; the parameters (the default set,
  * or up to 8 fields chosen by the input, or all of them, each moved by a
@@ -16,7 +17,9 @@
  * NaN without creepage control, as documented) and carrying its status;
  * each wheel's creep force within mu0 N (frictional methods); after an
  * error the state is that of the sample's start and the rig refuses to
- * step on; a failing rr_rig_sample changes nothing; rr_rig_run's count and
+ * step on; a failing rr_rig_sample or rr_rig_write changes nothing; a
+ * reading out of order is refused (RR_ERR_SEQUENCE); a torque command is
+ * held clipped at its limit; rr_rig_run's count and
  * status as documented; rhs and jac finite on success; set_state refuses
  * non-finite input and leaves the state alone.
  */
@@ -139,6 +142,33 @@ static void perturb_field(fz_in *in, rr_rig_params *p, int which)
             }
             fz_note(" creep option %s = %.17g;", op->name, o->v[i]);
         }
+    } else if (which == NDOUBLE + NINT + 2) {
+        /* the adhesion: a schedule of up to 4 points, a patch */
+        rr_rig_adhesion *a = &p->adhesion;
+        int i;
+        a->n = fz_int(in, 0, 4);
+        for (i = 0; i < a->n && i < 4; i++) {
+            a->t[i] = (i > 0 ? a->t[i - 1] : 0.0) + fz_lin(in, -0.01, 0.05);
+            a->law[i].mu0 = fz_near(in, 0.3, 10.0);
+            a->law[i].A = fz_lin(in, -0.1, 1.1);
+            a->law[i].B = fz_near(in, 0.6, 10.0);
+            taint(a->law[i].mu0);
+            taint(a->law[i].B);
+            fz_note(" schedule[%d] = (%.17g, %.17g, %.17g, %.17g);", i, a->t[i],
+                    a->law[i].mu0, a->law[i].A, a->law[i].B);
+        }
+        a->patch_start = fz_lin(in, -1.0, 2.0);
+        a->patch_length = fz_lin(in, -0.1, 1.1);
+        a->patch_edge = fz_near(in, 0.002, 100.0);
+        a->patch.mu0 = fz_near(in, 0.1, 10.0);
+        a->patch.A = fz_lin(in, -0.1, 1.1);
+        a->patch.B = fz_near(in, 0.2, 10.0);
+        a->patch_rollers = fz_int(in, 0, 4);
+        taint(a->patch.mu0);
+        taint(a->patch.B);
+        fz_note(" patch start %.17g length %.17g edge %.17g law (%.17g, %.17g, %.17g) on %d;",
+                a->patch_start, a->patch_length, a->patch_edge, a->patch.mu0, a->patch.A,
+                a->patch.B, a->patch_rollers);
     } else {
         /* the sample time of all sampled elements at once (they must agree) */
         const double T = fz_near(in, p->T, 10.0);
@@ -159,9 +189,9 @@ static void decode_params(fz_in *in, rr_rig_params *p)
     if (mode == 1 || mode == 2) {
         const int k = fz_range(in, 1, 8);
         for (i = 0; i < k; i++)
-            perturb_field(in, p, fz_choice(in, NDOUBLE + NINT + 3));
+            perturb_field(in, p, fz_choice(in, NDOUBLE + NINT + 4));
     } else if (mode == 3) {
-        for (i = 0; i < NDOUBLE + NINT + 3; i++)
+        for (i = 0; i < NDOUBLE + NINT + 4; i++)
             perturb_field(in, p, i);
     }
     if (table == 0)
@@ -179,10 +209,27 @@ static int nonneg(double v)
     return isfinite(v) && v >= 0.0;
 }
 
+/* rr_rig_adhesion's documentation. */
+static int adhesion_invalid(const rr_rig_params *p)
+{
+    const rr_rig_adhesion *a = &p->adhesion;
+    int i;
+    if (a->n < 0 || a->n > RR_RIG_MAX_SCHEDULE)
+        return 1;
+    for (i = 0; i < a->n; i++)
+        if (!isfinite(a->t[i]) || (i > 0 && !(a->t[i] >= a->t[i - 1]))
+            || rr_friction_check(&a->law[i]) != RR_OK)
+            return 1;
+    return !isfinite(a->patch_start) || !(a->patch_length >= 0.0)
+        || !(a->patch_length <= 2.0 * RR_PI * p->contact.R0) || !positive(a->patch_edge)
+        || a->patch_rollers < 1 || a->patch_rollers > 3
+        || (a->patch_length > 0.0 && rr_friction_check(&a->patch) != RR_OK);
+}
+
 /* rr_rig_check's documentation, with the elements' own checks. */
 static int params_invalid(const rr_rig_params *p)
 {
-    return !positive(p->mass) || !positive(p->Iyy) || !positive(p->Izz)
+    return adhesion_invalid(p) || !positive(p->mass) || !positive(p->Iyy) || !positive(p->Izz)
         || !positive(p->axlebox_y) || !positive(p->roller_inertia) || !nonneg(p->g)
         || !nonneg(p->kx) || !nonneg(p->ky) || !nonneg(p->kz) || !nonneg(p->cx)
         || !nonneg(p->cy) || !nonneg(p->cz) || !nonneg(p->preload) || !positive(p->T)
@@ -211,6 +258,8 @@ static void check_record(const char *fn, int st, int control, const double *rec)
     for (j = 0; j < RR_REC_COUNT; j++) {
         if (j == RR_REC_XI_REF && !control)
             continue;       /* NaN: no target */
+        if (j == RR_REC_W_REF && isnan(rec[j]))
+            continue;       /* NaN: the wheelset's torque commanded */
         if (!isfinite(rec[j]))
             fz_fail("%s: status %d with non-finite record field %d = %g", fn, st, j, rec[j]);
     }
@@ -223,9 +272,9 @@ static void check_wheels(const char *fn, int st, const rr_rig *rig)
         || fz_known("failed_init", init_failed))
         return;
     for (k = 0; k < 2; k++)
-        if (rig->w[k].status >= 0)
+        if (rig->w[k].status >= 0)       /* each wheel's own law: the adhesion's */
             fz_bound(fn, rig->w[k].status, rig->w[k].f.fx, rig->w[k].f.fy,
-                     rig->p->contact.friction.mu0, rig->w[k].N);
+                     rig->w[k].friction.mu0, rig->w[k].N);
 }
 
 static double decode_xi(fz_in *in)
@@ -283,9 +332,40 @@ static void check_refuses(const char *fn, rr_rig *rig, const double *y0, double 
     free(rec);
 }
 
+/* A command of any modes (an unknown one among them), references near the
+ * rig's speeds, a torque up to twice the limits, mu0 NaN or near 0.4. */
+static void decode_command(fz_in *in, const rr_rig *rig, rr_rig_command *c)
+{
+    const int sel = fz_choice(in, 4);
+    c->roller_mode = fz_int(in, -1, 3);
+    c->wheelset_mode = fz_int(in, -1, 3);
+    c->roller_ref = c->roller_mode == RR_CMD_TORQUE
+                  ? fz_lin(in, -2.0 * rig->p->roller_pi.Tmax, 2.0 * rig->p->roller_pi.Tmax)
+                  : decode_ref(in, rig);
+    c->wheelset_ref = c->wheelset_mode == RR_CMD_TORQUE
+                    ? fz_lin(in, -2.0 * rig->p->wheelset_pi.Tmax, 2.0 * rig->p->wheelset_pi.Tmax)
+                    : c->wheelset_mode == RR_CMD_SPEED ? fz_lin(in, 0.0, 80.0) : decode_xi(in);
+    c->mu0 = sel == 0 ? NAN : sel == 1 ? fz_near(in, 0.4, 100.0) : 0.4;
+    taint(c->roller_ref);
+    taint(c->wheelset_ref);
+    taint(c->mu0);
+    fz_note(" command (%d, %.17g, %d, %.17g, mu0 %.17g)", c->roller_mode, c->roller_ref,
+            c->wheelset_mode, c->wheelset_ref, c->mu0);
+}
+
+/* rr_rig_write's documentation: which commands it must refuse */
+static int command_invalid(const rr_rig_command *c)
+{
+    const int rm = c->roller_mode, wm = c->wheelset_mode;
+    return rm < RR_CMD_BUILTIN || rm > RR_CMD_TORQUE || wm < RR_CMD_BUILTIN
+        || wm > RR_CMD_TORQUE || !isfinite(c->roller_ref) || isinf(c->wheelset_ref)
+        || (isnan(c->wheelset_ref) && wm != RR_CMD_BUILTIN) || isinf(c->mu0)
+        || (!isnan(c->mu0) && !(c->mu0 > 0.0 && c->mu0 <= RR_FRICTION_MAX));
+}
+
 static void one_op(fz_in *in, rr_rig *rig)
 {
-    const int op = fz_choice(in, 8);
+    const int op = fz_choice(in, 10);
     double y0[RR_RIG_NSTATE], t0 = rig->t;
     double *rec = fz_alloc(RR_REC_COUNT * sizeof *rec);
     double y[RR_RIG_NSTATE], *J;
@@ -348,19 +428,47 @@ static void one_op(fz_in *in, rr_rig *rig)
         memcpy(before, rig, sizeof *rig);
         st = rr_rig_sample(rig, ref, xi);
         fz_status("rr_rig_sample", st);
-        if (st < 0) {
-            /* known: a PI update failing after the roller's has set the held
-             * torque references (Tref_roller to its new value, Tref_wheelset
-             * to NaN) before the error is returned */
-            rr_rig *after = fz_alloc(sizeof *after);
-            memcpy(after, rig, sizeof *rig);
-            if (fz_known("sample_refs", 1)) {
-                after->Tref_roller = before->Tref_roller;
-                after->Tref_wheelset = before->Tref_wheelset;
-            }
-            fz_same("rr_rig_sample", before, after, sizeof *rig, "the rig (error: nothing changes)");
-            free(after);
-        }
+        if (st < 0)
+            fz_same("rr_rig_sample", before, rig, sizeof *rig, "the rig (error: nothing changes)");
+        free(before);
+        break;
+    }
+    case 8: {
+        /* a reading: refused out of order, NaN signals then */
+        rr_rig_signals sig;
+        const int phase = rig->phase, was_refusing = rig->status < 0;
+        st = rr_rig_read(rig, &sig);
+        fz_note(" read");
+        fz_status("rr_rig_read", st);
+        if (!init_failed && !was_refusing && phase != 0 && st != RR_ERR_SEQUENCE)
+            fz_fail("rr_rig_read: status %d in phase %d (a second reading)", st, phase);
+        if (st < 0 && !isnan(sig.t))
+            fz_fail("rr_rig_read: error %d with signals", st);
+        if (st >= 0 && !fz_known("extreme", tainted))
+            fz_finite_n("rr_rig_read", st, "signals", &sig.t, (int)(sizeof sig / sizeof sig.t));
+        break;
+    }
+    case 9: {
+        /* a command after a reading (or out of order: refused) */
+        rr_rig_command c;
+        rr_rig *before = fz_alloc(sizeof *before);
+        const int phase = rig->phase;
+        decode_command(in, rig, &c);
+        memcpy(before, rig, sizeof *rig);
+        st = rr_rig_write(rig, &c);
+        fz_status("rr_rig_write", st);
+        if (!init_failed && rig->status >= 0 && phase != 1 && st != RR_ERR_SEQUENCE)
+            fz_fail("rr_rig_write: status %d in phase %d (no reading)", st, phase);
+        if (phase == 1 && !init_failed && before->status >= 0 && command_invalid(&c)
+            && st >= 0)
+            fz_fail("rr_rig_write: took an invalid command (status %d)", st);
+        if (st < 0)
+            fz_same("rr_rig_write", before, rig, sizeof *rig, "the rig (error: nothing changes)");
+        else if (c.roller_mode == RR_CMD_TORQUE
+                 && rig->Tref_roller != fmin(rig->p->roller_pi.Tmax,
+                                             fmax(-rig->p->roller_pi.Tmax, c.roller_ref)))
+            fz_fail("rr_rig_write: roller torque %.17g held as %.17g", c.roller_ref,
+                    rig->Tref_roller);
         free(before);
         break;
     }

@@ -81,7 +81,8 @@ static int predict_check(const rr_rig_config *c, const char **bad)
             continue;
         if (r->type == RR_RIG_LIST) {
             const rr_rig_list *l = (const rr_rig_list *)(const void *)at;
-            st = l->n >= 1 && l->n <= RR_RIG_MAX_LIST ? RR_OK : RR_ERR_PARAM;
+            /* a list whose default is empty may be empty */
+            st = l->n >= (r->nlist > 0) && l->n <= RR_RIG_MAX_LIST ? RR_OK : RR_ERR_PARAM;
             for (k = 0; st == RR_OK && k < l->n; k++)
                 st = in_range(r, l->v[k]);
         } else {
@@ -110,7 +111,18 @@ static int predict_check(const rr_rig_config *c, const char **bad)
         *bad = "scenario.duration_s";
         return RR_ERR_PARAM;
     }
-    return RR_OK;
+    /* the adhesion: one mu0 per time, A and B one each or none, times in
+     * order, the patch on the roller */
+    *bad = c->schedule_mu0.n != c->schedule_t.n ? "adhesion.schedule_mu0"
+         : c->schedule_A.n && c->schedule_A.n != c->schedule_t.n ? "adhesion.schedule_polach_A"
+         : c->schedule_B.n && c->schedule_B.n != c->schedule_t.n
+           ? "adhesion.schedule_polach_B_s_per_m" : NULL;
+    for (k = 1; !*bad && k < c->schedule_t.n; k++)
+        if (c->schedule_t.v[k] < c->schedule_t.v[k - 1])
+            *bad = "adhesion.schedule_times_s";
+    if (!*bad && c->patch_length > 2.0 * RR_PI * c->roller_radius)
+        *bad = "adhesion.patch_length_m";
+    return *bad ? RR_ERR_PARAM : RR_OK;
 }
 
 /* a value for row r: in its range, near its default, or an edge */
@@ -208,7 +220,8 @@ static void run_setters(fz_in *in, rr_rig_config *c)
                 want = RR_ERR_NULL;
             else if (vnull && n > 0)
                 want = RR_ERR_NULL;
-            else if (!r || r->creep || r->type != RR_RIG_LIST || n < 1 || n > RR_RIG_MAX_LIST)
+            else if (!r || r->creep || r->type != RR_RIG_LIST || n < (r->nlist > 0)
+                     || n > RR_RIG_MAX_LIST)
                 want = RR_ERR_PARAM;
             else {
                 want = RR_OK;

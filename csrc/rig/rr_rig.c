@@ -16,6 +16,28 @@ static int nonneg(double v)
     return isfinite(v) && v >= 0.0;
 }
 
+/* 0 if the adhesion's schedule and patch are usable on rollers of radius R0. */
+static int adhesion_check(const rr_rig_adhesion *a, double R0)
+{
+    int i, st;
+    if (a->n < 0 || a->n > RR_RIG_MAX_SCHEDULE)
+        return RR_ERR_PARAM;
+    for (i = 0; i < a->n; i++) {
+        if (!isfinite(a->t[i]))
+            return RR_ERR_NONFINITE;
+        if (i > 0 && !(a->t[i] >= a->t[i - 1]))
+            return RR_ERR_PARAM;
+        if ((st = rr_friction_check(&a->law[i])) != RR_OK)
+            return st;
+    }
+    if (!isfinite(a->patch_start) || !isfinite(a->patch_length) || !isfinite(a->patch_edge))
+        return RR_ERR_NONFINITE;
+    if (!(a->patch_length >= 0.0 && a->patch_length <= 2.0 * RR_PI * R0)
+        || !(a->patch_edge > 0.0) || a->patch_rollers < 1 || a->patch_rollers > 3)
+        return RR_ERR_PARAM;
+    return a->patch_length > 0.0 ? rr_friction_check(&a->patch) : RR_OK;
+}
+
 int rr_rig_check(const rr_rig_params *p)
 {
     int st;
@@ -51,7 +73,7 @@ int rr_rig_check(const rr_rig_params *p)
     if (p->roller_pi.T != p->T || p->wheelset_pi.T != p->T || p->roller_enc.T != p->T
         || p->wheelset_enc.T != p->T)
         return RR_ERR_PARAM;
-    return RR_OK;
+    return adhesion_check(&p->adhesion, p->contact.R0);
 }
 
 /* 0 if the rig can step; else the failed rr_rig_init's status, or
@@ -82,6 +104,71 @@ static void cross(const double a[3], const double b[3], double out[3])
     out[0] = a[1] * b[2] - a[2] * b[1];
     out[1] = a[2] * b[0] - a[0] * b[2];
     out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* The law a fraction f of the way from a to b (mu0, A and B each). */
+static rr_friction blend(const rr_friction *a, const rr_friction *b, double f)
+{
+    rr_friction r;
+    r.mu0 = a->mu0 + f * (b->mu0 - a->mu0);
+    r.A = a->A + f * (b->A - a->A);
+    r.B = a->B + f * (b->B - a->B);
+    return r;
+}
+
+/* The schedule's law at time t: p->contact.friction without points. */
+static rr_friction schedule_law(const rr_rig_params *p, double t)
+{
+    const rr_rig_adhesion *a = &p->adhesion;
+    int i = 0;
+    if (a->n <= 0)
+        return p->contact.friction;
+    if (!(t >= a->t[0]))
+        return a->law[0];
+    while (i + 1 < a->n && a->t[i + 1] <= t)
+        i++;
+    if (i + 1 == a->n)
+        return a->law[i];
+    return blend(&a->law[i], &a->law[i + 1], (t - a->t[i]) / (a->t[i + 1] - a->t[i]));
+}
+
+/* The fraction of the patch at material position s [m] (1 inside, 0
+ * outside, linear across each edge), on a circumference of length C. */
+static double patch_fraction(const rr_rig_adhesion *a, double C, double s)
+{
+    double u = fmod(s - a->patch_start, C), d;
+    if (u < 0.0)
+        u += C;
+    /* signed distance to the nearer edge: > 0 inside, < 0 outside */
+    if (u <= a->patch_length)
+        d = fmin(u, a->patch_length - u);
+    else
+        d = -fmin(u - a->patch_length, C - u);
+    return fmin(1.0, fmax(0.0, 0.5 + d / a->patch_edge));
+}
+
+/* law with the patch's share at material position s [m] of roller `side`. */
+static rr_friction patched(const rr_rig_params *p, rr_friction law, int side, double s)
+{
+    const rr_rig_adhesion *a = &p->adhesion;
+    if (a->patch_length > 0.0 && (side == 0 || side == 1) && (a->patch_rollers & (1 << side))
+        && isfinite(s)) {
+        const double f = patch_fraction(a, 2.0 * RR_PI * p->contact.R0, s);
+        if (f >= 1.0)
+            law = a->patch;             /* inside: the patch's law, exactly */
+        else if (f > 0.0)
+            law = blend(&law, &a->patch, f);
+    }
+    return law;
+}
+
+rr_friction rr_rig_friction_at(const rr_rig_params *p, double t, int side, double s)
+{
+    if (!p) {
+        rr_friction none = {NAN, NAN, NAN};
+        return none;
+    }
+    return patched(p, schedule_law(p, t), side, s);
 }
 
 /* Solve [a b; c d] x = r; 0, or RR_ERR_LOAD if singular or a load is not positive. */
@@ -132,6 +219,11 @@ static int contact_eval(rr_rig *rig, const double *y)
     st = rr_rig_kinematics(&p->contact, &s, &rig->pose, rig->w);
     if (st < 0)
         return st;
+    /* the friction at each contact: the held law, and the patch where the
+     * contact's material position s = R0 (theta_r + theta) lies on it */
+    for (k = 0; k < 2; k++)
+        rig->w[k].friction = patched(p, rig->friction, k,
+                                     p->contact.R0 * (y[RR_RIG_THETA_R] + rig->w[k].theta));
 
     /* what the contacts must carry: preload, weight, the springs' and
      * dampers' change, and their roll moment */
@@ -300,7 +392,7 @@ static void simplified_forces(const rr_rig *rig, const rr_rig_creep_lin *l, doub
         }
         return;
     }
-    mu = rr_friction_mu(&rig->p->contact.friction, c * l->V);
+    mu = rr_friction_mu(&l->friction, c * l->V);
     e = u / (3.0 * mu * l->N);
     s2 = e < 1.0 ? (1.0 - e) * (1.0 - e) : 0.0;
     g3 = e < 1.0 ? 1.0 - s2 * (1.0 - e) : 1.0;
@@ -312,7 +404,7 @@ static void simplified_forces(const rr_rig *rig, const rr_rig_creep_lin *l, doub
     if (!D)
         return;
     /* dF/dc_j = s2 uh_j f_jj + N V mu' (c_j/|c|) (g3 - 3 eps s2) */
-    dmu = rr_friction_dmu(&rig->p->contact.friction, c * l->V);
+    dmu = rr_friction_dmu(&l->friction, c * l->V);
     for (j = 0; j < 2; j++)
         dS[j] = s2 * uh[j] * fc[j] + l->N * l->V * dmu * (cc[j] / c) * (g3 - 3.0 * e * s2);
     for (i = 0; i < 2; i++)
@@ -348,6 +440,7 @@ static int linearise(rr_rig *rig, const double *y)
         l->f22 = gab * kc.c22;
         l->N = w->N;
         l->V = w->creep.V;
+        l->friction = w->friction;
         l->cx = w->creep.cx;
         l->cy = w->creep.cy;
         {
@@ -512,17 +605,21 @@ int rr_rig_record(rr_rig *rig, double *rec)
     rec[RR_REC_YAW_RATE] = y[RR_RIG_YAW_RATE];
     rec[RR_REC_SPIN] = y[RR_RIG_SPIN];
     rec[RR_REC_ROLLER_SPIN] = y[RR_RIG_ROLLER_SPIN];
+    rec[RR_REC_MU_LEFT] = l->friction.mu0;
+    rec[RR_REC_MU_RIGHT] = r->friction.mu0;
     rec[RR_REC_STATUS] = status;
     if (status >= 0) {
-        /* every field but the target (NaN without creepage control) is a
+        /* every field but the target (NaN without creepage control) and the
+         * speed reference (NaN with the wheelset's torque commanded) is a
          * number; parameters near the largest double can overflow one */
-        const double keep = rec[RR_REC_XI_REF];
-        rec[RR_REC_XI_REF] = 0.0;
+        const double keep[2] = {rec[RR_REC_XI_REF], rec[RR_REC_W_REF]};
+        rec[RR_REC_XI_REF] = rec[RR_REC_W_REF] = 0.0;
         if (!rr_all_finite(rec, RR_REC_COUNT)) {
             record_nan(rec, RR_ERR_RANGE);
             return RR_ERR_RANGE;
         }
-        rec[RR_REC_XI_REF] = keep;
+        rec[RR_REC_XI_REF] = keep[0];
+        rec[RR_REC_W_REF] = keep[1];
     }
     return status;
 }
@@ -556,6 +653,7 @@ int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig)
     rig->y[RR_RIG_ROLLER_SPIN] = roller_speed;
     rig->xi_ref = NAN;
     rig->creep_control = 0;
+    rig->friction = schedule_law(p, 0.0);
     if ((st = rr_ode_init(&rig->ode, NS, p->method)) != RR_OK
         || (st = rr_pi_reset(&p->roller_pi, &rig->roller_pi, 0.0)) != RR_OK
         || (st = rr_pi_reset(&p->wheelset_pi, &rig->wheelset_pi, 0.0)) != RR_OK
@@ -595,77 +693,193 @@ int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig)
     return rig->status = st < 0 ? st : RR_OK;
 }
 
-int rr_rig_sample(rr_rig *rig, double roller_ref, double xi_ref)
+static void signals_nan(rr_rig_signals *sig)
+{
+    if (sig)
+        sig->t = sig->roller_count = sig->wheelset_count = sig->roller_angle
+            = sig->wheelset_angle = sig->roller_speed = sig->wheelset_speed
+            = sig->roller_torque = sig->wheelset_torque = sig->xi_est = NAN;
+}
+
+int rr_rig_read(rr_rig *rig, rr_rig_signals *sig)
 {
     const rr_rig_params *p;
-    double w_wheel, w_roller, w_ref = NAN;
-    rr_pi_state pis[2];
     rr_encoder_state encs[2];
+    double w[2], xi = NAN;
+    int st = sig ? usable(rig) : RR_ERR_NULL;
+
+    if (st == RR_OK && rig->status < 0)
+        st = rig->status;
+    if (st == RR_OK && rig->phase != 0)
+        st = RR_ERR_SEQUENCE;
+    if (st < 0) {
+        signals_nan(sig);
+        return st;
+    }
+    p = rig->p;
+    encs[0] = rig->roller_enc;
+    encs[1] = rig->wheelset_enc;
+    st = rr_encoder_update(&p->roller_enc, &rig->roller_enc, rig->y[RR_RIG_THETA_R], &w[0]);
+    if (st == RR_OK)
+        st = rr_encoder_update(&p->wheelset_enc, &rig->wheelset_enc, rig->y[RR_RIG_CHI], &w[1]);
+    if (st == RR_OK)
+        st = rr_creepctl_xi(&p->creepctl, w[1], w[0], &xi);
+    if (st < 0) {
+        rig->roller_enc = encs[0];
+        rig->wheelset_enc = encs[1];
+        signals_nan(sig);
+        return st;
+    }
+    rig->enc_w[0] = w[0];
+    rig->enc_w[1] = w[1];
+    rig->phase = 1;
+    sig->t = rig->t;
+    sig->roller_count = rig->roller_enc.count;
+    sig->wheelset_count = rig->wheelset_enc.count;
+    sig->roller_angle = rig->roller_enc.theta_q;
+    sig->wheelset_angle = rig->wheelset_enc.theta_q;
+    sig->roller_speed = w[0];
+    sig->wheelset_speed = w[1];
+    sig->roller_torque = rig->y[RR_RIG_T_ROLLER];
+    sig->wheelset_torque = rig->y[RR_RIG_T_WHEELSET];
+    sig->xi_est = xi;
+    return RR_OK;
+}
+
+void rr_rig_command_builtin(rr_rig_command *cmd, double roller_ref, double xi_ref)
+{
+    if (!cmd)
+        return;
+    cmd->roller_mode = cmd->wheelset_mode = RR_CMD_BUILTIN;
+    cmd->roller_ref = roller_ref;
+    cmd->wheelset_ref = xi_ref;
+    cmd->mu0 = NAN;
+}
+
+/* A drive commanded by torque: the reference clipped to the drive's limit,
+ * and its PI preset there, so that a switch back to speed is bumpless. */
+static int torque_command(const rr_pi_params *pp, rr_pi_state *s, double torque, double *Tref)
+{
+    *Tref = fmin(pp->Tmax, fmax(-pp->Tmax, torque));
+    return rr_pi_reset(pp, s, *Tref);
+}
+
+int rr_rig_write(rr_rig *rig, const rr_rig_command *cmd)
+{
+    const rr_rig_params *p;
+    const double w_roller = rig ? rig->enc_w[0] : NAN, w_wheel = rig ? rig->enc_w[1] : NAN;
+    double w_ref = NAN, Tref[2];
+    rr_pi_state pis[2];
     rr_creepctl_state ccs;
-    int st, cc;
+    rr_friction law;
+    int st = cmd ? usable(rig) : RR_ERR_NULL, cc;
     double xr;
 
-    if ((st = usable(rig)) != RR_OK)
+    if (st == RR_OK && rig->status < 0)
+        st = rig->status;
+    if (st == RR_OK && rig->phase != 1)
+        st = RR_ERR_SEQUENCE;
+    if (st < 0)
         return st;
-    p = rig->p;
-    cc = rig->creep_control;
-    xr = rig->xi_ref;
-    if (rig->status < 0)
-        return rig->status;
-    if (!isfinite(roller_ref) || isinf(xi_ref))
+    if (cmd->roller_mode < RR_CMD_BUILTIN || cmd->roller_mode > RR_CMD_TORQUE
+        || cmd->wheelset_mode < RR_CMD_BUILTIN || cmd->wheelset_mode > RR_CMD_TORQUE)
+        return RR_ERR_PARAM;
+    if (!isfinite(cmd->roller_ref) || isinf(cmd->wheelset_ref)
+        || (isnan(cmd->wheelset_ref) && cmd->wheelset_mode != RR_CMD_BUILTIN) || isinf(cmd->mu0))
         return RR_ERR_NONFINITE;
+    p = rig->p;
+    law = schedule_law(p, rig->t);
+    if (!isnan(cmd->mu0)) {
+        law.mu0 = cmd->mu0;
+        if ((st = rr_friction_check(&law)) != RR_OK)
+            return st;
+    }
     /* keep the controllers' states to restore them on failure */
     pis[0] = rig->roller_pi;
     pis[1] = rig->wheelset_pi;
-    encs[0] = rig->roller_enc;
-    encs[1] = rig->wheelset_enc;
     ccs = rig->creepctl;
+    cc = rig->creep_control;
+    xr = rig->xi_ref;
 
-    st = rr_encoder_update(&p->roller_enc, &rig->roller_enc, rig->y[RR_RIG_THETA_R], &w_roller);
-    if (st == RR_OK)
-        st = rr_encoder_update(&p->wheelset_enc, &rig->wheelset_enc, rig->y[RR_RIG_CHI],
-                               &w_wheel);
-    if (st == RR_OK) {
-        if (isnan(xi_ref)) {
-            /* no creepage control: the wheelset is held at free rolling speed */
-            rig->creep_control = 0;
-            rig->xi_ref = NAN;
-            st = rr_creepctl_xi(&p->creepctl, w_wheel, w_roller, &rig->creepctl.xi_est);
-            rig->creepctl.K = 1.0;
-            rig->creepctl.w_ref = w_ref = w_roller * p->creepctl.r_r / p->creepctl.r_w;
-        } else {
-            if (!rig->creep_control) {
-                /* control starts from the wheelset's present speed ratio
-                 * (eq. 15); eq. 13-14 then move K to each new target at
-                 * their own pace, so that a change of target is a ramp,
-                 * not a step the drive cannot follow */
-                st = rr_creepctl_init(&p->creepctl, &rig->creepctl,
-                                      1.0 + p->creepctl.sense * rig->creepctl.xi_est, w_roller);
-                rig->creep_control = 1;
-            }
-            rig->xi_ref = xi_ref;
-            if (st == RR_OK)
-                st = rr_creepctl_update(&p->creepctl, &rig->creepctl, xi_ref, w_wheel,
-                                        w_roller, &w_ref);
+    if (cmd->wheelset_mode != RR_CMD_BUILTIN || isnan(cmd->wheelset_ref)) {
+        /* no creepage control: the estimate for the record; the wheelset
+         * held at free rolling (BUILTIN), or at the caller's reference */
+        rig->creep_control = 0;
+        rig->xi_ref = NAN;
+        st = rr_creepctl_xi(&p->creepctl, w_wheel, w_roller, &rig->creepctl.xi_est);
+        rig->creepctl.K = 1.0;
+        w_ref = cmd->wheelset_mode == RR_CMD_BUILTIN ? w_roller * p->creepctl.r_r / p->creepctl.r_w
+              : cmd->wheelset_mode == RR_CMD_SPEED ? cmd->wheelset_ref : NAN;
+        rig->creepctl.w_ref = w_ref;
+    } else {
+        if (!rig->creep_control) {
+            /* control starts from the wheelset's present speed ratio (eq.
+             * 15); eq. 13-14 then move K to each new target at their own
+             * pace, so that a change of target is a ramp, not a step the
+             * drive cannot follow */
+            st = rr_creepctl_init(&p->creepctl, &rig->creepctl,
+                                  1.0 + p->creepctl.sense * rig->creepctl.xi_est, w_roller);
+            rig->creep_control = 1;
         }
+        rig->xi_ref = cmd->wheelset_ref;
+        if (st == RR_OK)
+            st = rr_creepctl_update(&p->creepctl, &rig->creepctl, cmd->wheelset_ref, w_wheel,
+                                    w_roller, &w_ref);
     }
     if (st == RR_OK)
-        st = rr_pi_update(&p->roller_pi, &rig->roller_pi, roller_ref, w_roller,
-                          &rig->Tref_roller);
+        st = cmd->roller_mode == RR_CMD_TORQUE
+           ? torque_command(&p->roller_pi, &rig->roller_pi, cmd->roller_ref, &Tref[0])
+           : rr_pi_update(&p->roller_pi, &rig->roller_pi, cmd->roller_ref, w_roller, &Tref[0]);
     if (st == RR_OK)
-        st = rr_pi_update(&p->wheelset_pi, &rig->wheelset_pi, w_ref, w_wheel,
-                          &rig->Tref_wheelset);
+        st = cmd->wheelset_mode == RR_CMD_TORQUE
+           ? torque_command(&p->wheelset_pi, &rig->wheelset_pi, cmd->wheelset_ref, &Tref[1])
+           : rr_pi_update(&p->wheelset_pi, &rig->wheelset_pi, w_ref, w_wheel, &Tref[1]);
     if (st < 0) {
         rig->roller_pi = pis[0];
         rig->wheelset_pi = pis[1];
-        rig->roller_enc = encs[0];
-        rig->wheelset_enc = encs[1];
         rig->creepctl = ccs;
         rig->creep_control = cc;
         rig->xi_ref = xr;
         return st;
     }
+    rig->Tref_roller = Tref[0];
+    rig->Tref_wheelset = Tref[1];
+    if (memcmp(&law, &rig->friction, sizeof law) != 0) {
+        rig->friction = law;
+        rig->cache_ok = rig->lin_ok = 0;    /* the contact forces change with it */
+    }
+    rig->phase = 2;
     return RR_OK;
+}
+
+int rr_rig_sample(rr_rig *rig, double roller_ref, double xi_ref)
+{
+    rr_rig_signals sig;
+    rr_rig_command cmd;
+    rr_encoder_state encs[2];
+    double w[2];
+    int st;
+
+    if ((st = usable(rig)) != RR_OK)
+        return st;
+    if (rig->status < 0)
+        return rig->status;
+    if (!isfinite(roller_ref) || isinf(xi_ref))
+        return RR_ERR_NONFINITE;
+    encs[0] = rig->roller_enc;
+    encs[1] = rig->wheelset_enc;
+    memcpy(w, rig->enc_w, sizeof w);
+    if ((st = rr_rig_read(rig, &sig)) < 0)
+        return st;
+    rr_rig_command_builtin(&cmd, roller_ref, xi_ref);
+    if ((st = rr_rig_write(rig, &cmd)) < 0) {
+        /* nothing changes: the encoders as before the reading */
+        rig->roller_enc = encs[0];
+        rig->wheelset_enc = encs[1];
+        memcpy(rig->enc_w, w, sizeof w);
+        rig->phase = 0;
+    }
+    return st;
 }
 
 int rr_rig_advance(rr_rig *rig, double *rec)
@@ -696,6 +910,7 @@ int rr_rig_advance(rr_rig *rig, double *rec)
     }
     if (st >= 0) {
         rig->t = t0 + p->T;
+        rig->phase = 0;
         st = rr_rig_record(rig, rec);      /* the outputs at the sample's end */
         if (st >= 0) {
             rig->status = st > worst ? st : worst;
@@ -767,5 +982,6 @@ int rr_rig_set_state(rr_rig *rig, double t, const double *y)
     rig->t = t;
     memcpy(rig->y, y, sizeof rig->y);
     rig->cache_ok = rig->lin_ok = 0;
+    rig->phase = 0;                 /* a sample's end: the next may be read */
     return RR_OK;
 }

@@ -66,6 +66,42 @@ enum rr_rig_state_index {
     RR_RIG_NSTATE
 };
 
+/* Most points of an adhesion schedule (rr_rig_adhesion). */
+#define RR_RIG_MAX_SCHEDULE 256
+
+/*
+ * Adhesion that changes, as slide protection and traction control are
+ * tested: the friction law (static coefficient mu0 and the falling law's A,
+ * B: rr_friction.h) as a schedule in time and as a contaminated patch on
+ * the roller circumference.
+ *   Schedule: n points (t[i], mu0[i], A[i], B[i]), t non-decreasing; the law
+ *   is linear between points, the first point's before them and the last's
+ *   after; two points at one time make a step (the later holds from then).
+ *   It is taken at each sample's start and held over the sample, as a
+ *   sampled input is (rr_rig_write's command overrides mu0).  n = 0: the
+ *   contact model's law throughout.
+ *   Patch: length > 0 [m] of the circumference at radius R0, from start [m]
+ *   (measured on the roller from the mark that is at the top at t = 0, in
+ *   the direction the material runs into the contact when the roller spins
+ *   forward), on the rollers of `rollers` (bit 0 left, bit 1 right).
+ *   A contact at material position s on a roller with a patch has
+ *   law = base + f (patch - base) (mu0, A and B each), f the fraction of
+ *   the patch at s: 1 inside, 0 outside, linear over `edge` [m] centred on
+ *   each edge (about the contact's length 2a, which passes over an edge
+ *   gradually).  The position follows the roller angle in the state, so the
+ *   patch passes under the wheel within a sample.
+ */
+typedef struct {
+    int n;                                   /* schedule points, 0 to RR_RIG_MAX_SCHEDULE */
+    double t[RR_RIG_MAX_SCHEDULE];           /* their times [s] */
+    rr_friction law[RR_RIG_MAX_SCHEDULE];    /* mu0, A, B at those times */
+    double patch_start;                      /* [m] */
+    double patch_length;                     /* [m], 0 <= length <= 2 pi R0; 0: no patch */
+    double patch_edge;                       /* [m], > 0 */
+    rr_friction patch;                       /* the law inside the patch */
+    int patch_rollers;                       /* 1 left, 2 right, 3 both */
+} rr_rig_adhesion;
+
 typedef struct {
     /* wheelset */
     double mass;             /* [kg] */
@@ -80,6 +116,7 @@ typedef struct {
     double roller_inertia;   /* both rollers, shaft and motor [kg m^2] */
     /* contact: table, R0, material, friction, creep method, vmin */
     rr_rig_contact_model contact;
+    rr_rig_adhesion adhesion;                 /* changes of contact.friction */
     /* drives and control */
     double T;                /* sample time of controllers and encoders [s] */
     int nsub;                /* plant steps per sample, >= 1 */
@@ -120,7 +157,9 @@ enum rr_rig_record_index {
     RR_REC_VX, RR_REC_VY, RR_REC_YAW_RATE,   /* the wheelset's rates [m/s], [m/s], [rad/s] */
     RR_REC_SPIN, RR_REC_ROLLER_SPIN,         /* angular speeds [rad/s]: with x, y, yaw the
                                                 kinematics a contact model needs (replay) */
-    RR_REC_STATUS,         /* the sample's status */
+    RR_REC_MU_LEFT, RR_REC_MU_RIGHT,         /* static friction coefficient mu0 at each
+                                                contact (the adhesion in effect) [-] */
+    RR_REC_STATUS,         /* the sample's status; always the last field */
     RR_REC_COUNT
 };
 
@@ -129,6 +168,7 @@ enum rr_rig_record_index {
 typedef struct {
     double f11, f22;               /* initial slopes G a b C11, G a b C22 [N] */
     double N, V;                   /* normal load [N], rolling speed [m/s] */
+    rr_friction friction;          /* the contact's friction law there */
     double cx, cy;                 /* creepages there */
     double fx, fy;                 /* the simplified theory's forces there [N] */
     double D[4];                   /* and their tangent d f / d c (row-major 2 x 2) [N] */
@@ -138,6 +178,43 @@ typedef struct {
     double ry[RR_RIG_NSTATE];
     int ok;                        /* 0: the contact has no usable coefficients */
 } rr_rig_creep_lin;
+
+/*
+ * External control: how a drive is commanded at a sample (rr_rig_write).
+ *   RR_CMD_BUILTIN  the rig's own controller: the roller's PI to a speed
+ *                   reference [rad/s]; the wheelset's creepage controller
+ *                   (eq. 13-16) to a creepage target (NaN: none, the
+ *                   wheelset held at free rolling), then its PI
+ *   RR_CMD_SPEED    a speed reference [rad/s] to the drive's PI (eq. 10-11)
+ *   RR_CMD_TORQUE   a torque reference [N m] straight to the drive's lag,
+ *                   clipped to its limit (the PI's Tmax)
+ */
+enum rr_rig_cmd_mode { RR_CMD_BUILTIN = 0, RR_CMD_SPEED = 1, RR_CMD_TORQUE = 2 };
+
+typedef struct {
+    int roller_mode;         /* enum rr_rig_cmd_mode (BUILTIN and SPEED are one for the roller) */
+    double roller_ref;       /* its reference: speed [rad/s] or torque [N m] */
+    int wheelset_mode;       /* enum rr_rig_cmd_mode */
+    double wheelset_ref;     /* creepage target [-] (BUILTIN, controller's sense, NaN: none),
+                                speed [rad/s] or torque [N m] */
+    double mu0;              /* static friction coefficient over the sample; NaN: the
+                                adhesion schedule's (or the contact model's) */
+} rr_rig_command;
+
+/* What a controller sees at a sample (rr_rig_read): the encoders and the drives. */
+typedef struct {
+    double t;                /* time of the sample [s] */
+    double roller_count;     /* encoder counters (whole counts, cumulative) [-] */
+    double wheelset_count;
+    double roller_angle;     /* the quantised angles, count 2 pi / counts [rad] */
+    double wheelset_angle;
+    double roller_speed;     /* the encoders' speed estimates (eq. 12) [rad/s] */
+    double wheelset_speed;
+    double roller_torque;    /* the drives' torques, as a torque sensor reads them [N m] */
+    double wheelset_torque;
+    double xi_est;           /* eq. 16's creepage estimate from the encoders, in the
+                                creepage controller's sense [-] */
+} rr_rig_signals;
 
 typedef struct {
     const rr_rig_params *p;
@@ -152,6 +229,10 @@ typedef struct {
     double xi_ref;                 /* creepage target [-] */
     double Tref_roller, Tref_wheelset;
     int creep_control;             /* 1 while eq. 13-14 steer the wheelset */
+    int phase;                     /* 1 after rr_rig_read, 2 after rr_rig_write; 0 after
+                                      rr_rig_advance */
+    double enc_w[2];               /* the last reading's speeds: roller, wheelset [rad/s] */
+    rr_friction friction;          /* the base law held over the sample (schedule, command) */
     rr_pi_state roller_pi, wheelset_pi;
     rr_encoder_state roller_enc, wheelset_enc;
     rr_creepctl_state creepctl;
@@ -194,6 +275,48 @@ int rr_rig_check(const rr_rig_params *p);
 int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig);
 
 /*
+ * rr_rig_read - the sampling instant's measurement, for a controller of the
+ * caller's (software in the loop): the encoders read the angles; the
+ * drives' torques and eq. 16's estimate.  Once per sample, before
+ * rr_rig_write.
+ *   given:   rig, at a sample's start (after rr_rig_init or rr_rig_advance)
+ *   returns: *sig
+ *   status:  0; RR_ERR_SEQUENCE (already read this sample); the rig's error
+ *            if it cannot step; an encoder's error (nothing changes).  On
+ *            error *sig is NaN.
+ */
+int rr_rig_read(rr_rig *rig, rr_rig_signals *sig);
+
+/*
+ * rr_rig_write - the sampling instant's action: the references the
+ * drives hold until the next sample, from the command (the rig's own
+ * controllers where a mode is RR_CMD_BUILTIN, from the speeds of this
+ * sample's rr_rig_read), and the friction law over the sample.
+ *   given:   rig after rr_rig_read; cmd
+ *   status:  0; RR_ERR_SEQUENCE (no reading this sample, or a second
+ *            command); RR_ERR_PARAM (an unknown mode); RR_ERR_NONFINITE (a
+ *            reference NaN or infinite, but a BUILTIN creepage target NaN);
+ *            RR_ERR_FRICTION (mu0 not positive); a controller's error.  On
+ *            error nothing changes: the last sample's references hold, and
+ *            rr_rig_write may be called again with another command.
+ *   rr_rig_read, rr_rig_write with both modes BUILTIN and rr_rig_advance
+ *   are rr_rig_step, bit for bit.
+ */
+int rr_rig_write(rr_rig *rig, const rr_rig_command *cmd);
+
+/* rr_rig_command_builtin - the command of rr_rig_step: both drives BUILTIN,
+ * mu0 NaN. */
+void rr_rig_command_builtin(rr_rig_command *cmd, double roller_ref, double xi_ref);
+
+/*
+ * rr_rig_friction_at - the friction law the adhesion gives a contact: the
+ * schedule at time t (p->contact.friction if it has no points), then the
+ * patch at material position s [m] on roller `side` (0 left, 1 right); s
+ * NaN: no patch.  No checks: for callers holding checked parameters.
+ */
+rr_friction rr_rig_friction_at(const rr_rig_params *p, double t, int side, double s);
+
+/*
  * rr_rig_step - one sample: rr_rig_sample, then rr_rig_advance.
  *   given:   rig; roller_ref the roller speed reference [rad/s]; xi_ref the
  *            creepage target (controller's sense, the paper's positive
@@ -221,7 +344,8 @@ long rr_rig_run(rr_rig *rig, long n, const double *roller_ref, const double *xi_
 /*
  * rr_rig_sample - the sampling instant alone: encoders read the angles,
  * the creepage controller and the PI controllers set the references the
- * drives hold until the next sample.  On error nothing changes.
+ * drives hold until the next sample (rr_rig_read and rr_rig_write with
+ * rr_rig_command_builtin).  On error nothing changes.
  */
 int rr_rig_sample(rr_rig *rig, double roller_ref, double xi_ref);
 
@@ -237,7 +361,8 @@ int rr_rig_record(rr_rig *rig, double *rec);
 
 /*
  * rr_rig_set_state - put the plant at (t, y) (e.g. the end of a sample
- * integrated by another solver); the controllers keep their states.
+ * integrated by another solver, which ends the sample as rr_rig_advance
+ * does); the controllers keep their states.
  *   status: 0, RR_ERR_NONFINITE
  */
 int rr_rig_set_state(rr_rig *rig, double t, const double *y);

@@ -46,6 +46,7 @@ static void wheel_nan(rr_wheel_contact *w, int status)
     g->A = g->B = g->gap = g->ha = g->hb = g->hd = g->y2 = g->gap2 = NAN;
     g->two_point = 0;
     w->theta = w->N = NAN;
+    w->friction.mu0 = w->friction.A = w->friction.B = NAN;
     vec_nan(w->frame.p, 3);
     vec_nan(w->frame.t1, 3);
     vec_nan(w->frame.t2, 3);
@@ -213,6 +214,7 @@ int rr_rig_kinematics(const rr_rig_contact_model *m, const rr_rig_state *s, rr_r
             wheel_nan(c, st);
             continue;
         }
+        c->friction = m->friction;
         c->status = st;
     }
     return worse(w[0].status, w[1].status);
@@ -273,7 +275,7 @@ int rr_rig_contact_loads(const rr_rig_contact_model *m, const double N[2], const
         cc.cy = c->creep.cy;
         cc.cphi = c->creep.cphi;
         cc.speed = c->creep.V;
-        sk = rr_creep_forces(&cc, &m->friction, &m->creep, &c->f);
+        sk = rr_creep_forces(&cc, &c->friction, &m->creep, &c->f);
         if (sk < 0) {
             wheel_nan(c, sk);
             continue;

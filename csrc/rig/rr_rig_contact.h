@@ -83,6 +83,9 @@ typedef struct {
     double n[3];            /* unit normal t1 x t2, into the wheel */
     rr_creepages creep;     /* cx, cy, cphi, rolling speed V */
     double N;               /* normal load [N] */
+    rr_friction friction;   /* the friction law at this contact: the model's, set by
+                               rr_rig_kinematics; a caller may change it before
+                               rr_rig_contact_loads (the rig's changing adhesion) */
     rr_hertz_result hertz;  /* a, b, p0 */
     rr_forces f;            /* creep forces on the wheel along t1, t2; spin moment about n */
     double force[3];        /* contact force on the wheelset, rig frame [N] */
@@ -134,7 +137,9 @@ int rr_rig_contact(const rr_rig_contact_model *m, const rr_rig_state *s, const d
  * rr_rig_contact_loads - the second half of rr_rig_contact: Hertz, creep
  * forces, force and moment for the wheels of a finished rr_rig_kinematics
  * (wheels with an error status are skipped), so that a caller can choose
- * the loads from the contact frames (the rig model's normal-load balance).
+ * the loads from the contact frames (the rig model's normal-load balance)
+ * and each wheel's friction law (w[k].friction, checked by the creep-force
+ * method: RR_ERR_FRICTION, RR_ERR_NONFINITE or RR_ERR_RANGE for that wheel).
  *   status:  as rr_rig_contact
  */
 int rr_rig_contact_loads(const rr_rig_contact_model *m, const double N[2], const rr_rig_pose *pose,

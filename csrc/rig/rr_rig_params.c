@@ -25,6 +25,9 @@
 #define LIST(name, unit, entries, text, range, member, origin) \
     {name, unit, RR_RIG_LIST, 0.0, text, range, NULL, entries, \
      (int)(sizeof entries / sizeof entries[0]), OFF(member), 0, origin}
+/* a list that may be empty, and is by default */
+#define LIST0(name, unit, range, member, origin) \
+    {name, unit, RR_RIG_LIST, 0.0, "[]", range, NULL, NULL, 0, OFF(member), 0, origin}
 /* creep rows: type, default and its text only (rr_creep_opts checks and applies them) */
 #define CREEP(name, unit, type, v, text, origin) \
     {name, unit, type, v, text, NAN, NAN, 0, 0, NULL, NULL, 0, -1, 1, origin}
@@ -35,6 +38,8 @@ static const char *const wheel_profiles[] = {"conical", NULL};
 static const char *const roller_profiles[] = {"crowned cylinder", NULL};
 static const char *const friction_laws[] = {"polach_falling", "coulomb", NULL};
 static const char *const ode_methods[] = {"trbdf2", "ros2", "lineuler", NULL};
+static const char *const patch_sides[] = {"both", "left", "right", NULL};
+static const int patch_bits[] = {3, 1, 2};
 static const int ode_values[] = {RR_ODE_TRBDF2, RR_ODE_ROS2, RR_ODE_LINEULER};
 
 static const double default_targets[] = {0.04, 0.015, 0.02, 0.03};
@@ -218,6 +223,41 @@ static const rr_rig_param params[] = {
         "choice: 0.1 mm spacing; the cone on its crowned roller is smooth (linear "
         "interpolation within 1e-9 m of the direct search, tests/test_geometry.py style), "
         "and the build costs 0.1 s"),
+    /* [adhesion] */
+    LIST0("adhesion.schedule_times_s", "s", NONNEG, schedule_t,
+          "choice: no schedule, the contact section's law (scenario.mu0, contact.polach_A, "
+          "polach_B) throughout; with points, mu0 (and A, B) linear between them, held "
+          "before the first and after the last, two points at one time a step; taken at "
+          "each sample's start"),
+    LIST0("adhesion.schedule_mu0", "-", RANGE(0.0, RR_FRICTION_MAX, 1, 0), schedule_mu0,
+          "choice: the static friction coefficient at each time of schedule_times_s"),
+    LIST0("adhesion.schedule_polach_A", "-", RANGE(0.0, 1.0, 1, 0), schedule_A,
+          "choice: the falling law's A at each time; empty: contact.polach_A"),
+    LIST0("adhesion.schedule_polach_B_s_per_m", "s/m", RANGE(0.0, RR_FRICTION_MAX, 0, 0),
+          schedule_B, "choice: the falling law's B at each time; empty: contact.polach_B"),
+    REAL("adhesion.patch_length_m", "m", 0.0, NONNEG, patch_length,
+         "choice: no patch; a contaminated sector of this length on the roller "
+         "circumference (at roller.radius_m, at most its circumference) passes under the "
+         "wheel once a revolution"),
+    REAL("adhesion.patch_start_m", "m", 0.0, NONNEG, patch_start,
+         "choice: where the patch begins: the arc R0 (theta_r + theta) from the roller's mark, "
+         "which is at the top at t = 0; a roller turning forward brings the patch under a "
+         "contact at the top after patch_start_m of travel"),
+    REAL("adhesion.patch_mu0", "-", 0.1, RANGE(0.0, RR_FRICTION_MAX, 1, 0), patch_mu0,
+         "choice: the wet or contaminated rail of slide-protection tests (mu from 0.4 to "
+         "0.1 and back, issue 15)"),
+    REAL("adhesion.patch_polach_A", "-", 0.4, RANGE(0.0, 1.0, 1, 0), patch_A,
+         "cited: as contact.polach_A (Polach's A = 0.4 for dry and wet alike in Open Rails' "
+         "fit, shared/reference/polach-parameters.csv)"),
+    REAL("adhesion.patch_polach_B_s_per_m", "s/m", 0.2, RANGE(0.0, RR_FRICTION_MAX, 0, 0),
+         patch_B, "cited: the set commonly quoted as Polach's wet one (B = 0.2 s/m; Open Rails' "
+         "fit at mu0 = 0.3 and its floor, shared/reference/polach-parameters.csv)"),
+    REAL("adhesion.patch_edge_m", "m", 0.002, POS, patch_edge,
+         "choice: mu changes linearly over this length centred on each edge: about the "
+         "contact's length 2a (1.5 mm here), which passes over an edge gradually"),
+    CHOICE("adhesion.patch_rollers", patch_sides, 0, patch_rollers,
+           "choice: the patch on both rollers (\"left\" or \"right\": one, which yaws the "
+           "wheelset)"),
 };
 #define NPARAMS ((int)(sizeof params / sizeof params[0]))
 
@@ -241,6 +281,10 @@ static const rr_rig_section sections[] = {
                             "beta are therefore dimensionless, per sample "
                             "(csrc/rig/rr_control.h)"},
     {"integration", ""},
+    {"adhesion", "friction that changes, as slide protection and traction control are tested "
+                 "(csrc/rig/rr_rig.h, rr_rig_adhesion): a schedule in time and a contaminated "
+                 "patch on the roller circumference; under contact.friction_law = \"coulomb\" "
+                 "A and B are 1 and 0 there too"},
 };
 
 static const rr_rig_retired retired[] = {
@@ -282,7 +326,8 @@ static const rr_rig_field records[] = {
     REC("adhesion", "-", "adhesion coefficient |fx| / (normal_load_left + normal_load_right)"),
     REC("torque_roller", "N m", "roller drive torque (after its lag)"),
     REC("torque_wheelset", "N m", "wheelset drive torque (after its lag)"),
-    REC("w_ref", "rad/s", "wheelset speed reference of the creepage controller (eq. 15)"),
+    REC("w_ref", "rad/s", "wheelset speed reference: the creepage controller's (eq. 15) or a "
+        "controller's of the caller; NaN while the wheelset's torque is commanded"),
     REC("x", "m", "wheelset longitudinal position"),
     REC("y", "m", "wheelset lateral position (+: to the left)"),
     REC("yaw", "rad", "wheelset yaw angle"),
@@ -295,6 +340,9 @@ static const rr_rig_field records[] = {
     REC("yaw_rate", "rad/s", "wheelset yaw rate"),
     REC("spin", "rad/s", "wheelset angular speed about its axle"),
     REC("roller_spin", "rad/s", "roller angular speed"),
+    REC("mu_left", "-", "static friction coefficient at the left contact (the adhesion in "
+        "effect: schedule, command, patch)"),
+    REC("mu_right", "-", "static friction coefficient at the right contact"),
     REC("sample_status", "-", "status of the sample: 0 OK, > 0 warning, < 0 error "
         "(rollerrig.status_message)"),
 };
@@ -488,7 +536,8 @@ int rr_rig_config_default(rr_rig_config *c)
         if (row->type == RR_RIG_LIST) {
             rr_rig_list *l = (rr_rig_list *)(void *)((char *)c + row->offset);
             l->n = row->nlist;
-            memcpy(l->v, row->list, (size_t)row->nlist * sizeof l->v[0]);
+            if (row->nlist > 0)
+                memcpy(l->v, row->list, (size_t)row->nlist * sizeof l->v[0]);
         } else {
             store(c, row, row->value);
         }
@@ -533,14 +582,15 @@ int rr_rig_config_set_list(rr_rig_config *c, const char *name, int n, const doub
         return RR_ERR_NULL;
     if (!row)
         return st;
-    if (row->type != RR_RIG_LIST || n < 1 || n > RR_RIG_MAX_LIST)
+    if (row->type != RR_RIG_LIST || n < (row->nlist > 0) || n > RR_RIG_MAX_LIST)
         return RR_ERR_PARAM;
     for (i = 0; i < n; i++)
         if ((st = in_range(row, v[i])) != RR_OK)
             return st;
     l = (rr_rig_list *)(void *)((char *)c + row->offset);
     l->n = n;
-    memcpy(l->v, v, (size_t)n * sizeof v[0]);
+    if (n > 0)
+        memcpy(l->v, v, (size_t)n * sizeof v[0]);
     return RR_OK;
 }
 
@@ -559,7 +609,7 @@ int rr_rig_config_check(const rr_rig_config *c, const char **bad)
         if (row->type == RR_RIG_LIST) {
             const rr_rig_list *l = (const rr_rig_list *)(const void *)((const char *)c
                                                                        + row->offset);
-            st = l->n >= 1 && l->n <= RR_RIG_MAX_LIST ? RR_OK : RR_ERR_PARAM;
+            st = l->n >= (row->nlist > 0) && l->n <= RR_RIG_MAX_LIST ? RR_OK : RR_ERR_PARAM;
             for (k = 0; st == RR_OK && k < l->n; k++)
                 st = in_range(row, l->v[k]);
         } else {
@@ -588,6 +638,28 @@ int rr_rig_config_check(const rr_rig_config *c, const char **bad)
     }
     if (st == RR_OK && !(c->duration >= c->T * (1.0 - 1e-9))) {
         who = "scenario.duration_s";
+        st = RR_ERR_PARAM;
+    }
+    /* the adhesion: one mu0 (and A, B, or none) per time, in order; the patch on the roller */
+    if (st == RR_OK && c->schedule_mu0.n != c->schedule_t.n) {
+        who = "adhesion.schedule_mu0";
+        st = RR_ERR_PARAM;
+    }
+    if (st == RR_OK && c->schedule_A.n != 0 && c->schedule_A.n != c->schedule_t.n) {
+        who = "adhesion.schedule_polach_A";
+        st = RR_ERR_PARAM;
+    }
+    if (st == RR_OK && c->schedule_B.n != 0 && c->schedule_B.n != c->schedule_t.n) {
+        who = "adhesion.schedule_polach_B_s_per_m";
+        st = RR_ERR_PARAM;
+    }
+    for (k = 1; st == RR_OK && k < c->schedule_t.n; k++)
+        if (!(c->schedule_t.v[k] >= c->schedule_t.v[k - 1])) {
+            who = "adhesion.schedule_times_s";
+            st = RR_ERR_PARAM;
+        }
+    if (st == RR_OK && !(c->patch_length <= 2.0 * RR_PI * c->roller_radius)) {
+        who = "adhesion.patch_length_m";
         st = RR_ERR_PARAM;
     }
     if (st != RR_OK && bad)
@@ -655,6 +727,28 @@ static void creep_default(rr_creep_opts *o)
     }
 }
 
+/* The adhesion of checked primary values; base: the contact's law (its A, B
+ * where the schedule has none; A = 1, B = 0 throughout under Coulomb). */
+static void adhesion_from(const rr_rig_config *c, rr_friction base, rr_rig_adhesion *a)
+{
+    const int coulomb = strcmp(friction_laws[c->friction_law], "coulomb") == 0;
+    int i;
+    a->n = c->schedule_t.n;
+    for (i = 0; i < a->n; i++) {
+        a->t[i] = c->schedule_t.v[i];
+        a->law[i].mu0 = c->schedule_mu0.v[i];
+        a->law[i].A = coulomb || c->schedule_A.n == 0 ? base.A : c->schedule_A.v[i];
+        a->law[i].B = coulomb || c->schedule_B.n == 0 ? base.B : c->schedule_B.v[i];
+    }
+    a->patch_start = c->patch_start;
+    a->patch_length = c->patch_length;
+    a->patch_edge = c->patch_edge;
+    a->patch.mu0 = c->patch_mu0;
+    a->patch.A = coulomb ? 1.0 : c->patch_A;
+    a->patch.B = coulomb ? 0.0 : c->patch_B;
+    a->patch_rollers = patch_bits[c->patch_rollers];
+}
+
 int rr_rig_params_from(const rr_rig_config *c, const rr_contact_table *t, rr_rig_params *p)
 {
     int st;
@@ -691,6 +785,7 @@ int rr_rig_params_from(const rr_rig_config *c, const rr_contact_table *t, rr_rig
     }
     creep_default(&p->contact.creep);
     p->contact.vmin = c->vmin;
+    adhesion_from(c, p->contact.friction, &p->adhesion);
     p->T = c->T;
     p->nsub = c->substeps;
     p->method = ode_values[c->ode_method];

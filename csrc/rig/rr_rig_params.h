@@ -57,10 +57,11 @@ enum rr_rig_param_type {
     RR_RIG_INT,        /* an integer in [lo, hi], stored as int */
     RR_RIG_FLAG,       /* 0 (false) or 1 (true), stored as int */
     RR_RIG_CHOICE,     /* one of choices[] by index, stored as int */
-    RR_RIG_LIST        /* 1 to RR_RIG_MAX_LIST doubles, each in [lo, hi], an rr_rig_list */
+    RR_RIG_LIST        /* 1 to RR_RIG_MAX_LIST doubles (0 to it where the default is
+                          empty), each in [lo, hi], an rr_rig_list */
 };
 
-#define RR_RIG_MAX_LIST 256
+#define RR_RIG_MAX_LIST RR_RIG_MAX_SCHEDULE
 
 typedef struct {
     int n;
@@ -106,6 +107,10 @@ typedef struct {
     int newton_iterations, linear_first_stage, newton_model, substeps;
     double table_half_range;
     int table_rows;
+    /* adhesion: the schedule's lists (A, B empty: the contact's), the patch */
+    rr_rig_list schedule_t, schedule_mu0, schedule_A, schedule_B;
+    double patch_start, patch_length, patch_mu0, patch_A, patch_B, patch_edge;
+    int patch_rollers;          /* index: both, left, right */
 } rr_rig_config;
 
 typedef struct {
@@ -173,8 +178,11 @@ int rr_rig_config_set_list(rr_rig_config *c, const char *name, int n, const doub
 /*
  * rr_rig_config_check - 0 if every member is within its row's range and the
  * scenario holds together (one start time per target, increasing, all
- * before the duration; at least one sample in the duration); else the
- * status, and *bad (may be NULL) the name of the row at fault.
+ * before the duration; at least one sample in the duration), and the
+ * adhesion (one mu0 per schedule time, and one A and B each or none; the
+ * times non-decreasing; the patch no longer than the roller's
+ * circumference); else the status, and *bad (may be NULL) the name of the
+ * row at fault.
  */
 int rr_rig_config_check(const rr_rig_config *c, const char **bad);
 
@@ -184,7 +192,9 @@ int rr_rig_config_check(const rr_rig_config *c, const char **bad);
  * springs, dampers, preload, g; the contact model's R0 = roller.radius_m,
  * E* = E / (2 (1 - nu^2)) and G = E / (2 (1 + nu)) (wheel and roller of one
  * material), mu0, the falling law's A, B (coulomb: A = 1, B = 0), vmin; the
- * sample time T of the PI controllers and encoders; the integrator; the
+ * adhesion's schedule and patch (rr_rig_adhesion; coulomb: A = 1, B = 0
+ * there too); the sample time T of the PI controllers and encoders; the
+ * integrator; the
  * creepage controller (sense from scenario.drive_mode) with the nominal
  * radii wheelset.wheel_radius_m, roller.radius_m; the creep-force method at
  * the rows' defaults (FASTSIM, contact.fastsim_nx x fastsim_ny, rigid slip

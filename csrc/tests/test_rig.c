@@ -277,6 +277,180 @@ static void test_unusable(const rr_rig_params *good)
     CHECK_STATUS(rr_rig_record(&rig, NULL), RR_ERR_NULL, "record into NULL");
 }
 
+/* rr_rig_read + rr_rig_write with the built-in command + rr_rig_advance is
+ * rr_rig_step, bit for bit; the calls out of order are refused. */
+static void test_external_builtin(const rr_rig_params *p)
+{
+    static rr_rig a, b;
+    rr_rig_signals s;
+    rr_rig_command c;
+    double ra[RR_REC_COUNT], rb[RR_REC_COUNT];
+    int k, same = 1;
+
+    CHECK_STATUS(rr_rig_init(p, 31.25, &a), RR_OK, "init a");
+    CHECK_STATUS(rr_rig_init(p, 31.25, &b), RR_OK, "init b");
+    rr_rig_command_builtin(&c, 31.25, 0.02);
+    CHECK_STATUS(rr_rig_write(&b, &c), RR_ERR_SEQUENCE, "write before read");
+    for (k = 0; k < 200; k++) {
+        const double xi = k < 20 ? NAN : k < 120 ? 0.03 : 0.01;
+        rr_rig_step(&a, 31.25, xi, ra);
+        CHECK_STATUS(rr_rig_read(&b, &s), RR_OK, "read");
+        if (k == 0) {
+            CHECK(s.t == 0.0 && s.roller_angle == s.roller_count * (2.0 * RR_PI
+                                                                     / p->roller_enc.counts),
+                  "signals: time, quantised angle");
+            CHECK(s.roller_speed == 31.25, "signals: the first speed is the initial one");
+            CHECK_STATUS(rr_rig_read(&b, &s), RR_ERR_SEQUENCE, "a second read");
+            CHECK(isnan(s.t) && isnan(s.xi_est), "refused: NaN signals");
+        }
+        rr_rig_command_builtin(&c, 31.25, xi);
+        CHECK_STATUS(rr_rig_write(&b, &c), RR_OK, "write");
+        if (k == 0)
+            CHECK_STATUS(rr_rig_write(&b, &c), RR_ERR_SEQUENCE, "a second write");
+        rr_rig_advance(&b, rb);
+        same &= memcmp(ra, rb, sizeof ra) == 0;
+    }
+    CHECK(same, "read, write (built-in), advance == step, bit for bit");
+}
+
+/* Torque and speed commands: held as given (a torque clipped at its limit),
+ * the wheelset's speed reference NaN under torque; bad commands refused
+ * with nothing changed. */
+static void test_external_commands(const rr_rig_params *p)
+{
+    static rr_rig rig;
+    rr_rig_signals s;
+    rr_rig_command c;
+    double rec[RR_REC_COUNT];
+    int k;
+
+    CHECK_STATUS(rr_rig_init(p, 31.25, &rig), RR_OK, "init");
+    for (k = 0; k < 100; k++) {
+        CHECK_STATUS(rr_rig_read(&rig, &s), RR_OK, "read");
+        c.roller_mode = RR_CMD_SPEED;
+        c.roller_ref = 31.25;
+        c.wheelset_mode = RR_CMD_TORQUE;
+        c.wheelset_ref = k < 50 ? -10.0 : -1e6;
+        c.mu0 = NAN;
+        if (k == 10) {
+            rr_rig_command bad = c;
+            bad.wheelset_mode = 7;
+            CHECK_STATUS(rr_rig_write(&rig, &bad), RR_ERR_PARAM, "unknown mode");
+            bad = c;
+            bad.wheelset_ref = NAN;
+            CHECK_STATUS(rr_rig_write(&rig, &bad), RR_ERR_NONFINITE, "NaN torque");
+            bad = c;
+            bad.mu0 = -0.1;
+            CHECK_STATUS(rr_rig_write(&rig, &bad), RR_ERR_FRICTION, "mu0 < 0");
+            CHECK_STATUS(rr_rig_write(&rig, NULL), RR_ERR_NULL, "NULL command");
+        }
+        CHECK_STATUS(rr_rig_write(&rig, &c), RR_OK, "torque command");
+        CHECK(rr_rig_advance(&rig, rec) >= 0, "advance");
+        CHECK(rec[RR_REC_TREF_WHEELSET] == (k < 50 ? -10.0 : -p->wheelset_pi.Tmax),
+              "the torque held, clipped at the limit");
+        CHECK(isnan(rec[RR_REC_W_REF]), "no speed reference under torque");
+    }
+    /* braking at the limit (60 N m against at most 0.4 x 1043 N x 0.092 m = 38 N m):
+     * the wheel slows toward lock */
+    CHECK(rec[RR_REC_WHEELSET_SPEED] < 0.9 * rec[RR_REC_ROLLER_SPEED], "the wheel slides");
+    CHECK(rec[RR_REC_ADHESION] < 0.4, "adhesion below mu0");
+    /* mu0 per sample: the record shows it at both contacts */
+    CHECK_STATUS(rr_rig_read(&rig, &s), RR_OK, "read");
+    c.wheelset_mode = RR_CMD_SPEED;
+    c.wheelset_ref = s.roller_speed * p->creepctl.r_r / p->creepctl.r_w;
+    c.mu0 = 0.15;
+    CHECK_STATUS(rr_rig_write(&rig, &c), RR_OK, "speed command, mu0");
+    CHECK(rr_rig_advance(&rig, rec) >= 0, "advance");
+    CHECK(rec[RR_REC_MU_LEFT] == 0.15 && rec[RR_REC_MU_RIGHT] == 0.15, "mu0 of the command");
+    CHECK(rec[RR_REC_W_REF] == c.wheelset_ref, "the speed reference held");
+}
+
+/* The adhesion: the schedule linear between its points, held outside them,
+ * a step at a repeated time; the patch's fraction 1 inside, 0 outside,
+ * linear over the edge, across the circumference's wrap; the checks. */
+static void test_adhesion(const rr_rig_params *good)
+{
+    static rr_rig_params p;
+    static rr_rig rig;
+    const double C = 2.0 * RR_PI * good->contact.R0;
+    rr_friction f;
+    double rec[RR_REC_COUNT];
+    int k, seen_low = 0, seen_high = 0;
+
+    p = *good;
+    p.adhesion.n = 4;
+    p.adhesion.t[0] = 1.0; p.adhesion.t[1] = 2.0; p.adhesion.t[2] = 2.0; p.adhesion.t[3] = 3.0;
+    for (k = 0; k < 4; k++)
+        p.adhesion.law[k] = good->contact.friction;
+    p.adhesion.law[0].mu0 = 0.4;
+    p.adhesion.law[1].mu0 = 0.2;
+    p.adhesion.law[2].mu0 = 0.1;
+    p.adhesion.law[3].mu0 = 0.3;
+    p.adhesion.law[3].B = 1.0;
+    CHECK(rr_rig_friction_at(&p, 0.0, 0, NAN).mu0 == 0.4, "before the first point: held");
+    CHECK_CLOSE(rr_rig_friction_at(&p, 1.5, 0, NAN).mu0, 0.3, 1e-15, 0.0, "linear between");
+    CHECK(rr_rig_friction_at(&p, 2.0, 0, NAN).mu0 == 0.1, "a step: the later point at its time");
+    f = rr_rig_friction_at(&p, 2.5, 1, NAN);
+    CHECK_CLOSE(f.mu0, 0.2, 1e-15, 0.0, "after the step: linear");
+    CHECK_CLOSE(f.B, 0.5 * (good->contact.friction.B + 1.0), 1e-15, 0.0, "B too");
+    CHECK(rr_rig_friction_at(&p, 9.0, 0, NAN).mu0 == 0.3, "after the last point: held");
+    CHECK(isnan(rr_rig_friction_at(NULL, 0.0, 0, 0.0).mu0), "NULL parameters: NaN");
+
+    p.adhesion.n = 0;
+    p.adhesion.patch_start = C - 0.05;          /* wraps past the mark */
+    p.adhesion.patch_length = 0.1;
+    p.adhesion.patch_edge = 0.002;
+    p.adhesion.patch = good->contact.friction;
+    p.adhesion.patch.mu0 = 0.1;
+    p.adhesion.patch_rollers = 1;               /* left only */
+    CHECK(rr_rig_friction_at(&p, 0.0, 0, 0.0).mu0 == 0.1, "inside the patch, at the wrap");
+    CHECK(rr_rig_friction_at(&p, 0.0, 0, 2.0 * C + 0.02).mu0 == 0.1, "a turn later");
+    CHECK(rr_rig_friction_at(&p, 0.0, 1, 0.0).mu0 == 0.4, "not on the right roller");
+    CHECK(rr_rig_friction_at(&p, 0.0, 0, 0.3).mu0 == 0.4, "outside");
+    CHECK_CLOSE(rr_rig_friction_at(&p, 0.0, 0, 0.05).mu0, 0.25, 1e-12, 0.0,
+                "on the edge: half way");
+    CHECK_CLOSE(rr_rig_friction_at(&p, 0.0, 0, 0.0505).mu0, 0.4 - 0.3 * 0.25, 1e-12, 0.0,
+                "a quarter edge outside");
+    CHECK_CLOSE(rr_rig_friction_at(&p, 0.0, 0, C - 0.0505).mu0, 0.4 - 0.3 * 0.25, 1e-12,
+                0.0, "the other edge");
+
+    /* in the loop: the left wheel meets the patch once a revolution */
+    CHECK_STATUS(rr_rig_init(&p, 31.25, &rig), RR_OK, "init with a patch");
+    for (k = 0; k < 200; k++) {
+        CHECK(rr_rig_step(&rig, 31.25, NAN, rec) >= 0, "steps through the patch");
+        seen_low |= rec[RR_REC_MU_LEFT] == 0.1;
+        seen_high |= rec[RR_REC_MU_LEFT] == 0.4;
+        CHECK(rec[RR_REC_MU_RIGHT] == 0.4, "the right roller is clean");
+    }
+    CHECK(seen_low && seen_high, "the patch comes and goes");
+
+    p = *good;
+    p.adhesion.n = 2;
+    p.adhesion.t[0] = 1.0;
+    p.adhesion.t[1] = 0.5;
+    p.adhesion.law[0] = p.adhesion.law[1] = good->contact.friction;
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "times decreasing");
+    p.adhesion.t[1] = NAN;
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_NONFINITE, "a NaN time");
+    p.adhesion.t[1] = 2.0;
+    p.adhesion.law[1].A = 2.0;
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_FRICTION, "A > 1");
+    p = *good;
+    p.adhesion.patch_length = 2.0 * C;
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "a patch longer than the roller");
+    p.adhesion.patch_length = 0.1;
+    p.adhesion.patch_rollers = 0;
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "a patch on no roller");
+    p.adhesion.patch_rollers = 3;
+    p.adhesion.patch_edge = 0.0;
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "no edge");
+    p.adhesion.patch_edge = 0.002;
+    p.adhesion.patch.mu0 = 0.0;
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_FRICTION, "patch mu0 0");
+    p.adhesion.n = RR_RIG_MAX_SCHEDULE + 1;
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "too many points");
+}
+
 int main(void)
 {
     static rr_contact_table t;
@@ -290,5 +464,8 @@ int main(void)
     test_model(&p);
     test_errors(&p);
     test_unusable(&p);
+    test_external_builtin(&p);
+    test_external_commands(&p);
+    test_adhesion(&p);
     return rr_test_summary();
 }

@@ -40,10 +40,14 @@ enum rr_status {
                                    underflow to zero or lose its precision */
     RR_ERR_NULL = -13,          /* a required pointer is NULL, or an object was never
                                    initialised */
-    RR_ERR_TABLE = -14          /* outside a table: a/b beyond its range, nu not its own */
+    RR_ERR_TABLE = -14,         /* outside a table: a/b beyond its range, nu not its own */
+    RR_ERR_SEQUENCE = -15,      /* a call out of its order (the rig's command before its
+                                   reading, or a second reading in one sample) */
+    RR_ERR_CONTROLLER = -16     /* a controller of the caller's failed (it raised, or gave
+                                   what is not a command): set by the loop that calls it */
 };
 
-#define RR_STATUS_MIN (-14)
+#define RR_STATUS_MIN (-16)
 #define RR_STATUS_MAX 1
 
 /* Message of a status code; a fixed string, never NULL. */

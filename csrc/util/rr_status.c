@@ -2,6 +2,9 @@
 #include "util/rr_common.h"
 
 static const char *const rr_messages[] = {
+    /* -16 */ "the controller failed (it raised, or gave what is not a command)",
+    /* -15 */ "call out of order (the rig's command before its reading, or two readings in "
+              "one sample)",
     /* -14 */ "outside the exact-theory table (a/b beyond [0.1, 10], or nu not the table's)",
     /* -13 */ "a required pointer is NULL, or the object was never initialised",
     /* -12 */ "inputs too extreme: a result would overflow, underflow or lose its precision",
