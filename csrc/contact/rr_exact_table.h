@@ -46,9 +46,19 @@ int rr_exact_table_check(const rr_exact_table *t);
  *   RR_ERR_RANGE (mu N or the saturation scale mu N / (G a b) not a normal
  *   double: inputs some 300 orders of magnitude from a contact's);
  *   rr_exact_table_check's.  |(fx, fy)| <= mu N holds (the interpolation's
- *   overshoot near full sliding is clipped).  Cost: 256 interpolation nodes.
+ *   overshoot near full sliding is clipped).  Cost: up to 256 interpolation
+ *   nodes; on log(a/b), alpha and theta those of weight 0 are skipped (not
+ *   read): one at an end interval, three on a node (the rig's cases, with
+ *   little spin and no lateral creepage, take 48).
  */
 int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
                           const rr_friction *fr, rr_forces *out);
+
+/* Not API: rr_exact_table_forces with the interpolation's sums in the
+ * baseline build (on x86-64 with GCC or clang rr_exact_table_forces takes
+ * an AVX2 build of them where the processor has it), for the test that
+ * both give the same doubles. */
+int rr_exact_table_forces_baseline(const rr_exact_table *t, const rr_contact_case *c,
+                                   const rr_friction *fr, rr_forces *out);
 
 #endif
