@@ -252,10 +252,16 @@ static int forces(const rr_exact_table *t, const rr_contact_case *c, const rr_fr
     R = m * sqrt((x / m) * (x / m) + (y / m) * (y / m) + (z / m) * (z / m)) / sat;
     if (e > 0)
         R = ldexp(R, 600 * e);
-    /* y = 0 (no lateral creepage): hypot(x, 0) = |x| and atan2(+-0, x > 0)
-     * = +-0 exactly, without the calls */
-    q[1] = atan2(y == 0.0 ? fabs(x) : hypot(x, y), z);
-    q[2] = y == 0.0 && x > 0.0 ? y : atan2(y, x);
+    /* little lateral creepage, |y| <= 2^-30 x (the rig's cases): hypot(x, y)
+     * = x and atan2(y, x) = y / x to rounding (the next terms, x (y/x)^2 / 2
+     * and (y/x)^3 / 3, are below 2^-60 of them), without the calls */
+    if (x > 0.0 && fabs(y) <= 0x1p-30 * x) {
+        q[1] = atan2(x, z);
+        q[2] = y / x;
+    } else {
+        q[1] = atan2(hypot(x, y), z);
+        q[2] = atan2(y, x);
+    }
     q[3] = 1.0 / (1.0 + t->r0 / R);  /* R = inf: full sliding, u = 1 */
     interpolate(t, q, simd, f);
     /* points that the symmetries map onto themselves with a force reversed

@@ -7,9 +7,10 @@
  * quadratic (and along each axis a tensor product of them), so the lookup
  * must give the polynomial at the case's coordinates, which this test
  * computes from their definition in the header (Kalker's coefficients from
- * rr_kalker), to rounding: 1e-12 of the forces.  The cases fall inside
- * the axes, in their end intervals and on nodes (where nodes of weight 0
- * are skipped).  Then the built-in table: it passes its check; the
+ * rr_kalker, hypot and atan2), to rounding: 1e-12 of the forces.  The
+ * cases fall inside the axes, in their end intervals and on nodes (where
+ * nodes of weight 0 are skipped), and near theta = 0 (where the lookup
+ * takes y / x for atan2).  Then the built-in table: it passes its check; the
  * method's path (rr_creep_forces, which skips the check) gives the checked
  * lookup's doubles; the AVX2 build of the sums gives the baseline's
  * doubles; the limits of no creepage and full sliding; the refusals.
@@ -162,6 +163,9 @@ static void test_quadratic_reproduced(void)
             break;
         case 3:
             xs = 1e-3 * xs;             /* theta near +-pi/2 */
+            break;
+        case 4:
+            ys = 1e-12 * ys;            /* theta near 0: without hypot and atan2 */
             break;
         default:
             break;
