@@ -108,13 +108,13 @@ static void rows_baseline(const float *v, const node_rows *r, double acc[12])
     int a, b, c, k;
     for (k = 0; k < 12; k++)
         acc[k] = 0.0;
-    for (a = 0; a < r->m[0]; a++)
-        for (b = 0; b < r->m[1]; b++) {
-            const double wab = r->w[0][a] * r->w[1][b];
-            const float *vab = v + r->off[0][a] + r->off[1][b];
-            for (c = 0; c < r->m[2]; c++) {
-                const double wabc = wab * r->w[2][c];
-                const float *p = vab + r->off[2][c];
+    for (b = 0; b < r->m[1]; b++)
+        for (c = 0; c < r->m[2]; c++) {
+            const double wbc = r->w[1][b] * r->w[2][c];
+            const float *vbc = v + r->off[1][b] + r->off[2][c];
+            for (a = 0; a < r->m[0]; a++) {
+                const double wabc = r->w[0][a] * wbc;
+                const float *p = vbc + r->off[0][a];
                 for (k = 0; k < 12; k++)
                     acc[k] += wabc * p[k];
             }
@@ -130,13 +130,13 @@ __attribute__((target("avx2"))) static void rows_avx2(const float *v, const node
 {
     __m256d s0 = _mm256_setzero_pd(), s1 = s0, s2 = s0;
     int a, b, c;
-    for (a = 0; a < r->m[0]; a++)
-        for (b = 0; b < r->m[1]; b++) {
-            const double wab = r->w[0][a] * r->w[1][b];
-            const float *vab = v + r->off[0][a] + r->off[1][b];
-            for (c = 0; c < r->m[2]; c++) {
-                const __m256d w = _mm256_set1_pd(wab * r->w[2][c]);
-                const float *p = vab + r->off[2][c];
+    for (b = 0; b < r->m[1]; b++)
+        for (c = 0; c < r->m[2]; c++) {
+            const double wbc = r->w[1][b] * r->w[2][c];
+            const float *vbc = v + r->off[1][b] + r->off[2][c];
+            for (a = 0; a < r->m[0]; a++) {
+                const __m256d w = _mm256_set1_pd(r->w[0][a] * wbc);
+                const float *p = vbc + r->off[0][a];
                 s0 = _mm256_add_pd(s0, _mm256_mul_pd(w, _mm256_cvtps_pd(_mm_loadu_ps(p))));
                 s1 = _mm256_add_pd(s1, _mm256_mul_pd(w, _mm256_cvtps_pd(_mm_loadu_ps(p + 4))));
                 s2 = _mm256_add_pd(s2, _mm256_mul_pd(w, _mm256_cvtps_pd(_mm_loadu_ps(p + 8))));
