@@ -46,10 +46,7 @@ int rr_exact_table_check(const rr_exact_table *t);
  *   RR_ERR_RANGE (mu N or the saturation scale mu N / (G a b) not a normal
  *   double: inputs some 300 orders of magnitude from a contact's);
  *   rr_exact_table_check's.  |(fx, fy)| <= mu N holds (the interpolation's
- *   overshoot near full sliding is clipped).  Cost: up to 256 interpolation
- *   nodes; on log(a/b), alpha and theta those of weight 0 are skipped (not
- *   read): one at an end interval, three on a node (the rig's cases, with
- *   little spin and no lateral creepage, take 48).
+ *   overshoot near full sliding is clipped).  Cost: 256 interpolation nodes.
  */
 int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
                           const rr_friction *fr, rr_forces *out);
