@@ -76,7 +76,7 @@ static int weights(const rr_exact_table *t, int d, double q, double *w)
  * leaving it out changes no bit, and saves a quarter of an axis's nodes at
  * an end interval, three quarters on a node: in the rig's cases (little
  * spin, no lateral creepage) alpha is in its last interval and theta on
- * its node 0, so 12 rows of the 64 remain. */
+ * the node at theta = 0, so 12 rows of the 64 remain. */
 typedef struct {
     int m[3];
     long off[3][4];
@@ -99,7 +99,9 @@ static void list_rows(const rr_exact_table *t, const int j[3], double w[][4], no
 }
 
 /* The rows (the 12 contiguous values of the four u nodes at a node of the
- * outer axes) times the products of their weights, summed lane by lane.
+ * outer axes) times the products of their weights, summed lane by lane,
+ * log(a/b) innermost (the axis seldom at an end or on a node: the inner
+ * loop runs four times, where theta's would run once in the rig).
  * On x86-64 with GCC or clang the same sums in AVX2 registers where the
  * processor has them (each lane the same operations in the same order,
  * without contraction: the same doubles). */
