@@ -32,7 +32,7 @@ int rr_exact_table_check(const rr_exact_table *t)
 /* The four nodes j0 .. j0 + 3 and weights of coordinate q on axis d: a
  * Catmull-Rom cubic, its outer node past an end replaced by the quadratic
  * through the three nearest (f(-1) = 3 f0 - 3 f1 + f2), folded into the
- * weights of the nodes inside. */
+ * weights of the nodes inside (the fourth node then has weight 0). */
 static int weights(const rr_exact_table *t, int d, double q, double *w)
 {
     const int n = t->n[d];
@@ -70,48 +70,131 @@ static int weights(const rr_exact_table *t, int d, double q, double *w)
     return i - 1;
 }
 
-/* sum over the 4^4 nodes of the weight products times the three values:
- * along u (the last axis) the four nodes' 12 values are contiguous, so the
- * inner loop runs over those 12 lanes with the u weights spread over them
- * (it vectorises), the lanes summed per component at the end */
-static void interpolate(const rr_exact_table *t, const double q[4], double f[3])
+/* The nodes of the three outer axes (log(a/b), alpha, theta) to sum over:
+ * on each axis those of non-zero weight, their offsets in floats and
+ * weights.  A node of weight 0 adds nothing (the values are finite), so
+ * leaving it out changes no bit, and saves a quarter of an axis's nodes at
+ * an end interval, three quarters on a node: in the rig's cases (little
+ * spin, no lateral creepage) alpha is in its last interval and theta on
+ * the node at theta = 0, so 12 rows of the 64 remain. */
+typedef struct {
+    int m[3];
+    long off[3][4];
+    double w[3][4];
+} node_rows;
+
+static void list_rows(const rr_exact_table *t, const int j[3], double w[][4], node_rows *r)
 {
-    double w[4][4], wu[12], acc[12] = {0.0};
-    int j[4], a, b, c, k;
     const long s2 = 3L * t->n[3], s1 = s2 * t->n[2], s0 = s1 * t->n[1];
-    for (a = 0; a < 4; a++)
-        j[a] = weights(t, a, q[a], w[a]);
-    for (k = 0; k < 12; k++)
-        wu[k] = w[3][k / 3];
-    for (a = 0; a < 4; a++)
-        for (b = 0; b < 4; b++) {
-            const double wab = w[0][a] * w[1][b];
-            const float *vab = t->v + (j[0] + a) * s0 + (j[1] + b) * s1 + 3L * j[3];
-            for (c = 0; c < 4; c++) {
-                const double wabc = wab * w[2][c];
-                const float *v = vab + (j[2] + c) * s2;
-                for (k = 0; k < 12; k++)
-                    acc[k] += wabc * (wu[k] * v[k]);
-            }
+    const long stride[3] = {s0, s1, s2};
+    int d, k;
+    for (d = 0; d < 3; d++) {       /* without branches */
+        r->m[d] = 0;
+        for (k = 0; k < 4; k++) {
+            r->off[d][r->m[d]] = (j[d] + k) * stride[d];
+            r->w[d][r->m[d]] = w[d][k];
+            r->m[d] += w[d][k] != 0.0;
         }
-    for (k = 0; k < 3; k++)
-        f[k] = (acc[k] + acc[k + 3]) + (acc[k + 6] + acc[k + 9]);
+    }
 }
 
-int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
-                          const rr_friction *fr, rr_forces *out)
+/* The rows (the 12 contiguous values of the four u nodes at a node of the
+ * outer axes) times the products of their weights, summed lane by lane,
+ * log(a/b) innermost (the axis seldom at an end or on a node: the inner
+ * loop runs four times, where theta's would run once in the rig).
+ * On x86-64 with GCC or clang the same sums in AVX2 registers where the
+ * processor has them (each lane the same operations in the same order,
+ * without contraction: the same doubles). */
+static void rows_baseline(const float *v, const node_rows *r, double acc[12])
+{
+    int a, b, c, k;
+    for (k = 0; k < 12; k++)
+        acc[k] = 0.0;
+    for (b = 0; b < r->m[1]; b++)
+        for (c = 0; c < r->m[2]; c++) {
+            const double wbc = r->w[1][b] * r->w[2][c];
+            const float *vbc = v + r->off[1][b] + r->off[2][c];
+            for (a = 0; a < r->m[0]; a++) {
+                const double wabc = r->w[0][a] * wbc;
+                const float *p = vbc + r->off[0][a];
+                for (k = 0; k < 12; k++)
+                    acc[k] += wabc * p[k];
+            }
+        }
+}
+
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(RR_PORTABLE)
+#define TABLE_DISPATCH 1
+#include <immintrin.h>
+
+__attribute__((target("avx2"))) static void rows_avx2(const float *v, const node_rows *r,
+                                                      double acc[12])
+{
+    __m256d s0 = _mm256_setzero_pd(), s1 = s0, s2 = s0;
+    int a, b, c;
+    for (b = 0; b < r->m[1]; b++)
+        for (c = 0; c < r->m[2]; c++) {
+            const double wbc = r->w[1][b] * r->w[2][c];
+            const float *vbc = v + r->off[1][b] + r->off[2][c];
+            for (a = 0; a < r->m[0]; a++) {
+                const __m256d w = _mm256_set1_pd(r->w[0][a] * wbc);
+                const float *p = vbc + r->off[0][a];
+                s0 = _mm256_add_pd(s0, _mm256_mul_pd(w, _mm256_cvtps_pd(_mm_loadu_ps(p))));
+                s1 = _mm256_add_pd(s1, _mm256_mul_pd(w, _mm256_cvtps_pd(_mm_loadu_ps(p + 4))));
+                s2 = _mm256_add_pd(s2, _mm256_mul_pd(w, _mm256_cvtps_pd(_mm_loadu_ps(p + 8))));
+            }
+        }
+    _mm256_storeu_pd(acc, s0);
+    _mm256_storeu_pd(acc + 4, s1);
+    _mm256_storeu_pd(acc + 8, s2);
+}
+#else
+#define TABLE_DISPATCH 0
+#endif
+
+/* simd 0: the baseline build alone */
+static void rows(const float *v, const node_rows *r, int simd, double acc[12])
+{
+#if TABLE_DISPATCH
+    if (simd && __builtin_cpu_supports("avx2")) {
+        rows_avx2(v, r, acc);
+        return;
+    }
+#else
+    (void)simd;
+#endif
+    rows_baseline(v, r, acc);
+}
+
+/* sum over the 4^4 nodes of the weight products times the three values:
+ * the u weights are common to every row of the outer axes, so the rows are
+ * summed first (lanes of the four u nodes' three values) and the u
+ * weights applied once at the end */
+static void interpolate(const rr_exact_table *t, const double q[4], int simd, double f[3])
+{
+    node_rows r;
+    double w[4][4], acc[12];
+    int j[4], d, k;
+    for (d = 0; d < 4; d++)
+        j[d] = weights(t, d, q[d], w[d]);
+    list_rows(t, j, w, &r);
+    rows(t->v + 3L * j[3], &r, simd, acc);
+    for (k = 0; k < 3; k++)
+        f[k] = (w[3][0] * acc[k] + w[3][1] * acc[k + 3])
+             + (w[3][2] * acc[k + 6] + w[3][3] * acc[k + 9]);
+}
+
+/* the forces of a checked table */
+static int forces(const rr_exact_table *t, const rr_contact_case *c, const rr_friction *fr,
+                  int simd, rr_forces *out)
 {
     rr_kalker_coeffs k;
     double q[4], f[3], cc, mu, muN, x, y, z, m, R, sign = 1.0, sx = 1.0, sy = 1.0, aob;
     double sat;
-    int e;
+    int e = 0;
     int st;
 
-    if (!out)
-        return RR_ERR_NULL;
-    st = rr_exact_table_check(t);
-    if (st == RR_OK)
-        st = rr_creep_prepare(c, fr, &k);
+    st = rr_creep_prepare(c, fr, &k);
     if (st == RR_OK) {
         aob = c->a / c->b;
         q[0] = log(aob);
@@ -126,23 +209,27 @@ int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
     }
     out->fx = out->fy = out->mz = 0.0;
     cc = sqrt(c->a) * sqrt(c->b);
-    /* the creepages times s (the saturation scale cancels in the direction),
-     * scaled down by 2^-600 at a time until no product overflows (a, b and
-     * the creepages may be anything finite) */
-    for (e = 0; e <= 4; e++) {
+    /* the creepages times s (the saturation scale cancels in the direction);
+     * where a product overflows (a, b and the creepages may be anything
+     * finite), scaled down by 2^-600 at a time until none does */
+    x = c->cx * k.c11;
+    y = c->cy * k.c22;
+    z = c->cphi * cc * k.c11;
+    while (!(isfinite(x) && isfinite(y) && isfinite(z)) && e < 4) {
+        e++;
         x = ldexp(c->cx, -600 * e) * k.c11;
         y = ldexp(c->cy, -600 * e) * k.c22;
         z = ldexp(c->cphi, -600 * e) * cc * k.c11;
-        if (isfinite(x) && isfinite(y) && isfinite(z))
-            break;
     }
-    m = fmax(fabs(x), fmax(fabs(y), fabs(z)));
+    m = fabs(x) > fabs(y) ? fabs(x) : fabs(y);
+    m = fabs(z) > m ? fabs(z) : m;
     if (m == 0.0)
         return RR_OK;
-    /* falling friction at the rigid slip speed; the saturation scale s of
-     * the normalised creepages must be a normal double (else the inputs are
-     * too extreme for the table's coordinates) */
-    mu = rr_friction_mu(fr, c->speed * hypot(c->cx, c->cy));
+    /* falling friction at the rigid slip speed (the speed matters only to a
+     * falling law); the saturation scale s of the normalised creepages must
+     * be a normal double (else the inputs are too extreme for the table's
+     * coordinates) */
+    mu = rr_friction_mu(fr, fr->B > 0.0 ? c->speed * hypot(c->cx, c->cy) : 0.0);
     muN = mu * c->N;
     sat = muN / c->G / cc / cc;
     if (!isnormal(muN) || !isnormal(sat)) {
@@ -165,11 +252,20 @@ int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
     }
     /* R = |(x, y, z)| / s, scaled by m so that no square overflows */
     R = m * sqrt((x / m) * (x / m) + (y / m) * (y / m) + (z / m) * (z / m)) / sat;
-    R = ldexp(R, 600 * e);
-    q[1] = atan2(hypot(x, y), z);
-    q[2] = atan2(y, x);
+    if (e > 0)
+        R = ldexp(R, 600 * e);
+    /* little lateral creepage, |y| <= 2^-30 x (the rig's cases): hypot(x, y)
+     * = x and atan2(y, x) = y / x to rounding (the next terms, x (y/x)^2 / 2
+     * and (y/x)^3 / 3, are below 2^-60 of them), without the calls */
+    if (x > 0.0 && fabs(y) <= 0x1p-30 * x) {
+        q[1] = atan2(x, z);
+        q[2] = y / x;
+    } else {
+        q[1] = atan2(hypot(x, y), z);
+        q[2] = atan2(y, x);
+    }
     q[3] = 1.0 / (1.0 + t->r0 / R);  /* R = inf: full sliding, u = 1 */
-    interpolate(t, q, f);
+    interpolate(t, q, simd, f);
     /* points that the symmetries map onto themselves with a force reversed
      * have no such force (the nodes hold the solver's round-off there):
      * fx at x = 0 (reversed and mirrored), fy and mz at y = z = 0 (mirrored) */
@@ -177,8 +273,10 @@ int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
         f[0] = 0.0;
     if (y == 0.0 && z == 0.0)
         f[1] = f[2] = 0.0;
-    {
-        /* the cubic may overshoot the bound near full sliding by its error */
+    /* the cubic may overshoot the bound near full sliding by its error;
+     * hypot (the exact test) only where the sum of squares, within a few
+     * ulps of the true one, does not rule that out */
+    if (f[0] * f[0] + f[1] * f[1] > 1.0 - 1e-12) {
         const double h = hypot(f[0], f[1]);
         if (h > 1.0) {
             f[0] /= h;
@@ -191,6 +289,32 @@ int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
     return rr_forces_checked(RR_OK, out);
 }
 
+/* the checked entries: simd 0 takes the baseline build of the sums */
+static int checked(const rr_exact_table *t, const rr_contact_case *c, const rr_friction *fr,
+                   int simd, rr_forces *out)
+{
+    int st;
+    if (!out)
+        return RR_ERR_NULL;
+    if ((st = rr_exact_table_check(t)) != RR_OK) {
+        rr_forces_nan(out);
+        return st;
+    }
+    return forces(t, c, fr, simd, out);
+}
+
+int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
+                          const rr_friction *fr, rr_forces *out)
+{
+    return checked(t, c, fr, 1, out);
+}
+
+int rr_exact_table_forces_baseline(const rr_exact_table *t, const rr_contact_case *c,
+                                   const rr_friction *fr, rr_forces *out)
+{
+    return checked(t, c, fr, 0, out);
+}
+
 /* ---- the method ---------------------------------------------------------------- */
 
 static int table_forces(const rr_contact_case *c, const rr_friction *fr,
@@ -198,7 +322,10 @@ static int table_forces(const rr_contact_case *c, const rr_friction *fr,
 {
     (void)o;
     (void)work;
-    return rr_exact_table_forces(&rr_exact_table_builtin, c, fr, out);
+    if (!out)
+        return RR_ERR_NULL;
+    /* the built-in table is checked by csrc/tests/test_exact_table.c */
+    return forces(&rr_exact_table_builtin, c, fr, 1, out);
 }
 
 const rr_method_desc rr_method_exact_table = {

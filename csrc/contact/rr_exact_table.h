@@ -51,4 +51,11 @@ int rr_exact_table_check(const rr_exact_table *t);
 int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
                           const rr_friction *fr, rr_forces *out);
 
+/* Not API: rr_exact_table_forces with the interpolation's sums in the
+ * baseline build (on x86-64 with GCC or clang rr_exact_table_forces takes
+ * an AVX2 build of them where the processor has it), for the test that
+ * both give the same doubles. */
+int rr_exact_table_forces_baseline(const rr_exact_table *t, const rr_contact_case *c,
+                                   const rr_friction *fr, rr_forces *out);
+
 #endif

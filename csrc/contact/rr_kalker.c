@@ -122,8 +122,13 @@ int rr_kalker(double a_over_b, double nu, rr_kalker_coeffs *out)
     }
     /* rows are g = 0.1 (row 0) ... 1.0 (row 9); the last interval ends at row 9 */
     pos = 10.0 * g - 1.0;
-    if (fabs(pos - floor(pos + 0.5)) < 1e-12)
-        pos = floor(pos + 0.5);     /* 10 * 0.3 - 1 = 2.0000000000000004: a node */
+    {
+        /* the nearest row: pos >= 0 here, so truncation is floor (and
+         * quicker than floor without SSE4.1, a quarter of the time) */
+        const double near = (double)(int)(pos + 0.5);
+        if (fabs(pos - near) < 1e-12)
+            pos = near;             /* 10 * 0.3 - 1 = 2.0000000000000004: a node */
+    }
     row = (int)pos;
     if (row > 8)
         row = 8;
