@@ -427,17 +427,23 @@ static int linearise(rr_rig *rig, const double *y)
     for (k = 0; k < 2; k++) {
         const rr_wheel_contact *w = &rig->w[k];
         rr_rig_creep_lin *l = &rig->lin[k];
-        rr_kalker_coeffs kc;
+        const double ab = w->hertz.a / w->hertz.b;
         double gab, f[2];
 
-        l->ok = rr_kalker(w->hertz.a / w->hertz.b, p->contact.nu, &kc) == RR_OK;
-        if (!l->ok)
-            continue;
+        if (!(ab == l->ab && l->ok)) {
+            rr_kalker_coeffs kc;
+            l->ok = rr_kalker(ab, p->contact.nu, &kc) == RR_OK;
+            if (!l->ok)
+                continue;
+            l->ab = ab;
+            l->c11 = kc.c11;
+            l->c22 = kc.c22;
+        }
         /* the method's own initial slope over the linear theory's (its
          * descriptor's: Polach's (kA + kS)/2, modified FASTSIM's k0) */
         gab = p->contact.G * w->hertz.a * w->hertz.b * rig->creep_slope_scale;
-        l->f11 = gab * kc.c11;
-        l->f22 = gab * kc.c22;
+        l->f11 = gab * l->c11;
+        l->f22 = gab * l->c22;
         l->N = w->N;
         l->V = w->creep.V;
         l->friction = w->friction;

@@ -172,6 +172,8 @@ typedef struct {
     double cx, cy;                 /* creepages there */
     double fx, fy;                 /* the simplified theory's forces there [N] */
     double D[4];                   /* and their tangent d f / d c (row-major 2 x 2) [N] */
+    double ab, c11, c22;           /* a/b of the last Kalker lookup and its C11, C22: the
+                                      lookup is skipped while a/b stays (a centred wheelset) */
     double dcx[RR_RIG_NSTATE];     /* d cx / d y, d cy / d y (linearised eq. 7-8) */
     double dcy[RR_RIG_NSTATE];
     double rx[RR_RIG_NSTATE];      /* d (dy/dt) per unit fx, fy on this contact */
