@@ -508,7 +508,8 @@ static void input_var(int i, rr_fmu_var *v)
     v->description = inputs[i].description;
     v->type = RR_FMU_REAL;
     v->causality = RR_FMU_INPUT;
-    v->variability = RR_FMU_CONTINUOUS;
+    /* sampled by the rig's controllers at each sample and held over it */
+    v->variability = RR_FMU_DISCRETE;
     v->lo = inputs[i].lo;
     v->hi = inputs[i].hi;
     v->lo_open = inputs[i].lo_open;
@@ -1107,7 +1108,7 @@ int rr_fmu_do_step(rr_fmu *m, double t, double h)
         || n_real > 1e15) {
         rr_fmu_format_number(h, a, sizeof a);
         rr_fmu_format_number(T, b, sizeof b);
-        return fail(m, RR_ERR_PARAM, "doStep: the communication step %s s is not a whole "
+        return fail(m, RR_ERR_PARAM, "the communication step %s s is not a whole "
                     "multiple of the control sample time %s s "
                     "(scenario.control_sample_time_s): the rig steps by whole samples", a, b);
     }
@@ -1115,7 +1116,7 @@ int rr_fmu_do_step(rr_fmu *m, double t, double h)
     if (!(fabs(t - now) <= 1e-6 * T)) {
         rr_fmu_format_number(t, a, sizeof a);
         rr_fmu_format_number(now, b, sizeof b);
-        return fail(m, RR_ERR_PARAM, "doStep: currentCommunicationPoint %s s is not the "
+        return fail(m, RR_ERR_PARAM, "currentCommunicationPoint %s s is not the "
                     "unit's time %s s (the start time plus %ld samples)", a, b, s->k);
     }
     if (s->retune && (st = retune(m)) < 0)
@@ -1131,7 +1132,7 @@ int rr_fmu_do_step(rr_fmu *m, double t, double h)
             rr_fmu_format_number(cmd.wheelset_ref, r1, sizeof r1);
             rr_fmu_format_number(cmd.mu0, mu, sizeof mu);
             rr_fmu_format_number(s->rig.t + s->t0, a, sizeof a);
-            fail(m, st, "doStep: sample %ld (t = %s s): the rig refused the command (roller: "
+            fail(m, st, "sample %ld (t = %s s): the rig refused the command (roller: "
                  "%s = %s; wheelset: %s = %s; mu0: %s = %s): %s", s->k, a, which[0], r0,
                  which[1], r1, which[2], mu, rr_status_message(st));
             if (i > 0) {
@@ -1154,13 +1155,13 @@ int rr_fmu_do_step(rr_fmu *m, double t, double h)
             rr_fmu_format_number(s->rig.t + s->t0, a, sizeof a);
             s->mode = RR_FMU_FAILED;
             s->failed_status = st;
-            return fail(m, st, "doStep: sample %ld (t = %s s) failed: %s; the unit stops "
+            return fail(m, st, "sample %ld (t = %s s) failed: %s; the unit stops "
                         "there (its outputs are that sample's start)", s->k, a,
                         rr_status_message(st));
         }
     }
     if (worst > 0)
-        return fail(m, worst, "doStep: %d of %ld samples warned: %s", warned, n,
+        return fail(m, worst, "%d of %ld samples warned: %s", warned, n,
                     rr_status_message(worst));
     return RR_OK;
 }
@@ -1174,7 +1175,7 @@ static int lookup(rr_fmu *m, int type, unsigned vr, rr_fmu_var *v)
         return fail(m, RR_ERR_PARAM, "unknown value reference %u (no variable has it)", vr);
     if (v->type != type) {
         rr_fmu_var_name(v, name, sizeof name);
-        return fail(m, RR_ERR_PARAM, "%s (value reference %u) is a %s variable, not %s: use "
+        return fail(m, RR_ERR_PARAM, "%s (value reference %u) is of type %s, not %s: use "
                     "the %s functions", name, vr, m->type_names[v->type],
                     m->type_names[type < 0 || type > 3 ? 0 : type], m->type_names[v->type]);
     }

@@ -43,7 +43,11 @@
  * the defaults (scenario, scenario, adhesion, rolling) a run is
  * rollerrig.simulate()'s of the same parameters, bit for bit: the same
  * rr_rig_read, rr_rig_write, rr_rig_advance as rr_rig_step, with the
- * references of rr_rig_schedule.  Inputs are held over a step.
+ * references of rr_rig_schedule.
+ *
+ * The inputs are discrete: the rig's controllers sample them at each sample
+ * (the references held over it, as a sampled controller does) and a step
+ * over several samples holds them over all.
  *
  * Outputs belong to the unit's present time: the record of the last sample
  * (its end), the contact blocks of the same evaluation, and the encoders

@@ -308,7 +308,7 @@ static void test_checks(const rr_fmu_config *f)
           && contains(rr_fmu_message(&m), "(0, inf) kg"), rr_fmu_message(&m));
     CHECK_STATUS(rr_fmu_set(&m, RR_FMU_REAL, mass, NAN), RR_ERR_NONFINITE, "mass NaN");
     CHECK_STATUS(rr_fmu_set(&m, RR_FMU_INTEGER, mass, 2.0), RR_ERR_PARAM, "mass as integer");
-    CHECK(contains(rr_fmu_message(&m), "is a Real variable, not Integer"), rr_fmu_message(&m));
+    CHECK(contains(rr_fmu_message(&m), "is of type Real, not Integer"), rr_fmu_message(&m));
     CHECK_STATUS(rr_fmu_set(&m, RR_FMU_INTEGER, vr_of(f, "integration.table_rows"), 2.5),
                  RR_ERR_PARAM, "rows 2.5");
     CHECK_STATUS(rr_fmu_set(&m, RR_FMU_ENUMERATION, vr_of(f, "control.wheelset_mode"), 7),
