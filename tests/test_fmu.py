@@ -9,6 +9,7 @@ log message, never a crash; FMU states get, set, serialize.
 Each FMU is built once per module (the core's objects cached between the
 builds).  The C unit under the adapters has its own tests (csrc/tests/test_fmu.c).
 """
+import os
 import shutil
 import subprocess
 import zipfile
@@ -39,9 +40,10 @@ def _toolchain():
 
 
 @pytest.fixture(scope="module")
-def cache(tmp_path_factory):
+def cache():
+    """The core's objects, compiled once per session (conftest.py)."""
     _toolchain()
-    return tmp_path_factory.mktemp("fmu-cache")
+    return os.environ["ROLLERRIG_FMU_CACHE"]
 
 
 @pytest.fixture(scope="module")
@@ -419,7 +421,6 @@ def test_command_with_a_scenario_file(tmp_path, cache, monkeypatch, capsys):
                         'target_start_s = [0.0, 0.5]\nmu0 = 0.3\n'
                         '[contact]\ncreep_method = "polach"\n'
                         '[adhesion]\npatch_length_m = 0.2\n')
-    monkeypatch.setenv("ROLLERRIG_FMU_CACHE", str(cache))
     out = tmp_path / "short.fmu"
     assert cli.main(["fmu", str(out), "--scenario", str(scenario), "--fmi", "3"]) == 0
     assert "wrote" in capsys.readouterr().out
