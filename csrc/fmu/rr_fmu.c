@@ -1,4 +1,5 @@
 /* rr_fmu.c - the roller rig as a co-simulation unit (rr_fmu.h). */
+#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -1104,16 +1105,21 @@ int rr_fmu_do_step(rr_fmu *m, double t, double h)
         return wrong_mode(m, "doStep", "stepping (after the initialization)");
     T = s->p.T;
     n_real = floor(h / T + 0.5);
-    if (!(h > 0.0) || !isfinite(h) || n_real < 1.0 || fabs(h - n_real * T) > 1e-6 * T
-        || n_real > 1e15) {
+    now = s->t0 + (double)s->k * T;
+    /* the step: a whole number of samples, but for the rounding of a
+     * master's difference of two times */
+    if (!(h > 0.0) || !isfinite(h) || n_real < 1.0 || n_real > 1e15
+        || fabs(h - n_real * T) > 1e-6 * T + 4.0 * DBL_EPSILON * (fabs(now) + h)) {
         rr_fmu_format_number(h, a, sizeof a);
         rr_fmu_format_number(T, b, sizeof b);
         return fail(m, RR_ERR_PARAM, "the communication step %s s is not a whole "
                     "multiple of the control sample time %s s "
                     "(scenario.control_sample_time_s): the rig steps by whole samples", a, b);
     }
-    now = s->t0 + (double)s->k * T;
-    if (!(fabs(t - now) <= 1e-6 * T)) {
+    /* the time: the unit's, within a thousandth of a sample (a master that
+     * adds up its steps drifts from k T by rounding; a skipped or repeated
+     * step is a whole sample off) */
+    if (!(fabs(t - now) <= 1e-3 * T)) {
         rr_fmu_format_number(t, a, sizeof a);
         rr_fmu_format_number(now, b, sizeof b);
         return fail(m, RR_ERR_PARAM, "currentCommunicationPoint %s s is not the "
@@ -1285,7 +1291,7 @@ int rr_fmu_set(rr_fmu *m, int type, unsigned vr, double x)
         rr_fmu_format_number(x, num, sizeof num);
         return fail(m, st, "%s = %s: %s", name, num, rr_status_message(st));
     }
-    if (v.kind == K_CONTROL)
+    if (v.kind == K_CONTROL && v.index != RR_FMU_START)
         return RR_OK;               /* read at each sample */
     if (s->mode == RR_FMU_STEPPING)
         s->retune = 1;

@@ -285,8 +285,10 @@ const char *rr_fmu_message(const rr_fmu *m);
  * rr_fmu_exit_init: -> stepping, the rig built from the parameters (table,
  * rr_rig_params_from, rr_rig_init, the encoders read).
  * rr_fmu_do_step(m, t, h): round(h / T) samples (T the control sample
- * time); t must be the unit's time (t0 + k T within 1e-6 T) and h a whole
- * multiple of T (within 1e-6 T): else RR_ERR_PARAM and nothing happens.  A
+ * time); t must be the unit's time (t0 + k T within 1e-3 T: a master adding
+ * up its steps drifts by rounding) and h a whole multiple of T (within
+ * 1e-6 T and the rounding of a difference of two times): else RR_ERR_PARAM
+ * and nothing happens.  A
  * rig error at a sample stops the step there (the unit's time is that
  * sample's start, its outputs of that state) and fails the unit: further
  * steps are refused until rr_fmu_reset or rr_fmu_restore.  A command the

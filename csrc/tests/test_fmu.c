@@ -352,6 +352,9 @@ static void test_checks(const rr_fmu_config *f)
     CHECK(contains(rr_fmu_message(&m), "currentCommunicationPoint 0.008 s is not the unit's "
                    "time 0 s"), rr_fmu_message(&m));
     CHECK_STATUS(rr_fmu_do_step(&m, 0.0, 2 * T), RR_OK, "two samples");
+    CHECK_STATUS(rr_fmu_do_step(&m, 2 * T + 1e-3 * T, T), RR_ERR_PARAM, "a thousandth off");
+    CHECK_STATUS(rr_fmu_do_step(&m, 2 * T + 1e-7, 0.0), RR_ERR_PARAM, "still no zero step");
+    CHECK(m.s.k == 2, "the time a master's sum drifted to: accepted below");
     /* a torque command without a number: refused, nothing changes */
     CHECK_STATUS(rr_fmu_set(&m, RR_FMU_ENUMERATION, vr_of(f, "control.wheelset_mode"),
                             RR_FMU_WHEELSET_TORQUE), RR_OK, "torque mode");
@@ -382,6 +385,26 @@ static void test_checks(const rr_fmu_config *f)
     CHECK_STATUS(rr_fmu_reset(&m), RR_OK, "reset");
     CHECK_STATUS(rr_fmu_get(&m, RR_FMU_REAL, vr_of(f, "scenario.targets[2]"), &x), RR_OK, "g");
     CHECK(x == 0.015, "reset to the start values");
+    /* control.start changed after the outputs were asked: the rig built again */
+    CHECK_STATUS(rr_fmu_enter_init(&m, 0.0), RR_OK, "enter");
+    rr_fmu_get(&m, RR_FMU_REAL, RR_FMU_VR_RECORD + RR_REC_ROLLER_SPIN, &x);
+    CHECK(x == 31.25, "rolling");
+    CHECK_STATUS(rr_fmu_set(&m, RR_FMU_ENUMERATION, vr_of(f, "control.start"),
+                            RR_FMU_START_REST), RR_OK, "rest");
+    rr_fmu_get(&m, RR_FMU_REAL, RR_FMU_VR_RECORD + RR_REC_ROLLER_SPIN, &x);
+    CHECK(x == 0.0, "at rest");
+    CHECK_STATUS(rr_fmu_exit_init(&m), RR_OK, "exit");
+    {
+        /* a master adding up 0.004 drifts from k T: its times are taken */
+        double t = 0.0;
+        int k, st = RR_OK;
+        for (k = 0; k < 2000 && st == RR_OK; k++) {
+            st = rr_fmu_do_step(&m, t, T);
+            t += T;
+        }
+        CHECK_STATUS(st, RR_OK, "a drifting master's times");
+        CHECK(t != 2000 * T, "(it did drift)");
+    }
     rr_fmu_release(&m);
     CHECK(allocations == 0, "released");
 }
