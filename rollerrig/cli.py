@@ -184,6 +184,9 @@ def _fmu(args):
         print(text if text.startswith("rollerrig fmu") else f"rollerrig fmu: {text}",
               file=sys.stderr)
         return 2
+    except OSError as e:
+        print(f"rollerrig fmu: cannot write {args.out}: {e.strerror or e}", file=sys.stderr)
+        return 2
     return 0
 
 

@@ -121,8 +121,7 @@ def _platform_dir(fmi_version):
         raise FmuBuildError(f"rollerrig fmu: builds for 64-bit Linux and macOS only, not "
                             f"{sys.platform} {platform.machine()}")
     if fmi_version == 2:
-        return (f"{system}64" if arch == "x86_64" or system == "darwin"
-                else f"{arch}-{system}"), ext
+        return f"{system}64", ext               # FMI 2.0 names the system and word size only
     return f"{arch}-{system}", ext
 
 
@@ -311,6 +310,7 @@ def build_fmu(out, scenario=None, fmi_version=2, *, cc=None, jobs=None, cache_di
         raise RollerRigError(f"rollerrig fmu: {out} is a directory; give the FMU's file name "
                              f"(e.g. rig.fmu)")
     P, source = _scenario(scenario)
+    out.parent.mkdir(parents=True, exist_ok=True)     # before the compile: an OSError now
     identifier = model_identifier(out)
     plat, ext = _platform_dir(fmi_version)
     cc = find_compiler(cc)
@@ -360,7 +360,6 @@ def build_fmu(out, scenario=None, fmi_version=2, *, cc=None, jobs=None, cache_di
         if fmi_version == 3:
             (src / "buildDescription.xml").write_text(_build_description(identifier,
                                                                          all_files))
-        out.parent.mkdir(parents=True, exist_ok=True)
         part = out.parent / f".{out.name}.{os.getpid()}.part"
         try:
             with zipfile.ZipFile(part, "w", zipfile.ZIP_DEFLATED) as z:

@@ -441,6 +441,9 @@ def test_command_refuses_bad_input(tmp_path, monkeypatch, capsys):
     assert err.startswith("rollerrig fmu: ") and "wheelset.mass_kg" in err
     assert cli.main(["fmu", str(tmp_path)]) == 2
     assert "is a directory" in capsys.readouterr().err
+    (tmp_path / "file").write_text("")
+    assert cli.main(["fmu", str(tmp_path / "file" / "x.fmu")]) == 2
+    assert "cannot write" in capsys.readouterr().err
     monkeypatch.setenv("CC", str(tmp_path / "no-such-cc"))
     assert cli.main(["fmu", str(tmp_path / "x.fmu")]) == 2
     assert "the C compiler $CC" in capsys.readouterr().err
