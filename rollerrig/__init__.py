@@ -15,6 +15,11 @@ Profiles (numpy only):
     p.z_at(y), p.slope(y), p.curvature(y)      # y, z in m; z downward
 
 See rollerrig.contact and rollerrig.profiles for the conventions.
+
+The C core for C programs (rollerrig.capi; docs/c_api.md):
+
+    rr.get_include(), rr.get_library_dir()     # -I ..., -L ... -lrollerrig -lm
+    rr.get_source_dir(), rr.get_pkgconfig_dir()
 """
 from ._version import __version__
 from ._errors import STATUS, RollerRigError, RollerRigWarning, status_message
@@ -39,6 +44,7 @@ from . import exact_table
 from .exact_table import ExactTable, build_exact_table
 from .rig_contact import (LinearCreepages, RigContact, RigPose, WheelContact, linear_creepages,
                           rig_contact)
+from .capi import get_include, get_library_dir, get_pkgconfig_dir, get_source_dir
 
 __all__ = [
     "__version__", "RollerRigError", "RollerRigWarning", "status_message", "STATUS", "METHODS",
@@ -53,4 +59,5 @@ __all__ = [
     "exact_field", "exact_solve", "exact_richardson", "Patch", "undeformed_distance",
     "PatchShape", "patch_shape", "RigExact", "rig_exact", "exact_table", "ExactTable",
     "build_exact_table", "control", "RigSignals", "RigInfo", "CreepageController",
+    "get_include", "get_library_dir", "get_source_dir", "get_pkgconfig_dir",
 ]

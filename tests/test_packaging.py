@@ -45,6 +45,9 @@ BUILD_PRODUCTS = [
     "notebooks/.ipynb_checkpoints/rig_scenario-checkpoint.ipynb",
     "rollerrig-out/rig_history.csv",
     "build/lib/rollerrig/__init__.py",
+    "csrc/build/pic/librollerrig.so.0.1.0",
+    "rollerrig/_c/lib/librollerrig.a",
+    "rollerrig/_c/lib/pkgconfig/rollerrig.pc",
 ]
 
 
@@ -105,7 +108,8 @@ def test_sdist_has_no_build_products(sdist_members):
     _, members = sdist_members
     shipped = sorted(set(BUILD_PRODUCTS) & members)
     assert not shipped, f"build products in the sdist: {shipped}"
-    patterns = ["*.o", "*.a", "*.so", "*.pyc", "*/__pycache__/*", "csrc/build/*"]
+    patterns = ["*.o", "*.a", "*.so", "*.so.*", "*.pyc", "*/__pycache__/*", "csrc/build/*",
+                "rollerrig/_c/*"]
     products = sorted(n for n in members if any(fnmatch.fnmatch(n, p) for p in patterns))
     assert not products, products
 
@@ -274,7 +278,9 @@ def test_gitignore_covers_what_runs_leave():
     out = build_parser().parse_args(["simulate"]).out
     left = [f"{out}/rig_history.csv", "csrc/build/rr_hertz.o", ".pytest_cache/README.md",
             ".hypothesis/examples/0", "tests/__pycache__/conftest.pyc", "build/lib/x.py",
-            "dist/rollerrig-0.1.0.tar.gz", "rollerrig.egg-info/PKG-INFO"]
+            "dist/rollerrig-0.1.0.tar.gz", "rollerrig.egg-info/PKG-INFO",
+            "rollerrig/_c/lib/librollerrig.a", "rollerrig/_c/lib/pkgconfig/rollerrig.pc",
+            "csrc/build/pic/librollerrig.so.0.1.0"]
     for path in left:
         proc = subprocess.run(["git", "check-ignore", "-q", path], cwd=REPO)
         assert proc.returncode == 0, f".gitignore does not cover {path}"

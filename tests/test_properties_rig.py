@@ -552,3 +552,76 @@ def test_fit_polach_any_data_finite_or_named(cx, force, a, N, speed):
         return
     assert all(math.isfinite(v) for v in fit.params.values()), fit.params
     assert math.isfinite(fit.rms)
+
+
+# ------------------------------------------------------------------ issue 15: the loop
+
+@st.composite
+def adhesions(draw):
+    """An [adhesion] section: up to 4 schedule points (steps among them),
+    maybe A and B too, maybe a patch on either roller."""
+    n = draw(st.integers(0, 4))
+    times = sorted(draw(st.lists(st.floats(0.0, 0.05), min_size=n, max_size=n)))
+    section = {"schedule_times_s": times,
+               "schedule_mu0": draw(st.lists(log_uniform(0.02, 1.5).strategy, min_size=n,
+                                             max_size=n))}
+    if n and draw(st.booleans()):
+        section["schedule_polach_A"] = draw(st.lists(st.floats(0.05, 1.0), min_size=n,
+                                                     max_size=n))
+        section["schedule_polach_B_s_per_m"] = draw(st.lists(st.floats(0.0, 20.0),
+                                                             min_size=n, max_size=n))
+    if draw(st.booleans()):
+        section.update(patch_length_m=draw(st.floats(0.0, 1.0)),
+                       patch_start_m=draw(st.floats(0.0, 5.0)),
+                       patch_mu0=draw(log_uniform(0.02, 1.5).strategy),
+                       patch_edge_m=draw(log_uniform(1e-5, 0.5).strategy),
+                       patch_rollers=draw(st.sampled_from(("both", "left", "right"))))
+    return section
+
+
+@examples(8)
+@given(adhesion=adhesions(), method=st.sampled_from(RIG_METHODS))
+def test_simulate_any_adhesion(adhesion, method):
+    """Any schedule and patch: a finite history whose force keeps to each
+    wheel's own mu0 N (frictional methods), mu_left and mu_right inside the
+    range of the laws given."""
+    res = rr.simulate(duration=0.06, targets=[0.03], method=method,
+                      params={"adhesion": adhesion},
+                      **({"nx": 8, "ny": 8} if "nx" in rr.METHODS[method].options else {}))
+    assert res.status >= 0 or res.message.startswith("stopped at"), res.message
+    if not len(res):
+        return
+    assert_finite({f: getattr(res, f) for f in RECORD_FIELDS if f != "xi_ref"})
+    laws = [0.4] + list(adhesion["schedule_mu0"]) + [adhesion.get("patch_mu0", 0.4)]
+    for mu in (res.mu_left, res.mu_right):
+        assert np.all(mu >= min(laws) * (1 - 1e-12)) and np.all(mu <= max(laws) * (1 + 1e-12))
+    if method in FRICTIONAL:
+        limit = res.mu_left * res.normal_load_left + res.mu_right * res.normal_load_right
+        assert np.all(np.abs(res.fx) <= limit * (1 + 1e-9))
+
+
+@examples(8)
+@given(commands=st.lists(st.fixed_dictionaries({}, optional={
+           "roller_speed": st.one_of(st.floats(0.0, 60.0), wild),
+           "roller_torque": st.one_of(st.floats(-200.0, 200.0), wild),
+           "wheelset_speed": st.one_of(st.floats(0.0, 80.0), wild),
+           "wheelset_torque": st.one_of(st.floats(-200.0, 200.0), wild),
+           "xi_ref": st.one_of(st.floats(0.0, 0.2), wild)}), min_size=1, max_size=5))
+def test_any_controller_output_runs_or_is_named(commands):
+    """A controller returning any of these dicts in turn: the run finishes
+    with a finite history (the speed reference NaN under torque, as
+    documented), stops cleanly, or raises RollerRigError naming the sample,
+    with the history so far in .result."""
+    def ctl(s):
+        return commands[s.k % len(commands)]
+    try:
+        res = rr.simulate(duration=0.04, targets=[0.02], controller=ctl)
+    except RollerRigError as e:
+        assert "the controller failed at sample" in str(e)
+        assert len(e.result) < 10 and e.result.status < 0
+        return
+    if not len(res):
+        return
+    fields = {f: getattr(res, f) for f in RECORD_FIELDS if f not in ("xi_ref", "w_ref")}
+    if res.status >= 0:
+        assert_finite(fields)
