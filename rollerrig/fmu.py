@@ -21,9 +21,10 @@ Its start values are the default parameters overridden by the scenario file
 control modes an FMU run is rollerrig.simulate()'s of the same parameters,
 bit for bit.  The variables are listed in docs/fmu.md.
 
-Where the C sources come from: the core's from core_c_dirs() (the one place
-that knows), the FMU adapters' (fmi2_cs.c, fmi3_cs.c, fmi_glue.c, their
-headers and fmu_describe.c, the build's description program) from the
+Where the C sources come from: the core's (with the FMU layer, csrc/fmu/)
+from rollerrig.get_source_dir() and get_include() (core_c_dirs, the one
+place that asks), the FMU adapters' (fmi2_cs.c, fmi3_cs.c, fmi_glue.c,
+their headers and fmu_describe.c, the build's description program) from the
 package's data/fmi/.
 """
 import concurrent.futures
@@ -75,15 +76,14 @@ class FmuBuildError(RollerRigError):
 def core_c_dirs():
     """(sources, headers): the folders holding the C core's sources
     (``*/rr_*.c`` in their layer folders: util, contact, geometry, rig, fmu)
-    and its headers (``*/rr_*.h``, ``*/*.def``).  Today the checkout's
-    csrc/ for both (an editable install); with the installable C library,
-    ``(rollerrig.get_source_dir(), rollerrig.get_include())``."""
-    csrc = Path(__file__).resolve().parent.parent / "csrc"
-    if not (csrc / "rig" / "rr_rig.c").is_file():
-        raise FmuBuildError(f"rollerrig fmu: the C core's sources are not in this "
-                            f"installation (looked in {csrc}); build FMUs from a checkout "
-                            f"installed with pip install -e")
-    return csrc, csrc
+    and its headers (``*/rr_*.h``, ``*/*.def``): rollerrig.get_source_dir()
+    and rollerrig.get_include(), the wheel's copies or an editable
+    install's csrc/."""
+    from .capi import get_include, get_source_dir
+    try:
+        return Path(get_source_dir()), Path(get_include())
+    except FileNotFoundError as e:
+        raise FmuBuildError(f"rollerrig fmu: {e}") from None
 
 
 def find_compiler(cc=None):
