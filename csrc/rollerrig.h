@@ -28,6 +28,9 @@
  *   rr_rig.h       the rig in time: plant, normal loads, sampled-data control
  *   rr_rig_params.h  the rig's parameters (names, units, defaults, ranges, origins),
  *                  its scenario and its outputs, declared once
+ *   rr_fmu.h       the rig as a co-simulation unit, FMI-independent: variables with
+ *                  value references, get/set with range checks, steps, states
+ *   rr_fmu_xml.h   its modelDescription.xml (FMI 2.0 and 3.0)
  */
 #ifndef ROLLERRIG_H
 #define ROLLERRIG_H
@@ -57,5 +60,7 @@
 #include "util/rr_ode.h"
 #include "rig/rr_rig.h"
 #include "rig/rr_rig_params.h"
+#include "fmu/rr_fmu.h"
+#include "fmu/rr_fmu_xml.h"
 
 #endif

@@ -25,6 +25,7 @@ PAGE = ROOT / "docs" / "c_api.md"
 
 # top down, as docs/architecture.md; (folder, title)
 LAYERS = [
+    ("fmu", "5. The rig as a co-simulation unit"),
     ("rig", "4. The rig in time"),
     ("geometry", "3. Wheel-roller geometry and creepage"),
     ("contact", "2. Contact mechanics"),

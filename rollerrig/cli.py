@@ -1,4 +1,5 @@
-"""Command-line entry point: ``rollerrig simulate`` (also ``python -m rollerrig``).
+"""Command-line entry point: ``rollerrig simulate``, ``rollerrig fmu`` (also ``python -m
+rollerrig``).
 
 Exit status: 0 the run finished (its warnings, if any, on stderr), 1 the
 run stopped early (its outputs are still written), 2 bad input (a message on
@@ -173,6 +174,22 @@ def _exact_table(args):
     return 0
 
 
+def _fmu(args):
+    from .fmu import build_fmu
+    from ._errors import RollerRigError
+    try:
+        build_fmu(args.out, scenario=args.scenario, fmi_version=args.fmi, quiet=False)
+    except RollerRigError as e:
+        text = str(e)
+        print(text if text.startswith("rollerrig fmu") else f"rollerrig fmu: {text}",
+              file=sys.stderr)
+        return 2
+    except OSError as e:
+        print(f"rollerrig fmu: cannot write {args.out}: {e.strerror or e}", file=sys.stderr)
+        return 2
+    return 0
+
+
 def build_parser():
     parser = argparse.ArgumentParser(
         prog="rollerrig",
@@ -219,6 +236,20 @@ def build_parser():
     p.add_argument("--npz", metavar="FILE", help="also save the table as .npz")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.set_defaults(func=_exact_table)
+    p = sub.add_parser("fmu", help="write an FMI co-simulation unit (FMU) of the rig",
+                       description="Write an FMI 2.0 or 3.0 co-simulation FMU of the rig: its "
+                       "modelDescription.xml (every parameter, the control modes, inputs and "
+                       "outputs), a binary for this platform compiled with the system C "
+                       "compiler ($CC, cc, gcc or clang) and the C sources.  With its default "
+                       "inputs it runs the scenario as rollerrig simulate does.  Exit status "
+                       "0: written, 2: bad input or no compiler (a message on stderr).")
+    p.add_argument("out", metavar="OUT.fmu", help="the FMU to write (replaced if it exists); "
+                   "its name gives the modelIdentifier")
+    p.add_argument("--scenario", metavar="TOML", help="parameter file overriding the defaults "
+                   "(the layout of rollerrig/data/rig_default.toml): the FMU's start values")
+    p.add_argument("--fmi", type=int, choices=(2, 3), default=2,
+                   help="FMI version: 2 (FMI 2.0, the default) or 3 (FMI 3.0)")
+    p.set_defaults(func=_fmu)
     return parser
 
 

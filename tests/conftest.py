@@ -15,3 +15,20 @@ DATA = os.path.join(ROOT, "tests", "data")
 _BUILT = ("_core*.so", "_core*.pyd")
 if not any(glob.glob(os.path.join(ROOT, "rollerrig", pattern)) for pattern in _BUILT):
     sys.path[:] = [p for p in sys.path if os.path.abspath(p or os.curdir) != ROOT]
+
+
+import pytest  # noqa: E402
+
+
+@pytest.fixture(scope="session", autouse=True)
+def _fmu_core_cache(tmp_path_factory):
+    """One compile of the C core for every FMU the tests build (test_fmu.py,
+    the README's example): rollerrig.fmu.build_fmu's $ROLLERRIG_FMU_CACHE."""
+    if "ROLLERRIG_FMU_CACHE" in os.environ:
+        yield
+        return
+    os.environ["ROLLERRIG_FMU_CACHE"] = str(tmp_path_factory.mktemp("fmu-core"))
+    try:
+        yield
+    finally:
+        os.environ.pop("ROLLERRIG_FMU_CACHE", None)

@@ -6,7 +6,7 @@ import re
 import pytest
 
 CSRC = pathlib.Path(__file__).resolve().parents[1] / "csrc"
-LAYERS = ("util", "contact", "geometry", "rig")          # bottom to top
+LAYERS = ("util", "contact", "geometry", "rig", "fmu")   # bottom to top
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([a-z]+)/(rr_[a-z0-9_]+)\.(?:h|def)"', re.M)
 
 if not (CSRC / "util").is_dir():
