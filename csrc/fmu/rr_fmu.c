@@ -956,10 +956,6 @@ static int build(rr_fmu *m)
                                 ? 0.0 : c->roller_speed / c->roller_radius, &s->rig);
     if (st < 0)
         return fail(m, st, "the rig cannot start: %s", rr_status_message(st));
-    if (s->p.newton_model) {
-        m->ode_model = s->rig.ode.model;
-        m->ode_model_known = 1;
-    }
     s->k = 0;
     s->retune = 0;
     st = rr_rig_record(&s->rig, s->rec);
@@ -1028,11 +1024,13 @@ static int retune(rr_fmu *m)
     int st;
     if ((st = derive(m, &m->s.cfg, &p)) < 0)
         return st;
+    /* tried on the copy first: on error the unit keeps its parameters */
+    if ((st = rr_rig_rebind(&m->s.rig, &p)) < 0)
+        return st;
     m->s.p = p;
-    /* the contact evaluation the rig keeps may hold the old adhesion */
-    m->s.rig.cache_ok = m->s.rig.lin_ok = 0;
+    st = rr_rig_rebind(&m->s.rig, &m->s.p);
     m->s.retune = 0;
-    return RR_OK;
+    return st;
 }
 
 /* The command of sample k from the control modes and the inputs; *which
@@ -1324,21 +1322,13 @@ int rr_fmu_restore(rr_fmu *m, const rr_fmu_state *st)
          * integrator's model function (this process's) */
         if ((status = table_for(m, &st->cfg.c)) < 0)
             return status;
-        if (st->p.newton_model && !m->ode_model_known) {
-            rr_rig_params p = st->p;
-            rr_rig probe;
-            p.contact.table = &m->table;
-            if (rr_rig_init(&p, st->rig.y[RR_RIG_ROLLER_SPIN], &probe) < 0)
-                return fail(m, RR_ERR_PARAM, "set FMU state: the state's rig cannot start");
-            m->ode_model = probe.ode.model;
-            m->ode_model_known = 1;
-        }
     }
     m->s = *st;
     if (m->s.ready) {
         m->s.p.contact.table = &m->table;
-        m->s.rig.p = &m->s.p;
-        m->s.rig.ode.model = m->s.p.newton_model ? m->ode_model : NULL;
+        if ((status = rr_rig_rebind(&m->s.rig, &m->s.p)) < 0)
+            return fail(m, status, "set FMU state: the state's rig cannot go on: %s",
+                        rr_status_message(status));
     } else {
         m->s.p.contact.table = NULL;
         m->s.rig.p = NULL;

@@ -197,9 +197,6 @@ typedef struct {
     rr_fmu_alloc alloc;
     rr_fmu_free release;
     void *mem_ctx;
-    /* the integrator's model function of this process (rr_rig_init sets it) */
-    rr_ode_model ode_model;
-    int ode_model_known;
     char msg[RR_FMU_MSG_LEN];
 } rr_fmu;
 

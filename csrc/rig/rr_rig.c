@@ -630,6 +630,41 @@ int rr_rig_record(rr_rig *rig, double *rec)
     return status;
 }
 
+/* What the rig takes from its parameters besides its state: their pointer,
+ * the creep method's facts, the integrator's settings and model, the
+ * Jacobian's constant part; the contact evaluation it keeps is dropped.
+ * Parameters checked.  RR_ERR_RANGE (nothing changed) where the constant
+ * part overflows: a stiffness over a near-zero mass. */
+static int bind(rr_rig *rig, const rr_rig_params *p)
+{
+    double J0[NS * NS];
+    jac_const(p, J0);
+    if (!rr_all_finite(J0, NS * NS))
+        return RR_ERR_RANGE;
+    memcpy(rig->J0, J0, sizeof J0);
+    rig->p = p;
+    rig->creep_saturates = rr_creep_saturates(&p->contact.creep);
+    rig->creep_slope_scale = rr_creep_slope_scale(&p->contact.creep);
+    rig->ode.method = p->method;
+    rig->ode.newton_iters = p->newton_iters;
+    rig->ode.linear_tr = p->linear_tr;
+    rig->ode.model = p->newton_model ? model_cb : NULL;
+    /* x, y, yaw, chi, theta_r are integrals of the next five states */
+    rig->ode.nq = RR_RIG_VX;
+    /* a warning flags a stage left off by more than 0.1 % of its typical
+     * size (ytyp): a Newton iteration that does not contract.  With one
+     * iteration rr_ode has no rate to estimate the error with and takes
+     * the whole correction instead: crossing the creep force's knee (the
+     * paper's first braking transient) that reaches 0.54 % while the step
+     * stays within 0.5 % of a 20-substep, 3-iteration reference; so one
+     * iteration warns at a correction of 2 %, four times that */
+    rig->ode.newton_tol = p->newton_iters == 1 ? 2e-2 : 1e-3;
+    rig->ode.ytyp[RR_RIG_T_ROLLER] = p->roller_pi.Tmax;
+    rig->ode.ytyp[RR_RIG_T_WHEELSET] = p->wheelset_pi.Tmax;
+    rig->cache_ok = rig->lin_ok = 0;
+    return RR_OK;
+}
+
 int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig)
 {
     rr_wheelset_pose tp;
@@ -644,8 +679,6 @@ int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig)
     rig->status = RR_ERR_PARAM;
     if ((st = rr_rig_check(p)) != RR_OK)
         return rig->status = st;
-    rig->creep_saturates = rr_creep_saturates(&p->contact.creep);
-    rig->creep_slope_scale = rr_creep_slope_scale(&p->contact.creep);
     if (!isfinite(roller_speed))
         return rig->status = RR_ERR_NONFINITE;
     if ((st = rr_contact_table_lookup(p->contact.table, 0.0, &tp, 0, &cl, &cr)) != RR_OK)
@@ -665,24 +698,9 @@ int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig)
         || (st = rr_pi_reset(&p->wheelset_pi, &rig->wheelset_pi, 0.0)) != RR_OK
         || (st = rr_encoder_reset(&p->roller_enc, &rig->roller_enc, roller_speed)) != RR_OK
         || (st = rr_encoder_reset(&p->wheelset_enc, &rig->wheelset_enc, spin)) != RR_OK
-        || (st = rr_creepctl_init(&p->creepctl, &rig->creepctl, 1.0, roller_speed)) != RR_OK)
+        || (st = rr_creepctl_init(&p->creepctl, &rig->creepctl, 1.0, roller_speed)) != RR_OK
+        || (st = bind(rig, p)) != RR_OK)
         return rig->status = st;
-    rig->ode.newton_iters = p->newton_iters;
-    rig->ode.linear_tr = p->linear_tr;
-    rig->ode.model = p->newton_model ? model_cb : NULL;
-    jac_const(p, rig->J0);
-    if (!rr_all_finite(rig->J0, NS * NS))
-        return rig->status = RR_ERR_RANGE;  /* a stiffness over a near-zero mass */
-    /* x, y, yaw, chi, theta_r are integrals of the next five states */
-    rig->ode.nq = RR_RIG_VX;
-    /* a warning flags a stage left off by more than 0.1 % of its typical
-     * size (ytyp below): a Newton iteration that does not contract.  With
-     * one iteration rr_ode has no rate to estimate the error with and takes
-     * the whole correction instead: crossing the creep force's knee (the
-     * paper's first braking transient) that reaches 0.54 % while the step
-     * stays within 0.5 % of a 20-substep, 3-iteration reference; so one
-     * iteration warns at a correction of 2 %, four times that */
-    rig->ode.newton_tol = p->newton_iters == 1 ? 2e-2 : 1e-3;
     /* typical magnitudes: the integrator's finite-difference and Newton scales */
     rig->ode.ytyp[RR_RIG_X] = rig->ode.ytyp[RR_RIG_Y] = 1e-3;
     rig->ode.ytyp[RR_RIG_YAW] = 1e-3;
@@ -690,13 +708,21 @@ int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig)
     rig->ode.ytyp[RR_RIG_VX] = rig->ode.ytyp[RR_RIG_VY] = 1e-2;
     rig->ode.ytyp[RR_RIG_YAW_RATE] = 1e-2;
     rig->ode.ytyp[RR_RIG_SPIN] = rig->ode.ytyp[RR_RIG_ROLLER_SPIN] = fabs(spin) + 1.0;
-    rig->ode.ytyp[RR_RIG_T_ROLLER] = p->roller_pi.Tmax;
-    rig->ode.ytyp[RR_RIG_T_WHEELSET] = p->wheelset_pi.Tmax;
     rig->ready = 1;
     st = rr_rig_rhs(rig, 0.0, rig->y, dydt);
     if (st < 0)
         rig->ready = 0;
     return rig->status = st < 0 ? st : RR_OK;
+}
+
+int rr_rig_rebind(rr_rig *rig, const rr_rig_params *p)
+{
+    int st = rig && p ? usable(rig) : RR_ERR_NULL;
+    if (st != RR_OK)
+        return st;
+    if ((st = rr_rig_check(p)) != RR_OK)
+        return st;
+    return bind(rig, p);
 }
 
 static void signals_nan(rr_rig_signals *sig)

@@ -319,6 +319,22 @@ void rr_rig_command_builtin(rr_rig_command *cmd, double roller_ref, double xi_re
 rr_friction rr_rig_friction_at(const rr_rig_params *p, double t, int side, double s);
 
 /*
+ * rr_rig_rebind - go on from the rig's state with the parameters p: after a
+ * byte copy of an rr_rig (a co-simulation unit's state saved and restored:
+ * the copy still points at the original's parameters), or after parameters
+ * changed between samples (a tuned gain, the friction, the adhesion, the
+ * creep method's options).  The rig takes p's pointer (p must outlive it),
+ * the creep method's facts, the integrator's settings and model and the
+ * Jacobian's constant part again, and drops the contact evaluation it
+ * keeps; its state, controllers and encoders go on as they are.
+ *   given:   rig, initialised; p
+ *   status:  0; rr_rig_check's; RR_ERR_RANGE (the Jacobian's constant part
+ *            overflows); RR_ERR_NULL; the status of a rig that never
+ *            started.  On error the rig is unchanged.
+ */
+int rr_rig_rebind(rr_rig *rig, const rr_rig_params *p);
+
+/*
  * rr_rig_step - one sample: rr_rig_sample, then rr_rig_advance.
  *   given:   rig; roller_ref the roller speed reference [rad/s]; xi_ref the
  *            creepage target (controller's sense, the paper's positive

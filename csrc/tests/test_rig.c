@@ -451,6 +451,44 @@ static void test_adhesion(const rr_rig_params *good)
     CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "too many points");
 }
 
+/* A byte copy of a rig, rebound to a copy of its parameters, steps on as
+ * the original, bit for bit; a retuned gain takes effect; a bad set is
+ * refused with the rig unchanged. */
+static void test_rebind(const rr_rig_params *good)
+{
+    static rr_rig a, b, keep;
+    static rr_rig_params q, bad;
+    double ra[RR_REC_COUNT], rb[RR_REC_COUNT];
+    int k, same = 1;
+
+    CHECK_STATUS(rr_rig_init(good, 31.25, &a), RR_OK, "init");
+    for (k = 0; k < 50; k++)
+        rr_rig_step(&a, 31.25, k < 10 ? NAN : 0.03, ra);
+    q = *good;
+    memcpy(&b, &a, sizeof b);
+    CHECK_STATUS(rr_rig_rebind(&b, &q), RR_OK, "rebind the copy");
+    CHECK(b.p == &q, "the copy points at its own parameters");
+    for (k = 0; k < 100; k++) {
+        rr_rig_step(&a, 31.25, 0.03, ra);
+        rr_rig_step(&b, 31.25, 0.03, rb);
+        same &= memcmp(ra, rb, sizeof ra) == 0;
+    }
+    CHECK(same, "the copy steps on as the original, bit for bit");
+    q.creepctl.alpha = 0.0;
+    q.creepctl.beta = 0.0;
+    CHECK_STATUS(rr_rig_rebind(&b, &q), RR_OK, "retuned");
+    rr_rig_step(&b, 31.25, 0.5, rb);
+    rr_rig_step(&a, 31.25, 0.5, ra);
+    CHECK(rb[RR_REC_W_REF] != ra[RR_REC_W_REF], "the retuned gains act");
+    bad = q;
+    bad.mass = -1.0;
+    memcpy(&keep, &b, sizeof keep);
+    CHECK_STATUS(rr_rig_rebind(&b, &bad), RR_ERR_PARAM, "bad parameters refused");
+    CHECK(memcmp(&keep, &b, sizeof b) == 0, "refused: the rig unchanged");
+    CHECK_STATUS(rr_rig_rebind(NULL, &q), RR_ERR_NULL, "NULL rig");
+    CHECK_STATUS(rr_rig_rebind(&b, NULL), RR_ERR_NULL, "NULL parameters");
+}
+
 int main(void)
 {
     static rr_contact_table t;
@@ -467,5 +505,6 @@ int main(void)
     test_external_builtin(&p);
     test_external_commands(&p);
     test_adhesion(&p);
+    test_rebind(&p);
     return rr_test_summary();
 }
