@@ -51,6 +51,7 @@
 #define MAX_RADIX 9
 #define TMP_LINES (4 * MAX_RADIX)
 #define ALIGN_DOUBLES 8   /* planes start on 64-byte boundaries */
+#define CAP_OFFSET 128    /* a plane component's length mod 512 doubles */
 
 typedef ptrdiff_t idx;
 
@@ -116,26 +117,24 @@ static void unit_root(long j, long n, double *c, double *s)
  * n / 2 on, so the first stage is a half-size butterfly (or only twiddle
  * products); else last: the inverse transforms need only the first half
  * of their output, so the last stage computes half the outputs (or only
- * sums).  The other stages as few as the radices allow: 8 for factors
- * 2^3, then 4, a lone 2 as 6 with a 3 (or 2), 9 for 3^2, 3, 5; each stage
- * is one sweep over the data, the larger radices also take fewer
- * twiddle products. */
-static int plan_radices(int n, int fwd, int *radix)
+ * sums).  The other stages as few as the radices allow: 4s, or 8 for
+ * factors 2^3 where that saves a stage, a lone 2 as 6 with a 3 (or 2), 9
+ * for 3^2, 3, 5; each stage is one sweep over the data, the larger
+ * radices also take fewer twiddle products.  Radix 8 only where it saves
+ * a stage: at the same number of stages 4s were faster (64 = 4 4 4 takes
+ * 8 % less than 4 8 2 at a 31 x 31 grid, 96 = 4 4 6 4 % less than 4 8 3:
+ * eight input lines 4 KB apart share a cache set). */
+static int inner_radices(int a, int b, int c, int use8, int *radix)
 {
-    int a = 0, b = 0, c = 0, k = 0, i, lead, t;
-    while (n % 2 == 0) { n /= 2; a++; }
-    while (n % 3 == 0) { n /= 3; b++; }
-    while (n % 5 == 0) { n /= 5; c++; }
-    if (n != 1)
-        return -1;
-    lead = a >= 2 ? 4 : a == 1 ? 2 : 0;
-    a -= lead == 4 ? 2 : lead == 2 ? 1 : 0;
-    /* fewer, larger stages: 8 = 2^3, 6 = 2 x 3 for a lone 2, 9 = 3^2 */
-    for (i = 0; i < a / 3; i++)
-        radix[k++] = 8;
-    a %= 3;
-    if (a == 2)
+    int k = 0, i;
+    if (use8) {
+        for (i = 0; i < a / 3; i++)
+            radix[k++] = 8;
+        a %= 3;
+    }
+    for (i = 0; i < a / 2; i++)
         radix[k++] = 4;
+    a %= 2;
     if (a == 1 && b > 0) {
         radix[k++] = 6;
         b--;
@@ -148,6 +147,24 @@ static int plan_radices(int n, int fwd, int *radix)
         radix[k++] = 3;
     for (i = 0; i < c; i++)
         radix[k++] = 5;
+    return k;
+}
+
+static int plan_radices(int n, int fwd, int *radix)
+{
+    int a = 0, b = 0, c = 0, k = 0, i, lead, t;
+    while (n % 2 == 0) { n /= 2; a++; }
+    while (n % 3 == 0) { n /= 3; b++; }
+    while (n % 5 == 0) { n /= 5; c++; }
+    if (n != 1)
+        return -1;
+    lead = a >= 2 ? 4 : a == 1 ? 2 : 0;
+    a -= lead == 4 ? 2 : lead == 2 ? 1 : 0;
+    k = inner_radices(a, b, c, 1, radix);
+    if (inner_radices(a, b, c, 0, radix) > k)
+        k = inner_radices(a, b, c, 1, radix);
+    else
+        k = inner_radices(a, b, c, 0, radix);
     if (fwd) {
         if (lead) {
             for (i = k; i > 0; i--)
@@ -1171,6 +1188,11 @@ static size_t layout(int mx, int my, int *L1, int *L2, size_t *cap)
     /* planes hold L1 L2 values; rounded up so that the im part is aligned */
     c = (size_t)*L1 * (size_t)*L2;
     c = (c + ALIGN_DOUBLES - 1) / ALIGN_DOUBLES * ALIGN_DOUBLES;
+    /* and to 128 past a multiple of 4 KB (512 doubles), so that the four
+     * scratch arrays start 1 KB apart in the cache's sets: a 64 x 64 torus
+     * put them 32 KB apart, and a product's lines of all four then
+     * fought over the same sets (apply2 at 31 x 31 took 28 us, now 17) */
+    c += (CAP_OFFSET + 512 - c % 512) % 512;
     *cap = c;
     n = 2 * plan_tw_len(*L1) + 2 * plan_tw_len(*L2) + vmax + TMP_LINES * vmax + 4 * c
         + 3 * ALIGN_DOUBLES;
