@@ -14,7 +14,9 @@
 #define GMRES_M 30
 /* The workspace's header: a tag, then the key of the cached spectra. */
 #define HDR_LEN 8
-#define HDR_TAG 20261202.5
+/* the stencils of the inverse operators (inverse_stencils), kept with the spectra */
+#define STN_LEN 24
+#define HDR_TAG 20261204.5
 /* The key of the cached normal solution: a tag, the problem's numbers, then
  * its status, approach and residual. */
 #define NKEY_LEN 20
@@ -25,14 +27,16 @@ enum { OUTSIDE = -1, ADHESION = 0, SLIP = 1 };
 /* Pointers into the caller's workspace (rr_exact_workspace_len). */
 typedef struct {
     int mx, my, n;
-    double *hdr;
+    double *hdr, *stn;
     double *nkey, *pn_cache, *h_cache;     /* the last normal problem and its solution */
     double *conv;
     size_t conv_len;
     double *snn, *sxx, *syy, *sxy;        /* kernel spectra */
     double *ta, *tb, *tr, *kern, *kern2;  /* coefficient tables (while building) */
-    double *h, *pn, *gap, *r, *rold, *d, *v;          /* normal problem */
+    double *spinv, *sp2, *sp3;            /* inverse spectra (while building) */
+    double *h, *pn, *gap, *r, *rold, *d, *v, *z;      /* normal problem */
     double *p, *s, *w, *f, *nz, *fac, *dlt, *mdl, *t1, *t2;   /* tangential, 2n each */
+    double *halo;                                      /* two planes with a border */
     double *V, *MV, *H, *gv, *cs, *sn, *y;            /* GMRES */
     signed char *state;
 } layout;
@@ -52,17 +56,27 @@ static size_t carve(layout *L, int mx, int my, double *base)
 {
     const size_t n = (size_t)mx * (size_t)my, n2 = 2 * n;
     const size_t conv_len = rr_conv2d_workspace_len(mx, my);
-    size_t spec_len, off = 0;
+    size_t spec_len, tab_len, torus_len, kern_len, off = 0;
 
 #define TAKE(ptr, len) do { (ptr) = base ? base + off : NULL; off += (len); } while (0)
     memset(L, 0, sizeof *L);
     if (conv_len == 0)
         return 0;
     spec_len = spectrum_len(mx, my);
+    {
+        /* the boxes' table reaches the torus's far offsets L / 2 (build_spectra) */
+        const size_t L1 = (size_t)rr_fft_good_size(2 * mx - 1), L2 = (size_t)rr_fft_good_size(2 * my - 1);
+        const size_t nkx = (size_t)mx + 1 > L1 / 2 + 1 ? (size_t)mx + 1 : L1 / 2 + 1;
+        const size_t nky = (size_t)my > L2 / 2 + 1 ? (size_t)my : L2 / 2 + 1;
+        tab_len = nkx * nky;
+        torus_len = L1 * L2;
+        kern_len = (size_t)(2 * mx - 1) * (size_t)(2 * my - 1);
+    }
     L->mx = mx;
     L->my = my;
     L->n = (int)n;
     TAKE(L->hdr, HDR_LEN);
+    TAKE(L->stn, STN_LEN);
     TAKE(L->nkey, NKEY_LEN);
     TAKE(L->pn_cache, n);
     TAKE(L->h_cache, n);
@@ -72,11 +86,14 @@ static size_t carve(layout *L, int mx, int my, double *base)
     TAKE(L->sxx, spec_len);
     TAKE(L->syy, spec_len);
     TAKE(L->sxy, spec_len);
-    TAKE(L->ta, (size_t)(mx + 1) * my);
-    TAKE(L->tb, (size_t)(mx + 1) * my);
-    TAKE(L->tr, (size_t)(mx + 1) * my);
-    TAKE(L->kern, (size_t)(2 * mx - 1) * (2 * my - 1));
-    TAKE(L->kern2, (size_t)(2 * mx - 1) * (2 * my - 1));
+    TAKE(L->ta, tab_len);
+    TAKE(L->tb, tab_len);
+    TAKE(L->tr, tab_len);
+    TAKE(L->kern, kern_len > torus_len ? kern_len : torus_len);
+    TAKE(L->kern2, kern_len > spec_len ? kern_len : spec_len);
+    TAKE(L->spinv, spec_len);
+    TAKE(L->sp2, spec_len);
+    TAKE(L->sp3, spec_len);
     TAKE(L->h, n);
     TAKE(L->pn, n);
     TAKE(L->gap, n);
@@ -84,6 +101,7 @@ static size_t carve(layout *L, int mx, int my, double *base)
     TAKE(L->rold, n);
     TAKE(L->d, n);
     TAKE(L->v, n);
+    TAKE(L->z, n);
     TAKE(L->p, n2);
     TAKE(L->s, n2);
     TAKE(L->w, n2);
@@ -94,6 +112,7 @@ static size_t carve(layout *L, int mx, int my, double *base)
     TAKE(L->mdl, n2);
     TAKE(L->t1, n2);
     TAKE(L->t2, n2);
+    TAKE(L->halo, 2 * (size_t)(mx + 2) * (size_t)(my + 2));
     TAKE(L->V, (GMRES_M + 1) * n2);
     TAKE(L->MV, GMRES_M * n2);
     TAKE(L->H, (GMRES_M + 1) * GMRES_M);
@@ -143,52 +162,239 @@ int rr_exact_hertz_grid(double a, double b, int nx, int ny, rr_exact_grid *g)
 
 /* ---- kernels -------------------------------------------------------------- */
 
-/* The spectra of the normal kernel A_nn/dx and of the steady tangential one
- * (A(k) - A(k + e_x))/dx, for the grid shape (mx, my, dy/dx) and nu; kept
- * in the workspace and rebuilt only when the key changes. */
+/* The values at offsets (0, 0), (1, 0), (0, 1), (1, 1) of the real kernel
+ * whose symbol (not scaled: the transform of the kernel) is (re, im) over
+ * the half torus (index kx nh + ky, ky < nh, as rr_conv2d's spectra):
+ * K(o) = 1/(L1 L2) sum over the torus of S e^(i w.o), the lines ky and
+ * L2 - ky summed as one (twice the real part).  cx, sx: cos and sin of
+ * 2 pi kx / L1; cy, sy of 2 pi ky / L2. */
+static void kernel_near_origin(int L1, int L2, const double *re, const double *im,
+                               const double *cx, const double *sx, const double *cy,
+                               const double *sy, double out[4])
+{
+    const int nh = L2 / 2 + 1;
+    double k00 = 0.0, k10 = 0.0, k01 = 0.0, k11 = 0.0;
+    int a, b;
+    for (a = 0; a < L1; a++) {
+        const double *r = re + (size_t)a * nh, *i = im + (size_t)a * nh;
+        double p0r = 0.0, p0i = 0.0, p1r = 0.0, p1i = 0.0;
+        for (b = 0; b < nh; b++) {
+            const double w = (b == 0 || 2 * b == L2) ? 1.0 : 2.0;
+            p0r += w * r[b];
+            p0i += w * i[b];
+            p1r += w * (r[b] * cy[b] - i[b] * sy[b]);
+            p1i += w * (r[b] * sy[b] + i[b] * cy[b]);
+        }
+        k00 += p0r;
+        k01 += p1r;
+        k10 += p0r * cx[a] - p0i * sx[a];
+        k11 += p1r * cx[a] - p1i * sx[a];
+    }
+    out[0] = k00 / ((double)L1 * L2);
+    out[1] = k10 / ((double)L1 * L2);
+    out[2] = k01 / ((double)L1 * L2);
+    out[3] = k11 / ((double)L1 * L2);
+}
+
+/* 1 if the symbol of the even stencil s (centre, (1, 0), (0, 1), (1, 1)),
+ * s0 + 2 s1 cos wx + 2 s2 cos wy + 4 s3 cos wx cos wy, is positive: it is
+ * bilinear in the cosines, so least at a corner. */
+static int stencil_positive(const double *s)
+{
+    return s[0] + 2.0 * s[1] + 2.0 * s[2] + 4.0 * s[3] > 0.0
+           && s[0] - 2.0 * s[1] + 2.0 * s[2] - 4.0 * s[3] > 0.0
+           && s[0] + 2.0 * s[1] - 2.0 * s[2] - 4.0 * s[3] > 0.0
+           && s[0] - 2.0 * s[1] - 2.0 * s[2] + 4.0 * s[3] > 0.0;
+}
+
+/* The 3 x 3 stencils nearest the inverses of the half-space's operators,
+ * for the preconditioners: the inverse symbols on the torus, transformed
+ * back at the offsets -1 .. 1.  The half-space's symbol grows as 1/|w| at
+ * low frequencies, so the inverse decays fast and these few values carry
+ * most of it; it must be the symbol of the kernel on the whole torus
+ * (the grid's offsets alone, zero beyond, leave it negative somewhere).
+ * Given the symbols (scaled as rr_conv2d's spectra) of A_nn in snn and of
+ * the symmetric tangential block in sp2 (xx), sp3 (yy), spinv (xy) (the
+ * three overwritten); stn[0..3] Snn (centre, (1, 0), (0, 1), (1, 1)),
+ * stn[4] = 1 where usable; stn[8..11] Sxx, stn[12..15] Syy, stn[16] Sxy at
+ * (1, 1) (odd in x and in y), stn[17] = 1 where usable.  Not usable: grids
+ * under 3 x 3, a symbol with a zero, or a stencil whose symbol is not
+ * positive (definite). */
+static void inverse_stencils(layout *L, const rr_conv2d *cv)
+{
+    const int L1 = cv->L1, L2 = cv->L2, nh = cv->nh;
+    const size_t half = (size_t)L1 * nh;
+    const double sc = 2.0 * L1 * L2;
+    double *stn = L->stn, *cx = L->kern, *sx = cx + L1, *cy = sx + L1, *sy = cy + nh;
+    double *nr = L->kern2, *ni = nr + half, t[4];
+    size_t i;
+    int a, usable_n = 1, usable_t = 1;
+
+    memset(stn, 0, STN_LEN * sizeof *stn);
+    if (L->mx < 3 || L->my < 3)
+        return;
+    for (a = 0; a < L1; a++) {
+        cx[a] = cos(2.0 * RR_PI * a / L1);
+        sx[a] = sin(2.0 * RR_PI * a / L1);
+    }
+    for (a = 0; a < nh; a++) {
+        cy[a] = cos(2.0 * RR_PI * a / L2);
+        sy[a] = sin(2.0 * RR_PI * a / L2);
+    }
+    for (i = 0; i < half; i++) {
+        /* 1 / nn; [[a, b], [b, d]]^-1 = [[d, -b], [-b, a]] / (a d - b b) */
+        const double re = L->snn[i] * sc, im = L->snn[half + i] * sc, m = re * re + im * im;
+        const double ar = L->sp2[i] * sc, ai = L->sp2[half + i] * sc;
+        const double dr = L->sp3[i] * sc, di = L->sp3[half + i] * sc;
+        const double br = L->spinv[i] * sc, bi = L->spinv[half + i] * sc;
+        const double er = ar * dr - ai * di - (br * br - bi * bi);
+        const double ei = ar * di + ai * dr - 2.0 * br * bi, me = er * er + ei * ei;
+        const double fr = er / me, fi = -ei / me;
+        usable_n &= m > 0.0 && isfinite(m);
+        usable_t &= me > 0.0 && isfinite(me);
+        nr[i] = re / m;
+        ni[i] = -im / m;
+        L->sp2[i] = dr * fr - di * fi;
+        L->sp2[half + i] = dr * fi + di * fr;
+        L->sp3[i] = ar * fr - ai * fi;
+        L->sp3[half + i] = ar * fi + ai * fr;
+        L->spinv[i] = -(br * fr - bi * fi);
+        L->spinv[half + i] = -(br * fi + bi * fr);
+    }
+    if (usable_n) {
+        kernel_near_origin(L1, L2, nr, ni, cx, sx, cy, sy, stn);
+        stn[4] = stencil_positive(stn) && rr_all_finite(stn, 4);
+    }
+    if (usable_t) {
+        kernel_near_origin(L1, L2, L->sp2, L->sp2 + half, cx, sx, cy, sy, stn + 8);
+        kernel_near_origin(L1, L2, L->sp3, L->sp3 + half, cx, sx, cy, sy, stn + 12);
+        kernel_near_origin(L1, L2, L->spinv, L->spinv + half, cx, sx, cy, sy, t);
+        stn[16] = t[3];
+        /* positive definite where sampled: diagonals positive, and their
+         * product above the square of the coupling -4 Sxy sin wx sin wy
+         * (at most 16 Sxy^2) */
+        stn[17] = stencil_positive(stn + 8) && stencil_positive(stn + 12)
+                  && rr_all_finite(stn + 8, 9);
+        if (stn[17] != 0.0) {
+            int p, q;
+            for (p = 0; p <= 8 && stn[17] != 0.0; p++)
+                for (q = 0; q <= 8; q++) {
+                    const double wx = RR_PI * p / 8.0, wy = RR_PI * q / 8.0;
+                    const double c1 = cos(wx), c2 = cos(wy);
+                    const double xx = stn[8] + 2.0 * stn[9] * c1 + 2.0 * stn[10] * c2
+                                      + 4.0 * stn[11] * c1 * c2;
+                    const double yy = stn[12] + 2.0 * stn[13] * c1 + 2.0 * stn[14] * c2
+                                      + 4.0 * stn[15] * c1 * c2;
+                    const double xy = -4.0 * stn[16] * sin(wx) * sin(wy);
+                    if (!(xx * yy > xy * xy)) {
+                        stn[17] = 0.0;
+                        break;
+                    }
+                }
+        }
+    }
+}
+
+/* The kernels' spectra for the grid shape (mx, my, dy/dx) and nu: the
+ * normal A_nn/dx and the steady tangential (A(k) - A(k + e_x))/dx, and
+ * the preconditioners' stencils (inverse_stencils); kept in the workspace
+ * and rebuilt only when the key changes.  Three transforms: the
+ * primitives' boxes ta, tb, tr on the whole torus, of which every kernel is
+ * a sum (rr_influence.h); the steady kernel's symbol is the symmetric one's
+ * times 1 - e^(i wx) (the shift by one element, exact where the torus
+ * holds offset mx: L1 >= 2 mx; else its kernel is transformed itself). */
 static int build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu)
 {
-    const int mx = L->mx, my = L->my, nkx = mx + 1, kw = 2 * mx - 1;
-    int st, kx, ky;
+    const int mx = L->mx, my = L->my, L1 = cv->L1, L2 = cv->L2, nh = cv->nh;
+    const int nkx = mx + 1 > L1 / 2 + 1 ? mx + 1 : L1 / 2 + 1;
+    const int nky = my > L2 / 2 + 1 ? my : L2 / 2 + 1;
+    const size_t half = (size_t)L1 * nh;
+    const double c = 1.0 / RR_PI;
+    int st, kx, ky, q;
+    size_t i;
 
     if (L->hdr[0] == HDR_TAG && L->hdr[1] == mx && L->hdr[2] == my && L->hdr[3] == aspect
         && L->hdr[4] == nu)
         return RR_OK;
     L->hdr[0] = 0.0;
-    st = rr_influence_boxes(nkx, my, 1.0, aspect, L->ta, L->tb, L->tr);
+    st = rr_influence_boxes(nkx, nky, 1.0, aspect, L->ta, L->tb, L->tr);
     if (st < 0)
         return st;
 #define QA(i, j) (L->ta[(j) * nkx + (i)])
 #define QB(i, j) (L->tb[(j) * nkx + (i)])
 #define QR(i, j) (L->tr[(j) * nkx + (i)])
-    /* two kernels a table: (nn, xy), then (xx, yy) */
-    for (ky = -(my - 1); ky < my; ky++)
-        for (kx = -(mx - 1); kx < mx; kx++) {
-            /* A_xy is odd in kx and ky: sign(k) [[r]](|k|), 0 on the axes */
-            const int i0 = abs(kx), i1 = abs(kx + 1), j = abs(ky);
-            const double sy = (ky > 0) - (ky < 0);
-            const double s0 = (kx > 0) - (kx < 0), s1 = (kx + 1 > 0) - (kx + 1 < 0);
-            const size_t k = (size_t)(ky + my - 1) * kw + (kx + mx - 1);
-            L->kern[k] = (1.0 - nu) / RR_PI * (QA(i0, j) + QB(i0, j));
-            L->kern2[k] = -nu / RR_PI * sy * (s0 * QR(i0, j) - s1 * QR(i1, j));
-        }
-    if ((st = rr_conv2d_spectrum(cv, L->kern, L->snn)) < 0
-        || (st = rr_conv2d_spectrum(cv, L->kern2, L->sxy)) < 0)
-        return st;
-    for (ky = -(my - 1); ky < my; ky++)
-        for (kx = -(mx - 1); kx < mx; kx++) {
-            const int i0 = abs(kx), i1 = abs(kx + 1), j = abs(ky);
-            const double da = QA(i0, j) - QA(i1, j), db = QB(i0, j) - QB(i1, j);
-            const size_t k = (size_t)(ky + my - 1) * kw + (kx + mx - 1);
-            L->kern[k] = ((1.0 - nu) * da + db) / RR_PI;
-            L->kern2[k] = (da + (1.0 - nu) * db) / RR_PI;
-        }
-    if ((st = rr_conv2d_spectrum(cv, L->kern, L->sxx)) < 0
-        || (st = rr_conv2d_spectrum(cv, L->kern2, L->syy)) < 0)
-        return st;
+    /* ta, tb, tr on the whole torus (tr odd in x and y) */
+    for (q = 0; q < 3; q++) {
+        double *spec = q == 0 ? L->sp2 : q == 1 ? L->sp3 : L->spinv;
+        for (ky = 0; ky < L2; ky++)
+            for (kx = 0; kx < L1; kx++) {
+                const int ox = kx <= L1 / 2 ? kx : kx - L1, oy = ky <= L2 / 2 ? ky : ky - L2;
+                const int i0 = abs(ox), j = abs(oy);
+                const double sg = (double)((ox > 0) - (ox < 0)) * ((oy > 0) - (oy < 0));
+                L->kern[(size_t)ky * L1 + kx] = q == 0 ? QA(i0, j) : q == 1 ? QB(i0, j)
+                                                                     : sg * QR(i0, j);
+            }
+        if ((st = rr_conv2d_spectrum_torus(cv, L->kern, spec)) < 0)
+            return st;
+    }
+    /* every kernel a sum of the three, the steady ones shifted */
+    for (i = 0; i < half; i++) {
+        const double ar = L->sp2[i], ai = L->sp2[half + i], br = L->sp3[i], bi = L->sp3[half + i];
+        const double rr = L->spinv[i], ri = L->spinv[half + i];
+        const int a = (int)(i / nh);
+        /* 1 - e^(i wx) */
+        const double fr = 1.0 - cos(2.0 * RR_PI * a / L1), fi = -sin(2.0 * RR_PI * a / L1);
+        const double xr = c * ((1.0 - nu) * ar + br), xi = c * ((1.0 - nu) * ai + bi);
+        const double yr = c * (ar + (1.0 - nu) * br), yi = c * (ai + (1.0 - nu) * bi);
+        const double zr = -nu * c * rr, zi = -nu * c * ri;
+        L->snn[i] = (1.0 - nu) * c * (ar + br);
+        L->snn[half + i] = (1.0 - nu) * c * (ai + bi);
+        L->sxx[i] = xr * fr - xi * fi;
+        L->sxx[half + i] = xr * fi + xi * fr;
+        L->syy[i] = yr * fr - yi * fi;
+        L->syy[half + i] = yr * fi + yi * fr;
+        L->sxy[i] = zr * fr - zi * fi;
+        L->sxy[half + i] = zr * fi + zi * fr;
+        L->sp2[i] = xr;
+        L->sp2[half + i] = xi;
+        L->sp3[i] = yr;
+        L->sp3[half + i] = yi;
+        L->spinv[i] = zr;
+        L->spinv[half + i] = zi;
+    }
+    if (L1 < 2 * mx) {
+        /* the steady kernels themselves, on the grid's offsets */
+        const int kw = 2 * mx - 1;
+        for (ky = -(my - 1); ky < my; ky++)
+            for (kx = -(mx - 1); kx < mx; kx++) {
+                const int i0 = abs(kx), i1 = abs(kx + 1), j = abs(ky);
+                const double da = QA(i0, j) - QA(i1, j), db = QB(i0, j) - QB(i1, j);
+                const size_t k = (size_t)(ky + my - 1) * kw + (kx + mx - 1);
+                L->kern[k] = ((1.0 - nu) * da + db) / RR_PI;
+                L->kern2[k] = (da + (1.0 - nu) * db) / RR_PI;
+            }
+        if ((st = rr_conv2d_spectrum(cv, L->kern, L->sxx)) < 0
+            || (st = rr_conv2d_spectrum(cv, L->kern2, L->syy)) < 0)
+            return st;
+        for (ky = -(my - 1); ky < my; ky++)
+            for (kx = -(mx - 1); kx < mx; kx++) {
+                /* A_xy is odd in kx and ky: sign(k) [[r]](|k|), 0 on the axes */
+                const int i0 = abs(kx), i1 = abs(kx + 1), j = abs(ky);
+                const double sy = (ky > 0) - (ky < 0);
+                const double s0 = (kx > 0) - (kx < 0), s1 = (kx + 1 > 0) - (kx + 1 < 0);
+                const size_t k = (size_t)(ky + my - 1) * kw + (kx + mx - 1);
+                L->kern[k] = -nu / RR_PI * sy * (s0 * QR(i0, j) - s1 * QR(i1, j));
+            }
+        if ((st = rr_conv2d_spectrum(cv, L->kern, L->sxy)) < 0)
+            return st;
+    }
 #undef QA
 #undef QB
 #undef QR
+    if (!rr_all_finite(L->snn, (int)(2 * half)) || !rr_all_finite(L->sxx, (int)(2 * half))
+        || !rr_all_finite(L->syy, (int)(2 * half)) || !rr_all_finite(L->sxy, (int)(2 * half)))
+        return RR_ERR_RANGE;
+    inverse_stencils(L, cv);
     L->hdr[1] = mx;
     L->hdr[2] = my;
     L->hdr[3] = aspect;
@@ -204,6 +410,53 @@ static double steady_diagonal(double aspect, double nu)
     rr_influence_at(0, 0, 1.0, aspect, nu, a0);
     rr_influence_at(1, 0, 1.0, aspect, nu, a1);
     return 0.5 * ((a0[1] - a1[1]) + (a0[2] - a1[2]));
+}
+
+/* ---- the stencils' products ------------------------------------------------- */
+
+/* The 3 x 3 stencil s (even: centre, (1, 0), (0, 1), (1, 1)) applied to
+ * the field in the halo plane h (the grid with a border of zeros, rows of
+ * mx + 2) at its element q. */
+#define STENCIL3(s, h, q, w)                                                           \
+    ((s)[0] * (h)[q] + (s)[1] * ((h)[(q) - 1] + (h)[(q) + 1])                         \
+     + (s)[2] * ((h)[(q) - (w)] + (h)[(q) + (w)])                                      \
+     + (s)[3] * ((h)[(q) - (w) - 1] + (h)[(q) - (w) + 1] + (h)[(q) + (w) - 1] + (h)[(q) + (w) + 1]))
+/* the odd-odd one at (1, 1): S(o) = s sign(ox) sign(oy), out(i) = sum S(o) in(i - o) */
+#define STENCIL3_XY(s, h, q, w)                                                        \
+    ((s) * ((h)[(q) + (w) + 1] - (h)[(q) + (w) - 1] - (h)[(q) - (w) + 1] + (h)[(q) - (w) - 1]))
+
+/* in (n values, a component) into the halo plane h, 0 where state is not
+ * keep (keep = ADHESION), or everywhere outside the contact (keep = -2) */
+static void to_halo(const layout *L, const double *in, int keep, double *h)
+{
+    const int mx = L->mx, my = L->my, w = mx + 2;
+    int i, j;
+    memset(h, 0, (size_t)w * sizeof *h);
+    memset(h + (size_t)(my + 1) * w, 0, (size_t)w * sizeof *h);
+    for (j = 0; j < my; j++) {
+        const signed char *st = L->state + j * mx;
+        const double *a = in + j * mx;
+        double *o = h + (size_t)(j + 1) * w;
+        o[0] = o[mx + 1] = 0.0;
+        for (i = 0; i < mx; i++)
+            o[i + 1] = (keep == ADHESION ? st[i] == ADHESION : st[i] != OUTSIDE) ? a[i] : 0.0;
+    }
+}
+
+/* z = S r on the contact set, S the normal operator's inverse stencil (r
+ * is 0 outside the contact set) */
+static void normal_stencil(const layout *L, const double *r, double *z)
+{
+    const int mx = L->mx, my = L->my, w = mx + 2;
+    const double *s = L->stn;
+    double *h = L->halo;
+    int i, j;
+    to_halo(L, r, -2, h);
+    for (j = 0; j < my; j++)
+        for (i = 0; i < mx; i++) {
+            const int k = j * mx + i, q = (j + 1) * w + i + 1;
+            z[k] = L->state[k] != OUTSIDE ? STENCIL3(s, h, q, w) : 0.0;
+        }
 }
 
 /* ---- the normal problem ---------------------------------------------------- */
@@ -307,8 +560,12 @@ static int start_from_h(const rr_exact_problem *pb, layout *L, const double *h, 
 
 /* NormCG: min 1/2 p.Ap + h.p over p >= 0 with dA sum p = N; the approach is
  * the multiplier, eliminated by keeping every search direction mean-free on
- * the contact set C.  Returns the status; res gets delta, the products and
- * the residual. */
+ * the contact set C.  Preconditioned, as Vollebregt's NormCG, by an
+ * approximate inverse of A restricted to C and made mean-free there: here
+ * the 3 x 3 stencil of the inverse (inverse_stencils), which costs a
+ * stencil instead of a product and took the products on the 300 random
+ * cases from 18.4 to 10.0 at 27 across, 20.7 to 10.8 at 45.  Returns the
+ * status; res gets delta, the products and the residual. */
 static int solve_normal(solver *S, rr_exact_result *res)
 {
     const rr_exact_problem *pb = S->pb;
@@ -316,9 +573,9 @@ static int solve_normal(solver *S, rr_exact_result *res)
     const int n = L->n;
     const double dA = pb->grid.dx * pb->grid.dy;
     double *h = L->h, *p = L->pn, *g = L->gap, *r = L->r, *rold = L->rold, *d = L->d,
-           *v = L->v;
+           *v = L->v, *z = L->stn[4] != 0.0 ? L->z : L->r;
     signed char *in = L->state;
-    double hmin = HUGE_VAL, hmax = -HUGE_VAL, delta = 0.0, rr_old = 0.0, step_rms = HUGE_VAL;
+    double hmin = HUGE_VAL, hmax = -HUGE_VAL, delta = 0.0, rz_old = 0.0, step_rms = HUGE_VAL;
     double h0;
     rr_hertz_result hz;
     int k, cnt, restart = 1, st, converged = 0;
@@ -360,25 +617,35 @@ static int solve_normal(solver *S, rr_exact_result *res)
         return st;
 
     while (S->products < pb->maxit) {
-        double rr = 0.0, rrold = 0.0, rd = 0.0, dv = 0.0, alpha, beta, psum = 0.0, p2 = 0.0,
+        double rz = 0.0, rzold = 0.0, rd = 0.0, dv = 0.0, alpha, beta, psum = 0.0, p2 = 0.0,
                s2 = 0.0;
         int changed = 0, nc;
 
         delta = mean_on(g, in, n, &nc);
-        for (k = 0; k < n; k++) {
+        for (k = 0; k < n; k++)
             r[k] = in[k] != OUTSIDE ? delta - g[k] : 0.0;
-            rr += r[k] * r[k];
-            if (!restart)
-                rrold += r[k] * rold[k];
+        /* z: the preconditioned residual (z = r without a stencil) */
+        if (L->stn[4] != 0.0) {
+            double zm;
+            normal_stencil(L, r, z);
+            zm = mean_on(z, in, n, &nc);
+            for (k = 0; k < n; k++)
+                if (in[k] != OUTSIDE)
+                    z[k] -= zm;
         }
-        if (rr == 0.0) {
+        for (k = 0; k < n; k++) {
+            rz += r[k] * z[k];
+            if (!restart)
+                rzold += z[k] * rold[k];
+        }
+        if (rz == 0.0) {
             converged = 1;
             break;
         }
         /* Polak-Ribiere, reset to steepest descent after a change of C */
-        beta = restart ? 0.0 : fmax(0.0, (rr - rrold) / rr_old);
+        beta = restart ? 0.0 : fmax(0.0, (rz - rzold) / rz_old);
         for (k = 0; k < n; k++) {
-            d[k] = in[k] != OUTSIDE ? r[k] + beta * d[k] : 0.0;
+            d[k] = in[k] != OUTSIDE ? z[k] + beta * d[k] : 0.0;
             rold[k] = r[k];
         }
         /* mean-free on C to round-off, so that the load stays N */
@@ -388,7 +655,7 @@ static int solve_normal(solver *S, rr_exact_result *res)
                 if (in[k] != OUTSIDE)
                     d[k] -= dm;
         }
-        rr_old = rr;
+        rz_old = rz;
         restart = 0;
         if ((st = normal_product(S, d, v)) < 0)
             return st;
@@ -467,7 +734,7 @@ static int tang_product(solver *S, const double *p, double *out)
     return st < 0 ? RR_ERR_RANGE : st;
 }
 
-/* The preconditioner: out = P in, the inverse of the upwind difference
+/* The preconditioner's first part: out = P in, the inverse of the upwind difference
  * along each row from the leading edge (+x) down, which turns the steady
  * operator into the symmetric half-space one where elements adhere; a
  * slipping element takes its upstream neighbour's value only along the
@@ -502,6 +769,41 @@ static void precondition(const layout *L, const double *in, double *out)
             }
         }
     }
+}
+
+/* The tangential preconditioner's second part: out = c S in on the
+ * adhering elements, S the symmetric tangential operator's inverse
+ * stencil, on the values of adhering elements alone; out = in elsewhere.
+ * After the inverse upwind difference (precondition) the steady operator
+ * acts on adhering elements as the symmetric one, and S undoes most of
+ * that (GMRES took 27 % fewer products on the 300 random cases at 27
+ * across, 30 % at 45).  c: 0.8 G / rho, the fewest products of 0.5 to
+ * 4 times G / rho. */
+static void tang_stencil(const layout *L, double c, const double *in, double *out)
+{
+    const int mx = L->mx, my = L->my, n = L->n, w = mx + 2;
+    const size_t hn = (size_t)w * (my + 2);
+    const double *sxx = L->stn + 8, *syy = L->stn + 12, sxy = L->stn[16];
+    double *hx = L->halo, *hy = L->halo + hn;
+    int i, j;
+    if (L->stn[17] == 0.0) {
+        if (out != in)
+            memcpy(out, in, (size_t)(2 * n) * sizeof *out);
+        return;
+    }
+    to_halo(L, in, ADHESION, hx);
+    to_halo(L, in + n, ADHESION, hy);
+    for (j = 0; j < my; j++)
+        for (i = 0; i < mx; i++) {
+            const int k = j * mx + i, q = (j + 1) * w + i + 1;
+            if (L->state[k] == ADHESION) {
+                out[k] = c * (STENCIL3(sxx, hx, q, w) + STENCIL3_XY(sxy, hy, q, w));
+                out[k + n] = c * (STENCIL3(syy, hy, q, w) + STENCIL3_XY(sxy, hx, q, w));
+            } else {
+                out[k] = in[k];
+                out[k + n] = in[k + n];
+            }
+        }
 }
 
 /* out = J v, J = I - D (I - rho M) on C, with Mv given (0 outside C) */
@@ -587,6 +889,7 @@ static int gmres(solver *S, double rho, const double *F, double eta, double *dlt
     const double bnorm = sqrt(dot2(F, F, n2));
     double *V = L->V, *MV = L->MV, *H = L->H, *gv = L->gv, *cs = L->cs, *sn = L->sn,
            *y = L->y, *t = L->t1, *q = L->t2;
+    const double cst = 0.8 * S->pb->G / rho;
     double beta = bnorm;
     int k, j, i, st;
 
@@ -606,6 +909,7 @@ static int gmres(solver *S, double rho, const double *F, double eta, double *dlt
         for (j = 0; j < m && S->products < S->pb->maxit; j++) {
             double *vj = V + (size_t)j * n2, *w = V + (size_t)(j + 1) * n2, hn;
             precondition(L, vj, t);
+            tang_stencil(L, cst, t, t);
             if ((st = tang_product(S, t, MV + (size_t)j * n2)) < 0)
                 return st;
             jacobian(L, rho, t, MV + (size_t)j * n2, w);
@@ -654,6 +958,7 @@ static int gmres(solver *S, double rho, const double *F, double eta, double *dlt
                 mdl[k] += y[i] * MV[(size_t)i * n2 + k];
             }
         precondition(L, q, t);
+        tang_stencil(L, cst, t, t);
         for (k = 0; k < n2; k++)
             dlt[k] += t[k];
         beta = fabs(gv[jm]);

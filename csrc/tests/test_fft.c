@@ -223,6 +223,41 @@ static void test_isa_builds(engine *e, const double *inx, const double *iny)
 #endif
 }
 
+/* rr_conv2d_spectrum_torus of a kernel laid on the torus by hand (zero
+ * between the grid's offsets) gives rr_conv2d_spectrum's bits: the same
+ * field is transformed; and its own refusals. */
+static void test_torus(engine *e)
+{
+    const int L1 = e->cv.L1, L2 = e->cv.L2, mx = e->mx, my = e->my;
+    double *t = xcalloc((size_t)L1 * L2, sizeof(double)), *s = xcalloc(e->sl, sizeof(double));
+    int kx, ky, st;
+    char buf[160];
+    for (ky = -(my - 1); ky < my; ky++)
+        for (kx = -(mx - 1); kx < mx; kx++)
+            t[(size_t)(ky < 0 ? ky + L2 : ky) * L1 + (kx < 0 ? kx + L1 : kx)] =
+                e->K[2][(size_t)(ky + my - 1) * (2 * mx - 1) + (kx + mx - 1)];
+    st = rr_conv2d_spectrum_torus(&e->cv, t, s);
+    snprintf(buf, sizeof buf, "%dx%d: the torus spectrum is the grid kernel's", mx, my);
+    CHECK(st == RR_OK && memcmp(s, e->S[2], e->sl * sizeof *s) == 0, buf);
+#if RR_FFT_DISPATCH
+    if (__builtin_cpu_supports("avx2")) {
+        double *s2 = xcalloc(e->sl, sizeof(double));
+        st = rr_conv2d_spectrum_torus_baseline(&e->cv, t, s);
+        st |= rr_conv2d_spectrum_torus_avx2(&e->cv, t, s2);
+        snprintf(buf, sizeof buf, "%dx%d: torus spectrum, AVX2 = baseline", mx, my);
+        CHECK(st == RR_OK && memcmp(s, s2, e->sl * sizeof *s) == 0, buf);
+        free(s2);
+    }
+#endif
+    t[0] = NAN;
+    CHECK_STATUS(rr_conv2d_spectrum_torus(&e->cv, t, s), RR_ERR_NONFINITE, "torus: NaN kernel");
+    CHECK(isnan(s[0]) && isnan(s[e->sl - 1]), "torus: NaN spectrum on error");
+    CHECK_STATUS(rr_conv2d_spectrum_torus(&e->cv, NULL, s), RR_ERR_NULL, "torus: kern NULL");
+    CHECK_STATUS(rr_conv2d_spectrum_torus(NULL, t, s), RR_ERR_NULL, "torus: cv NULL");
+    free(t);
+    free(s);
+}
+
 static void test_grid(int mx, int my)
 {
     engine e;
@@ -307,6 +342,7 @@ static void test_grid(int mx, int my)
           && memcmp(cx, oy, (size_t)e.n * sizeof *cx) == 0, buf);
 
     test_isa_builds(&e, inx, iny);
+    test_torus(&e);
     free(inx);
     free(iny);
     free(ox);
@@ -547,7 +583,8 @@ int main(void)
         {30, 30},   /* 60 x 60 */
         {23, 17},   /* 45 x 36: 45 = 9 5, partial first and last stages */
         {41, 38},   /* 81 x 75: 9 9, 3 5 5 */
-        {47, 3},    /* 96 x 5: 96 = 4 8 3 */
+        {47, 3},    /* 96 x 5: 96 = 4 4 6 (a radix 8 would not save a stage) */
+        {31, 16},   /* 64 x 32: 4 4 4, and 4 8 (it saves one) */
         {3, 101},   /* 5 x 216: 216 = 4 6 9 */
         {101, 2}    /* 216 x 3 */
     };

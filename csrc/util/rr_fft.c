@@ -16,7 +16,7 @@
  * and imaginary planes swapped.
  */
 
-/* The three convolutions are compiled twice on x86-64 with GCC or clang:
+/* The spectra and the convolutions are compiled twice on x86-64 with GCC or clang:
  * here for the baseline, and for AVX2 by rr_fft_avx2.c, which includes
  * this file; each call takes the AVX2 build where the processor has it.
  * The butterflies run on whole lines of lanes, so the wider vectors take
@@ -1273,45 +1273,16 @@ static void fill_nan(double *v, size_t n)
         v[i] = NAN;
 }
 
-int HOT(rr_conv2d_spectrum)(rr_conv2d *cv, const double *kern, double *spec)
+/* The spectrum of the real torus field in scratch plane 0 (its imaginary
+ * part zero): along y (only ky < nh kept), transpose, along x, scaled. */
+static int spectrum_of_plane(rr_conv2d *cv, double *spec, size_t ns)
 {
-    int L1, L2, nh, mx, my, kx, ky, res;
-    idx kw;
-    size_t ns;
-    double *ar, *ai, scale;
+    const int L1 = cv->L1, L2 = cv->L2, nh = cv->nh;
+    double scale;
     src_lines x;
-
-    if (!ready(cv))
-        return RR_ERR_NULL;
-    ns = rr_conv2d_spectrum_len(cv);
-    if (!kern || !spec) {
-        fill_nan(spec, ns);
-        return RR_ERR_NULL;
-    }
-    L1 = cv->L1;
-    L2 = cv->L2;
-    nh = cv->nh;
-    mx = cv->mx;
-    my = cv->my;
-    kw = 2 * mx - 1;
-    if (!finite_n(kern, kw * (2 * my - 1))) {
-        fill_nan(spec, ns);
-        return RR_ERR_NONFINITE;
-    }
-    /* the kernel wrapped onto the torus: L2 lines (ky) of L1 lanes (kx) */
-    ar = plane_re(cv, 0);
-    ai = plane_im(cv, 0);
-    memset(ar, 0, (size_t)L1 * (size_t)L2 * sizeof *ar);
-    memset(ai, 0, (size_t)L1 * (size_t)L2 * sizeof *ai);
-    for (ky = -(my - 1); ky <= my - 1; ky++) {
-        const idx row = (idx)(ky < 0 ? ky + L2 : ky) * L1;
-        const double *k = kern + (idx)(ky + my - 1) * kw + (mx - 1);
-        for (kx = -(mx - 1); kx <= mx - 1; kx++)
-            ar[row + (kx < 0 ? kx + L1 : kx)] = k[kx];
-    }
-    /* along y (only ky < nh kept), transpose, along x */
-    x.re = ar;
-    x.im = ai;
+    int res;
+    x.re = plane_re(cv, 0);
+    x.im = plane_im(cv, 0);
     x.ld = L1;
     res = fft_pass(cv, &cv->yf, 0, L1, x, 0, L2, NULL, nh);
     transpose(nh, L1, plane_re(cv, res), L1, plane_re(cv, 1 - res), nh);
@@ -1335,6 +1306,64 @@ int HOT(rr_conv2d_spectrum)(rr_conv2d *cv, const double *kern, double *spec)
         return RR_ERR_RANGE;
     }
     return RR_OK;
+}
+
+int HOT(rr_conv2d_spectrum)(rr_conv2d *cv, const double *kern, double *spec)
+{
+    int L1, L2, mx, my, kx, ky;
+    idx kw;
+    size_t ns;
+    double *ar, *ai;
+
+    if (!ready(cv))
+        return RR_ERR_NULL;
+    ns = rr_conv2d_spectrum_len(cv);
+    if (!kern || !spec) {
+        fill_nan(spec, ns);
+        return RR_ERR_NULL;
+    }
+    L1 = cv->L1;
+    L2 = cv->L2;
+    mx = cv->mx;
+    my = cv->my;
+    kw = 2 * mx - 1;
+    if (!finite_n(kern, kw * (2 * my - 1))) {
+        fill_nan(spec, ns);
+        return RR_ERR_NONFINITE;
+    }
+    /* the kernel wrapped onto the torus: L2 lines (ky) of L1 lanes (kx) */
+    ar = plane_re(cv, 0);
+    ai = plane_im(cv, 0);
+    memset(ar, 0, (size_t)L1 * (size_t)L2 * sizeof *ar);
+    memset(ai, 0, (size_t)L1 * (size_t)L2 * sizeof *ai);
+    for (ky = -(my - 1); ky <= my - 1; ky++) {
+        const idx row = (idx)(ky < 0 ? ky + L2 : ky) * L1;
+        const double *k = kern + (idx)(ky + my - 1) * kw + (mx - 1);
+        for (kx = -(mx - 1); kx <= mx - 1; kx++)
+            ar[row + (kx < 0 ? kx + L1 : kx)] = k[kx];
+    }
+    return spectrum_of_plane(cv, spec, ns);
+}
+
+int HOT(rr_conv2d_spectrum_torus)(rr_conv2d *cv, const double *kern, double *spec)
+{
+    size_t ns, nt;
+
+    if (!ready(cv))
+        return RR_ERR_NULL;
+    ns = rr_conv2d_spectrum_len(cv);
+    if (!kern || !spec) {
+        fill_nan(spec, ns);
+        return RR_ERR_NULL;
+    }
+    nt = (size_t)cv->L1 * (size_t)cv->L2;
+    if (!finite_n(kern, (idx)nt)) {
+        fill_nan(spec, ns);
+        return RR_ERR_NONFINITE;
+    }
+    memcpy(plane_re(cv, 0), kern, nt * sizeof *kern);
+    memset(plane_im(cv, 0), 0, nt * sizeof *kern);
+    return spectrum_of_plane(cv, spec, ns);
 }
 
 int HOT(rr_conv2d_apply)(rr_conv2d *cv, const double *spec, const double *in, double *out)
@@ -1487,6 +1516,12 @@ int rr_conv2d_spectrum(rr_conv2d *cv, const double *kern, double *spec)
 {
     return __builtin_cpu_supports("avx2") ? rr_conv2d_spectrum_avx2(cv, kern, spec)
                                           : rr_conv2d_spectrum_baseline(cv, kern, spec);
+}
+
+int rr_conv2d_spectrum_torus(rr_conv2d *cv, const double *kern, double *spec)
+{
+    return __builtin_cpu_supports("avx2") ? rr_conv2d_spectrum_torus_avx2(cv, kern, spec)
+                                          : rr_conv2d_spectrum_torus_baseline(cv, kern, spec);
 }
 
 int rr_conv2d_apply(rr_conv2d *cv, const double *spec, const double *in, double *out)

@@ -157,6 +157,18 @@ size_t rr_conv2d_spectrum_len(const rr_conv2d *cv);
 int rr_conv2d_spectrum(rr_conv2d *cv, const double *kern, double *spec);
 
 /*
+ * rr_conv2d_spectrum_torus - the same from a kernel given on the whole
+ * torus: kern[ky L1 + kx], kx in [0, L1), ky in [0, L2), the offset
+ * kx (ky) or kx - L1 (ky - L2).  The products read only the offsets of
+ * the grid, so either spectrum serves them; this one also holds the
+ * kernel's values at the other offsets, where the symbol itself matters
+ * (an approximate inverse of the kernel from 1 / spectrum).
+ *   given:   kern, L1 L2 values; returns, status and cost as
+ *            rr_conv2d_spectrum.
+ */
+int rr_conv2d_spectrum_torus(rr_conv2d *cv, const double *kern, double *spec);
+
+/*
  * rr_conv2d_apply - out = K * in for one real kernel K (its spectrum spec).
  *   given:   in, out: mx my values each.  in and out may be the same
  *            array (or overlap in any way): in is read in full before out
@@ -188,18 +200,20 @@ int rr_conv2d_apply2(rr_conv2d *cv, const double *sxx, const double *sxy,
                      const double *syx, const double *syy, const double *inx,
                      const double *iny, double *outx, double *outy);
 
-/* Not API: the two builds of the three convolutions on x86-64 with GCC or
+/* Not API: the two builds of the spectra and convolutions on x86-64 with GCC or
  * clang (rr_fft.c says why), the baseline and AVX2, for rr_fft.c's
  * dispatch and for the test that they give the same doubles. */
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(RR_PORTABLE)
 #define RR_FFT_DISPATCH 1
 
 int rr_conv2d_spectrum_baseline(rr_conv2d *cv, const double *kern, double *spec);
+int rr_conv2d_spectrum_torus_baseline(rr_conv2d *cv, const double *kern, double *spec);
 int rr_conv2d_apply_baseline(rr_conv2d *cv, const double *spec, const double *in, double *out);
 int rr_conv2d_apply2_baseline(rr_conv2d *cv, const double *sxx, const double *sxy,
                               const double *syx, const double *syy, const double *inx,
                               const double *iny, double *outx, double *outy);
 int rr_conv2d_spectrum_avx2(rr_conv2d *cv, const double *kern, double *spec);
+int rr_conv2d_spectrum_torus_avx2(rr_conv2d *cv, const double *kern, double *spec);
 int rr_conv2d_apply_avx2(rr_conv2d *cv, const double *spec, const double *in, double *out);
 int rr_conv2d_apply2_avx2(rr_conv2d *cv, const double *sxx, const double *sxy,
                           const double *syx, const double *syy, const double *inx,
