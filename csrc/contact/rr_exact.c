@@ -37,6 +37,7 @@ typedef struct {
     double *h, *pn, *gap, *r, *rold, *d, *v, *z;      /* normal problem */
     double *p, *s, *w, *f, *nz, *fac, *dlt, *mdl, *t1, *t2;   /* tangential, 2n each */
     double *halo;                                      /* two planes with a border */
+    double *jf, *pcf, *madh, *jn;                      /* Jacobian's coefficients (jn: 2n) */
     double *V, *MV, *H, *gv, *cs, *sn, *y;            /* GMRES */
     signed char *state;
 } layout;
@@ -113,6 +114,10 @@ static size_t carve(layout *L, int mx, int my, double *base)
     TAKE(L->t1, n2);
     TAKE(L->t2, n2);
     TAKE(L->halo, 2 * (size_t)(mx + 2) * (size_t)(my + 2));
+    TAKE(L->jf, n);
+    TAKE(L->pcf, n);
+    TAKE(L->madh, n);
+    TAKE(L->jn, n2);
     TAKE(L->V, (GMRES_M + 1) * n2);
     TAKE(L->MV, GMRES_M * n2);
     TAKE(L->H, (GMRES_M + 1) * GMRES_M);
@@ -167,33 +172,32 @@ int rr_exact_hertz_grid(double a, double b, int nx, int ny, rr_exact_grid *g)
  * the half torus (index kx nh + ky, ky < nh, as rr_conv2d's spectra):
  * K(o) = 1/(L1 L2) sum over the torus of S e^(i w.o), the lines ky and
  * L2 - ky summed as one (twice the real part).  cx, sx: cos and sin of
- * 2 pi kx / L1; cy, sy of 2 pi ky / L2. */
-static void kernel_near_origin(int L1, int L2, const double *re, const double *im,
-                               const double *cx, const double *sx, const double *cy,
-                               const double *sy, double out[4])
+ * 2 pi kx / L1; wy, cy, sy: the weight (1 or 2) of line ky and it times
+ * cos and sin of 2 pi ky / L2. */
+static void kernel_near_origin(int L1, int nh, double scale, const double *re, const double *im,
+                               const double *cx, const double *sx, const double *wy,
+                               const double *cy, const double *sy, double out[4])
 {
-    const int nh = L2 / 2 + 1;
     double k00 = 0.0, k10 = 0.0, k01 = 0.0, k11 = 0.0;
     int a, b;
     for (a = 0; a < L1; a++) {
         const double *r = re + (size_t)a * nh, *i = im + (size_t)a * nh;
         double p0r = 0.0, p0i = 0.0, p1r = 0.0, p1i = 0.0;
         for (b = 0; b < nh; b++) {
-            const double w = (b == 0 || 2 * b == L2) ? 1.0 : 2.0;
-            p0r += w * r[b];
-            p0i += w * i[b];
-            p1r += w * (r[b] * cy[b] - i[b] * sy[b]);
-            p1i += w * (r[b] * sy[b] + i[b] * cy[b]);
+            p0r += wy[b] * r[b];
+            p0i += wy[b] * i[b];
+            p1r += r[b] * cy[b] - i[b] * sy[b];
+            p1i += r[b] * sy[b] + i[b] * cy[b];
         }
         k00 += p0r;
         k01 += p1r;
         k10 += p0r * cx[a] - p0i * sx[a];
         k11 += p1r * cx[a] - p1i * sx[a];
     }
-    out[0] = k00 / ((double)L1 * L2);
-    out[1] = k10 / ((double)L1 * L2);
-    out[2] = k01 / ((double)L1 * L2);
-    out[3] = k11 / ((double)L1 * L2);
+    out[0] = k00 * scale;
+    out[1] = k10 * scale;
+    out[2] = k01 * scale;
+    out[3] = k11 * scale;
 }
 
 /* 1 if the symbol of the even stencil s (centre, (1, 0), (0, 1), (1, 1)),
@@ -225,8 +229,9 @@ static void inverse_stencils(layout *L, const rr_conv2d *cv)
     const int L1 = cv->L1, L2 = cv->L2, nh = cv->nh;
     const size_t half = (size_t)L1 * nh;
     const double sc = 2.0 * L1 * L2;
-    double *stn = L->stn, *cx = L->kern, *sx = cx + L1, *cy = sx + L1, *sy = cy + nh;
-    double *nr = L->kern2, *ni = nr + half, t[4];
+    double *stn = L->stn, *cx = L->kern, *sx = cx + L1, *wy = sx + L1, *cy = wy + nh;
+    double *sy = cy + nh, *nr = L->kern2, *ni = nr + half, t[4];
+    const double ks = 1.0 / ((double)L1 * L2);
     size_t i;
     int a, usable_n = 1, usable_t = 1;
 
@@ -238,8 +243,9 @@ static void inverse_stencils(layout *L, const rr_conv2d *cv)
         sx[a] = sin(2.0 * RR_PI * a / L1);
     }
     for (a = 0; a < nh; a++) {
-        cy[a] = cos(2.0 * RR_PI * a / L2);
-        sy[a] = sin(2.0 * RR_PI * a / L2);
+        wy[a] = a == 0 || 2 * a == L2 ? 1.0 : 2.0;
+        cy[a] = wy[a] * cos(2.0 * RR_PI * a / L2);
+        sy[a] = wy[a] * sin(2.0 * RR_PI * a / L2);
     }
     for (i = 0; i < half; i++) {
         /* 1 / nn; [[a, b], [b, d]]^-1 = [[d, -b], [-b, a]] / (a d - b b) */
@@ -262,13 +268,13 @@ static void inverse_stencils(layout *L, const rr_conv2d *cv)
         L->spinv[half + i] = -(br * fi + bi * fr);
     }
     if (usable_n) {
-        kernel_near_origin(L1, L2, nr, ni, cx, sx, cy, sy, stn);
+        kernel_near_origin(L1, nh, ks, nr, ni, cx, sx, wy, cy, sy, stn);
         stn[4] = stencil_positive(stn) && rr_all_finite(stn, 4);
     }
     if (usable_t) {
-        kernel_near_origin(L1, L2, L->sp2, L->sp2 + half, cx, sx, cy, sy, stn + 8);
-        kernel_near_origin(L1, L2, L->sp3, L->sp3 + half, cx, sx, cy, sy, stn + 12);
-        kernel_near_origin(L1, L2, L->spinv, L->spinv + half, cx, sx, cy, sy, t);
+        kernel_near_origin(L1, nh, ks, L->sp2, L->sp2 + half, cx, sx, wy, cy, sy, stn + 8);
+        kernel_near_origin(L1, nh, ks, L->sp3, L->sp3 + half, cx, sx, wy, cy, sy, stn + 12);
+        kernel_near_origin(L1, nh, ks, L->spinv, L->spinv + half, cx, sx, wy, cy, sy, t);
         stn[16] = t[3];
         /* positive definite where sampled: diagonals positive, and their
          * product above the square of the coupling -4 Sxy sin wx sin wy
@@ -310,6 +316,7 @@ static int build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu)
     const int nky = my > L2 / 2 + 1 ? my : L2 / 2 + 1;
     const size_t half = (size_t)L1 * nh;
     const double c = 1.0 / RR_PI;
+    double fr1 = 0.0, fi1 = 0.0;
     int st, kx, ky, q;
     size_t i;
 
@@ -323,17 +330,21 @@ static int build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu)
 #define QA(i, j) (L->ta[(j) * nkx + (i)])
 #define QB(i, j) (L->tb[(j) * nkx + (i)])
 #define QR(i, j) (L->tr[(j) * nkx + (i)])
-    /* ta, tb, tr on the whole torus (tr odd in x and y) */
+    /* ta, tb, tr on the whole torus (tr odd in x and y): offsets 0 .. L/2,
+     * then -(L - L/2 - 1) .. -1 */
     for (q = 0; q < 3; q++) {
         double *spec = q == 0 ? L->sp2 : q == 1 ? L->sp3 : L->spinv;
-        for (ky = 0; ky < L2; ky++)
-            for (kx = 0; kx < L1; kx++) {
-                const int ox = kx <= L1 / 2 ? kx : kx - L1, oy = ky <= L2 / 2 ? ky : ky - L2;
-                const int i0 = abs(ox), j = abs(oy);
-                const double sg = (double)((ox > 0) - (ox < 0)) * ((oy > 0) - (oy < 0));
-                L->kern[(size_t)ky * L1 + kx] = q == 0 ? QA(i0, j) : q == 1 ? QB(i0, j)
-                                                                     : sg * QR(i0, j);
-            }
+        const double *tab = q == 0 ? L->ta : q == 1 ? L->tb : L->tr;
+        for (ky = 0; ky < L2; ky++) {
+            const int j = ky <= L2 / 2 ? ky : L2 - ky;
+            const double sy = q < 2 || ky == 0 ? 1.0 : ky <= L2 / 2 ? 1.0 : -1.0;
+            const double *row = tab + (size_t)j * nkx;
+            double *o = L->kern + (size_t)ky * L1;
+            for (kx = 0; kx <= L1 / 2; kx++)
+                o[kx] = sy * row[kx];
+            for (kx = L1 / 2 + 1; kx < L1; kx++)
+                o[kx] = (q < 2 ? sy : -sy) * row[L1 - kx];
+        }
         if ((st = rr_conv2d_spectrum_torus(cv, L->kern, spec)) < 0)
             return st;
     }
@@ -341,9 +352,15 @@ static int build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu)
     for (i = 0; i < half; i++) {
         const double ar = L->sp2[i], ai = L->sp2[half + i], br = L->sp3[i], bi = L->sp3[half + i];
         const double rr = L->spinv[i], ri = L->spinv[half + i];
-        const int a = (int)(i / nh);
-        /* 1 - e^(i wx) */
-        const double fr = 1.0 - cos(2.0 * RR_PI * a / L1), fi = -sin(2.0 * RR_PI * a / L1);
+        double fr, fi;
+        if (i % nh == 0) {
+            /* 1 - e^(i wx), for the line kx = i / nh */
+            const double wx = 2.0 * RR_PI * (double)(i / nh) / L1;
+            fr1 = 1.0 - cos(wx);
+            fi1 = -sin(wx);
+        }
+        fr = fr1;
+        fi = fi1;
         const double xr = c * ((1.0 - nu) * ar + br), xi = c * ((1.0 - nu) * ai + bi);
         const double yr = c * (ar + (1.0 - nu) * br), yi = c * (ai + (1.0 - nu) * bi);
         const double zr = -nu * c * rr, zi = -nu * c * ri;
@@ -414,48 +431,52 @@ static double steady_diagonal(double aspect, double nu)
 
 /* ---- the stencils' products ------------------------------------------------- */
 
-/* The 3 x 3 stencil s (even: centre, (1, 0), (0, 1), (1, 1)) applied to
- * the field in the halo plane h (the grid with a border of zeros, rows of
- * mx + 2) at its element q. */
-#define STENCIL3(s, h, q, w)                                                           \
-    ((s)[0] * (h)[q] + (s)[1] * ((h)[(q) - 1] + (h)[(q) + 1])                         \
-     + (s)[2] * ((h)[(q) - (w)] + (h)[(q) + (w)])                                      \
-     + (s)[3] * ((h)[(q) - (w) - 1] + (h)[(q) - (w) + 1] + (h)[(q) + (w) - 1] + (h)[(q) + (w) + 1]))
+/* The 3 x 3 stencil (s0, s1, s2, s3) (even: centre, (1, 0), (0, 1),
+ * (1, 1)) applied to the field in the halo plane h (the grid with a border
+ * of zeros, rows of w = mx + 2) at its element q. */
+#define STENCIL3(s0, s1, s2, s3, h, q, w)                                              \
+    ((s0) * (h)[q] + (s1) * ((h)[(q) - 1] + (h)[(q) + 1])                             \
+     + (s2) * ((h)[(q) - (w)] + (h)[(q) + (w)])                                        \
+     + (s3) * ((h)[(q) - (w) - 1] + (h)[(q) - (w) + 1] + (h)[(q) + (w) - 1] + (h)[(q) + (w) + 1]))
 /* the odd-odd one at (1, 1): S(o) = s sign(ox) sign(oy), out(i) = sum S(o) in(i - o) */
 #define STENCIL3_XY(s, h, q, w)                                                        \
     ((s) * ((h)[(q) + (w) + 1] - (h)[(q) + (w) - 1] - (h)[(q) - (w) + 1] + (h)[(q) - (w) - 1]))
 
-/* in (n values, a component) into the halo plane h, 0 where state is not
- * keep (keep = ADHESION), or everywhere outside the contact (keep = -2) */
-static void to_halo(const layout *L, const double *in, int keep, double *h)
+/* in (n values, a component) into the halo plane h, times mask (1 or 0
+ * an element) where mask is not NULL */
+static void to_halo(const layout *L, const double *in, const double *mask, double *h)
 {
     const int mx = L->mx, my = L->my, w = mx + 2;
     int i, j;
     memset(h, 0, (size_t)w * sizeof *h);
     memset(h + (size_t)(my + 1) * w, 0, (size_t)w * sizeof *h);
     for (j = 0; j < my; j++) {
-        const signed char *st = L->state + j * mx;
         const double *a = in + j * mx;
         double *o = h + (size_t)(j + 1) * w;
         o[0] = o[mx + 1] = 0.0;
-        for (i = 0; i < mx; i++)
-            o[i + 1] = (keep == ADHESION ? st[i] == ADHESION : st[i] != OUTSIDE) ? a[i] : 0.0;
+        if (mask) {
+            const double *m = mask + j * mx;
+            for (i = 0; i < mx; i++)
+                o[i + 1] = a[i] * m[i];
+        } else {
+            memcpy(o + 1, a, (size_t)mx * sizeof *o);
+        }
     }
 }
 
 /* z = S r on the contact set, S the normal operator's inverse stencil (r
- * is 0 outside the contact set) */
+ * is 0 outside the contact set, so it needs no mask) */
 static void normal_stencil(const layout *L, const double *r, double *z)
 {
     const int mx = L->mx, my = L->my, w = mx + 2;
-    const double *s = L->stn;
+    const double s0 = L->stn[0], s1 = L->stn[1], s2 = L->stn[2], s3 = L->stn[3];
     double *h = L->halo;
     int i, j;
-    to_halo(L, r, -2, h);
+    to_halo(L, r, NULL, h);
     for (j = 0; j < my; j++)
         for (i = 0; i < mx; i++) {
             const int k = j * mx + i, q = (j + 1) * w + i + 1;
-            z[k] = L->state[k] != OUTSIDE ? STENCIL3(s, h, q, w) : 0.0;
+            z[k] = L->state[k] != OUTSIDE ? STENCIL3(s0, s1, s2, s3, h, q, w) : 0.0;
         }
 }
 
@@ -720,16 +741,24 @@ static int solve_normal(solver *S, rr_exact_result *res)
 
 /* ---- the tangential problem -------------------------------------------------- */
 
-/* s = (1/G) M * p for p = (px, py) packed as p[0..n) and p[n..2n) */
-static int tang_product(solver *S, const double *p, double *out)
+/* |(x, y)|: the square root of the sum of squares where that can neither
+ * overflow nor lose digits to underflow (tractions and slips are far from
+ * both), else hypot, which costs several times more */
+static double norm2(double x, double y)
+{
+    const double s = x * x + y * y;
+    if (s > 1e-290 && s < 1e290)
+        return sqrt(s);
+    return hypot(x, y);
+}
+
+/* out = G M p (the product not divided by G: the callers fold 1/G into
+ * their own passes) for p = (px, py) packed as p[0..n) and p[n..2n) */
+static int tang_product_g(solver *S, const double *p, double *out)
 {
     layout *L = S->L;
     const int n = L->n;
-    const double sc = 1.0 / S->pb->G;
-    int k, st = rr_conv2d_apply2(S->cv, L->sxx, L->sxy, L->sxy, L->syy, p, p + n, out,
-                                 out + n);
-    for (k = 0; k < 2 * n; k++)
-        out[k] *= sc;
+    int st = rr_conv2d_apply2(S->cv, L->sxx, L->sxy, L->sxy, L->syy, p, p + n, out, out + n);
     S->products++;
     return st < 0 ? RR_ERR_RANGE : st;
 }
@@ -745,28 +774,19 @@ static void precondition(const layout *L, const double *in, double *out)
 {
     const int mx = L->mx, my = L->my, n = L->n;
     int i, j;
+    /* one recurrence for all states (newton_coeffs): o = a + f (u - n (n.u))
+     * with u the upstream value, f = 0 without an upstream neighbour in
+     * contact, n = 0 in adhesion */
     for (j = 0; j < my; j++) {
         const double *ax = in + j * mx, *ay = in + n + j * mx;
-        double *ox = out + j * mx, *oy = out + n + j * mx;
-        const signed char *stt = L->state + j * mx;
+        const double *cf = L->pcf + j * mx, *nxs = L->jn + j * mx, *nys = L->jn + n + j * mx;
+        double *ox = out + j * mx, *oy = out + n + j * mx, ux = 0.0, uy = 0.0;
         for (i = mx - 1; i >= 0; i--) {
-            const int k = j * mx + i, up = i + 1 < mx && stt[i + 1] != OUTSIDE;
-            if (stt[i] == OUTSIDE) {
-                ox[i] = oy[i] = 0.0;
-            } else if (stt[i] == ADHESION && up) {
-                ox[i] = ax[i] + ox[i + 1];
-                oy[i] = ay[i] + oy[i + 1];
-            } else if (stt[i] == SLIP && up) {
-                /* along the bound's tangent a slipping element still moves
-                 * with its upstream neighbour, by the fraction g/|z| */
-                const double nx = L->nz[k], ny = L->nz[k + n], f = L->fac[k];
-                const double ux = ox[i + 1], uy = oy[i + 1], d = nx * ux + ny * uy;
-                ox[i] = ax[i] + f * (ux - nx * d);
-                oy[i] = ay[i] + f * (uy - ny * d);
-            } else {
-                ox[i] = ax[i];
-                oy[i] = ay[i];
-            }
+            const double nx = nxs[i], ny = nys[i], d = nx * ux + ny * uy;
+            ux = ax[i] + cf[i] * (ux - nx * d);
+            uy = ay[i] + cf[i] * (uy - ny * d);
+            ox[i] = ux;
+            oy[i] = uy;
         }
     }
 }
@@ -779,51 +799,90 @@ static void precondition(const layout *L, const double *in, double *out)
  * that (GMRES took 27 % fewer products on the 300 random cases at 27
  * across, 30 % at 45).  c: 0.8 G / rho, the fewest products of 0.5 to
  * 4 times G / rho. */
+/* One row of tang_stencil: the rows j - 1, j, j + 1 of the halo planes
+ * from their element 0 (xs, xc, xn; ys, yc, yn), st the two stencils and
+ * the coupling (times c) */
+static void tang_stencil_row(int mx, const double *st, const double *restrict xs,
+                             const double *restrict xc, const double *restrict xn,
+                             const double *restrict ys, const double *restrict yc,
+                             const double *restrict yn, const double *restrict a,
+                             const double *restrict ix, const double *restrict iy,
+                             double *restrict ox, double *restrict oy)
+{
+    const double x0 = st[0], x1 = st[1], x2 = st[2], x3 = st[3];
+    const double y0 = st[4], y1 = st[5], y2 = st[6], y3 = st[7], xy = st[8];
+    int i;
+    for (i = 0; i < mx; i++) {
+        const double dx = (xn[i - 1] + xn[i + 1]) + (xs[i - 1] + xs[i + 1]);
+        const double dy = (yn[i - 1] + yn[i + 1]) + (ys[i - 1] + ys[i + 1]);
+        /* the odd-odd coupling: S(o) = s sign(ox) sign(oy), out(i) = sum S(o) in(i - o) */
+        const double cx = (xn[i + 1] - xn[i - 1]) - (xs[i + 1] - xs[i - 1]);
+        const double cy = (yn[i + 1] - yn[i - 1]) - (ys[i + 1] - ys[i - 1]);
+        const double sx = x0 * xc[i] + x1 * (xc[i - 1] + xc[i + 1]) + x2 * (xs[i] + xn[i])
+                          + x3 * dx + xy * cy;
+        const double sy = y0 * yc[i] + y1 * (yc[i - 1] + yc[i + 1]) + y2 * (ys[i] + yn[i])
+                          + y3 * dy + xy * cx;
+        /* a s + (1 - a) in with a 1 or 0: exactly one of them */
+        ox[i] = a[i] * sx + (1.0 - a[i]) * ix[i];
+        oy[i] = a[i] * sy + (1.0 - a[i]) * iy[i];
+    }
+}
+
 static void tang_stencil(const layout *L, double c, const double *in, double *out)
 {
     const int mx = L->mx, my = L->my, n = L->n, w = mx + 2;
     const size_t hn = (size_t)w * (my + 2);
-    const double *sxx = L->stn + 8, *syy = L->stn + 12, sxy = L->stn[16];
-    double *hx = L->halo, *hy = L->halo + hn;
-    int i, j;
+    double *hx = L->halo, *hy = L->halo + hn, st[9];
+    int j;
     if (L->stn[17] == 0.0) {
-        if (out != in)
-            memcpy(out, in, (size_t)(2 * n) * sizeof *out);
+        memcpy(out, in, (size_t)(2 * n) * sizeof *out);
         return;
     }
-    to_halo(L, in, ADHESION, hx);
-    to_halo(L, in + n, ADHESION, hy);
-    for (j = 0; j < my; j++)
-        for (i = 0; i < mx; i++) {
-            const int k = j * mx + i, q = (j + 1) * w + i + 1;
-            if (L->state[k] == ADHESION) {
-                out[k] = c * (STENCIL3(sxx, hx, q, w) + STENCIL3_XY(sxy, hy, q, w));
-                out[k + n] = c * (STENCIL3(syy, hy, q, w) + STENCIL3_XY(sxy, hx, q, w));
-            } else {
-                out[k] = in[k];
-                out[k + n] = in[k + n];
-            }
-        }
+    for (j = 0; j < 9; j++)
+        st[j] = c * L->stn[8 + j];
+    to_halo(L, in, L->madh, hx);
+    to_halo(L, in + n, L->madh, hy);
+    for (j = 0; j < my; j++) {
+        const double *xs = hx + (size_t)j * w + 1, *ys = hy + (size_t)j * w + 1;
+        tang_stencil_row(mx, st, xs, xs + w, xs + 2 * w, ys, ys + w, ys + 2 * w,
+                         L->madh + j * mx, in + j * mx, in + n + j * mx, out + j * mx,
+                         out + n + j * mx);
+    }
 }
 
-/* out = J v, J = I - D (I - rho M) on C, with Mv given (0 outside C) */
-static void jacobian(const layout *L, double rho, const double *v, const double *Mv,
-                     double *out)
+/* The Jacobian's coefficients for the states of the last residual, which
+ * hold through a GMRES solve: J v = v - f (e - n (n.e)), e = v - rho M v,
+ * with (f, n) = (1, 0) in adhesion (J v = rho M v), (g/|z|, z/|z|) in slip,
+ * (0, 0) outside (v is 0 there); pcf: f where the upstream neighbour is in
+ * contact, else 0 (precondition); madh: 1 in adhesion, else 0. */
+static void newton_coeffs(layout *L)
 {
-    const int n = L->n;
+    const int n = L->n, mx = L->mx;
     int k;
     for (k = 0; k < n; k++) {
-        if (L->state[k] == OUTSIDE) {
-            out[k] = out[k + n] = 0.0;
-        } else if (L->state[k] == ADHESION) {
-            out[k] = rho * Mv[k];
-            out[k + n] = rho * Mv[k + n];
-        } else {
-            const double ex = v[k] - rho * Mv[k], ey = v[k + n] - rho * Mv[k + n];
-            const double nx = L->nz[k], ny = L->nz[k + n], dot = nx * ex + ny * ey;
-            out[k] = v[k] - L->fac[k] * (ex - nx * dot);
-            out[k + n] = v[k + n] - L->fac[k] * (ey - ny * dot);
-        }
+        const int st = L->state[k];
+        L->jf[k] = st == ADHESION ? 1.0 : st == SLIP ? L->fac[k] : 0.0;
+        L->jn[k] = st == SLIP ? L->nz[k] : 0.0;
+        L->jn[k + n] = st == SLIP ? L->nz[k + n] : 0.0;
+        L->madh[k] = st == ADHESION;
+    }
+    for (k = 0; k < n; k++)
+        L->pcf[k] = k % mx + 1 < mx && L->state[k + 1] != OUTSIDE ? L->jf[k] : 0.0;
+}
+
+/* out = J v, J = I - D (I - rho M) on C, given Mv = G M v (a product
+ * not yet divided by G) and rg = rho / G */
+static void jacobian(const layout *L, double rg, const double *restrict v,
+                     const double *restrict Mv, double *restrict out)
+{
+    const int n = L->n;
+    const double *restrict jf = L->jf, *restrict jnx = L->jn, *restrict jny = L->jn + n;
+    int k;
+    for (k = 0; k < n; k++) {
+        const double ex = v[k] - rg * Mv[k], ey = v[k + n] - rg * Mv[k + n];
+        const double nx = jnx[k], ny = jny[k], dot = nx * ex + ny * ey;
+        out[k] = v[k] - jf[k] * (ex - nx * dot);
+        out[k + n] = v[k + n] - jf[k] * (ey - ny * dot);
     }
 }
 
@@ -844,6 +903,54 @@ static double dot2(const double *a, const double *b, int n2)
     return (s0 + s1) + (s2 + s3);
 }
 
+/* w += a x, then w . y, or w . w where y is NULL (four partial sums, as
+ * dot2) */
+static double axpy_dot(double *restrict w, double a, const double *restrict x,
+                       const double *restrict y, int n2)
+{
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    int k;
+    if (y) {
+        for (k = 0; k + 4 <= n2; k += 4) {
+            const double w0 = w[k] + a * x[k], w1 = w[k + 1] + a * x[k + 1];
+            const double w2 = w[k + 2] + a * x[k + 2], w3 = w[k + 3] + a * x[k + 3];
+            w[k] = w0;
+            w[k + 1] = w1;
+            w[k + 2] = w2;
+            w[k + 3] = w3;
+            s0 += w0 * y[k];
+            s1 += w1 * y[k + 1];
+            s2 += w2 * y[k + 2];
+            s3 += w3 * y[k + 3];
+        }
+    } else {
+        for (k = 0; k + 4 <= n2; k += 4) {
+            const double w0 = w[k] + a * x[k], w1 = w[k + 1] + a * x[k + 1];
+            const double w2 = w[k + 2] + a * x[k + 2], w3 = w[k + 3] + a * x[k + 3];
+            w[k] = w0;
+            w[k + 1] = w1;
+            w[k + 2] = w2;
+            w[k + 3] = w3;
+            s0 += w0 * w0;
+            s1 += w1 * w1;
+            s2 += w2 * w2;
+            s3 += w3 * w3;
+        }
+    }
+    for (; k < n2; k++) {
+        w[k] += a * x[k];
+        s0 += w[k] * (y ? y[k] : w[k]);
+    }
+    return (s0 + s1) + (s2 + s3);
+}
+
+static void scale_by(double *v, double a, int n2)
+{
+    int k;
+    for (k = 0; k < n2; k++)
+        v[k] *= a;
+}
+
 /* F = p - Proj_g(p - rho s) on C; also the states and the projection's
  * derivative data (unit z and g/|z| of slipping elements).  Returns ||F||. */
 static double residual(layout *L, double rho, const double *p, const double *s, double *F)
@@ -860,7 +967,7 @@ static double residual(layout *L, double rho, const double *p, const double *s, 
         g = L->fac[k + n];               /* the traction bound, kept in fac's upper half */
         zx = p[k] - rho * s[k];
         zy = p[k + n] - rho * s[k + n];
-        z = hypot(zx, zy);
+        z = norm2(zx, zy);
         if (z <= g) {
             L->state[k] = ADHESION;
             F[k] = p[k] - zx;
@@ -886,7 +993,7 @@ static int gmres(solver *S, double rho, const double *F, double eta, double *dlt
 {
     layout *L = S->L;
     const int n2 = 2 * L->n, m = GMRES_M;
-    const double bnorm = sqrt(dot2(F, F, n2));
+    const double bnorm = sqrt(dot2(F, F, n2)), rg = rho / S->pb->G, ig = 1.0 / S->pb->G;
     double *V = L->V, *MV = L->MV, *H = L->H, *gv = L->gv, *cs = L->cs, *sn = L->sn,
            *y = L->y, *t = L->t1, *q = L->t2;
     const double cst = 0.8 * S->pb->G / rho;
@@ -897,34 +1004,35 @@ static int gmres(solver *S, double rho, const double *F, double eta, double *dlt
     memset(mdl, 0, (size_t)n2 * sizeof *mdl);
     if (bnorm == 0.0)
         return RR_OK;
+    newton_coeffs(L);
     for (k = 0; k < n2; k++)
         V[k] = -F[k];
     while (S->products < S->pb->maxit) {
         int jm = 0;
         /* V[0] = r / |r| */
-        for (k = 0; k < n2; k++)
-            V[k] /= beta;
+        scale_by(V, 1.0 / beta, n2);
         memset(gv, 0, (GMRES_M + 1) * sizeof *gv);
         gv[0] = beta;
         for (j = 0; j < m && S->products < S->pb->maxit; j++) {
-            double *vj = V + (size_t)j * n2, *w = V + (size_t)(j + 1) * n2, hn;
-            precondition(L, vj, t);
-            tang_stencil(L, cst, t, t);
-            if ((st = tang_product(S, t, MV + (size_t)j * n2)) < 0)
+            double *w = V + (size_t)(j + 1) * n2, *mvj = MV + (size_t)j * n2, h, hn;
+            precondition(L, V + (size_t)j * n2, q);
+            tang_stencil(L, cst, q, t);
+            /* the products kept times G, divided once at the end */
+            if ((st = tang_product_g(S, t, mvj)) < 0)
                 return st;
-            jacobian(L, rho, t, MV + (size_t)j * n2, w);
-            /* modified Gram-Schmidt */
+            /* modified Gram-Schmidt, each pass subtracting one basis vector
+             * and taking the dot product with the next (the last: |w|^2) */
+            jacobian(L, rg, t, mvj, w);
+            h = dot2(w, V, n2);
             for (i = 0; i <= j; i++) {
-                const double hij = dot2(w, V + (size_t)i * n2, n2);
-                H[i * m + j] = hij;
-                for (k = 0; k < n2; k++)
-                    w[k] -= hij * V[(size_t)i * n2 + k];
+                H[i * m + j] = h;
+                h = axpy_dot(w, -h, V + (size_t)i * n2, i < j ? V + (size_t)(i + 1) * n2 : NULL,
+                             n2);
             }
-            hn = sqrt(dot2(w, w, n2));
+            hn = sqrt(h);
             H[(j + 1) * m + j] = hn;
             if (hn > 0.0)
-                for (k = 0; k < n2; k++)
-                    w[k] /= hn;
+                scale_by(w, 1.0 / hn, n2);
             /* Givens rotations keep H upper triangular and give the residual */
             for (i = 0; i < j; i++) {
                 const double a = H[i * m + j], c = H[(i + 1) * m + j];
@@ -944,7 +1052,7 @@ static int gmres(solver *S, double rho, const double *F, double eta, double *dlt
             if (fabs(gv[j + 1]) <= eta * bnorm || hn == 0.0)
                 break;
         }
-        /* y = H^-1 g, then dlt += P V y and mdl += (M P V) y */
+        /* y = H^-1 g, then dlt += P V y and mdl += (M P V) y (times G) */
         for (i = jm - 1; i >= 0; i--) {
             double sum = gv[i];
             for (k = i + 1; k < jm; k++)
@@ -952,26 +1060,29 @@ static int gmres(solver *S, double rho, const double *F, double eta, double *dlt
             y[i] = H[i * m + i] != 0.0 ? sum / H[i * m + i] : 0.0;
         }
         memset(q, 0, (size_t)n2 * sizeof *q);
-        for (i = 0; i < jm; i++)
+        for (i = 0; i < jm; i++) {
+            const double *vi = V + (size_t)i * n2, *mvi = MV + (size_t)i * n2, yi = y[i];
             for (k = 0; k < n2; k++) {
-                q[k] += y[i] * V[(size_t)i * n2 + k];
-                mdl[k] += y[i] * MV[(size_t)i * n2 + k];
+                q[k] += yi * vi[k];
+                mdl[k] += yi * mvi[k];
             }
+        }
         precondition(L, q, t);
-        tang_stencil(L, cst, t, t);
+        tang_stencil(L, cst, t, q);
         for (k = 0; k < n2; k++)
-            dlt[k] += t[k];
+            dlt[k] += q[k];
         beta = fabs(gv[jm]);
         if (jm == 0 || beta <= eta * bnorm)
             break;
         /* restart from the true residual -F - J dlt */
-        jacobian(L, rho, dlt, mdl, V);
+        jacobian(L, rg, dlt, mdl, V);
         for (k = 0; k < n2; k++)
             V[k] = -F[k] - V[k];
         beta = sqrt(dot2(V, V, n2));
         if (beta <= eta * bnorm)
             break;
     }
+    scale_by(mdl, ig, n2);
     return RR_OK;
 }
 
@@ -1020,7 +1131,7 @@ static int start_fastsim(const rr_exact_problem *pb, layout *L, const double *w)
                 qy -= dx * (pb->cy / fl[1] + spy / fl[2]);
             }
             g = L->fac[k + n];
-            t = hypot(qx, qy);
+            t = norm2(qx, qy);
             if (t > g) {
                 qx *= g / t;
                 qy *= g / t;
@@ -1065,10 +1176,10 @@ static int solve_tangential(solver *S, rr_exact_result *res)
     }
     g2 = sqrt(g2);
     if (start_fastsim(pb, L, w) == RR_OK) {
-        if ((st = tang_product(S, p, s)) < 0)
+        if ((st = tang_product_g(S, p, s)) < 0)
             return st;
         for (k = 0; k < n2; k++)
-            s[k] += w[k];
+            s[k] = s[k] / pb->G + w[k];
     } else {
         memset(p, 0, (size_t)n2 * sizeof *p);       /* from zero traction: s = w */
     }
@@ -1122,7 +1233,7 @@ static int solve_tangential(solver *S, rr_exact_result *res)
      * the tolerance): |p| <= mu pn holds in every element, so |F| <= mu N
      * whatever the status */
     for (k = 0; k < n; k++) {
-        const double g = L->fac[k + n], t = hypot(p[k], p[k + n]);
+        const double g = L->fac[k + n], t = norm2(p[k], p[k + n]);
         if (t > g) {
             p[k] *= g / t;
             p[k + n] *= g / t;
