@@ -47,7 +47,7 @@ typedef struct {
  * rr_conv2d_spectrum_len once the engine exists. */
 static size_t spectrum_len(int mx, int my)
 {
-    const int L1 = rr_fft_good_size(2 * mx - 1), L2 = rr_fft_good_size(2 * my - 1);
+    const int L1 = rr_conv2d_torus_len(2 * mx - 1), L2 = rr_conv2d_torus_len(2 * my - 1);
     return 2 * (size_t)L1 * (size_t)(L2 / 2 + 1);
 }
 
@@ -66,7 +66,8 @@ static size_t carve(layout *L, int mx, int my, double *base)
     spec_len = spectrum_len(mx, my);
     {
         /* the boxes' table reaches the torus's far offsets L / 2 (build_spectra) */
-        const size_t L1 = (size_t)rr_fft_good_size(2 * mx - 1), L2 = (size_t)rr_fft_good_size(2 * my - 1);
+        const size_t L1 = (size_t)rr_conv2d_torus_len(2 * mx - 1);
+        const size_t L2 = (size_t)rr_conv2d_torus_len(2 * my - 1);
         const size_t nkx = (size_t)mx + 1 > L1 / 2 + 1 ? (size_t)mx + 1 : L1 / 2 + 1;
         const size_t nky = (size_t)my > L2 / 2 + 1 ? (size_t)my : L2 / 2 + 1;
         tab_len = nkx * nky;

@@ -75,6 +75,16 @@ int rr_fft_good_size(int n)
     return (int)best;
 }
 
+int rr_conv2d_torus_len(int n)
+{
+    int g, g4;
+    if (n < 1 || n > RR_FFT_MAX_LEN / 2)
+        return 0;
+    g = rr_fft_good_size(n);
+    g4 = 4 * rr_fft_good_size((n + 3) / 4);    /* 4 k is 5-smooth where k is */
+    return g % 4 == 0 || 10 * (long)g > 9 * (long)g4 ? g4 : g;
+}
+
 /* ---- twiddles ----------------------------------------------------------------- */
 
 /* cos and sin of 2 pi j / n, from an argument in [0, pi/4]: the octant
@@ -1182,8 +1192,8 @@ static size_t layout(int mx, int my, int *L1, int *L2, size_t *cap)
     size_t n, c, vmax;
     if (mx < 1 || my < 1 || mx > RR_CONV2D_MAX_GRID || my > RR_CONV2D_MAX_GRID)
         return 0;
-    *L1 = rr_fft_good_size(2 * mx - 1);
-    *L2 = rr_fft_good_size(2 * my - 1);
+    *L1 = rr_conv2d_torus_len(2 * mx - 1);
+    *L2 = rr_conv2d_torus_len(2 * my - 1);
     vmax = (size_t)(*L1 > *L2 ? *L1 : *L2);
     /* planes hold L1 L2 values; rounded up so that the im part is aligned */
     c = (size_t)*L1 * (size_t)*L2;
