@@ -27,6 +27,7 @@ enum { OUTSIDE = -1, ADHESION = 0, SLIP = 1 };
 /* Pointers into the caller's workspace (rr_exact_workspace_len). */
 typedef struct {
     int mx, my, n;
+    int ai0, ai1, aj0, aj1;                /* the adhering elements' bounding box */
     double *hdr, *stn;
     double *nkey, *pn_cache, *h_cache;     /* the last normal problem and its solution */
     double *conv;
@@ -460,15 +461,17 @@ static double steady_diagonal(double aspect, double nu)
 #define STENCIL3_XY(s, h, q, w)                                                        \
     ((s) * ((h)[(q) + (w) + 1] - (h)[(q) + (w) - 1] - (h)[(q) - (w) + 1] + (h)[(q) - (w) - 1]))
 
-/* in (n values, a component) into the halo plane h, times mask (1 or 0
- * an element) */
-static void to_halo(const layout *L, const double *in, const double *mask, double *h)
+/* in (n values, a component) into rows j0 .. j1 of the halo plane h (the
+ * grid's rows, clamped to it; their border elements 0), times mask (1 or
+ * 0 an element); the halo's first and last rows 0 */
+static void to_halo(const layout *L, const double *in, const double *mask, int j0, int j1,
+                    double *h)
 {
     const int mx = L->mx, my = L->my, w = mx + 2;
     int i, j;
     memset(h, 0, (size_t)w * sizeof *h);
     memset(h + (size_t)(my + 1) * w, 0, (size_t)w * sizeof *h);
-    for (j = 0; j < my; j++) {
+    for (j = j0 > 0 ? j0 : 0; j <= j1 && j < my; j++) {
         const double *a = in + j * mx, *m = mask + j * mx;
         double *o = h + (size_t)(j + 1) * w;
         o[0] = o[mx + 1] = 0.0;
@@ -892,21 +895,23 @@ static void tang_stencil(const layout *L, double c, const double *in, double *ou
 {
     const int mx = L->mx, my = L->my, n = L->n, w = mx + 2;
     const size_t hn = (size_t)w * (my + 2);
+    const int i0 = L->ai0, nb = L->ai1 - L->ai0 + 1;
     double *hx = L->halo, *hy = L->halo + hn, st[9];
     int j;
-    if (L->stn[17] == 0.0) {
-        memcpy(out, in, (size_t)(2 * n) * sizeof *out);
+    /* out = in, then S on the adhering elements' bounding box, the halo
+     * rows around it filled (each masked to the adhering elements) */
+    memcpy(out, in, (size_t)(2 * n) * sizeof *out);
+    if (L->stn[17] == 0.0 || L->ai1 < 0)
         return;
-    }
     for (j = 0; j < 9; j++)
         st[j] = c * L->stn[8 + j];
-    to_halo(L, in, L->madh, hx);
-    to_halo(L, in + n, L->madh, hy);
-    for (j = 0; j < my; j++) {
-        const double *xs = hx + (size_t)j * w + 1, *ys = hy + (size_t)j * w + 1;
-        tang_stencil_row(mx, st, xs, xs + w, xs + 2 * w, ys, ys + w, ys + 2 * w,
-                         L->madh + j * mx, in + j * mx, in + n + j * mx, out + j * mx,
-                         out + n + j * mx);
+    to_halo(L, in, L->madh, L->aj0 - 1, L->aj1 + 1, hx);
+    to_halo(L, in + n, L->madh, L->aj0 - 1, L->aj1 + 1, hy);
+    for (j = L->aj0; j <= L->aj1; j++) {
+        const int k = j * mx + i0;
+        const double *xs = hx + (size_t)j * w + 1 + i0, *ys = hy + (size_t)j * w + 1 + i0;
+        tang_stencil_row(nb, st, xs, xs + w, xs + 2 * w, ys, ys + w, ys + 2 * w, L->madh + k,
+                         in + k, in + n + k, out + k, out + n + k);
     }
 }
 
@@ -926,8 +931,20 @@ static void newton_coeffs(layout *L)
         L->jn[k + n] = st == SLIP ? L->nz[k + n] : 0.0;
         L->madh[k] = st == ADHESION;
     }
-    for (k = 0; k < n; k++)
-        L->pcf[k] = k % mx + 1 < mx && L->state[k + 1] != OUTSIDE ? L->jf[k] : 0.0;
+    L->ai0 = mx;
+    L->ai1 = -1;
+    L->aj0 = L->my;
+    L->aj1 = -1;
+    for (k = 0; k < n; k++) {
+        const int i = k % mx, j = k / mx;
+        L->pcf[k] = i + 1 < mx && L->state[k + 1] != OUTSIDE ? L->jf[k] : 0.0;
+        if (L->state[k] == ADHESION) {
+            L->ai0 = i < L->ai0 ? i : L->ai0;
+            L->ai1 = i > L->ai1 ? i : L->ai1;
+            L->aj0 = j < L->aj0 ? j : L->aj0;
+            L->aj1 = j > L->aj1 ? j : L->aj1;
+        }
+    }
 }
 
 /* out = J v, J = I - D (I - rho M) on C, given Mv = G M v (a product
