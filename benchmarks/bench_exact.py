@@ -86,32 +86,39 @@ sys.path.insert(0, sys.argv[1])
 import bench_exact as b
 d = b.subset(b.cases(int(sys.argv[3])), int(sys.argv[2]), int(sys.argv[3]))
 b.run(d, int(sys.argv[2]))
-print(json.dumps(b.best_ms(d, int(sys.argv[2]), 3)))
+print(json.dumps([b.best_ms(d, int(sys.argv[2]), 3), b.rr.__file__]))
 """
 
 
 def child_ms(tree, nx, ncases):
-    """ms per case of the package in `tree` (None: this one), in a child
-    interpreter, the fastest of 3 runs."""
+    """ms per case of the package in `tree` (None: the one this interpreter
+    imports), in a child interpreter, the fastest of 3 runs; and the
+    package's path.  The child runs in the tree (or in this package's
+    parent): its working directory comes first on its path."""
     env = dict(os.environ)
     if tree:
         env["PYTHONPATH"] = os.path.abspath(tree) + os.pathsep + env.get("PYTHONPATH", "")
+    cwd = os.path.abspath(tree) if tree else os.path.dirname(os.path.dirname(rr.__file__))
     out = subprocess.run([sys.executable, "-c", _CHILD, HERE, str(nx), str(ncases)], env=env,
-                         capture_output=True, text=True, check=True)
+                         cwd=cwd, capture_output=True, text=True, check=True)
     return json.loads(out.stdout.strip().splitlines()[-1])
 
 
 def side_by_side(tree, ncases, rounds):
-    lines = [f"\nthis build against {tree} (the two taking turns, fastest of {rounds} "
-             "rounds of 3 runs each):", "",
-             "| elements across | this build ms | other ms | ratio |", "|---|---|---|---|"]
+    rows, paths = [], set()
     for nx in (27, 45):
         mine, other = float("inf"), float("inf")
         for _ in range(rounds):
-            mine = min(mine, child_ms(None, nx, ncases))
-            other = min(other, child_ms(tree, nx, ncases))
-        lines.append(f"| {nx} | {mine:.3f} | {other:.3f} | {mine / other:.3f} |")
-    return lines
+            ms, path = child_ms(None, nx, ncases)
+            mine = min(mine, ms)
+            ms, opath = child_ms(tree, nx, ncases)
+            other = min(other, ms)
+            paths.add((path, opath))
+        rows.append(f"| {nx} | {mine:.3f} | {other:.3f} | {mine / other:.3f} |")
+    (path, opath), = paths
+    return [f"\nthis build ({os.path.dirname(path)}) against {os.path.dirname(opath)} (the two "
+            f"taking turns, fastest of {rounds} rounds of 3 runs each):", "",
+            "| elements across | this build ms | other ms | ratio |", "|---|---|---|---|"] + rows
 
 
 def speed_table(sizes, ncases, rounds):
