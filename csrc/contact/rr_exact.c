@@ -335,7 +335,7 @@ static int build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu)
     const int nky = my > L2 / 2 + 1 ? my : L2 / 2 + 1;
     const size_t half = (size_t)L1 * nh;
     const double c = 1.0 / RR_PI;
-    double fr1 = 0.0, fi1 = 0.0;
+    double fr = 0.0, fi = 0.0;
     int st, kx, ky, q;
     size_t i;
 
@@ -349,14 +349,16 @@ static int build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu)
 #define QA(i, j) (L->ta[(j) * nkx + (i)])
 #define QB(i, j) (L->tb[(j) * nkx + (i)])
 #define QR(i, j) (L->tr[(j) * nkx + (i)])
-    /* ta, tb, tr on the whole torus (tr odd in x and y): offsets 0 .. L/2,
-     * then -(L - L/2 - 1) .. -1 */
+    /* ta, tb, tr on the whole torus (tr odd in x and y, 0 on the axes):
+     * offsets 0 .. L/2, then -(L - L/2 - 1) .. -1 (the offset L/2 of an
+     * even L taken as +L/2: it lies beyond the grid's offsets, where only
+     * the symbol's shape needs it) */
     for (q = 0; q < 3; q++) {
         double *spec = q == 0 ? L->sp2 : q == 1 ? L->sp3 : L->spinv;
         const double *tab = q == 0 ? L->ta : q == 1 ? L->tb : L->tr;
         for (ky = 0; ky < L2; ky++) {
             const int j = ky <= L2 / 2 ? ky : L2 - ky;
-            const double sy = q < 2 || ky == 0 ? 1.0 : ky <= L2 / 2 ? 1.0 : -1.0;
+            const double sy = q == 2 && ky > L2 / 2 ? -1.0 : 1.0;
             const double *row = tab + (size_t)j * nkx;
             double *o = L->kern + (size_t)ky * L1;
             for (kx = 0; kx <= L1 / 2; kx++)
@@ -371,18 +373,15 @@ static int build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu)
     for (i = 0; i < half; i++) {
         const double ar = L->sp2[i], ai = L->sp2[half + i], br = L->sp3[i], bi = L->sp3[half + i];
         const double rr = L->spinv[i], ri = L->spinv[half + i];
-        double fr, fi;
-        if (i % nh == 0) {
-            /* 1 - e^(i wx), for the line kx = i / nh */
-            const double wx = 2.0 * RR_PI * (double)(i / nh) / L1;
-            fr1 = 1.0 - cos(wx);
-            fi1 = -sin(wx);
-        }
-        fr = fr1;
-        fi = fi1;
         const double xr = c * ((1.0 - nu) * ar + br), xi = c * ((1.0 - nu) * ai + bi);
         const double yr = c * (ar + (1.0 - nu) * br), yi = c * (ai + (1.0 - nu) * bi);
         const double zr = -nu * c * rr, zi = -nu * c * ri;
+        if (i % nh == 0) {
+            /* 1 - e^(i wx), for the line kx = i / nh */
+            const double wx = 2.0 * RR_PI * (double)(i / nh) / L1;
+            fr = 1.0 - cos(wx);
+            fi = -sin(wx);
+        }
         L->snn[i] = (1.0 - nu) * c * (ar + br);
         L->snn[half + i] = (1.0 - nu) * c * (ai + bi);
         L->sxx[i] = xr * fr - xi * fi;
