@@ -853,14 +853,6 @@ static void precondition(const layout *L, const double *in, double *out)
     }
 }
 
-/* The tangential preconditioner's second part: out = c S in on the
- * adhering elements, S the symmetric tangential operator's inverse
- * stencil, on the values of adhering elements alone; out = in elsewhere.
- * After the inverse upwind difference (precondition) the steady operator
- * acts on adhering elements as the symmetric one, and S undoes most of
- * that (GMRES took 27 % fewer products on the 300 random cases at 27
- * across, 30 % at 45).  c: 0.8 G / rho, the fewest products of 0.5 to
- * 4 times G / rho. */
 /* One row of tang_stencil: the rows j - 1, j, j + 1 of the halo planes
  * from their element 0 (xs, xc, xn; ys, yc, yn), st the two stencils and
  * the coupling (times c) */
@@ -890,6 +882,14 @@ static void tang_stencil_row(int mx, const double *st, const double *restrict xs
     }
 }
 
+/* The tangential preconditioner's second part: out = c S in on the
+ * adhering elements, S the symmetric tangential operator's inverse
+ * stencil, on the values of adhering elements alone; out = in elsewhere.
+ * After the inverse upwind difference (precondition) the steady operator
+ * acts on adhering elements as the symmetric one, and S undoes most of
+ * that (GMRES took 27 % fewer products on the 300 random cases at 27
+ * across, 30 % at 45).  c: 0.8 G / rho, the fewest products of 0.5 to
+ * 4 times G / rho. */
 static void tang_stencil(const layout *L, double c, const double *in, double *out)
 {
     const int mx = L->mx, my = L->my, n = L->n, w = mx + 2;
