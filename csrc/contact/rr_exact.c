@@ -1062,9 +1062,11 @@ static double residual(layout *L, double rho, const double *p, const double *s, 
     return sqrt(f2);
 }
 
-/* GMRES(m) on J P u = -F (the Newton step), right-preconditioned; on
- * return dlt = P u and mdl = M dlt (kept from the products, no extra one).
- * Stops at ||F + J P u|| <= eta ||F|| or when the product budget is spent. */
+/* GMRES(m) on J P u = -F (the Newton step), right-preconditioned by P =
+ * the inverse upwind difference (precondition), then the stencil on the
+ * adhering elements (tang_stencil); on return dlt = P u and mdl = M dlt
+ * (kept from the products, no extra one).  Stops at ||F + J P u|| <= eta
+ * ||F|| or when the product budget is spent. */
 static int gmres(solver *S, double rho, const double *F, double eta, double *dlt, double *mdl)
 {
     layout *L = S->L;
