@@ -170,11 +170,15 @@ static int plan_radices(int n, int fwd, int *radix)
         return -1;
     lead = a >= 2 ? 4 : a == 1 ? 2 : 0;
     a -= lead == 4 ? 2 : lead == 2 ? 1 : 0;
-    k = inner_radices(a, b, c, 1, radix);
-    if (inner_radices(a, b, c, 0, radix) > k)
-        k = inner_radices(a, b, c, 1, radix);
-    else
+    {
+        int r8[RR_FFT_MAX_STAGES];
+        const int k8 = inner_radices(a, b, c, 1, r8);
         k = inner_radices(a, b, c, 0, radix);
+        if (k8 < k) {
+            memcpy(radix, r8, (size_t)k8 * sizeof *radix);
+            k = k8;
+        }
+    }
     if (fwd) {
         if (lead) {
             for (i = k; i > 0; i--)

@@ -17,7 +17,7 @@
  * values: the inner loops run over contiguous memory with one set of
  * twiddles (vectorisable), on split real and imaginary planes, with a
  * transpose between the passes.  Radices 2, 3, 4, 5, and 6, 8, 9 so that
- * the lengths of interest take 3 sweeps (60 = 4 5 3, 96 = 4 8 3,
+ * the lengths of interest take 3 sweeps (60 = 4 5 3, 96 = 4 4 6,
  * 216 = 4 6 9).  Only what is needed is transformed: the y passes take
  * only the grid's mx columns, the forward x pass only its mx nonzero
  * lines, the inverse x pass gives only mx; the first stage of a forward
