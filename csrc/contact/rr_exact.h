@@ -11,7 +11,8 @@
  *   the pressure pn >= 0 and the approach: a bound-constrained quadratic
  *   programme, solved by conjugate gradients on the active set with the
  *   load kept by deflation (Vollebregt's NormCG, J. Comput. Phys. 257,
- *   2014).
+ *   2014), preconditioned by the 3 x 3 stencil nearest the inverse of the
+ *   half-space's operator (from its symbol on the FFT's torus).
  *   Tangential problem: given the creepages, the slip s = w + (u(x) -
  *   u(x + dx))/dx (steady rolling: the material derivative as the upwind
  *   difference over one element, CONTACT's discretisation), with w the
@@ -19,7 +20,9 @@
  *   s/|s| in slip.  Solved as p = Proj(p - rho s) by a semismooth Newton
  *   method whose linear systems go to GMRES, preconditioned by the
  *   inverse of the upwind difference along each run of adhering elements
- *   (which turns the steady operator into the symmetric half-space one).
+ *   (which turns the steady operator into the symmetric half-space one),
+ *   then by the 3 x 3 stencil nearest the symmetric operator's inverse on
+ *   the adhering elements.
  * Conventions as rr_contact.h (CONTACT's): x rolling, material entering at
  * +x, tractions and forces on body 1 (the wheel), rigid slip (cx - cphi y,
  * cy + cphi x) about the reference point.  Element (i, j) of every field

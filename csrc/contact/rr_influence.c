@@ -3,18 +3,28 @@
 #include "util/rr_common.h"
 #include "contact/rr_influence.h"
 
-/* X log(Y + r), 0 at X = 0 (its limit); for Y < 0 as X (2 log|X| - log(r - Y)),
- * since Y + r cancels there. */
-static double x_log_yr(double X, double Y)
+/* X log(Y + r), r = |(X, Y)|, 0 at X = 0 (its limit); for Y < 0 as
+ * X (2 log|X| - log(r - Y)), since Y + r cancels there. */
+static double x_log_yr_r(double X, double Y, double r)
 {
-    double r;
-
     if (X == 0.0)
         return 0.0;
-    r = hypot(X, Y);
     if (Y >= 0.0)
         return X * log(Y + r);
     return X * (2.0 * log(fabs(X)) - log(r - Y));
+}
+
+static double x_log_yr(double X, double Y)
+{
+    return x_log_yr_r(X, Y, hypot(X, Y));
+}
+
+/* |(X, Y)|: the square root of the sum of squares where that neither
+ * overflows nor underflows, else hypot (several times slower) */
+static double radius(double X, double Y)
+{
+    const double s = X * X + Y * Y;
+    return s > 1e-290 && s < 1e290 ? sqrt(s) : hypot(X, Y);
 }
 
 static int check_grid(int nkx, int nky, double dx, double dy)
@@ -48,7 +58,8 @@ int rr_influence_boxes(int nkx, int nky, double dx, double dy, double *ta, doubl
         double pa = 0.0, pb = 0.0, pr = 0.0;   /* corner (i - 1, j) */
         for (i = 0; i <= nkx; i++) {
             const double X = (i - 0.5) * dx;
-            const double fa = x_log_yr(X, Y), fb = x_log_yr(Y, X), fr = hypot(X, Y);
+            /* one radius for the corner's three primitives */
+            const double fr = radius(X, Y), fa = x_log_yr_r(X, Y, fr), fb = x_log_yr_r(Y, X, fr);
             if (i > 0 && j > 0) {
                 /* box (i-1, j-1): corners (i, j) + (i-1, j-1) - (i-1, j) - (i, j-1);
                  * the row below was stored in the output temporarily */

@@ -4,13 +4,15 @@
  * to 0.2 %, the discretisation error at 15 elements across), full sliding
  * (|F| = mu N to 1e-6), a creepage-free case (no traction at all), the
  * workspace's cached normal solution giving a fresh solve's doubles, the
- * field's sums, and every documented error.
+ * field's sums, the steady-rolling equations checked by direct sums (no
+ * FFT), and every documented error.
  */
 #include <stdlib.h>
 #include <string.h>
 #include "tests/rr_test.h"
 #include "contact/rr_exact.h"
 #include "contact/rr_hertz.h"
+#include "contact/rr_influence.h"
 
 static rr_exact_problem hertz_case(double a, double b, int n)
 {
@@ -26,6 +28,67 @@ static rr_exact_problem hertz_case(double a, double b, int n)
     pb.maxit = 2000;
     pb.spin_shift = 1.0 / 6.0;
     return pb;
+}
+
+/* The solution of pb satisfies the discrete steady-rolling equations, its
+ * slip recomputed by direct sums over the influence coefficients (no FFT):
+ * s = w + (1/G) sum_j (A(i - j) - A(i - j + e_x)) p_j in units of dx
+ * (rr_exact.h), s = 0 in adhesion, s the field's slip in slip, p opposite to
+ * it at the bound.  Independent of how the solver builds its spectra (from
+ * the symmetric kernels shifted, or on a torus too short for the shift, the
+ * steady kernels themselves).  Returns the largest error relative to |w|. */
+static double steady_equations_error(const rr_exact_problem *pb, double *w, size_t len)
+{
+    const int mx = pb->grid.mx, my = pb->grid.my, n = mx * my;
+    const double aspect = pb->grid.dy / pb->grid.dx;
+    double *px = calloc(n, sizeof *px), *py = calloc(n, sizeof *py), *sx = calloc(n, sizeof *sx);
+    double *sy = calloc(n, sizeof *sy), *pn = calloc(n, sizeof *pn), err = 0.0, wmax;
+    signed char *state = calloc(n, 1);
+    rr_exact_field f;
+    rr_exact_result r;
+    int i, j;
+    f.pn = pn;
+    f.px = px;
+    f.py = py;
+    f.sx = sx;
+    f.sy = sy;
+    f.state = state;
+    CHECK_STATUS(rr_exact_solve(pb, w, len, &r, &f), RR_OK, "solve for the direct check");
+    wmax = hypot(pb->cx, pb->cy) + fabs(pb->cphi) * 0.5 * mx * pb->grid.dx;
+    for (i = 0; i < n; i++) {
+        const int ix = i % mx, iy = i / mx;
+        const double x = pb->grid.x0 + ix * pb->grid.dx, y = pb->grid.y0 + iy * pb->grid.dy;
+        double s1 = pb->cx - pb->cphi * y;
+        double s2 = pb->cy + pb->cphi * (x + pb->spin_shift * pb->grid.dx);
+        if (state[i] < 0)
+            continue;
+        for (j = 0; j < n; j++) {
+            const int kx = ix - j % mx, ky = iy - j / mx;
+            double a0[4], a1[4];
+            if (px[j] == 0.0 && py[j] == 0.0)
+                continue;
+            rr_influence_at(kx, ky, 1.0, aspect, pb->nu, a0);
+            rr_influence_at(kx + 1, ky, 1.0, aspect, pb->nu, a1);
+            s1 += ((a0[1] - a1[1]) * px[j] + (a0[3] - a1[3]) * py[j]) / pb->G;
+            s2 += ((a0[3] - a1[3]) * px[j] + (a0[2] - a1[2]) * py[j]) / pb->G;
+        }
+        if (state[i] == 0) {
+            err = fmax(err, hypot(s1, s2) / wmax);
+        } else {
+            const double t = hypot(px[i], py[i]), v = hypot(s1, s2);
+            err = fmax(err, hypot(s1 - sx[i], s2 - sy[i]) / wmax);
+            /* p = -mu pn s / |s| */
+            err = fmax(err, hypot(px[i] / t + s1 / v, py[i] / t + s2 / v) * 1e-3);
+            err = fmax(err, fabs(t - pb->mu * pn[i]) / (pb->mu * pn[i]) * 1e-3);
+        }
+    }
+    free(px);
+    free(py);
+    free(sx);
+    free(sy);
+    free(pn);
+    free(state);
+    return err;
 }
 
 int main(void)
@@ -118,6 +181,25 @@ int main(void)
                      "the product cap warns");
         CHECK(isfinite(r.fx) && hypot(r.fx, r.fy) <= bad.mu * r.fn * (1 + 1e-12),
               "a capped solve still within mu N");
+    }
+    /* the discrete equations by direct sums, with spin, on a torus that
+     * holds the shift (15 across: 19 elements, 40) and on one that does
+     * not (9 across: 13 elements, 25 = 2 13 - 1) */
+    {
+        const int sizes[2] = {15, 9};
+        int q;
+        for (q = 0; q < 2; q++) {
+            rr_exact_problem p2 = hertz_case(0.005, 0.003, sizes[q]);
+            const size_t l2 = rr_exact_workspace_len(p2.grid.mx, p2.grid.my);
+            double *w2 = calloc(l2, sizeof *w2), e;
+            p2.cx = 3e-4;
+            p2.cy = -1e-4;
+            p2.cphi = 0.6;
+            e = steady_equations_error(&p2, w2, l2);
+            CHECK(e < 1e-7, sizes[q] == 15 ? "steady equations by direct sums, 15 across"
+                                           : "steady equations by direct sums, 9 across");
+            free(w2);
+        }
     }
     CHECK(rr_exact_workspace_len(0, 5) == 0 && rr_exact_workspace_len(5, RR_EXACT_MAX_GRID + 1) == 0,
           "no workspace for bad sizes");

@@ -132,6 +132,24 @@ static void test_good_size(void)
     }
     CHECK(bad == 0, "rr_fft_good_size(n) is the least 5-smooth number >= n, n <= 3000");
     CHECK(rr_fft_good_size(0) == 0, "rr_fft_good_size(0) = 0");
+    {
+        /* the torus: a multiple of 4 unless the good size is 10 % shorter */
+        static const int tl[][2] = {{1, 1}, {2, 2}, {5, 5}, {13, 16}, {25, 25}, {29, 32},
+                                    {49, 50}, {61, 64}, {89, 96}, {97, 100}, {121, 128},
+                                    {129, 144}, {169, 180}, {8191, 8192}};
+        int bad4 = 0, m;
+        for (i = 0; i < (int)(sizeof tl / sizeof tl[0]); i++) {
+            snprintf(buf, sizeof buf, "rr_conv2d_torus_len(%d) = %d", tl[i][0], tl[i][1]);
+            CHECK(rr_conv2d_torus_len(tl[i][0]) == tl[i][1], buf);
+        }
+        for (m = 1; m <= 3000; m++) {
+            const int t = rr_conv2d_torus_len(m), g = rr_fft_good_size(m);
+            bad4 += t < m || rr_fft_good_size(t) != t || (t != g && t % 4 != 0);
+        }
+        CHECK(bad4 == 0, "rr_conv2d_torus_len(n): 5-smooth, >= n, the good size or a multiple of 4");
+        CHECK(rr_conv2d_torus_len(0) == 0 && rr_conv2d_torus_len(RR_FFT_MAX_LEN) == 0,
+              "rr_conv2d_torus_len out of range = 0");
+    }
     CHECK(rr_fft_good_size(-5) == 0, "rr_fft_good_size(-5) = 0");
     CHECK(rr_fft_good_size(INT_MIN) == 0, "rr_fft_good_size(INT_MIN) = 0");
     CHECK(rr_fft_good_size(RR_FFT_MAX_LEN + 1) == 0, "rr_fft_good_size above the cap = 0");
@@ -223,6 +241,41 @@ static void test_isa_builds(engine *e, const double *inx, const double *iny)
 #endif
 }
 
+/* rr_conv2d_spectrum_torus of a kernel laid on the torus by hand (zero
+ * between the grid's offsets) gives rr_conv2d_spectrum's bits: the same
+ * field is transformed; and its own refusals. */
+static void test_torus(engine *e)
+{
+    const int L1 = e->cv.L1, L2 = e->cv.L2, mx = e->mx, my = e->my;
+    double *t = xcalloc((size_t)L1 * L2, sizeof(double)), *s = xcalloc(e->sl, sizeof(double));
+    int kx, ky, st;
+    char buf[160];
+    for (ky = -(my - 1); ky < my; ky++)
+        for (kx = -(mx - 1); kx < mx; kx++)
+            t[(size_t)(ky < 0 ? ky + L2 : ky) * L1 + (kx < 0 ? kx + L1 : kx)] =
+                e->K[2][(size_t)(ky + my - 1) * (2 * mx - 1) + (kx + mx - 1)];
+    st = rr_conv2d_spectrum_torus(&e->cv, t, s);
+    snprintf(buf, sizeof buf, "%dx%d: the torus spectrum is the grid kernel's", mx, my);
+    CHECK(st == RR_OK && memcmp(s, e->S[2], e->sl * sizeof *s) == 0, buf);
+#if RR_FFT_DISPATCH
+    if (__builtin_cpu_supports("avx2")) {
+        double *s2 = xcalloc(e->sl, sizeof(double));
+        st = rr_conv2d_spectrum_torus_baseline(&e->cv, t, s);
+        st |= rr_conv2d_spectrum_torus_avx2(&e->cv, t, s2);
+        snprintf(buf, sizeof buf, "%dx%d: torus spectrum, AVX2 = baseline", mx, my);
+        CHECK(st == RR_OK && memcmp(s, s2, e->sl * sizeof *s) == 0, buf);
+        free(s2);
+    }
+#endif
+    t[0] = NAN;
+    CHECK_STATUS(rr_conv2d_spectrum_torus(&e->cv, t, s), RR_ERR_NONFINITE, "torus: NaN kernel");
+    CHECK(isnan(s[0]) && isnan(s[e->sl - 1]), "torus: NaN spectrum on error");
+    CHECK_STATUS(rr_conv2d_spectrum_torus(&e->cv, NULL, s), RR_ERR_NULL, "torus: kern NULL");
+    CHECK_STATUS(rr_conv2d_spectrum_torus(NULL, t, s), RR_ERR_NULL, "torus: cv NULL");
+    free(t);
+    free(s);
+}
+
 static void test_grid(int mx, int my)
 {
     engine e;
@@ -307,6 +360,7 @@ static void test_grid(int mx, int my)
           && memcmp(cx, oy, (size_t)e.n * sizeof *cx) == 0, buf);
 
     test_isa_builds(&e, inx, iny);
+    test_torus(&e);
     free(inx);
     free(iny);
     free(ox);
@@ -536,18 +590,20 @@ int main(void)
     /* mx, my: tori (L1 x L2) and what they exercise */
     static const int grids[][2] = {
         {1, 1},     /* 1 x 1: no stage at all */
-        {1, 7},     /* 1 x 15 */
-        {7, 1},     /* 15 x 1 */
+        {1, 7},     /* 1 x 16 */
+        {7, 1},     /* 16 x 1 */
         {2, 2},     /* 3 x 3: one stage */
         {3, 2},     /* 5 x 3 */
         {5, 4},     /* 9 x 8: one radix-9 stage; 8 = 4 2 */
-        {7, 5},     /* 15 x 9: odd mx (the scalar path's padded copy) */
+        {7, 5},     /* 16 x 9: odd mx (the scalar path's padded copy) */
         {6, 11},    /* 12 x 24: 24 = 4 6 */
         {13, 29},   /* 25 x 60: 5 5, and 4 3 5 with the pruned radix-4 ends */
         {30, 30},   /* 60 x 60 */
-        {23, 17},   /* 45 x 36: 45 = 9 5, partial first and last stages */
-        {41, 38},   /* 81 x 75: 9 9, 3 5 5 */
-        {47, 3},    /* 96 x 5: 96 = 4 8 3 */
+        {14, 13},   /* 27 x 25: 9 3 and 5 5, partial first and last stages */
+        {23, 17},   /* 48 x 36 */
+        {41, 38},   /* 81 x 80: 9 9, 4 4 5 */
+        {47, 3},    /* 96 x 5: 96 = 4 4 6 (a radix 8 would not save a stage) */
+        {31, 16},   /* 64 x 32: 4 4 4, and 4 8 (it saves one) */
         {3, 101},   /* 5 x 216: 216 = 4 6 9 */
         {101, 2}    /* 216 x 3 */
     };

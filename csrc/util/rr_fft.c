@@ -16,7 +16,7 @@
  * and imaginary planes swapped.
  */
 
-/* The three convolutions are compiled twice on x86-64 with GCC or clang:
+/* The spectra and the convolutions are compiled twice on x86-64 with GCC or clang:
  * here for the baseline, and for AVX2 by rr_fft_avx2.c, which includes
  * this file; each call takes the AVX2 build where the processor has it.
  * The butterflies run on whole lines of lanes, so the wider vectors take
@@ -51,6 +51,7 @@
 #define MAX_RADIX 9
 #define TMP_LINES (4 * MAX_RADIX)
 #define ALIGN_DOUBLES 8   /* planes start on 64-byte boundaries */
+#define CAP_OFFSET 128    /* a plane component's length mod 512 doubles */
 
 typedef ptrdiff_t idx;
 
@@ -72,6 +73,16 @@ int rr_fft_good_size(int n)
                 best = v;
         }
     return (int)best;
+}
+
+int rr_conv2d_torus_len(int n)
+{
+    int g, g4;
+    if (n < 1 || n > RR_FFT_MAX_LEN / 2)
+        return 0;
+    g = rr_fft_good_size(n);
+    g4 = 4 * rr_fft_good_size((n + 3) / 4);    /* 4 k is 5-smooth where k is */
+    return g % 4 == 0 || 10 * (long)g > 9 * (long)g4 ? g4 : g;
 }
 
 /* ---- twiddles ----------------------------------------------------------------- */
@@ -116,26 +127,24 @@ static void unit_root(long j, long n, double *c, double *s)
  * n / 2 on, so the first stage is a half-size butterfly (or only twiddle
  * products); else last: the inverse transforms need only the first half
  * of their output, so the last stage computes half the outputs (or only
- * sums).  The other stages as few as the radices allow: 8 for factors
- * 2^3, then 4, a lone 2 as 6 with a 3 (or 2), 9 for 3^2, 3, 5; each stage
- * is one sweep over the data, the larger radices also take fewer
- * twiddle products. */
-static int plan_radices(int n, int fwd, int *radix)
+ * sums).  The other stages as few as the radices allow: 4s, or 8 for
+ * factors 2^3 where that saves a stage, a lone 2 as 6 with a 3 (or 2), 9
+ * for 3^2, 3, 5; each stage is one sweep over the data, the larger
+ * radices also take fewer twiddle products.  Radix 8 only where it saves
+ * a stage: at the same number of stages 4s were faster (64 = 4 4 4 takes
+ * 8 % less than 4 8 2 at a 31 x 31 grid, 96 = 4 4 6 4 % less than 4 8 3:
+ * eight input lines 4 KB apart share a cache set). */
+static int inner_radices(int a, int b, int c, int use8, int *radix)
 {
-    int a = 0, b = 0, c = 0, k = 0, i, lead, t;
-    while (n % 2 == 0) { n /= 2; a++; }
-    while (n % 3 == 0) { n /= 3; b++; }
-    while (n % 5 == 0) { n /= 5; c++; }
-    if (n != 1)
-        return -1;
-    lead = a >= 2 ? 4 : a == 1 ? 2 : 0;
-    a -= lead == 4 ? 2 : lead == 2 ? 1 : 0;
-    /* fewer, larger stages: 8 = 2^3, 6 = 2 x 3 for a lone 2, 9 = 3^2 */
-    for (i = 0; i < a / 3; i++)
-        radix[k++] = 8;
-    a %= 3;
-    if (a == 2)
+    int k = 0, i;
+    if (use8) {
+        for (i = 0; i < a / 3; i++)
+            radix[k++] = 8;
+        a %= 3;
+    }
+    for (i = 0; i < a / 2; i++)
         radix[k++] = 4;
+    a %= 2;
     if (a == 1 && b > 0) {
         radix[k++] = 6;
         b--;
@@ -148,6 +157,28 @@ static int plan_radices(int n, int fwd, int *radix)
         radix[k++] = 3;
     for (i = 0; i < c; i++)
         radix[k++] = 5;
+    return k;
+}
+
+static int plan_radices(int n, int fwd, int *radix)
+{
+    int a = 0, b = 0, c = 0, k = 0, i, lead, t;
+    while (n % 2 == 0) { n /= 2; a++; }
+    while (n % 3 == 0) { n /= 3; b++; }
+    while (n % 5 == 0) { n /= 5; c++; }
+    if (n != 1)
+        return -1;
+    lead = a >= 2 ? 4 : a == 1 ? 2 : 0;
+    a -= lead == 4 ? 2 : lead == 2 ? 1 : 0;
+    {
+        int r8[RR_FFT_MAX_STAGES];
+        const int k8 = inner_radices(a, b, c, 1, r8);
+        k = inner_radices(a, b, c, 0, radix);
+        if (k8 < k) {
+            memcpy(radix, r8, (size_t)k8 * sizeof *radix);
+            k = k8;
+        }
+    }
     if (fwd) {
         if (lead) {
             for (i = k; i > 0; i--)
@@ -1165,12 +1196,17 @@ static size_t layout(int mx, int my, int *L1, int *L2, size_t *cap)
     size_t n, c, vmax;
     if (mx < 1 || my < 1 || mx > RR_CONV2D_MAX_GRID || my > RR_CONV2D_MAX_GRID)
         return 0;
-    *L1 = rr_fft_good_size(2 * mx - 1);
-    *L2 = rr_fft_good_size(2 * my - 1);
+    *L1 = rr_conv2d_torus_len(2 * mx - 1);
+    *L2 = rr_conv2d_torus_len(2 * my - 1);
     vmax = (size_t)(*L1 > *L2 ? *L1 : *L2);
     /* planes hold L1 L2 values; rounded up so that the im part is aligned */
     c = (size_t)*L1 * (size_t)*L2;
     c = (c + ALIGN_DOUBLES - 1) / ALIGN_DOUBLES * ALIGN_DOUBLES;
+    /* and to 128 past a multiple of 4 KB (512 doubles), so that the four
+     * scratch arrays start 1 KB apart in the cache's sets: a 64 x 64 torus
+     * put them 32 KB apart, and a product's lines of all four then
+     * fought over the same sets (apply2 at 31 x 31 took 28 us, now 17) */
+    c += (CAP_OFFSET + 512 - c % 512) % 512;
     *cap = c;
     n = 2 * plan_tw_len(*L1) + 2 * plan_tw_len(*L2) + vmax + TMP_LINES * vmax + 4 * c
         + 3 * ALIGN_DOUBLES;
@@ -1251,45 +1287,16 @@ static void fill_nan(double *v, size_t n)
         v[i] = NAN;
 }
 
-int HOT(rr_conv2d_spectrum)(rr_conv2d *cv, const double *kern, double *spec)
+/* The spectrum of the real torus field in scratch plane 0 (its imaginary
+ * part zero): along y (only ky < nh kept), transpose, along x, scaled. */
+static int spectrum_of_plane(rr_conv2d *cv, double *spec, size_t ns)
 {
-    int L1, L2, nh, mx, my, kx, ky, res;
-    idx kw;
-    size_t ns;
-    double *ar, *ai, scale;
+    const int L1 = cv->L1, L2 = cv->L2, nh = cv->nh;
+    double scale;
     src_lines x;
-
-    if (!ready(cv))
-        return RR_ERR_NULL;
-    ns = rr_conv2d_spectrum_len(cv);
-    if (!kern || !spec) {
-        fill_nan(spec, ns);
-        return RR_ERR_NULL;
-    }
-    L1 = cv->L1;
-    L2 = cv->L2;
-    nh = cv->nh;
-    mx = cv->mx;
-    my = cv->my;
-    kw = 2 * mx - 1;
-    if (!finite_n(kern, kw * (2 * my - 1))) {
-        fill_nan(spec, ns);
-        return RR_ERR_NONFINITE;
-    }
-    /* the kernel wrapped onto the torus: L2 lines (ky) of L1 lanes (kx) */
-    ar = plane_re(cv, 0);
-    ai = plane_im(cv, 0);
-    memset(ar, 0, (size_t)L1 * (size_t)L2 * sizeof *ar);
-    memset(ai, 0, (size_t)L1 * (size_t)L2 * sizeof *ai);
-    for (ky = -(my - 1); ky <= my - 1; ky++) {
-        const idx row = (idx)(ky < 0 ? ky + L2 : ky) * L1;
-        const double *k = kern + (idx)(ky + my - 1) * kw + (mx - 1);
-        for (kx = -(mx - 1); kx <= mx - 1; kx++)
-            ar[row + (kx < 0 ? kx + L1 : kx)] = k[kx];
-    }
-    /* along y (only ky < nh kept), transpose, along x */
-    x.re = ar;
-    x.im = ai;
+    int res;
+    x.re = plane_re(cv, 0);
+    x.im = plane_im(cv, 0);
     x.ld = L1;
     res = fft_pass(cv, &cv->yf, 0, L1, x, 0, L2, NULL, nh);
     transpose(nh, L1, plane_re(cv, res), L1, plane_re(cv, 1 - res), nh);
@@ -1313,6 +1320,64 @@ int HOT(rr_conv2d_spectrum)(rr_conv2d *cv, const double *kern, double *spec)
         return RR_ERR_RANGE;
     }
     return RR_OK;
+}
+
+int HOT(rr_conv2d_spectrum)(rr_conv2d *cv, const double *kern, double *spec)
+{
+    int L1, L2, mx, my, kx, ky;
+    idx kw;
+    size_t ns;
+    double *ar, *ai;
+
+    if (!ready(cv))
+        return RR_ERR_NULL;
+    ns = rr_conv2d_spectrum_len(cv);
+    if (!kern || !spec) {
+        fill_nan(spec, ns);
+        return RR_ERR_NULL;
+    }
+    L1 = cv->L1;
+    L2 = cv->L2;
+    mx = cv->mx;
+    my = cv->my;
+    kw = 2 * mx - 1;
+    if (!finite_n(kern, kw * (2 * my - 1))) {
+        fill_nan(spec, ns);
+        return RR_ERR_NONFINITE;
+    }
+    /* the kernel wrapped onto the torus: L2 lines (ky) of L1 lanes (kx) */
+    ar = plane_re(cv, 0);
+    ai = plane_im(cv, 0);
+    memset(ar, 0, (size_t)L1 * (size_t)L2 * sizeof *ar);
+    memset(ai, 0, (size_t)L1 * (size_t)L2 * sizeof *ai);
+    for (ky = -(my - 1); ky <= my - 1; ky++) {
+        const idx row = (idx)(ky < 0 ? ky + L2 : ky) * L1;
+        const double *k = kern + (idx)(ky + my - 1) * kw + (mx - 1);
+        for (kx = -(mx - 1); kx <= mx - 1; kx++)
+            ar[row + (kx < 0 ? kx + L1 : kx)] = k[kx];
+    }
+    return spectrum_of_plane(cv, spec, ns);
+}
+
+int HOT(rr_conv2d_spectrum_torus)(rr_conv2d *cv, const double *kern, double *spec)
+{
+    size_t ns, nt;
+
+    if (!ready(cv))
+        return RR_ERR_NULL;
+    ns = rr_conv2d_spectrum_len(cv);
+    if (!kern || !spec) {
+        fill_nan(spec, ns);
+        return RR_ERR_NULL;
+    }
+    nt = (size_t)cv->L1 * (size_t)cv->L2;
+    if (!finite_n(kern, (idx)nt)) {
+        fill_nan(spec, ns);
+        return RR_ERR_NONFINITE;
+    }
+    memcpy(plane_re(cv, 0), kern, nt * sizeof *kern);
+    memset(plane_im(cv, 0), 0, nt * sizeof *kern);
+    return spectrum_of_plane(cv, spec, ns);
 }
 
 int HOT(rr_conv2d_apply)(rr_conv2d *cv, const double *spec, const double *in, double *out)
@@ -1465,6 +1530,12 @@ int rr_conv2d_spectrum(rr_conv2d *cv, const double *kern, double *spec)
 {
     return __builtin_cpu_supports("avx2") ? rr_conv2d_spectrum_avx2(cv, kern, spec)
                                           : rr_conv2d_spectrum_baseline(cv, kern, spec);
+}
+
+int rr_conv2d_spectrum_torus(rr_conv2d *cv, const double *kern, double *spec)
+{
+    return __builtin_cpu_supports("avx2") ? rr_conv2d_spectrum_torus_avx2(cv, kern, spec)
+                                          : rr_conv2d_spectrum_torus_baseline(cv, kern, spec);
 }
 
 int rr_conv2d_apply(rr_conv2d *cv, const double *spec, const double *in, double *out)

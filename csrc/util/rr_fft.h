@@ -9,15 +9,15 @@
  * contact case.
  *
  * How.  A field of mx x my values is convolved on an L1 x L2 torus,
- * L1 = rr_fft_good_size(2 mx - 1), L2 = rr_fft_good_size(2 my - 1): large
- * enough that the circular convolution with the kernel wrapped onto the
- * torus is the linear one on the grid.  A 2-D transform is a pass along y
+ * L1 = rr_conv2d_torus_len(2 mx - 1), L2 = rr_conv2d_torus_len(2 my - 1):
+ * large enough that the circular convolution with the kernel wrapped onto
+ * the torus is the linear one on the grid.  A 2-D transform is a pass along y
  * and one along x (the inverse: x, then y), each a batch of 1-D Stockham
  * (self-sorting) transforms in which a butterfly combines whole lines of
  * values: the inner loops run over contiguous memory with one set of
  * twiddles (vectorisable), on split real and imaginary planes, with a
  * transpose between the passes.  Radices 2, 3, 4, 5, and 6, 8, 9 so that
- * the lengths of interest take 3 sweeps (60 = 4 5 3, 96 = 4 8 3,
+ * the lengths of interest take 3 sweeps (60 = 4 5 3, 96 = 4 4 6,
  * 216 = 4 6 9).  Only what is needed is transformed: the y passes take
  * only the grid's mx columns, the forward x pass only its mx nonzero
  * lines, the inverse x pass gives only mx; the first stage of a forward
@@ -77,6 +77,17 @@
  */
 int rr_fft_good_size(int n);
 
+/*
+ * rr_conv2d_torus_len - the torus side rr_conv2d takes for n offsets:
+ * the least multiple of 4 of the form 2^a 3^b 5^c that is >= n, or
+ * rr_fft_good_size(n) where that is at most 9/10 of it.  Lengths with a
+ * factor 4 start and end with the pruned radix-4 stages; 2 x odd and odd
+ * ones took 1.2 to 1.5 times as long per point (apply2 at a 45 x 45 grid:
+ * 37 us on 96 against 44 on 90; at 63 x 63: 77 on 128 against 109 on
+ * 125).  0 for n < 1 or n > RR_FFT_MAX_LEN / 2.
+ */
+int rr_conv2d_torus_len(int n);
+
 /* One 1-D transform length: the radix of each stage, in order, and the
  * stages' twiddles w_p^k = exp(-2 pi i p k / n_t) (p < n_t / r_t,
  * k = 1 .. r_t - 1, as (re, im) pairs; n_t the length left at stage t). */
@@ -98,7 +109,7 @@ typedef struct {
  */
 typedef struct {
     int mx, my;          /* grid */
-    int L1, L2;          /* torus: rr_fft_good_size(2 mx - 1), (2 my - 1) */
+    int L1, L2;          /* torus: rr_conv2d_torus_len(2 mx - 1), (2 my - 1) */
     int nh;              /* L2 / 2 + 1: the spectrum's ky in [0, nh) */
     int vmax;            /* longest line of any pass: max(L1, L2) */
     /* forward plans start with radix 4 (or 2) for the input pruning,
@@ -157,6 +168,18 @@ size_t rr_conv2d_spectrum_len(const rr_conv2d *cv);
 int rr_conv2d_spectrum(rr_conv2d *cv, const double *kern, double *spec);
 
 /*
+ * rr_conv2d_spectrum_torus - the same from a kernel given on the whole
+ * torus: kern[ky L1 + kx], kx in [0, L1), ky in [0, L2), the offset
+ * kx (ky) or kx - L1 (ky - L2).  The products read only the offsets of
+ * the grid, so either spectrum serves them; this one also holds the
+ * kernel's values at the other offsets, where the symbol itself matters
+ * (an approximate inverse of the kernel from 1 / spectrum).
+ *   given:   kern, L1 L2 values; returns, status and cost as
+ *            rr_conv2d_spectrum.
+ */
+int rr_conv2d_spectrum_torus(rr_conv2d *cv, const double *kern, double *spec);
+
+/*
  * rr_conv2d_apply - out = K * in for one real kernel K (its spectrum spec).
  *   given:   in, out: mx my values each.  in and out may be the same
  *            array (or overlap in any way): in is read in full before out
@@ -188,18 +211,20 @@ int rr_conv2d_apply2(rr_conv2d *cv, const double *sxx, const double *sxy,
                      const double *syx, const double *syy, const double *inx,
                      const double *iny, double *outx, double *outy);
 
-/* Not API: the two builds of the three convolutions on x86-64 with GCC or
+/* Not API: the two builds of the spectra and convolutions on x86-64 with GCC or
  * clang (rr_fft.c says why), the baseline and AVX2, for rr_fft.c's
  * dispatch and for the test that they give the same doubles. */
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(RR_PORTABLE)
 #define RR_FFT_DISPATCH 1
 
 int rr_conv2d_spectrum_baseline(rr_conv2d *cv, const double *kern, double *spec);
+int rr_conv2d_spectrum_torus_baseline(rr_conv2d *cv, const double *kern, double *spec);
 int rr_conv2d_apply_baseline(rr_conv2d *cv, const double *spec, const double *in, double *out);
 int rr_conv2d_apply2_baseline(rr_conv2d *cv, const double *sxx, const double *sxy,
                               const double *syx, const double *syy, const double *inx,
                               const double *iny, double *outx, double *outy);
 int rr_conv2d_spectrum_avx2(rr_conv2d *cv, const double *kern, double *spec);
+int rr_conv2d_spectrum_torus_avx2(rr_conv2d *cv, const double *kern, double *spec);
 int rr_conv2d_apply_avx2(rr_conv2d *cv, const double *spec, const double *in, double *out);
 int rr_conv2d_apply2_avx2(rr_conv2d *cv, const double *sxx, const double *sxy,
                           const double *syx, const double *syy, const double *inx,
