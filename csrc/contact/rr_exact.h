@@ -111,8 +111,10 @@ size_t rr_exact_workspace_len(int mx, int my);
  *   positive, or no element where h is lowest can carry load), RR_ERR_LOAD,
  *   RR_ERR_MATERIAL, RR_ERR_FRICTION, RR_ERR_PARAM (tol, maxit,
  *   spin_shift), RR_ERR_RANGE (mu N or mu times the mean pressure not a
- *   normal double, or sizes so extreme that a result is not
- *   finite), RR_ERR_WORKSPACE, RR_ERR_NULL.  field may be NULL.
+ *   normal double, sizes so extreme that a result is not finite, or a
+ *   load whose displacements drown in the rounding of the gap, so that the
+ *   pressure would not carry it to 1e-6), RR_ERR_WORKSPACE, RR_ERR_NULL.
+ *   field may be NULL.
  */
 int rr_exact_solve(const rr_exact_problem *pb, double *work, size_t work_len,
                    rr_exact_result *res, rr_exact_field *field);
