@@ -1602,17 +1602,19 @@ static int run_kernel(void *ctx, npy_intp start, npy_intp stop)
 /* A rig sample costs about 10 us: 256 of them between Ctrl-C checks. */
 #define SAMPLE_COST (CHUNK_WORK / 256.0)
 
-/* run(roller_ref, xi_ref) -> (records[n, RR_REC_COUNT], status): rr_rig_run, one
- * sample per element, in chunks (GIL released, Ctrl-C noticed between
- * them); stops at the first error (its row has the status, the rest NaN). */
+/* run(roller_ref, xi_ref[, out]) -> (records[n, RR_REC_COUNT], status):
+ * rr_rig_run, one sample per element, in chunks (GIL released, Ctrl-C
+ * noticed between them); stops at the first error (its row has the
+ * status, the rest NaN).  out: a C-contiguous float64 array of that shape
+ * to write the records into (returned), else a new one. */
 static PyObject *Rig_run(RigObject *self, PyObject *args)
 {
-    PyObject *robj, *xobj, *out = NULL;
+    PyObject *robj, *xobj, *oobj = Py_None, *out = NULL;
     PyArrayObject *r = NULL, *x = NULL;
     npy_intp n, i, dims[2];
     run_batch_ctx b;
 
-    if (!PyArg_ParseTuple(args, "OO:run", &robj, &xobj))
+    if (!PyArg_ParseTuple(args, "OO|O:run", &robj, &xobj, &oobj))
         return NULL;
     r = (PyArrayObject *)PyArray_FROMANY(robj, NPY_DOUBLE, 1, 1, NPY_ARRAY_IN_ARRAY);
     x = (PyArrayObject *)PyArray_FROMANY(xobj, NPY_DOUBLE, 1, 1, NPY_ARRAY_IN_ARRAY);
@@ -1626,8 +1628,20 @@ static PyObject *Rig_run(RigObject *self, PyObject *args)
     }
     dims[0] = n;
     dims[1] = RR_REC_COUNT;
-    if (!(out = PyArray_SimpleNew(2, dims, NPY_DOUBLE)))
+    if (oobj != Py_None) {
+        PyArrayObject *o = (PyArrayObject *)oobj;
+        if (!PyArray_Check(oobj) || PyArray_TYPE(o) != NPY_DOUBLE || PyArray_NDIM(o) != 2
+            || PyArray_DIM(o, 0) != n || PyArray_DIM(o, 1) != RR_REC_COUNT
+            || !PyArray_IS_C_CONTIGUOUS(o) || !PyArray_ISWRITEABLE(o)) {
+            PyErr_Format(PyExc_ValueError, "Rig.run: out must be a writable C-contiguous "
+                         "float64 array of shape (%zd, %d)", (Py_ssize_t)n, RR_REC_COUNT);
+            goto fail;
+        }
+        Py_INCREF(oobj);
+        out = oobj;
+    } else if (!(out = PyArray_SimpleNew(2, dims, NPY_DOUBLE))) {
         goto fail;
+    }
     if (rig_enter(self, "run") < 0)
         goto fail;
     b.rig = &self->rig;

@@ -640,9 +640,11 @@ class Rig:
         csrc/rig/rr_rig.h, rr_rig_read, rr_rig_write
     info: the controllers' settings (rollerrig.control.RigInfo)
     advance() -> (record, status): the plant over one sample
-    run(roller_ref, xi_ref) -> (records, status): one sample per element of
-        the two 1-D arrays, records of shape (n, len(RECORD_FIELDS)); stops
-        at the first error (the rest NaN); status the worst of the run
+    run(roller_ref, xi_ref, out=None) -> (records, status): one sample per
+        element of the two 1-D arrays, records of shape (n,
+        len(RECORD_FIELDS)) (written into `out` if given: a writable
+        C-contiguous float64 array of that shape); stops at the first error
+        (the rest NaN); status the worst of the run
     record() -> (record, status); rhs(t, y) -> (dydt, status); jac(t, y)
         -> (J, status); set_state(t, y) -> status: the plant's right-hand
         side, its approximate Jacobian and its state y (RIG_STATE, 12 values)
@@ -680,10 +682,10 @@ class Rig:
             raise RollerRigError(f"{func}: {name} must be {want}, got shape {a.shape}")
         return np.ascontiguousarray(a)
 
-    def run(self, roller_ref, xi_ref):
+    def run(self, roller_ref, xi_ref, out=None):
         r = self._array("Rig.run", "roller_ref", roller_ref)
         x = self._array("Rig.run", "xi_ref", xi_ref, r.size)
-        return self._core.run(r, x)
+        return self._core.run(r, x) if out is None else self._core.run(r, x, out)
 
     def sample(self, roller_ref, xi_ref):
         return self._core.sample(self._scalar("Rig.sample", "roller_ref", roller_ref),
@@ -1224,16 +1226,19 @@ def _run_builtin(rig, P, duration, dt, targets, target_times, V, n, record_every
     for first in range(0, n, chunk):
         stop = min(n, first + chunk)
         roller_ref, xi_ref = schedule(P, duration, dt, targets, target_times, V, first, stop)
-        rec, status = rig.run(roller_ref, xi_ref)
+        # every sample kept: the records straight into the result's rows
+        rec, status = rig.run(roller_ref, xi_ref, out[first:stop] if record_every == 1
+                              else None)
         if status < 0:
             good = np.isfinite(rec[:, 0]) & (rec[:, -1] >= 0)
             rec = rec[:int(np.argmin(good)) if not good.all() else len(rec)]
         # keep samples k = record_every - 1, 2 record_every - 1, ...: the
         # records every record_every dt, ending at the duration
-        offset = (record_every - 1 - first) % record_every
-        keep = rec[offset::record_every]
-        at = (first + offset) // record_every
-        out[at:at + len(keep)] = keep
+        if record_every > 1:
+            offset = (record_every - 1 - first) % record_every
+            keep = rec[offset::record_every]
+            at = (first + offset) // record_every
+            out[at:at + len(keep)] = keep
         stepped = first + len(rec)
         # the worst warning of the chunk from its samples' own statuses: the
         # binding's run() may report only that of its last block of samples

@@ -190,3 +190,19 @@ def test_creep_options_are_named():
     with pytest.raises(rr.RollerRigError, match=r"simulate: unknown option\(s\) \['kappa'\]; "
                                                 r"the creep options are \['bound'"):
         rr.simulate(duration=0.1, targets=[0.02], kappa=1.0)
+
+
+def test_rig_run_into_a_given_array():
+    """Rig.run(out=...) writes the records in place (simulate's rows, no
+    copy): the same numbers as a new array; a wrong array is named."""
+    import numpy as np
+    refs = (np.full(50, 31.25), np.full(50, 0.02))
+    a, st_a = rr.build_rig()[0].run(*refs)
+    out = np.empty((50, len(rr.rig.RECORD_FIELDS)))
+    b, st_b = rr.build_rig()[0].run(*refs, out=out)
+    assert b is out and st_a == st_b
+    np.testing.assert_array_equal(a, b)
+    for bad in (np.empty((49, out.shape[1])), np.empty(out.shape, dtype=np.float32),
+                np.empty(out.shape, order="F"), [[0.0] * out.shape[1]] * 50):
+        with pytest.raises(ValueError, match="out must be a writable C-contiguous float64"):
+            rr.build_rig()[0].run(*refs, out=bad)
