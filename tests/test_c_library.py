@@ -1,8 +1,7 @@
 """The C core as a library for C programs outside the tree.
 
-(a) `make -C csrc install PREFIX=...` (and DESTDIR, uninstall): a program
-    written here, the seed paper's scenario as examples/rig_paper.c runs it,
-    built with `pkg-config --cflags --libs rollerrig` against the shared and
+(a) `make -C csrc install PREFIX=...` (and DESTDIR, uninstall):
+    examples/rig_paper.c, copied outside the tree and built with `pkg-config --cflags --libs rollerrig` against the shared and
     against the static library, gives rr.simulate()'s records bit for bit.
 (b) The installed Python package's C library (rollerrig.get_include(),
     get_library_dir(), its rollerrig.pc, rollerrig-config): the same
@@ -33,50 +32,9 @@ REPO = Path(ROOT)
 CSRC = REPO / "csrc"
 CFLAGS = ["-std=c99", "-Wall", "-Wextra", "-pedantic", "-Werror", "-O2"]
 
-# The paper's scenario from C alone (as examples/rig_paper.c): every
-# sample's record as raw doubles on stdout.
-PAPER_C = r"""
-#include <stdio.h>
-#include <stdlib.h>
-
-#include "rollerrig.h"
-
-int main(void)
-{
-    static double work[RR_RIG_TABLE_WORK_LEN];
-    static rr_rig rig;
-    rr_rig_config c;
-    rr_rig_geometry g;
-    rr_contact_table t;
-    rr_rig_params p;
-    double rec[RR_REC_COUNT], *data, roller_ref, xi_ref;
-    long k, n, len;
-    int st;
-
-    rr_rig_config_default(&c);
-    rr_rig_geometry_from(&c, &g);
-    len = rr_rig_table_data_len(&g);
-    if (!(data = malloc((size_t)len * sizeof *data)))
-        return 1;
-    if ((st = rr_rig_table_build(&g, data, len, work, RR_RIG_TABLE_WORK_LEN, &t, NULL)) < 0
-        || (st = rr_rig_params_from(&c, &t, &p)) < 0
-        || (st = rr_rig_init(&p, c.roller_speed / c.roller_radius, &rig)) < 0) {
-        fprintf(stderr, "paper: %s\n", rr_status_message(st));
-        return 1;
-    }
-    n = rr_rig_samples(&c);
-    for (k = 0; k < n; k++) {
-        rr_rig_schedule(&c, k, &roller_ref, &xi_ref);
-        if ((st = rr_rig_step(&rig, roller_ref, xi_ref, rec)) < 0) {
-            fprintf(stderr, "paper: sample %ld: %s\n", k, rr_status_message(st));
-            return 1;
-        }
-        fwrite(rec, sizeof rec[0], RR_REC_COUNT, stdout);
-    }
-    free(data);
-    return 0;
-}
-"""
+# The paper's scenario from C alone, every sample's record as raw doubles on
+# stdout: examples/rig_paper.c itself, compiled outside the tree.
+PAPER_C = (REPO / "examples" / "rig_paper.c").read_text()
 
 
 # ------------------------------------------------------------------ helpers
