@@ -14,29 +14,15 @@ the load average before and after, the machine's other work.
 """
 import argparse
 import os
+import sys
 import time
-
-import numpy as np
 
 import rollerrig as rr
 
 METHODS = [("fastsim", "FASTSIM 20x20 (default)"), ("exact_table", "exact-theory table"),
            ("polach", "Polach")]
-G, NU = 8.2e10, 0.28
-
-
-def random_inputs(n, seed):
-    """tests/test_exact_table.py's random cases."""
-    rng = np.random.default_rng(seed)
-    aob = np.exp(rng.uniform(np.log(0.1), np.log(10.0), n))
-    c = rng.uniform(3e-3, 9e-3, n)
-    N = rng.uniform(5e3, 1e5, n)
-    mu = rng.uniform(0.1, 0.5, n)
-    s = mu * N / (G * c * c)
-    mag = s * np.exp(rng.uniform(np.log(1e-4), np.log(1e3), (3, n)))
-    mag *= rng.choice([-1.0, 0.0, 1.0, 1.0], (3, n))
-    return dict(cx=mag[0] / 4.0, cy=mag[1] / 4.0, cphi=mag[2] / (4.0 * c), a=c * np.sqrt(aob),
-                b=c / np.sqrt(aob), N=N, mu=mu, G=G, nu=NU)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests"))
+from test_exact_table import G, NU, random_inputs  # noqa: E402  (the test's random cases)
 
 
 def main():
@@ -50,7 +36,7 @@ def main():
     for _ in range(args.repeats):
         for m, _ in METHODS:
             best[m] = min(best[m], rr.simulate(method=m).wall["run"])
-    cases = random_inputs(args.batch, 1)
+    cases = dict(random_inputs(args.batch, 1), G=G, nu=NU)
     batch = {"exact_table": float("inf"), "polach": float("inf")}
     for m in batch:
         rr.creep_forces(**cases, method=m)          # warm-up
