@@ -996,6 +996,19 @@ static double *plane_im(const rr_conv2d *cv, int k)
     return cv->plane[k] + cv->cap;
 }
 
+/* Scratch plane `from` (rows lines of cols lanes) transposed, both parts,
+ * into the other plane: its cols lines of rows lanes, for the next pass. */
+static src_lines transposed(const rr_conv2d *cv, int from, int rows, int cols)
+{
+    src_lines x;
+    transpose(rows, cols, plane_re(cv, from), cols, plane_re(cv, 1 - from), rows);
+    transpose(rows, cols, plane_im(cv, from), cols, plane_im(cv, 1 - from), rows);
+    x.re = plane_re(cv, 1 - from);
+    x.im = plane_im(cv, 1 - from);
+    x.ld = rows;
+    return x;
+}
+
 /* Plane a (L2 lines of hx lanes: the y transforms of the packed columns
  * z = in(ix) + i in(ix + hx)) to plane b (lines ix < mx of nh lanes ky):
  * the y spectra of the real columns, times 2 (the spectrum has the 1/2):
@@ -1299,11 +1312,7 @@ static int spectrum_of_plane(rr_conv2d *cv, double *spec, size_t ns)
     x.im = plane_im(cv, 0);
     x.ld = L1;
     res = fft_pass(cv, &cv->yf, 0, L1, x, 0, L2, NULL, nh);
-    transpose(nh, L1, plane_re(cv, res), L1, plane_re(cv, 1 - res), nh);
-    transpose(nh, L1, plane_im(cv, res), L1, plane_im(cv, 1 - res), nh);
-    x.re = plane_re(cv, 1 - res);
-    x.im = plane_im(cv, 1 - res);
-    x.ld = nh;
+    x = transposed(cv, res, nh, L1);
     res = fft_pass(cv, &cv->xf, 0, nh, x, 1 - res, L1, NULL, L1);
     scale = 0.5 / ((double)L1 * (double)L2);
     {
@@ -1493,21 +1502,13 @@ int HOT(rr_conv2d_apply2)(rr_conv2d *cv, const double *sxx, const double *sxy,
     x.im = iny;
     x.ld = mx;
     res = fft_pass(cv, &cv->yf, 0, mx, x, -1, my, NULL, L2);
-    transpose(L2, mx, plane_re(cv, res), mx, plane_re(cv, 1 - res), L2);
-    transpose(L2, mx, plane_im(cv, res), mx, plane_im(cv, 1 - res), L2);
-    x.re = plane_re(cv, 1 - res);
-    x.im = plane_im(cv, 1 - res);
-    x.ld = L2;
+    x = transposed(cv, res, L2, mx);
     res = fft_pass(cv, &cv->xf, 0, L2, x, 1 - res, mx, NULL, L1);
     mul2(cv, res, sxx, sxy, syx, syy);
     x.re = plane_re(cv, res);
     x.im = plane_im(cv, res);
     res = fft_pass(cv, &cv->xb, 1, L2, x, res, L1, NULL, mx);
-    transpose(mx, L2, plane_re(cv, res), L2, plane_re(cv, 1 - res), mx);
-    transpose(mx, L2, plane_im(cv, res), L2, plane_im(cv, 1 - res), mx);
-    x.re = plane_re(cv, 1 - res);
-    x.im = plane_im(cv, 1 - res);
-    x.ld = mx;
+    x = transposed(cv, res, mx, L2);
     y.re = outx;
     y.im = outy;
     y.ld = mx;
