@@ -217,12 +217,10 @@ static void put_values(out *o, const rr_fmu_config *start, const rr_fmu_var *v)
         put(o, " start=\"%ld\"", (long)x);
 }
 
-static void variable2(out *o, const rr_fmu_config *start, const rr_fmu_var *v)
+/* What FMI 2.0's ScalarVariable and 3.0's typed element share: name, value
+ * reference, description, causality, variability, initial. */
+static void put_identity(out *o, const rr_fmu_var *v, const char *name)
 {
-    static const char *const elements[] = {"Real", "Integer", "Boolean", "Enumeration"};
-    char name[RR_FMU_NAME_LEN];
-    rr_fmu_var_name(v, name, sizeof name);
-    put(o, "    <ScalarVariable");
     put_attr(o, "name", name);
     put(o, " valueReference=\"%u\"", v->vr);
     if (v->description[0])
@@ -231,12 +229,27 @@ static void variable2(out *o, const rr_fmu_config *start, const rr_fmu_var *v)
         variability_names[v->variability]);
     if (v->causality == RR_FMU_OUTPUT)
         put(o, " initial=\"calculated\"");
-    put(o, ">\n      <%s", elements[v->type]);
+}
+
+/* ... and the type's attributes: declared type, unit, start, range. */
+static void put_type(out *o, const rr_fmu_config *start, const rr_fmu_var *v, const char *name)
+{
     if (v->type == RR_FMU_ENUMERATION)
         put_attr(o, "declaredType", name);
     if (has_unit(v))
         put_attr(o, "unit", v->unit);
     put_values(o, start, v);
+}
+
+static void variable2(out *o, const rr_fmu_config *start, const rr_fmu_var *v)
+{
+    static const char *const elements[] = {"Real", "Integer", "Boolean", "Enumeration"};
+    char name[RR_FMU_NAME_LEN];
+    rr_fmu_var_name(v, name, sizeof name);
+    put(o, "    <ScalarVariable");
+    put_identity(o, v, name);
+    put(o, ">\n      <%s", elements[v->type]);
+    put_type(o, start, v, name);
     put(o, "/>\n    </ScalarVariable>\n");
 }
 
@@ -246,19 +259,8 @@ static void variable3(out *o, const rr_fmu_config *start, const rr_fmu_var *v)
     char name[RR_FMU_NAME_LEN];
     rr_fmu_var_name(v, name, sizeof name);
     put(o, "    <%s", elements[v->type]);
-    put_attr(o, "name", name);
-    put(o, " valueReference=\"%u\"", v->vr);
-    if (v->description[0])
-        put_attr(o, "description", v->description);
-    put(o, " causality=\"%s\" variability=\"%s\"", causality_names[v->causality],
-        variability_names[v->variability]);
-    if (v->causality == RR_FMU_OUTPUT)
-        put(o, " initial=\"calculated\"");
-    if (v->type == RR_FMU_ENUMERATION)
-        put_attr(o, "declaredType", name);
-    if (has_unit(v))
-        put_attr(o, "unit", v->unit);
-    put_values(o, start, v);
+    put_identity(o, v, name);
+    put_type(o, start, v, name);
     put(o, "/>\n");
 }
 
