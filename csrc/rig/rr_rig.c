@@ -764,6 +764,7 @@ int rr_rig_read(rr_rig *rig, rr_rig_signals *sig)
     }
     rig->enc_w[0] = w[0];
     rig->enc_w[1] = w[1];
+    rig->enc_xi = xi;
     rig->phase = 1;
     sig->t = rig->t;
     sig->roller_count = rig->roller_enc.count;
@@ -838,7 +839,7 @@ int rr_rig_write(rr_rig *rig, const rr_rig_command *cmd)
          * held at free rolling (BUILTIN), or at the caller's reference */
         rig->creep_control = 0;
         rig->xi_ref = NAN;
-        st = rr_creepctl_xi(&p->creepctl, w_wheel, w_roller, &rig->creepctl.xi_est);
+        rig->creepctl.xi_est = rig->enc_xi;
         rig->creepctl.K = 1.0;
         w_ref = cmd->wheelset_mode == RR_CMD_BUILTIN ? w_roller * p->creepctl.r_r / p->creepctl.r_w
               : cmd->wheelset_mode == RR_CMD_SPEED ? cmd->wheelset_ref : NAN;
@@ -889,7 +890,7 @@ int rr_rig_sample(rr_rig *rig, double roller_ref, double xi_ref)
     rr_rig_signals sig;
     rr_rig_command cmd;
     rr_encoder_state encs[2];
-    double w[2];
+    double w[2], xi;
     int st;
 
     if ((st = usable(rig)) != RR_OK)
@@ -901,6 +902,7 @@ int rr_rig_sample(rr_rig *rig, double roller_ref, double xi_ref)
     encs[0] = rig->roller_enc;
     encs[1] = rig->wheelset_enc;
     memcpy(w, rig->enc_w, sizeof w);
+    xi = rig->enc_xi;
     if ((st = rr_rig_read(rig, &sig)) < 0)
         return st;
     rr_rig_command_builtin(&cmd, roller_ref, xi_ref);
@@ -909,6 +911,7 @@ int rr_rig_sample(rr_rig *rig, double roller_ref, double xi_ref)
         rig->roller_enc = encs[0];
         rig->wheelset_enc = encs[1];
         memcpy(rig->enc_w, w, sizeof w);
+        rig->enc_xi = xi;
         rig->phase = 0;
     }
     return st;

@@ -234,6 +234,7 @@ typedef struct {
     int phase;                     /* 1 after rr_rig_read, 2 after rr_rig_write; 0 after
                                       rr_rig_advance */
     double enc_w[2];               /* the last reading's speeds: roller, wheelset [rad/s] */
+    double enc_xi;                 /* and its eq. 16 estimate [-] */
     rr_friction friction;          /* the base law held over the sample (schedule, command) */
     rr_pi_state roller_pi, wheelset_pi;
     rr_encoder_state roller_enc, wheelset_enc;
