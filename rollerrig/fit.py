@@ -497,8 +497,12 @@ def _fit(func, model, spec, cx, force, a, b, N, G, nu, speed, cy, cphi, fit, x0,
     stiffness = _stiffness(model, inner, x0, start, settings, c_all, target, f_ref)
     for t0 in _starts(theta0, inner, lo, hi, x0, stiffness):
         try:
-            s = least_squares(residuals, t0, bounds=(lo, hi), loss=loss, f_scale=f_scale,
-                              x_scale=1.0, method="trf")
+            # data too extreme overflow in scipy's own arithmetic (its squares of
+            # the Jacobian) before it gives up: the error below says so, numpy's
+            # warnings would only come first
+            with np.errstate(over="ignore", invalid="ignore"):
+                s = least_squares(residuals, t0, bounds=(lo, hi), loss=loss,
+                                  f_scale=f_scale, x_scale=1.0, method="trf")
         except ValueError as e:                 # scipy's SVD met an overflowed Jacobian
             _fail(func, f"the least-squares solve broke down on these data ({e}): the data "
                         f"(cx, force, N, speed) are too extreme for a creep curve")

@@ -556,6 +556,9 @@ def test_fit_polach_any_data_finite_or_named(cx, force, a, N, speed):
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", RollerRigWarning)
+            # no numpy warning either, not even from scipy's arithmetic on the
+            # package's behalf (issue 22: it came before fit_polach's own error)
+            warnings.simplefilter("error", RuntimeWarning)
             fit = rr.fit_polach(cx, force[:len(cx)], a=a, b=4e-3, N=N, speed=speed)
     except RollerRigError as e:
         assert_names_argument(e, "fit_polach", names)
