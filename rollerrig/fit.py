@@ -39,7 +39,13 @@ The fit
     r = weights * (model - force) / F_ref, F_ref the data's peak |force|, with
     a robust loss (default soft_l1) whose f_scale (default 0.05: five per
     cent of the peak force) is the residual beyond which a point counts as
-    an outlier.  Bounds: mu0 > 0, 0 < A <= 1, B >= 0, 0 < kS <= kA <= 1
+    an outlier.  Steps are scaled by 1 (the parameters are O(0.1 - 1); steps
+    scaled by the Jacobian's columns led a soft contact's curve from the
+    default start into another minimum).  Starts: x0, then the friction
+    law's free parameters moved (mu0 doubled, a flat and a steep law), then
+    the same with Polach's kA + kS from the data's initial slope; the best
+    fit is kept, and the first that fits to 1e-4 of the peak ends the search.
+    Bounds: mu0 > 0, 0 < A <= 1, B >= 0, 0 < kS <= kA <= 1
     (kS is fitted as the ratio kS/kA in (0, 1], so the order holds);
     modified FASTSIM: 0 < k0 <= 1, 0 <= alpha_inf <= 1, beta >= 0.  `bounds`
     narrows them: {name: (lo, hi)}; for the ratio, key "kS/kA".
@@ -385,23 +391,52 @@ _MU0_FACTORS = (1.0, 2.0)
 _LAWS = ({}, {"A": 0.2, "B": 3.0}, {"A": 0.8, "B": 0.2})
 
 
-def _starts(theta0, inner, lo, hi, x0):
+def _starts(theta0, inner, lo, hi, x0, stiffness=None):
     """theta0, then starts with the friction law's fitted parameters (those
-    x0 does not give) moved: mu0 doubled; A, B to a flat and to a steep law."""
+    x0 does not give) moved: mu0 doubled; A, B to a flat and to a steep law;
+    then the same with the stiffness {internal name: value} the data's
+    initial slope gives (_stiffness)."""
     yield theta0
     free = {n: k for k, n in enumerate(inner) if n not in (x0 or {})}
     seen = [tuple(theta0)]
-    for factor, law in itertools.product(_MU0_FACTORS, _LAWS):
+    for stiff, factor, law in itertools.product(({}, stiffness or {}), _MU0_FACTORS, _LAWS):
         t = np.array(theta0, dtype=float)
         if "mu0" in free:
             t[free["mu0"]] *= factor
-        for n, v in law.items():
+        for n, v in itertools.chain(law.items(), stiff.items()):
             if n in free:
                 t[free[n]] = v
         t = np.clip(t, lo, hi)
         if tuple(t) not in seen:
             seen.append(tuple(t))
             yield t
+
+
+def _stiffness(model, inner, x0, start, settings, c_all, target, f_ref):
+    """Polach's kA and kS/kA from the data's initial slope: at small
+    creepage fx = -(kA + kS)/2 G a b c11 cx (Kalker's linear theory times
+    (kA + kS)/2, whatever mu), so the slope through the origin of the
+    (up to 3) points nearest cx = 0 below half the peak force fixes kA + kS;
+    the split keeps the start's ratio kS/kA (kA at most 1).  {} unless both
+    are fitted from the default start, or for data with no such points."""
+    if model != "polach" or "kA" not in inner or _RATIO not in inner \
+            or {"kA", "kS"} & set(x0 or {}):
+        return {}
+    near = np.flatnonzero((c_all != 0.0) & (np.abs(target) <= 0.5 * f_ref))
+    near = near[np.argsort(np.abs(c_all[near]))][:3]
+    if near.size == 0:
+        return {}
+    c, f = c_all[near], target[near]
+    kalker = float(creep_forces(1.0, 0.0, 0.0, method="linear", a=settings["a"],
+                                b=settings["b"], N=settings["N"], mu=start["mu0"],
+                                G=settings["G"], nu=settings["nu"], errors="ignore").fx)
+    with np.errstate(all="ignore"):             # any data: a start or none, never a warning
+        ksum = float(2.0 * np.float64(f @ c) / np.float64(c @ c) / kalker)
+    if not (math.isfinite(ksum) and ksum > 0.0):
+        return {}
+    ratio = start["kS"] / start["kA"]
+    kA = min(ksum / (1.0 + ratio), 1.0)
+    return {"kA": kA, _RATIO: min(max(ksum / kA - 1.0, 1e-3), 1.0)}
 
 
 def _fit(func, model, spec, cx, force, a, b, N, G, nu, speed, cy, cphi, fit, x0, bounds,
@@ -454,13 +489,20 @@ def _fit(func, model, spec, cx, force, a, b, N, G, nu, speed, cy, cphi, fit, x0,
     theta0 = np.clip(theta0, lo, hi)          # a default start (mu0 from the data) may lie out
     # the friction law's parameters trade off against each other (one speed:
     # mu0 against A and B), and a start far off can settle in a shallow
-    # minimum (a Polach curve at 30 m/s: 6 % of the peak off): a few more
-    # starts unless the first fits to 1e-4 of the peak
+    # minimum (a Polach curve at 30 m/s: 6 % of the peak off; a soft contact,
+    # kA = 0.3, kS = 0.03, from the default kA = 1: 2.6 % off): a few more
+    # starts, of the friction law and of the stiffness the initial slope
+    # gives, unless one fits to 1e-4 of the peak
     sol = None
-    for t0 in _starts(theta0, inner, lo, hi, x0):
+    stiffness = _stiffness(model, inner, x0, start, settings, c_all, target, f_ref)
+    for t0 in _starts(theta0, inner, lo, hi, x0, stiffness):
         try:
-            s = least_squares(residuals, t0, bounds=(lo, hi), loss=loss, f_scale=f_scale,
-                              x_scale="jac", method="trf")
+            # data too extreme overflow in scipy's own arithmetic (its squares of
+            # the Jacobian) before it gives up: the error below says so, numpy's
+            # warnings would only come first
+            with np.errstate(over="ignore", invalid="ignore"):
+                s = least_squares(residuals, t0, bounds=(lo, hi), loss=loss,
+                                  f_scale=f_scale, x_scale=1.0, method="trf")
         except ValueError as e:                 # scipy's SVD met an overflowed Jacobian
             _fail(func, f"the least-squares solve broke down on these data ({e}): the data "
                         f"(cx, force, N, speed) are too extreme for a creep curve")

@@ -205,11 +205,14 @@ def linear_creepages(table, *, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spi
             raise RollerRigError(f"{func}: {name} = {float(v.reshape(-1)[bad[0]])!r}: "
                                  f"{status_message(-1)}")
     y, yaw, vx, vy, yaw_rate, spin, roller_spin = full.values()
-    V = roller_spin * R0
+    # the arithmetic under errstate: an overflow shows as a non-finite
+    # creepage, refused below with the arguments named, not as numpy's warning
+    with np.errstate(all="ignore"):
+        V = roller_spin * R0
+        w0 = V / r0
     if np.any(~(np.abs(V) > 0)):
         raise RollerRigError(f"{func}: roller_spin must be non-zero (V_n = 0 needs the exact "
                              f"creepages), got {roller_spin!r:.60}")
-    w0 = V / r0
     geo = table.lookup(y.reshape(-1), errors="ignore")
     off = np.flatnonzero(geo.status < 0)
     if off.size:
@@ -220,10 +223,12 @@ def linear_creepages(table, *, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spi
     out = []
     for side, sigma in ((geo.left, 1.0), (geo.right, -1.0)):
         r, R, delta = (getattr(side, f).reshape(y.shape) for f in ("r", "R", "delta"))
-        a = side.y.reshape(y.shape) - y
-        cx = (r0 - r) / r0 + (R - R0) / R0 + vx / V - (spin - w0) * r0 / V - a * yaw_rate / V
-        cy = -yaw + (1.0 + A0 * (r + sigma * delta * a)) * vy / V
-        cphi = -sigma * delta * (1.0 / r0 + 1.0 / R0)
+        with np.errstate(all="ignore"):
+            a = side.y.reshape(y.shape) - y
+            cx = (r0 - r) / r0 + (R - R0) / R0 + vx / V - (spin - w0) * r0 / V \
+                - a * yaw_rate / V
+            cy = -yaw + (1.0 + A0 * (r + sigma * delta * a)) * vy / V
+            cphi = -sigma * delta * (1.0 / r0 + 1.0 / R0)
         for name, c in (("cx", cx), ("cy", cy)):
             if not np.all(np.isfinite(c)):
                 # a creepage is a rate over V: name the large rates and the divisor

@@ -372,6 +372,48 @@ def test_out_of_range_parameter_start(fmus, version):
 
 
 @pytest.mark.parametrize("version", fmu.FMI_VERSIONS)
+@pytest.mark.parametrize("name,value", [("creepage_ref", np.nan), ("mu", np.inf),
+                                        ("roller_speed_ref", -np.inf),
+                                        ("wheelset.mass_kg", np.nan), ("scenario.mu0", np.inf),
+                                        ("scenario.targets[2]", np.nan)])
+def test_non_finite_start_value(fmus, version, name, value):
+    """NaN and infinities are no value of any parameter or input: a start
+    value set before the initialisation gets an FMI error and a log message
+    naming it (issue 22: creepage_ref = NaN was taken and the FMU initialised)."""
+    log = _Log(version)
+    with pytest.raises(FMICallException):
+        simulate_fmu(str(fmus[version]), stop_time=0.1, validate=False, logger=log,
+                     start_values={name: value})
+    assert f"{name} = {value!r}: the value must be a finite number" in log.text(), log.text()
+
+
+@pytest.mark.parametrize("version", fmu.FMI_VERSIONS)
+def test_non_finite_input_while_stepping(unzipped, version):
+    log = _Log(version)
+    md, f = _instance(unzipped[version], log)
+    vr = _vr(md)
+    _initialise(f, version)
+    f.doStep(0.0, T)
+    for value in (np.nan, np.inf, -np.inf):
+        with pytest.raises(FMICallException):
+            (f.setReal if version == 2 else f.setFloat64)([vr["creepage_ref"]], [value])
+        assert f"creepage_ref = {value!r}: the value must be a finite number" \
+            in log.messages[-1]
+    assert _get(f, version, [vr["creepage_ref"]])[0] == 0.04
+    f.doStep(T, T)
+    f.freeInstance()
+
+
+def test_free_wheelset_mode(fmus):
+    """control.wheelset_mode = free: no creepage target, the wheelset about
+    free rolling (what creepage_ref = NaN gave before NaN was refused)."""
+    res = simulate_fmu(str(fmus[2]), stop_time=0.4, output_interval=T,
+                       start_values={"control.wheelset_mode": 4})
+    assert np.all(np.isnan(res["xi_ref"][1:])) and np.all(np.isfinite(res["w_ref"][1:]))
+    assert np.max(np.abs(res["creepage"][1:])) < 1e-3
+
+
+@pytest.mark.parametrize("version", fmu.FMI_VERSIONS)
 def test_step_not_a_whole_number_of_samples(fmus, version):
     log = _Log(version)
     with pytest.raises(FMICallException):

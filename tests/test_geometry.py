@@ -105,6 +105,22 @@ def test_contact_table_matches_direct_search():
         t.lookup(0.01)
 
 
+def test_contact_table_lookup_at_its_own_rows():
+    """Every row's shift, both ends included, is inside the table; an ulp
+    past either end of y_range is not.  The reproducer's last row divided
+    back into an index landed an ulp past n - 1 and was refused (issue 22)."""
+    t = rr.contact_table(rr.RigGeometry.standard(), -0.002164674744325865,
+                         0.0075946696529369225, 8, nsamples=100)
+    c = t.lookup(t.y_ws)
+    assert np.all(c.status == 0) and np.all(np.isfinite(c.left.r))
+    rows = t.data.reshape(t.n, -1)
+    # the rows' own axle heights (a + 1 (b - a) at the last row: an ulp or so)
+    np.testing.assert_allclose(c.z[[0, -1]], rows[[0, -1], 26], rtol=1e-12, atol=0)
+    lo, hi = t.y_range
+    off = t.lookup(np.array([np.nextafter(lo, -1.0), np.nextafter(hi, 1.0)]), errors="ignore")
+    assert list(off.status) == [-3, -3]
+
+
 def test_wheel_off_the_roller():
     g = rr.RigGeometry(wheel=rr.Profile.s1002(), roller=rr.Profile.uic60(), wheel_radius=0.46,
                        roller_radius=0.46, wheel_y=0.75, roller_y=0.76053)

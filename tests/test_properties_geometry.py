@@ -256,7 +256,12 @@ def test_huge_counts_return_or_are_refused(call):
        n=st.one_of(st.integers(2, 12), st.integers(-3, 3), st.sampled_from((2.0, True, "5"))),
        ns=st.one_of(st.integers(100, 150), st.integers(-1, 5)), tol=tolerances, sep=separations)
 @example(y_min=-1e300, y_max=1e300, n=3, ns=100, tol=1e-4, sep=2e-3)
+# the last row's shift divided back into an index landed an ulp past n - 1 (issue 22)
+@example(y_min=-0.002164674744325865, y_max=0.0075946696529369225, n=8, ns=100, tol=1e-4,
+         sep=2e-3)
 def test_contact_table_finite_or_named(y_min, y_max, n, ns, tol, sep):
+    """A table is built or refused naming an argument; the lookup at every
+    row, both ends included, succeeds with finite values."""
     try:
         t = quiet(rr.contact_table, STANDARD, y_min, y_max, n, nsamples=ns, two_point_tol=tol,
                   two_point_sep=sep)

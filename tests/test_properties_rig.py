@@ -512,10 +512,17 @@ def test_simulate_huge_settings_return_or_are_refused(call):
        B=uniform(0.1, 2.0).strategy, speeds=st.lists(uniform(2.0, 30.0).strategy, min_size=1,
                                                      max_size=2))
 @example(mu0=0.2, kA=0.3, ratio=0.1, A=0.2, B=2.0, speeds=[30.0])   # one start: 6 % off
+# from the default kA = 1 (Jacobian-scaled steps): 2.6 % off, mu0 0.757, B 5.92 (issue 22)
+@example(mu0=0.6, kA=0.3, ratio=0.1, A=0.4625, B=0.575, speeds=[30.0])
+@example(mu0=0.6, kA=0.3, ratio=0.1, A=0.2, B=2.0, speeds=[30.0])   # 3.0 % off, as above
 def test_fit_polach_on_its_own_curves(mu0, kA, ratio, A, B, speeds):
-    """Noise-free Polach curves (past the peak): the fit is finite and
-    reproduces them to 1 % of the peak force (its parameters may trade off;
-    the curve may not)."""
+    """Noise-free Polach curves (past the peak): the fit recovers the
+    parameters that made them.  It stops at the first start that fits to
+    1e-4 of the peak (rms); measured on 1 100 random sets of these ranges
+    and wider: 5e-8 at most, the parameters within 6e-6 (1.5e-3 on the
+    corners of test_fit.py's grid: A of a weakly falling law, B = 0.1 s/m
+    at 5 m/s), so 1e-4 and 1 % leave room for another optimiser version,
+    not for another minimum."""
     a, b, N = 6e-3, 4e-3, 2e4
     cx = np.geomspace(1e-4, 0.3, 40)
     curves = [rr.creep_forces(cx, a=a, b=b, N=N, mu=mu0, speed=V, method="polach", kA=kA,
@@ -526,7 +533,10 @@ def test_fit_polach_on_its_own_curves(mu0, kA, ratio, A, B, speeds):
         fit = rr.fit_polach([cx] * len(speeds), curves, a=a, b=b, N=N, speed=speeds)
     assert all(math.isfinite(v) for v in fit.params.values()), fit.params
     peak = max(np.max(np.abs(c)) for c in curves)
-    assert fit.rms <= 0.01 * peak, (fit.rms / peak, fit.params)
+    assert fit.rms <= 1e-4 * peak, (fit.rms / peak, fit.params)
+    true = dict(mu0=mu0, A=A, B=B, kA=kA, kS=kA * ratio)
+    for name, v in true.items():
+        assert fit.params[name] == pytest.approx(v, rel=0.01), (name, fit.params, true)
 
 
 @examples(5, deadline=30000)                # as above: up to six solves
@@ -546,6 +556,9 @@ def test_fit_polach_any_data_finite_or_named(cx, force, a, N, speed):
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", RollerRigWarning)
+            # no numpy warning either, not even from scipy's arithmetic on the
+            # package's behalf (issue 22: it came before fit_polach's own error)
+            warnings.simplefilter("error", RuntimeWarning)
             fit = rr.fit_polach(cx, force[:len(cx)], a=a, b=4e-3, N=N, speed=speed)
     except RollerRigError as e:
         assert_names_argument(e, "fit_polach", names)

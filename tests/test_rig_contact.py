@@ -1,4 +1,6 @@
 """One contact evaluation of the wheelset on the rollers (rollerrig.rig_contact)."""
+import warnings
+
 import numpy as np
 import pytest
 
@@ -279,3 +281,17 @@ def test_scalar_and_broadcast_shapes(cone):
     s = rr.rig_contact(cone, spin=spin, roller_spin=roller_spin, N_left=1e3, N_right=1e3)
     assert np.ndim(s.left.fx) == 0 and s.left.force.shape == (3,)
     assert s.left.force == pytest.approx(c.left.force[:, 1, 2], rel=0, abs=0)
+
+
+@pytest.mark.parametrize("kw, which", [(dict(vx=1e300, roller_spin=1e-300), "cx overflows"),
+                                       (dict(vy=1e308, roller_spin=1e-10), "cy overflows"),
+                                       (dict(spin=1e308, roller_spin=1e-300), "cx overflows")])
+def test_linear_creepages_overflow_is_an_error_not_a_warning(kw, which):
+    """Rates over a tiny roller speed overflow: the clear error naming them,
+    and no numpy RuntimeWarning before it (issue 22: 8 of the suite's 19
+    warnings were this one's)."""
+    t = rr.contact_table(rr.RigGeometry.standard(), -0.004, 0.004, 9, nsamples=100)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(rr.RollerRigError, match=which):
+            rr.linear_creepages(t, y=0.0, **{"spin": 50.0, **kw})

@@ -16,7 +16,8 @@ enum { K_TIME = 0, K_PARAM, K_LIST, K_CREEP, K_CONTROL, K_INPUT, K_RECORD, K_ENC
 /* ------------------------------------------------------------------ tables */
 
 static const char *const roller_modes[] = {"scenario", "speed", "torque", NULL};
-static const char *const wheelset_modes[] = {"scenario", "creepage", "speed", "torque", NULL};
+static const char *const wheelset_modes[] = {"scenario", "creepage", "speed", "torque", "free",
+                                              NULL};
 static const char *const mu_sources[] = {"adhesion", "input", NULL};
 static const char *const start_states[] = {"rolling", "rest", NULL};
 
@@ -36,7 +37,8 @@ static const control_decl controls[RR_FMU_NCONTROL] = {
      "how the wheelset drive is commanded at each sample: scenario (the creepage controller, "
      "eq. 13-16, to the scenario's targets, scenario.targets from scenario.target_start_s), "
      "creepage (the creepage controller to the input creepage_ref), speed (its PI to the "
-     "input wheelset_speed_ref), torque (the input wheelset_torque_ref to the drive)"},
+     "input wheelset_speed_ref), torque (the input wheelset_torque_ref to the drive), free (no "
+     "creepage control: its PI to free rolling at the roller's measured speed)"},
     {"control.mu_source", mu_sources, RR_FMU_TUNABLE,
      "the static friction coefficient mu0 at each sample: adhesion (the [adhesion] schedule "
      "and patch; scenario.mu0 without a schedule) or input (the input mu; a patch still "
@@ -52,28 +54,27 @@ typedef struct {
     const char *unit;
     double lo, hi;
     int lo_open, hi_open;
-    int nan_ok;                 /* NaN is a meaningful value */
     const char *description;
 } input_decl;
 
 static const input_decl inputs[RR_FMU_NINPUT] = {
-    {"roller_speed_ref", "rad/s", -HUGE_VAL, HUGE_VAL, 0, 0, 0,
+    {"roller_speed_ref", "rad/s", -HUGE_VAL, HUGE_VAL, 0, 0,
      "roller speed reference of the roller's PI (eq. 10-11) with control.roller_mode = "
      "speed; start: scenario.roller_speed_m_s / roller.radius_m"},
-    {"roller_torque_ref", "N m", -HUGE_VAL, HUGE_VAL, 0, 0, 0,
+    {"roller_torque_ref", "N m", -HUGE_VAL, HUGE_VAL, 0, 0,
      "roller drive torque reference with control.roller_mode = torque (clipped to "
      "roller_drive.torque_limit_N_m)"},
-    {"creepage_ref", "-", 0.0, 1.0, 0, 1, 1,
+    {"creepage_ref", "-", 0.0, 1.0, 0, 1,
      "creepage target of the creepage controller (eq. 13-16) with control.wheelset_mode = "
-     "creepage, in the drive's sense (> 0); NaN: no creepage control, the wheelset held at "
-     "free rolling; start: the first of scenario.targets"},
-    {"wheelset_speed_ref", "rad/s", -HUGE_VAL, HUGE_VAL, 0, 0, 0,
+     "creepage, in the drive's sense (> 0; control.wheelset_mode = free: none, free "
+     "rolling); start: the first of scenario.targets"},
+    {"wheelset_speed_ref", "rad/s", -HUGE_VAL, HUGE_VAL, 0, 0,
      "wheelset speed reference of the wheelset's PI with control.wheelset_mode = speed; "
      "start: scenario.roller_speed_m_s / wheelset.wheel_radius_m"},
-    {"wheelset_torque_ref", "N m", -HUGE_VAL, HUGE_VAL, 0, 0, 0,
+    {"wheelset_torque_ref", "N m", -HUGE_VAL, HUGE_VAL, 0, 0,
      "wheelset drive torque reference with control.wheelset_mode = torque (clipped to "
      "wheelset_drive.torque_limit_N_m)"},
-    {"mu", "-", 0.0, RR_FRICTION_MAX, 1, 0, 0,
+    {"mu", "-", 0.0, RR_FRICTION_MAX, 1, 0,
      "static friction coefficient mu0 over the sample with control.mu_source = input (the "
      "falling law's A and B stay the contact section's); start: scenario.mu0"},
 };
@@ -787,8 +788,6 @@ static int check_value(rr_fmu *m, const rr_fmu_var *v, double x)
     default:
         break;
     }
-    if (isnan(x) && v->kind == K_INPUT && inputs[v->index].nan_ok)
-        return RR_OK;
     if (!isfinite(x))
         return fail(m, RR_ERR_NONFINITE, "%s = %s: the value must be a finite number", name,
                     num);
@@ -1072,6 +1071,11 @@ static void command(const rr_fmu_state *s, rr_rig_command *cmd, const char **whi
         cmd->wheelset_mode = RR_CMD_TORQUE;
         cmd->wheelset_ref = s->in[RR_FMU_IN_WHEELSET_TORQUE];
         which[1] = inputs[RR_FMU_IN_WHEELSET_TORQUE].name;
+        break;
+    case RR_FMU_WHEELSET_FREE:
+        cmd->wheelset_mode = RR_CMD_BUILTIN;
+        cmd->wheelset_ref = NAN;            /* rr_rig_write's "no target" */
+        which[1] = "free rolling";
         break;
     default:
         cmd->wheelset_mode = RR_CMD_BUILTIN;

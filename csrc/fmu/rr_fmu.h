@@ -16,7 +16,7 @@
  *     [100000 + 1000 row + entry]; the creep rows (contact.creep_method,
  *     fastsim_nx, ...) with the registry's names and ranges;
  *   control parameters [1 + i]: control.roller_mode (scenario, speed,
- *     torque), control.wheelset_mode (scenario, creepage, speed, torque),
+ *     torque), control.wheelset_mode (scenario, creepage, speed, torque, free),
  *     control.mu_source (adhesion, input), control.start (rolling, rest);
  *   inputs [100 + i]: roller_speed_ref [rad/s], roller_torque_ref [N m],
  *     creepage_ref [-], wheelset_speed_ref [rad/s], wheelset_torque_ref
@@ -33,9 +33,11 @@
  *             speed     its PI to the input roller_speed_ref
  *             torque    the input roller_torque_ref straight to the drive
  *   wheelset: scenario  the creepage controller to rr_rig_schedule's target
- *             creepage  the creepage controller to the input creepage_ref (NaN: none)
+ *             creepage  the creepage controller to the input creepage_ref
  *             speed     its PI to the input wheelset_speed_ref
  *             torque    the input wheelset_torque_ref straight to the drive
+ *             free      no creepage control: its PI to free rolling at the
+ *                       roller's measured speed (rr_rig_write's NaN target)
  *   friction: adhesion  the [adhesion] schedule and patch (scenario.mu0 without)
  *             input     the input mu as the static coefficient mu0 (a patch
  *                       still applies on top)
@@ -102,7 +104,7 @@ enum rr_fmu_control {
 enum rr_fmu_roller_mode { RR_FMU_ROLLER_SCENARIO = 0, RR_FMU_ROLLER_SPEED, RR_FMU_ROLLER_TORQUE };
 enum rr_fmu_wheelset_mode {
     RR_FMU_WHEELSET_SCENARIO = 0, RR_FMU_WHEELSET_CREEPAGE, RR_FMU_WHEELSET_SPEED,
-    RR_FMU_WHEELSET_TORQUE
+    RR_FMU_WHEELSET_TORQUE, RR_FMU_WHEELSET_FREE
 };
 enum rr_fmu_mu_source { RR_FMU_MU_ADHESION = 0, RR_FMU_MU_INPUT };
 enum rr_fmu_start { RR_FMU_START_ROLLING = 0, RR_FMU_START_REST };
@@ -310,7 +312,9 @@ double rr_fmu_time(const rr_fmu *m);
  * caller's type (enum rr_fmu_type), which must be the variable's.
  * set: parameters and inputs only; a fixed parameter before stepping, a
  * tunable one and an input until terminated; the value checked against
- * the variable's range (RR_ERR_PARAM, RR_ERR_NONFINITE; nothing changes).
+ * the variable's range (RR_ERR_PARAM, RR_ERR_NONFINITE: NaN and infinities
+ * are refused for every variable, inputs and start values included;
+ * nothing changes).
  * get: parameters and inputs always; the time and the outputs from
  * initialisation on (the rig is built then if it is not yet).
  */

@@ -4,12 +4,16 @@
  * configuration (the defaults with up to 4 parameters set, the contact
  * table kept small so that an input stays fast), then up to 16 calls:
  * set and get of any variable (its own type or another, values in range,
- * near the start, at the edges), enter and exit initialisation, steps of
+ * near the start, at the edges, NaN and infinities), enter and exit
+ * initialisation, steps of
  * any time and length, terminate, reset, a save and a restore (of a good
  * state, or one whose mode is no mode).
  *
- * Oracles: statuses in range; every error leaves a message; a refused set
- * changes nothing (get gives the old value); an accepted set of a
+ * Oracles: statuses in range; every error leaves a message; NaN and
+ * infinities are no value of any variable: refused by every set (a start
+ * value, an input, a tunable parameter while stepping) and by the start
+ * configuration; a refused set changes nothing (get gives the old value);
+ * an accepted set of a
  * parameter or input reads back as given (an INTEGER, ENUMERATION or
  * BOOLEAN as the whole number); a step refused changes the unit's time
  * not at all, a step done moves it by its length (within the sample's
@@ -75,11 +79,15 @@ static double affordable(unsigned vr, double x)
     return x;
 }
 
-/* A value for variable v: its start, inside its range, near an end, or any. */
+/* A value for variable v: its start, inside its range, near an end, any,
+ * or not a number at all (NaN, an infinity). */
 static double decode_value(fz_in *in, const rr_fmu_config *start, const rr_fmu_var *v)
 {
+    static const double nonfinite[3] = {NAN, HUGE_VAL, -HUGE_VAL};
     double x0 = 0.0, lo = v->lo, hi = v->hi;
-    const int sel = fz_choice(in, 5);
+    const int sel = fz_choice(in, 6);
+    if (sel == 5)
+        return nonfinite[fz_choice(in, 3)];
     rr_fmu_var_start(start, v, &x0);
     if (!isfinite(x0))
         x0 = 0.0;
@@ -150,6 +158,9 @@ static void one_call(fz_in *in, rr_fmu *m, const rr_fmu_config *start, rr_fmu_st
         fz_status("rr_fmu_set", st);
         if (st < 0 && !rr_fmu_message(m)[0])
             fz_fail("rr_fmu_set: error %d without a message", st);
+        if (st >= 0 && !isfinite(x))
+            fz_fail("rr_fmu_set: took %g for vr %u (type %d, mode %d)", x, v.vr, type,
+                    m->s.mode);
         if (rr_fmu_get(m, v.type, v.vr, &after) >= 0 && gst >= 0) {
             if (st < 0 && memcmp(&before, &after, sizeof before) != 0)
                 fz_fail("rr_fmu_set: refused (%d) but the value moved %.17g -> %.17g", st,
@@ -246,7 +257,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rr_fmu_config *start = fz_alloc(sizeof *start);
     rr_fmu *m = fz_alloc(sizeof *m);
     rr_fmu_state *saved = fz_alloc(sizeof *saved);
-    int i, n, have_saved = 0;
+    int i, n, st, have_saved = 0;
 
     rr_fmu_config_default(start);
     /* a small contact table (the default one costs 0.1 s to build) */
@@ -265,7 +276,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         rr_fmu_var_name(&v, name, sizeof name);
         x = affordable(v.vr, decode_value(&in, start, &v));
         fz_note(" start %s = %.17g;", name, x);
-        fz_status("rr_fmu_config_set", rr_fmu_config_set(start, name, x));
+        st = rr_fmu_config_set(start, name, x);
+        fz_status("rr_fmu_config_set", st);
+        if (st >= 0 && !isfinite(x))
+            fz_fail("rr_fmu_config_set: a start configuration took %s = %g", name, x);
     }
     nvars = rr_fmu_var_count(start);
     if (nvars < 1)

@@ -219,9 +219,8 @@ static void check_lookup(fz_in *in, const rr_contact_table *t, int skip_known)
 {
     const char *fn = "rr_contact_table_lookup";
     const int nl = fz_range(in, 1, 4);
+    /* the table's range: its first and last rows' shifts, exactly */
     const double end = t->y0 + ((double)t->n - 1.0) * t->dy;
-    /* a y a rounding away from an end may go either way */
-    const double tol = 1e-12 * (fabs(t->y0) + fabs(end));
     const int bad_struct = !t->data || t->n < 2 || !isfinite(t->y0) || !isfinite(t->dy)
                            || !(t->dy > 0.0);
     int k;
@@ -231,7 +230,7 @@ static void check_lookup(fz_in *in, const rr_contact_table *t, int skip_known)
         const double y = within ? t->y0 + fz_lin(in, 0.0, 1.0) * (end - t->y0)
                                 : fz_lin(in, -0.02, 0.02);
         const int want_slope = fz_choice(in, 2);
-        const int off = !isfinite(y) || y < t->y0 - tol || y > end + tol;
+        const int off = !isfinite(y) || y < t->y0 || y > end;
         rr_wheelset_pose pose, slope;
         rr_contact_point cl, cr;
         int st;
@@ -296,6 +295,20 @@ static void check_table(fz_in *in, const rr_wheel_roller *l, const rr_wheel_roll
             if (!isfinite(data[i]))
                 fz_fail("%s: status %d with row %d, column %d = %g", fn, st,
                         i / RR_CONTACT_TABLE_ROW, i % RR_CONTACT_TABLE_ROW, data[i]);
+        /* every row's own shift, both ends included, is inside; an ulp past
+         * either end is not (issue 22: the last row was refused) */
+        for (i = 0; i < t.n; i++) {
+            rr_wheelset_pose pose;
+            rr_contact_point cl, cr;
+            const double y = t.y0 + i * t.dy;
+            if ((st = rr_contact_table_lookup(&t, y, &pose, NULL, &cl, &cr)) != RR_OK)
+                fz_fail("rr_contact_table_lookup: status %d at row %d of %d, y = %.17g", st, i,
+                        t.n, y);
+            if ((i == 0 || i == t.n - 1)
+                && rr_contact_table_lookup(&t, nextafter(y, i == 0 ? -HUGE_VAL : HUGE_VAL),
+                                           &pose, NULL, &cl, &cr) != RR_ERR_GEOMETRY)
+                fz_fail("rr_contact_table_lookup: an ulp past row %d of %d taken", i, t.n);
+        }
         check_lookup(in, &t, 0);
     }
     free(data);

@@ -439,9 +439,12 @@ int rr_contact_table_lookup(const rr_contact_table *t, double y_ws, rr_wheelset_
         return lookup_fail(st, pose, slope, cl, cr);
     if (!isfinite(y_ws))
         return lookup_fail(RR_ERR_NONFINITE, pose, slope, cl, cr);
-    pos = (y_ws - t->y0) / t->dy;
-    if (pos < 0.0 || pos > t->n - 1)
+    /* inside: between the first and the last row's shifts as the build
+     * computes them (y0 + i dy), both included; the division may put the
+     * last row an ulp past n - 1 */
+    if (y_ws < t->y0 || y_ws > t->y0 + (t->n - 1) * t->dy)
         return lookup_fail(RR_ERR_GEOMETRY, pose, slope, cl, cr);
+    pos = fmin((y_ws - t->y0) / t->dy, t->n - 1);
     i = (int)pos;
     if (i > t->n - 2)
         i = t->n - 2;

@@ -145,7 +145,8 @@ int rr_contact_table_build_rows(const rr_wheel_roller *left, const rr_wheel_roll
  *            contact constraint implies.
  *   The two-point flag is that of the nearer row.  No allocation, O(1).
  *   The caller's buffer must hold t->n rows (it cannot be checked here).
- *   status:  0 OK; RR_ERR_GEOMETRY (y_ws outside the table), RR_ERR_NONFINITE,
+ *   status:  0 OK; RR_ERR_GEOMETRY (y_ws outside the table: below y0 or
+ *            above the last row's y0 + (n - 1) dy), RR_ERR_NONFINITE,
  *            RR_ERR_PARAM (y0, dy, n invalid as for the build), RR_ERR_NULL
  *            (t, t->data, pose, cl or cr NULL)
  */

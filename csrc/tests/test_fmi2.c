@@ -93,6 +93,22 @@ int main(void)
     CHECK(fmi2SetReal(c, &mass, 1, &x) == fmi2Error
           && logged("fmi2SetReal: wheelset.mass_kg = -1 is out of range"), last);
     CHECK(fmi2SetReal(c, &mass, 1, NULL) == fmi2Error, "NULL values");
+    {
+        /* start values: NaN and infinities refused with a message (issue 22:
+         * creepage_ref = NaN was taken and the unit initialised) */
+        const fmi2ValueReference vrs[2] = {RR_FMU_VR_INPUT + RR_FMU_IN_CREEPAGE, mass};
+        fmi2Real bad[2] = {NAN, HUGE_VAL};
+        CHECK(fmi2SetReal(c, vrs, 1, bad) == fmi2Error
+              && logged("fmi2SetReal: creepage_ref = nan: the value must be a finite number"),
+              last);
+        CHECK(fmi2SetReal(c, vrs + 1, 1, bad + 1) == fmi2Error
+              && logged("wheelset.mass_kg = inf: the value must be a finite number"), last);
+        bad[0] = 0.02;
+        bad[1] = -HUGE_VAL;
+        CHECK(fmi2SetReal(c, vrs, 2, bad) == fmi2Error && logged("wheelset.mass_kg = -inf"),
+              last);
+        CHECK(fmi2GetReal(c, vrs + 1, 1, &x) == fmi2OK && x == 14.504, "the mass kept");
+    }
     CHECK(fmi2GetReal(c, &fx, 1, &x) == fmi2Error && logged("initialization mode"), last);
     i = 9;
     CHECK(fmi2SetInteger(c, &mode, 1, &i) == fmi2Error && logged("3 (torque)"), last);
@@ -108,6 +124,16 @@ int main(void)
     CHECK(fmi2GetReal(c, &fx, 1, &x) == fmi2OK && isfinite(x), "an output at the start");
     CHECK(fmi2ExitInitializationMode(c) == fmi2OK, "exit");
     CHECK(fmi2DoStep(c, 0.0, 0.005, 1) == fmi2Error && logged("not a whole multiple"), last);
+    {
+        /* inputs while stepping: NaN and infinities refused too */
+        const fmi2ValueReference in_vr = RR_FMU_VR_INPUT + RR_FMU_IN_ROLLER_SPEED;
+        x = -HUGE_VAL;
+        CHECK(fmi2SetReal(c, &in_vr, 1, &x) == fmi2Error
+              && logged("roller_speed_ref = -inf: the value must be a finite number"), last);
+        x = NAN;
+        CHECK(fmi2SetReal(c, &in_vr, 1, &x) == fmi2Error && logged("roller_speed_ref = nan"),
+              last);
+    }
     for (k = 0; k < 20; k++)
         CHECK(fmi2DoStep(c, k * T, T, 1) == fmi2OK, "step");
     CHECK(fmi2GetInteger(c, &status_vr, 1, &i) == fmi2OK && i == 0, "sample status");

@@ -93,12 +93,31 @@ int main(void)
           last);
     x = -0.5;
     CHECK(fmi3SetFloat64(c, &mu, 1, &x, 1) == fmi3Error && logged("mu = -0.5"), last);
+    {
+        /* start values and inputs: NaN and infinities refused with a message
+         * (issue 22: creepage_ref = NaN was taken and the unit initialised) */
+        const fmi3ValueReference cr = RR_FMU_VR_INPUT + RR_FMU_IN_CREEPAGE;
+        x = NAN;
+        CHECK(fmi3SetFloat64(c, &cr, 1, &x, 1) == fmi3Error
+              && logged("fmi3SetFloat64: creepage_ref = nan: the value must be a finite "
+                        "number"), last);
+        x = HUGE_VAL;
+        CHECK(fmi3SetFloat64(c, &mu, 1, &x, 1) == fmi3Error
+              && logged("mu = inf: the value must be a finite number"), last);
+        x = -HUGE_VAL;
+        CHECK(fmi3SetFloat64(c, &target3, 1, &x, 1) == fmi3Error, "an unknown one still");
+        CHECK(fmi3GetFloat64(c, &cr, 1, &x, 1) == fmi3OK, "creepage_ref");
+        CHECK(x == 0.02, "creepage_ref kept: the first target");
+    }
     x = 0.3;
     CHECK(fmi3SetFloat64(c, &mu, 1, &x, 1) == fmi3OK, "mu 0.3");
     CHECK(fmi3DoStep(c, 0.0, T, 1, &ev, &term, &early, &t) == fmi3Error, "step too early");
     CHECK(fmi3EnterInitializationMode(c, 0, 0.0, 0.0, 0, 0.0) == fmi3OK, "enter");
     CHECK(fmi3ExitInitializationMode(c) == fmi3OK, "exit");
     CHECK(fmi3EnterStepMode(c) == fmi3Error && fmi3EnterEventMode(c) == fmi3Error, "no events");
+    x = NAN;
+    CHECK(fmi3SetFloat64(c, &mu, 1, &x, 1) == fmi3Error && logged("mu = nan"),
+          "an input NaN while stepping");
     for (k = 0; k < 30; k++)
         CHECK(fmi3DoStep(c, k * T, T, 1, &ev, &term, &early, &t) == fmi3OK && !ev && !term
               && !early, "step");

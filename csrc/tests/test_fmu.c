@@ -156,8 +156,9 @@ static void test_variables(const rr_fmu_config *f)
         CHECK(rr_fmu_var_item(&v, 0, &item, &value) && value == 0, "slip speed items");
         rr_fmu_var_find(f, vr_of(f, "control.wheelset_mode"), &v);
         CHECK(rr_fmu_var_item(&v, 3, &item, &value) && strcmp(item, "torque") == 0
-              && value == RR_FMU_WHEELSET_TORQUE && !rr_fmu_var_item(&v, 4, &item, &value),
-              "wheelset modes");
+              && value == RR_FMU_WHEELSET_TORQUE && rr_fmu_var_item(&v, 4, &item, &value)
+              && strcmp(item, "free") == 0 && value == RR_FMU_WHEELSET_FREE
+              && !rr_fmu_var_item(&v, 5, &item, &value), "wheelset modes");
         rr_fmu_var_find(f, vr_of(f, "contact.fastsim_nx"), &v);
         CHECK(v.type == RR_FMU_INTEGER && v.lo == 1.0 && !v.lo_open, "nx range");
     }
@@ -178,7 +179,17 @@ static void test_config(void)
     CHECK_STATUS(rr_fmu_config_default(NULL), RR_ERR_NULL, "default NULL");
     rr_fmu_config_default(&f);
     CHECK_STATUS(rr_fmu_config_set(&f, "control.wheelset_mode", 3), RR_OK, "control");
-    CHECK_STATUS(rr_fmu_config_set(&f, "control.wheelset_mode", 4), RR_ERR_PARAM, "control 4");
+    CHECK_STATUS(rr_fmu_config_set(&f, "control.wheelset_mode", 4), RR_OK, "control 4: free");
+    CHECK_STATUS(rr_fmu_config_set(&f, "control.wheelset_mode", 5), RR_ERR_PARAM, "control 5");
+    /* a start configuration holds values only: no NaN, no infinity */
+    CHECK(rr_fmu_config_set(&f, "control.wheelset_mode", NAN) < 0, "control NaN");
+    CHECK(rr_fmu_config_set(&f, "scenario.mu0", NAN) < 0, "mu0 NaN");
+    CHECK(rr_fmu_config_set(&f, "scenario.mu0", HUGE_VAL) < 0, "mu0 inf");
+    CHECK(rr_fmu_config_set(&f, "contact.fastsim_nx", NAN) < 0, "creep option NaN");
+    CHECK(rr_fmu_config_set(&f, "contact.polach_kA", -HUGE_VAL) < 0, "creep option -inf");
+    v[1] = NAN;
+    CHECK(rr_fmu_config_set_list(&f, "adhesion.schedule_times_s", 3, v) < 0, "list NaN");
+    v[1] = 1.0;
     CHECK_STATUS(rr_fmu_config_set_choice(&f, "control.mu_source", "input"), RR_OK, "choice");
     CHECK(f.control[RR_FMU_MU_SOURCE] == RR_FMU_MU_INPUT, "mu source");
     CHECK_STATUS(rr_fmu_config_set_choice(&f, "contact.creep_method", "polach"), RR_OK, "m");
@@ -207,8 +218,9 @@ static void test_config(void)
     }
 }
 
-/* The rig_paper.c run: rr_rig_step with rr_rig_schedule's references. */
-static int paper_run(long n, double *recs)
+/* The rig_paper.c run: rr_rig_step with rr_rig_schedule's references (with
+ * no creepage target if free_rolling). */
+static int paper_run(long n, int free_rolling, double *recs)
 {
     static double work[RR_RIG_TABLE_WORK_LEN];
     static rr_rig rig;
@@ -230,6 +242,8 @@ static int paper_run(long n, double *recs)
         st = rr_rig_init(&p, c.roller_speed / c.roller_radius, &rig);
     for (k = 0; st >= 0 && k < n; k++) {
         rr_rig_schedule(&c, k, &roller_ref, &xi_ref);
+        if (free_rolling)
+            xi_ref = NAN;
         st = rr_rig_step(&rig, roller_ref, xi_ref, recs + k * RR_REC_COUNT);
     }
     free(data);
@@ -247,7 +261,7 @@ static void test_default_run(const rr_fmu_config *f)
     long k;
     int st, ok = 1;
 
-    CHECK_STATUS(paper_run(NRUN, want), RR_OK, "the paper's run");
+    CHECK_STATUS(paper_run(NRUN, 0, want), RR_OK, "the paper's run");
     CHECK_STATUS(start_unit(&m, f), RR_OK, "the unit starts");
     CHECK(allocations == 1, "one allocation: the table");
     rr_fmu_get(&m, RR_FMU_REAL, RR_FMU_VR_TIME, &x);
@@ -320,8 +334,10 @@ static void test_checks(const rr_fmu_config *f)
           rr_fmu_message(&m));
     CHECK_STATUS(rr_fmu_set(&m, RR_FMU_REAL, RR_FMU_VR_INPUT + RR_FMU_IN_MU, 0.0),
                  RR_ERR_PARAM, "mu 0");
-    CHECK_STATUS(rr_fmu_set(&m, RR_FMU_REAL, RR_FMU_VR_INPUT + RR_FMU_IN_CREEPAGE, NAN), RR_OK,
-                 "creepage NaN: no control");
+    CHECK_STATUS(rr_fmu_set(&m, RR_FMU_REAL, RR_FMU_VR_INPUT + RR_FMU_IN_CREEPAGE, NAN),
+                 RR_ERR_NONFINITE, "creepage NaN refused (no control: wheelset_mode free)");
+    CHECK(contains(rr_fmu_message(&m), "creepage_ref = nan: the value must be a finite number"),
+          rr_fmu_message(&m));
     CHECK_STATUS(rr_fmu_set(&m, RR_FMU_REAL, vr_of(f, "scenario.targets[2]"), 1.0),
                  RR_ERR_PARAM, "target 1");
     CHECK_STATUS(rr_fmu_set(&m, RR_FMU_REAL, vr_of(f, "scenario.targets[2]"), 0.01), RR_OK,
@@ -407,6 +423,89 @@ static void test_checks(const rr_fmu_config *f)
     }
     rr_fmu_release(&m);
     CHECK(allocations == 0, "released");
+}
+
+/* NaN and infinities are no value of any variable: every parameter and
+ * input refuses them with a message naming it, before the initialisation
+ * (a start value), in it and while stepping, and keeps its value; the
+ * unit then initialises and steps as if they were never offered (issue 22:
+ * creepage_ref = NaN set before the initialisation was taken). */
+static void test_nonfinite(const rr_fmu_config *f)
+{
+    static rr_fmu m;
+    static const double bad[3] = {NAN, HUGE_VAL, -HUGE_VAL};
+    int phase, i, k, n = rr_fmu_var_count(f), taken = 0, silent = 0, moved = 0, tried = 0;
+    double x;
+
+    CHECK_STATUS(rr_fmu_init(&m, f, test_alloc, test_free, NULL, NULL), RR_OK, "init");
+    for (phase = 0; phase < 3; phase++) {
+        if (phase == 1)
+            CHECK_STATUS(rr_fmu_enter_init(&m, 0.0), RR_OK, "enter");
+        if (phase == 2)
+            CHECK_STATUS(rr_fmu_exit_init(&m), RR_OK, "exit: no bad value was taken");
+        for (i = 0; i < n; i++) {
+            rr_fmu_var v;
+            char name[RR_FMU_NAME_LEN];
+            double before, after;
+            int st;
+            rr_fmu_var_at(f, i, &v);
+            if (v.causality != RR_FMU_PARAMETER && v.causality != RR_FMU_INPUT)
+                continue;
+            rr_fmu_var_name(&v, name, sizeof name);
+            for (k = 0; k < 3; k++) {
+                tried++;
+                rr_fmu_get(&m, v.type, v.vr, &before);
+                st = rr_fmu_set(&m, v.type, v.vr, bad[k]);
+                rr_fmu_get(&m, v.type, v.vr, &after);
+                if (st >= 0) {
+                    taken++;
+                    printf("    phase %d: %s = %g taken\n", phase, name, bad[k]);
+                } else if (!contains(rr_fmu_message(&m), name)) {
+                    silent++;
+                    printf("    phase %d: %s = %g: \"%s\"\n", phase, name, bad[k],
+                           rr_fmu_message(&m));
+                }
+                if (memcmp(&before, &after, sizeof before) != 0)
+                    moved++;
+            }
+        }
+    }
+    CHECK(tried > 3 * 150, "every parameter and input tried");
+    CHECK(taken == 0, "no parameter or input takes NaN or an infinity");
+    CHECK(silent == 0, "each refusal names the variable");
+    CHECK(moved == 0, "a refused value changes nothing");
+    CHECK_STATUS(rr_fmu_do_step(&m, 0.0, 10 * T), RR_OK, "the unit steps on");
+    CHECK_STATUS(rr_fmu_get(&m, RR_FMU_REAL, RR_FMU_VR_RECORD + RR_REC_XI_REF, &x), RR_OK,
+                 "xi_ref");
+    CHECK(x == f->c.targets.v[0], "the scenario's target, untouched");
+    rr_fmu_release(&m);
+}
+
+/* control.wheelset_mode = free: no creepage control, the wheelset's PI to
+ * free rolling, as rr_rig_step with a NaN target, bit for bit (what
+ * creepage_ref = NaN gave before NaN was refused). */
+static void test_free_mode(const rr_fmu_config *f)
+{
+    static double want[100 * RR_REC_COUNT];
+    static rr_fmu m;
+    double rec[RR_REC_COUNT];
+    long k;
+    int ok = 1;
+    CHECK_STATUS(paper_run(100, 1, want), RR_OK, "free rolling run");
+    CHECK_STATUS(rr_fmu_init(&m, f, test_alloc, test_free, NULL, NULL), RR_OK, "init");
+    CHECK_STATUS(rr_fmu_set(&m, RR_FMU_ENUMERATION, vr_of(f, "control.wheelset_mode"),
+                            RR_FMU_WHEELSET_FREE), RR_OK, "free mode");
+    CHECK_STATUS(rr_fmu_enter_init(&m, 0.0), RR_OK, "enter");
+    CHECK_STATUS(rr_fmu_exit_init(&m), RR_OK, "exit");
+    for (k = 0; k < 100 && ok; k++) {
+        CHECK_STATUS(rr_fmu_do_step(&m, k * T, T), RR_OK, "free step");
+        unit_record(&m, rec);
+        ok = same_bits(rec, want + k * RR_REC_COUNT, RR_REC_COUNT);
+    }
+    CHECK(ok, "free mode: rr_rig_step with a NaN target, bit for bit");
+    CHECK(isnan(rec[RR_REC_XI_REF]) && fabs(rec[RR_REC_CREEPAGE]) < 1e-3,
+          "no target, about free rolling");
+    rr_fmu_release(&m);
 }
 
 /* the unit's records of samples [k0, k1) into recs */
@@ -585,6 +684,8 @@ int main(void)
     test_config();
     test_default_run(&f);
     test_checks(&f);
+    test_nonfinite(&f);
+    test_free_mode(&f);
     test_states(&f);
     test_two_units(&f);
     test_mu_input(&f);

@@ -136,6 +136,57 @@ static void test_table(void)
     }
 }
 
+/* The lookup at every row of a table, both ends included, succeeds; a shift
+ * an ulp outside either end does not.  The last row's shift divided back
+ * into a row index may land an ulp past n - 1 (issue 22: 10 of 1 500 random
+ * tables refused their last row), so the range is the rows' own shifts. */
+static void test_table_ends(void)
+{
+    enum { MAXN = 16, CASES = 20000 };
+    static double data[MAXN * RR_CONTACT_TABLE_ROW];
+    rr_contact_table t;
+    rr_wheelset_pose p;
+    rr_contact_point a, b;
+    unsigned long seed = 12345u;
+    int k, i, refused = 0, outside = 0;
+    for (k = 0; k < MAXN * RR_CONTACT_TABLE_ROW; k++)
+        data[k] = 1.0 + 1e-3 * (k % 7);   /* any finite rows */
+    t.data = data;
+    for (k = 0; k < CASES; k++) {
+        double u[3], y_max, last;
+        for (i = 0; i < 3; i++) {        /* a 32-bit LCG: the same cases on every machine */
+            seed = (seed * 1664525u + 1013904223u) & 0xffffffffu;
+            u[i] = seed / 4294967296.0;
+        }
+        t.n = 2 + (int)(u[2] * (MAXN - 1));
+        t.y0 = -0.012 * u[0];
+        y_max = 0.012 * u[1] + 1e-6;
+        if (k == 0) {                    /* the issue's reproducer */
+            t.y0 = -0.002164674744325865; y_max = 0.0075946696529369225; t.n = 8;
+        }
+        t.dy = (y_max - t.y0) / (t.n - 1);   /* as rollerrig.contact_table */
+        for (i = 0; i < t.n; i++)
+            if (rr_contact_table_lookup(&t, t.y0 + i * t.dy, &p, 0, &a, &b) != RR_OK)
+                refused++;
+        last = t.y0 + (t.n - 1) * t.dy;
+        if (rr_contact_table_lookup(&t, nextafter(last, INFINITY), &p, 0, &a, &b)
+                != RR_ERR_GEOMETRY
+            || rr_contact_table_lookup(&t, nextafter(t.y0, -INFINITY), &p, 0, &a, &b)
+                != RR_ERR_GEOMETRY)
+            outside++;
+    }
+    CHECK(refused == 0, "table: the lookup at every row succeeds, both ends included");
+    if (refused)
+        printf("    %d rows of %d tables refused\n", refused, (int)CASES);
+    CHECK(outside == 0, "table: an ulp outside either end is RR_ERR_GEOMETRY");
+    t.y0 = -0.002164674744325865; t.n = 8; t.dy = (0.0075946696529369225 - t.y0) / 7;
+    CHECK_STATUS(rr_contact_table_lookup(&t, t.y0 + 7 * t.dy, &p, 0, &a, &b), RR_OK,
+                 "table: the reproducer's last row");
+    /* 1e-15: a + f (b - a) at f = 1 is b within an ulp */
+    CHECK_CLOSE(a.r, data[7 * RR_CONTACT_TABLE_ROW + 4], 0.0, 1e-15, "table: last row's r");
+    CHECK_CLOSE(p.z, data[7 * RR_CONTACT_TABLE_ROW + 26], 0.0, 1e-15, "table: last row's z");
+}
+
 static void test_off_roller(void)
 {
     rr_wheel_roller l;
@@ -334,6 +385,7 @@ int main(void)
     test_spline();
     test_conical();
     test_table();
+    test_table_ends();
     test_off_roller();
     test_rig_contact();
     test_caller_errors();
