@@ -708,10 +708,12 @@ static int solve_normal(solver *S, rr_exact_result *res)
             converged = 1;
             break;
         }
-        /* Polak-Ribiere, reset to steepest descent after a change of C */
+        /* Polak-Ribiere, reset to steepest descent after a change of C; a
+         * restart never reads d (what the workspace holds from another
+         * case, a NaN of a failed one, would survive 0 d) */
         beta = restart ? 0.0 : fmax(0.0, (rz - rzold) / rz_old);
         for (k = 0; k < n; k++) {
-            d[k] = in[k] != OUTSIDE ? z[k] + beta * d[k] : 0.0;
+            d[k] = in[k] == OUTSIDE ? 0.0 : restart ? z[k] : z[k] + beta * d[k];
             rold[k] = r[k];
             dsum += d[k];
         }

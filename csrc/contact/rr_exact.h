@@ -32,7 +32,9 @@
  * largest grid used), zero-filled before its first use: the solver keeps
  * the kernel spectra of the last grid shape and Poisson ratio there and
  * reuses them for the next case of the same shape (a batch of cases with
- * the same a/b and grid builds them once).  One workspace per thread.
+ * the same a/b and grid builds them once).  Nothing else a case leaves
+ * there (its iterates, a failed case's NaN) reaches the next: a case gives
+ * the doubles it gives on a fresh workspace.  One workspace per thread.
  */
 #ifndef RR_EXACT_H
 #define RR_EXACT_H

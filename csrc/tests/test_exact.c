@@ -3,7 +3,8 @@
  * normal problem against Hertz's closed form (approach and peak pressure
  * to 0.2 %, the discretisation error at 15 elements across), full sliding
  * (|F| = mu N to 1e-6), a creepage-free case (no traction at all), the
- * workspace's cached normal solution giving a fresh solve's doubles, the
+ * workspace's cached normal solution giving a fresh solve's doubles, a
+ * workspace of NaN (as a failed case may leave it) giving them too, the
  * field's sums, the steady-rolling equations checked by direct sums (no
  * FFT), and every documented error.
  */
@@ -198,6 +199,37 @@ int main(void)
             e = steady_equations_error(&p2, w2, l2);
             CHECK(e < 1e-7, sizes[q] == 15 ? "steady equations by direct sums, 15 across"
                                            : "steady equations by direct sums, 9 across");
+            free(w2);
+        }
+    }
+    /* a workspace as any other case may leave it (NaN everywhere: a failed
+     * one; the caches' tags then match nothing) gives a fresh workspace's
+     * doubles: no start, search direction or scratch value of another
+     * case reaches this one (a NaN left in NormCG's direction once failed
+     * every later case of a batch) */
+    {
+        const int sizes[2][2] = {{5, 5}, {15, 9}};
+        int q;
+        for (q = 0; q < 2; q++) {
+            rr_exact_problem p2 = hertz_case(0.005, 0.003, sizes[q][0]);
+            size_t l2, i;
+            double *w1, *w2;
+            rr_exact_hertz_grid(0.005, 0.003, sizes[q][0], sizes[q][1], &p2.grid);
+            l2 = rr_exact_workspace_len(p2.grid.mx, p2.grid.my);
+            w1 = calloc(l2, sizeof *w1);
+            w2 = malloc(l2 * sizeof *w2);
+            for (i = 0; i < l2; i++)
+                w2[i] = NAN;
+            p2.cx = 3e-4;
+            p2.cphi = 0.6;
+            CHECK_STATUS(rr_exact_solve(&p2, w1, l2, &r, NULL), RR_OK, "fresh workspace");
+            CHECK_STATUS(rr_exact_solve(&p2, w2, l2, &r2, NULL), RR_OK, "workspace of NaN");
+            CHECK(memcmp(&r.fx, &r2.fx, sizeof r.fx) == 0 && memcmp(&r.fy, &r2.fy, sizeof r.fy) == 0
+                  && memcmp(&r.mz, &r2.mz, sizeof r.mz) == 0
+                  && r.normal_products == r2.normal_products
+                  && r.tang_products == r2.tang_products,
+                  "a workspace of NaN: a fresh workspace's doubles");
+            free(w1);
             free(w2);
         }
     }
