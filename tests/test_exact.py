@@ -3,12 +3,16 @@ independent references: CONTACT's exact solutions at the same
 discretisation, Hertz's closed form, Kalker's creep coefficients, the full
 sliding limit, and the solution's own Coulomb conditions."""
 import csv
+import os
+import signal
+import textwrap
 import threading
 
 import numpy as np
 import pytest
 
 import rollerrig as rr
+from _child import run_python
 from reference_cases import data_path, read_columns
 
 
@@ -314,3 +318,41 @@ def test_forces_converge_at_about_first_order_in_the_element_size():
         assert np.all(d[1:] < d[:-1]), (c, F)
         orders.extend(np.log2(d[:-1] / d[1:]))
     assert 0.4 < min(orders) and max(orders) < 2.0 and 0.8 < np.mean(orders) < 1.5, orders
+
+
+@pytest.mark.skipif(os.name != "posix" or not hasattr(signal, "setitimer"),
+                    reason="POSIX interval timers")
+@pytest.mark.parametrize("call", [
+    "rr.exact_field(1e-3, 0.0, 0.5, nx=300, ny=300, **kw)",
+    "rr.creep_forces(np.array([1e-3]), 0.0, 0.5, method='exact', nx=300, ny=300, **kw)",
+    # plain numbers: the scalar path (exact_richardson's too)
+    "rr.creep_forces(1e-3, 0.0, 0.5, method='exact', nx=300, ny=300, **kw)"])
+def test_ctrl_c_is_noticed_within_one_case(call):
+    """One case on a fine grid takes seconds to minutes (issue 22: 40-60 s
+    after Ctrl-C); Python's signal handlers must run while it works, not
+    after it.  The core polls the binding's hook before every FFT product,
+    and the hook runs the handlers at most every 0.1 s.  A timer signal
+    every 50 ms whose handler raises KeyboardInterrupt on its third run
+    stops the call (each takes about 2 s here: the handler would run 20
+    times); before, it ran once, after the call returned, and the call was
+    never interrupted."""
+    out = run_python(["-c", textwrap.dedent(f"""
+        import signal, numpy as np, rollerrig as rr
+        kw = dict(a=6e-3, b=4e-3, N=5e4, mu=0.3, tol=1e-12)
+        runs = 0
+        def on_timer(sig, frame):
+            global runs
+            runs += 1
+            if runs == 3:
+                raise KeyboardInterrupt
+        signal.signal(signal.SIGALRM, on_timer)
+        signal.setitimer(signal.ITIMER_REAL, 0.05, 0.05)
+        try:
+            {call}
+            print("finished, the handler ran", runs, "times")
+        except KeyboardInterrupt:
+            print("interrupted")
+        finally:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+    """)], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0 and out.stdout.strip() == "interrupted", out.stdout + out.stderr
