@@ -2575,6 +2575,8 @@ PyMODINIT_FUNC PyInit__core(void)
         || PyModule_AddIntConstant(m, "CMD_SPEED", RR_CMD_SPEED) < 0
         || PyModule_AddIntConstant(m, "CMD_TORQUE", RR_CMD_TORQUE) < 0
         || PyModule_AddIntConstant(m, "ERR_CONTROLLER", RR_ERR_CONTROLLER) < 0
+        || PyModule_AddIntConstant(m, "EXACT_MAX_GRID", RR_EXACT_MAX_GRID) < 0
+        || PyModule_AddIntConstant(m, "EXACT_MARGIN", RR_EXACT_MARGIN) < 0
         || add_rows(m, "RIG_PARAMETERS", rr_rig_param_count(), param_tuple) < 0
         || add_rows(m, "RIG_SECTIONS", rr_rig_section_count(), section_tuple) < 0
         || add_rows(m, "RIG_RETIRED", rr_rig_retired_count(), retired_tuple) < 0

@@ -62,7 +62,7 @@ from typing import NamedTuple
 import numpy as np
 
 from ._errors import RollerRigError, RollerRigWarning
-from .exact import ExactSolution, exact_solve
+from .exact import ExactSolution, _edge, _exact_solve
 from .geometry import RigGeometry, contact_table, wheelset_contact
 
 __all__ = ["Patch", "undeformed_distance", "RigExact", "rig_exact", "patch_shape", "PatchShape"]
@@ -682,8 +682,10 @@ def rig_exact(geometry, y_ws, *, mu, N=None, Fz=None, side="left", spin=None,
             k = (float(cx), float(cy), float(cphi), 0.0)
         else:
             k = _creepages(geometry, p, spin, roller_spin, vy, yaw_rate, vmin, table)
-        s = exact_solve(p.h, dx=p.dx, dy=p.dy, x0=p.x0, y0=p.y0, N=load, mu=mu, G=G, nu=nu,
-                        cx=k[0], cy=k[1], cphi=k[2], tol=tol, maxit=maxit)
+        # a contact at the grid's edge is taken here: it sizes the next grid
+        s = _exact_solve(func, p.h, dict(dx=p.dx, dy=p.dy, x0=p.x0, y0=p.y0, N=load, mu=mu,
+                                         G=G, nu=nu, cx=k[0], cy=k[1], cphi=k[2]),
+                         dict(tol=tol, maxit=maxit), edge_ok=True)
         return s, k
 
     def at(load, a):
@@ -738,7 +740,3 @@ def rig_exact(geometry, y_ws, *, mu, N=None, Fz=None, side="left", spin=None,
                                      f"settle")
     return RigExact(solution=s, patch=p, cx=k[0], cy=k[1], cphi=k[2], V=k[3], N=N,
                     passes=count)
-
-
-def _edge(c):
-    return bool(c[:, 0].any() or c[:, -1].any() or c[0].any() or c[-1].any())
