@@ -184,7 +184,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     wmode = fz_choice(&in, 8);            /* 0: one double short, 1: NULL, else exact */
     want_field = n > 0 && fz_choice(&in, 2);
-    nan_work = fz_choice(&in, 4) == 0;
+    nan_work = fz_choice(&in, 4) == 3;    /* 0 where the input has ended: zero-filled */
     stop_at = fz_choice(&in, 2) ? fz_range(&in, 1, 60) : 0;
     invalid = problem_invalid(&pb) || n == 0;
     fz_note("grid %d x %d, d %.17g x %.17g at (%.17g, %.17g), h %s, A %.17g B %.17g, N %.17g, "
