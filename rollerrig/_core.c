@@ -5,7 +5,8 @@
  * arrays, each of length n or 1 (a length-1 array is broadcast; any stride
  * is accepted), allocates the outputs, runs its C kernel through the one
  * batch loop (run_batch: the GIL released around chunks of cases, Ctrl-C
- * checked between chunks), and returns the outputs
+ * checked between chunks, and within a case that may take seconds through
+ * the core's interrupt hook: interrupt_hook), and returns the outputs
  * with an int8 status array (0 OK, > 0 warning, < 0 error with NaN
  * results).  Broadcasting of general shapes, argument names in messages
  * and the conversion of statuses into exceptions live in rollerrig/.
@@ -16,6 +17,7 @@
 
 #include <stddef.h>
 #include <string.h>
+#include <time.h>
 
 #include "rollerrig.h"
 
@@ -136,8 +138,9 @@ typedef int (*batch_kernel)(void *ctx, npy_intp start, npy_intp stop);
 
 /* The one batch loop of the binding: kernel over cases [0, n) in chunks of
  * about CHUNK_WORK units of work (cost units a case), the GIL released
- * around each chunk, Ctrl-C checked between chunks.  0, or -1 with the
- * exception of the signal handler set. */
+ * around each chunk, Ctrl-C checked between chunks (and by a kernel's
+ * interrupt hook within them).  0, or -1 with the exception of the signal
+ * handler set. */
 static int run_batch(batch_kernel kernel, void *ctx, npy_intp n, double cost)
 {
     npy_intp start, chunk = cost >= 1.0 ? (npy_intp)(CHUNK_WORK / cost) : CHUNK_WORK;
@@ -149,10 +152,57 @@ static int run_batch(batch_kernel kernel, void *ctx, npy_intp n, double cost)
         Py_BEGIN_ALLOW_THREADS
         stop = kernel(ctx, start, end);
         Py_END_ALLOW_THREADS
-        if (PyErr_CheckSignals() < 0)
+        if (PyErr_Occurred() || PyErr_CheckSignals() < 0)
             return -1;
     }
     return 0;
+}
+
+/* Ctrl-C within one long case (the exact theory on a fine grid: seconds to
+ * minutes a case): the core polls its interrupt hook (rr_interrupt) between
+ * FFT products, without the GIL; the hook takes the GIL back at most every
+ * INTERRUPT_PERIOD seconds to run Python's signal handlers (as shapely's
+ * long loops do), and a handler's exception (KeyboardInterrupt) stops the
+ * case with RR_ERR_INTERRUPTED, the exception left set for the caller. */
+#define INTERRUPT_PERIOD 0.1
+
+typedef struct {
+    rr_interrupt hook;     /* what the core gets */
+    double next;           /* the time of the next check [s] */
+    int stopped;           /* a handler raised: every later poll stops too */
+} interrupt_hook;
+
+/* a clock for the period: monotonic where POSIX has one */
+static double seconds_now(void)
+{
+#if defined(CLOCK_MONOTONIC)
+    struct timespec t;
+    if (clock_gettime(CLOCK_MONOTONIC, &t) == 0)
+        return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+#endif
+    return (double)clock() / CLOCKS_PER_SEC;
+}
+
+static int poll_signals(void *ctx)
+{
+    interrupt_hook *h = ctx;
+    if (!h->stopped && seconds_now() >= h->next) {
+        PyGILState_STATE g = PyGILState_Ensure();
+        h->stopped = PyErr_CheckSignals() < 0;
+        PyGILState_Release(g);
+        h->next = seconds_now() + INTERRUPT_PERIOD;
+    }
+    return h->stopped;
+}
+
+/* The hook, first checked INTERRUPT_PERIOD from now; call with the GIL
+ * held, hand &h->hook to the core while the GIL is released. */
+static void interrupt_hook_init(interrupt_hook *h)
+{
+    h->hook.poll = poll_signals;
+    h->hook.ctx = h;
+    h->stopped = 0;
+    h->next = seconds_now() + INTERRUPT_PERIOD;
 }
 
 /* A Python integer as a C int: 0, or -1 with a ValueError naming func and
@@ -195,6 +245,7 @@ typedef struct {
     rr_creep_opts o;
     double *work;          /* the method's workspace (creep_forces), NULL if none */
     size_t work_len;
+    interrupt_hook stop;   /* creep_forces: Ctrl-C within a case */
 } elementwise;
 
 /* The elementwise call func(*arrays): nin input arrays from args, named
@@ -578,10 +629,13 @@ static int creep_kernel(void *ctx, npy_intp start, npy_intp stop)
         rr_friction fr;
         rr_forces f;
         load_case(b->in, i, &c, &fr);
-        b->st[i] = (npy_int8)rr_creep_forces_work(&c, &fr, &b->o, b->work, b->work_len, &f);
+        b->st[i] = (npy_int8)rr_creep_forces_interruptible(&c, &fr, &b->o, b->work, b->work_len,
+                                                           &b->stop.hook, &f);
         b->out[0][i] = f.fx;
         b->out[1][i] = f.fy;
         b->out[2][i] = f.mz;
+        if (b->stop.stopped)
+            return 1;         /* Ctrl-C: the exception is set, the batch ends */
     }
     return 0;
 }
@@ -600,6 +654,7 @@ static PyObject *py_creep_forces(PyObject *self, PyObject *args, PyObject *kwarg
     b.work = NULL;
     if (b.work_len > 0 && !(b.work = PyMem_Calloc(b.work_len, sizeof(double))))
         return PyErr_NoMemory();
+    interrupt_hook_init(&b.stop);
     res = elementwise_call("creep_forces", args, case_names, NCASE, 3, creep_kernel, &b,
                            rr_creep_cost(&b.o));
     PyMem_Free(b.work);
@@ -678,14 +733,19 @@ static PyObject *py_creep_forces1(PyObject *self, PyObject *const *args, Py_ssiz
         if (work_len == 0) {
             st = rr_creep_forces(&c, &fr, o, &f);
         } else {
-            /* a method with a workspace is a long computation: the GIL is let go */
+            /* a method with a workspace is a long computation: the GIL is let
+             * go, Ctrl-C noticed within the case */
             double *work = PyMem_Calloc(work_len, sizeof(double));
+            interrupt_hook stop;
             if (!work)
                 return PyErr_NoMemory();
+            interrupt_hook_init(&stop);
             Py_BEGIN_ALLOW_THREADS
-            st = rr_creep_forces_work(&c, &fr, o, work, work_len, &f);
+            st = rr_creep_forces_interruptible(&c, &fr, o, work, work_len, &stop.hook, &f);
             Py_END_ALLOW_THREADS
             PyMem_Free(work);
+            if (stop.stopped)
+                return NULL;
         }
     }
     return Py_BuildValue("(dddi)", f.fx, f.fy, f.mz, st);
@@ -830,6 +890,7 @@ typedef struct {
     size_t work_len;
     rr_exact_result res;
     rr_exact_field field;
+    interrupt_hook stop;
     int st;
 } exact_call;
 
@@ -899,6 +960,8 @@ static PyObject *py_exact_solve(PyObject *self, PyObject *args)
         PyErr_NoMemory();
         goto fail;
     }
+    interrupt_hook_init(&call.stop);
+    pb->interrupt = &call.stop.hook;
     k = run_batch(exact_kernel, &call, 1, 1.0);
     PyMem_Free(call.work);
     if (k < 0)
@@ -2512,6 +2575,8 @@ PyMODINIT_FUNC PyInit__core(void)
         || PyModule_AddIntConstant(m, "CMD_SPEED", RR_CMD_SPEED) < 0
         || PyModule_AddIntConstant(m, "CMD_TORQUE", RR_CMD_TORQUE) < 0
         || PyModule_AddIntConstant(m, "ERR_CONTROLLER", RR_ERR_CONTROLLER) < 0
+        || PyModule_AddIntConstant(m, "EXACT_MAX_GRID", RR_EXACT_MAX_GRID) < 0
+        || PyModule_AddIntConstant(m, "EXACT_MARGIN", RR_EXACT_MARGIN) < 0
         || add_rows(m, "RIG_PARAMETERS", rr_rig_param_count(), param_tuple) < 0
         || add_rows(m, "RIG_SECTIONS", rr_rig_section_count(), section_tuple) < 0
         || add_rows(m, "RIG_RETIRED", rr_rig_retired_count(), retired_tuple) < 0

@@ -102,7 +102,13 @@ def _scalar_options(method, options):
     """The CreepOptions of a method and its options, parsed once; None where
     they are not hashable or not valid (the general path says why)."""
     try:
-        key = (method, tuple(sorted(options.items()))) if options else method
+        key = method
+        if options:
+            # the values' types in the key too: 1, 1.0 and True are equal keys,
+            # and an option takes what the general path takes, whatever ran
+            # before (nx=True once came from the cache of an nx=1)
+            items = sorted(options.items())
+            key = (method, tuple(items), tuple([type(v) for _, v in items]))
         return _SCALAR_OPTIONS[key]
     except KeyError:
         pass

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _core
-from ._binding import _as_float, check_creep_options, used_numbers
+from ._binding import METHODS, _as_float, check_creep_options, used_numbers
 from ._errors import RollerRigError, check_status
 from .contact import TractionField, _case
 
@@ -47,10 +47,28 @@ class ExactSolution(TractionField):
     residuals: tuple    #: final relative residuals (normal, tangential)
 
 
-def _solution(func, grid, out, args):
+def _edge(contact):
+    """Where a contact area (boolean (my, mx)) reaches the grid's edge: the
+    sides it touches, as words ("" if none)."""
+    sides = (("the first column", contact[:, 0]), ("the last column", contact[:, -1]),
+             ("the first row", contact[0]), ("the last row", contact[-1]))
+    return ", ".join(name for name, c in sides if c.any())
+
+
+def _solution(func, grid, out, args, edge_ok=False):
+    """The ExactSolution of _core.exact_solve's output; RollerRigError for an
+    error status, or (unless edge_ok) for a contact that reaches the grid's
+    edge: the grid then cut the contact area off, and the solution is not
+    that of the gap given (rig_exact takes it to size a larger grid)."""
     mx, my, dx, dy, x0, y0 = grid
     status, r, pn, px, py, sx, sy, state = out
     check_status(func, np.array(status, dtype=np.int8), args, "raise")
+    edge = _edge(state >= 0)
+    if edge and not edge_ok:
+        raise RollerRigError(f"{func}: the contact reaches the grid's edge ({edge} of a "
+                             f"{my} x {mx} grid): the solution is cut off there, not that of "
+                             f"the gap; give h on a grid that holds the contact area with at "
+                             f"least one element of margin on every side")
     x = np.broadcast_to(x0 + dx * np.arange(mx), (my, mx))
     y = np.broadcast_to((y0 + dy * np.arange(my))[:, None], (my, mx))
     fx, fy, mz, fn, delta, carea, pmax, _nc, _ns, pn_prod, pt_prod, newton, rn, rt = r
@@ -87,7 +105,7 @@ def exact_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, nx=None
 
 
 def exact_solve(h, *, dx, dy, N, mu, G=8.2e10, nu=0.28, cx=0.0, cy=0.0, cphi=0.0, x0=None,
-                y0=None, tol=1e-6, maxit=5000, spin_shift=1.0 / 6.0):
+                y0=None, tol=None, maxit=None, spin_shift=None):
     """The exact solution for any undeformed distance h on a grid.
 
     h:       array (my, mx): the gap between the undeformed surfaces at the
@@ -99,34 +117,61 @@ def exact_solve(h, *, dx, dy, N, mu, G=8.2e10, nu=0.28, cx=0.0, cy=0.0, cphi=0.0
              default: the grid's centre)
     N:       normal load [N]; mu: Coulomb friction; G [Pa], nu: material
     cx, cy, cphi: creepages [-], [-], [rad/m]
-    tol, maxit, spin_shift: as the options of method "exact"
-    Returns an ExactSolution.
+    tol, maxit, spin_shift: as the options of method "exact" (None: their
+             defaults; rollerrig.METHODS["exact"].options)
+    Returns an ExactSolution.  A contact that reaches the grid's edge is
+    refused (RollerRigError): the grid would have cut it off.
     """
-    func = "exact_solve"
+    return _exact_solve("exact_solve", h, dict(dx=dx, dy=dy, N=N, mu=mu, G=G, nu=nu, cx=cx,
+                                               cy=cy, cphi=cphi, x0=x0, y0=y0),
+                        dict(tol=tol, maxit=maxit, spin_shift=spin_shift))
+
+
+def _exact_solve(func, h, numbers, options, edge_ok=False):
+    """exact_solve's work: numbers, options as its arguments (x0, y0 None: the
+    grid centred); edge_ok: a contact at the grid's edge returned, not
+    refused (rig_exact, which sizes a larger grid from it)."""
     h = _as_float(func, "h", h)
     if h.ndim != 2:
         raise RollerRigError(f"{func}: h must be a 2-D array (my, mx), got shape {h.shape}")
     my, mx = h.shape
-    named = dict(dx=dx, dy=dy, N=N, mu=mu, G=G, nu=nu, cx=cx, cy=cy, cphi=cphi, tol=tol,
-                 spin_shift=spin_shift)
+    if mx > _core.EXACT_MAX_GRID or my > _core.EXACT_MAX_GRID:
+        raise RollerRigError(f"{func}: h must have at most {_core.EXACT_MAX_GRID} elements a "
+                             f"side, got shape {h.shape}")
+    # the options by the registry's rules (their names, ranges, integers only)
+    options = {k: v for k, v in options.items() if v is not None}
+    check_creep_options(func, "exact", options)
+    opts = dict(METHODS["exact"].defaults(), **options)
     full = {}
-    for k, v in named.items():
+    for k, v in numbers.items():
+        if v is None:
+            continue
         arr = _as_float(func, k, v)
         if arr.size != 1:
             raise RollerRigError(f"{func}: {k} must be a number, got shape {arr.shape}")
         full[k] = arr.reshape(())
-    if not isinstance(maxit, (int, np.integer)) or maxit < 1:
-        raise RollerRigError(f"{func}: maxit must be a positive integer, got {maxit!r}")
-    if x0 is None:
-        x0 = -0.5 * (mx - 1) * float(full["dx"])
-    if y0 is None:
-        y0 = -0.5 * (my - 1) * float(full["dy"])
-    grid = (mx, my, float(full["dx"]), float(full["dy"]), float(x0), float(y0))
+    dx, dy = float(full["dx"]), float(full["dy"])
+    for k, d in (("dx", dx), ("dy", dy)):
+        if not (d > 0.0 and np.isfinite(d)):
+            raise RollerRigError(f"{func}: {k} must be a positive element size [m], got {d!r}")
+    with np.errstate(all="ignore"):
+        # the solver's limits (rr_exact.h): the element and its area normal
+        # doubles, its sides within a factor 1e6
+        bad = not (min(dx, dy) >= np.finfo(float).tiny and dx * dy >= np.finfo(float).tiny
+                   and np.isfinite(dx * dy) and 1e-6 <= dx / dy <= 1e6)
+    if bad:
+        raise RollerRigError(f"{func}: dx, dy must be element sizes [m] whose area dx dy is a "
+                             f"normal double and whose ratio is within 1e6, got dx = {dx!r}, "
+                             f"dy = {dy!r}")
+    x0 = float(full["x0"]) if "x0" in full else -0.5 * (mx - 1) * dx
+    y0 = float(full["y0"]) if "y0" in full else -0.5 * (my - 1) * dy
+    grid = (mx, my, dx, dy, x0, y0)
+    full.update(used_numbers("exact", options))
     out = _core.exact_solve(*grid, h, 1.0, 1.0, float(full["N"]), float(full["G"]),
                             float(full["nu"]), float(full["mu"]), float(full["cx"]),
-                            float(full["cy"]), float(full["cphi"]), float(full["spin_shift"]),
-                            float(full["tol"]), int(maxit))
-    return _solution(func, grid, out, full)
+                            float(full["cy"]), float(full["cphi"]), float(opts["spin_shift"]),
+                            float(opts["tol"]), int(opts["maxit"]))
+    return _solution(func, grid, out, full, edge_ok)
 
 
 def exact_richardson(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, nx=27,
@@ -138,11 +183,26 @@ def exact_richardson(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, nx
     and F2 on 2nx x 2ny elements across the ellipse the continuum value is
     about 2 F2 - F1, with the error estimate |F2 - F1| (the size of the
     correction itself: an upper bound where the convergence is monotone).
-    Arguments as creep_forces (arrays broadcast) with method "exact".
+    Arguments as creep_forces (arrays broadcast) with method "exact"; nx,
+    ny up to half the method's largest (the fine grid's), checked with the
+    options before either grid is solved.
     Returns (forces, error): two CreepForces-like tuples (fx, fy, mz, status).
     """
     from .contact import CreepForces, creep_forces
+    func = "exact_richardson"
     ny = nx if ny is None else ny
+    if "method" in options:
+        raise RollerRigError(f"{func}: the method is the exact theory's, got "
+                             f"method={options['method']!r:.60}")
+    info = METHODS["exact"]
+    check_creep_options(func, "exact", dict({k: v for k, v in options.items()
+                                             if k in info.options}, nx=nx, ny=ny))
+    for name, n in (("nx", nx), ("ny", ny)):
+        most = int(info.options[name].hi)
+        if 2 * n > most:
+            raise RollerRigError(f"{func}: {name} must be at most {most // 2} (the fine grid "
+                                 f"has 2 {name} = {2 * n} elements, the method at most "
+                                 f"{most}), got {n!r}")
     kw = dict(a=a, b=b, N=N, mu=mu, G=G, nu=nu, method="exact", **options)
     f1 = creep_forces(cx, cy, cphi, nx=nx, ny=ny, **kw)
     f2 = creep_forces(cx, cy, cphi, nx=2 * nx, ny=2 * ny, **kw)

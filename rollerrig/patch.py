@@ -61,14 +61,18 @@ from typing import NamedTuple
 
 import numpy as np
 
+from . import _core
 from ._errors import RollerRigError, RollerRigWarning
-from .exact import ExactSolution, exact_solve
+from .exact import ExactSolution, _edge, _exact_solve
 from .geometry import RigGeometry, contact_table, wheelset_contact
 
 __all__ = ["Patch", "undeformed_distance", "RigExact", "rig_exact", "patch_shape", "PatchShape"]
 
 #: spacing of the profile samples h is interpolated from [m], at most
 _SAMPLE = 2e-5
+#: and at least (elements under a micrometre given: 8e5 samples over the
+#: window, where a tenth of the element would ask for any number)
+_SAMPLE_MIN = 1e-7
 #: lateral half-width of the profiles' window around the reference point [m]
 _WINDOW = 0.04
 
@@ -239,6 +243,8 @@ class _Sections:
         yr, _ = self._section(0.0, "roller")
         yw, _ = self._section(0.0, "wheel")
         self.lo, self.hi = max(yr[0], yw[0]), min(yr[-1], yw[-1])
+        if not self.hi > self.lo:
+            _apart(pair)
 
     def _section(self, x, body):
         if body == "roller":
@@ -274,6 +280,14 @@ class _Sections:
             yc, _ = self.frame.project(*self.pair.wheel_yz(self.sw, 0.0, self._zw))
             self._wheel_s = _single_valued(yc, self.sw, self.k_w)
         return np.interp(y, *self._wheel_s)
+
+
+def _apart(pair):
+    """RollerRigError: the cross-sections lie side by side (the pose given
+    puts the wheel beside its roller)."""
+    raise RollerRigError(f"undeformed_distance: at y_ws = {pair.y_ws!r} m, axle height z = "
+                         f"{pair.z!r} m and roll {pair.roll!r} rad the wheel's and the "
+                         f"roller's cross-sections do not overlap laterally: no patch")
 
 
 def _runs(mask):
@@ -326,7 +340,11 @@ def undeformed_distance(geometry, y_ws, *, side="left", N=None, approach=None, n
     The grid covers the region where h <= cover * approach (cover >= 1:
     the contact lies where h <= the approach found), plus one element on
     every side, with about n elements across its longer side and square
-    elements, unless dx, dy [m] are given.  combine [m]: lateral intervals
+    elements, unless dx, dy [m] are given (a grid of more than the exact
+    solver's 1024 elements a side is refused before it is built).  A load
+    or approach whose region reaches past the profiles in the plane, or a
+    pose whose cross-sections do not overlap, is refused, naming it.
+    combine [m]: lateral intervals
     of that region at most this far from the deepest one are on the grid,
     the rest are a separate patch (Patch.excluded, a warning).
     Returns a Patch (h with least value 0, its grid and frame).
@@ -365,7 +383,7 @@ def undeformed_distance(geometry, y_ws, *, side="left", N=None, approach=None, n
     else:
         raise RollerRigError(f"{func}: reference must be 'point', 'weighted' or "
                              f"(s_roller, delta), got {reference!r:.60}")
-    step = min(_SAMPLE, 0.1 * min(v for v in (dx, dy, 1.0) if v is not None))
+    step = max(min(_SAMPLE, 0.1 * min(v for v in (dx, dy, 1.0) if v is not None)), _SAMPLE_MIN)
     sw_P = float(cpt.s_wheel[0])
 
     def sections(sr, dl, sw):
@@ -387,6 +405,15 @@ def undeformed_distance(geometry, y_ws, *, side="left", N=None, approach=None, n
     runs, rest = _group(yf, hy - hmin <= level, int(np.nanargmin(hy)), combine)
     lo, hi = min(a for a, _ in runs), max(b for _, b in runs)
     kept = tuple(runs)
+    load = f"N = {float(N)!r} N" if N is not None else f"approach = {approach!r} m"
+
+    def too_large(where):
+        raise RollerRigError(f"{func}: at y_ws = {y_ws!r} m and {load} the region to cover "
+                             f"(h <= cover x approach = {level:.3g} m) {where}: a load or "
+                             f"approach beyond one planar patch on these profiles")
+    if lo <= yf[0] or hi >= yf[-1]:
+        too_large(f"reaches the end of the profiles in the tangent plane (y from "
+                  f"{sec.lo:g} to {sec.hi:g} m from the reference point)")
     if rest:
         warnings.warn(f"{func}: at y_ws = {y_ws!r} m the {side} wheel has "
                       f"{len(rest)} more interpenetration region(s) farther than "
@@ -398,21 +425,35 @@ def undeformed_distance(geometry, y_ws, *, side="left", N=None, approach=None, n
     in_region = (yf >= lo) & (yf <= hi) & (hy - hmin <= level)
     r_P, R_P = pair.wheel_radius(sw_P), pair.roller_radius(sr_P)
     x_t = np.sqrt(2.0 * level / (np.cos(delta) * (1.0 / r_P + 1.0 / R_P)))
+    if not x_t < 0.5 * min(r_P, R_P):
+        too_large(f"is {2 * x_t:.3g} m long, as long as the radii ({r_P:.3g}, {R_P:.3g} m)")
     rise = np.maximum((sec.gap(x_t, yf) - hy)[in_region], 1e-3 * level) / x_t ** 2
     xh = float(np.max(np.sqrt((level - (hy - hmin)[in_region]) / rise)))
+    if not np.isfinite(xh):
+        too_large(f"ends, {x_t:.3g} m ahead and behind, beyond the profiles in the tangent plane")
     if dx is None or dy is None:
         d = max(2.0 * xh, hi - lo) / n
         dx = d if dx is None else dx
         dy = d if dy is None else dy
     i_lo, i_hi = int(np.floor(-xh / dx)) - 1, int(np.ceil(xh / dx)) + 1
     j_lo, j_hi = int(np.floor(lo / dy)) - 1, int(np.ceil(hi / dy)) + 1
+
+    def bounded():
+        # the solver's largest grid, checked before h's memory is asked for
+        mx, my = i_hi - i_lo + 1, j_hi - j_lo + 1
+        if max(mx, my) > _core.EXACT_MAX_GRID:
+            raise RollerRigError(f"{func}: dx = {dx!r} m, dy = {dy!r} m: this patch "
+                                 f"({2.0 * xh:.3g} m by {hi - lo:.3g} m) would need {my} x "
+                                 f"{mx} elements, at most {_core.EXACT_MAX_GRID} a side (give "
+                                 f"larger elements)")
+    bounded()
     # grow the grid until the region has an exterior element on every side
     for _ in range(1000):
         xs = dx * np.arange(i_lo, i_hi + 1)
         ys = dy * np.arange(j_lo, j_hi + 1)
         if ys[0] < sec.lo or ys[-1] > sec.hi:
-            raise RollerRigError(f"{func}: at y_ws = {y_ws!r} m the patch reaches where a "
-                                 f"profile folds or ends in the tangent plane (y from "
+            raise RollerRigError(f"{func}: at y_ws = {y_ws!r} m and {load} the patch reaches "
+                                 f"where a profile folds or ends in the tangent plane (y from "
                                  f"{sec.lo:g} to {sec.hi:g} m from the reference point)")
         h = np.stack([sec.gap(x, ys) for x in xs], axis=1)
         inside = h - hmin <= level
@@ -424,9 +465,10 @@ def undeformed_distance(geometry, y_ws, *, side="left", N=None, approach=None, n
         i_hi += grow[1]
         j_lo -= grow[2]
         j_hi += grow[3]
+        bounded()
     if not np.all(np.isfinite(h)):
-        raise RollerRigError(f"{func}: at y_ws = {y_ws!r} m the patch reaches where a "
-                             f"profile folds or ends in the tangent plane")
+        raise RollerRigError(f"{func}: at y_ws = {y_ws!r} m and {load} the patch reaches "
+                             f"where a profile folds or ends in the tangent plane")
     hmin_grid = float(np.min(h))
     h = h - hmin_grid
     pen = max(0.0, -hmin_grid)      # the pose's interpenetration along n (0 at zero gap)
@@ -479,6 +521,8 @@ def _weighted_reference(pair, sr_P, sw_P, approach, delta, combine, step):
     Ys, Zs = _single_valued(Yw, Zw, k)
     _, ss = _single_valued(Yw, sw, k)
     inside = (Yr >= Ys[0]) & (Yr <= Ys[-1])
+    if not inside.any():
+        _apart(pair)
     Yr, Zr, sr = Yr[inside], Zr[inside], sr[inside]
     g = np.interp(Yr, Ys, Zs) - Zr
     g -= np.min(g)
@@ -672,8 +716,14 @@ def rig_exact(geometry, y_ws, *, mu, N=None, Fz=None, side="left", spin=None,
         z = z_given if z_given is not None else (z0 - a / np.cos(delta0) if lower else None)
         o = {k: coarse * v if k in ("dx", "dy") and v is not None else v
              for k, v in opts.items()}
-        return undeformed_distance(geometry, y_ws, side=side, N=load, n=nn, E=E, nu=nu,
-                                   approach=a, cover=cov, reference=ref, z=z, **o)
+        try:
+            return undeformed_distance(geometry, y_ws, side=side, N=load, n=nn, E=E, nu=nu,
+                                       approach=a, cover=cov, reference=ref, z=z, **o)
+        except RollerRigError as e:
+            if coarse == 1.0 or (o.get("dx") is None and o.get("dy") is None):
+                raise
+            raise RollerRigError(f"{func}: the first pass, on elements twice dx, dy: "
+                                 f"{e}") from None
 
     def solve(p, load):
         nonlocal count
@@ -682,8 +732,10 @@ def rig_exact(geometry, y_ws, *, mu, N=None, Fz=None, side="left", spin=None,
             k = (float(cx), float(cy), float(cphi), 0.0)
         else:
             k = _creepages(geometry, p, spin, roller_spin, vy, yaw_rate, vmin, table)
-        s = exact_solve(p.h, dx=p.dx, dy=p.dy, x0=p.x0, y0=p.y0, N=load, mu=mu, G=G, nu=nu,
-                        cx=k[0], cy=k[1], cphi=k[2], tol=tol, maxit=maxit)
+        # a contact at the grid's edge is taken here: it sizes the next grid
+        s = _exact_solve(func, p.h, dict(dx=p.dx, dy=p.dy, x0=p.x0, y0=p.y0, N=load, mu=mu,
+                                         G=G, nu=nu, cx=k[0], cy=k[1], cphi=k[2]),
+                         dict(tol=tol, maxit=maxit), edge_ok=True)
         return s, k
 
     def at(load, a):
@@ -738,7 +790,3 @@ def rig_exact(geometry, y_ws, *, mu, N=None, Fz=None, side="left", spin=None,
                                      f"settle")
     return RigExact(solution=s, patch=p, cx=k[0], cy=k[1], cphi=k[2], V=k[3], N=N,
                     passes=count)
-
-
-def _edge(c):
-    return bool(c[:, 0].any() or c[:, -1].any() or c[0].any() or c[-1].any())

@@ -3,12 +3,16 @@ independent references: CONTACT's exact solutions at the same
 discretisation, Hertz's closed form, Kalker's creep coefficients, the full
 sliding limit, and the solution's own Coulomb conditions."""
 import csv
+import os
+import signal
+import textwrap
 import threading
 
 import numpy as np
 import pytest
 
 import rollerrig as rr
+from _child import run_python
 from reference_cases import data_path, read_columns
 
 
@@ -314,3 +318,121 @@ def test_forces_converge_at_about_first_order_in_the_element_size():
         assert np.all(d[1:] < d[:-1]), (c, F)
         orders.extend(np.log2(d[:-1] / d[1:]))
     assert 0.4 < min(orders) and max(orders) < 2.0 and 0.8 < np.mean(orders) < 1.5, orders
+
+
+@pytest.mark.skipif(os.name != "posix" or not hasattr(signal, "setitimer"),
+                    reason="POSIX interval timers")
+@pytest.mark.parametrize("call", [
+    "rr.exact_field(1e-3, 0.0, 0.5, nx=300, ny=300, **kw)",
+    "rr.creep_forces(np.array([1e-3]), 0.0, 0.5, method='exact', nx=300, ny=300, **kw)",
+    # plain numbers: the scalar path (exact_richardson's too)
+    "rr.creep_forces(1e-3, 0.0, 0.5, method='exact', nx=300, ny=300, **kw)"])
+def test_ctrl_c_is_noticed_within_one_case(call):
+    """One case on a fine grid takes seconds to minutes (issue 22: 40-60 s
+    after Ctrl-C); Python's signal handlers must run while it works, not
+    after it.  The core polls the binding's hook before every FFT product,
+    and the hook runs the handlers at most every 0.1 s.  A timer signal
+    every 50 ms whose handler raises KeyboardInterrupt on its third run
+    stops the call (each takes about 2 s here: the handler would run 20
+    times); before, it ran once, after the call returned, and the call was
+    never interrupted."""
+    out = run_python(["-c", textwrap.dedent(f"""
+        import signal, numpy as np, rollerrig as rr
+        kw = dict(a=6e-3, b=4e-3, N=5e4, mu=0.3, tol=1e-12)
+        runs = 0
+        def on_timer(sig, frame):
+            global runs
+            runs += 1
+            if runs == 3:
+                raise KeyboardInterrupt
+        signal.signal(signal.SIGALRM, on_timer)
+        signal.setitimer(signal.ITIMER_REAL, 0.05, 0.05)
+        try:
+            {call}
+            print("finished, the handler ran", runs, "times")
+        except KeyboardInterrupt:
+            print("interrupted")
+        finally:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+    """)], capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0 and out.stdout.strip() == "interrupted", out.stdout + out.stderr
+
+
+BOWL = 50.0 * ((np.arange(15) - 7) * 1e-3)[None, :] ** 2 + \
+    80.0 * ((np.arange(15) - 7) * 1e-3)[:, None] ** 2
+SOLVE = dict(dx=1e-3, dy=1e-3, N=5e4, mu=0.3, cx=1e-3, cphi=0.5)
+
+
+@pytest.mark.parametrize("bad, message", [
+    # the registry's options, by its rules (issue 22: a raw OverflowError,
+    # True taken as 1, "(options): parameter out of range")
+    (dict(maxit=2 ** 31), r"maxit must be an integer in \[1, 10000000\], got 2147483648"),
+    (dict(maxit=True), r"maxit must be an integer .* got True"),
+    (dict(maxit=10.0), r"maxit must be an integer .* got 10.0"),
+    (dict(tol=0.2), r"tol must be a real number in \[1e-14, 0.1\], got 0.2"),
+    (dict(spin_shift=2), r"spin_shift must be a real number in \[-1, 1\], got 2"),
+    # the element: its size, area and shape within what the solver takes
+    (dict(dx=1e-300), r"dx, dy must be element sizes .* got dx = 1e-300, dy = 0.001"),
+    (dict(dy=1e300), r"dx, dy must be element sizes .* dy = 1e\+300"),
+    (dict(dx=-1e-3), r"dx must be a positive element size \[m\], got -0.001"),
+    (dict(dx=1e-3, dy=1e-10), r"dx, dy must be element sizes .* ratio is within 1e6"),
+    # the placement (a bare ValueError, TypeError before)
+    (dict(x0="a"), r"x0 must be real numbers, got dtype <U1"),
+    (dict(x0=np.zeros(3)), r"x0 must be a number, got shape \(3,\)"),
+    (dict(y0=np.nan), r"y0 = nan: input is NaN"),
+    (dict(x0=1e308), r"x0 = 1e\+308: inputs too extreme"),
+    (dict(h=np.zeros((1, 2000))), r"h must have at most 1024 elements a side"),
+    # a contact that reaches the grid's edge (status 0 before): one element,
+    # a flat gap, an inverted one, a bowl cut off by its grid
+    (dict(h=np.zeros((1, 1))), r"the contact reaches the grid's edge \(the first column, the "
+                               r"last column, the first row, the last row of a 1 x 1 grid"),
+    (dict(h=np.zeros((9, 9))), r"the contact reaches the grid's edge"),
+    (dict(h=-BOWL), r"the contact reaches the grid's edge"),
+    (dict(h=BOWL[:, 6:]),
+     r"the contact reaches the grid's edge \(the first column of a 15 x 9 grid"),
+])
+def test_exact_solve_names_what_is_wrong(bad, message):
+    kw = dict(SOLVE, **bad)
+    h = kw.pop("h", BOWL)
+    with pytest.raises(rr.RollerRigError, match="exact_solve: " + message):
+        rr.exact_solve(h, **kw)
+
+
+def test_exact_solve_of_a_contact_inside_its_grid():
+    # the bowl's contact lies inside (the edge test's negative): solved, the
+    # same doubles with the options given as their defaults or left out
+    s = rr.exact_solve(BOWL, **SOLVE)
+    assert s.status == 0 and s.contact.any() and not rr.exact._edge(s.contact)
+    t = rr.exact_solve(BOWL, tol=1e-6, maxit=5000, spin_shift=1.0 / 6.0, **SOLVE)
+    assert (s.fx, s.fy, s.mz) == (t.fx, t.fy, t.mz)
+
+
+def test_exact_richardson_checks_before_the_work():
+    # the fine grid has 2 nx elements: nx = 1000 solved 31 s on the coarse
+    # grid, then creep_forces refused nx = 2000 (issue 22)
+    kw = dict(a=6e-3, b=4e-3, N=5e4, mu=0.3)
+    with pytest.raises(rr.RollerRigError, match=r"exact_richardson: nx must be at most 510 "
+                                                r"\(the fine grid has 2 nx = 2000"):
+        rr.exact_richardson(1e-3, nx=1000, **kw)
+    with pytest.raises(rr.RollerRigError, match=r"exact_richardson: ny must be at most 510"):
+        rr.exact_richardson(1e-3, nx=5, ny=511, **kw)
+    with pytest.raises(rr.RollerRigError, match=r"exact_richardson: nx must be an integer"):
+        rr.exact_richardson(1e-3, nx=True, **kw)
+    with pytest.raises(rr.RollerRigError, match=r"exact_richardson: tol must be"):
+        rr.exact_richardson(1e-3, nx=5, tol=1.0, **kw)
+    with pytest.raises(rr.RollerRigError, match=r"exact_richardson: the method is the exact"):
+        rr.exact_richardson(1e-3, nx=5, method="fastsim", **kw)
+    est, err = rr.exact_richardson(1e-3, nx=255, ny=5, **kw)   # 510 x 10 the finer: taken
+    assert est.status == 0
+
+
+@pytest.mark.parametrize("value", [True, 1.0, np.float64(1.0)])
+def test_an_option_is_taken_by_one_rule_whatever_ran_before(value):
+    # the scalar path keeps parsed options by their values: nx=True and
+    # nx=1.0 equal nx=1 as keys, and were taken from its cache after one
+    # call with nx=1, while a fresh process refused them
+    kw = dict(a=6e-3, b=4e-3, N=5e4, mu=0.3, method="exact")
+    assert rr.creep_forces(1e-3, nx=1, ny=1, **kw).status == 0
+    with pytest.raises(rr.RollerRigError, match=r"nx must be an integer in \[1, 1020\]"):
+        rr.creep_forces(1e-3, nx=value, ny=1, **kw)
+    assert rr.creep_forces(1e-3, nx=np.int64(1), ny=1, **kw).status == 0

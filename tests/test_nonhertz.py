@@ -23,12 +23,14 @@ CONTACT's, on our profiles), the creepages from our kinematics and the
 normal load found from the vertical load.
 """
 import functools
+import re
 import warnings
 
 import numpy as np
 import pytest
 
 import rollerrig as rr
+from _properties import run_isolated
 from reference_cases import read_columns
 
 MM = 1e-3
@@ -446,3 +448,70 @@ def test_rig_exact_bad_input(kwargs, match):
 def test_not_a_geometry():
     with pytest.raises(rr.RollerRigError, match="RigGeometry"):
         rr.undeformed_distance("S1002", 0.0, N=6e4)
+
+
+# issue 22: extreme loads, approaches and poses died in the grid's sizing with
+# "ValueError: cannot convert float NaN to integer" (22 variants in
+# undeformed_distance and rig_exact), numpy's "Number of samples, -16015,
+# must be non-negative" or "zero-size array to reduction operation"
+_REGION = "the region to cover .* reaches the end of the profiles in the tangent plane"
+_APART = "the wheel's and the roller's cross-sections do not overlap laterally"
+
+
+@pytest.mark.parametrize("pair, y_ws, kwargs, match", [
+    ("miniprof", 0.0, dict(N=1e9), "N = 1000000000.0 N " + _REGION),
+    ("miniprof", 0.0, dict(approach=0.05), "approach = 0.05 m " + _REGION),
+    # the region fits at x = 0, but its ends along x lie beyond the profiles
+    ("miniprof", -0.0075, dict(N=17782794.100389227), "N = 17782794.100389227 N the region "
+     "to cover .* ends, .* ahead and behind, beyond the profiles"),
+    ("miniprof", 0.0, dict(N=5623413.251903491), "N = 5623413.251903491 N the patch "
+     "reaches where a profile folds or ends"),
+    # a pose that lifts the wheel far above its roller
+    ("s1002_uic60", -0.03820636018488177,
+     dict(N=0.25967994392193683, z=0.9764378024404246, roll=0.051661172400763705,
+          side="right"), _APART),
+    ("s1002_uic60", -0.07614328696744935,
+     dict(N=134.41195667572373, z=0.3051978794617687, roll=-0.09413439445169246, n=23,
+          side="right"), _APART),
+])
+def test_extreme_loads_and_poses_are_named(pair, y_ws, kwargs, match):
+    with pytest.raises(rr.RollerRigError, match="undeformed_distance: .*" + match):
+        rr.undeformed_distance(geometry(pair), y_ws, **kwargs)
+
+
+@pytest.mark.parametrize("pair, y_ws, kwargs, match", [
+    ("s1002_uic60", 8.084531137396646e-55, dict(Fz=27561564941.858925, side="right"), _REGION),
+    ("miniprof", 0.08345954095818053,
+     dict(N=0.005600089266494324, z=0.2826563382787499, side="right"), _APART),
+])
+def test_rig_exact_at_extremes_is_named(pair, y_ws, kwargs, match):
+    with pytest.raises(rr.RollerRigError, match=match):
+        rr.rig_exact(geometry(pair), y_ws, mu=0.3, cx=1e-3, cy=0.0, cphi=0.0, n=6, **kwargs)
+
+
+def test_element_sizes_are_bounded_before_memory_is_asked_for():
+    # dx = dy = 1e-9 m sized h's grid, and the profile samples under it (a
+    # tenth of an element apart), without a bound: the process grew to 24 GB
+    # and the kernel killed it.  Run where it may take 2 GB at most: the
+    # element count it would need is named before any of that is asked for.
+    out = run_isolated("""if True:
+        import resource
+        resource.setrlimit(resource.RLIMIT_AS, (2 * 2 ** 30, 2 * 2 ** 30))
+        import rollerrig as rr
+        g = rr.RigGeometry.measured_pair()
+        for call in (lambda: rr.undeformed_distance(g, 0.0, N=6e4, dx=1e-9, dy=1e-9),
+                     lambda: rr.undeformed_distance(g, 0.0, N=6e4, dx=1e-9),
+                     lambda: rr.rig_exact(g, 0.0, N=6e4, mu=0.3, cx=1e-3, cy=0.0, cphi=0.0,
+                                          dx=1e-9)):
+            try:
+                call()
+            except rr.RollerRigError as e:
+                print(e)
+    """, timeout=300)
+    lines = out.stdout.splitlines()
+    assert out.returncode == 0 and len(lines) == 3, out.stdout + out.stderr
+    need = r"this patch \(.* m by .* m\) would need \d+ x \d{7,} elements, at most 1024 a side"
+    assert re.match(r"undeformed_distance: dx = 1e-09 m, dy = 1e-09 m: " + need, lines[0])
+    assert re.match(r"undeformed_distance: dx = 1e-09 m, dy = 0.000\d+ m: " + need, lines[1])
+    assert re.match(r"rig_exact: the first pass, on elements twice dx, dy: undeformed_distance: "
+                    r"dx = 2e-09 m, .*" + need, lines[2])

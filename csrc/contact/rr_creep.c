@@ -111,9 +111,9 @@ size_t rr_creep_workspace_len(const rr_creep_opts *o)
     return d ? d->workspace_len(o) : 0;
 }
 
-int rr_creep_forces_work(const rr_contact_case *c, const rr_friction *fr,
-                         const rr_creep_opts *o, double *work, size_t work_len,
-                         rr_forces *out)
+int rr_creep_forces_interruptible(const rr_contact_case *c, const rr_friction *fr,
+                                  const rr_creep_opts *o, double *work, size_t work_len,
+                                  const rr_interrupt *stop, rr_forces *out)
 {
     int st = out ? rr_creep_opts_check(o) : RR_ERR_NULL;
     const rr_method_desc *d = st == RR_OK ? methods[o->method] : NULL;
@@ -127,7 +127,16 @@ int rr_creep_forces_work(const rr_contact_case *c, const rr_friction *fr,
         rr_forces_nan(out);
         return st;
     }
+    if (d->forces_interruptible)
+        return d->forces_interruptible(c, fr, o, work, stop, out);
     return d->forces(c, fr, o, work, out);
+}
+
+int rr_creep_forces_work(const rr_contact_case *c, const rr_friction *fr,
+                         const rr_creep_opts *o, double *work, size_t work_len,
+                         rr_forces *out)
+{
+    return rr_creep_forces_interruptible(c, fr, o, work, work_len, NULL, out);
 }
 
 int rr_creep_forces(const rr_contact_case *c, const rr_friction *fr,

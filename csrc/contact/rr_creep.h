@@ -88,6 +88,19 @@ int rr_creep_forces_work(const rr_contact_case *c, const rr_friction *fr,
                          rr_forces *out);
 
 /*
+ * rr_creep_forces_interruptible - rr_creep_forces_work with the caller's
+ * interrupt hook stop (NULL: none; rr_common.h), polled by a method whose
+ * one case may take seconds (the descriptor's forces_interruptible: the
+ * exact theory) and ignored by the others, whose cases are short: the
+ * caller checks between them.  A hook that asks to stop gives
+ * RR_ERR_INTERRUPTED (forces NaN); one that never does, the doubles of
+ * rr_creep_forces_work.
+ */
+int rr_creep_forces_interruptible(const rr_contact_case *c, const rr_friction *fr,
+                                  const rr_creep_opts *o, double *work, size_t work_len,
+                                  const rr_interrupt *stop, rr_forces *out);
+
+/*
  * rr_creep_field - the forces with the traction field, for methods that
  * have one (descriptor field_shape: rows x cols elements); RR_ERR_METHOD
  * for the others (forces NaN), else as the method's field entry point.

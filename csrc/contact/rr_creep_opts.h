@@ -12,6 +12,7 @@
 #define RR_CREEP_OPTS_H
 
 #include <stddef.h>
+#include "util/rr_common.h"
 #include "contact/rr_contact.h"
 #include "contact/rr_friction.h"
 #include "contact/rr_kalker.h"
@@ -109,6 +110,12 @@ typedef struct {
     /* 1: Coulomb friction only (a falling law is RR_ERR_FRICTION); 0 (the
      * default of a descriptor that leaves it out): any law */
     int coulomb_only;
+    /* NULL (the default of a descriptor that leaves it out), or forces with
+     * the caller's interrupt hook (rr_common.h), for a method whose one case
+     * may take seconds (the exact theory on a fine grid) */
+    int (*forces_interruptible)(const rr_contact_case *c, const rr_friction *fr,
+                                const rr_creep_opts *o, double *work,
+                                const rr_interrupt *stop, rr_forces *out);
 } rr_method_desc;
 
 /* Helpers for descriptors: a cost of 1 and a slope scale of 1, and no workspace. */

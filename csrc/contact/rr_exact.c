@@ -328,7 +328,8 @@ static void inverse_stencils(layout *L, const rr_conv2d *cv)
  * a sum (rr_influence.h); the steady kernel's symbol is the symmetric one's
  * times 1 - e^(i wx) (the shift by one element, exact where the torus
  * holds offset mx: L1 >= 2 mx; else its kernel is transformed itself). */
-static int build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu)
+static int build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu,
+                         const rr_interrupt *stop)
 {
     const int mx = L->mx, my = L->my, L1 = cv->L1, L2 = cv->L2, nh = cv->nh;
     const int nkx = mx + 1 > L1 / 2 + 1 ? mx + 1 : L1 / 2 + 1;
@@ -366,6 +367,8 @@ static int build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu)
             for (kx = L1 / 2 + 1; kx < L1; kx++)
                 o[kx] = (q < 2 ? sy : -sy) * row[L1 - kx];
         }
+        if (rr_interrupted(stop))
+            return RR_ERR_INTERRUPTED;
         if ((st = rr_conv2d_spectrum_torus(cv, L->kern, spec)) < 0)
             return st;
     }
@@ -400,6 +403,8 @@ static int build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu)
     if (L1 < 2 * mx) {
         /* the steady kernels themselves, on the grid's offsets */
         const int kw = 2 * mx - 1;
+        if (rr_interrupted(stop))
+            return RR_ERR_INTERRUPTED;
         for (ky = -(my - 1); ky < my; ky++)
             for (kx = -(mx - 1); kx < mx; kx++) {
                 const int i0 = abs(kx), i1 = abs(kx + 1), j = abs(ky);
@@ -429,6 +434,8 @@ static int build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu)
     if (!finite4(L->snn, 2 * half) || !finite4(L->sxx, 2 * half) || !finite4(L->syy, 2 * half)
         || !finite4(L->sxy, 2 * half))
         return RR_ERR_RANGE;
+    if (rr_interrupted(stop))
+        return RR_ERR_INTERRUPTED;
     inverse_stencils(L, cv);
     L->hdr[1] = mx;
     L->hdr[2] = my;
@@ -525,11 +532,15 @@ typedef struct {
     int products;
 } solver;
 
-/* u = (dx/G) A_nn * p */
+/* u = (dx/G) A_nn * p; the caller's interrupt hook is polled before every
+ * product, the unit of the solver's work (RR_ERR_INTERRUPTED) */
 static int normal_product(solver *S, const double *p, double *u)
 {
     const double sc = S->pb->grid.dx / S->pb->G;
-    int k, st = rr_conv2d_apply(S->cv, S->L->snn, p, u);
+    int k, st;
+    if (rr_interrupted(S->pb->interrupt))
+        return RR_ERR_INTERRUPTED;
+    st = rr_conv2d_apply(S->cv, S->L->snn, p, u);
     for (k = 0; k < S->L->n; k++)
         u[k] *= sc;
     S->products++;
@@ -708,10 +719,12 @@ static int solve_normal(solver *S, rr_exact_result *res)
             converged = 1;
             break;
         }
-        /* Polak-Ribiere, reset to steepest descent after a change of C */
+        /* Polak-Ribiere, reset to steepest descent after a change of C; a
+         * restart never reads d (what the workspace holds from another
+         * case, a NaN of a failed one, would survive 0 d) */
         beta = restart ? 0.0 : fmax(0.0, (rz - rzold) / rz_old);
         for (k = 0; k < n; k++) {
-            d[k] = in[k] != OUTSIDE ? z[k] + beta * d[k] : 0.0;
+            d[k] = in[k] == OUTSIDE ? 0.0 : restart ? z[k] : z[k] + beta * d[k];
             rold[k] = r[k];
             dsum += d[k];
         }
@@ -805,7 +818,10 @@ static int tang_product_g(solver *S, const double *p, double *out)
 {
     layout *L = S->L;
     const int n = L->n;
-    int st = rr_conv2d_apply2(S->cv, L->sxx, L->sxy, L->sxy, L->syy, p, p + n, out, out + n);
+    int st;
+    if (rr_interrupted(S->pb->interrupt))
+        return RR_ERR_INTERRUPTED;
+    st = rr_conv2d_apply2(S->cv, L->sxx, L->sxy, L->sxy, L->syy, p, p + n, out, out + n);
     S->products++;
     return st < 0 ? RR_ERR_RANGE : st;
 }
@@ -1479,7 +1495,7 @@ int rr_exact_solve(const rr_exact_problem *pb, double *work, size_t work_len,
     if (st == RR_OK && rr_conv2d_spectrum_len(&cv) > spectrum_len(mx, pb->grid.my))
         st = RR_ERR_WORKSPACE;
     if (st == RR_OK)
-        st = build_spectra(&L, &cv, pb->grid.dy / pb->grid.dx, pb->nu);
+        st = build_spectra(&L, &cv, pb->grid.dy / pb->grid.dx, pb->nu, pb->interrupt);
     if (st < 0) {
         field_nan(pb, field);
         return st;

@@ -32,12 +32,15 @@
  * largest grid used), zero-filled before its first use: the solver keeps
  * the kernel spectra of the last grid shape and Poisson ratio there and
  * reuses them for the next case of the same shape (a batch of cases with
- * the same a/b and grid builds them once).  One workspace per thread.
+ * the same a/b and grid builds them once).  Nothing else a case leaves
+ * there (its iterates, a failed case's NaN) reaches the next: a case gives
+ * the doubles it gives on a fresh workspace.  One workspace per thread.
  */
 #ifndef RR_EXACT_H
 #define RR_EXACT_H
 
 #include <stddef.h>
+#include "util/rr_common.h"
 #include "contact/rr_creep_opts.h"
 
 /* Largest mx, my accepted. */
@@ -67,6 +70,8 @@ typedef struct {
                             reciprocity C23 = C32; in [-1, 1] */
     double tol;          /* relative tolerance, in [1e-14, 0.1] */
     int maxit;           /* cap on FFT products of each problem, >= 1 */
+    const rr_interrupt *interrupt;  /* NULL, or the caller's hook, polled before every
+                            FFT product and kernel transform (rr_common.h) */
 } rr_exact_problem;
 
 typedef struct {
@@ -113,8 +118,8 @@ size_t rr_exact_workspace_len(int mx, int my);
  *   spin_shift), RR_ERR_RANGE (mu N or mu times the mean pressure not a
  *   normal double, sizes so extreme that a result is not finite, or a
  *   load whose displacements drown in the rounding of the gap, so that the
- *   pressure would not carry it to 1e-6), RR_ERR_WORKSPACE, RR_ERR_NULL.
- *   field may be NULL.
+ *   pressure would not carry it to 1e-6), RR_ERR_WORKSPACE, RR_ERR_NULL,
+ *   RR_ERR_INTERRUPTED (pb->interrupt asked to stop).  field may be NULL.
  */
 int rr_exact_solve(const rr_exact_problem *pb, double *work, size_t work_len,
                    rr_exact_result *res, rr_exact_field *field);
@@ -132,7 +137,8 @@ int rr_exact_hertz_grid(double a, double b, int nx, int ny, rr_exact_grid *g);
  * rr_exact_hertz_problem - *pb for the Hertzian case c (its ellipse, load
  * and material; the curvatures from rr_hertz_curvatures) on the grid and
  * with the settings of o, options of the method "exact".  Coulomb
- * friction only: a falling law is RR_ERR_FRICTION.  Status as
+ * friction only: a falling law is RR_ERR_FRICTION; no interrupt hook
+ * (pb->interrupt NULL).  Status as
  * rr_contact_check, rr_friction_check, rr_exact_hertz_grid,
  * rr_hertz_curvatures.
  */

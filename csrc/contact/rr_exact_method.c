@@ -15,6 +15,7 @@ int rr_exact_hertz_problem(const rr_contact_case *c, const rr_friction *fr,
     if (!pb)
         return RR_ERR_NULL;
     pb->h = NULL;
+    pb->interrupt = NULL;
     if (!c || !fr || !o)
         return RR_ERR_NULL;
     st = rr_contact_check(c);
@@ -56,8 +57,9 @@ static size_t exact_workspace(const rr_creep_opts *o)
                                   (int)o->v[RR_EXACT_NY] + 2 * RR_EXACT_MARGIN);
 }
 
-static int exact_forces(const rr_contact_case *c, const rr_friction *fr,
-                        const rr_creep_opts *o, double *work, rr_forces *out)
+static int exact_forces_interruptible(const rr_contact_case *c, const rr_friction *fr,
+                                      const rr_creep_opts *o, double *work,
+                                      const rr_interrupt *stop, rr_forces *out)
 {
     rr_exact_problem pb;
     rr_exact_result res;
@@ -66,6 +68,7 @@ static int exact_forces(const rr_contact_case *c, const rr_friction *fr,
     if (!out)
         return RR_ERR_NULL;
     st = rr_exact_hertz_problem(c, fr, o, &pb);
+    pb.interrupt = stop;
     if (st == RR_OK)
         st = rr_exact_solve(&pb, work, exact_workspace(o), &res, NULL);
     if (st < 0) {
@@ -76,6 +79,12 @@ static int exact_forces(const rr_contact_case *c, const rr_friction *fr,
     out->fy = res.fy;
     out->mz = res.mz;
     return rr_forces_checked(st, out);
+}
+
+static int exact_forces(const rr_contact_case *c, const rr_friction *fr,
+                        const rr_creep_opts *o, double *work, rr_forces *out)
+{
+    return exact_forces_interruptible(c, fr, o, work, NULL, out);
 }
 
 static const rr_creep_option exact_opts[] = {
@@ -97,5 +106,5 @@ const rr_method_desc rr_method_exact = {
     "Kalker's exact theory (CONTACT's discretisation: steady rolling on the half-space, "
     "Coulomb friction), FFT-accelerated",
     5, exact_opts, 1, NULL, NULL, exact_cost, rr_method_unit_slope, exact_workspace,
-    exact_forces, NULL, NULL, 1
+    exact_forces, NULL, NULL, 1, exact_forces_interruptible
 };

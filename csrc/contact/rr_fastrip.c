@@ -385,5 +385,5 @@ const rr_method_desc rr_method_fastrip = {
     "FaStrip (Sichani, Enblom and Berg 2016) as CONTACT's modified FaStrip: strip theory "
     "per row, FASTSIM's slip directions",
     7, fastrip_opts, 1, NULL, NULL, fastrip_cost, rr_method_unit_slope, rr_method_no_workspace,
-    fastrip_forces, NULL, NULL, 1
+    fastrip_forces, NULL, NULL, 1, NULL
 };

@@ -679,7 +679,7 @@ static void fastsim_shape(const rr_creep_opts *o, int *rows, int *cols)
 
 #define FASTSIM_ENTRIES                                                          \
     fastsim_cost, rr_method_unit_slope, rr_method_no_workspace, fastsim_forces, \
-        fastsim_shape, rr_fastsim, 0
+        fastsim_shape, rr_fastsim, 0, NULL
 
 const rr_method_desc rr_method_fastsim = {
     "fastsim", "FASTSIM, Kalker 1982: three flexibilities", 5, fastsim_opts, 1, NULL, NULL,
@@ -698,7 +698,7 @@ const rr_method_desc rr_method_modified_fastsim = {
     "modified FASTSIM (Spiryagin, Polach and Cole 2013): the slope reduced with the creepage",
     8, modified_opts, 1, NULL, NULL,
     fastsim_cost, modified_slope, rr_method_no_workspace, fastsim_forces, fastsim_shape,
-    rr_fastsim, 0
+    rr_fastsim, 0, NULL
 };
 
 /* The descriptor of a FASTSIM variant's number, else NULL. */

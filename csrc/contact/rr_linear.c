@@ -40,5 +40,5 @@ static int linear_forces(const rr_contact_case *c, const rr_friction *fr,
 const rr_method_desc rr_method_linear = {
     "linear", "Kalker's linear theory (no saturation: the forces grow without bound)",
     0, NULL, 0, NULL, NULL, rr_method_unit_cost, rr_method_unit_slope, rr_method_no_workspace,
-    linear_forces, NULL, NULL, 0
+    linear_forces, NULL, NULL, 0, NULL
 };

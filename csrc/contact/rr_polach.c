@@ -104,5 +104,5 @@ static const rr_creep_option polach_opts[] = {
 const rr_method_desc rr_method_polach = {
     "polach", "Polach 1999/2005 with spin: reduction factors 0 < kS <= kA <= 1",
     2, polach_opts, 1, polach_check, "0 < kS <= kA <= 1", rr_method_unit_cost, polach_slope,
-    rr_method_no_workspace, polach_forces, NULL, NULL, 0
+    rr_method_no_workspace, polach_forces, NULL, NULL, 0, NULL
 };

@@ -3,8 +3,8 @@
  * and option, rr_linear, rr_polach, rr_fastsim with and without (parts of)
  * its traction field, and the checks and friction law they share; and the
  * registry: rr_method_count/get/find, rr_creep_opts_default/set/check_at,
- * rr_creep_cost/saturates/slope_scale/workspace_len, rr_creep_forces_work
- * and rr_creep_field.
+ * rr_creep_cost/saturates/slope_scale/workspace_len, rr_creep_forces_work,
+ * rr_creep_forces_interruptible and rr_creep_field.
  *
  * Input: one byte choosing the entry point, then the contact case (semi-
  * axes 0.1 .. 20 mm, load 1 N .. 100 kN, G 1 .. 100 GPa, creepages of
@@ -28,12 +28,23 @@
  * finite and saturates as the descriptor (0 only for the linear theory)
  * for valid options, 0, NaN, 0, 0 else; rr_creep_forces_work with the
  * workspace asked for exactly rr_creep_forces, one double short refused;
+ * rr_creep_forces_interruptible with a hook that never stops exactly
+ * rr_creep_forces_work, with one that stops at its first poll that or
+ * RR_ERR_INTERRUPTED with NaN forces (only a method with the hook's entry);
  * rr_creep_field's arrays of the descriptor's field_shape between canaries,
  * RR_ERR_METHOD for a method without a field, NaN forces on error.
  */
 #include "fuzz.h"
 
 #define MAX_ELEMENTS 32768
+
+/* An interrupt hook that counts its polls; stops at the first where *ctx
+ * holds 1 on entry. */
+static int polled(void *ctx)
+{
+    int *c = ctx;
+    return (*c)++ == 1;
+}
 
 static int contact_invalid(const rr_contact_case *c)
 {
@@ -528,6 +539,26 @@ static void run_registry(fz_in *in, const rr_contact_case *c, const rr_friction 
                 fz_fail("rr_creep_forces_work: a workspace one double short not refused");
             if (st < 0 && (!isnan(f.fx) || !isnan(f.fy) || !isnan(f.mz)))
                 fz_fail("rr_creep_forces_work: error %d but the forces are not NaN", st);
+            /* the interrupt hook: counted from 2 (never stops) or from 1 (stops) */
+            {
+                int q, count;
+                rr_interrupt hook;
+                hook.poll = polled;
+                hook.ctx = &count;
+                for (q = 2; q >= 1; q--) {
+                    count = q;
+                    st2 = rr_creep_forces_interruptible(c, fr, o, work, wl, &hook, &f2);
+                    if (count > q && !(d && d->forces_interruptible))
+                        fz_fail("rr_creep_forces_interruptible: a method without the hook's "
+                                "entry polled it");
+                    if (q == 1 && count > 1
+                        ? st2 != RR_ERR_INTERRUPTED || !isnan(f2.fx) || count != 2
+                        : st2 != st || memcmp(&f, &f2, sizeof f) != 0)
+                        fz_fail("rr_creep_forces_interruptible: status %d (%g, %g, %g) after %d "
+                                "polls, rr_creep_forces_work %d (%g, %g, %g)", st2, f2.fx, f2.fy,
+                                f2.mz, count - q, st, f.fx, f.fy, f.mz);
+                }
+            }
             if (st >= 0 && !(fz_known("extreme", known_extreme(c, fr))
                              || fz_known("blended", known_blended(c, m))
                              || fz_known("polach", m == RR_METHOD_POLACH && known_polach(c)))) {

@@ -8,7 +8,9 @@
  * with noise, two bowls, or any values, edges included) or the Hertzian
  * curvatures, the load, material, friction, creepages, spin shift,
  * tolerance and product cap, valid or not; the workspace exact, one double
- * short or NULL; the fields wanted or not.
+ * short or NULL, zero-filled or full of NaN (as a failed case may leave
+ * it); the fields wanted or not; an interrupt hook that stops at its n-th
+ * poll.
  *
  * Oracles: a documented status; the documented errors for invalid inputs,
  * with NaN results and NaN fields; on success finite results, the normal
@@ -16,11 +18,37 @@
  * bound), every field value finite, |p| <= mu pn per element, the counts
  * consistent with the state map; nothing written past the workspace or a
  * field; a second solve with the same workspace (its cached normal
- * solution and spectra) gives the same doubles.
+ * solution and spectra) gives the same doubles, and so does a solve on a
+ * fresh workspace where the first had one of NaN; the hook: stopped at the
+ * poll it asks (RR_ERR_INTERRUPTED, NaN results), or never polled that
+ * often and the doubles unchanged; after it, the workspace gives the first
+ * solve's status and doubles.
  */
 #include "fuzz.h"
 
 #define MAX_SIDE 14
+
+typedef struct {
+    int polls, stop_at;
+} poll_count;
+
+static int count_polls(void *ctx)
+{
+    poll_count *c = ctx;
+    return ++c->polls >= c->stop_at;
+}
+
+/* st and r as the first solve's st0, r0 (the doubles where st0 >= 0) */
+static void same_solve(const char *what, int st, const rr_exact_result *r, int st0,
+                       const rr_exact_result *r0)
+{
+    if (st != st0 || (st0 >= 0 && (memcmp(&r->fx, &r0->fx, sizeof r->fx) != 0
+                                   || memcmp(&r->fy, &r0->fy, sizeof r->fy) != 0
+                                   || memcmp(&r->mz, &r0->mz, sizeof r->mz) != 0)))
+        fz_fail("rr_exact_solve: %s gave status %d (%.17g, %.17g, %.17g), the first %d "
+                "(%.17g, %.17g, %.17g)", what, st, r->fx, r->fy, r->mz, st0, r0->fx, r0->fy,
+                r0->mz);
+}
 
 static int grid_side(fz_in *in)
 {
@@ -117,8 +145,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rr_exact_result r, r2;
     rr_exact_field f;
     double *h = NULL, *work = NULL;
-    size_t wl = 0, wgive = 0;
-    int st, st2, n = 0, invalid, wmode, want_field;
+    size_t wl = 0, wgive = 0, k;
+    int st, st2, n = 0, invalid, wmode, want_field, nan_work, stop_at;
 
     memset(&pb, 0, sizeof pb);
     memset(&f, 0, sizeof f);
@@ -156,12 +184,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     wmode = fz_choice(&in, 8);            /* 0: one double short, 1: NULL, else exact */
     want_field = n > 0 && fz_choice(&in, 2);
+    nan_work = fz_choice(&in, 4) == 3;    /* 0 where the input has ended: zero-filled */
+    stop_at = fz_choice(&in, 2) ? fz_range(&in, 1, 60) : 0;
     invalid = problem_invalid(&pb) || n == 0;
     fz_note("grid %d x %d, d %.17g x %.17g at (%.17g, %.17g), h %s, A %.17g B %.17g, N %.17g, "
             "G %.17g nu %.17g mu %.17g, c (%.17g, %.17g, %.17g), shift %.17g tol %.17g maxit %d, "
-            "work mode %d, field %d", pb.grid.mx, pb.grid.my, pb.grid.dx, pb.grid.dy,
+            "work mode %d, field %d, NaN work %d, stop at %d", pb.grid.mx, pb.grid.my, pb.grid.dx, pb.grid.dy,
             pb.grid.x0, pb.grid.y0, pb.h ? "given" : "Hertz", pb.A, pb.B, pb.N, pb.G, pb.nu,
-            pb.mu, pb.cx, pb.cy, pb.cphi, pb.spin_shift, pb.tol, pb.maxit, wmode, want_field);
+            pb.mu, pb.cx, pb.cy, pb.cphi, pb.spin_shift, pb.tol, pb.maxit, wmode, want_field,
+            nan_work, stop_at);
     if (n == 0) {
         /* a grid outside the sizes this target allocates: only refusal is allowed */
         double w1[4];
@@ -177,7 +208,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     wgive = wmode == 0 ? wl - 1 : wl;
     work = wmode == 1 ? NULL : fz_guarded(wl * sizeof *work);
     if (work)
-        memset(work, 0, wl * sizeof *work);
+        for (k = 0; k < wl; k++)
+            work[k] = nan_work ? NAN : 0.0;
     if (want_field) {
         f.pn = fz_guarded((size_t)n * sizeof(double));
         f.px = fz_guarded((size_t)n * sizeof(double));
@@ -220,11 +252,38 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (st >= 0) {
         /* again, with the workspace as the first solve left it */
         st2 = rr_exact_solve(&pb, work, wgive, &r2, NULL);
-        if (st2 != st || memcmp(&r.fx, &r2.fx, sizeof r.fx) != 0
-            || memcmp(&r.fy, &r2.fy, sizeof r.fy) != 0 || memcmp(&r.mz, &r2.mz, sizeof r.mz) != 0)
-            fz_fail("rr_exact_solve: a second solve gave status %d (%.17g, %.17g, %.17g), the "
-                    "first %d (%.17g, %.17g, %.17g)", st2, r2.fx, r2.fy, r2.mz, st, r.fx, r.fy,
-                    r.mz);
+        same_solve("a second solve", st2, &r2, st, &r);
+    }
+    if (work && wmode > 1) {
+        if (nan_work) {
+            /* what a case of NaN gave, a fresh workspace gives */
+            double *fresh = fz_alloc(wl * sizeof *fresh);
+            memset(fresh, 0, wl * sizeof *fresh);
+            st2 = rr_exact_solve(&pb, fresh, wl, &r2, NULL);
+            same_solve("a fresh workspace (the first had NaN)", st2, &r2, st, &r);
+            free(fresh);
+        }
+        if (stop_at > 0) {
+            poll_count c = {0, 0};
+            rr_interrupt hook;
+            rr_exact_problem p3 = pb;
+            c.stop_at = stop_at;
+            hook.poll = count_polls;
+            hook.ctx = &c;
+            p3.interrupt = &hook;
+            st2 = rr_exact_solve(&p3, work, wgive, &r2, NULL);
+            fz_status("rr_exact_solve", st2);
+            if (c.polls > stop_at)
+                fz_fail("rr_exact_solve: polled %d times after the hook stopped it at %d",
+                        c.polls, stop_at);
+            if (c.polls == stop_at && (st2 != RR_ERR_INTERRUPTED || !isnan(r2.fx)))
+                fz_fail("rr_exact_solve: the hook stopped it, status %d, fx %.17g", st2, r2.fx);
+            if (c.polls < stop_at)
+                same_solve("a solve with a hook that did not stop it", st2, &r2, st, &r);
+            /* and the workspace after the interrupted solve */
+            st2 = rr_exact_solve(&pb, work, wgive, &r2, NULL);
+            same_solve("a solve after an interrupted one", st2, &r2, st, &r);
+        }
     }
     free(h);
     fz_guard_free(work);

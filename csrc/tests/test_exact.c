@@ -3,7 +3,9 @@
  * normal problem against Hertz's closed form (approach and peak pressure
  * to 0.2 %, the discretisation error at 15 elements across), full sliding
  * (|F| = mu N to 1e-6), a creepage-free case (no traction at all), the
- * workspace's cached normal solution giving a fresh solve's doubles, the
+ * workspace's cached normal solution giving a fresh solve's doubles, a
+ * workspace of NaN (as a failed case may leave it) giving them too, the
+ * interrupt hook (polled, never changing a double, stopping at once), the
  * field's sums, the steady-rolling equations checked by direct sums (no
  * FFT), and every documented error.
  */
@@ -13,6 +15,20 @@
 #include "contact/rr_exact.h"
 #include "contact/rr_hertz.h"
 #include "contact/rr_influence.h"
+#include "contact/rr_creep.h"
+
+/* An interrupt hook that counts its polls and asks to stop at poll number
+ * stop_at (0: never). */
+typedef struct {
+    int polls, stop_at;
+} counter;
+
+static int count_polls(void *ctx)
+{
+    counter *c = ctx;
+    c->polls++;
+    return c->stop_at > 0 && c->polls >= c->stop_at;
+}
 
 static rr_exact_problem hertz_case(double a, double b, int n)
 {
@@ -200,6 +216,105 @@ int main(void)
                                            : "steady equations by direct sums, 9 across");
             free(w2);
         }
+    }
+    /* a workspace as any other case may leave it (NaN everywhere: a failed
+     * one; the caches' tags then match nothing) gives a fresh workspace's
+     * doubles: no start, search direction or scratch value of another
+     * case reaches this one (a NaN left in NormCG's direction once failed
+     * every later case of a batch) */
+    {
+        const int sizes[2][2] = {{5, 5}, {15, 9}};
+        int q;
+        for (q = 0; q < 2; q++) {
+            rr_exact_problem p2 = hertz_case(0.005, 0.003, sizes[q][0]);
+            size_t l2, i;
+            double *w1, *w2;
+            rr_exact_hertz_grid(0.005, 0.003, sizes[q][0], sizes[q][1], &p2.grid);
+            l2 = rr_exact_workspace_len(p2.grid.mx, p2.grid.my);
+            w1 = calloc(l2, sizeof *w1);
+            w2 = malloc(l2 * sizeof *w2);
+            for (i = 0; i < l2; i++)
+                w2[i] = NAN;
+            p2.cx = 3e-4;
+            p2.cphi = 0.6;
+            CHECK_STATUS(rr_exact_solve(&p2, w1, l2, &r, NULL), RR_OK, "fresh workspace");
+            CHECK_STATUS(rr_exact_solve(&p2, w2, l2, &r2, NULL), RR_OK, "workspace of NaN");
+            CHECK(memcmp(&r.fx, &r2.fx, sizeof r.fx) == 0 && memcmp(&r.fy, &r2.fy, sizeof r.fy) == 0
+                  && memcmp(&r.mz, &r2.mz, sizeof r.mz) == 0
+                  && r.normal_products == r2.normal_products
+                  && r.tang_products == r2.tang_products,
+                  "a workspace of NaN: a fresh workspace's doubles");
+            free(w1);
+            free(w2);
+        }
+    }
+    /* the interrupt hook: polled before every product and kernel transform;
+     * one that never stops leaves the doubles as they are, one that stops
+     * gives RR_ERR_INTERRUPTED with NaN at once, and leaves nothing in the
+     * workspace that a later case would take (its caches are not kept) */
+    {
+        rr_exact_problem p2 = hertz_case(0.005, 0.003, 15);
+        const size_t l2 = rr_exact_workspace_len(p2.grid.mx, p2.grid.my);
+        double *w1 = calloc(l2, sizeof *w1), *w2 = calloc(l2, sizeof *w2);
+        counter c = {0, 0};
+        rr_interrupt hook;
+        int q;
+        hook.poll = count_polls;
+        hook.ctx = &c;
+        p2.cx = 3e-4;
+        p2.cphi = 0.6;
+        CHECK_STATUS(rr_exact_solve(&p2, w1, l2, &r, NULL), RR_OK, "no hook");
+        p2.interrupt = &hook;
+        CHECK_STATUS(rr_exact_solve(&p2, w2, l2, &r2, NULL), RR_OK, "a hook that never stops");
+        CHECK(memcmp(&r.fx, &r2.fx, sizeof r.fx) == 0 && memcmp(&r.mz, &r2.mz, sizeof r.mz) == 0,
+              "a hook that never stops: the same doubles");
+        CHECK(c.polls >= r2.normal_products + r2.tang_products + 3,
+              "polled before every product and the kernels' transforms");
+        for (q = 1; q <= 12; q += 11) {
+            memset(w2, 0, l2 * sizeof *w2);
+            c.polls = 0;
+            c.stop_at = q;        /* 1: while the kernels are built; 12: in NormCG */
+            CHECK_STATUS(rr_exact_solve(&p2, w2, l2, &r2, &f), RR_ERR_INTERRUPTED, "interrupted");
+            CHECK(c.polls == q && isnan(r2.fx) && isnan(r2.fn) && isnan(f.px[0]),
+                  "no poll after the stop; NaN results and field");
+            c.stop_at = 0;
+            CHECK_STATUS(rr_exact_solve(&p2, w2, l2, &r2, NULL), RR_OK, "after an interrupt");
+            CHECK(memcmp(&r.fx, &r2.fx, sizeof r.fx) == 0
+                  && memcmp(&r.mz, &r2.mz, sizeof r.mz) == 0,
+                  "after an interrupt: a fresh workspace's doubles");
+        }
+        /* through the registry: the exact method polls, the others ignore it */
+        {
+            rr_contact_case cc;
+            rr_friction fr = {0.3, 1.0, 0.0};
+            rr_creep_opts o;
+            rr_forces fo;
+            size_t lw;
+            double *wk;
+            memset(&cc, 0, sizeof cc);
+            cc.cx = 1e-3;
+            cc.a = 0.006;
+            cc.b = 0.004;
+            cc.N = 5e4;
+            cc.G = 8.2e10;
+            cc.nu = 0.28;
+            rr_creep_opts_default(&o, rr_method_find("exact"));
+            lw = rr_creep_workspace_len(&o);
+            wk = calloc(lw, sizeof *wk);
+            c.polls = 0;
+            c.stop_at = 5;
+            CHECK_STATUS(rr_creep_forces_interruptible(&cc, &fr, &o, wk, lw, &hook, &fo),
+                         RR_ERR_INTERRUPTED, "the exact method interrupted");
+            CHECK(isnan(fo.fx) && c.polls == 5, "NaN forces, no poll after the stop");
+            rr_creep_opts_default(&o, rr_method_find("fastsim"));
+            c.polls = 0;
+            CHECK_STATUS(rr_creep_forces_interruptible(&cc, &fr, &o, NULL, 0, &hook, &fo), RR_OK,
+                         "FASTSIM takes no hook");
+            CHECK(c.polls == 0 && isfinite(fo.fx), "never polled");
+            free(wk);
+        }
+        free(w1);
+        free(w2);
     }
     CHECK(rr_exact_workspace_len(0, 5) == 0 && rr_exact_workspace_len(5, RR_EXACT_MAX_GRID + 1) == 0,
           "no workspace for bad sizes");

@@ -43,17 +43,33 @@ enum rr_status {
     RR_ERR_TABLE = -14,         /* outside a table: a/b beyond its range, nu not its own */
     RR_ERR_SEQUENCE = -15,      /* a call out of its order (the rig's command before its
                                    reading, or a second reading in one sample) */
-    RR_ERR_CONTROLLER = -16     /* a controller of the caller's failed (it raised, or gave
+    RR_ERR_CONTROLLER = -16,    /* a controller of the caller's failed (it raised, or gave
                                    what is not a command): set by the loop that calls it */
+    RR_ERR_INTERRUPTED = -17    /* stopped by the caller's interrupt hook (rr_interrupt) */
 };
 
-#define RR_STATUS_MIN (-16)
+#define RR_STATUS_MIN (-17)
 #define RR_STATUS_MAX 1
 
 /* Message of a status code; a fixed string, never NULL. */
 const char *rr_status_message(int status);
 
 #define RR_PI 3.14159265358979323846
+
+/* The caller's interrupt hook of a computation that may take seconds (the
+ * exact theory's solve): poll(ctx) is called between its steps, and a
+ * nonzero return stops it with RR_ERR_INTERRUPTED (outputs NaN).  poll must
+ * not touch the computation's own arguments; a NULL hook or poll: never. */
+typedef struct {
+    int (*poll)(void *ctx);
+    void *ctx;
+} rr_interrupt;
+
+/* 1 where the hook i asks to stop. */
+static inline int rr_interrupted(const rr_interrupt *i)
+{
+    return i && i->poll && i->poll(i->ctx) != 0;
+}
 
 /* 1 if v[0..n-1] are all finite.  0 * x is NaN exactly when x is NaN or
  * infinite, and a NaN survives any sum: one test at the end instead of a
