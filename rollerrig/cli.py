@@ -32,7 +32,7 @@ class _Refused(Exception):
 
 class _Parser(argparse.ArgumentParser):
     """argparse's parser whose errors are one line "<prog>: <message>",
-    exit status 2, without the usage block (main prints it)."""
+    exit status 2, without the usage block (main prints the line)."""
 
     def error(self, message):
         raise _Refused(f"{self.prog}: {message}")
