@@ -185,6 +185,18 @@ def _nu(text):
     return value
 
 
+def _pair_nx(text):
+    """--nx: the coarser grid of the Richardson pair; the finer one, 2 nx,
+    within the exact solver's range (the registry's), checked before the build."""
+    from ._binding import METHODS
+    most = METHODS["exact"].options["nx"].hi // 2
+    value = _positive_int(text)
+    if value > most:
+        raise argparse.ArgumentTypeError(f"must be an integer from 1 to {most} (the finer grid "
+                                         f"of the pair, 2 nx, at most {2 * most}), got {text!r}")
+    return value
+
+
 def _dask_client(address):
     """A client of the Dask scheduler at `address`, or _Refused naming it:
     reached first by a bare connection (within dask's connect timeout,
@@ -317,7 +329,7 @@ def build_parser():
                    help="nodes along log(a/b), alpha, theta, u (default the shipped "
                    "table's, 21,13,23,21)")
     p.add_argument("--nu", type=_nu, default=0.28, help="Poisson's ratio (default 0.28)")
-    p.add_argument("--nx", type=_positive_int, default=27, help="elements across of the "
+    p.add_argument("--nx", type=_pair_nx, default=27, help="elements across of the "
                    "coarser grid of the Richardson pair (default 27: 27 and 54)")
     p.add_argument("--workers", type=_positive_int, help="threads (default: all cores)")
     p.add_argument("--dask", metavar="ADDRESS", help="build on the Dask scheduler at ADDRESS")

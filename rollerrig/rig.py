@@ -1326,7 +1326,8 @@ def replay(res, *, method=None, nx=None, ny=None, **creep):
 
 
 def write_defaults(path=DEFAULTS_PATH):
-    """Rewrite rig_default.toml from the C declaration (defaults_toml)."""
-    with open(path, "w", encoding="utf-8") as fh:
-        fh.write(defaults_toml())
-    return path
+    """Rewrite rig_default.toml from the C declaration (defaults_toml), as
+    every file is written (rollerrig._files.write_file)."""
+    from ._files import write_file
+    text = defaults_toml()
+    return write_file(path, lambda fh: fh.write(text), what="write_defaults: path")

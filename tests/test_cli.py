@@ -217,6 +217,9 @@ def test_methods_offered_are_the_rigs_from_the_registry(capsys):
     (["exact-table", "t.c", "--shape", "3,4,4,5"],
      "rollerrig exact-table: argument --shape: four node counts >= 4 like 17,11,19,21, "
      "got '3,4,4,5'"),
+    (["exact-table", "t.c", "--nx", "511"],
+     "rollerrig exact-table: argument --nx: must be an integer from 1 to 510 (the finer grid "
+     "of the pair, 2 nx, at most 1020), got '511'"),
     (["exact-table", "t.c", "--nu", "0.7"],
      "rollerrig exact-table: argument --nu: Poisson's ratio must be in [0, 0.5], got '0.7'"),
     (["--bogus"], "rollerrig: unrecognized arguments: --bogus"),

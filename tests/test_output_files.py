@@ -46,6 +46,8 @@ WRITERS = {
     "ExactTable.write_c": ("t.c", lambda res, p: TABLE.write_c(p), "ExactTable.write_c: path"),
     "Profile.write_text": ("w.txt", lambda res, p: Profile.s1002().write_text(p),
                            "Profile.write_text: path"),
+    "write_defaults": ("d.toml", lambda res, p: rr.rig.write_defaults(p),
+                       "write_defaults: path"),
     # CC is missing in these tests: an FMU the checks let through stops before compiling
     "build_fmu": ("u.fmu", lambda res, p: fmu.build_fmu(p), "rollerrig fmu:"),
 }

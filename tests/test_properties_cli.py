@@ -183,7 +183,7 @@ table_args = st.fixed_dictionaries(dict(
     npz=mostly([None] + GOOD_PATHS, BAD_PATHS, share=60),
     nu=_opt("--nu", ["0.28", "0.3"], ["0.7", "-1", "nan", "x"]),
     shape=_opt("--shape", ["4,4,4,5"], ["3,4,4,5", "a", "4,4,4"]),
-    nx=_opt("--nx", ["3"], ["0", "x"]),
+    nx=_opt("--nx", ["3"], ["0", "x", "511"]),
 ))
 
 #: now and then an option no command has
