@@ -40,11 +40,30 @@ class _Parser(argparse.ArgumentParser):
 
 def _prepare_out(path):
     """Create the output folder (and prove it is a directory) before
-    anything is run."""
+    anything is run; returns the outermost folder it made (None if it was
+    there), for _unmake."""
+    made, up = None, os.path.abspath(path)
+    while not os.path.lexists(up):
+        made, up = up, os.path.dirname(up)
     try:
         make_folder(path, what="--out")
     except OutputPathError as e:
         raise _Refused(str(e)) from None
+    return made
+
+
+def _unmake(path, made):
+    """Remove the folders _prepare_out made for a run that was refused
+    (only while empty): bad input leaves nothing behind."""
+    if made is None:
+        return
+    folder = os.path.abspath(path)
+    while os.path.commonpath([folder, made]) == made:
+        try:
+            os.rmdir(folder)
+        except OSError:
+            return
+        folder = os.path.dirname(folder)
 
 
 def _checked_output(path, what, suffix=None):
@@ -85,12 +104,14 @@ def _simulate(args):
     no_figures = _figures()
     names = ["rig_history.csv"] + ([] if no_figures else ["rig_creepage.png", "rig_force.png"])
     paths = [os.path.join(args.out, name) for name in names]
+    made = None
     try:
         params = _load_scenario(args.scenario, args.method)
-        _prepare_out(args.out)
+        made = _prepare_out(args.out)
         for path in paths:
             _checked_output(path, "--out")
     except _Refused as e:
+        _unmake(args.out, made)
         print(f"{PROG}: {e}", file=sys.stderr)
         return 2
     kw = {"method": args.method} if args.method else {}
@@ -105,6 +126,7 @@ def _simulate(args):
         except RollerRigError as e:
             error = e
     if error is not None:                  # nothing was run: its warnings are moot
+        _unmake(args.out, made)
         print(f"{PROG}: {_as_option(error)}", file=sys.stderr)
         return 2
     for w in caught:

@@ -185,9 +185,11 @@ def test_an_output_file_that_is_a_fifo_is_refused_before_the_run(tmp_path, capsy
      "--record-every must be an integer from 1 to the number of samples (100), got 1000"),
 ])
 def test_errors_after_parsing_name_the_option(argv, option, tmp_path, capsys):
-    code, out, err = run_cli(capsys, *argv, "--out", str(tmp_path))
+    """... and bad input leaves nothing behind, not even the --out folder."""
+    code, out, err = run_cli(capsys, *argv, "--out", str(tmp_path / "new" / "out"))
     assert code == 2 and "simulated" not in out
     assert one_line(err).startswith(f"rollerrig simulate: {option}"), err
+    assert os.listdir(tmp_path) == []
 
 
 def test_methods_offered_are_the_rigs_from_the_registry(capsys):

@@ -6,9 +6,9 @@ file), each in a fresh temporary folder.
 
 It holds: the exit status is 0, 1 or 2; no traceback; on 2 one message whose
 line names the option or a path the command was given (a scenario's several
-problems follow it, indented: one message listing every problem); nothing is
-written outside the outputs the command was given (--out's files, OUT.fmu,
-OUT.c and --npz), and no temporary is left.
+problems follow it, indented: one message listing every problem) and nothing
+written at all; nothing is ever written outside the outputs the command was
+given (--out's files, OUT.fmu, OUT.c and --npz), and no temporary is left.
 
 Kept fast: runs of at most 0.2 s; no FMU is compiled ($CC points nowhere:
 an FMU that passes every check stops at the compiler); the exact table's
@@ -139,14 +139,18 @@ def _make(root, kind, name, suffix):
 
 
 def _snapshot(root):
-    """Every path under root: (type, size, mtime, inode), links not followed."""
+    """Every path under root: (type, inode, and for what is not a folder its
+    size and mtime), links not followed.  A folder's own times change when
+    a file is made and removed in it (check_output's probe): its entries
+    are what counts."""
     seen = {}
     for folder, dirs, files in os.walk(root):
         for name in dirs + files:
             path = os.path.join(folder, name)
             s = os.lstat(path)
-            seen[os.path.relpath(path, root)] = (stat.S_IFMT(s.st_mode), s.st_size,
-                                                 s.st_mtime_ns, s.st_ino)
+            kind = stat.S_IFMT(s.st_mode)
+            seen[os.path.relpath(path, root)] = (kind, s.st_ino) + (
+                () if kind == stat.S_IFDIR else (s.st_size, s.st_mtime_ns))
     return seen
 
 
@@ -319,9 +323,11 @@ def _check(name, make_argv):
         assert lines and lines[0].startswith("rollerrig"), (argv, err)
         assert _named(lines[0], argv), (argv, err)
         assert all(line.startswith("  ") for line in lines[1:]), (argv, err)
-    # nothing written but the outputs given (and the folders leading to --out)
+    # nothing written but the outputs given (and the folders leading to --out),
+    # and nothing at all when the command was refused
     allowed_rel = {os.path.relpath(p, root) for p in allowed if p}
     changed = {p for p in set(before) | set(after) if before.get(p) != after.get(p)}
+    assert code != 2 or not changed, (argv, changed, err)
     for path in changed:
         assert path in after, (argv, path, "removed")
         kind = stat.S_IFMT(after[path][0])
