@@ -266,15 +266,17 @@ def _exact_table(args):
     finally:
         if client is not None:
             client.close()
-    try:
-        if args.npz is not None:                     # the lossless copy first
-            table.save(args.npz)
-        table.write_c(args.out)
-    except OutputPathError as e:           # checked again: something was put there meanwhile
-        print(f"{name}: {e.path}: {e.reason}", file=sys.stderr)
-        return 2
-    except OSError as e:
-        print(f"{name}: {e.filename}: cannot write it: {e.strerror or e}", file=sys.stderr)
+    failed = []                            # each output tried: one lost keeps the other
+    for write, path in ((table.save, args.npz), (table.write_c, args.out)):
+        try:
+            if path is not None:
+                write(path)
+        except OutputPathError as e:       # checked again: something was put there meanwhile
+            failed.append(f"{e.path}: {e.reason}")
+        except OSError as e:
+            failed.append(f"{e.filename or path}: cannot write it: {e.strerror or e}")
+    if failed:
+        print(f"{name}: {'; '.join(failed)}", file=sys.stderr)
         return 2
     print(f"wrote {args.out}: {'x'.join(map(str, table.shape))} nodes, nu = {table.nu}, "
           f"exact theory from {table.nx} and {2 * table.nx} elements across"

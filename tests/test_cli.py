@@ -324,23 +324,44 @@ def test_exact_table_checks_its_outputs_before_the_build(tmp_path, capsys, no_bu
     assert sorted(os.listdir(tmp_path)) == ["afile", "fifo.npz"]
 
 
+def _small_table():
+    import numpy as np
+    from rollerrig.exact_table import ExactTable
+    return ExactTable((0.0,) * 4, (1.0,) * 4, np.zeros((4, 4, 4, 5, 3), np.float32), 0.28,
+                      1.0, 3)
+
+
+def _build_planting(plant):
+    """A build that puts something at an output meanwhile."""
+    def build(*args, **kwargs):
+        plant()
+        return _small_table()
+    return build
+
+
 def test_exact_table_writes_the_npz_first_and_names_a_path_taken_meanwhile(tmp_path, capsys,
                                                                           monkeypatch):
     """What is put at OUT during the build is not replaced; the .npz, written
     first, keeps the table."""
-    import numpy as np
     from rollerrig.exact_table import ExactTable
     out, npz = tmp_path / "t.c", tmp_path / "t.npz"
-
-    def build(*args, **kwargs):
-        out.mkdir()                                  # planted during the build
-        return ExactTable((0.0,) * 4, (1.0,) * 4, np.zeros((4, 4, 4, 5, 3), np.float32),
-                          0.28, 1.0, 3)
-    monkeypatch.setattr("rollerrig.exact_table.build_exact_table", build)
+    monkeypatch.setattr("rollerrig.exact_table.build_exact_table", _build_planting(out.mkdir))
     assert cli.main(["exact-table", str(out), "--npz", str(npz), "--quiet"]) == 2
     assert one_line(capsys.readouterr().err) == (f"rollerrig exact-table: {out}: is a "
                                                  f"directory; give the name of a file in it")
     assert ExactTable.load(npz).shape == (4, 4, 4, 5) and os.listdir(out) == []
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no FIFOs here")
+def test_exact_table_a_lost_npz_keeps_the_c_file(tmp_path, capsys, monkeypatch):
+    out, npz = tmp_path / "t.c", tmp_path / "t.npz"
+    monkeypatch.setattr("rollerrig.exact_table.build_exact_table",
+                        _build_planting(lambda: os.mkfifo(npz)))
+    assert cli.main(["exact-table", str(out), "--npz", str(npz), "--quiet"]) == 2
+    assert one_line(capsys.readouterr().err) == (f"rollerrig exact-table: {npz}: is a FIFO, not "
+                                                 f"a regular file; give a regular file or a new "
+                                                 f"path")
+    assert "const rr_exact_table rr_exact_table_builtin" in out.read_text()
 
 
 def test_exact_table_an_unreachable_scheduler_is_one_line(tmp_path, capsys, no_build):
