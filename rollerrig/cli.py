@@ -1,70 +1,117 @@
-"""Command-line entry point: ``rollerrig simulate``, ``rollerrig fmu`` (also ``python -m
-rollerrig``).
+"""Command-line entry point: ``rollerrig simulate``, ``rollerrig fmu``,
+``rollerrig exact-table`` (also ``python -m rollerrig``).
 
 Exit status: 0 the run finished (its warnings, if any, on stderr), 1 the
-run stopped early (its outputs are still written), 2 bad input (a message on
-stderr naming the option, no traceback, nothing run).
+run stopped early (its outputs are still written), 2 bad input (one message
+on stderr naming the option or the path, no traceback, nothing run or
+written).  Every output path is checked before the work
+(rollerrig._files.check_output): a regular file or a new path only, never
+through a symbolic link, never a directory, a device or a FIFO.
 """
 import argparse
 import os
+import re
 import sys
-import tempfile
 import time
 import warnings
 
+from ._errors import RollerRigError
+from ._files import OutputPathError, check_output, make_folder
 from ._version import __version__
 
 PROG = "rollerrig simulate"
+
+#: simulate's keywords and the options that set them: an error about one names the option
+_OPTION_OF = {"duration": "--duration", "dt": "--dt", "method": "--method",
+              "record_every": "--record-every"}
 
 
 class _Refused(Exception):
     """Bad input: the message for stderr, exit status 2."""
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse's parser whose errors are one line "<prog>: <message>",
+    exit status 2, without the usage block (main prints the line)."""
+
+    def error(self, message):
+        raise _Refused(f"{self.prog}: {message}")
+
+
 def _prepare_out(path):
-    """Create the output folder and prove it is a writable directory (a
-    temporary file made and removed in it), before anything is run."""
-    if os.path.exists(path) and not os.path.isdir(path):
-        raise _Refused(f"--out {path}: not a directory")
+    """Create the output folder (and prove it is a directory) before
+    anything is run; returns the outermost folder it made (None if it was
+    there), for _unmake."""
+    made, up = None, os.path.abspath(path)
+    while not os.path.lexists(up):
+        made, up = up, os.path.dirname(up)
     try:
-        os.makedirs(path, exist_ok=True)
-    except OSError as e:
-        raise _Refused(f"--out {path}: cannot create the folder: {e.strerror or e}") from None
-    if not os.path.isdir(path):
-        raise _Refused(f"--out {path}: not a directory")
-    try:
-        fd, probe = tempfile.mkstemp(dir=path, prefix=".rollerrig-probe-")
-        os.close(fd)
-        os.remove(probe)
-    except OSError as e:
-        raise _Refused(f"--out {path}: cannot write in the folder: {e.strerror or e}") \
-            from None
+        make_folder(path, what="--out")
+    except OutputPathError as e:
+        raise _Refused(str(e)) from None
+    return made
 
 
-def _load_scenario(rig, path):
-    """The scenario file's parameters, checked (every problem at once)."""
+def _unmake(path, made):
+    """Remove the folders _prepare_out made for a run that was refused
+    (only while empty): bad input leaves nothing behind."""
+    if made is None:
+        return
+    folder = os.path.abspath(path)
+    while os.path.commonpath([folder, made]) == made:
+        try:
+            os.rmdir(folder)
+        except OSError:
+            return
+        folder = os.path.dirname(folder)
+
+
+def _checked_output(path, what, suffix=None):
+    try:
+        return check_output(path, what=what, suffix=suffix)
+    except OutputPathError as e:
+        raise _Refused(str(e)) from None
+
+
+def _load_scenario(path, method=None):
+    """The scenario file's parameters, checked as rollerrig.fmu.check_scenario
+    does for both commands: every problem at once, then the rig built from
+    them (with --method if given)."""
+    from .fmu import check_scenario
     if path is None:
         return None
-    source = f"--scenario {path}"
     try:
-        params = rig._read_parameter_file(path)
-    except rig._Problems as p:
-        raise _Refused(str(rig._error(source, p.problems))) from None
-    try:
-        rig.check_parameters(params, source=source)
-    except ValueError as e:                  # RollerRigError
+        return check_scenario(path, source="--scenario", method=method)[0]
+    except RollerRigError as e:
         raise _Refused(str(e)) from None
-    return params
+
+
+def _figures():
+    """None when the figures can be drawn (files only: no window, whatever
+    the environment's default backend), else why not."""
+    from ._optional import require
+    try:
+        require("matplotlib", "rollerrig simulate's figures", "plot").use("Agg")
+    except ImportError as e:
+        return str(e)
+    return None
 
 
 def _simulate(args):
     from . import rig
-    from ._errors import RollerRigError, RollerRigWarning
+    from ._errors import RollerRigWarning
 
+    no_figures = _figures()
+    names = ["rig_history.csv"] + ([] if no_figures else ["rig_creepage.png", "rig_force.png"])
+    paths = [os.path.join(args.out, name) for name in names]
+    made = None
     try:
-        params = _load_scenario(rig, args.scenario)
-        _prepare_out(args.out)
+        params = _load_scenario(args.scenario, args.method)
+        made = _prepare_out(args.out)
+        for path in paths:
+            _checked_output(path, "--out")
     except _Refused as e:
+        _unmake(args.out, made)
         print(f"{PROG}: {e}", file=sys.stderr)
         return 2
     kw = {"method": args.method} if args.method else {}
@@ -78,11 +125,12 @@ def _simulate(args):
                                progress=not args.quiet and sys.stderr.isatty(), **kw)
         except RollerRigError as e:
             error = e
-    for w in caught:
-        print(f"{PROG}: warning: {_unprefixed(w.message)}", file=sys.stderr)
-    if error is not None:
-        print(f"{PROG}: {_unprefixed(error)}", file=sys.stderr)
+    if error is not None:                  # nothing was run: its warnings are moot
+        _unmake(args.out, made)
+        print(f"{PROG}: {_as_option(error)}", file=sys.stderr)
         return 2
+    for w in caught:
+        print(f"{PROG}: warning: {_as_option(w.message)}", file=sys.stderr)
     wall = time.perf_counter() - t0
     run = res.wall["run"]
     print(f"rollerrig {__version__}: {res.duration:g} s simulated in {run:.3f} s "
@@ -93,17 +141,17 @@ def _simulate(args):
     print(res.table())
     written, failure = [], None
     try:
-        written.append(res.to_csv(os.path.join(args.out, "rig_history.csv")))
-        from ._optional import require
-        # files only: no window, whatever the environment's default backend
-        require("matplotlib", "rollerrig simulate's figures", "plot").use("Agg")
-        from .plot import plot_run
-        written += plot_run(res, args.out)
+        written.append(res.to_csv(paths[0]))
+        if not no_figures:
+            from .plot import plot_run
+            written += plot_run(res, args.out)
+    except OutputPathError as e:           # checked again: something was put there meanwhile
+        failure = f"--out {e.path}: {e.reason}"
     except OSError as e:
-        failure = (f"--out {args.out}: cannot write the outputs"
-                   f"{f' ({e.filename})' if e.filename else ''}: {e.strerror or e}")
-    except ImportError as e:
-        print(f"{PROG}: no figures: {e}", file=sys.stderr)
+        failure = (f"--out {e.filename or args.out}: cannot write it: "
+                   f"{e.strerror or e}")
+    if no_figures:
+        print(f"{PROG}: no figures: {no_figures}", file=sys.stderr)
     for path in written:
         print(f"wrote {path}")
     if failure:
@@ -117,11 +165,16 @@ def _simulate(args):
     return 0
 
 
-def _unprefixed(message):
-    """A message of rollerrig.simulate without its "simulate: " (the command
-    line names itself)."""
+def _as_option(message, prefix="simulate: ", options=_OPTION_OF):
+    """A message of rollerrig.simulate as the command line's: without its
+    "simulate: " (the command names itself), the keyword it is about
+    named as the option the user typed (duration -> --duration)."""
     text = str(message)
-    return text[len("simulate: "):] if text.startswith("simulate: ") else text
+    text = text[len(prefix):] if text.startswith(prefix) else text
+    word = re.match(r"\w+", text)
+    if word and word[0] in options:
+        text = options[word[0]] + text[word.end():]
+    return text
 
 
 def _positive_int(text):
@@ -144,59 +197,128 @@ def _shape(text):
     return shape
 
 
+def _nu(text):
+    try:
+        value = float(text)
+    except ValueError:
+        value = None
+    if value is None or not 0.0 <= value <= 0.5:
+        raise argparse.ArgumentTypeError(f"Poisson's ratio must be in [0, 0.5], got {text!r}")
+    return value
+
+
+def _pair_nx(text):
+    """--nx: the coarser grid of the Richardson pair; the finer one, 2 nx,
+    within the exact solver's range (the registry's), checked before the build."""
+    from ._binding import METHODS
+    most = METHODS["exact"].options["nx"].hi // 2
+    value = _positive_int(text)
+    if value > most:
+        raise argparse.ArgumentTypeError(f"must be an integer from 1 to {most} (the finer grid "
+                                         f"of the pair, 2 nx, at most {2 * most}), got {text!r}")
+    return value
+
+
+def _dask_client(address):
+    """A client of the Dask scheduler at `address`, or _Refused naming it:
+    reached first by a bare connection (within dask's connect timeout,
+    distributed.comm.timeouts.connect), so that a scheduler that cannot be
+    reached is one line, not a client's traceback."""
+    try:
+        import asyncio
+        import distributed
+        from distributed.comm import connect
+    except ImportError:
+        raise _Refused(f"--dask {address}: needs dask.distributed "
+                       f'(pip install "rollerrig[distributed]")') from None
+
+    async def reach():
+        comm = await connect(address)
+        await comm.close()
+    try:
+        asyncio.run(reach())
+        return distributed.Client(address)
+    except (OSError, ValueError, TypeError) as e:
+        raise _Refused(f"--dask {address}: cannot reach the scheduler: {e}") from None
+
+
 def _exact_table(args):
-    from ._errors import RollerRigError
     from .exact_table import DEFAULT_SHAPE, build_exact_table
+    name = "rollerrig exact-table"
     client = None
-    if args.dask:
-        try:
-            import distributed
-        except ImportError:
-            print("rollerrig exact-table: --dask needs dask.distributed "
-                  '(pip install "rollerrig[distributed]")', file=sys.stderr)
-            return 2
-        client = distributed.Client(args.dask)
+    try:
+        _checked_output(args.out, "", suffix=".c")
+        if args.npz is not None:
+            _checked_output(args.npz, "--npz", suffix=".npz")
+        if args.dask is not None:
+            client = _dask_client(args.dask)
+    except _Refused as e:
+        print(f"{name}: {e}", file=sys.stderr)
+        return 2
     try:
         table = build_exact_table(args.shape or DEFAULT_SHAPE, nu=args.nu, nx=args.nx,
                                   workers=args.workers, client=client,
                                   progress=not args.quiet)
     except RollerRigError as e:
-        print(f"rollerrig exact-table: {e}", file=sys.stderr)
+        print(f"{name}: {_as_option(e, 'build_exact_table: ', {'nx': '--nx'})}",
+              file=sys.stderr)
         return 2
     finally:
         if client is not None:
             client.close()
-    table.write_c(args.out)
-    if args.npz:
-        table.save(args.npz)
+    failed = []                            # each output tried: one lost keeps the other
+    for write, path in ((table.save, args.npz), (table.write_c, args.out)):
+        try:
+            if path is not None:
+                write(path)
+        except OutputPathError as e:       # checked again: something was put there meanwhile
+            failed.append(f"{e.path}: {e.reason}")
+        except OSError as e:
+            failed.append(f"{e.filename or path}: cannot write it: {e.strerror or e}")
+    if failed:
+        print(f"{name}: {'; '.join(failed)}", file=sys.stderr)
+        return 2
     print(f"wrote {args.out}: {'x'.join(map(str, table.shape))} nodes, nu = {table.nu}, "
-          f"exact theory from {table.nx} and {2 * table.nx} elements across")
+          f"exact theory from {table.nx} and {2 * table.nx} elements across"
+          f"{f'; and {args.npz}' if args.npz is not None else ''}")
     return 0
 
 
 def _fmu(args):
     from .fmu import build_fmu
-    from ._errors import RollerRigError
+    name = "rollerrig fmu"
+    try:
+        _checked_output(args.out, "", suffix=".fmu")
+        _load_scenario(args.scenario)
+    except _Refused as e:
+        print(f"{name}: {e}", file=sys.stderr)
+        return 2
     try:
         build_fmu(args.out, scenario=args.scenario, fmi_version=args.fmi, quiet=False)
-    except RollerRigError as e:
+    except OutputPathError as e:           # checked again: something was put there meanwhile
+        print(f"{name}: {e.path}: {e.reason}", file=sys.stderr)
+        return 2
+    except RollerRigError as e:            # no compiler, a failed compile
         text = str(e)
-        print(text if text.startswith("rollerrig fmu") else f"rollerrig fmu: {text}",
-              file=sys.stderr)
+        print(text if text.startswith(name) else f"{name}: {text}", file=sys.stderr)
         return 2
     except OSError as e:
-        print(f"rollerrig fmu: cannot write {args.out}: {e.strerror or e}", file=sys.stderr)
+        print(f"{name}: {e.filename or args.out}: cannot write it: {e.strerror or e}",
+              file=sys.stderr)
         return 2
     return 0
 
 
 def build_parser():
-    parser = argparse.ArgumentParser(
+    from ._binding import METHODS
+    loop_methods = [name for name, m in METHODS.items() if m.in_loop]   # the rig's
+    parser = _Parser(
         prog="rollerrig",
         description="Real-time simulation of a scaled railway roller rig.",
     )
     parser.add_argument("--version", action="version", version="%(prog)s " + __version__)
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    parser.commands = sub.choices          # name -> the command's parser
     p = sub.add_parser("simulate", help="run the seed paper's braking scenario",
                        description="Run the roller rig: by default the seed paper's scenario "
                        "(roller at 5 m/s, braking under creepage control to 0.04, 0.015, "
@@ -209,8 +331,9 @@ def build_parser():
                    "scenario's duration_s, 20); the scenario's target start times are kept "
                    "when they fall inside it, otherwise scaled to it (with a warning)")
     p.add_argument("--dt", type=float, help="control sample time and step [s] (default 0.004)")
-    p.add_argument("--method", help="creep-force method: fastsim, fastsim_blended, "
-                   "modified_fastsim, polach, linear")
+    p.add_argument("--method", choices=loop_methods, metavar="METHOD",
+                   help=f"creep-force method of the time loop: {', '.join(loop_methods)} "
+                   f"(default the scenario's contact.creep_method)")
     p.add_argument("--record-every", type=_positive_int, default=1, metavar="K",
                    help="record every K-th sample only (long runs: the records are capped "
                    "at 1 GiB)")
@@ -224,16 +347,18 @@ def build_parser():
                        "exact theory (rollerrig/exact_table.py) and write it as C source; "
                        "the shipped one is csrc/contact/rr_exact_table_data.c (reinstall to "
                        "use a new one).  About 40 CPU minutes at the defaults.")
-    p.add_argument("out", help="the C file to write")
+    p.add_argument("out", metavar="OUT.c", help="the C file to write (a new path or a "
+                   "regular file, replaced; checked before the build)")
     p.add_argument("--shape", type=_shape, default=None,
                    help="nodes along log(a/b), alpha, theta, u (default the shipped "
                    "table's, 21,13,23,21)")
-    p.add_argument("--nu", type=float, default=0.28, help="Poisson's ratio (default 0.28)")
-    p.add_argument("--nx", type=_positive_int, default=27, help="elements across of the "
+    p.add_argument("--nu", type=_nu, default=0.28, help="Poisson's ratio (default 0.28)")
+    p.add_argument("--nx", type=_pair_nx, default=27, help="elements across of the "
                    "coarser grid of the Richardson pair (default 27: 27 and 54)")
     p.add_argument("--workers", type=_positive_int, help="threads (default: all cores)")
     p.add_argument("--dask", metavar="ADDRESS", help="build on the Dask scheduler at ADDRESS")
-    p.add_argument("--npz", metavar="FILE", help="also save the table as .npz")
+    p.add_argument("--npz", metavar="FILE.npz", help="also save the table as .npz (written "
+                   "first)")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.set_defaults(func=_exact_table)
     p = sub.add_parser("fmu", help="write an FMI co-simulation unit (FMU) of the rig",
@@ -243,8 +368,8 @@ def build_parser():
                        "compiler ($CC, cc, gcc or clang) and the C sources.  With its default "
                        "inputs it runs the scenario as rollerrig simulate does.  Exit status "
                        "0: written, 2: bad input or no compiler (a message on stderr).")
-    p.add_argument("out", metavar="OUT.fmu", help="the FMU to write (replaced if it exists); "
-                   "its name gives the modelIdentifier")
+    p.add_argument("out", metavar="OUT.fmu", help="the FMU to write: a new path or a regular "
+                   "file, replaced; its name gives the modelIdentifier")
     p.add_argument("--scenario", metavar="TOML", help="parameter file overriding the defaults "
                    "(the layout of rollerrig/data/rig_default.toml): the FMU's start values")
     p.add_argument("--fmi", type=int, choices=(2, 3), default=2,
@@ -254,8 +379,17 @@ def build_parser():
 
 
 def main(argv=None):
+    """Run the command line with `argv` (default sys.argv[1:]); returns the
+    exit status (0, 1 or 2; --help and --version exit through SystemExit)."""
     parser = build_parser()
-    args = parser.parse_args(argv)
+    try:
+        args, extra = parser.parse_known_args(argv)
+        if extra:                          # named by the command's own parser
+            parser.commands.get(args.command, parser).error(
+                f"unrecognized arguments: {' '.join(extra)}")
+    except _Refused as e:
+        print(e, file=sys.stderr)
+        return 2
     func = getattr(args, "func", None)
     if func is None:
         parser.print_help()

@@ -68,8 +68,13 @@ class ExactTable:
         return [np.linspace(lo, hi, n) for lo, hi, n in zip(self.lo, self.hi, self.shape)]
 
     def save(self, path):
-        np.savez_compressed(path, lo=np.array(self.lo), hi=np.array(self.hi),
-                            values=self.values, nu=self.nu, r0=self.r0, nx=self.nx)
+        """The table as .npz at `path` (its name ends in .npz; a new path or
+        a regular file, replaced whole: rollerrig._files.write_file)."""
+        from ._files import write_file
+        write_file(path, lambda fh: np.savez_compressed(
+            fh, lo=np.array(self.lo), hi=np.array(self.hi), values=self.values, nu=self.nu,
+            r0=self.r0, nx=self.nx), what="ExactTable.save: path", binary=True, suffix=".npz")
+        return path
 
     @classmethod
     def load(cls, path):
@@ -79,7 +84,10 @@ class ExactTable:
                        int(z["nx"]))
 
     def write_c(self, path):
-        """The table as C source: the core's built-in table."""
+        """The table as C source, the core's built-in table, at `path` (its
+        name ends in .c; a new path or a regular file, replaced whole:
+        rollerrig._files.write_file)."""
+        from ._files import write_file
         n = self.shape
         flat = self.values.astype(np.float32).ravel()
         lines = [
@@ -112,8 +120,9 @@ class ExactTable:
             "};",
             "",
         ]
-        with open(path, "w") as f:
-            f.write("\n".join(lines))
+        write_file(path, lambda f: f.write("\n".join(lines)), what="ExactTable.write_c: path",
+                   suffix=".c")
+        return path
 
 
 def builtin_table():

@@ -43,6 +43,7 @@ import zipfile
 from pathlib import Path
 
 from ._errors import RollerRigError
+from ._files import check_output, write_file
 from ._version import __version__
 
 __all__ = ["build_fmu", "FmuBuildError", "core_c_dirs", "find_compiler", "model_identifier",
@@ -185,17 +186,29 @@ def _start_config_c(P, source):
     return "\n".join(lines)
 
 
-def _scenario(scenario):
+def check_scenario(scenario, *, source, method=None):
     """(checked parameters, what they come from) of a scenario: None (the
-    defaults), a nested dict or the path of a TOML file."""
+    defaults), a nested dict or the path of a TOML file, checked as simulate
+    checks it: every value (one RollerRigError listing every problem), then
+    the rig built from them with `method` (default their
+    contact.creep_method), so that one it cannot start from (a value that
+    overflows the C rig, a method that does not suit the friction law) is
+    refused before any work.  Messages begin with `source` and the path."""
     from . import rig
     if scenario is None:
         return rig.default_parameters(), "nothing (the defaults)"
-    P = rig._parameters("rollerrig fmu", scenario)
-    # the creep-force method must suit the friction law, as simulate checks
-    rig._creep_options("rollerrig fmu", P, None, None, None, {})
-    what = f"the scenario {Path(scenario).name}" if isinstance(scenario, (str, os.PathLike)) \
-        else "the scenario given"
+    if isinstance(scenario, (str, os.PathLike)):
+        source = f"{source} {os.fspath(scenario)}"
+        try:
+            params = rig._read_parameter_file(scenario)
+        except rig._Problems as p:
+            raise rig._error(source, p.problems) from None
+        what = f"the scenario {Path(scenario).name}"
+    else:
+        params, what = scenario, "the scenario given"
+    P = rig.check_parameters(params, source=source)
+    rig._build(source, P, dt=None, method=method, substeps=None, ode=None, nx=None, ny=None,
+               roller_speed=None, start="rolling", creep={})
     return P, what
 
 
@@ -290,7 +303,10 @@ def _build_description(identifier, files):
 
 def build_fmu(out, scenario=None, fmi_version=2, *, cc=None, jobs=None, cache_dir=None,
               quiet=True):
-    """Write a co-simulation FMU of the rig to `out` (replaced if it exists).
+    """Write a co-simulation FMU of the rig to `out`, a name ending in .fmu:
+    a new path or a regular file, replaced whole (never a symbolic link, a
+    directory, a device or a FIFO; its folder must exist), checked before
+    the compile.
 
     scenario:    None (the default parameters), a nested dict as simulate's
                  params, or the path of a TOML parameter file: the FMU's start
@@ -301,18 +317,15 @@ def build_fmu(out, scenario=None, fmi_version=2, *, cc=None, jobs=None, cache_di
     cache_dir:   a folder where the compiled core is kept between builds
                  (the same compiler, flags and sources: taken from there);
                  default $ROLLERRIG_FMU_CACHE if set, else none
-    Returns the path.  Raises RollerRigError for a bad scenario (every
-    problem named), FmuBuildError (a RollerRigError) without a compiler, on
+    Returns the path.  Raises RollerRigError for a bad output path or a bad
+    scenario (every problem named; one the rig cannot start from, as
+    simulate refuses it), FmuBuildError (a RollerRigError) without a compiler, on
     an unsupported platform or a failed compile.
     """
     if fmi_version not in FMI_VERSIONS:
         raise RollerRigError(f"rollerrig fmu: fmi_version must be 2 or 3, got {fmi_version!r}")
-    out = Path(out)
-    if out.is_dir():
-        raise RollerRigError(f"rollerrig fmu: {out} is a directory; give the FMU's file name "
-                             f"(e.g. rig.fmu)")
-    P, source = _scenario(scenario)
-    out.parent.mkdir(parents=True, exist_ok=True)     # before the compile: an OSError now
+    out = Path(check_output(out, what="rollerrig fmu:", suffix=".fmu"))   # before the work
+    P, source = check_scenario(scenario, source="rollerrig fmu: scenario")
     identifier = model_identifier(out)
     plat, ext = _platform_dir(fmi_version)
     cc = find_compiler(cc)
@@ -362,15 +375,12 @@ def build_fmu(out, scenario=None, fmi_version=2, *, cc=None, jobs=None, cache_di
         if fmi_version == 3:
             (src / "buildDescription.xml").write_text(_build_description(identifier,
                                                                          all_files))
-        part = out.parent / f".{out.name}.{os.getpid()}.part"
-        try:
-            with zipfile.ZipFile(part, "w", zipfile.ZIP_DEFLATED) as z:
+
+        def pack(fh):
+            with zipfile.ZipFile(fh, "w", zipfile.ZIP_DEFLATED) as z:
                 for path in sorted(p for p in stage.rglob("*") if p.is_file()):
                     z.write(path, path.relative_to(stage).as_posix())
-            os.replace(part, out)
-        finally:
-            if os.path.exists(part):
-                os.remove(part)
+        write_file(out, pack, what="rollerrig fmu:", binary=True, suffix=".fmu")
     if not quiet:
         print(f"wrote {out}: FMI {fmi_version}.0 co-simulation, modelIdentifier {identifier}, "
               f"binaries/{plat}, start values from {source}")
@@ -465,5 +475,5 @@ def write_docs(fmu_path, path=DOCS_PATH):
     the defaults: rollerrig fmu rig.fmu)."""
     with zipfile.ZipFile(fmu_path) as z:
         xml = z.read("modelDescription.xml").decode("utf-8")
-    Path(path).write_text(docs_text(xml, path), encoding="utf-8")
-    return path
+    text = docs_text(xml, path)
+    return write_file(path, lambda fh: fh.write(text), what="write_docs: path")

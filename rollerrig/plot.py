@@ -490,25 +490,25 @@ def rig_force(res, ax=None, *, title=True):
 def plot_run(res, outdir, prefix="rig"):
     """Write <prefix>_creepage.png (Fig. 7) and <prefix>_force.png (Fig. 8)
     for RigResult `res` into outdir (created if needed); returns the paths.
-    Each file is written new and renamed over its name, so a symlink at
-    that name is replaced, never written through."""
+    Each goes to a new path or replaces a regular file (never a symbolic
+    link, a device or a FIFO: RollerRigError naming it, checked for both
+    before either is drawn)."""
     plt = _pyplot()          # the backend is the caller's (rollerrig simulate: Agg)
-    from .rig import write_replacing
+    from ._files import check_output, make_folder, write_file
 
     _check_result("plot_run", res)
-    os.makedirs(outdir, exist_ok=True)
-    paths = []
+    make_folder(outdir, what="plot_run: outdir")
+    paths = {n: check_output(os.path.join(outdir, f"{prefix}_{n}.png"), what="plot_run:")
+             for n in ("creepage", "force")}
     for name, draw in (("creepage", lambda: rig_history(res)[0].figure),
                        ("force", lambda: rig_force(res).figure)):
         fig = draw()
-        path = os.path.join(outdir, f"{prefix}_{name}.png")
         try:
-            write_replacing(path, lambda fh: fig.savefig(fh, format="png", dpi=130),
-                            binary=True)
+            write_file(paths[name], lambda fh: fig.savefig(fh, format="png", dpi=130),
+                       what="plot_run:", binary=True)
         finally:
             plt.close(fig)
-        paths.append(path)
-    return paths
+    return list(paths.values())
 
 
 # ------------------------------------------------------------------ profiles

@@ -33,7 +33,6 @@ import json
 import math
 import numbers
 import os
-import secrets
 import stat
 import sys
 import time
@@ -837,36 +836,6 @@ def build_rig(params=None, *, dt=None, method=None, substeps=None, ode=None, nx=
     return rig, P, table
 
 
-# ------------------------------------------------------------------ safe output files
-
-def write_replacing(path, write, binary=False):
-    """Write a file through `write(file object)` without ever writing
-    through what is at `path`: into a new file created exclusively beside
-    it, then renamed over it (os.replace), so a symlink planted at `path`
-    is replaced, not followed, and a reader never sees half a file."""
-    folder, name = os.path.split(os.path.abspath(path))
-    flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_BINARY", 0)
-    while True:
-        tmp = os.path.join(folder, f".{name}.{secrets.token_hex(6)}.tmp")
-        try:
-            fd = os.open(tmp, flags, 0o666)          # the umask applies, as for open()
-            break
-        except FileExistsError:                      # a clash of random names: draw again
-            continue
-    try:
-        text = {} if binary else {"newline": "", "encoding": "utf-8"}
-        with os.fdopen(fd, "wb" if binary else "w", **text) as fh:
-            write(fh)
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.remove(tmp)
-        except OSError:
-            pass
-        raise
-    return path
-
-
 # ------------------------------------------------------------------ the result
 
 @dataclass(repr=False)
@@ -978,15 +947,17 @@ class RigResult:
 
     def to_csv(self, path):
         """Write the records as CSV (a header of RECORD_FIELDS, one row per
-        kept sample) to `path`, replacing the file (a symlink there is
-        replaced, never written through).  Returns the path."""
+        kept sample) to `path`: a new path or a regular file, replaced
+        whole (never a symbolic link, a device or a FIFO: RollerRigError
+        naming the path).  Returns the path."""
         import csv
+        from ._files import write_file
 
         def write(fh):
             w = csv.writer(fh)
             w.writerow(RECORD_FIELDS)
             w.writerows(self.records.tolist())
-        return write_replacing(path, write)
+        return write_file(path, write, what="RigResult.to_csv: path")
 
     def summary(self, tol=0.05, window=0.25):
         """Per target, a dict: "target"; "reached", the creepage held (mean
@@ -1355,7 +1326,8 @@ def replay(res, *, method=None, nx=None, ny=None, **creep):
 
 
 def write_defaults(path=DEFAULTS_PATH):
-    """Rewrite rig_default.toml from the C declaration (defaults_toml)."""
-    with open(path, "w", encoding="utf-8") as fh:
-        fh.write(defaults_toml())
-    return path
+    """Rewrite rig_default.toml from the C declaration (defaults_toml), as
+    every file is written (rollerrig._files.write_file)."""
+    from ._files import write_file
+    text = defaults_toml()
+    return write_file(path, lambda fh: fh.write(text), what="write_defaults: path")

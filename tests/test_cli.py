@@ -70,23 +70,37 @@ def test_an_output_path_that_is_not_a_folder_is_refused(tmp_path, capsys):
 
 
 @pytest.mark.skipif(not hasattr(os, "symlink"), reason="no symlinks here")
-def test_outputs_replace_planted_symlinks_instead_of_writing_through_them(tmp_path, capsys):
+def test_planted_symlinks_are_refused_before_the_run(tmp_path, capsys):
+    """A symbolic link at an output's name is neither written through nor
+    replaced: the run is refused before it starts, naming the path."""
     pytest.importorskip("matplotlib")
     out = tmp_path / "outdir"
     out.mkdir()
-    victims = {}
+    victim = tmp_path / "victim.txt"
+    victim.write_text("precious")
     for name in ("rig_history.csv", "rig_creepage.png", "rig_force.png"):
-        victim = tmp_path / f"victim-{name}.txt"
-        victim.write_text("precious")
         os.symlink(victim, out / name)
-        victims[name] = victim
+        code, text, err = run_cli(capsys, "--duration", "0.4", "--out", str(out))
+        assert code == 2 and "simulated" not in text
+        assert err == (f"rollerrig simulate: --out {out / name}: is a symbolic link; a file is "
+                       f"written only to a regular file or a new path, never through a link\n")
+        assert victim.read_text() == "precious" and os.listdir(out) == [name]
+        os.remove(out / name)
+
+
+def test_outputs_replace_regular_files_readable_as_usual(tmp_path, capsys):
+    pytest.importorskip("matplotlib")
+    out = tmp_path / "outdir"
+    out.mkdir()
+    names = ("rig_history.csv", "rig_creepage.png", "rig_force.png")
+    for name in names:
+        (out / name).write_text("old")
     code, text, err = run_cli(capsys, "--duration", "0.4", "--out", str(out))
     assert code == 0, err
-    for name, victim in victims.items():
-        assert victim.read_text() == "precious", name
-        assert not os.path.islink(out / name) and os.path.getsize(out / name) > 100
+    for name in names:
+        assert os.path.getsize(out / name) > 100, name
     # no temporary file left behind, and the files are readable as usual
-    assert sorted(os.listdir(out)) == sorted(victims)
+    assert sorted(os.listdir(out)) == sorted(names)
     assert os.stat(out / "rig_history.csv").st_mode & 0o444 == 0o444 & ~_umask()
 
 
@@ -105,9 +119,9 @@ def test_record_every_and_a_short_run(tmp_path, capsys):
         assert len(list(csv.reader(fh))) == 1 + 25
     code, out, err = run_cli(capsys, "--duration", "0.001", "--out", str(tmp_path))
     assert code == 2 and "duration = 0.001 s is shorter than one sample (dt = 0.004 s)" in err
-    with pytest.raises(SystemExit):
-        cli.main(["simulate", "--record-every", "0"])
-    assert "--record-every: must be an integer >= 1, got '0'" in capsys.readouterr().err
+    assert cli.main(["simulate", "--record-every", "0"]) == 2
+    assert capsys.readouterr().err == ("rollerrig simulate: argument --record-every: must be "
+                                       "an integer >= 1, got '0'\n")
 
 
 def test_a_long_run_is_refused_with_the_record_every_that_fits(tmp_path, capsys):
@@ -128,3 +142,237 @@ def test_a_closed_stdout_is_not_a_traceback(tmp_path):
     err = proc.stderr.read().decode()
     proc.wait(timeout=120)
     assert "Traceback" not in err and "cannot write" not in err, err
+
+
+# ------------------------------------------------------------------ issue 22: paths and errors
+
+def one_line(err):
+    """The single stderr line of a refusal (no usage block, no traceback)."""
+    assert "Traceback" not in err and "usage:" not in err, err
+    assert err.endswith("\n") and err.count("\n") == 1, err
+    return err[:-1]
+
+
+def test_an_output_file_that_is_a_directory_is_refused_before_the_run(tmp_path, capsys):
+    """simulate --out outx, outx/rig_history.csv a folder: the run was made,
+    then refused naming a hidden temporary."""
+    (tmp_path / "rig_history.csv").mkdir()
+    code, out, err = run_cli(capsys, "--duration", "0.4", "--out", str(tmp_path))
+    assert code == 2 and "simulated" not in out
+    assert one_line(err) == (f"rollerrig simulate: --out {tmp_path / 'rig_history.csv'}: is a "
+                             f"directory; give the name of a file in it")
+    assert os.listdir(tmp_path) == ["rig_history.csv"]
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no FIFOs here")
+def test_an_output_file_that_is_a_fifo_is_refused_before_the_run(tmp_path, capsys):
+    pytest.importorskip("matplotlib")
+    os.mkfifo(tmp_path / "rig_force.png")
+    code, out, err = run_cli(capsys, "--duration", "0.4", "--out", str(tmp_path))
+    assert code == 2 and "simulated" not in out
+    assert one_line(err) == (f"rollerrig simulate: --out {tmp_path / 'rig_force.png'}: is a "
+                             f"FIFO, not a regular file; give a regular file or a new path")
+    assert os.listdir(tmp_path) == ["rig_force.png"]
+
+
+@pytest.mark.parametrize("argv, option", [
+    (["--duration", "-1"], "--duration must be a finite number in (0, 100000] s, got -1.0"),
+    (["--duration", "nan"], "--duration must be a finite number"),
+    (["--duration", "0.001"], "--duration = 0.001 s is shorter than one sample"),
+    (["--dt", "0"], "--dt must be a finite number in [1e-06, 0.1] s, got 0.0"),
+    (["--dt", "inf"], "--dt must be a finite number"),
+    (["--duration", "0.4", "--record-every", "1000"],
+     "--record-every must be an integer from 1 to the number of samples (100), got 1000"),
+])
+def test_errors_after_parsing_name_the_option(argv, option, tmp_path, capsys):
+    """... and bad input leaves nothing behind, not even the --out folder."""
+    code, out, err = run_cli(capsys, *argv, "--out", str(tmp_path / "new" / "out"))
+    assert code == 2 and "simulated" not in out
+    assert one_line(err).startswith(f"rollerrig simulate: {option}"), err
+    assert os.listdir(tmp_path) == []
+
+
+def test_methods_offered_are_the_rigs_from_the_registry(capsys):
+    """--method's help, its choices and its error list the methods of the
+    registry the rig's time loop runs, and only those."""
+    from rollerrig._binding import METHODS
+    loop = [name for name, m in METHODS.items() if m.in_loop]
+    assert "exact" in METHODS and "exact" not in loop and "exact_table" in loop
+    action = next(a for a in cli.build_parser().commands["simulate"]._actions
+                  if "--method" in a.option_strings)
+    assert list(action.choices) == loop and ", ".join(loop) in action.help
+    for method in loop:
+        assert cli.build_parser().parse_args(["simulate", "--method", method]).method == method
+    listed = ", ".join(map(repr, loop))
+    for bad in ("exact", "bogus"):
+        assert cli.main(["simulate", "--method", bad]) == 2
+        assert one_line(capsys.readouterr().err) == (
+            f"rollerrig simulate: argument --method: invalid choice: {bad!r} (choose from "
+            f"{listed})")
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["simulate", "--bogus"], "rollerrig simulate: unrecognized arguments: --bogus"),
+    (["simulate", "--dt", "x"], "rollerrig simulate: argument --dt: invalid float value: 'x'"),
+    (["fmu", "x.fmu", "--bogus", "1"], "rollerrig fmu: unrecognized arguments: --bogus 1"),
+    (["fmu"], "rollerrig fmu: the following arguments are required: OUT.fmu"),
+    (["exact-table", "t.c", "--shape", "3,4,4,5"],
+     "rollerrig exact-table: argument --shape: four node counts >= 4 like 17,11,19,21, "
+     "got '3,4,4,5'"),
+    (["exact-table", "t.c", "--nx", "511"],
+     "rollerrig exact-table: argument --nx: must be an integer from 1 to 510 (the finer grid "
+     "of the pair, 2 nx, at most 1020), got '511'"),
+    (["exact-table", "t.c", "--nu", "0.7"],
+     "rollerrig exact-table: argument --nu: Poisson's ratio must be in [0, 0.5], got '0.7'"),
+    (["--bogus"], "rollerrig: unrecognized arguments: --bogus"),
+    (["bogus"], "rollerrig: argument COMMAND: invalid choice: 'bogus' (choose from "
+                "'simulate', 'exact-table', 'fmu')"),
+])
+def test_argument_errors_are_one_line_naming_the_option(argv, message, capsys):
+    """No usage block; an unknown option after a command is named by that
+    command, not the top-level parser."""
+    assert cli.main(argv) == 2
+    out, err = capsys.readouterr()
+    assert one_line(err) == message and out == ""
+
+
+# ------------------------------------------------------------------ rollerrig fmu
+
+@pytest.fixture
+def no_compiler(tmp_path, monkeypatch):
+    """CC missing: an FMU the checks let through stops before any compile."""
+    monkeypatch.setenv("CC", str(tmp_path / "no-such-cc"))
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo") or not hasattr(os, "symlink"),
+                    reason="no FIFOs or symlinks here")
+def test_fmu_writes_only_a_regular_file_or_a_new_path(tmp_path, capsys, no_compiler):
+    """rollerrig fmu replaced a device, a FIFO, a symlink's target."""
+    os.mkfifo(tmp_path / "fifo.fmu")
+    os.mkfifo(tmp_path / "fifo")
+    victim = tmp_path / "victim"
+    victim.write_text("precious")
+    os.symlink(victim, tmp_path / "link.fmu")
+    (tmp_path / "afile").write_text("x")
+    ok = " not a regular file; give a regular file or a new path"
+    for path, why in (
+            ("/dev/null", "is a character device," + ok),      # refused before any work
+            (tmp_path / "fifo.fmu", "is a FIFO," + ok),
+            (tmp_path / "fifo", "is a FIFO," + ok),
+            (tmp_path / "link.fmu", "is a symbolic link; a file is written only to a "
+                                    "regular file or a new path, never through a link"),
+            (tmp_path, "is a directory; give the name of a file in it"),
+            (tmp_path / "afile" / "x.fmu", f"{tmp_path / 'afile'} is not a directory"),
+            (tmp_path / "no" / "x.fmu", f"the folder {tmp_path / 'no'} does not exist"),
+            (tmp_path / "rig.txt", "the file name must end in .fmu")):
+        assert cli.main(["fmu", str(path)]) == 2
+        assert one_line(capsys.readouterr().err) == f"rollerrig fmu: {path}: {why}"
+    assert sorted(os.listdir(tmp_path)) == ["afile", "fifo", "fifo.fmu", "link.fmu", "victim"]
+    assert victim.read_text() == "precious"
+    assert cli.main(["fmu", str(tmp_path / "x.fmu")]) == 2          # past every check
+    assert "the C compiler $CC" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("text, key", [("[wheelset]\nmass_kg = 1e300\n", "wheelset.mass_kg"),
+                                       ("[scenario]\nmu0 = 1e100\n", "scenario.mu0")])
+def test_fmu_refuses_a_scenario_simulate_refuses(text, key, tmp_path, capsys, no_compiler):
+    """The same check of the scenario for both commands, before the compile."""
+    scenario = tmp_path / "s.toml"
+    scenario.write_text(text)
+    for command, argv in (("simulate", ["--out", str(tmp_path / "o")]),
+                          ("fmu", [str(tmp_path / "x.fmu")])):
+        assert cli.main([command, *argv, "--scenario", str(scenario)]) == 2
+        err = one_line(capsys.readouterr().err)
+        assert err.startswith(f"rollerrig {command}: --scenario {scenario}: the rig cannot "
+                              f"start with params {key} = "), err
+    assert not (tmp_path / "x.fmu").exists()
+    assert cli.main(["fmu", str(tmp_path / "x.fmu"), "--scenario", str(tmp_path / "no")]) == 2
+    assert one_line(capsys.readouterr().err) == (f"rollerrig fmu: --scenario {tmp_path / 'no'}: "
+                                                 f"cannot open it: No such file or directory")
+
+
+# ------------------------------------------------------------------ rollerrig exact-table
+
+@pytest.fixture
+def no_build(monkeypatch):
+    """The build of the table, which must not start (about 40 CPU minutes)."""
+    def build(*args, **kwargs):
+        raise AssertionError("the build started")
+    monkeypatch.setattr("rollerrig.exact_table.build_exact_table", build)
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no FIFOs here")
+def test_exact_table_checks_its_outputs_before_the_build(tmp_path, capsys, no_build):
+    (tmp_path / "afile").write_text("x")
+    os.mkfifo(tmp_path / "fifo.npz")
+    good = str(tmp_path / "t.c")
+    cases = [([str(tmp_path)], f"{tmp_path}: is a directory; give the name of a file in it"),
+             ([str(tmp_path / "afile" / "out.c")],
+              f"{tmp_path / 'afile' / 'out.c'}: {tmp_path / 'afile'} is not a directory"),
+             ([str(tmp_path / "t.h")], f"{tmp_path / 't.h'}: the file name must end in .c"),
+             ([good, "--npz", str(tmp_path / "fifo.npz")],
+              f"--npz {tmp_path / 'fifo.npz'}: is a FIFO, not a regular file; give a regular "
+              f"file or a new path"),
+             ([good, "--npz", str(tmp_path / "t")],
+              f"--npz {tmp_path / 't'}: the file name must end in .npz")]
+    if os.path.isdir("/proc/self"):
+        cases.append((["/proc/out.c"], "/proc/out.c: cannot write in the folder /proc: No such "
+                                       "file or directory"))
+    for argv, message in cases:
+        assert cli.main(["exact-table", *argv, "--quiet"]) == 2
+        assert one_line(capsys.readouterr().err) == f"rollerrig exact-table: {message}"
+    assert sorted(os.listdir(tmp_path)) == ["afile", "fifo.npz"]
+
+
+def _small_table():
+    import numpy as np
+    from rollerrig.exact_table import ExactTable
+    return ExactTable((0.0,) * 4, (1.0,) * 4, np.zeros((4, 4, 4, 5, 3), np.float32), 0.28,
+                      1.0, 3)
+
+
+def _build_planting(plant):
+    """A build that puts something at an output meanwhile."""
+    def build(*args, **kwargs):
+        plant()
+        return _small_table()
+    return build
+
+
+def test_exact_table_writes_the_npz_first_and_names_a_path_taken_meanwhile(tmp_path, capsys,
+                                                                          monkeypatch):
+    """What is put at OUT during the build is not replaced; the .npz, written
+    first, keeps the table."""
+    from rollerrig.exact_table import ExactTable
+    out, npz = tmp_path / "t.c", tmp_path / "t.npz"
+    monkeypatch.setattr("rollerrig.exact_table.build_exact_table", _build_planting(out.mkdir))
+    assert cli.main(["exact-table", str(out), "--npz", str(npz), "--quiet"]) == 2
+    assert one_line(capsys.readouterr().err) == (f"rollerrig exact-table: {out}: is a "
+                                                 f"directory; give the name of a file in it")
+    assert ExactTable.load(npz).shape == (4, 4, 4, 5) and os.listdir(out) == []
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no FIFOs here")
+def test_exact_table_a_lost_npz_keeps_the_c_file(tmp_path, capsys, monkeypatch):
+    out, npz = tmp_path / "t.c", tmp_path / "t.npz"
+    monkeypatch.setattr("rollerrig.exact_table.build_exact_table",
+                        _build_planting(lambda: os.mkfifo(npz)))
+    assert cli.main(["exact-table", str(out), "--npz", str(npz), "--quiet"]) == 2
+    assert one_line(capsys.readouterr().err) == (f"rollerrig exact-table: {npz}: is a FIFO, not "
+                                                 f"a regular file; give a regular file or a new "
+                                                 f"path")
+    assert "const rr_exact_table rr_exact_table_builtin" in out.read_text()
+
+
+def test_exact_table_an_unreachable_scheduler_is_one_line(tmp_path, capsys, no_build):
+    pytest.importorskip("distributed")
+    import dask
+    with dask.config.set({"distributed.comm.timeouts.connect": "1s"}):
+        for address, why in (("tcp://127.0.0.1:1", "Timed out trying to connect to "
+                                                   "tcp://127.0.0.1:1 after 1 s"),
+                             ("nonsense", "missing port number in address 'nonsense'")):
+            assert cli.main(["exact-table", str(tmp_path / "t.c"), "--dask", address,
+                             "--quiet"]) == 2
+            assert one_line(capsys.readouterr().err) == (
+                f"rollerrig exact-table: --dask {address}: cannot reach the scheduler: {why}")
+    assert os.listdir(tmp_path) == []

@@ -485,7 +485,8 @@ def test_command_refuses_bad_input(tmp_path, monkeypatch, capsys):
     assert "is a directory" in capsys.readouterr().err
     (tmp_path / "file").write_text("")
     assert cli.main(["fmu", str(tmp_path / "file" / "x.fmu")]) == 2
-    assert "cannot write" in capsys.readouterr().err
+    assert capsys.readouterr().err == (f"rollerrig fmu: {tmp_path / 'file' / 'x.fmu'}: "
+                                       f"{tmp_path / 'file'} is not a directory\n")
     monkeypatch.setenv("CC", str(tmp_path / "no-such-cc"))
     assert cli.main(["fmu", str(tmp_path / "x.fmu")]) == 2
     assert "the C compiler $CC" in capsys.readouterr().err

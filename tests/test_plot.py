@@ -227,16 +227,17 @@ def test_plot_run_writes_both_figures(run, tmp_path):
 
 
 @pytest.mark.skipif(not hasattr(os, "symlink"), reason="no symlinks here")
-def test_plot_run_replaces_a_planted_symlink_instead_of_writing_through_it(run, tmp_path):
+def test_plot_run_refuses_a_planted_symlink_before_drawing(run, tmp_path):
     out = tmp_path / "out"
     out.mkdir()
     victim = tmp_path / "victim.txt"
     victim.write_text("precious")
     os.symlink(victim, out / "rig_force.png")
-    rp.plot_run(run, str(out))
-    assert victim.read_text() == "precious"
-    assert not os.path.islink(out / "rig_force.png")
-    assert (out / "rig_force.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    with pytest.raises(rr.RollerRigError, match=r"plot_run: .*rig_force\.png: is a symbolic "
+                                                 r"link"):
+        rp.plot_run(run, str(out))
+    assert victim.read_text() == "precious" and os.listdir(out) == ["rig_force.png"]
+    assert plt.get_fignums() == []             # refused before either figure was drawn
 
 
 def test_decimated_records_plot_the_same_run(run):

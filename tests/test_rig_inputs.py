@@ -180,8 +180,10 @@ def test_to_csv_round_trip_and_symlink(full, tmp_path):
         victim.write_text("precious")
         link = tmp_path / "link.csv"
         os.symlink(victim, link)
-        full.to_csv(link)
-        assert victim.read_text() == "precious" and not os.path.islink(link)
+        with pytest.raises(rr.RollerRigError, match=f"RigResult.to_csv: path {link}: is a "
+                                                    f"symbolic link"):
+            full.to_csv(link)                  # neither written through nor replaced
+        assert victim.read_text() == "precious" and os.path.islink(link)
     assert sorted(os.listdir(tmp_path)) == sorted(
         ["h.csv"] + (["victim.txt", "link.csv"] if hasattr(os, "symlink") else []))
 

@@ -8,6 +8,7 @@ import numpy as np
 
 from .. import _core
 from .._errors import RollerRigError, status_message
+from .._files import write_file
 from ._checks import (MAX_COORD, MAX_POINTS, MIN_POINTS, MIN_SPACING, MIN_WIDTH,
                       UNITS, _as_float_array, _check_bc, _check_kind, _check_number,
                       _check_scale, _prepare)
@@ -281,18 +282,21 @@ class Profile:
     def write_text(self, path, units="mm"):
         """Write the nodes (y, z) as plain two-column text, readable by
         read_profile: '#' header lines 'key = value' carry name, kind, units
-        and bc; 17 significant digits."""
+        and bc; 17 significant digits.  `path` is a new path or a regular
+        file, replaced whole (never a link, a device or a FIFO)."""
         if units not in UNITS:
             raise RollerRigError(f"Profile.write_text: units must be one of {sorted(UNITS)}, "
                                  f"got {units!r}")
         f = UNITS[units]
-        with open(path, "w", encoding="utf-8") as out:
+
+        def write(out):
             out.write("# rollerrig profile: lateral y towards the field side, vertical z "
                       "downward\n")
             out.write(f"# name = {self._name}\n# kind = {self._kind}\n# units = {units}\n"
                       f"# bc = {self._bc}\n")
             for yy, zz in zip(self._y / f, self._z / f):
                 out.write(f"{yy:.17g} {zz:.17g}\n")
+        write_file(path, write, what="Profile.write_text: path")
 
     # -- other constructors
 
