@@ -341,7 +341,7 @@ def test_rig_stepping(data, method, start, steps):
 @examples(8)
 @given(move=state_moves, method=st.sampled_from(RIG_METHODS), t=st.one_of(st.floats(0.0, 10.0),
                                                                        wild))
-@example(move=(bytes(48), [(5, 2.1832561754460966e+304)]), method="linear", t=0.0)
+@example(move=(bytes(48), [(5, 2.1832561754460966e+304)]), method="fastsim", t=0.0)
 def test_rig_rhs_and_jac(move, method, t):
     """rhs and jac at any state: finite with a success status, NaN with an
     error (rhs); never an exception for a state of 12 numbers."""
@@ -416,12 +416,17 @@ def test_simulate_short_runs(duration, dt, method, mu0, targets, V, start, ode, 
                           roller_speed=V, start=start, ode=ode, substeps=substeps, nx=8, ny=8,
                           params=law(method, {"scenario": {"mu0": mu0}}))
     except RollerRigError as e:
-        # a duration under one sample is refused by name too
-        assert_names_argument(e, ("simulate", "params"), ("roller_speed", "duration", "dt"))
+        # a duration under one sample, or targets no sample applies, are refused by name too
+        assert_names_argument(e, ("simulate", "params"), ("roller_speed", "duration", "dt",
+                                                          "targets"))
         return
     fields = {f: getattr(res, f) for f in RECORD_FIELDS if f not in ("xi_ref",)}
     assert_finite(fields)
-    if res.status < 0:
+    if res.status == rr._core.ERR_UNTRUSTED:
+        # finished, but its samples did not converge too often to be trusted
+        assert res.message.startswith("not to be trusted: "), res.message
+        assert len(res) == int(round(duration / dt))
+    elif res.status < 0:
         assert res.message.startswith("stopped at"), res.message
     else:
         assert len(res) == int(round(duration / dt))
@@ -588,7 +593,8 @@ def test_simulate_any_adhesion(adhesion, method):
     res = rr.simulate(duration=0.06, targets=[0.03], method=method,
                       params={"adhesion": adhesion},
                       **({"nx": 8, "ny": 8} if "nx" in rr.METHODS[method].options else {}))
-    assert res.status >= 0 or res.message.startswith("stopped at"), res.message
+    assert res.status >= 0 or res.message.startswith(("stopped at", "not to be trusted")), \
+        res.message
     if not len(res):
         return
     assert_finite({f: getattr(res, f) for f in RECORD_FIELDS if f != "xi_ref"})

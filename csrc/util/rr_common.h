@@ -43,11 +43,14 @@ enum rr_status {
     RR_ERR_TABLE = -14,         /* outside a table: a/b beyond its range, nu not its own */
     RR_ERR_SEQUENCE = -15,      /* a call out of its order (the rig's command before its
                                    reading, or a second reading in one sample) */
-    RR_ERR_CONTROLLER = -16     /* a controller of the caller's failed (it raised, or gave
+    RR_ERR_CONTROLLER = -16,    /* a controller of the caller's failed (it raised, or gave
                                    what is not a command): set by the loop that calls it */
+    RR_ERR_FRICTION_LIMIT = -17, /* a creep force exceeds mu N: the method broke its limit */
+    RR_ERR_UNTRUSTED = -18      /* a run's samples did not converge too often to be trusted:
+                                   set by the loop that judges the run */
 };
 
-#define RR_STATUS_MIN (-16)
+#define RR_STATUS_MIN (-18)
 #define RR_STATUS_MAX 1
 
 /* Message of a status code; a fixed string, never NULL. */

@@ -2,6 +2,9 @@
 #include "util/rr_common.h"
 
 static const char *const rr_messages[] = {
+    /* -18 */ "too many samples did not converge (their inner iterations ended above the "
+              "tolerance): the run cannot be trusted",
+    /* -17 */ "a creep force exceeds mu N: the method broke its friction limit",
     /* -16 */ "the controller failed (it raised, or gave what is not a command)",
     /* -15 */ "call out of order (a command before the reading, or two readings in a sample)",
     /* -14 */ "outside the exact-theory table (a/b beyond [0.1, 10], or nu not the table's)",
