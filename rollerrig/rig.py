@@ -1391,8 +1391,9 @@ def _run_controlled(rig, controller, P, duration, dt, targets, target_times, V, 
     (rollerrig.control): read, call, write, advance, sample by sample; the
     records' xi_ref is the scenario's target the controller was given.
     Returns as _run_builtin; a controller that raises, or returns what is
-    not a command or a command the rig refuses (NaN), ends the run with a
-    RollerRigError whose .result holds the history so far."""
+    not a command (reading it raises, whatever the exception) or a command
+    the rig refuses (NaN), ends the run with a RollerRigError whose .result
+    holds the history so far."""
     core = rig._core
     stepped, worst, warned, status = 0, 0, 0, 0
 
@@ -1409,8 +1410,8 @@ def _run_controlled(rig, controller, P, duration, dt, targets, target_times, V, 
         try:
             start(rig.info)
         except Exception as exc:
-            fail(0, 0.0, f"its start(info) raised {type(exc).__name__}: {exc}",
-                 _core.ERR_CONTROLLER, exc)
+            fail(0, 0.0, f"its start(info) raised {type(exc).__name__}: "
+                 f"{_control.safe_repr(exc, str)}", _core.ERR_CONTROLLER, exc)
     chunk = max(1, min(n // 50 if progress else n, _CHUNK_SAMPLES))
     for first in range(0, n, chunk):
         stop = min(n, first + chunk)
@@ -1424,15 +1425,18 @@ def _run_controlled(rig, controller, P, duration, dt, targets, target_times, V, 
             try:
                 cmd = controller(s)
             except Exception as exc:
-                fail(k, s.t, f"it raised {type(exc).__name__}: {exc}", _core.ERR_CONTROLLER,
-                     exc)
+                fail(k, s.t, f"it raised {type(exc).__name__}: {_control.safe_repr(exc, str)}",
+                     _core.ERR_CONTROLLER, exc)
             try:
                 modes = _control.command(cmd, s)
-            except ValueError as exc:
-                fail(k, s.t, str(exc), _core.ERR_CONTROLLER)
+            except ValueError as exc:                   # named by command()
+                fail(k, s.t, str(exc), _core.ERR_CONTROLLER, exc.__cause__)
+            except Exception as exc:                    # whatever else reading it raised
+                fail(k, s.t, f"reading what it returned raised {type(exc).__name__}: "
+                     f"{_control.safe_repr(exc, str)}", _core.ERR_CONTROLLER, exc)
             status = core.write(*modes, math.nan)
             if status < 0:
-                fail(k, s.t, f"the rig refused its command {cmd!r:.80}: "
+                fail(k, s.t, f"the rig refused its command {_control.safe_repr(cmd):.80}: "
                      f"{status_message(status)}", status)
             rec, status = core.advance()
             rec[_XI_REF] = s.xi_ref
