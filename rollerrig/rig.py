@@ -487,6 +487,9 @@ def check_parameters(params=None, *, source="check_parameters: params"):
     P, problems = _parameter_problems(params)
     if problems:
         raise _error(source, problems)
+    scaled = _scaled_starts(params, P)
+    if scaled:
+        warnings.warn(f"{source}: {scaled}", RollerRigWarning, stacklevel=2)
     return P
 
 
@@ -496,7 +499,46 @@ def _parameter_problems(params):
     problems = []
     if params:
         _merge(P, copy.deepcopy(params), problems)
+        _scale_starts(params, P)
     return P, problems + _check_values(P)
+
+
+def _starts_not_given(params, P):
+    """True where params set scenario.duration_s (valid) but not
+    scenario.target_start_s, and the default start times do not all fall
+    inside that duration."""
+    S = params.get("scenario") if isinstance(params, dict) else None
+    if not (isinstance(S, dict) and "duration_s" in S and "target_start_s" not in S):
+        return False
+    duration = P["scenario"]["duration_s"]
+    if _real(0.0, MAX_DURATION, lo_open=True)(duration):
+        return False
+    return _defaults()["scenario"]["target_start_s"][-1] >= duration
+
+
+def _scale_starts(params, P):
+    """One rule for a duration too short for the target start times, whether
+    scenario.duration_s or simulate's duration gives it: start times the
+    caller did not give (the defaults, written for the default duration)
+    are scaled to the duration, as simulate(duration=...) scales the
+    scenario's (_target_schedule); start times given with a duration they do
+    not fit are refused (_check_values)."""
+    if _starts_not_given(params, P):
+        D = _defaults()["scenario"]
+        scale = P["scenario"]["duration_s"] / D["duration_s"]
+        P["scenario"]["target_start_s"] = [x * scale for x in D["target_start_s"]]
+
+
+def _scaled_starts(params, P):
+    """The warning's text where _scale_starts scaled the start times, else ""."""
+    if not _starts_not_given(params, P):
+        return ""
+    D = _defaults()["scenario"]
+    return (f"the default target start times {D['target_start_s']} s (for the default "
+            f"scenario.duration_s = {D['duration_s']:g} s; scenario.target_start_s not given) "
+            f"do not all fall inside scenario.duration_s = {P['scenario']['duration_s']:g} s: "
+            f"scaled by {P['scenario']['duration_s'] / D['duration_s']:g} to "
+            f"{[float(f'{x:.6g}') for x in P['scenario']['target_start_s']]} s")
 
 
 def _parameters(func, params):
@@ -1238,9 +1280,10 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
                duration; the scenario's own targets start at
                scenario.target_start_s when those all fall inside the
                duration, otherwise at those times scaled by duration /
-               scenario.duration_s, with a RollerRigWarning saying so.  A
-               target no sample would apply (its interval holds no sample's
-               start) is refused
+               scenario.duration_s, with a RollerRigWarning saying so (the
+               rule of a scenario.duration_s given without start times:
+               check_parameters).  A target no sample would apply (its
+               interval holds no sample's start) is refused
     roller_speed: roller surface speed [m/s] held by its controller
                (default scenario.roller_speed_m_s)
     start:     "rolling" (wheelset rolling freely at roller_speed) or "rest"
