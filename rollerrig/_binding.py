@@ -39,8 +39,10 @@ class MethodInfo(NamedTuple):
     """A creep-force method of the registry: its doc, options (name ->
     OptionInfo, in the descriptor's order), whether it has a traction field
     (fastsim_field), whether it saturates (|F| <= mu N), whether it is a
-    time-loop method (no workspace, bounded cost: the rig can run it) and
-    whether it takes Coulomb friction only."""
+    time-loop method (no workspace, bounded cost: the rig's contact model,
+    rig_contact, takes it), whether it takes Coulomb friction only, and
+    whether the rig steps with it (in_rig: a time-loop method that
+    saturates; csrc/rig/rr_rig.h, rr_rig_method_check)."""
     name: str
     doc: str
     options: MappingProxyType
@@ -48,6 +50,7 @@ class MethodInfo(NamedTuple):
     saturates: bool
     in_loop: bool
     coulomb_only: bool
+    in_rig: bool
 
     def defaults(self):
         """Option name -> default value."""
@@ -57,8 +60,8 @@ class MethodInfo(NamedTuple):
 #: name -> MethodInfo, in the registry's order (read-only)
 METHODS = MappingProxyType({
     name: MethodInfo(name, doc, MappingProxyType({o[0]: OptionInfo(*o) for o in opts}),
-                     bool(field), bool(sat), bool(loop), bool(coulomb))
-    for name, doc, opts, field, sat, loop, coulomb in _core.METHODS})
+                     bool(field), bool(sat), bool(loop), bool(coulomb), bool(rig))
+    for name, doc, opts, field, sat, loop, coulomb, rig in _core.METHODS})
 
 
 def methods_doc():
@@ -89,6 +92,18 @@ def loop_method(func, method):
         raise RollerRigError(f"{func}: method {method!r} is not a time-loop method (it solves "
                              f"each contact iteratively on a grid, milliseconds a case, in a "
                              f"workspace of its own); the rig runs {names}")
+    return info
+
+
+def rig_method(func, method):
+    """The MethodInfo of a method the rig steps with (in_rig), else
+    RollerRigError saying why and naming the ones it steps with."""
+    info = loop_method(func, method)
+    if not info.in_rig:
+        names = ", ".join(repr(k) for k, m in METHODS.items() if m.in_rig)
+        raise RollerRigError(f"{func}: method {method!r} has no friction limit (Kalker's linear "
+                             f"theory: its force grows past mu N, an adhesion above mu0 the rig "
+                             f"would report as measured); the rig runs {names}")
     return info
 
 

@@ -2268,6 +2268,43 @@ static PyObject *py_rig_schedule(PyObject *self, PyObject *args)
     return outputs_tuple(out, 2);
 }
 
+/* rig_speed_loops(params) -> ((stable, rho, lo, hi), (...)): the roller's and
+ * the wheelset's sampled speed loops of the rig's primary values (a dict as
+ * Rig takes): stable at the sample time (rr_speed_loop_check), the largest
+ * pole's |z| (rr_speed_loop_radius), the stable sample times within
+ * [RR_RIG_MIN_T, RR_RIG_MAX_T] (rr_speed_loop_range; NaN if none). */
+static PyObject *py_rig_speed_loops(PyObject *self, PyObject *arg)
+{
+    rr_rig_config c;
+    rr_speed_loop loops[2];
+    PyObject *out[2] = {NULL, NULL};
+    int k;
+    (void)self;
+    if (!PyDict_Check(arg)) {
+        PyErr_SetString(PyExc_TypeError, "rig_speed_loops: a dict of the rig's parameters");
+        return NULL;
+    }
+    if (rig_config_from(arg, &c) < 0)
+        return NULL;
+    rr_rig_config_speed_loops(&c, loops);
+    for (k = 0; k < 2; k++) {
+        double rho, lo, hi;
+        const int st = rr_speed_loop_radius(&loops[k], &rho);
+        if (st < 0) {
+            PyErr_Format(PyExc_ValueError, "rig_speed_loops: %s", rr_status_message(st));
+            release(out, 2);
+            return NULL;
+        }
+        rr_speed_loop_range(&loops[k], RR_RIG_MIN_T, RR_RIG_MAX_T, &lo, &hi);
+        if (!(out[k] = Py_BuildValue("(Nddd)", PyBool_FromLong(rr_speed_loop_check(&loops[k])
+                                                                == RR_OK), rho, lo, hi))) {
+            release(out, 2);
+            return NULL;
+        }
+    }
+    return outputs_tuple(out, 2);
+}
+
 static PyObject *py_status_message(PyObject *self, PyObject *arg)
 {
     long code = PyLong_AsLong(arg);
@@ -2331,6 +2368,9 @@ static PyMethodDef core_methods[] = {
     {"rig_table", py_rig_table, METH_VARARGS,
      "rig_table(r0, R0, half_width, alpha, crown, half_spacing, half_range, rows)"
      " -> (data, y0, dy, status, bad_y)"},
+    {"rig_speed_loops", py_rig_speed_loops, METH_O,
+     "rig_speed_loops({\"section.key\": value}) -> ((stable, rho, lo, hi) of the roller's "
+     "and the wheelset's sampled speed loops)"},
     {"status_message", py_status_message, METH_O, "status_message(code) -> str"},
     {NULL, NULL, 0, NULL}
 };
@@ -2474,8 +2514,10 @@ static int add_rows(PyObject *m, const char *name, int n, PyObject *(*row)(int))
 }
 
 /* The registry as _core.METHODS: a tuple of (name, doc, options, has_field,
- * saturates, in_loop, coulomb_only), in_loop True where the method needs no
- * workspace (a time-loop method: the rig refuses the others), coulomb_only
+ * saturates, in_loop, coulomb_only, in_rig), in_loop True where the method
+ * needs no workspace (a time-loop method: the rig's contact model takes it),
+ * in_rig where the rig steps with it (rr_rig_method_check: in_loop and
+ * saturates), coulomb_only
  * True where it refuses a falling friction law, options a tuple of (name, type, unit, default, lo, hi,
  * lo_open, hi_open, choices, doc): type "int", "real" or "choice"; an
  * integer's default and range as ints, a choice's default as its name (its
@@ -2526,10 +2568,11 @@ static int add_methods(PyObject *m)
         }
         rr_creep_opts o;
         rr_creep_opts_default(&o, i);
-        row = Py_BuildValue("(ssNNNNN)", d->name, d->doc, opts, PyBool_FromLong(d->field != NULL),
-                            PyBool_FromLong(d->saturates),
+        row = Py_BuildValue("(ssNNNNNN)", d->name, d->doc, opts,
+                            PyBool_FromLong(d->field != NULL), PyBool_FromLong(d->saturates),
                             PyBool_FromLong(rr_creep_workspace_len(&o) == 0),
-                            PyBool_FromLong(d->coulomb_only));
+                            PyBool_FromLong(d->coulomb_only),
+                            PyBool_FromLong(rr_rig_method_check(&o) == RR_OK));
         if (!row)
             goto fail;
         PyTuple_SET_ITEM(all, i, row);
@@ -2577,6 +2620,8 @@ PyMODINIT_FUNC PyInit__core(void)
         || PyModule_AddIntConstant(m, "ERR_CONTROLLER", RR_ERR_CONTROLLER) < 0
         || PyModule_AddIntConstant(m, "EXACT_MAX_GRID", RR_EXACT_MAX_GRID) < 0
         || PyModule_AddIntConstant(m, "EXACT_MARGIN", RR_EXACT_MARGIN) < 0
+        || PyModule_AddIntConstant(m, "ERR_FRICTION_LIMIT", RR_ERR_FRICTION_LIMIT) < 0
+        || PyModule_AddIntConstant(m, "ERR_UNTRUSTED", RR_ERR_UNTRUSTED) < 0
         || add_rows(m, "RIG_PARAMETERS", rr_rig_param_count(), param_tuple) < 0
         || add_rows(m, "RIG_SECTIONS", rr_rig_section_count(), section_tuple) < 0
         || add_rows(m, "RIG_RETIRED", rr_rig_retired_count(), retired_tuple) < 0

@@ -311,7 +311,7 @@ def _fmu(args):
 
 def build_parser():
     from ._binding import METHODS
-    loop_methods = [name for name, m in METHODS.items() if m.in_loop]   # the rig's
+    rig_methods = [name for name, m in METHODS.items() if m.in_rig]
     parser = _Parser(
         prog="rollerrig",
         description="Real-time simulation of a scaled railway roller rig.",
@@ -331,8 +331,8 @@ def build_parser():
                    "scenario's duration_s, 20); the scenario's target start times are kept "
                    "when they fall inside it, otherwise scaled to it (with a warning)")
     p.add_argument("--dt", type=float, help="control sample time and step [s] (default 0.004)")
-    p.add_argument("--method", choices=loop_methods, metavar="METHOD",
-                   help=f"creep-force method of the time loop: {', '.join(loop_methods)} "
+    p.add_argument("--method", choices=rig_methods, metavar="METHOD",
+                   help=f"creep-force method of the rig: {', '.join(rig_methods)} "
                    f"(default the scenario's contact.creep_method)")
     p.add_argument("--record-every", type=_positive_int, default=1, metavar="K",
                    help="record every K-th sample only (long runs: the records are capped "

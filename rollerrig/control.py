@@ -71,32 +71,49 @@ def rig_info(info):
     return RigInfo(**{k: info[k] for k in RigInfo._fields})
 
 
+def safe_repr(value, how=repr):
+    """repr (or str) of a value of the user's, or a stand-in if that raises."""
+    try:
+        return how(value)
+    except Exception as exc:
+        return f"<{type(value).__name__} whose {how.__name__}() raised {type(exc).__name__}>"
+
+
 def command(out, s):
     """(roller_mode, roller_ref, wheelset_mode, wheelset_ref) of a
     controller's return value `out` at signals s; ValueError naming what
-    is wrong.  NaN and infinities pass: the C rig refuses them."""
+    is wrong (a mapping whose items() raises, a value whose float() does).
+    NaN and infinities pass: the C rig refuses them."""
     roller = (_core.CMD_BUILTIN, s.roller_ref)
     wheelset = (_core.CMD_BUILTIN, s.xi_ref)
     if out is None:
         return roller + wheelset
     if not hasattr(out, "items"):
-        raise ValueError(f"it returned {type(out).__name__} {out!r:.60}, not a dict of "
-                         f"references ({', '.join(COMMANDS)}) or None")
+        raise ValueError(f"it returned {type(out).__name__} {safe_repr(out):.60}, not a dict "
+                         f"of references ({', '.join(COMMANDS)}) or None")
+    try:
+        items = list(out.items())
+    except Exception as exc:
+        raise ValueError(f"it returned a {type(out).__name__} whose items() raised "
+                         f"{type(exc).__name__}: {safe_repr(exc, str):.80}") from exc
     given = {}
-    for key, value in out.items():
-        if key not in COMMANDS:
-            raise ValueError(f"it returned the unknown key {key!r:.40} (the keys are "
+    for key, value in items:
+        if not isinstance(key, str) or key not in COMMANDS:
+            raise ValueError(f"it returned the unknown key {safe_repr(key):.40} (the keys are "
                              f"{', '.join(COMMANDS)})")
         drive, mode = COMMANDS[key]
         if drive in given:
             raise ValueError(f"it returned both {given[drive]!r} and {key!r} for the {drive}")
         given[drive] = key
         if not isinstance(value, numbers.Real) or isinstance(value, bool):
-            raise ValueError(f"it returned {key} = {value!r:.40}, not a real number")
+            raise ValueError(f"it returned {key} = {safe_repr(value):.40}, not a real number")
         try:
             ref = float(value)
         except OverflowError:
             ref = math.inf
+        except Exception as exc:
+            raise ValueError(f"it returned {key} = a {type(value).__name__} whose float() "
+                             f"raised {type(exc).__name__}: {safe_repr(exc, str):.80}") from exc
         if drive == "roller":
             roller = (mode, ref)
         else:

@@ -46,7 +46,7 @@ from . import _core
 from . import control as _control
 from ._errors import RollerRigError, RollerRigWarning, status_message
 from ._optional import require
-from ._binding import METHODS, _as_float, check_creep_options, core, loop_method
+from ._binding import METHODS, _as_float, check_creep_options, core, loop_method, rig_method
 from .geometry import MAX_ROWS, ContactTable, RigGeometry
 from .profiles import Profile
 
@@ -57,7 +57,7 @@ except ImportError:                                     # Python < 3.11
 
 __all__ = ["PARAMETERS", "default_parameters", "load_parameters", "check_parameters", "build_rig", "Rig",
            "simulate", "replay", "RigResult", "RECORD_FIELDS", "RECORD_UNITS",
-           "RECORD_BYTES_CAP"]
+           "RECORD_BYTES_CAP", "RIG_METHODS"]
 
 DEFAULTS_PATH = os.path.join(os.path.dirname(__file__), "data", "rig_default.toml")
 
@@ -105,6 +105,21 @@ ODE_METHODS = _PARAMETER["integration.method"].choices
 #: control sample time [s], simulated time [s] (27.8 h)
 MIN_DT, MAX_DT = _PARAMETER["scenario.control_sample_time_s"][4:6]
 MAX_DURATION = _PARAMETER["scenario.duration_s"].hi
+#: the creep-force methods the rig steps with (the registry's in_rig: no
+#: workspace, and |F| <= mu N; csrc/rig/rr_rig.h, rr_rig_method_check)
+RIG_METHODS = tuple(name for name, m in METHODS.items() if m.in_rig)
+#: a run whose samples did not converge more often than UNTRUSTED_SHARE of
+#: them, and in at least UNTRUSTED_MIN samples, ends with status ERR_UNTRUSTED
+#: (-19): the integrator fails again and again, its results cannot be
+#: trusted.  Measured against the same runs converged (20 substeps, 3 Newton
+#: iterations): the paper's scenario at 8 ms (208 of 2500 samples not
+#: converged) misses its creepage by 40 % rms, mu0 stepped from 0.1 to 0.8
+#: (24 of 100) by 89 %, a start from rest at 2 m/s (45 of 150) by 124 %;
+#: the paper's at 4 ms (none) by 1.2 %.  A transient (a braking onset, a
+#: step of the adhesion) leaves a few such samples, a warning (status 1):
+#: in the tests' short runs 1 to 6 (up to 1 in 15)
+UNTRUSTED_SHARE = 0.05
+UNTRUSTED_MIN = 20
 MAX_PARAMETER_FILE_BYTES = 1 << 20  # the default file is 12 kB
 
 
@@ -471,6 +486,9 @@ def check_parameters(params=None, *, source="check_parameters: params"):
     P, problems = _parameter_problems(params)
     if problems:
         raise _error(source, problems)
+    scaled = _scaled_starts(params, P)
+    if scaled:
+        warnings.warn(f"{source}: {scaled}", RollerRigWarning, stacklevel=2)
     return P
 
 
@@ -480,7 +498,46 @@ def _parameter_problems(params):
     problems = []
     if params:
         _merge(P, copy.deepcopy(params), problems)
+        _scale_starts(params, P)
     return P, problems + _check_values(P)
+
+
+def _starts_not_given(params, P):
+    """True where params set scenario.duration_s (valid) but not
+    scenario.target_start_s, and the default start times do not all fall
+    inside that duration."""
+    S = params.get("scenario") if isinstance(params, dict) else None
+    if not (isinstance(S, dict) and "duration_s" in S and "target_start_s" not in S):
+        return False
+    duration = P["scenario"]["duration_s"]
+    if _real(0.0, MAX_DURATION, lo_open=True)(duration):
+        return False
+    return _defaults()["scenario"]["target_start_s"][-1] >= duration
+
+
+def _scale_starts(params, P):
+    """One rule for a duration too short for the target start times, whether
+    scenario.duration_s or simulate's duration gives it: start times the
+    caller did not give (the defaults, written for the default duration)
+    are scaled to the duration, as simulate(duration=...) scales the
+    scenario's (_target_schedule); start times given with a duration they do
+    not fit are refused (_check_values)."""
+    if _starts_not_given(params, P):
+        D = _defaults()["scenario"]
+        scale = P["scenario"]["duration_s"] / D["duration_s"]
+        P["scenario"]["target_start_s"] = [x * scale for x in D["target_start_s"]]
+
+
+def _scaled_starts(params, P):
+    """The warning's text where _scale_starts scaled the start times, else ""."""
+    if not _starts_not_given(params, P):
+        return ""
+    D = _defaults()["scenario"]
+    return (f"the default target start times {D['target_start_s']} s (for the default "
+            f"scenario.duration_s = {D['duration_s']:g} s; scenario.target_start_s not given) "
+            f"do not all fall inside scenario.duration_s = {P['scenario']['duration_s']:g} s: "
+            f"scaled by {P['scenario']['duration_s'] / D['duration_s']:g} to "
+            f"{[float(f'{x:.6g}') for x in P['scenario']['target_start_s']]} s")
 
 
 def _parameters(func, params):
@@ -570,17 +627,20 @@ CREEP_OPTIONS = tuple(dict.fromkeys(o for m in METHODS.values() for o in m.optio
                                     if o not in ("nx", "ny")))
 
 
-def _creep_options(func, P, method, nx, ny, creep):
+def _creep_options(func, P, method, nx, ny, creep, in_rig=True):
     """The creep-force method and its options: the parameters' contact
     section (the keys of _FILE_OPTIONS the method has), overridden by the
     caller's (method, nx, ny, and `creep`: the method's options); checked
-    by the registry.  Returns the keywords for the binding (method=...)."""
+    by the registry.  in_rig: a method the rig steps with (RIG_METHODS),
+    else one its contact model takes (replay).  Returns the keywords for
+    the binding (method=...)."""
     C = P["contact"]
     method = method if method is not None else C["creep_method"]
     if not (isinstance(method, str) and method in METHODS):
         raise RollerRigError(f"{func}: method must be one of {', '.join(map(repr, METHODS))}, "
                              f"got {method!r:.60}")
-    if loop_method(func, method).coulomb_only and C["friction_law"] != "coulomb":
+    info = rig_method(func, method) if in_rig else loop_method(func, method)
+    if info.coulomb_only and C["friction_law"] != "coulomb":
         raise RollerRigError(f"{func}: method {method!r} is built for Coulomb friction; the "
                              f"parameters' contact.friction_law is {C['friction_law']!r} "
                              f"(set it to 'coulomb')")
@@ -741,9 +801,12 @@ class Rig:
         return _control.rig_info(self._core.info)
 
 
-def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, creep):
-    """(the C rig, dt, roller speed [m/s], creep options) of checked parameters P."""
+def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, creep,
+           given_dt=None):
+    """(the C rig, dt, roller speed [m/s], creep options) of checked parameters P;
+    given_dt: whether the caller gave dt (default: dt not None), for messages."""
     S, I = P["scenario"], P["integration"]
+    given_dt = dt is not None if given_dt is None else given_dt
     dt = _check_dt(func, dt if dt is not None else S["control_sample_time_s"])
     substeps = substeps if substeps is not None else I["substeps"]
     if _integer(1, 1000)(substeps):
@@ -752,6 +815,8 @@ def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, c
     ode = ode if ode is not None else I["method"]
     if ode not in ODE_METHODS:
         raise RollerRigError(f"{func}: ode must be one of {sorted(ODE_METHODS)}, got {ode!r}")
+    _check_loops(func, P, _c_params(P, dt, int(substeps), ode),
+                 "dt" if given_dt else "scenario.control_sample_time_s")
     opts = _creep_options(func, P, method, nx, ny, creep)
     c_opts = opts
     V = _real_arg(func, "roller_speed", roller_speed if roller_speed is not None
@@ -778,6 +843,35 @@ def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, c
         named = f"the rig cannot start with {', '.join(culprits)}: " if culprits else ""
         raise RollerRigError(f"{func}: {named}{e}") from None
     return Rig(rig), table, dt, V, opts["method"]
+
+
+def _check_loops(func, P, cp, name):
+    """Refuse a sample time at which a drive's sampled speed loop is
+    unstable (csrc/rig/rr_rig.h, rr_rig_speed_loops; the C rig refuses it
+    too): the message names the drive, the settings its loop depends on and
+    the sample times at which it is stable (rr_speed_loop_range)."""
+    R, W = P["roller_drive"], P["wheelset_drive"]
+    settings = (
+        f"roller_drive.kp_N_m_s_per_rad = {R['kp_N_m_s_per_rad']:g}, ki_N_m_s_per_rad = "
+        f"{R['ki_N_m_s_per_rad']:g} and lag_time_constant_s = {R['lag_time_constant_s']:g} on "
+        f"roller.inertia_kg_m2 = {P['roller']['inertia_kg_m2']:g}",
+        f"wheelset_drive.kp_N_m_s_per_rad = {W['kp_N_m_s_per_rad']:g}, ki_N_m_s_per_rad = "
+        f"{W['ki_N_m_s_per_rad']:g} and lag_time_constant_s = {W['lag_time_constant_s']:g} on "
+        f"wheelset.spin_inertia_kg_m2 + wheelset_drive.drive_inertia_kg_m2 = "
+        f"{P['wheelset']['spin_inertia_kg_m2'] + W['drive_inertia_kg_m2']:g}, within eq. 13's "
+        f"creepage_controller.alpha = {P['creepage_controller']['alpha']:g}")
+    dt = cp["scenario.control_sample_time_s"]
+    for drive, text, (stable, rho, lo, hi) in zip(("roller", "wheelset"), settings,
+                                                  core(_core.rig_speed_loops, cp)):
+        if stable:
+            continue
+        where = (f"it is stable for sample times from {lo:.3g} to {hi:.3g} s"
+                 if not math.isnan(lo) else
+                 f"it is stable at no sample time from {MIN_DT:g} to {MAX_DT:g} s")
+        raise RollerRigError(
+            f"{func}: {name} = {dt:g} s: the {drive} drive's sampled speed loop ({text}) is "
+            f"unstable at this sample time (its largest closed-loop pole |z| = {rho:.4g}); "
+            f"{where}")
 
 
 def _culprits(P, given_V, make):
@@ -816,7 +910,8 @@ def build_rig(params=None, *, dt=None, method=None, substeps=None, ode=None, nx=
     params:  None (the defaults), a nested dict overriding rig_default.toml
              or the path of a TOML file doing so; checked by
              check_parameters (one RollerRigError listing every problem)
-    dt:      control sample time [s], 1e-6 to 0.1 (default
+    dt:      control sample time [s], 1e-6 to 0.1 where the drives'
+             sampled speed loops are stable (as simulate; default
              scenario.control_sample_time_s, 4 ms)
     method, nx, ny, **creep: the creep-force method, its FASTSIM grid and
              options (CREEP_OPTIONS: bound, grid, slip_speed, blend_rule, k0,
@@ -855,13 +950,18 @@ class RigResult:
     status:       0 the run finished; > 0 it finished but some samples
                   warned (1: an inner iteration, e.g. the integrator's Newton
                   iteration, ended above its tolerance; the samples'
-                  sample_status say which); < 0 it stopped at a sample
-                  whose state could not be computed (-1 NaN, -2 a normal
-                  load not positive: lift-off, -3 a wheel off its roller,
-                  -11 a singular system; rollerrig.status_message(status)),
-                  and the records end at the last good sample
-    message:      "ok", "ok with warnings: ..." (how many samples), or when
-                  and why the run stopped
+                  sample_status say which); -19 (ERR_UNTRUSTED) it finished
+                  but more than one sample in 20 warned (20 samples at
+                  least): its records are all there, not to be trusted;
+                  other < 0: it stopped at a sample whose state could not
+                  be computed (-1 NaN, -2 a normal load not positive:
+                  lift-off, -3 a wheel off its roller, -11 a singular
+                  system, -18 a creep force beyond mu N;
+                  rollerrig.status_message(status)), and the records end at
+                  the last good sample
+    message:      "ok", "ok with warnings: ..." (how many samples), "not to
+                  be trusted: ..." (how many), or when and why the run
+                  stopped
     wall:         wall-clock seconds: "setup" (parameters, contact table: a
                   one-off, as the paper's offline database) and "run" (the
                   stepping loop)
@@ -964,12 +1064,18 @@ class RigResult:
         over the last 80 % of its interval) [-]; "settling_s", the settling
         time [s] (when the creepage's running mean over `window` seconds
         first comes within tol of the target; eq. 14's recovery steps then
-        make a small sawtooth about it); "adhesion", the adhesion
-        coefficient held [-]; "peak_force_over_muN", the peak |fx| / (mu0 N)
-        over the interval.  The creepage is taken in the drive's sense
-        (braking cx, traction -cx).  Windows are in seconds, so decimated
-        records (record_every > 1) give the same rows to within their
-        spacing.  NaN where an interval holds fewer records than the window."""
+        make a small sawtooth about it; NaN if it never does); "adhesion",
+        the adhesion coefficient held [-]; "peak_force_over_muN", the peak
+        |fx| / (mu0 N) over the interval.  The creepage is taken in the
+        drive's sense (braking cx, traction -cx).  Windows are in seconds,
+        so decimated records (record_every > 1) give the same rows to within
+        their spacing.  NaN where an interval holds fewer records than the
+        window (table() says so, and why)."""
+        return [row for row, _ in self._summary(tol, window)]
+
+    def _summary(self, tol, window):
+        """summary()'s rows, each with the reason its numbers are NaN ("" if
+        none is)."""
         mu0 = self.params["scenario"]["mu0"]
         sense = -1.0 if self.params["scenario"].get("drive_mode") == "traction" else 1.0
         rows = []
@@ -980,8 +1086,13 @@ class RigResult:
         for xi, t0, t1 in zip(self.targets, self.target_times, ends):
             sel = (t > t0) & (t <= t1) & np.isfinite(creepage)
             if np.count_nonzero(sel) < k:
-                rows.append(dict(target=xi, reached=np.nan, settling_s=np.nan,
-                                 adhesion=np.nan, peak_force_over_muN=np.nan))
+                held = min(t1, self.duration) - t0
+                why = (f"the run stopped at t = {self.duration:.4g} s, before it"
+                       if self.status < 0 and held <= 0 else
+                       f"too short to judge: its interval holds {max(held, 0.0):.3g} s of "
+                       f"records, the running mean takes {window:g} s")
+                rows.append((dict(target=xi, reached=np.nan, settling_s=np.nan,
+                                  adhesion=np.nan, peak_force_over_muN=np.nan), why))
                 continue
             ts, cr = t[sel], creepage[sel]
             held = ts >= ts[0] + 0.2 * (ts[-1] - ts[0])
@@ -989,19 +1100,26 @@ class RigResult:
             inside = np.flatnonzero(np.abs(mean - xi) <= tol * abs(xi))
             settle = ts[k - 1 + inside[0]] - t0 if inside.size else np.nan
             peak = np.max(np.abs(self.fx[sel]) / (mu0 * self.normal_load[sel]))
-            rows.append(dict(target=xi, reached=float(np.mean(cr[held])),
-                             settling_s=float(settle),
-                             adhesion=float(np.mean(self.adhesion[sel][held])),
-                             peak_force_over_muN=float(peak)))
+            why = "" if inside.size else (f"settling: the running mean never came within "
+                                          f"{tol:.0%} of the target")
+            rows.append((dict(target=xi, reached=float(np.mean(cr[held])),
+                              settling_s=float(settle),
+                              adhesion=float(np.mean(self.adhesion[sel][held])),
+                              peak_force_over_muN=float(peak)), why))
         return rows
 
     def table(self, tol=0.05):
-        """summary() as aligned text."""
+        """summary() as aligned text; a value that is NaN shows as "-", with
+        the reason at the end of its row."""
+        def cell(v, width, fmt):
+            return f"{v:{width}{fmt}}" if np.isfinite(v) else f"{'-':>{width}}"
         lines = [f"{'target':>8} {'reached':>9} {'settling s':>10} {'adhesion':>9} "
                  f"{'peak F/muN':>10}"]
-        for r in self.summary(tol):
-            lines.append(f"{r['target']:8.3f} {r['reached']:9.5f} {r['settling_s']:10.3f} "
-                         f"{r['adhesion']:9.4f} {r['peak_force_over_muN']:10.4f}")
+        for r, why in self._summary(tol, 0.25):
+            lines.append(f"{r['target']:8.3f} {cell(r['reached'], 9, '.5f')} "
+                         f"{cell(r['settling_s'], 10, '.3f')} {cell(r['adhesion'], 9, '.4f')} "
+                         f"{cell(r['peak_force_over_muN'], 10, '.4f')}"
+                         f"{'  ' + why if why else ''}")
         return "\n".join(lines)
 
 
@@ -1049,6 +1167,34 @@ def _target_schedule(S, duration, targets, target_times):
     return targets, target_times
 
 
+def _first_sample(t, dt):
+    """The first sample k whose start k dt (as the C schedule computes it,
+    rr_rig_schedule) is at or after t."""
+    k = max(0, math.ceil(t / dt))
+    while k > 0 and (k - 1) * dt >= t:
+        k -= 1
+    while k * dt < t:
+        k += 1
+    return k
+
+
+def _check_targets_applied(targets, target_times, dt, n):
+    """Refuse targets no sample would apply: the schedule gives each sample
+    the target of the last start time at or before its start (k dt), so a
+    target whose interval holds no sample start (it starts within one sample
+    of the next, or after the last sample starts) never reaches the
+    controller, and its row of the summary would be empty."""
+    firsts = [_first_sample(t, dt) for t in target_times] + [n]
+    never = [f"{x:g} from {t:g} s" for x, t, a, b in zip(targets, target_times, firsts,
+                                                          firsts[1:]) if a >= min(b, n)]
+    if never:
+        raise RollerRigError(
+            f"simulate: {len(never)} of the {len(targets)} targets would never be applied "
+            f"({', '.join(never[:5])}{', ...' if len(never) > 5 else ''}): no sample starts "
+            f"between such a target's start and the next's (dt = {dt:g} s, {n} sample"
+            f"{'s' if n > 1 else ''}); lengthen the duration or space the target_times")
+
+
 def _record_plan(n, dt, record_every, max_record_bytes):
     """(record_every, records kept) of a run of n samples, within the cap."""
     if _integer(1, max(1, n))(record_every):
@@ -1077,12 +1223,19 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
 
     duration:  simulated time [s], at least one sample and at most 1e5 s
                (default scenario.duration_s); the run has round(duration /
-               dt) samples
+               dt) samples (a RollerRigWarning says so where that is not
+               the duration)
     dt:        control sample time and integration step [s], 1e-6 to 0.1
-               (default scenario.control_sample_time_s, the paper's 4 ms)
-    method:    creep-force method ("fastsim", "fastsim_blended",
-               "modified_fastsim", "polach", "linear"); nx, ny the FASTSIM
-               grid (default: the parameters' contact section)
+               (default scenario.control_sample_time_s, the paper's 4 ms),
+               at which both drives' sampled speed loops are stable (their
+               PI gains on their inertias through their lags, eq. 10-13;
+               with the default parameters 6.7e-5 to 8.3e-3 s): another is
+               refused before the run, naming the drive and the range
+    method:    creep-force method, one of RIG_METHODS ("fastsim",
+               "fastsim_blended", "modified_fastsim", "polach", "fastrip",
+               "exact_table"; not "linear", which has no friction limit, nor
+               "exact", solved at each step); nx, ny the FASTSIM grid
+               (default: the parameters' contact section)
     params:    None, a nested dict overriding rig_default.toml, e.g.
                {"scenario": {"mu0": 0.3}, "wheelset": {"mass_kg": 15.0}}, or
                the path of a TOML file of the same layout; every problem is
@@ -1098,7 +1251,10 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
                duration; the scenario's own targets start at
                scenario.target_start_s when those all fall inside the
                duration, otherwise at those times scaled by duration /
-               scenario.duration_s, with a RollerRigWarning saying so
+               scenario.duration_s, with a RollerRigWarning saying so (the
+               rule of a scenario.duration_s given without start times:
+               check_parameters).  A target no sample would apply (its
+               interval holds no sample's start) is refused
     roller_speed: roller surface speed [m/s] held by its controller
                (default scenario.roller_speed_m_s)
     start:     "rolling" (wheelset rolling freely at roller_speed) or "rest"
@@ -1129,9 +1285,12 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
                FASTSIM), kA, kS (Polach); see
                rollerrig.creep_forces
     Returns RigResult (its fields, units and status codes are in its
-    docstring).  A run that fails (a wheel off its roller, lift-off, NaN)
-    stops cleanly: the result holds the history so far, its status and
-    message say why.
+    docstring).  A run that fails (a wheel off its roller, lift-off, NaN, a
+    creep force beyond mu N) stops cleanly: the result holds the history so
+    far, its status and message say why.  A run whose samples did not
+    converge more often than UNTRUSTED_SHARE (one in 20), in UNTRUSTED_MIN
+    (20) samples or more, ends with status ERR_UNTRUSTED (-19), its message
+    saying how many.
     """
     t0 = time.perf_counter()
     if controller is not None and not callable(controller):
@@ -1143,16 +1302,23 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     dt = _check_dt("simulate", dt if dt is not None else S["control_sample_time_s"])
     duration = _real_arg("simulate", "duration", duration if duration is not None
                          else S["duration_s"], 0.0, MAX_DURATION, lo_open=True, unit="s")
+    dt_name = "dt" if given_dt else "scenario.control_sample_time_s"
     if duration < dt * (1.0 - 1e-9):
         raise RollerRigError(f"simulate: duration = {duration:g} s is shorter than one "
-                             f"sample (dt = {dt:g} s)"
-                             f"{'' if given_dt else ' of scenario.control_sample_time_s'}")
+                             f"sample ({dt_name} = {dt:g} s)")
     n = max(1, int(round(duration / dt)))
+    # a run of whole samples: say so where that changes the duration (by more
+    # than the rounding of a dt given in single precision, 5e-8)
+    if abs(n * dt - duration) > 1e-6 * duration:
+        warnings.warn(f"simulate: duration = {duration:g} s is not a whole number of samples of "
+                      f"{dt_name} = {dt:g} s: the run takes {n} samples, {n * dt:.9g} s",
+                      RollerRigWarning, stacklevel=2)
     targets, target_times = _target_schedule(S, duration, targets, target_times)
+    _check_targets_applied(targets, target_times, dt, n)
     record_every, kept = _record_plan(n, dt, record_every, max_record_bytes)
     rig, _, dt, V, used = _build("simulate", P, dt=dt, method=method, substeps=substeps,
                                  ode=ode, nx=nx, ny=ny, roller_speed=roller_speed,
-                                 start=start, creep=creep)
+                                 start=start, creep=creep, given_dt=given_dt)
 
     out = np.full((kept, len(RECORD_FIELDS)), np.nan)
     t1 = time.perf_counter()
@@ -1173,6 +1339,12 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     status = status if status < 0 else worst
     if status == 0:
         message = "ok"
+    elif status > 0 and warned > UNTRUSTED_SHARE * stepped and warned >= UNTRUSTED_MIN:
+        message = (f"not to be trusted: {warned} of {stepped} samples did not converge "
+                   f"(sample_status {status}: {status_message(status)}), more than one in "
+                   f"{round(1 / UNTRUSTED_SHARE)}; more integration.substeps or "
+                   f"newton_iterations (or a shorter dt) converge it")
+        status = _core.ERR_UNTRUSTED
     elif status > 0:
         message = (f"ok with warnings: {warned} of {stepped} samples warned "
                    f"(sample_status {status}: {status_message(status)})")
@@ -1233,8 +1405,9 @@ def _run_controlled(rig, controller, P, duration, dt, targets, target_times, V, 
     (rollerrig.control): read, call, write, advance, sample by sample; the
     records' xi_ref is the scenario's target the controller was given.
     Returns as _run_builtin; a controller that raises, or returns what is
-    not a command or a command the rig refuses (NaN), ends the run with a
-    RollerRigError whose .result holds the history so far."""
+    not a command (reading it raises, whatever the exception) or a command
+    the rig refuses (NaN), ends the run with a RollerRigError whose .result
+    holds the history so far."""
     core = rig._core
     stepped, worst, warned, status = 0, 0, 0, 0
 
@@ -1251,8 +1424,8 @@ def _run_controlled(rig, controller, P, duration, dt, targets, target_times, V, 
         try:
             start(rig.info)
         except Exception as exc:
-            fail(0, 0.0, f"its start(info) raised {type(exc).__name__}: {exc}",
-                 _core.ERR_CONTROLLER, exc)
+            fail(0, 0.0, f"its start(info) raised {type(exc).__name__}: "
+                 f"{_control.safe_repr(exc, str)}", _core.ERR_CONTROLLER, exc)
     chunk = max(1, min(n // 50 if progress else n, _CHUNK_SAMPLES))
     for first in range(0, n, chunk):
         stop = min(n, first + chunk)
@@ -1266,15 +1439,18 @@ def _run_controlled(rig, controller, P, duration, dt, targets, target_times, V, 
             try:
                 cmd = controller(s)
             except Exception as exc:
-                fail(k, s.t, f"it raised {type(exc).__name__}: {exc}", _core.ERR_CONTROLLER,
-                     exc)
+                fail(k, s.t, f"it raised {type(exc).__name__}: {_control.safe_repr(exc, str)}",
+                     _core.ERR_CONTROLLER, exc)
             try:
                 modes = _control.command(cmd, s)
-            except ValueError as exc:
-                fail(k, s.t, str(exc), _core.ERR_CONTROLLER)
+            except ValueError as exc:                   # named by command()
+                fail(k, s.t, str(exc), _core.ERR_CONTROLLER, exc.__cause__)
+            except Exception as exc:                    # whatever else reading it raised
+                fail(k, s.t, f"reading what it returned raised {type(exc).__name__}: "
+                     f"{_control.safe_repr(exc, str)}", _core.ERR_CONTROLLER, exc)
             status = core.write(*modes, math.nan)
             if status < 0:
-                fail(k, s.t, f"the rig refused its command {cmd!r:.80}: "
+                fail(k, s.t, f"the rig refused its command {_control.safe_repr(cmd):.80}: "
                      f"{status_message(status)}", status)
             rec, status = core.advance()
             rec[_XI_REF] = s.xi_ref
@@ -1315,7 +1491,7 @@ def replay(res, *, method=None, nx=None, ny=None, **creep):
                              "law, scenario.mu0 with the contact section's")
     friction = (FallingFriction(A=C["polach_A"], B=C["polach_B_s_per_m"])
                 if C["friction_law"] == "polach_falling" else None)
-    opts = _creep_options("replay", P, method, nx, ny, creep)
+    opts = _creep_options("replay", P, method, nx, ny, creep, in_rig=False)
     return rig_contact(_geometry(P), x=res.x, y=res.y, yaw=res.yaw, vx=res.vx, vy=res.vy,
                        yaw_rate=res.yaw_rate, spin=res.spin, roller_spin=res.roller_spin,
                        N_left=res.normal_load_left, N_right=res.normal_load_right,

@@ -193,9 +193,10 @@ def cases(draw, spec, wild_share=4):
 # milliseconds a case, not a time-loop method (the rig refuses it).
 METHODS = tuple(m for m in rr.METHODS if m != "exact")
 FRICTIONAL = tuple(m for m in METHODS if m != "linear")
+# the methods the rig steps with (not the linear theory: no friction limit);
 # the rig's default parameters have falling friction: the Coulomb-only methods
 # (fastrip) are refused there, and tested with Coulomb friction on their own
-RIG_METHODS = tuple(m for m in METHODS if not rr.METHODS[m].coulomb_only)
+RIG_METHODS = tuple(m for m in rr.rig.RIG_METHODS if not rr.METHODS[m].coulomb_only)
 FASTSIMS = ("fastsim", "fastsim_blended", "modified_fastsim")
 _TABLE = rr.exact_table.builtin_table()
 

@@ -383,10 +383,10 @@ def test_profile_extremes():
 
 def test_rig_run_reports_the_worst_status_of_the_whole_run():
     """run() returned the status of its last block of 256 samples only, so
-    warnings early in a run were lost.  At a 10 ms sample (the controllers
-    are tuned for 4 ms) the braking transient warns, free rolling after it
-    does not."""
-    rig = rr.build_rig(dt=0.01)[0]
+    warnings early in a run were lost.  At an 8 ms sample (the controllers
+    are tuned for 4 ms; the roller's loop is stable up to 8.3 ms) the end of
+    the braking transient warns, free rolling after it does not."""
+    rig = rr.build_rig(dt=0.008)[0]
     n = 3000
     rec, status = rig.run(np.full(n, 5 / 0.16), np.where(np.arange(n) < 200, 0.04, np.nan))
     warned = np.flatnonzero(rec[:, -1] > 0)

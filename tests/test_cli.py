@@ -118,7 +118,7 @@ def test_record_every_and_a_short_run(tmp_path, capsys):
     with open(tmp_path / "rig_history.csv") as fh:
         assert len(list(csv.reader(fh))) == 1 + 25
     code, out, err = run_cli(capsys, "--duration", "0.001", "--out", str(tmp_path))
-    assert code == 2 and "duration = 0.001 s is shorter than one sample (dt = 0.004 s)" in err
+    assert code == 2 and "duration = 0.001 s is shorter than one sample (scenario.control_sample_time_s = 0.004 s)" in err
     assert cli.main(["simulate", "--record-every", "0"]) == 2
     assert capsys.readouterr().err == ("rollerrig simulate: argument --record-every: must be "
                                        "an integer >= 1, got '0'\n")
@@ -194,17 +194,18 @@ def test_errors_after_parsing_name_the_option(argv, option, tmp_path, capsys):
 
 def test_methods_offered_are_the_rigs_from_the_registry(capsys):
     """--method's help, its choices and its error list the methods of the
-    registry the rig's time loop runs, and only those."""
+    registry the rig steps with (in_rig), and only those."""
     from rollerrig._binding import METHODS
-    loop = [name for name, m in METHODS.items() if m.in_loop]
+    loop = [name for name, m in METHODS.items() if m.in_rig]
     assert "exact" in METHODS and "exact" not in loop and "exact_table" in loop
+    assert "linear" in METHODS and "linear" not in loop
     action = next(a for a in cli.build_parser().commands["simulate"]._actions
                   if "--method" in a.option_strings)
     assert list(action.choices) == loop and ", ".join(loop) in action.help
     for method in loop:
         assert cli.build_parser().parse_args(["simulate", "--method", method]).method == method
     listed = ", ".join(map(repr, loop))
-    for bad in ("exact", "bogus"):
+    for bad in ("exact", "linear", "bogus"):
         assert cli.main(["simulate", "--method", bad]) == 2
         assert one_line(capsys.readouterr().err) == (
             f"rollerrig simulate: argument --method: invalid choice: {bad!r} (choose from "

@@ -1,6 +1,7 @@
 """A controller of the user's in the rig's loop: simulate(controller=...),
 rollerrig.control, and the binding's Rig.read / Rig.write."""
 import math
+import numbers
 
 import numpy as np
 import pytest
@@ -124,6 +125,54 @@ def test_a_bad_command_stops_the_run_naming_the_sample(returned, says):
     assert len(res) == 100 and res.samples_run == 100 and res.status < 0
     ref = rr.simulate(duration=0.4, targets=[0.04], target_times=[0.2])
     np.testing.assert_array_equal(bits(res.records), bits(ref.records))
+
+
+class _Unreadable(numbers.Real):
+    """A number whose float() raises: numbers.Real in name only."""
+    def __float__(self):
+        raise TypeError("no float for you")
+
+    def __repr__(self):
+        raise RuntimeError("no repr either")
+
+    __abs__ = __add__ = __ceil__ = __eq__ = __floor__ = __floordiv__ = __le__ = __lt__ = \
+        __mod__ = __mul__ = __neg__ = __pos__ = __pow__ = __radd__ = __rfloordiv__ = \
+        __rmod__ = __rmul__ = __round__ = __rpow__ = __rtruediv__ = __truediv__ = \
+        __trunc__ = lambda self, *a: NotImplemented
+    __hash__ = object.__hash__
+
+
+class _BrokenItems(dict):
+    """A mapping whose items() raises."""
+    def items(self):
+        raise KeyError("gone")
+
+
+class _Unhashable(dict):
+    """A mapping with a key that cannot be looked up."""
+    def items(self):
+        return [(["wheelset_torque"], 1.0)]
+
+
+@pytest.mark.parametrize("returned, says, cause", [
+    ({"wheelset_torque": _Unreadable()}, r"wheelset_torque = a _Unreadable whose float\(\) "
+                                         r"raised TypeError: no float for you", TypeError),
+    (_BrokenItems(), r"a _BrokenItems whose items\(\) raised KeyError: 'gone'", KeyError),
+    (_Unhashable(), r"unknown key \['wheelset_torque'\]", None),
+])
+def test_a_command_that_cannot_be_read_stops_the_run_naming_the_sample(returned, says, cause):
+    """Reading what the controller returned raised (its float() or its
+    items()): that exception escaped raw; it is a RollerRigError naming the
+    sample and why, with the exception as its cause and .result kept, as
+    for a controller that raises."""
+    def ctl(s):
+        return None if s.k < 100 else returned
+    with pytest.raises(rr.RollerRigError, match=f"sample 100 \\(t = 0.4000 s\\): .*{says}") \
+            as e:
+        rr.simulate(controller=ctl, **KW)
+    res = e.value.result
+    assert len(res) == 100 and res.status == _core.ERR_CONTROLLER
+    assert cause is None or isinstance(e.value.__cause__, cause)
 
 
 def test_a_controller_that_raises_stops_the_run_with_its_exception_as_cause():

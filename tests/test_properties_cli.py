@@ -38,7 +38,7 @@ from rollerrig.exact_table import ExactTable
 
 assert watchdog  # the autouse hang detector, imported to take effect here
 
-LOOP_METHODS = [name for name, m in METHODS.items() if m.in_loop]
+RIG_METHODS = [name for name, m in METHODS.items() if m.in_rig]
 DEFAULTS = rig.default_parameters()
 NAMES = [p.name for p in rig.PARAMETERS]          # what a scenario file may set
 
@@ -166,7 +166,7 @@ simulate_args = st.fixed_dictionaries(dict(
                     ["-1", "0", "nan", "inf", "1e9", "abc", "", "0.001", "1e-300"]
                     ).map(lambda v: ["--duration", v]),
     dt=_opt("--dt", ["0.004", "0.002", "0.01"], ["0", "-0.004", "0.2", "nan", "x", "1e-7"]),
-    method=_opt("--method", LOOP_METHODS, ["exact", "bogus", ""]),
+    method=_opt("--method", RIG_METHODS, ["exact", "linear", "bogus", ""]),
     record=_opt("--record-every", ["1", "3"], ["0", "-2", "x", "100000"]),
     out=mostly(["new", "nested", "existing"],
                ["a_file", "file_parent", "history_folder", "force_symlink", "creepage_fifo",

@@ -84,27 +84,45 @@ def test_methods_and_named_arrays():
         assert set(res.wall) == {"setup", "run"} and min(res.wall.values()) > 0
 
 
-def test_unbounded_linear_theory_is_held_by_the_torque_limit():
-    """The linear theory does not saturate: braked toward 2 % creepage its
-    force grows with the creepage until the wheelset drive's torque limit
-    binds (Tmax / r, 1.5 mu N).  The run stays stable and clean; the force
-    exceeding mu N is the linear theory's known flaw, and the table reports
-    the target as not reached."""
-    res = rr.simulate(duration=1.0, targets=[0.02], method="linear")
-    P = rr.default_parameters()
-    assert res.status == 0 and np.all(np.isfinite(res.fx))
-    row = res.summary()[0]
-    assert row["reached"] < 0.2 * 0.02 and row["peak_force_over_muN"] > 1.3
-    held = np.abs(res.fx[res.time > 0.5])
-    # the drive's torque over the rolling radius of the centred wheelset;
-    # 3 %: at 1.5 mu N the normal loads double and the wheelset moves along
-    # the rollers, which Tmax / r ignores (measured 2.1 %; 0.05 % in the
-    # paper's scenario, test above)
-    _, _, table = rr.build_rig()
-    radius = float(table.lookup(0.0).left.r[0])
-    limit = P["wheelset_drive"]["torque_limit_N_m"] / radius
-    assert held.max() - held.min() < 1e-3 * held.max()
-    assert held.mean() == pytest.approx(limit, rel=0.03)
+def test_the_rig_refuses_the_linear_theory_whose_force_has_no_limit():
+    """Kalker's linear theory does not saturate: braked toward 2 % creepage
+    its force grew past mu N to the wheelset drive's torque limit (1.53
+    mu0 N, adhesion 0.61 with mu0 = 0.4), reported as a success.  The rig
+    refuses it, by the registry's rule (csrc/rig/rr_rig.h,
+    rr_rig_method_check), which RIG_METHODS and METHODS[m].in_rig follow;
+    its contact model still evaluates it (replay, rig_contact)."""
+    with pytest.raises(rr.RollerRigError, match=r"simulate: method 'linear' has no friction "
+                                                r"limit .*the rig runs 'fastsim', "):
+        rr.simulate(duration=1.0, targets=[0.02], method="linear")
+    with pytest.raises(rr.RollerRigError, match="build_rig: method 'linear' has no friction"):
+        rr.build_rig(method="linear")
+    with pytest.raises(rr.RollerRigError, match="method 'linear' has no friction limit"):
+        rr.simulate(duration=0.1, targets=[0.02], params={"contact": {"creep_method": "linear"}})
+    assert "linear" not in rr.rig.RIG_METHODS and "exact" not in rr.rig.RIG_METHODS
+    assert rr.rig.RIG_METHODS == tuple(m for m, info in rr.METHODS.items()
+                                       if info.in_loop and info.saturates)
+    assert not rr.METHODS["linear"].in_rig and rr.METHODS["fastsim"].in_rig
+    res = rr.simulate(duration=0.4, targets=[0.02])
+    assert np.all(np.isfinite(rr.replay(res, method="linear").left.fx))
+
+
+def test_a_creep_force_beyond_mu_N_stops_the_run_whatever_the_method():
+    """The rig's post-condition on every contact evaluation: a wheel's
+    tangential force beyond mu0 N (1e-9 for rounding) is an error (status
+    -18), never an adhesion reported as measured.  FaStrip on CONTACT's
+    grid (geometry="contact", pressure not summed to N) passes mu N by
+    6.5 % on a 5 x 5 grid (rollerrig.METHODS: "may pass mu N"); braked into
+    saturation it used to report adhesion above mu0 with status 0."""
+    res = rr.simulate(duration=2.0, targets=[0.04], method="fastrip", geometry="contact",
+                      nx=5, ny=5, params={"contact": {"friction_law": "coulomb"}})
+    assert res.status == -18 == rr._core.ERR_FRICTION_LIMIT
+    assert res.message.startswith("stopped at t = ") and "exceeds mu N" in res.message
+    mu0 = res.params["scenario"]["mu0"]
+    assert len(res) and np.all(res.adhesion <= mu0 * (1 + 1e-9))
+    # on the ellipse's strips (the default) it keeps the limit, and runs on
+    ok = rr.simulate(duration=2.0, targets=[0.04], method="fastrip", nx=5, ny=5,
+                     params={"contact": {"friction_law": "coulomb"}})
+    assert ok.status >= 0 and len(ok) == 500
 
 
 def reference_run(duration, targets, rtol=1e-7):

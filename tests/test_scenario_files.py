@@ -5,6 +5,7 @@ rollerrig simulate --scenario)."""
 import os
 import re
 
+import numpy as np
 import pytest
 
 import rollerrig as rr
@@ -190,7 +191,28 @@ def test_targets_and_start_times_must_agree():
         check_parameters({"scenario": {"targets": [0.02, 0.03], "target_start_s": [1.0, 1.0]}})
     with pytest.raises(rr.RollerRigError, match="scenario.target_start_s must fall inside "
                                                 "scenario.duration_s = 2.0 s"):
-        check_parameters({"scenario": {"duration_s": 2.0}})
+        check_parameters({"scenario": {"duration_s": 2.0, "target_start_s": [0, 5, 10, 15]}})
+
+
+def test_a_short_duration_scales_the_default_start_times_in_a_file_as_in_simulate(tmp_path):
+    """One rule for a duration shorter than the target start times: given
+    as scenario.duration_s without start times (they are the defaults', for
+    20 s), it scales them as simulate(duration=...) does, with a warning; it
+    was refused, while duration=2 scaled them.  Start times given with a
+    duration they do not fit are still refused (above)."""
+    warned = r"do not all fall inside scenario.duration_s = 2 s: scaled by 0.1 to " \
+             r"\[0.0, 0.5, 1.0, 1.5\] s"
+    with pytest.warns(rr.RollerRigWarning, match=warned):
+        P = check_parameters({"scenario": {"duration_s": 2.0}})
+    assert P["scenario"]["target_start_s"] == [0.0, 0.5, 1.0, 1.5]
+    path = tmp_path / "short.toml"
+    path.write_text("[scenario]\nduration_s = 2.0\n")
+    with pytest.warns(rr.RollerRigWarning, match=warned):
+        from_file = rr.simulate(params=str(path))
+    with pytest.warns(rr.RollerRigWarning, match="scaled by 0.1 to"):
+        from_argument = rr.simulate(duration=2.0)
+    assert from_file.target_times == from_argument.target_times == (0.0, 0.5, 1.0, 1.5)
+    np.testing.assert_array_equal(from_file.records, from_argument.records)
 
 
 def test_scenario_start_times_under_another_duration(tmp_path, capsys):

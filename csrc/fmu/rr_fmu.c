@@ -198,13 +198,13 @@ static int creep_slot(const rr_rig_param *row)
     return -1;
 }
 
-/* A method the rig can step with (no workspace: not the exact solver). */
+/* A method the rig can step with (rr_rig_method_check: no workspace, |F| <= mu N). */
 static int method_usable(int method)
 {
     rr_creep_opts o;
     if (rr_creep_opts_default(&o, method) != RR_OK)
         return 0;
-    return rr_creep_workspace_len(&o) == 0;
+    return rr_rig_method_check(&o) == RR_OK;
 }
 
 /* A creep row's default as text (its TOML text without the quotes). */
@@ -911,15 +911,40 @@ static int table_for(rr_fmu *m, const rr_rig_config *c)
     return RR_OK;
 }
 
+/* The refusal of a sample time at which a drive's speed loop is unstable:
+ * which drive, and the sample times at which it is stable. */
+static int loop_fail(rr_fmu *m, const rr_rig_config *c, int st)
+{
+    static const char *const drive[2] = {"roller", "wheelset"};
+    rr_speed_loop loops[2];
+    double lo, hi;
+    char T[32];
+    int k = 0;
+    rr_rig_config_speed_loops(c, loops);
+    while (k < 1 && rr_speed_loop_check(&loops[k]) != RR_ERR_PARAM)
+        k++;
+    rr_fmu_format_number(c->T, T, sizeof T);
+    if (rr_speed_loop_range(&loops[k], RR_RIG_MIN_T, RR_RIG_MAX_T, &lo, &hi) != RR_OK)
+        return fail(m, st, "scenario.control_sample_time_s = %s s: the %s drive's sampled speed "
+                    "loop (its PI gains on its inertia through its lag) is stable at no sample "
+                    "time from %g to %g s", T, drive[k], RR_RIG_MIN_T, RR_RIG_MAX_T);
+    return fail(m, st, "scenario.control_sample_time_s = %s s: the %s drive's sampled speed "
+                "loop (its PI gains on its inertia through its lag) is unstable at this "
+                "sample time; it is stable from %.3g to %.3g s", T, drive[k], lo, hi);
+}
+
 /* The rig's parameters of the configuration, into *p (its table m's). */
 static int derive(rr_fmu *m, const rr_fmu_config *f, rr_rig_params *p)
 {
     const char *bad = NULL;
     rr_creep_opts o;
     int st;
-    if ((st = rr_rig_config_check(&f->c, &bad)) < 0)
+    if ((st = rr_rig_config_check(&f->c, &bad)) < 0) {
+        if (st == RR_ERR_PARAM && bad && strcmp(bad, "scenario.control_sample_time_s") == 0)
+            return loop_fail(m, &f->c, st);
         return fail(m, st, "the parameters do not hold together: %s: %s", bad ? bad : "?",
                     rr_status_message(st));
+    }
     if ((st = rr_fmu_creep_opts(f, &o, &bad)) < 0)
         return fail(m, st, "the creep-force method: %s: %s", bad ? bad : "?",
                     rr_status_message(st));

@@ -15,7 +15,11 @@
  * promises: the PI's output and integral within [-Tmax, Tmax] and its
  * saturation flag -1, 0 or 1; the lag's output between its old value and
  * the input; the encoder's count an integer and theta_q = count 2 pi /
- * counts; the creepage controller's K >= 0.
+ * counts; the creepage controller's K >= 0.  A drive's sampled speed loop
+ * (rr_speed_loop): its radius >= 0 (+inf where its numbers overflow), NaN
+ * on error; check agreeing with the radius; no gains and no outer loop
+ * stable (a held speed); its stable range inside the times asked, stable
+ * at both ends, starting at the first time asked where that is stable.
  */
 #include "fuzz.h"
 
@@ -229,6 +233,63 @@ static void check_creepctl(fz_in *in)
     }
 }
 
+static void check_speed_loop(fz_in *in)
+{
+    rr_speed_loop l;
+    double rho = 7.0, lo = 7.0, hi = 7.0, Tlo, Thi;
+    int st, st_check, st_range, invalid;
+
+    l.pi.T = fz_log(in, 1e-6, 0.1);
+    l.pi.Kp = fz_choice(in, 8) == 0 ? 0.0 : fz_log(in, 1e-2, 1e4);
+    l.pi.KI = fz_choice(in, 8) == 0 ? 0.0 : fz_log(in, 1e-3, 1e3);
+    l.pi.Tmax = 100.0;
+    l.J = fz_log(in, 1e-3, 1e2);
+    l.tau = fz_log(in, 1e-5, 0.1);
+    l.alpha = fz_choice(in, 3) == 0 ? 0.0 : fz_log(in, 1e-4, 3.0);
+    Tlo = fz_log(in, 1e-6, 1e-3);
+    Thi = fz_log(in, 1e-3, 1.0);
+    fz_note("speed loop T %.17g, Kp %.17g, KI %.17g, J %.17g, tau %.17g, alpha %.17g; range "
+            "%.17g .. %.17g", l.pi.T, l.pi.Kp, l.pi.KI, l.J, l.tau, l.alpha, Tlo, Thi);
+    invalid = !isfinite(l.pi.Kp) || !isfinite(l.pi.KI) || !isfinite(l.J) || !isfinite(l.tau)
+           || !isfinite(l.alpha) || l.pi.Kp < 0.0 || l.pi.KI < 0.0 || !(l.J > 0.0)
+           || !(l.tau > 0.0) || !(l.alpha >= 0.0);
+    st = rr_speed_loop_radius(&l, &rho);
+    fz_status("rr_speed_loop_radius", st);
+    fz_error("rr_speed_loop_radius", st, invalid || !isfinite(l.pi.T) || !(l.pi.T > 0.0),
+             "an argument is invalid");
+    if (st < 0 && !isnan(rho))
+        fz_fail("rr_speed_loop_radius: error %d with radius %g", st, rho);
+    if (st >= 0 && !(rho >= 0.0))
+        fz_fail("rr_speed_loop_radius: radius %.17g", rho);
+    st_check = rr_speed_loop_check(&l);
+    fz_status("rr_speed_loop_check", st_check);
+    if (st >= 0 && (st_check == RR_OK) != (rho <= 1.0 + RR_SPEED_LOOP_SLACK))
+        fz_fail("rr_speed_loop_check: status %d for radius %.17g", st_check, rho);
+    if (st >= 0 && l.pi.Kp == 0.0 && l.pi.KI == 0.0 && l.alpha == 0.0 && st_check != RR_OK)
+        fz_fail("rr_speed_loop_check: no gains, status %d (radius %.17g)", st_check, rho);
+    st_range = rr_speed_loop_range(&l, Tlo, Thi, &lo, &hi);
+    fz_status("rr_speed_loop_range", st_range);
+    fz_error("rr_speed_loop_range", st_range, invalid || !isfinite(Tlo) || !isfinite(Thi)
+                                                  || !(Tlo > 0.0 && Tlo <= Thi),
+             "an argument is invalid");
+    if (st_range < 0) {
+        if (!isnan(lo) || !isnan(hi))
+            fz_fail("rr_speed_loop_range: error %d with %g .. %g", st_range, lo, hi);
+        return;
+    }
+    if (!(Tlo <= lo && lo <= hi && hi <= Thi))
+        fz_fail("rr_speed_loop_range: %.17g .. %.17g outside %.17g .. %.17g", lo, hi, Tlo, Thi);
+    l.pi.T = lo;
+    if (rr_speed_loop_check(&l) != RR_OK)
+        fz_fail("rr_speed_loop_range: unstable at its lower end %.17g", lo);
+    l.pi.T = hi;
+    if (rr_speed_loop_check(&l) != RR_OK)
+        fz_fail("rr_speed_loop_range: unstable at its upper end %.17g", hi);
+    l.pi.T = Tlo;
+    if (rr_speed_loop_check(&l) == RR_OK && lo != Tlo)
+        fz_fail("rr_speed_loop_range: stable at %.17g but the range starts at %.17g", Tlo, lo);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fz_in in = fz_start(data, size);
@@ -246,10 +307,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         check_creepctl(&in);
         break;
     default: {
-        const int st = fz_range(&in, INT_MIN, INT_MAX);
-        const char *msg = rr_status_message(st);
-        if (!msg || !msg[0])
-            fz_fail("rr_status_message(%d): no message", st);
+        /* (a selector inside this case keeps the older inputs' elements) */
+        if (fz_choice(&in, 2) == 1) {
+            check_speed_loop(&in);
+        } else {
+            const int st = fz_range(&in, INT_MIN, INT_MAX);
+            const char *msg = rr_status_message(st);
+            if (!msg || !msg[0])
+                fz_fail("rr_status_message(%d): no message", st);
+        }
         break;
     }
     }

@@ -13,9 +13,10 @@
  * roller speed; then up to 8 operations with their references and states.
  *
  * Oracles: statuses in range; a rig whose parameters rr_rig_check refuses
- * does not initialise; every record of a success finite (the target is
+ * (among them a method it does not step with, a drive's loop unstable at
+ * T) does not initialise; every record of a success finite (the target is
  * NaN without creepage control, as documented) and carrying its status;
- * each wheel's creep force within mu0 N (frictional methods); after an
+ * each wheel's creep force within mu0 N (every method it steps with); after an
  * error the state is that of the sample's start and the rig refuses to
  * step on; a failing rr_rig_sample or rr_rig_write changes nothing; a
  * reading out of order is refused (RR_ERR_SEQUENCE); a torque command is
@@ -226,10 +227,28 @@ static int adhesion_invalid(const rr_rig_params *p)
         || (a->patch_length > 0.0 && rr_friction_check(&a->patch) != RR_OK);
 }
 
+/* A drive's loop unstable at T (rr_rig_check's rule): each drive turning
+ * its own inertia, the wheelset's inside eq. 13's loop (rr_rig.h). */
+static int loops_unstable(const rr_rig_params *p)
+{
+    rr_speed_loop roller, wheelset;
+    roller.pi = p->roller_pi;
+    roller.J = p->roller_inertia;
+    roller.tau = p->roller_tau;
+    roller.alpha = 0.0;
+    wheelset.pi = p->wheelset_pi;
+    wheelset.J = p->Iyy;
+    wheelset.tau = p->wheelset_tau;
+    wheelset.alpha = p->creepctl.alpha;
+    return rr_speed_loop_check(&roller) != RR_OK || rr_speed_loop_check(&wheelset) != RR_OK;
+}
+
 /* rr_rig_check's documentation, with the elements' own checks. */
 static int params_invalid(const rr_rig_params *p)
 {
-    return adhesion_invalid(p) || !positive(p->mass) || !positive(p->Iyy) || !positive(p->Izz)
+    return adhesion_invalid(p) || loops_unstable(p)
+        || rr_rig_method_check(&p->contact.creep) != RR_OK
+        || !positive(p->mass) || !positive(p->Iyy) || !positive(p->Izz)
         || !positive(p->axlebox_y) || !positive(p->roller_inertia) || !nonneg(p->g)
         || !nonneg(p->kx) || !nonneg(p->ky) || !nonneg(p->kz) || !nonneg(p->cx)
         || !nonneg(p->cy) || !nonneg(p->cz) || !nonneg(p->preload) || !positive(p->T)
@@ -268,8 +287,7 @@ static void check_record(const char *fn, int st, int control, const double *rec)
 static void check_wheels(const char *fn, int st, const rr_rig *rig)
 {
     int k;
-    if (st < 0 || rig->p->contact.creep.method == RR_METHOD_LINEAR || fz_known("extreme", tainted)
-        || fz_known("failed_init", init_failed))
+    if (st < 0 || fz_known("extreme", tainted) || fz_known("failed_init", init_failed))
         return;
     for (k = 0; k < 2; k++)
         if (rig->w[k].status >= 0)       /* each wheel's own law: the adhesion's */

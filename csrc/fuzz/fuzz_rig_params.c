@@ -15,8 +15,11 @@
  * and range (an independent reading of the header); a setter that fails
  * changes no byte of the config, one that succeeds only its member (to the
  * value); rr_rig_config_check's status as predicted from the rows and the
- * scenario's conditions, *bad the row at fault (NULL on success), so that
- * after successful setters only the scenario can fail it; on a config that
+ * scenario's conditions and the drives' loops stable at the sample time
+ * (scenario.control_sample_time_s at fault), *bad the row at fault (NULL on
+ * success), so that after successful setters only the scenario can fail
+ * it; rr_rig_config_speed_loops the loops of rr_rig_params_from's
+ * parameters; on a config that
  * passes, rr_rig_params_from OK with every derived double finite, the
  * default config's equal to rr_rig_params_default bit for bit,
  * rr_rig_geometry_from as documented, rr_rig_samples round(duration / T)
@@ -122,6 +125,27 @@ static int predict_check(const rr_rig_config *c, const char **bad)
             *bad = "adhesion.schedule_times_s";
     if (!*bad && c->patch_length > 2.0 * RR_PI * c->roller_radius)
         *bad = "adhesion.patch_length_m";
+    if (!*bad) {
+        /* each drive's loop stable at T: the roller's PI on the rollers, the
+         * wheelset's on the wheelset with its drive, inside eq. 13's loop */
+        rr_speed_loop roller, wheelset;
+        roller.pi.T = wheelset.pi.T = c->T;
+        roller.pi.Kp = c->roller_kp;
+        roller.pi.KI = c->roller_ki;
+        roller.pi.Tmax = c->roller_tmax;
+        roller.J = c->roller_inertia;
+        roller.tau = c->roller_tau;
+        roller.alpha = 0.0;
+        wheelset.pi.Kp = c->wheelset_kp;
+        wheelset.pi.KI = c->wheelset_ki;
+        wheelset.pi.Tmax = c->wheelset_tmax;
+        wheelset.J = c->spin_inertia + c->drive_inertia;
+        wheelset.tau = c->wheelset_tau;
+        wheelset.alpha = c->ctl_alpha;
+        if (rr_speed_loop_check(&roller) == RR_ERR_PARAM
+            || rr_speed_loop_check(&wheelset) == RR_ERR_PARAM)
+            *bad = "scenario.control_sample_time_s";
+    }
     return *bad ? RR_ERR_PARAM : RR_OK;
 }
 
@@ -317,6 +341,16 @@ static void check_derived(fz_in *in, const rr_rig_config *c)
                     (int)(sizeof vals / sizeof vals[0]));
     }
     (void)v;
+    if (st == RR_OK) {
+        /* the config's loops are those of its parameters, and stable */
+        rr_speed_loop a[2], b[2];
+        rr_rig_config_speed_loops(c, a);
+        rr_rig_speed_loops(&p, b);
+        fz_same("rr_rig_config_speed_loops", b, a, sizeof a, "the loops of rr_rig_params_from");
+        for (k = 0; k < 2; k++)
+            if (rr_speed_loop_check(&a[k]) != RR_OK)
+                fz_fail("rr_rig_config_check: passed with loop %d unstable", k);
+    }
     if (st == RR_OK && rr_creep_opts_check(&p.contact.creep) != RR_OK)
         fz_fail("rr_rig_params_from: the rows' creep options do not pass rr_creep_opts_check");
     rr_rig_config_default(&d);

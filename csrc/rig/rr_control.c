@@ -1,5 +1,6 @@
 /* rr_control.c - PI with limiter, drive lag, encoder, creepage controller (paper section 5). */
 #include <math.h>
+#include <string.h>
 #include "util/rr_common.h"
 #include "rig/rr_control.h"
 
@@ -87,6 +88,207 @@ int rr_pi_update(const rr_pi_params *p, rr_pi_state *s, double w_ref, double w_m
     s->integral = In;
     s->u = clip(p->Kp * e + In, -Tmax, Tmax);
     *torque = s->u;
+    return RR_OK;
+}
+
+/* ---- a drive's sampled speed loop ------------------------------------------ */
+
+#define LOOP_N 5   /* speed, drive torque, angle increment, integral, reference */
+
+static int loop_params_check(const rr_speed_loop *l)
+{
+    int st;
+    if (!l)
+        return RR_ERR_NULL;
+    if ((st = rr_pi_check(&l->pi)) != RR_OK)
+        return st;
+    if (!isfinite(l->J) || !isfinite(l->tau) || !isfinite(l->alpha))
+        return RR_ERR_NONFINITE;
+    if (!(l->J > 0.0) || !(l->tau > 0.0) || !(l->alpha >= 0.0))
+        return RR_ERR_PARAM;
+    return RR_OK;
+}
+
+/*
+ * The transition matrix of the closed loop over one sample T, the states
+ * in units of speed (the torques as the speed change they give over a
+ * sample, T/J times them; the angle increment over the last sample as its
+ * mean speed).  The drive torque m follows the held PI output u through
+ * the lag, m' = (u - m)/tau; the speed w' = m/J.  Over T with a = T/tau,
+ * E = exp(-a), G1 = (1 - E)/a, G2 = (1 - G1)/a:
+ *     w+ = w + G1 m + (1 - G1) u,   m+ = E m + (1 - E) u,
+ *     z+ = w + G2 m + (1/2 - G2) u                    (z: mean speed over it)
+ * and at the sample, with the measured speed z (eq. 12):
+ *     r+ = r - alpha z     (eq. 13's reference, before the PI reads it)
+ *     e = r+ - z,  u = (kp + ki) e + I,  I+ = I + ki e     (eq. 10)
+ * kp = Kp T/J, ki = KI T/J.  The integral without KI, and the reference
+ * without alpha, are constants (an offset, the set point), not states of
+ * the loop: left out, so that their pole at 1 does not hide the loop's.
+ * Returns the order n (3 to 5), the n x n matrix in A; 0 where a number
+ * overflows.
+ */
+static int loop_matrix(const rr_speed_loop *l, double T, double A[LOOP_N * LOOP_N])
+{
+    const double kp = l->pi.Kp * T / l->J, ki = l->pi.KI * T / l->J, a = T / l->tau;
+    const double E = exp(-a), k = kp + ki;
+    /* G2 = (a - 1 + exp(-a))/a^2 loses its digits for small a: its series */
+    const double G1 = -expm1(-a) / a;
+    const double G2 = a < 1e-3 ? 0.5 - a / 6.0 + a * a / 24.0 : (1.0 - G1) / a;
+    /* e and u as rows over the states (w, m, z, I, r) */
+    const double e[LOOP_N] = {0.0, 0.0, -(1.0 + l->alpha), 0.0, 1.0};
+    const double own[3][LOOP_N] = {{1.0, G1, 0.0, 0.0, 0.0},
+                                   {0.0, E, 0.0, 0.0, 0.0},
+                                   {1.0, G2, 0.0, 0.0, 0.0}};
+    const double share[3] = {1.0 - G1, 1.0 - E, 0.5 - G2};
+    double F[LOOP_N * LOOP_N];
+    int keep[LOOP_N], n = 0, i, j;
+    for (j = 0; j < LOOP_N; j++) {
+        const double u = k * e[j] + (j == 3);
+        for (i = 0; i < 3; i++)
+            F[i * LOOP_N + j] = own[i][j] + share[i] * u;
+        F[3 * LOOP_N + j] = (j == 3) + ki * e[j];
+        F[4 * LOOP_N + j] = (j == 4) - (j == 2) * l->alpha;
+    }
+    for (j = 0; j < LOOP_N; j++)
+        if (j < 3 || (j == 3 && ki > 0.0) || (j == 4 && l->alpha > 0.0))
+            keep[n++] = j;
+    for (i = 0; i < n; i++)
+        for (j = 0; j < n; j++)
+            A[i * n + j] = F[keep[i] * LOOP_N + keep[j]];
+    return rr_all_finite(A, n * n) ? n : 0;
+}
+
+/* max row sum of |B|, B n x n */
+static double norm_inf(const double *B, int n)
+{
+    double m = 0.0;
+    int i, j;
+    for (i = 0; i < n; i++) {
+        double s = 0.0;
+        for (j = 0; j < n; j++)
+            s += fabs(B[i * n + j]);
+        m = s > m ? s : m;
+    }
+    return m;
+}
+
+/*
+ * log rho(A) = lim 2^-K log ||A^(2^K)||: with B_0 = A, s_k = ||B_k||,
+ * B_(k+1) = (B_k / s_k)^2, log ||A^(2^K)|| = sum_k 2^(K-k) log s_k + log
+ * ||B_K||, so log rho = sum_k 2^-k log s_k to within 2^-K log of the
+ * eigenvectors' condition: no overflow, and each rounding weighed by 2^-k.
+ */
+static double loop_radius(const double *A, int n)
+{
+    double B[LOOP_N * LOOP_N], C[LOOP_N * LOOP_N], sum = 0.0, w = 1.0;
+    int k, i, j, m;
+    memcpy(B, A, (size_t)(n * n) * sizeof *B);
+    for (k = 0; k < 60; k++, w *= 0.5) {
+        const double s = norm_inf(B, n);
+        if (!(s > 0.0))
+            return 0.0;               /* nilpotent: every pole at 0 */
+        sum += w * log(s);
+        for (i = 0; i < n * n; i++)
+            C[i] = B[i] / s;
+        for (i = 0; i < n; i++)
+            for (j = 0; j < n; j++) {
+                double acc = 0.0;
+                for (m = 0; m < n; m++)
+                    acc += C[i * n + m] * C[m * n + j];
+                B[i * n + j] = acc;
+            }
+    }
+    return exp(sum);
+}
+
+int rr_speed_loop_radius(const rr_speed_loop *l, double *rho)
+{
+    double A[LOOP_N * LOOP_N];
+    int st = rho ? loop_params_check(l) : RR_ERR_NULL, n;
+    if (!rho)
+        return st;
+    *rho = NAN;
+    if (st != RR_OK)
+        return st;
+    n = loop_matrix(l, l->pi.T, A);
+    *rho = n > 0 ? loop_radius(A, n) : INFINITY;
+    return RR_OK;
+}
+
+int rr_speed_loop_check(const rr_speed_loop *l)
+{
+    double rho;
+    const int st = rr_speed_loop_radius(l, &rho);
+    if (st != RR_OK)
+        return st;
+    return rho <= 1.0 + RR_SPEED_LOOP_SLACK ? RR_OK : RR_ERR_PARAM;
+}
+
+/* 1 if the loop is stable at sample time T (parameters checked) */
+static int stable_at(const rr_speed_loop *l, double T)
+{
+    double A[LOOP_N * LOOP_N];
+    const int n = loop_matrix(l, T, A);
+    return n > 0 && loop_radius(A, n) <= 1.0 + RR_SPEED_LOOP_SLACK;
+}
+
+/* the edge between a stable and an unstable time (either order), to 1e-9
+ * relative: the stable end */
+static double edge(const rr_speed_loop *l, double stable, double unstable)
+{
+    int i;
+    for (i = 0; i < 200 && fabs(unstable - stable) > 1e-9 * stable; i++) {
+        const double mid = sqrt(stable * unstable);
+        if (stable_at(l, mid))
+            stable = mid;
+        else
+            unstable = mid;
+    }
+    return stable;
+}
+
+int rr_speed_loop_range(const rr_speed_loop *l, double Tlo, double Thi, double *lo,
+                        double *hi)
+{
+    double first = NAN, last = NAN, prev = NAN;
+    rr_speed_loop at;
+    int st = lo && hi && l ? RR_OK : RR_ERR_NULL, n, i, prev_ok = 0;
+    if (lo)
+        *lo = NAN;
+    if (hi)
+        *hi = NAN;
+    if (st == RR_OK && (!isfinite(Tlo) || !isfinite(Thi)))
+        st = RR_ERR_NONFINITE;
+    if (st == RR_OK && !(Tlo > 0.0 && Tlo <= Thi))
+        st = RR_ERR_PARAM;
+    if (st == RR_OK) {
+        /* the loop's own sample time is not used: checked at Tlo */
+        at = *l;
+        at.pi.T = Tlo;
+        st = loop_params_check(&at);
+    }
+    if (st != RR_OK)
+        return st;
+    /* 40 points a decade, on the logarithms (Thi / Tlo may overflow): the
+     * whole double range is 632 decades, 25 281 points */
+    n = 1 + (int)ceil(40.0 * (log10(Thi) - log10(Tlo)));
+    for (i = 0; i < n; i++) {
+        const double T = i == 0 ? Tlo : i == n - 1 ? Thi
+                       : exp(log(Tlo) + (log(Thi) - log(Tlo)) * i / (n - 1));
+        const int ok = stable_at(l, T);
+        if (ok && isnan(first))
+            first = i == 0 ? T : edge(l, T, prev);
+        if (!ok && prev_ok)
+            last = edge(l, prev, T);
+        if (ok && i == n - 1)
+            last = T;
+        prev = T;
+        prev_ok = ok;
+    }
+    if (isnan(first))
+        return RR_ERR_PARAM;
+    *lo = first;
+    *hi = last;
     return RR_OK;
 }
 

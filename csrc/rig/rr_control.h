@@ -116,6 +116,77 @@ int rr_pi_reset(const rr_pi_params *p, rr_pi_state *s, double torque0);
 int rr_pi_update(const rr_pi_params *p, rr_pi_state *s, double w_ref, double w_m,
                  double *torque);
 
+/* ---- a drive's sampled speed loop: its stability ------------------------- */
+
+/*
+ * A drive's speed loop as the rig closes it once per sample T: the encoder's
+ * estimate (eq. 12: the mean speed over the last sample), the PI (eq.
+ * 10-11, the integral including the present error) whose output is held
+ * over the sample through the drive's first-order lag tau onto an inertia J
+ * turning freely, and around it eq. 13's adaptation of the speed reference:
+ * linearised, the reference moves by -alpha times the measured speed's
+ * change per sample, before the PI reads it (K changes by s alpha dxi and
+ * w_ref = K (r_r/r_w) w_roller, so the radii and speeds cancel); alpha = 0:
+ * a fixed reference.  The limiter is left out (small signals), and so is
+ * the contact: saturated, as under creepage control, its force barely
+ * changes with the speed (the falling friction's slope, 1 % of the gains),
+ * so each drive turns its own inertia alone.
+ * The closed loop is linear with five states (speed, drive torque, angle
+ * increment over the last sample, integral, reference), discretised
+ * exactly (zero-order hold), in units that depend only on Kp T / J,
+ * KI T / J, T / tau and alpha.
+ */
+typedef struct {
+    rr_pi_params pi;   /* T, Kp, KI (Tmax is not used) */
+    double J;          /* inertia the drive turns [kg m^2], > 0 */
+    double tau;        /* drive lag [s], > 0 */
+    double alpha;      /* eq. 13's gain per sample [-], >= 0; 0: no outer loop */
+} rr_speed_loop;
+
+/*
+ * rr_speed_loop_radius - the spectral radius of the closed loop's transition
+ * matrix A (its largest pole's |z|), as lim ||A^m||^(1/m) by 60 normalised
+ * squarings (m = 2^60): robust where the poles crowd near z = 1 at a short
+ * sample, which defeats the characteristic polynomial's roots.
+ *   given:   l
+ *   returns: *rho [-] (a pole at 1, as with zero gains, is a held value:
+ *            rho = 1, not above it); +inf where a number of the loop
+ *            overflows (gains beyond any stable value)
+ *   status:  0; rr_pi_check's status; RR_ERR_NONFINITE (J, tau or alpha);
+ *            RR_ERR_PARAM (J <= 0, tau <= 0, alpha < 0); RR_ERR_NULL.  On
+ *            error *rho is NaN.
+ */
+int rr_speed_loop_radius(const rr_speed_loop *l, double *rho);
+
+/* The loop is taken as stable where rho <= 1 + RR_SPEED_LOOP_SLACK: a pole
+ * on the unit circle (a held value) within the radius' rounding. */
+#define RR_SPEED_LOOP_SLACK 1e-9
+
+/*
+ * rr_speed_loop_check - RR_OK if the loop is stable at its sample time
+ * pi.T (rr_speed_loop_radius <= 1 + RR_SPEED_LOOP_SLACK), RR_ERR_PARAM if
+ * it is not (a controller setting out of range: gains, inertia, lag and
+ * sample time do not go together), or rr_speed_loop_radius's error.
+ */
+int rr_speed_loop_check(const rr_speed_loop *l);
+
+/*
+ * rr_speed_loop_range - the sample times in [Tlo, Thi] at which the loop
+ * (its gains, inertia, lag and alpha; pi.T is not used) is stable: *lo, *hi
+ * the least and the greatest, each from a scan at 40 points a decade
+ * refined by bisection to 1e-9 relative; both NaN if none is (status
+ * RR_ERR_PARAM).  The times between them are not checked: the stable ones
+ * form one interval (too short a sample puts the integral gain per second,
+ * KI / T, beyond what the lag's phase allows; too long a one the sample's
+ * delay beyond what Kp allows), as in 3000 random loops of 2000 times each
+ * (gains, inertias, lags and alpha over 4 to 6 decades).
+ *   status:  0; RR_ERR_PARAM (no stable time, or not 0 < Tlo <= Thi);
+ *            RR_ERR_NONFINITE (Tlo, Thi); rr_speed_loop_radius's errors;
+ *            RR_ERR_NULL.  On error *lo, *hi are NaN.
+ */
+int rr_speed_loop_range(const rr_speed_loop *l, double Tlo, double Thi, double *lo,
+                        double *hi);
+
 /* ---- first-order lag: inverter and traction drive ------------------------- */
 
 typedef struct {

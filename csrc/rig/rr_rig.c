@@ -5,6 +5,8 @@
 #include "rig/rr_rig.h"
 
 #define NS RR_RIG_NSTATE
+/* a creep force may pass mu N by this share (rounding) before it is an error */
+#define FRICTION_ROUNDING 1e-9
 
 static int positive(double v)
 {
@@ -73,7 +75,42 @@ int rr_rig_check(const rr_rig_params *p)
     if (p->roller_pi.T != p->T || p->wheelset_pi.T != p->T || p->roller_enc.T != p->T
         || p->wheelset_enc.T != p->T)
         return RR_ERR_PARAM;
-    return adhesion_check(&p->adhesion, p->contact.R0);
+    if ((st = rr_rig_method_check(&p->contact.creep)) != RR_OK
+        || (st = adhesion_check(&p->adhesion, p->contact.R0)) != RR_OK)
+        return st;
+    {
+        /* the drives' loops stable at T: gains, inertias, lags and sample
+         * time that do not go together are a setting out of range */
+        rr_speed_loop loops[2];
+        int k;
+        rr_rig_speed_loops(p, loops);
+        for (k = 0; k < 2; k++)
+            if ((st = rr_speed_loop_check(&loops[k])) != RR_OK)
+                return st;
+    }
+    return RR_OK;
+}
+
+int rr_rig_method_check(const rr_creep_opts *o)
+{
+    int st;
+    if (!o)
+        return RR_ERR_NULL;
+    if ((st = rr_creep_opts_check(o)) != RR_OK)
+        return st;
+    return rr_creep_workspace_len(o) == 0 && rr_creep_saturates(o) ? RR_OK : RR_ERR_METHOD;
+}
+
+void rr_rig_speed_loops(const rr_rig_params *p, rr_speed_loop loops[2])
+{
+    loops[0].pi = p->roller_pi;
+    loops[0].J = p->roller_inertia;
+    loops[0].tau = p->roller_tau;
+    loops[0].alpha = 0.0;
+    loops[1].pi = p->wheelset_pi;
+    loops[1].J = p->Iyy;
+    loops[1].tau = p->wheelset_tau;
+    loops[1].alpha = p->creepctl.alpha;
 }
 
 /* 0 if the rig can step; else the failed rr_rig_init's status, or
@@ -266,6 +303,11 @@ static int contact_eval(rr_rig *rig, const double *y)
             w->force[j] *= f;
             w->moment[j] *= f;
         }
+        /* whatever the method: a tangential force beyond mu N (mu(w) <= mu0,
+         * rr_friction.h) is an error, never an adhesion the rig reports;
+         * FRICTION_ROUNDING covers the rounding of the sums and the scaling */
+        if (hypot(w->f.fx, w->f.fy) > w->friction.mu0 * w->N * (1.0 + FRICTION_ROUNDING))
+            return RR_ERR_FRICTION_LIMIT;
     }
     memcpy(rig->cache_y, y, sizeof rig->cache_y);
     rig->cache_ok = 1;
@@ -369,20 +411,20 @@ static void jac_const(const rr_rig_params *p, double *J)
  * Creep forces of Kalker's simplified theory, the cubic law
  *     f = -F u/|u|,  F = mu N (1 - (1 - eps)^3),  eps = |u| / (3 mu N),
  * u = (f11 cx, f22 cy), with the falling friction mu at the rigid slip
- * speed |c| V (FASTSIM's creep curve to a few per cent); the linear theory
- * f = -u never saturates.  D (may be NULL): the tangent d f / d c,
+ * speed |c| V (FASTSIM's creep curve to a few per cent); f = -u at zero
+ * creepage.  D (may be NULL): the tangent d f / d c,
  * row-major 2 x 2: along u the curve's slope, across it F/|u| (a saturated
  * contact turns its force with the slip, it does not stiffen).
  */
-static void simplified_forces(const rr_rig *rig, const rr_rig_creep_lin *l, double cx,
-                              double cy, double f[2], double D[4])
+static void simplified_forces(const rr_rig_creep_lin *l, double cx, double cy, double f[2],
+                              double D[4])
 {
     const double ux = l->f11 * cx, uy = l->f22 * cy, u = hypot(ux, uy), c = hypot(cx, cy);
     const double fc[2] = {l->f11, l->f22}, cc[2] = {cx, cy};
     double mu, dmu, e, s2, g3, F, dS[2], uh[2];
     int i, j;
 
-    if (!rig->creep_saturates || !(u > 0.0)) {
+    if (!(u > 0.0)) {
         f[0] = -ux;
         f[1] = -uy;
         if (D) {
@@ -467,7 +509,7 @@ static int linearise(rr_rig *rig, const double *y)
             l->rx[RR_RIG_ROLLER_SPIN] = R / p->roller_inertia;
             l->ry[RR_RIG_VY] = 1.0 / p->mass;
         }
-        simplified_forces(rig, l, l->cx, l->cy, f, l->D);
+        simplified_forces(l, l->cx, l->cy, f, l->D);
         l->fx = f[0];
         l->fy = f[1];
     }
@@ -553,7 +595,7 @@ static int model_cb(void *ctx, double t, const double *y0, const double *z, doub
             dcx += l->dcx[j] * d[j];
             dcy += l->dcy[j] * d[j];
         }
-        simplified_forces(rig, l, l->cx + dcx, l->cy + dcy, f, NULL);
+        simplified_forces(l, l->cx + dcx, l->cy + dcy, f, NULL);
         for (i = 0; i < NS; i++)
             df[i] += l->rx[i] * (f[0] - l->fx) + l->ry[i] * (f[1] - l->fy);
     }
@@ -643,7 +685,6 @@ static int bind(rr_rig *rig, const rr_rig_params *p)
         return RR_ERR_RANGE;
     memcpy(rig->J0, J0, sizeof J0);
     rig->p = p;
-    rig->creep_saturates = rr_creep_saturates(&p->contact.creep);
     rig->creep_slope_scale = rr_creep_slope_scale(&p->contact.creep);
     rig->ode.method = p->method;
     rig->ode.newton_iters = p->newton_iters;

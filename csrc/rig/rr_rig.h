@@ -40,8 +40,8 @@
  * held until the next sample; the plant is then integrated over T in nsub
  * equal steps of a fixed-step L-stable method (rr_ode.h) with an
  * approximate Jacobian (springs exact, creep forces by the 2 x 2 tangent
- * of Kalker's simplified theory, the cubic law with falling friction; the
- * linear theory's own for it): every step costs the same.  The positions
+ * of Kalker's simplified theory, the cubic law with falling friction):
+ * every step costs the same.  The positions
  * x, y, yaw, chi, theta_r are the integrals of the next five states, which
  * the integrator's linear algebra exploits (rr_ode nq = 5: 7 unknowns
  * instead of 12).  TR-BDF2 with a linearly implicit trapezoidal stage and
@@ -65,6 +65,12 @@ enum rr_rig_state_index {
     RR_RIG_T_ROLLER, RR_RIG_T_WHEELSET,
     RR_RIG_NSTATE
 };
+
+/* The range of the control sample time T [s] (scenario.control_sample_time_s,
+ * rollerrig.rig.MIN_DT and MAX_DT); within it rr_rig_check asks the drives'
+ * sampled speed loops to be stable at T (rr_rig_speed_loops). */
+#define RR_RIG_MIN_T 1e-6
+#define RR_RIG_MAX_T 0.1
 
 /* Most points of an adhesion schedule (rr_rig_adhesion). */
 #define RR_RIG_MAX_SCHEDULE 256
@@ -220,9 +226,9 @@ typedef struct {
 
 typedef struct {
     const rr_rig_params *p;
-    /* the creep method's registry facts, taken at rr_rig_init (its options
-     * checked there): does it saturate, its small-creepage slope scale */
-    int creep_saturates;
+    /* the creep method's small-creepage slope scale (its registry's), taken
+     * at rr_rig_init (its options checked there; the method saturates:
+     * rr_rig_method_check) */
     double creep_slope_scale;
     double t;                      /* time [s] */
     double y[RR_RIG_NSTATE];       /* plant state */
@@ -257,10 +263,38 @@ typedef struct {
 /*
  * rr_rig_check - 0 if the parameters are usable, else RR_ERR_NONFINITE,
  * RR_ERR_PARAM (a mass, inertia, stiffness, damping, preload, sample time,
- * nsub, newton_iters or lag out of range, or a controller's T differs from T), or the
- * status of the contact model, controller or encoder checks.
+ * nsub, newton_iters or lag out of range, a controller's T differs from T,
+ * or a drive's sampled speed loop is unstable at T: rr_rig_speed_loops),
+ * RR_ERR_METHOD (a creep-force method the rig does not step with:
+ * rr_rig_method_check), or the status of the contact model, controller or
+ * encoder checks.
  */
 int rr_rig_check(const rr_rig_params *p);
+
+/*
+ * rr_rig_method_check - RR_OK if the rig steps with the creep-force method
+ * of o: one that needs no workspace (a time-loop method: not the exact
+ * theory solved at each step, milliseconds a contact) and keeps |F| <= mu N
+ * (the registry's saturates: not the linear theory, whose force grows past
+ * mu N, an adhesion the rig would report as measured); else RR_ERR_METHOD,
+ * or RR_ERR_NULL.  The one rule: rr_rig_check, the FMU's list of methods
+ * and rollerrig.METHODS[m].in_rig follow it.
+ */
+int rr_rig_method_check(const rr_creep_opts *o);
+
+/*
+ * rr_rig_speed_loops - the drives' sampled speed loops of p at p->T
+ * (rr_control.h, rr_speed_loop): loops[0] the roller's (roller_pi on
+ * roller_inertia through roller_tau), loops[1] the wheelset's (wheelset_pi
+ * on Iyy through wheelset_tau, with eq. 13's creepctl.alpha around it).
+ * Each drive turns its own inertia: the contact saturated, as under
+ * creepage control (with the contact sticking the two inertias turn
+ * together under both drives, a loop whose gain over inertia lies between
+ * the two).  rr_rig_check asks both to be stable (rr_speed_loop_check);
+ * rr_speed_loop_range gives the sample times at which each is.  No checks
+ * (p, loops not NULL).
+ */
+void rr_rig_speed_loops(const rr_rig_params *p, rr_speed_loop loops[2]);
 
 /*
  * rr_rig_init - (re)start the rig at free rolling: centred wheelset, rollers at
@@ -345,7 +379,9 @@ int rr_rig_rebind(rr_rig *rig, const rr_rig_params *p);
  *            held at free rolling speed)
  *   returns: rec[RR_REC_COUNT], the state at the end of the sample
  *   status:  0, a warning, or an error (wheel off its roller, lift-off,
- *            NaN): the rig keeps its last good state and refuses to step on.
+ *            NaN, a creep force beyond mu N: RR_ERR_FRICTION_LIMIT, for
+ *            any method): the rig keeps its last good state and refuses to
+ *            step on.
  */
 int rr_rig_step(rr_rig *rig, double roller_ref, double xi_ref, double *rec);
 

@@ -45,9 +45,6 @@ static const int ode_values[] = {RR_ODE_TRBDF2, RR_ODE_ROS2, RR_ODE_LINEULER};
 static const double default_targets[] = {0.04, 0.015, 0.02, 0.03};
 static const double default_starts[] = {0.0, 5.0, 10.0, 15.0};
 
-/* The control sample time's range, as simulate's dt (rollerrig.rig.MIN_DT, MAX_DT). */
-#define MIN_T 1e-6
-#define MAX_T 0.1
 #define MAX_DURATION 1e5
 
 static const rr_rig_param params[] = {
@@ -69,7 +66,7 @@ static const rr_rig_param params[] = {
     CHOICE("scenario.drive_mode", drive_modes, 0, drive_mode,
            "paper section 6: braking torque applied to the wheelset, roller speed held "
            "constant"),
-    REAL("scenario.control_sample_time_s", "s", 4.0e-3, RANGE(MIN_T, MAX_T, 0, 0), T,
+    REAL("scenario.control_sample_time_s", "s", 4.0e-3, RANGE(RR_RIG_MIN_T, RR_RIG_MAX_T, 0, 0), T,
          "paper section 6: the real-time model's step on dSpace DS1006 (250 Hz); sample time "
          "of both PI loops, encoders and the creepage controller (stable with these inertias: "
          "tests/test_rig.py)"),
@@ -662,9 +659,58 @@ int rr_rig_config_check(const rr_rig_config *c, const char **bad)
         who = "adhesion.patch_length_m";
         st = RR_ERR_PARAM;
     }
+    /* the drives' sampled loops stable at the sample time (rr_rig_check's
+     * rule; an inertia sum that overflows is rr_rig_params_from's RR_ERR_RANGE) */
+    if (st == RR_OK) {
+        rr_speed_loop loops[2];
+        rr_rig_config_speed_loops(c, loops);
+        for (k = 0; k < 2 && st == RR_OK; k++)
+            if (rr_speed_loop_check(&loops[k]) == RR_ERR_PARAM) {
+                who = "scenario.control_sample_time_s";
+                st = RR_ERR_PARAM;
+            }
+    }
     if (st != RR_OK && bad)
         *bad = who;
     return st;
+}
+
+/* The drives of primary values: sample time, PI gains and limits, lags,
+ * the wheelset's inertia with its drive's, eq. 13-16's settings (the
+ * radii nominal: rr_rig_params_set_table calibrates them). */
+static void drives_from(const rr_rig_config *c, rr_rig_params *p)
+{
+    p->T = c->T;
+    p->Iyy = c->spin_inertia + c->drive_inertia;
+    p->roller_inertia = c->roller_inertia;
+    p->roller_pi.T = p->wheelset_pi.T = p->roller_enc.T = p->wheelset_enc.T = c->T;
+    p->roller_pi.Kp = c->roller_kp;
+    p->roller_pi.KI = c->roller_ki;
+    p->roller_pi.Tmax = c->roller_tmax;
+    p->wheelset_pi.Kp = c->wheelset_kp;
+    p->wheelset_pi.KI = c->wheelset_ki;
+    p->wheelset_pi.Tmax = c->wheelset_tmax;
+    p->roller_tau = c->roller_tau;
+    p->wheelset_tau = c->wheelset_tau;
+    p->roller_enc.counts = c->roller_counts;
+    p->wheelset_enc.counts = c->wheelset_counts;
+    p->creepctl.r_w = c->wheel_radius;
+    p->creepctl.r_r = c->roller_radius;
+    p->creepctl.alpha = c->ctl_alpha;
+    p->creepctl.beta = c->ctl_beta;
+    p->creepctl.vmin = c->ctl_vmin;
+    p->creepctl.sense = drive_senses[c->drive_mode];
+}
+
+int rr_rig_config_speed_loops(const rr_rig_config *c, rr_speed_loop loops[2])
+{
+    rr_rig_params p;
+    if (!c || !loops)
+        return RR_ERR_NULL;
+    memset(&p, 0, sizeof p);
+    drives_from(c, &p);
+    rr_rig_speed_loops(&p, loops);
+    return RR_OK;
 }
 
 int rr_rig_params_set_table(rr_rig_params *p, const rr_contact_table *t)
@@ -757,8 +803,8 @@ int rr_rig_params_from(const rr_rig_config *c, const rr_contact_table *t, rr_rig
     memset(p, 0, sizeof *p);
     if ((st = rr_rig_config_check(c, NULL)) != RR_OK)
         return st;
+    drives_from(c, p);
     p->mass = c->mass;
-    p->Iyy = c->spin_inertia + c->drive_inertia;
     p->Izz = c->yaw_inertia;
     p->axlebox_y = c->axlebox_half_spacing;
     p->kx = c->kx;
@@ -769,7 +815,6 @@ int rr_rig_params_from(const rr_rig_config *c, const rr_contact_table *t, rr_rig
     p->cz = c->cz;
     p->preload = c->preload;
     p->g = c->g;
-    p->roller_inertia = c->roller_inertia;
     p->contact.R0 = c->roller_radius;
     /* rollerrig.rig_contact.elastic_constants: the same doubles */
     p->contact.estar = c->E / (2.0 * (1.0 - c->nu * c->nu));
@@ -786,29 +831,11 @@ int rr_rig_params_from(const rr_rig_config *c, const rr_contact_table *t, rr_rig
     creep_default(&p->contact.creep);
     p->contact.vmin = c->vmin;
     adhesion_from(c, p->contact.friction, &p->adhesion);
-    p->T = c->T;
     p->nsub = c->substeps;
     p->method = ode_values[c->ode_method];
     p->newton_iters = c->newton_iterations;
     p->linear_tr = c->linear_first_stage;
     p->newton_model = c->newton_model;
-    p->roller_pi.T = p->wheelset_pi.T = p->roller_enc.T = p->wheelset_enc.T = c->T;
-    p->roller_pi.Kp = c->roller_kp;
-    p->roller_pi.KI = c->roller_ki;
-    p->roller_pi.Tmax = c->roller_tmax;
-    p->wheelset_pi.Kp = c->wheelset_kp;
-    p->wheelset_pi.KI = c->wheelset_ki;
-    p->wheelset_pi.Tmax = c->wheelset_tmax;
-    p->roller_tau = c->roller_tau;
-    p->wheelset_tau = c->wheelset_tau;
-    p->roller_enc.counts = c->roller_counts;
-    p->wheelset_enc.counts = c->wheelset_counts;
-    p->creepctl.r_w = c->wheel_radius;
-    p->creepctl.r_r = c->roller_radius;
-    p->creepctl.alpha = c->ctl_alpha;
-    p->creepctl.beta = c->ctl_beta;
-    p->creepctl.vmin = c->ctl_vmin;
-    p->creepctl.sense = drive_senses[c->drive_mode];
     /* the derived doubles: values each in range can overflow together */
     {
         const double derived[3] = {p->Iyy, p->contact.estar, p->contact.G};

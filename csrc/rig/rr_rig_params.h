@@ -181,10 +181,21 @@ int rr_rig_config_set_list(rr_rig_config *c, const char *name, int n, const doub
  * before the duration; at least one sample in the duration), and the
  * adhesion (one mu0 per schedule time, and one A and B each or none; the
  * times non-decreasing; the patch no longer than the roller's
- * circumference); else the status, and *bad (may be NULL) the name of the
- * row at fault.
+ * circumference), and the drives' sampled speed loops are stable at the
+ * sample time (rr_rig_config_speed_loops: RR_ERR_PARAM with *bad
+ * "scenario.control_sample_time_s"); else the status, and *bad (may be
+ * NULL) the name of the row at fault.
  */
 int rr_rig_config_check(const rr_rig_config *c, const char **bad);
+
+/*
+ * rr_rig_config_speed_loops - the drives' sampled speed loops of primary
+ * values, as rr_rig_speed_loops gives them for rr_rig_params_from's
+ * parameters: for the message of a refused sample time
+ * (rr_speed_loop_range over [RR_RIG_MIN_T, RR_RIG_MAX_T]).  No checks of c.
+ * Status: RR_ERR_NULL.
+ */
+int rr_rig_config_speed_loops(const rr_rig_config *c, rr_speed_loop loops[2]);
 
 /*
  * rr_rig_params_from - the rig's parameters of checked primary values:

@@ -939,6 +939,88 @@ static void test_closed_loop(void)
     }
 }
 
+/* A drive's sampled speed loop (rr_speed_loop): its radius against closed
+ * forms, its stable range against the P loop's exact limit and the
+ * continuous PI's Routh-Hurwitz limit, and its errors. */
+static void test_speed_loop(void)
+{
+    /* P only, no lag (tau 1e-12 s: E = 0, G1 = G2 = 1e-10), kp = Kp T / J:
+     * w+ = w - kp z, z+ = w - kp z / 2 (z the mean speed over the sample,
+     * eq. 12), so z^2 - (1 - kp/2) z + kp/2 = 0: complex poles of modulus
+     * sqrt(kp / 2) for kp = 1, real ones for kp = 0.1; stable up to kp = 2,
+     * T = 2 J / Kp. */
+    rr_speed_loop l = {{0.01, 100.0, 0.0, 50.0}, 1.0, 1e-12, 0.0};
+    double rho, lo, hi, b, c;
+    CHECK_STATUS(rr_speed_loop_radius(&l, &rho), RR_OK, "P loop");
+    CHECK_CLOSE(rho, sqrt(0.5), 1e-8, 0.0, "kp = 1: |z| = sqrt(kp / 2)");
+    l.pi.T = 0.001;
+    b = 1.0 - 0.05;
+    c = 0.05;
+    CHECK_STATUS(rr_speed_loop_radius(&l, &rho), RR_OK, "P loop, kp = 0.1");
+    CHECK_CLOSE(rho, 0.5 * (b + sqrt(b * b - 4.0 * c)), 1e-8, 0.0, "kp = 0.1: the real root");
+    CHECK_STATUS(rr_speed_loop_range(&l, 1e-6, 0.1, &lo, &hi), RR_OK, "P loop range");
+    CHECK_CLOSE(hi, 2.0 * l.J / l.pi.Kp, 0.0, 1e-8, "stable up to T = 2 J / Kp");
+    CHECK(lo == 1e-6, "and from the shortest time asked");
+    l.pi.T = 0.0199;
+    CHECK_STATUS(rr_speed_loop_check(&l), RR_OK, "kp = 1.99: stable");
+    l.pi.T = 0.0201;
+    CHECK_STATUS(rr_speed_loop_check(&l), RR_ERR_PARAM, "kp = 2.01: unstable");
+
+    /* the roller's PI (Kp 300, KI 2 per sample on 1.5 kg m^2, 1 ms lag): at
+     * short samples the loop nears the continuous one, J tau s^3 + J s^2 +
+     * Kp s + KI / T, which Routh-Hurwitz keeps stable only for Kp T > tau KI:
+     * the lower limit tau KI / Kp = 6.67 us, within 1 % (the encoder's half
+     * sample of delay) */
+    l.pi.Kp = 300.0;
+    l.pi.KI = 2.0;
+    l.J = 1.5;
+    l.tau = 1e-3;
+    CHECK_STATUS(rr_speed_loop_range(&l, 1e-6, 0.1, &lo, &hi), RR_OK, "roller range");
+    CHECK_CLOSE(lo, l.tau * l.pi.KI / l.pi.Kp, 0.0, 0.01, "lower limit: Routh-Hurwitz");
+    CHECK(hi > 0.008 && hi < 2.0 * l.J / l.pi.Kp, "upper limit below the lag-free P loop's");
+    l.pi.T = 0.004;
+    CHECK_STATUS(rr_speed_loop_radius(&l, &rho), RR_OK, "at 4 ms");
+    CHECK(rho < 1.0 && rho > 0.99, "stable, the integral's slow pole near 1");
+
+    /* no gains: the inertia keeps its speed (a pole at 1), at any sample */
+    l.pi.Kp = l.pi.KI = 0.0;
+    l.pi.T = 0.1;
+    CHECK_STATUS(rr_speed_loop_radius(&l, &rho), RR_OK, "no gains");
+    CHECK_CLOSE(rho, 1.0, 1e-12, 0.0, "a held speed: radius 1");
+    CHECK_STATUS(rr_speed_loop_check(&l), RR_OK, "held, not growing: stable");
+    /* gains beyond any stable value: no stable time, NaN limits */
+    l.pi.Kp = 1e300;
+    l.J = 1e-300;
+    CHECK_STATUS(rr_speed_loop_radius(&l, &rho), RR_OK, "overflowing gains");
+    CHECK(isinf(rho), "radius +inf");
+    CHECK_STATUS(rr_speed_loop_range(&l, 1e-6, 0.1, &lo, &hi), RR_ERR_PARAM, "no stable time");
+    CHECK(isnan(lo) && isnan(hi), "NaN limits");
+
+    /* errors */
+    l.pi.Kp = 300.0;
+    l.J = 1.5;
+    CHECK_STATUS(rr_speed_loop_radius(NULL, &rho), RR_ERR_NULL, "NULL loop");
+    CHECK_STATUS(rr_speed_loop_radius(&l, NULL), RR_ERR_NULL, "NULL radius");
+    l.J = 0.0;
+    CHECK_STATUS(rr_speed_loop_radius(&l, &rho), RR_ERR_PARAM, "J = 0");
+    CHECK(isnan(rho), "NaN radius on error");
+    l.J = 1.5;
+    l.tau = NAN;
+    CHECK_STATUS(rr_speed_loop_check(&l), RR_ERR_NONFINITE, "tau NaN");
+    l.tau = 1e-3;
+    l.alpha = -0.1;
+    CHECK_STATUS(rr_speed_loop_check(&l), RR_ERR_PARAM, "alpha < 0");
+    l.alpha = 0.0;
+    l.pi.T = 0.0;
+    CHECK_STATUS(rr_speed_loop_check(&l), RR_ERR_PARAM, "T = 0 (rr_pi_check)");
+    CHECK_STATUS(rr_speed_loop_range(&l, 0.1, 1e-6, &lo, &hi), RR_ERR_PARAM,
+                 "Tlo > Thi (pi.T not used)");
+    CHECK_STATUS(rr_speed_loop_range(&l, 0.0, 0.1, &lo, &hi), RR_ERR_PARAM, "Tlo = 0");
+    CHECK_STATUS(rr_speed_loop_range(&l, 1e-6, INFINITY, &lo, &hi), RR_ERR_NONFINITE, "Thi");
+    CHECK_STATUS(rr_speed_loop_range(&l, 1e-6, 0.1, NULL, &hi), RR_ERR_NULL, "NULL lo");
+    CHECK(isnan(hi), "NaN hi on error");
+}
+
 int main(void)
 {
     test_pi_bad_params();
@@ -953,5 +1035,6 @@ int main(void)
     test_creepctl_unit();
     test_creepctl_static();
     test_closed_loop();
+    test_speed_loop();
     return rr_test_summary();
 }

@@ -351,6 +351,16 @@ static void test_checks(const rr_fmu_config *f)
     CHECK(contains(rr_fmu_message(&m), "scenario.target_start_s"), rr_fmu_message(&m));
     CHECK_STATUS(rr_fmu_set(&m, RR_FMU_REAL, vr_of(f, "scenario.target_start_s[2]"), 5.0),
                  RR_OK, "start 5");
+    /* a sample time at which the roller's loop is unstable: refused, named
+     * with the drive and the range at which it is stable (issue 22) */
+    CHECK_STATUS(rr_fmu_set(&m, RR_FMU_REAL, vr_of(f, "scenario.control_sample_time_s"), 0.01),
+                 RR_OK, "T 10 ms");
+    CHECK_STATUS(rr_fmu_exit_init(&m), RR_ERR_PARAM, "10 ms refused");
+    CHECK(contains(rr_fmu_message(&m), "scenario.control_sample_time_s = 0.01 s: the roller "
+                   "drive's sampled speed loop") && contains(rr_fmu_message(&m), "it is stable "
+                   "from 6.7e-06 to 0.00833 s"), rr_fmu_message(&m));
+    CHECK_STATUS(rr_fmu_set(&m, RR_FMU_REAL, vr_of(f, "scenario.control_sample_time_s"), T),
+                 RR_OK, "T back");
     CHECK_STATUS(rr_fmu_get(&m, RR_FMU_REAL, RR_FMU_VR_RECORD + RR_REC_N_LEFT, &x), RR_OK,
                  "an output in initialization mode");
     CHECK(x > 500.0 && x < 550.0, "the static load");

@@ -489,6 +489,80 @@ static void test_rebind(const rr_rig_params *good)
     CHECK_STATUS(rr_rig_rebind(&b, NULL), RR_ERR_NULL, "NULL parameters");
 }
 
+/* Issue 22: what the rig must not report as a success.  The linear theory
+ * (no friction limit) and the exact solver (a workspace) are refused by
+ * rr_rig_method_check; a sample time at which a drive's loop is unstable
+ * by rr_rig_check and rr_rig_config_check (naming it); and a creep force
+ * beyond mu N from any method stops the rig (RR_ERR_FRICTION_LIMIT). */
+static void test_sanity(const rr_rig_params *good)
+{
+    static rr_rig rig;
+    static rr_rig_params p;
+    rr_rig_config c;
+    rr_speed_loop loops[2];
+    double rec[RR_REC_COUNT], lo, hi;
+    const char *bad = NULL;
+    int k, st = RR_OK;
+
+    p = *good;
+    CHECK_STATUS(rr_rig_method_check(&p.contact.creep), RR_OK, "FASTSIM: the rig's");
+    rr_creep_opts_default(&p.contact.creep, RR_METHOD_LINEAR);
+    CHECK_STATUS(rr_rig_method_check(&p.contact.creep), RR_ERR_METHOD, "linear: no limit");
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_METHOD, "the rig refuses the linear theory");
+    CHECK_STATUS(rr_rig_init(&p, 31.25, &rig), RR_ERR_METHOD, "and does not start with it");
+    rr_creep_opts_default(&p.contact.creep, RR_METHOD_EXACT);
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_METHOD, "the exact solver: a workspace");
+    rr_creep_opts_default(&p.contact.creep, RR_METHOD_POLACH);
+    CHECK_STATUS(rr_rig_check(&p), RR_OK, "Polach saturates: taken");
+    CHECK_STATUS(rr_rig_method_check(NULL), RR_ERR_NULL, "NULL options");
+
+    /* the sample time: the paper's 4 ms in range, 10 ms beyond the roller's
+     * loop (its limit 8.3 ms), 20 us below the wheelset's (6.7e-5 s) */
+    p = *good;
+    rr_rig_speed_loops(&p, loops);
+    CHECK(loops[0].J == p.roller_inertia && loops[1].J == p.Iyy
+          && loops[1].alpha == p.creepctl.alpha && loops[0].alpha == 0.0, "the loops");
+    CHECK_STATUS(rr_speed_loop_range(&loops[0], RR_RIG_MIN_T, RR_RIG_MAX_T, &lo, &hi), RR_OK,
+                 "roller range");
+    CHECK_CLOSE(hi, 8.325e-3, 0.0, 1e-3, "roller: stable up to 8.3 ms");
+    CHECK(lo < 1e-5, "roller: from a few microseconds");
+    CHECK_STATUS(rr_speed_loop_range(&loops[1], RR_RIG_MIN_T, RR_RIG_MAX_T, &lo, &hi), RR_OK,
+                 "wheelset range");
+    CHECK_CLOSE(lo, 6.667e-5, 0.0, 1e-3, "wheelset: from 67 us (eq. 13 and the integral)");
+    CHECK_CLOSE(hi, 8.768e-3, 0.0, 1e-3, "wheelset: up to 8.8 ms");
+    p.T = p.roller_pi.T = p.wheelset_pi.T = p.roller_enc.T = p.wheelset_enc.T = 0.01;
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "10 ms: the roller's loop unstable");
+    CHECK_STATUS(rr_rig_init(&p, 31.25, &rig), RR_ERR_PARAM, "and the rig does not start");
+    p.T = p.roller_pi.T = p.wheelset_pi.T = p.roller_enc.T = p.wheelset_enc.T = 2e-5;
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "20 us: the wheelset's loop unstable");
+    p.roller_pi.Kp = p.roller_pi.KI = p.wheelset_pi.Kp = p.wheelset_pi.KI = 0.0;
+    p.creepctl.alpha = 0.0;
+    p.T = p.roller_pi.T = p.wheelset_pi.T = p.roller_enc.T = p.wheelset_enc.T = 0.05;
+    CHECK_STATUS(rr_rig_check(&p), RR_OK, "no gains (torque commands): any sample time");
+    rr_rig_config_default(&c);
+    CHECK_STATUS(rr_rig_config_check(&c, &bad), RR_OK, "the defaults");
+    CHECK_STATUS(rr_rig_config_set(&c, "scenario.control_sample_time_s", 0.0084), RR_OK, "set");
+    CHECK_STATUS(rr_rig_config_check(&c, &bad), RR_ERR_PARAM, "8.4 ms refused");
+    CHECK(bad && strcmp(bad, "scenario.control_sample_time_s") == 0, "naming the sample time");
+    CHECK_STATUS(rr_rig_config_speed_loops(&c, loops), RR_OK, "the config's loops");
+    CHECK_STATUS(rr_speed_loop_check(&loops[0]), RR_ERR_PARAM, "the roller's at 8.4 ms");
+    CHECK_STATUS(rr_rig_config_speed_loops(NULL, loops), RR_ERR_NULL, "NULL config");
+
+    /* a method that breaks its limit under the rig (options changed under
+     * it, as a byte copy without rr_rig_rebind could): braked past the
+     * knee, the linear theory's force passes mu N and the rig stops */
+    p = *good;
+    CHECK_STATUS(rr_rig_init(&p, 31.25, &rig), RR_OK, "init");
+    rr_creep_opts_default(&p.contact.creep, RR_METHOD_LINEAR);
+    for (k = 0; k < 500 && (st = rr_rig_step(&rig, 31.25, 0.04, rec)) >= 0; k++)
+        CHECK(rec[RR_REC_ADHESION] <= p.contact.friction.mu0 * (1.0 + 1e-9),
+              "no adhesion above mu0 recorded as a success");
+    CHECK_STATUS(st, RR_ERR_FRICTION_LIMIT, "the force beyond mu N stops the rig");
+    CHECK(k > 0 && k < 500, "after some samples of braking");
+    CHECK(rig.status == RR_ERR_FRICTION_LIMIT && rec[RR_REC_STATUS] == RR_ERR_FRICTION_LIMIT,
+          "the rig and the record say why");
+}
+
 int main(void)
 {
     static rr_contact_table t;
@@ -506,5 +580,6 @@ int main(void)
     test_external_commands(&p);
     test_adhesion(&p);
     test_rebind(&p);
+    test_sanity(&p);
     return rr_test_summary();
 }

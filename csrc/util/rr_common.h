@@ -45,10 +45,13 @@ enum rr_status {
                                    reading, or a second reading in one sample) */
     RR_ERR_CONTROLLER = -16,    /* a controller of the caller's failed (it raised, or gave
                                    what is not a command): set by the loop that calls it */
-    RR_ERR_INTERRUPTED = -17    /* stopped by the caller's interrupt hook (rr_interrupt) */
+    RR_ERR_INTERRUPTED = -17,   /* stopped by the caller's interrupt hook (rr_interrupt) */
+    RR_ERR_FRICTION_LIMIT = -18, /* a creep force exceeds mu N: the method broke its limit */
+    RR_ERR_UNTRUSTED = -19      /* a run's samples did not converge too often to be trusted:
+                                   set by the loop that judges the run */
 };
 
-#define RR_STATUS_MIN (-17)
+#define RR_STATUS_MIN (-19)
 #define RR_STATUS_MAX 1
 
 /* Message of a status code; a fixed string, never NULL. */
