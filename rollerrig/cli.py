@@ -15,7 +15,7 @@ import sys
 import time
 import warnings
 
-from ._errors import RollerRigError
+from ._errors import RollerRigError, RollerRigWarning
 from ._files import OutputPathError, check_output, make_folder
 from ._version import __version__
 
@@ -99,26 +99,26 @@ def _figures():
 
 def _simulate(args):
     from . import rig
-    from ._errors import RollerRigWarning
 
     no_figures = _figures()
     names = ["rig_history.csv"] + ([] if no_figures else ["rig_creepage.png", "rig_force.png"])
     paths = [os.path.join(args.out, name) for name in names]
     made = None
-    try:
-        params = _load_scenario(args.scenario, args.method)
-        made = _prepare_out(args.out)
-        for path in paths:
-            _checked_output(path, "--out")
-    except _Refused as e:
-        _unmake(args.out, made)
-        print(f"{PROG}: {e}", file=sys.stderr)
-        return 2
     kw = {"method": args.method} if args.method else {}
     t0 = time.perf_counter()
     res = error = None
+    # the scenario's warnings and the run's, printed once each if it runs
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", RollerRigWarning)
+        try:
+            params = _load_scenario(args.scenario, args.method)
+            made = _prepare_out(args.out)
+            for path in paths:
+                _checked_output(path, "--out")
+        except _Refused as e:
+            _unmake(args.out, made)
+            print(f"{PROG}: {e}", file=sys.stderr)
+            return 2
         try:
             res = rig.simulate(duration=args.duration, dt=args.dt, params=params,
                                record_every=args.record_every,
@@ -129,8 +129,7 @@ def _simulate(args):
         _unmake(args.out, made)
         print(f"{PROG}: {_as_option(error)}", file=sys.stderr)
         return 2
-    for w in caught:
-        print(f"{PROG}: warning: {_as_option(w.message)}", file=sys.stderr)
+    _print_warnings(PROG, caught, _as_option)
     wall = time.perf_counter() - t0
     run = res.wall["run"]
     print(f"rollerrig {__version__}: {res.duration:g} s simulated in {run:.3f} s "
@@ -284,17 +283,28 @@ def _exact_table(args):
     return 0
 
 
+def _print_warnings(prog, caught, text=str):
+    """The RollerRigWarnings caught, each once, one line "<prog>: warning: ..."."""
+    for message in dict.fromkeys(text(w.message) for w in caught):
+        print(f"{prog}: warning: {message}", file=sys.stderr)
+
+
 def _fmu(args):
     from .fmu import build_fmu
     name = "rollerrig fmu"
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", RollerRigWarning)
+        try:
+            _checked_output(args.out, "", suffix=".fmu")
+            _load_scenario(args.scenario)
+        except _Refused as e:
+            print(f"{name}: {e}", file=sys.stderr)
+            return 2
+    _print_warnings(name, caught)
     try:
-        _checked_output(args.out, "", suffix=".fmu")
-        _load_scenario(args.scenario)
-    except _Refused as e:
-        print(f"{name}: {e}", file=sys.stderr)
-        return 2
-    try:
-        build_fmu(args.out, scenario=args.scenario, fmi_version=args.fmi, quiet=False)
+        with warnings.catch_warnings():       # the same scenario, checked again: said above
+            warnings.simplefilter("ignore", RollerRigWarning)
+            build_fmu(args.out, scenario=args.scenario, fmi_version=args.fmi, quiet=False)
     except OutputPathError as e:           # checked again: something was put there meanwhile
         print(f"{name}: {e.path}: {e.reason}", file=sys.stderr)
         return 2

@@ -1300,17 +1300,19 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     S = P["scenario"]
     given_dt = dt is not None
     dt = _check_dt("simulate", dt if dt is not None else S["control_sample_time_s"])
+    duration_name = "duration" if duration is not None else "scenario.duration_s"
     duration = _real_arg("simulate", "duration", duration if duration is not None
                          else S["duration_s"], 0.0, MAX_DURATION, lo_open=True, unit="s")
     dt_name = "dt" if given_dt else "scenario.control_sample_time_s"
     if duration < dt * (1.0 - 1e-9):
-        raise RollerRigError(f"simulate: duration = {duration:g} s is shorter than one "
+        raise RollerRigError(f"simulate: {duration_name} = {duration:g} s is shorter than one "
                              f"sample ({dt_name} = {dt:g} s)")
     n = max(1, int(round(duration / dt)))
     # a run of whole samples: say so where that changes the duration (by more
     # than the rounding of a dt given in single precision, 5e-8)
     if abs(n * dt - duration) > 1e-6 * duration:
-        warnings.warn(f"simulate: duration = {duration:g} s is not a whole number of samples of "
+        warnings.warn(f"simulate: {duration_name} = {duration:g} s is not a whole number of "
+                      f"samples of "
                       f"{dt_name} = {dt:g} s: the run takes {n} samples, {n * dt:.9g} s",
                       RollerRigWarning, stacklevel=2)
     targets, target_times = _target_schedule(S, duration, targets, target_times)

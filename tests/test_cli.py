@@ -377,3 +377,39 @@ def test_exact_table_an_unreachable_scheduler_is_one_line(tmp_path, capsys, no_b
             assert one_line(capsys.readouterr().err) == (
                 f"rollerrig exact-table: --dask {address}: cannot reach the scheduler: {why}")
     assert os.listdir(tmp_path) == []
+
+
+def test_a_scenario_warning_is_one_line_said_once(tmp_path, capsys, monkeypatch):
+    """A scenario whose duration_s is shorter than the default start times
+    (scaled, with a warning): the warning is one line of the command, said
+    once, not Python's warning format with its source line (it was printed
+    raw from the scenario's check, before the run)."""
+    scenario = tmp_path / "short.toml"
+    scenario.write_text("[scenario]\nduration_s = 0.2\n")
+    monkeypatch.setenv("CC", str(tmp_path / "no-compiler"))   # fmu: refused after the check
+    for argv in (["simulate", "--quiet", "--scenario", str(scenario), "--out",
+                  str(tmp_path / "out")],
+                 ["fmu", str(tmp_path / "x.fmu"), "--scenario", str(scenario)]):
+        code = cli.main(argv)
+        err = capsys.readouterr().err
+        lines = [line for line in err.splitlines() if "warning:" in line]
+        assert len(lines) == 1, err
+        assert lines[0].startswith(f"rollerrig {argv[0]}: warning: --scenario {scenario}: "
+                                   f"the default target start times"), err
+        assert "RollerRigWarning" not in err and ".py:" not in err, err
+        assert code == (0 if argv[0] == "simulate" else 2)   # fmu: no compiler
+
+
+def test_a_duration_from_the_scenario_is_named_so(tmp_path, capsys):
+    """--dt 0.003 on the scenario's 20 s: the warning that the run takes
+    20.001 s names scenario.duration_s, not an option the user never typed."""
+    code, out, err = run_cli(capsys, "--dt", "0.003", "--duration", "0.2", "--out",
+                             str(tmp_path))
+    assert code == 0 and "warning: --duration = 0.2 s is not a whole number" in err, err
+    scenario = tmp_path / "s.toml"
+    scenario.write_text("[scenario]\nduration_s = 0.2\ntarget_start_s = [0.0, 0.05, 0.1, 0.15]\n")
+    code, out, err = run_cli(capsys, "--dt", "0.003", "--scenario", str(scenario), "--out",
+                             str(tmp_path))
+    assert code == 0, err
+    assert ("warning: scenario.duration_s = 0.2 s is not a whole number of samples of dt = "
+            "0.003 s: the run takes 67 samples, 0.201 s") in err, err
