@@ -32,3 +32,11 @@ def _fmu_core_cache(tmp_path_factory):
         yield
     finally:
         os.environ.pop("ROLLERRIG_FMU_CACHE", None)
+
+
+def pytest_collection_modifyitems(items):
+    """The randomized property suites (tests/test_properties_*.py) are slow:
+    hundreds of generated cases each; the inner loop leaves them out."""
+    for item in items:
+        if item.path.name.startswith("test_properties_"):
+            item.add_marker(pytest.mark.slow)

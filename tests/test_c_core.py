@@ -12,6 +12,8 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = pytest.mark.slow     # make check, sanitize, valgrind: C builds
+
 REPO = Path(__file__).resolve().parent.parent
 CSRC = REPO / "csrc"
 TIMEOUT = 1800  # seconds, per make invocation

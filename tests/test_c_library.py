@@ -28,6 +28,8 @@ from rollerrig import _core, capi
 from conftest import ROOT
 from test_c_core import _compiler
 
+pytestmark = pytest.mark.slow     # C programs built against the installed library
+
 REPO = Path(ROOT)
 CSRC = REPO / "csrc"
 CFLAGS = ["-std=c99", "-Wall", "-Wextra", "-pedantic", "-Werror", "-O2"]

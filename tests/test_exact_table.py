@@ -186,6 +186,7 @@ def test_outside_the_table_refused():
     assert np.all(ends.status == 0)
 
 
+@pytest.mark.slow    # a table built three ways, a Dask cluster started
 def test_build_on_threads_serially_and_on_dask():
     """The builder (rr.sweep): the same bits serially, on threads and on a
     local Dask cluster; its nodes are node_values'; save and load keep it."""

@@ -59,6 +59,7 @@ def test_polach_recovers_parameters():
     assert len(res.residuals) == 3 and all(r.shape == CX.shape for r in res.residuals)
 
 
+@pytest.mark.slow    # hundreds of fits
 def test_polach_stderr_calibrated():
     """Over 40 noise draws the scatter of each estimate matches its mean standard
     error: with 40 draws the sample standard deviation is good to about 11 %, so
@@ -107,6 +108,7 @@ ROUND_TRIP = [*itertools.product((0.2, 0.6), (0.3, 1.0), (0.1, 1.0), (0.2, 0.9),
               (0.92, 0.27, 0.029, 0.9, 3.0, (37.0, 3.1))]  # wider than the suite: 11 % off
 
 
+@pytest.mark.slow    # 98 fits
 def test_polach_round_trip_on_a_grid():
     """Noise-free curves of Polach's method: the fit recovers the parameters
     that made them, from the default start.  Before the steps were scaled

@@ -26,6 +26,8 @@ from fmpy.fmi1 import FMICallException  # noqa: E402
 from fmpy.simulation import instantiate_fmu  # noqa: E402
 from fmpy.validation import validate_fmu  # noqa: E402
 
+pytestmark = pytest.mark.slow     # FMUs compiled and run by FMPy
+
 T = 0.004
 REC = list(rig.RECORD_FIELDS)
 REAL_OUT = [n for n in REC if n not in ("time", "sample_status")]

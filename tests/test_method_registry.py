@@ -84,6 +84,7 @@ def _git(*args, cwd):
                                    GIT_COMMITTER_NAME="t", GIT_COMMITTER_EMAIL="t@t")).stdout
 
 
+@pytest.mark.slow    # builds the extension with a new method
 def test_a_new_method_is_one_file_and_one_row(tmp_path):
     if shutil.which(os.environ.get("CC", "cc")) is None and shutil.which("gcc") is None:
         pytest.skip("no C compiler: the copy cannot be built")

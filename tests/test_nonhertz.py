@@ -176,6 +176,7 @@ def chain():
     return out
 
 
+@pytest.mark.slow    # exact solutions on fine grids
 def test_full_chain_frame_and_creepages():
     r = chain()
     # CONTACT's reference: the same weighting on the same profiles, at the
@@ -489,6 +490,7 @@ def test_rig_exact_at_extremes_is_named(pair, y_ws, kwargs, match):
         rr.rig_exact(geometry(pair), y_ws, mu=0.3, cx=1e-3, cy=0.0, cphi=0.0, n=6, **kwargs)
 
 
+@pytest.mark.slow    # children under a memory limit
 def test_element_sizes_are_bounded_before_memory_is_asked_for():
     # dx = dy = 1e-9 m sized h's grid, and the profile samples under it (a
     # tenth of an element apart), without a bound: the process grew to 24 GB

@@ -12,6 +12,8 @@ import pytest
 
 from conftest import ROOT
 
+pytestmark = pytest.mark.slow     # runs every notebook in a kernel
+
 matplotlib = pytest.importorskip("matplotlib")
 matplotlib.use("Agg")
 

@@ -27,6 +27,8 @@ import pytest
 
 from conftest import ROOT
 
+pytestmark = pytest.mark.slow     # builds the sdist and wheels
+
 REPO = Path(ROOT)
 
 # tracked but left out of the sdist: the README's pictures (examples/ remakes them)

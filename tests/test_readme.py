@@ -20,6 +20,8 @@ import pytest
 
 from conftest import ROOT
 
+pytestmark = pytest.mark.slow     # the README's code, an FMU build among it
+
 matplotlib = pytest.importorskip("matplotlib")
 matplotlib.use("Agg")
 

@@ -15,6 +15,8 @@ from rollerrig import _core, rig
 
 from test_c_core import CSRC, _make, _require_toolchain
 
+pytestmark = pytest.mark.slow     # C programs built and run
+
 
 def test_c_program_runs_the_paper_scenario_bitwise_as_simulate():
     _require_toolchain()
