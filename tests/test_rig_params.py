@@ -48,7 +48,7 @@ def test_record_and_wheel_fields_come_from_c():
     assert rig.RECORD_FIELDS == tuple(r[0] for r in _core.RIG_RECORD)
     assert len(rig.RECORD_FIELDS) == _core.REC_COUNT
     assert sum(w for _, w, _, _ in _core.RIG_WHEEL_FIELDS) == 35
-    from rollerrig.rig_contact import WheelContact
+    from rollerrig.rig.contact import WheelContact
     assert WheelContact._fields[:-1] == tuple(f[0] for f in _core.RIG_WHEEL_FIELDS)
 
 

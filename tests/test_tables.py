@@ -10,7 +10,7 @@ import pytest
 import rollerrig as rr
 from rollerrig import _core, rig
 from rollerrig.geometry import contact_table
-from rollerrig.profiles import Profile
+from rollerrig.geometry.profiles import Profile
 
 DEFAULT = dict(r0=0.092, R0=0.160, hw=0.015, alpha=math.atan(0.05), crown=0.060, span=0.15,
                reach=0.008, rows=161)
@@ -99,7 +99,7 @@ def test_analytic_profiles_are_numpys_points_bitwise():
         assert _same(Profile.cylinder((y0, y1), n=n).z, np.zeros(n))
 
 
-# --- the numpy spline the C replaced (rollerrig.profiles before rr_spline_fit)
+# --- the numpy spline the C replaced (rollerrig.geometry.profiles before rr_spline_fit)
 
 def _solve_tridiagonal(sub, diag, sup, rhs):
     n = len(diag)

@@ -8,11 +8,11 @@ import numbers
 import numpy as np
 
 from .. import _core
-from .. import control as _control
+from . import control as _control
 from .._errors import RollerRigError, status_message
 from .._binding import METHODS, _as_float, check_creep_options, core, loop_method, rig_method
-from ..geometry import MAX_ROWS, ContactTable, RigGeometry
-from ..profiles import Profile
+from ..geometry.profiles import Profile
+from ..geometry.wheelset import MAX_ROWS, ContactTable, RigGeometry
 from .params import (_FILE_OPTIONS, MAX_DT, MIN_DT, ODE_METHODS, PARAMETERS, _check_dt,
                      _defaults, _integer, _parameters, _real_arg, _short)
 
@@ -129,14 +129,14 @@ class Rig:
         reference [rad/s], xi_ref the creepage target (NaN: no creepage
         control, the wheelset held at free rolling); the same as
     read() -> (signals, status): the sampling instant's measurement (the
-        fields of rollerrig.control.RigSignals from t to xi_est), then
+        fields of rollerrig.rig.control.RigSignals from t to xi_est), then
     write(roller_mode, roller_ref, wheelset_mode, wheelset_ref, mu0=nan)
         -> status: the references held over the sample; modes
         _core.CMD_BUILTIN (the rig's controllers: roller speed, creepage
         target), CMD_SPEED [rad/s], CMD_TORQUE [N m]; mu0 the friction
         coefficient over the sample (NaN: the adhesion section's);
         csrc/rig/rr_rig.h, rr_rig_read, rr_rig_write
-    info: the controllers' settings (rollerrig.control.RigInfo)
+    info: the controllers' settings (rollerrig.rig.control.RigInfo)
     advance() -> (record, status): the plant over one sample
     run(roller_ref, xi_ref, out=None) -> (records, status): one sample per
         element of the two 1-D arrays, records of shape (n,

@@ -42,7 +42,7 @@ class RigParameter(NamedTuple):
     hi_open: bool
     choices: tuple      #: the names of a choice
     text: str           #: the default as TOML text (None: a choice, its name)
-    creep: bool         #: an option of the creep-force method (rollerrig.contact)
+    creep: bool         #: an option of the creep-force method (rollerrig.contact.creep)
     origin: str         #: where the default comes from
 
 

@@ -23,7 +23,7 @@ rollerrig/data/rig_default.toml, every value with its origin
 (docs/parameters.md).
 
 simulate runs it (the rig's own controllers, or a controller of the
-caller's: rollerrig.control), sample by sample through the C loop; replay
+caller's: rollerrig.rig.control), sample by sample through the C loop; replay
 feeds a run's kinematics through a contact model (the paper's Fig. 9).
 """
 import math
@@ -34,7 +34,7 @@ import warnings
 import numpy as np
 
 from .. import _core
-from .. import control as _control
+from . import control as _control
 from .._errors import RollerRigError, RollerRigWarning, status_message
 from .build import _build, _creep_options, _geometry
 from .params import MAX_DURATION, _check_dt, _integer, _parameters, _real, _real_arg, _short
@@ -221,7 +221,7 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     progress:  print a progress bar on stderr
     controller: None (the rig's own controllers), or a callable called at
                each control sample with what a real controller sees
-               (rollerrig.control.RigSignals: time, encoder counts, angles
+               (rollerrig.rig.control.RigSignals: time, encoder counts, angles
                and speeds, drive torques, eq. 16's estimate, the scenario's
                references) and returning the references held over the
                sample: a dict with any of roller_speed [rad/s] or
@@ -229,7 +229,7 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
                xi_ref (a creepage target for the rig's own controller); a
                drive left out (or None returned) keeps the rig's own
                controller.  Its method start(info), if any, is called first
-               (rollerrig.control.RigInfo).  A controller that raises or
+               (rollerrig.rig.control.RigInfo).  A controller that raises or
                returns NaN ends the run with a RollerRigError naming the
                sample, whose .result holds the history so far
     **creep:   the creep-force method's options: bound, grid, slip_speed,
@@ -356,7 +356,7 @@ _XI_REF = RECORD_FIELDS.index("xi_ref")
 def _run_controlled(rig, controller, P, duration, dt, targets, target_times, V, n,
                     record_every, out, progress, result):
     """simulate's samples with a controller of the user's
-    (rollerrig.control): read, call, write, advance, sample by sample; the
+    (rollerrig.rig.control): read, call, write, advance, sample by sample; the
     records' xi_ref is the scenario's target the controller was given.
     Returns as _run_builtin; a controller that raises, or returns what is
     not a command (reading it raises, whatever the exception) or a command
@@ -430,8 +430,8 @@ def replay(res, *, method=None, nx=None, ny=None, **creep):
     the parameters' method and grid) with the recorded normal loads.
     Returns rollerrig.RigContact for every sample; compare its
     left.fx + right.fx with res.fx."""
-    from ..rig_contact import rig_contact
-    from ..contact import FallingFriction
+    from .contact import rig_contact
+    from ..contact.creep import FallingFriction
 
     P = res.params
     C, A = P["contact"], P["adhesion"]

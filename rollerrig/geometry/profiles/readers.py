@@ -17,7 +17,7 @@ from typing import Callable, NamedTuple, Optional
 
 import numpy as np
 
-from .._errors import RollerRigError, RollerRigWarning
+from ..._errors import RollerRigError, RollerRigWarning
 from ._checks import BCS, KINDS, UNITS
 
 

@@ -8,9 +8,9 @@ from types import MappingProxyType
 
 import numpy as np
 
-from .. import _core
-from .._errors import RollerRigError, RollerRigWarning, status_message
-from .._files import write_file
+from ... import _core
+from ..._errors import RollerRigError, RollerRigWarning, status_message
+from ..._files import write_file
 from ._checks import (MAX_COORD, MAX_POINTS, MIN_POINTS, MIN_SPACING, MIN_WIDTH,
                       UNITS, _as_float_array, _check_bc, _check_kind, _check_number,
                       _check_scale, _prepare)
@@ -19,8 +19,8 @@ from .readers import READERS
 
 #: the shipped profile files (rollerrig/data/profiles), read by Profile.s1002,
 #: Profile.uic60 and RigGeometry.measured_pair
-DATA_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "data",
-                        "profiles")
+DATA_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))),
+                        "data", "profiles")
 
 
 class Profile:
@@ -29,7 +29,7 @@ class Profile:
     Profile(y, z, kind=..., name="", meta=None, bc=None, smoothing=None)
 
     y, z:      1-D arrays [m]: y strictly increasing, towards the field side;
-               z downward (rollerrig.profiles docstring).  At least 4 finite points,
+               z downward (rollerrig.geometry.profiles docstring).  At least 4 finite points,
                |y|, |z| <= 2 m, at least 1 mm wide.
     kind:      "wheel" or "rail" (a roller is "rail").
     name:      a label; meta: a dict of header values, read-only afterwards.
