@@ -21,8 +21,8 @@ The C core for C programs (rollerrig.capi; docs/c_api.md):
     rr.get_include(), rr.get_library_dir()     # -I ..., -L ... -lrollerrig -lm
     rr.get_source_dir(), rr.get_pkgconfig_dir()
 """
-import importlib
-import sys
+import importlib as _importlib
+import sys as _sys
 
 from ._version import __version__
 from ._errors import STATUS, RollerRigError, RollerRigWarning, status_message
@@ -64,8 +64,8 @@ _MOVED = {
     "exact_table": "analysis.exact_table",
 }
 for _old, _new in _MOVED.items():
-    _module = importlib.import_module(f"{__name__}.{_new}")
-    sys.modules.setdefault(f"{__name__}.{_old}", _module)
+    _module = _importlib.import_module(f"{__name__}.{_new}")
+    _sys.modules.setdefault(f"{__name__}.{_old}", _module)
     globals().setdefault(_old, _module)      # rr.sweep, rr.rig_contact stay the functions
 del _old, _new, _module
 
