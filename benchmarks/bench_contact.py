@@ -44,7 +44,7 @@ import time
 
 import numpy as np
 
-from rollerrig import contact
+from rollerrig.contact import creep as contact
 
 from _bench_common import (ROOT, CProgram, CpuMonitor, command_text, conditions_lines,
                            extension_flags, fmt, interleaved, load_average, log, machine_info,

@@ -3,7 +3,7 @@
     python benchmarks/bench_loop.py [--quick] [--out PATH] [--repeats 5]
 
 - Python: the paper's scenario (20 s at 4 ms) through rr.simulate with the
-  rig's own controllers (the C loop), with rollerrig.control's
+  rig's own controllers (the C loop), with rollerrig.rig.control's
   CreepageController (the same controller in Python: bit for bit the same
   history) and with a controller that returns None (the hook's own cost);
   the runs take turns, best of --repeats; real-time factors and the cost of
@@ -26,7 +26,7 @@ sys.path.insert(0, HERE)
 
 import _bench_common as bc  # noqa: E402
 import rollerrig as rr  # noqa: E402
-from rollerrig.control import CreepageController  # noqa: E402
+from rollerrig.rig.control import CreepageController  # noqa: E402
 
 
 def python_loop(repeats, duration):

@@ -1,4 +1,4 @@
-"""Time per case of the non-Hertzian wheel-on-roller patch (rollerrig.patch)
+"""Time per case of the non-Hertzian wheel-on-roller patch (rollerrig.geometry.patch)
 on CONTACT's 72 roller-rig cases (tests/data/roller_nonhertz_cases.csv):
 
     python benchmarks/bench_nonhertz.py

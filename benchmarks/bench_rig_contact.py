@@ -95,7 +95,7 @@ def rig_parameters():
     return dict(r0=ws["wheel_radius_m"], conicity=ws["conicity"],
                 wheel_half_width=ws["profile_half_width_m"], R0=ro["radius_m"],
                 crown_radius=ro["crown_radius_m"],
-                # the rig's roller profile spans the wheel's (rig._rig_table)
+                # the rig's roller profile spans the wheel's (rig.build._rig_table)
                 roller_half_width=ws["profile_half_width_m"],
                 half_spacing=ws["contact_half_spacing_m"],
                 roller_half_spacing=ws["contact_half_spacing_m"],
@@ -131,7 +131,7 @@ def check_parameters(toml, params):
 def rig_geometry(p):
     """The pair bench_rig.c builds (rr_rig_table_build), as a RigGeometry:
     the rig's own profiles, Profile.conical and Profile.cylinder, whose
-    points and not-a-knot splines are the same C (rig._rig_table's)."""
+    points and not-a-knot splines are the same C (rig.build._rig_table's)."""
     n, hw = p["wheel_knots"], p["wheel_half_width"]
     wheel = rr.Profile.conical(math.atan(p["conicity"]), (-hw, hw), r0=p["r0"], n=n)
     roller = rr.Profile.cylinder((-hw, hw), crown_radius=p["crown_radius"], n=n)

@@ -80,7 +80,7 @@ def whole_call(repeats, quick):
     kw = dict(duration=2.0) if quick else {}
 
     def first():
-        rr.rig._rig_table.cache_clear()
+        rr.rig.build._rig_table.cache_clear()
         rr.simulate(**kw)
     cold = best_time(first, repeats)
     rr.simulate(**kw)

@@ -24,7 +24,7 @@ import warnings
 import numpy as np
 
 import rollerrig as rr
-from rollerrig.sweep import CHUNK_CASES
+from rollerrig.analysis.sweep import CHUNK_CASES
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from _bench_common import (CpuMonitor, code_state, command_text,  # noqa: E402

@@ -2,17 +2,17 @@
 
     python benchmarks/score_vs_exact.py [--n 3000] [--seed 20261202] [--nx 27]
 
-The cases and the reference: rollerrig.reference.own_exact_cases (seeded
+The cases and the reference: rollerrig.analysis.reference.own_exact_cases (seeded
 random_cases, drawn as CONTACT's 300 cases were; method "exact"
 extrapolated to the continuum from nx and 2 nx elements across).  Each method
-is scored as rollerrig.reference.score does (|(dFx, dFy)|/(mu N), |dMz|/(mu N
+is scored as rollerrig.analysis.reference.score does (|(dFx, dFy)|/(mu N), |dMz|/(mu N
 c)), split by spin and a/b class; the table is printed in Markdown.
 """
 import argparse
 import time
 
 
-from rollerrig import reference as ref
+from rollerrig.analysis import reference as ref
 
 FAST = [("linear", {}), ("fastsim", dict(nx=30, ny=30)),
         ("fastsim_blended", dict(nx=30, ny=30)),

@@ -30,7 +30,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 import rollerrig as rr  # noqa: E402
-from rollerrig.conicity import equivalent_conicity  # noqa: E402
+from rollerrig.geometry.conicity import equivalent_conicity  # noqa: E402
 
 MM = 1e-3
 

@@ -22,7 +22,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 import rollerrig as rr  # noqa: E402
 from rollerrig import plot as rp  # noqa: E402
-from rollerrig import reference as ref  # noqa: E402
+from rollerrig.analysis import reference as ref  # noqa: E402
 
 METHODS = [("exact_table", {}), ("fastsim_blended", dict(nx=30, ny=30)),
            ("fastsim", dict(nx=30, ny=30)), ("polach", {})]

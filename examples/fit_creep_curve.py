@@ -23,7 +23,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 import rollerrig as rr  # noqa: E402
-from rollerrig.fit import fit_modified_fastsim, fit_polach  # noqa: E402
+from rollerrig.analysis.fit import fit_modified_fastsim, fit_polach  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.path.join(HERE, "..", "tests", "data", "creep_curves_exact_vs_fastsim.csv")

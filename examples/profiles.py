@@ -3,7 +3,7 @@ Manchester contact benchmark, and the measured wheel/roller pair of a roller rig
 curvature the Hertz module will see.
 
 Both pairs are drawn in one frame per pair (y towards the field side, z downward, as
-rollerrig.profiles documents); the wheel is moved laterally to a centred position and then
+rollerrig.geometry.profiles documents); the wheel is moved laterally to a centred position and then
 lowered until it touches (the least gap is closed), and the touching point is marked.  This
 is a picture of the profiles, not the contact search of the geometry module:
 

@@ -1,4 +1,4 @@
-"""Every creep-force method against CONTACT's exact theory (rollerrig.reference).
+"""Every creep-force method against CONTACT's exact theory (rollerrig.analysis.reference).
 
 Prints the score table on the 3220 cases of CONTACT's test_table (|dF|/(mu N)
 and |dMz|/(mu N cp), overall and split by spin level and ellipticity) and the
@@ -24,7 +24,7 @@ import numpy as np  # noqa: E402
 
 import rollerrig as rr  # noqa: E402
 from rollerrig import plot as rp  # noqa: E402
-from rollerrig import reference as ref  # noqa: E402
+from rollerrig.analysis import reference as ref  # noqa: E402
 
 GRID = dict(nx=30, ny=30)     # the FASTSIM variants on the 3220 cases
 

@@ -20,7 +20,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 import rollerrig as rr  # noqa: E402
-from rollerrig.sweep import sweep  # noqa: E402
+from rollerrig.analysis.sweep import sweep  # noqa: E402
 
 R_WHEEL, R_ROLLER, R_CROWN = 0.092, 0.160, 0.060
 A = 0.5 * (1.0 / R_WHEEL + 1.0 / R_ROLLER)     # curvature sums [1/m]: rolling direction

@@ -14,37 +14,60 @@ Profiles (numpy only):
     p = rr.read_profile("wheel.whl")           # .prw/.prr, .whl/.ban, .txt/.csv/.dat
     p.z_at(y), p.slope(y), p.curvature(y)      # y, z in m; z downward
 
-See rollerrig.contact and rollerrig.profiles for the conventions.
+See rollerrig.contact.creep and rollerrig.geometry.profiles for the conventions.
 
 The C core for C programs (rollerrig.capi; docs/c_api.md):
 
     rr.get_include(), rr.get_library_dir()     # -I ..., -L ... -lrollerrig -lm
     rr.get_source_dir(), rr.get_pkgconfig_dir()
 """
+import importlib as _importlib
+import sys as _sys
+
 from ._version import __version__
 from ._errors import STATUS, RollerRigError, RollerRigWarning, status_message
-from .contact import (BOUNDS, METHODS, CreepForces, FallingFriction, HertzContact,
-                      KalkerCoefficients, TractionField, creep_forces, fastsim_field, hertz,
-                      kalker_coefficients)
-from . import profiles
-from .profiles import Profile, read_profile
-from .geometry import (ContactSide, ContactTable, RigGeometry, WheelsetContact, contact_table,
+# the wings, as the C core's (csrc/): contact < geometry < rig, and the
+# studies over them (analysis); each imports only those before it
+from .contact import (BOUNDS, METHODS, CreepForces, ExactSolution, FallingFriction, HertzContact,
+                      KalkerCoefficients, TractionField, creep_forces, exact_field,
+                      exact_richardson, exact_solve, fastsim_field, hertz, kalker_coefficients)
+from .geometry import profiles
+from .geometry import (ContactSide, ContactTable, Patch, PatchShape, Profile, RigGeometry,
+                       WheelsetContact, contact_table, equivalent_conicity, patch_shape,
+                       read_profile, rolling_radius_difference, undeformed_distance,
                        wheelset_contact)
-from .conicity import equivalent_conicity, rolling_radius_difference
-from .rig import (Rig, RigResult, build_rig, default_parameters, load_parameters, replay,
-                  simulate)
-from . import control
-from .control import CreepageController, RigInfo, RigSignals
-from .fit import FitResult, fit_modified_fastsim, fit_polach
-from .sweep import sweep, sweep_rig
-from .exact import ExactSolution, exact_field, exact_richardson, exact_solve
-from .patch import Patch, PatchShape, RigExact, patch_shape, rig_exact, undeformed_distance
-from . import reference
-from . import exact_table
-from .exact_table import ExactTable, build_exact_table
-from .rig_contact import (LinearCreepages, RigContact, RigPose, WheelContact, linear_creepages,
-                          rig_contact)
+from .rig import control
+from .rig import (CreepageController, LinearCreepages, Rig, RigContact, RigExact, RigInfo,
+                  RigPose, RigResult, RigSignals, WheelContact, build_rig, default_parameters,
+                  linear_creepages, load_parameters, replay, rig_contact, rig_exact, simulate)
+from .analysis import exact_table, reference
+from .analysis.exact_table import ExactTable, build_exact_table
+from .analysis.fit import FitResult, fit_modified_fastsim, fit_polach
+from .analysis.sweep import sweep, sweep_rig
 from .capi import get_include, get_library_dir, get_pkgconfig_dir, get_source_dir
+
+#: the modules that moved into a wing, by their old names: `import
+#: rollerrig.sweep`, `from rollerrig.profiles import Profile` and the like
+#: still give the same module objects (no file stands at the old paths).
+#: rollerrig.patch is the undeformed distance alone: rig_exact and RigExact
+#: are rollerrig.rig.exact's (rr.rig_exact as before)
+_MOVED = {
+    "exact": "contact.exact",
+    "profiles": "geometry.profiles",
+    "conicity": "geometry.conicity",
+    "patch": "geometry.patch",
+    "rig_contact": "rig.contact",
+    "control": "rig.control",
+    "sweep": "analysis.sweep",
+    "fit": "analysis.fit",
+    "reference": "analysis.reference",
+    "exact_table": "analysis.exact_table",
+}
+for _old, _new in _MOVED.items():
+    _module = _importlib.import_module(f"{__name__}.{_new}")
+    _sys.modules.setdefault(f"{__name__}.{_old}", _module)
+    globals().setdefault(_old, _module)      # rr.sweep, rr.rig_contact stay the functions
+del _old, _new, _module
 
 __all__ = [
     "__version__", "RollerRigError", "RollerRigWarning", "status_message", "STATUS", "METHODS",

@@ -2,7 +2,7 @@
 input conversion and broadcasting, status handling, friction laws, and the
 creep-force methods as the C registry lists them (csrc/contact/rr_methods.def).
 
-Private: the public names are re-exported by rollerrig.contact."""
+Private: the public names are re-exported by rollerrig.contact.creep."""
 from dataclasses import dataclass
 from types import MappingProxyType
 from typing import NamedTuple

@@ -98,7 +98,7 @@ def _figures():
 
 
 def _simulate(args):
-    from . import rig
+    from .rig.run import simulate
 
     no_figures = _figures()
     names = ["rig_history.csv"] + ([] if no_figures else ["rig_creepage.png", "rig_force.png"])
@@ -120,9 +120,9 @@ def _simulate(args):
             print(f"{PROG}: {e}", file=sys.stderr)
             return 2
         try:
-            res = rig.simulate(duration=args.duration, dt=args.dt, params=params,
-                               record_every=args.record_every,
-                               progress=not args.quiet and sys.stderr.isatty(), **kw)
+            res = simulate(duration=args.duration, dt=args.dt, params=params,
+                           record_every=args.record_every,
+                           progress=not args.quiet and sys.stderr.isatty(), **kw)
         except RollerRigError as e:
             error = e
     if error is not None:                  # nothing was run: its warnings are moot
@@ -242,7 +242,7 @@ def _dask_client(address):
 
 
 def _exact_table(args):
-    from .exact_table import DEFAULT_SHAPE, build_exact_table
+    from .analysis.exact_table import DEFAULT_SHAPE, build_exact_table
     name = "rollerrig exact-table"
     client = None
     try:
@@ -354,7 +354,7 @@ def build_parser():
     p.set_defaults(func=_simulate)
     p = sub.add_parser("exact-table", help="build the exact-theory table (method exact_table)",
                        description="Build the table of method exact_table with the library's "
-                       "exact theory (rollerrig/exact_table.py) and write it as C source; "
+                       "exact theory (rollerrig/analysis/exact_table.py) and write it as C source; "
                        "the shipped one is csrc/contact/rr_exact_table_data.c (reinstall to "
                        "use a new one).  About 40 CPU minutes at the defaults.")
     p.add_argument("out", metavar="OUT.c", help="the C file to write (a new path or a "

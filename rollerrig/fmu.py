@@ -146,10 +146,10 @@ def _start_config_c(P, source):
     """sources/fmu_start.c: the default configuration overridden by every
     value of the checked parameters P that differs from its default, exact
     (hexadecimal floating constants)."""
-    from . import rig
-    D = rig.default_parameters()
+    from .rig import params
+    D = params.default_parameters()
     calls, arrays = [], []
-    for p in rig.PARAMETERS:
+    for p in params.PARAMETERS:
         section, key = p.name.split(".")
         v, d = P[section][key], D[section][key]
         if v == d and type(v) is type(d):
@@ -194,21 +194,21 @@ def check_scenario(scenario, *, source, method=None):
     contact.creep_method), so that one it cannot start from (a value that
     overflows the C rig, a method that does not suit the friction law) is
     refused before any work.  Messages begin with `source` and the path."""
-    from . import rig
+    from .rig import build, params as rig_params
     if scenario is None:
-        return rig.default_parameters(), "nothing (the defaults)"
+        return rig_params.default_parameters(), "nothing (the defaults)"
     if isinstance(scenario, (str, os.PathLike)):
         source = f"{source} {os.fspath(scenario)}"
         try:
-            params = rig._read_parameter_file(scenario)
-        except rig._Problems as p:
-            raise rig._error(source, p.problems) from None
+            params = rig_params._read_parameter_file(scenario)
+        except rig_params._Problems as p:
+            raise rig_params._error(source, p.problems) from None
         what = f"the scenario {Path(scenario).name}"
     else:
         params, what = scenario, "the scenario given"
-    P = rig.check_parameters(params, source=source)
-    rig._build(source, P, dt=None, method=method, substeps=None, ode=None, nx=None, ny=None,
-               roller_speed=None, start="rolling", creep={})
+    P = rig_params.check_parameters(params, source=source)
+    build._build(source, P, dt=None, method=method, substeps=None, ode=None, nx=None,
+                 ny=None, roller_speed=None, start="rolling", creep={})
     return P, what
 
 

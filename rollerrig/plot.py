@@ -135,7 +135,7 @@ _COMPONENTS = ("fx", "fy", "|f|")
 
 
 def _force_values(func, force, component, n):
-    from .contact import CreepForces
+    from .contact.creep import CreepForces
     if component not in _COMPONENTS:
         raise RollerRigError(f"{func}: component must be one of {_COMPONENTS}, "
                              f"got {component!r}")
@@ -182,7 +182,7 @@ def creep_curve(cx, force, *, ax=None, label=None, mu=None, N=None, sign=-1,
 
 def _reference_points(func, reference):
     """(cx, fx [N], label, mu, N) of a reference curve."""
-    from .reference import CreepCurve
+    from .analysis.reference import CreepCurve
     if isinstance(reference, CreepCurve):
         what = "exact theory (CONTACT)" if reference.method is None \
             else f"CONTACT's {reference.method}"
@@ -197,7 +197,7 @@ def _reference_points(func, reference):
                                  f"{fx.size} forces")
         label = str(reference[2]) if len(reference) == 3 else "reference"
         return cx, fx, label, None, None
-    raise RollerRigError(f"{func}: reference must be a rollerrig.reference.CreepCurve or a "
+    raise RollerRigError(f"{func}: reference must be a rollerrig.analysis.reference.CreepCurve or a "
                          f"tuple (cx, force[, label]), got {type(reference).__name__}")
 
 
@@ -209,7 +209,7 @@ def creep_curves(cx, curves, *, mu=None, N=None, reference=None, ax=None, sign=-
     """Several creep curves on one axes, optionally over reference points.
 
     curves: {label: force} (arrays [N] or CreepForces, one value per cx) or
-    a single force.  reference: a rollerrig.reference.CreepCurve (e.g.
+    a single force.  reference: a rollerrig.analysis.reference.CreepCurve (e.g.
     rr.reference.creep_curves()[1], CONTACT's exact theory) or a tuple
     (cx, force[, label]), drawn as black markers; a CreepCurve also supplies
     mu and N when they are not given.  Normalisation, sign, component and
@@ -282,7 +282,7 @@ def traction_field(t, ax=None, *, quantity="|p_t|", show_slip=True, arrows=True,
     element slips) and the boundary ("adhesion/slip boundary"), then the
     arrows ("tractions")."""
     func = "traction_field"
-    from .contact import TractionField
+    from .contact.creep import TractionField
     if not isinstance(t, TractionField):
         raise RollerRigError(f"{func}: t must be a TractionField (rr.fastsim_field, "
                              f"rr.exact_field), got "
@@ -384,7 +384,7 @@ def traction_field(t, ax=None, *, quantity="|p_t|", show_slip=True, arrows=True,
 # ------------------------------------------------------------------ the rig run
 
 def _check_result(func, res):
-    from .rig import RigResult
+    from .rig.result import RigResult
     if not isinstance(res, RigResult):
         raise RollerRigError(f"{func}: res must be a RigResult from rr.simulate, got "
                              f"{type(res).__name__}")
@@ -539,7 +539,7 @@ def profiles(geometry, y_ws=(0.0, 0.002, 0.004, 0.006), ax=None, *, side="left",
     contact marker labelled with the shift and contact angle; shifts
     without contact are marked "no contact" in the legend only."""
     func = "profiles"
-    from .geometry import RigGeometry, wheelset_contact
+    from .geometry.wheelset import RigGeometry, wheelset_contact
     if not isinstance(geometry, RigGeometry):
         raise RollerRigError(f"{func}: geometry must be a RigGeometry, got "
                              f"{type(geometry).__name__}")
@@ -647,7 +647,7 @@ def _error_stats(err):
 
 def error_map(result, ax=None, *, spin=None, quantity="force", reduce="max",
               ellipticity=None, vmax=None, cmap="viridis", colorbar=None, title=True):
-    """Draw a ScoreResult's error (rollerrig.reference.score) over the creepage
+    """Draw a ScoreResult's error (rollerrig.analysis.reference.score) over the creepage
     direction / magnitude plane.
 
     One panel per spin level (ax None: a new figure; or a sequence of as many
@@ -661,10 +661,10 @@ def error_map(result, ax=None, *, spin=None, quantity="force", reduce="max",
     Returns the axes (an array for several panels).
     """
     func = "error_map"
-    from .reference import ScoreResult
+    from .analysis.reference import ScoreResult
     if not isinstance(result, ScoreResult):
         raise RollerRigError(f"{func}: result must be a ScoreResult from "
-                             f"rollerrig.reference.score(), got {type(result).__name__}")
+                             f"rollerrig.analysis.reference.score(), got {type(result).__name__}")
     if quantity not in ("force", "mz"):
         raise RollerRigError(f"{func}: quantity must be 'force' or 'mz', got {quantity!r}")
     if reduce not in ("max", "median", "mean"):
@@ -739,7 +739,7 @@ def fit(result, cx, force, ax=None, *, mu=None, N=None, residuals=False, label=N
     axes, and two axes are returned).  Returns the axes: per curve one data
     line and one model line."""
     func = "fit"
-    from .fit import PARAMETER_UNITS, FitResult
+    from .analysis.fit import PARAMETER_UNITS, FitResult
     if not isinstance(result, FitResult):
         raise RollerRigError(f"{func}: result must be a FitResult from fit_polach or "
                              f"fit_modified_fastsim, got {type(result).__name__}")

@@ -6,7 +6,7 @@ are converted to SI here.
 
 The main entry point is :func:`score_methods`, which runs the 3220 cases of
 CONTACT's ``test_table`` (contact_test_table_mx11.csv) through
-``rollerrig.creep_forces`` (through ``rollerrig.reference``, which decodes and
+``rollerrig.creep_forces`` (through ``rollerrig.analysis.reference``, which decodes and
 scores the table) and returns the error statistics per method; the
 benchmark scripts can import it as well::
 
@@ -20,7 +20,7 @@ import os
 import numpy as np
 
 import rollerrig as rr
-from rollerrig import reference
+from rollerrig.analysis import reference
 
 DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data")
 
@@ -57,7 +57,7 @@ def read_columns(name):
 
 # --------------------------------------------------------------------------
 # CONTACT's test_table (contact_test_table_mx11.csv): decoded and scored by
-# rollerrig.reference, which ships a byte-identical copy of the CSV
+# rollerrig.analysis.reference, which ships a byte-identical copy of the CSV
 # --------------------------------------------------------------------------
 
 #: Settings of CONTACT's src/test_table.f90, as given in the CSV header.
@@ -76,7 +76,7 @@ def load_test_table():
 
     Returns a dict of 1-D arrays: cx, cy [-], cphi [rad/m], a, b [m] and the
     reference Fx, Fy (= FX/(mu FN), FY/(mu FN)), Mz (= MZ/(mu FN cp)), and
-    scalars N, mu, G, nu: rollerrig.reference.exact_cases() (its docstring
+    scalars N, mu, G, nu: rollerrig.analysis.reference.exact_cases() (its docstring
     gives the decoding) as a dict.
     """
     t = reference.exact_cases()
@@ -91,7 +91,7 @@ def _grid(method, **grid):
 
 def table_errors(method, table=None, nx=30, ny=30, grid="rect", bound="parabolic", **opts):
     """Per-case error hypot(dFx, dFy)/(mu N) of one method against the table
-    (rollerrig.reference.score(...).error); table: unused, kept for callers."""
+    (rollerrig.analysis.reference.score(...).error); table: unused, kept for callers."""
     return reference.score(method, **_grid(method, nx=nx, ny=ny, grid=grid, bound=bound),
                            **opts).error
 

@@ -213,7 +213,7 @@ def test_core_search_with_int_max_samples_returns_at_once():
     "rr.contact_table(g, -0.006, 0.006, 100000, nsamples=100000)",
     "rr.wheelset_contact(g, np.zeros(100000), nsamples=100000)",
     "rr.equivalent_conicity(g, 0.003, nsamples=100000, dy=1e-7, y_span=0.005)",
-    # the rig's table built in C (rig._rig_table): 100000 rows, about a minute
+    # the rig's table built in C (rig.build._rig_table): 100000 rows, about a minute
     "rr._core.rig_table(0.092, 0.16, 0.015, 0.0499584, 0.06, 0.15, 0.008, 100000)"])
 @pytest.mark.slow    # children running second-long calls
 def test_long_geometry_calls_notice_ctrl_c(call):

@@ -299,7 +299,7 @@ def no_build(monkeypatch):
     """The build of the table, which must not start (about 40 CPU minutes)."""
     def build(*args, **kwargs):
         raise AssertionError("the build started")
-    monkeypatch.setattr("rollerrig.exact_table.build_exact_table", build)
+    monkeypatch.setattr("rollerrig.analysis.exact_table.build_exact_table", build)
 
 
 @pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no FIFOs here")
@@ -327,7 +327,7 @@ def test_exact_table_checks_its_outputs_before_the_build(tmp_path, capsys, no_bu
 
 def _small_table():
     import numpy as np
-    from rollerrig.exact_table import ExactTable
+    from rollerrig.analysis.exact_table import ExactTable
     return ExactTable((0.0,) * 4, (1.0,) * 4, np.zeros((4, 4, 4, 5, 3), np.float32), 0.28,
                       1.0, 3)
 
@@ -344,9 +344,9 @@ def test_exact_table_writes_the_npz_first_and_names_a_path_taken_meanwhile(tmp_p
                                                                           monkeypatch):
     """What is put at OUT during the build is not replaced; the .npz, written
     first, keeps the table."""
-    from rollerrig.exact_table import ExactTable
+    from rollerrig.analysis.exact_table import ExactTable
     out, npz = tmp_path / "t.c", tmp_path / "t.npz"
-    monkeypatch.setattr("rollerrig.exact_table.build_exact_table", _build_planting(out.mkdir))
+    monkeypatch.setattr("rollerrig.analysis.exact_table.build_exact_table", _build_planting(out.mkdir))
     assert cli.main(["exact-table", str(out), "--npz", str(npz), "--quiet"]) == 2
     assert one_line(capsys.readouterr().err) == (f"rollerrig exact-table: {out}: is a "
                                                  f"directory; give the name of a file in it")
@@ -356,7 +356,7 @@ def test_exact_table_writes_the_npz_first_and_names_a_path_taken_meanwhile(tmp_p
 @pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no FIFOs here")
 def test_exact_table_a_lost_npz_keeps_the_c_file(tmp_path, capsys, monkeypatch):
     out, npz = tmp_path / "t.c", tmp_path / "t.npz"
-    monkeypatch.setattr("rollerrig.exact_table.build_exact_table",
+    monkeypatch.setattr("rollerrig.analysis.exact_table.build_exact_table",
                         _build_planting(lambda: os.mkfifo(npz)))
     assert cli.main(["exact-table", str(out), "--npz", str(npz), "--quiet"]) == 2
     assert one_line(capsys.readouterr().err) == (f"rollerrig exact-table: {npz}: is a FIFO, not "

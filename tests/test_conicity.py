@@ -1,4 +1,4 @@
-"""Equivalent conicity (rollerrig.conicity) and the contact path of the measured pair.
+"""Equivalent conicity (rollerrig.geometry.conicity) and the contact path of the measured pair.
 
 The three methods are checked on tabulated Delta r functions with closed-form answers,
 on a conical wheel on a crowned roller through the contact search, against the nearest
@@ -16,7 +16,7 @@ import pytest
 import rollerrig as rr
 from conftest import DATA
 from rollerrig import RollerRigError, RollerRigWarning
-from rollerrig.conicity import CONICITY_METHODS, equivalent_conicity, rolling_radius_difference
+from rollerrig.geometry.conicity import CONICITY_METHODS, equivalent_conicity, rolling_radius_difference
 
 MM = 1e-3
 

@@ -1,5 +1,5 @@
 """A controller of the user's in the rig's loop: simulate(controller=...),
-rollerrig.control, and the binding's Rig.read / Rig.write."""
+rollerrig.rig.control, and the binding's Rig.read / Rig.write."""
 import math
 import numbers
 
@@ -8,7 +8,7 @@ import pytest
 
 import rollerrig as rr
 from rollerrig import _core
-from rollerrig.control import CreepageController, RigInfo, RigSignals
+from rollerrig.rig.control import CreepageController, RigInfo, RigSignals
 
 KW = dict(duration=1.2, targets=[0.04, 0.015], target_times=[0.2, 0.7])
 

@@ -1,4 +1,4 @@
-"""Kalker's exact theory (method "exact", rollerrig.exact) against its
+"""Kalker's exact theory (method "exact", rollerrig.contact.exact) against its
 independent references: CONTACT's exact solutions at the same
 discretisation, Hertz's closed form, Kalker's creep coefficients, the full
 sliding limit, and the solution's own Coulomb conditions."""

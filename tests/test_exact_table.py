@@ -1,5 +1,5 @@
 """Method "exact_table": the exact theory's forces from the built-in table
-(csrc/contact/rr_exact_table.c, rollerrig/exact_table.py).
+(csrc/contact/rr_exact_table.c, rollerrig/analysis/exact_table.py).
 
 References: the Python twin of the lookup (tests/twin.py), the table's own
 nodes, the exact solver extrapolated to the continuum (rr.exact_richardson,
@@ -12,7 +12,7 @@ import pytest
 
 import rollerrig as rr
 import twin
-from rollerrig.exact_table import (DEFAULT_SHAPE, ExactTable, _node_case, build_exact_table,
+from rollerrig.analysis.exact_table import (DEFAULT_SHAPE, ExactTable, _node_case, build_exact_table,
                                    builtin_table, full_sliding, node_values, symmetry_zeros)
 
 HERE = os.path.dirname(os.path.abspath(__file__))

@@ -1,4 +1,4 @@
-"""Fitting Polach's method and modified FASTSIM to creep curves (rollerrig.fit)."""
+"""Fitting Polach's method and modified FASTSIM to creep curves (rollerrig.analysis.fit)."""
 import itertools
 import math
 
@@ -8,7 +8,7 @@ import pytest
 pytest.importorskip("scipy")
 
 import rollerrig as rr  # noqa: E402
-from rollerrig.fit import fit_modified_fastsim, fit_polach  # noqa: E402
+from rollerrig.analysis.fit import fit_modified_fastsim, fit_polach  # noqa: E402
 from reference_cases import MM, N_PER_MM2, read_csv  # noqa: E402
 
 # CONTACT's tractcurv case (Polach's Eurosprinter wheel): a/b = 0.5, N = 106.7 kN

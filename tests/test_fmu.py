@@ -174,7 +174,7 @@ def test_variables_come_from_the_declarations(unzipped):
         for k, n in enumerate(names):
             v = by_name[n]
             assert v.causality == "parameter" and v.unit == units.get(p.unit, p.unit), n
-            default = rig._default_value(p)
+            default = rig.params._default_value(p)
             if p.type == "list":
                 assert float(v.start) == default[k], n
             elif p.type == "choice" or p.creep and isinstance(default, str):

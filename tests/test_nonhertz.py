@@ -1,4 +1,4 @@
-"""Non-Hertzian patches of a wheel on its roller (rollerrig.patch) against
+"""Non-Hertzian patches of a wheel on its roller (rollerrig.geometry.patch) against
 CONTACT's exact theory on the same profiles (tests/data/roller_nonhertz_cases
 .csv: 72 cases, the measured MiniProf pair and S1002 on a UIC60-headed
 roller, lateral shifts -5.5 to +5.5 mm, three creepages), and Hertz's

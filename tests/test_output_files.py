@@ -13,8 +13,8 @@ import pytest
 import rollerrig as rr
 from rollerrig import fmu
 from rollerrig._files import OutputPathError, check_output, write_file
-from rollerrig.exact_table import ExactTable
-from rollerrig.profiles import Profile
+from rollerrig.analysis.exact_table import ExactTable
+from rollerrig.geometry.profiles import Profile
 
 needs_symlink = pytest.mark.skipif(not hasattr(os, "symlink"), reason="no symlinks here")
 needs_fifo = pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no FIFOs here")

@@ -17,7 +17,7 @@ from scipy.interpolate import CubicSpline, make_smoothing_spline
 
 import rollerrig as rr
 from rollerrig import RollerRigError, RollerRigWarning
-from rollerrig.profiles import DATA_DIR, Profile, read_profile
+from rollerrig.geometry.profiles import DATA_DIR, Profile, read_profile
 
 MM = 1e-3
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -721,7 +721,7 @@ def test_package_exports_and_data():
 
 def test_readers_table_is_the_dispatch(tmp_path, monkeypatch):
     # a new format is one reader returning RawProfile and one READERS entry
-    from rollerrig.profiles import READERS, Format, RawProfile
+    from rollerrig.geometry.profiles import READERS, Format, RawProfile
     assert set(READERS) == {".prr", ".prw", ".ban", ".whl", ".txt", ".csv", ".dat"}
     seen = []
 

@@ -34,7 +34,7 @@ from hypothesis import event, given, strategies as st
 from _properties import examples, watchdog
 from rollerrig import cli, rig
 from rollerrig._binding import METHODS
-from rollerrig.exact_table import ExactTable
+from rollerrig.analysis.exact_table import ExactTable
 
 assert watchdog  # the autouse hang detector, imported to take effect here
 
@@ -303,7 +303,7 @@ def _check(name, make_argv):
     with tempfile.TemporaryDirectory() as root, pytest.MonkeyPatch.context() as mp:
         mp.chdir(root)                       # a relative default (rollerrig-out) stays here
         mp.setenv("CC", os.path.join(root, "no-such-cc"))
-        mp.setattr("rollerrig.exact_table.build_exact_table", _small_table)
+        mp.setattr("rollerrig.analysis.exact_table.build_exact_table", _small_table)
         with open(os.path.join(root, "victim"), "w") as fh:
             fh.write("precious")
         argv, allowed = make_argv(root)

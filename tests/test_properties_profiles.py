@@ -20,7 +20,7 @@ from hypothesis import example, given, strategies as st
 
 import rollerrig as rr
 from rollerrig import RollerRigError, RollerRigWarning
-from rollerrig.profiles import DATA_DIR
+from rollerrig.geometry.profiles import DATA_DIR
 from _properties import (BAD_TYPES, _units, any_finite, uniform, assert_names_argument, examples,
                          log_uniform, watchdog, wild)
 

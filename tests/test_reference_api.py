@@ -1,4 +1,4 @@
-"""rollerrig.reference: scoring methods against CONTACT's exact cases and creep curves."""
+"""rollerrig.analysis.reference: scoring methods against CONTACT's exact cases and creep curves."""
 import filecmp
 import math
 import os
@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import rollerrig as rr
-from rollerrig import reference as ref
+from rollerrig.analysis import reference as ref
 from reference_cases import DATA, read_csv
 
 

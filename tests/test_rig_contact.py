@@ -1,4 +1,4 @@
-"""One contact evaluation of the wheelset on the rollers (rollerrig.rig_contact)."""
+"""One contact evaluation of the wheelset on the rollers (rollerrig.rig.contact)."""
 import warnings
 
 import numpy as np

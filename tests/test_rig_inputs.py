@@ -240,23 +240,23 @@ def test_a_sample_time_at_which_a_drive_loop_is_unstable_is_refused_before_the_r
     with pytest.raises(rr.RollerRigError, match=r"simulate: scenario.control_sample_time_s = "
                                                 r"0.009 s: the roller drive's"):
         rr.simulate(duration=18.0, params={"scenario": {"control_sample_time_s": 0.009}})
-    cp = rr.rig._c_params(rr.default_parameters(), 0.009, 1, "trbdf2")
+    cp = rr.rig.build._c_params(rr.default_parameters(), 0.009, 1, "trbdf2")
     with pytest.raises(ValueError, match="scenario.control_sample_time_s: parameter out of "
                                          "range"):
         _c_rig(cp)
     # without the lag and the integral, the independent limit 2 J / Kp
     P = {"roller_drive": {"ki_N_m_s_per_rad": 0.0, "lag_time_constant_s": 1e-12}}
-    loops = rr._core.rig_speed_loops(rr.rig._c_params(rr.rig.check_parameters(P), 0.004, 1,
+    loops = rr._core.rig_speed_loops(rr.rig.build._c_params(rr.rig.check_parameters(P), 0.004, 1,
                                                       "trbdf2"))
     assert loops[0][3] == pytest.approx(2 * 1.5 / 300, rel=1e-6)
     # a drive commanded by torque alone may have no gains: a held speed, stable
     P = {"roller_drive": {"kp_N_m_s_per_rad": 0.0, "ki_N_m_s_per_rad": 0.0}}
-    assert rr._core.rig_speed_loops(rr.rig._c_params(rr.rig.check_parameters(P), 0.05, 1,
+    assert rr._core.rig_speed_loops(rr.rig.build._c_params(rr.rig.check_parameters(P), 0.05, 1,
                                                      "trbdf2"))[0][:2] == (True, 1.0)
 
 
 def _c_rig(cp):
-    table = rr.rig._geometry(rr.default_parameters())
+    table = rr.rig.build._geometry(rr.default_parameters())
     return rr._core.Rig(table.data, table.y0, table.dy, cp, {}, 31.25)
 
 
@@ -294,7 +294,7 @@ def test_the_loops_poles_and_limits_agree_with_an_independent_reference():
     both loops stable (largest poles 0.9933, 0.9902: the integral's slow
     mode), half the upper limit."""
     P = rr.default_parameters()
-    cp = rr.rig._c_params(P, 0.004, 1, "trbdf2")
+    cp = rr.rig.build._c_params(P, 0.004, 1, "trbdf2")
     (s0, rho0, lo0, hi0), (s1, rho1, lo1, hi1) = rr._core.rig_speed_loops(cp)
     R, W = P["roller_drive"], P["wheelset_drive"]
     roller = dict(J=P["roller"]["inertia_kg_m2"], tau=R["lag_time_constant_s"],
@@ -311,7 +311,7 @@ def test_the_loops_poles_and_limits_agree_with_an_independent_reference():
         assert _loop_radius(lo * (1 + 1e-4), **loop) < 1 < _loop_radius(lo * (1 - 1e-4), **loop)
         assert _loop_radius(hi * (1 - 1e-4), **loop) < 1 < _loop_radius(hi * (1 + 1e-4), **loop)
     for dt in (2e-5, 0.001, 0.008, 0.0084, 0.05):
-        cp = rr.rig._c_params(P, dt, 1, "trbdf2")
+        cp = rr.rig.build._c_params(P, dt, 1, "trbdf2")
         for (stable, rho, _, _), loop in zip(rr._core.rig_speed_loops(cp), (roller, wheelset)):
             ref = _loop_radius(dt, **loop)
             assert rho == pytest.approx(ref, abs=1e-9) and stable == (ref < 1), dt
@@ -408,6 +408,6 @@ def test_the_loop_limits_reproduce_the_least_inertias_of_parameters_md(T, J_roll
     P = rr.rig.check_parameters({
         "roller": {"inertia_kg_m2": J_roller}, "creepage_controller": {"alpha": 0.0},
         "wheelset_drive": {"drive_inertia_kg_m2": J_wheelset - 0.03584}})
-    loops = rr._core.rig_speed_loops(rr.rig._c_params(P, 1e-4, 1, "trbdf2"))
+    loops = rr._core.rig_speed_loops(rr.rig.build._c_params(P, 1e-4, 1, "trbdf2"))
     assert loops[0][3] == pytest.approx(T, rel=0.03)
     assert loops[1][3] == pytest.approx(T, rel=0.03)

@@ -35,8 +35,8 @@ def test_every_row_is_complete_and_its_text_is_its_value():
             continue
         if p.type in ("real", "int"):
             assert float(p.text) == p.default, p.name
-            assert rig._rule(p)(p.default) is None
-            assert rig._rule(p)(math.nan) is not None
+            assert rig.params._rule(p)(p.default) is None
+            assert rig.params._rule(p)(math.nan) is not None
         if p.type == "list":
             assert list(tomllib.loads(f"v = {p.text}")["v"]) == list(p.default), p.name
         if p.type == "choice":
@@ -48,14 +48,14 @@ def test_record_and_wheel_fields_come_from_c():
     assert rig.RECORD_FIELDS == tuple(r[0] for r in _core.RIG_RECORD)
     assert len(rig.RECORD_FIELDS) == _core.REC_COUNT
     assert sum(w for _, w, _, _ in _core.RIG_WHEEL_FIELDS) == 35
-    from rollerrig.rig_contact import WheelContact
+    from rollerrig.rig.contact import WheelContact
     assert WheelContact._fields[:-1] == tuple(f[0] for f in _core.RIG_WHEEL_FIELDS)
 
 
 def test_binding_takes_declared_names_and_refuses_the_rest():
     P = rr.default_parameters()
-    table = rig._geometry(P)
-    opts = rig._creep_options("t", P, None, None, None, {})
+    table = rig.build._geometry(P)
+    opts = rig.build._creep_options("t", P, None, None, None, {})
     for bad, msg in (({"wheelset.mass": 1.0}, "not a rig parameter"),
                      ({"contact.fastsim_nx": 20}, "creep-force option"),
                      ({"wheelset.mass_kg": -1.0}, "wheelset.mass_kg = -1.0"),

@@ -1,5 +1,5 @@
 """The scalar path of creep_forces and hertz (plain numbers straight to C,
-rollerrig.contact._scalar_creep) against the general array path: the same
+rollerrig.contact.creep._scalar_creep) against the general array path: the same
 kernel on the same doubles, so the results must be bitwise equal, and every
 call the scalar path cannot answer cleanly must behave as before."""
 import math
@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import rollerrig as rr
-from rollerrig import contact
+from rollerrig.contact import creep as contact
 
 from _options import own
 

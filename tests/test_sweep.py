@@ -1,4 +1,4 @@
-"""Parameter sweeps (rollerrig.sweep): grid order, backends, output, errors."""
+"""Parameter sweeps (rollerrig.analysis.sweep): grid order, backends, output, errors."""
 import _thread
 import signal
 import sys
@@ -9,7 +9,7 @@ import pytest
 
 import rollerrig as rr
 from rollerrig._optional import OptionalDependencyError
-from rollerrig.sweep import UNITS, sweep, sweep_rig
+from rollerrig.analysis.sweep import UNITS, sweep, sweep_rig
 
 # a small FASTSIM case on the rig's scale (a ~ b ~ 4 mm, N ~ 500 N)
 FIXED = dict(a=4e-3, b=3.5e-3, G=8.2e10, nu=0.28, method="fastsim", nx=20, ny=20)

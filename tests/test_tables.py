@@ -10,14 +10,14 @@ import pytest
 import rollerrig as rr
 from rollerrig import _core, rig
 from rollerrig.geometry import contact_table
-from rollerrig.profiles import Profile
+from rollerrig.geometry.profiles import Profile
 
 DEFAULT = dict(r0=0.092, R0=0.160, hw=0.015, alpha=math.atan(0.05), crown=0.060, span=0.15,
                reach=0.008, rows=161)
 
 
 def _python_rig_table(r0, R0, hw, alpha, crown, span, reach, rows):
-    """The rig's table as rig._rig_table built it before the C builder."""
+    """The rig's table as rig.build._rig_table built it before the C builder."""
     g = rr.RigGeometry(wheel=Profile.conical(alpha, (-hw, hw), r0=r0, n=121),
                        roller=Profile.cylinder((-hw, hw), crown_radius=crown, n=121),
                        wheel_radius=r0, roller_radius=R0, wheel_y=span, roller_y=span)
@@ -37,8 +37,8 @@ def test_c_rig_table_is_the_python_table_bitwise(geo):
     t = _python_rig_table(*geo.values())
     assert (y0, dy) == (t.y0, t.dy)
     assert _same(data, t.data)
-    rig._rig_table.cache_clear()
-    r = rig._rig_table(*geo.values())
+    rig.build._rig_table.cache_clear()
+    r = rig.build._rig_table(*geo.values())
     assert _same(r.data, t.data) and (r.y0, r.dy, r.n) == (t.y0, t.dy, t.n)
     assert not r.data.flags.writeable
     assert isinstance(r.geometry, rr.RigGeometry)
@@ -46,7 +46,7 @@ def test_c_rig_table_is_the_python_table_bitwise(geo):
 
 def test_simulate_uses_the_c_table():
     P = rr.default_parameters()
-    t = rig._geometry(P)
+    t = rig.build._geometry(P)
     W, R, I = P["wheelset"], P["roller"], P["integration"]
     data, *_ = _core.rig_table(W["wheel_radius_m"], R["radius_m"], W["profile_half_width_m"],
                                math.atan(W["conicity"]), R["crown_radius_m"],
@@ -99,7 +99,7 @@ def test_analytic_profiles_are_numpys_points_bitwise():
         assert _same(Profile.cylinder((y0, y1), n=n).z, np.zeros(n))
 
 
-# --- the numpy spline the C replaced (rollerrig.profiles before rr_spline_fit)
+# --- the numpy spline the C replaced (rollerrig.geometry.profiles before rr_spline_fit)
 
 def _solve_tridiagonal(sub, diag, sup, rhs):
     n = len(diag)

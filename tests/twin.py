@@ -727,7 +727,7 @@ def _table_weights(n, lo, hi, q):
 
 
 def exact_table(table, cx, cy, cphi, a, b, N, mu, G, nu, speed=0.0, A=1.0, B=0.0):
-    """Forces from an exact-theory table (rollerrig.exact_table.ExactTable):
+    """Forces from an exact-theory table (rollerrig.analysis.exact_table.ExactTable):
     the C lookup in loops, (fx, fy, mz) on the wheel."""
     _check_contact(a, b, N, G, nu, cx, cy, cphi, speed)
     _check_friction(mu, A, B)

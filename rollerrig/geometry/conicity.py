@@ -60,7 +60,7 @@ Gelb, A., Vander Velde, W.E. (1968), Multiple-input describing functions and
 nonlinear system design, McGraw-Hill (harmonic linearisation).
 
     import rollerrig as rr
-    from rollerrig.conicity import equivalent_conicity
+    from rollerrig.geometry.conicity import equivalent_conicity
     g = rr.RigGeometry(wheel=rr.Profile.s1002(), roller=rr.Profile.uic60(),
                        wheel_radius=0.46, roller_radius=0.46,
                        wheel_y=0.75, roller_y=0.76053)
@@ -72,8 +72,8 @@ import warnings
 
 import numpy as np
 
-from ._errors import RollerRigError, RollerRigWarning
-from .geometry import RigGeometry, wheelset_contact
+from .._errors import RollerRigError, RollerRigWarning
+from .wheelset import RigGeometry, wheelset_contact
 
 __all__ = ["CONICITY_METHODS", "equivalent_conicity", "rolling_radius_difference"]
 

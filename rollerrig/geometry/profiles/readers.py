@@ -3,9 +3,10 @@
 Each reader is read(path, where, kind, units) -> RawProfile: the points in
 metres in the file's order, the line of each, the kind the file says (or
 the caller's, checked against it), the header values as meta, and for plain
-text the units and end conditions it declares.  read_profile looks the
-extension up in READERS, checks what is common to all formats and makes
-the Profile; a new format is one reader and one entry in READERS.
+text the units and end conditions it declares.  read_profile (_profile)
+looks the extension up in READERS, checks what is common to all formats
+and makes the Profile; a new format is one reader and one entry in READERS.
+The readers make no Profile: this module imports nothing of _profile.
 """
 import math
 import os
@@ -16,12 +17,9 @@ from typing import Callable, NamedTuple, Optional
 
 import numpy as np
 
-from .._errors import RollerRigError, RollerRigWarning
-from ._checks import BCS, KINDS, UNITS, _check_kind, _prepare
-from ._profile import Profile
+from ..._errors import RollerRigError, RollerRigWarning
+from ._checks import BCS, KINDS, UNITS
 
-DATA_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "data",
-                        "profiles")
 
 class RawProfile(NamedTuple):
     """What a reader returns: the points as the file gives them."""
@@ -379,76 +377,6 @@ def _not_number(field):
     except ValueError:
         return True
     return False
-
-
-def read_profile(path, kind=None, *, units=None, on_fold="trim", mirror_y=False,
-                 mirror_z=False, smoothing=None, bc=None, name=None):
-    """Read a wheel or rail/roller profile file into a Profile.
-
-    path:      a SIMPACK .prw (wheel) / .prr (rail), MiniProf .whl (wheel) /
-               .ban (rail) or plain text .txt/.csv/.dat file: READERS by
-               extension (package docstring; each reader's rules in
-               _read_simpack, _read_miniprof, _read_text).
-    kind:      "wheel" or "rail"; by default from the SIMPACK header type,
-               else the extension, else a '# kind = ...' line of a text file
-               (a text file without one needs kind).  Given, it must agree
-               with a SIMPACK header.
-    units:     plain text only: "mm" (default), "cm" or "m"; SIMPACK files
-               declare theirs, MiniProf files are in mm.
-    on_fold:   "trim" (default: drop the points where the profile folds
-               back, with a RollerRigWarning) or "raise".
-    mirror_y, mirror_z: mirror the points after reading (y -> -y: a profile
-               of the other side; z -> -z: data with z upward).
-    smoothing, bc: as for Profile.
-    name:      default the file name without extension.
-
-    Checks (RollerRigError naming the file and line): numbers, NaN/inf,
-    at least 4 points, no duplicate y, a single-valued profile (on_fold),
-    |y|, |z| <= 2 m and width >= 1 mm after the unit conversion, MiniProf's
-    XYPoints and ColumnDef.  A wheel whose flange (max z) lies at the
-    field-side half gets a warning: it is probably the other side's profile.
-    """
-    func = "read_profile"
-    path = os.fspath(path)
-    where = f"{func}: {path}"
-    if kind is not None:
-        _check_kind(func, kind)
-    ext = os.path.splitext(path)[1].lower()
-    if not os.path.exists(path):
-        raise RollerRigError(f"{where}: no such file")
-    fmt = READERS.get(ext)
-    if fmt is None:
-        raise RollerRigError(f"{where}: unknown extension {ext!r}; expected one of "
-                             f"{list(READERS)}")
-    if units is not None and not fmt.takes_units:
-        raise RollerRigError(f"{where}: units is for plain text; {ext} files fix their "
-                             f"own units")
-    if units is not None and units not in UNITS:
-        raise RollerRigError(f"{where}: units must be one of {sorted(UNITS)}, "
-                             f"got {units!r}")
-    y, z, lines, kind, meta, units_used, file_bc = fmt.read(path, where, kind, units)
-    kind = kind or fmt.kind
-    if kind is None:
-        raise RollerRigError(f"{where}: kind unknown: pass kind='wheel' or 'rail' "
-                             f"(or write '# kind = ...' in the file)")
-    y, z, notes = _prepare(where, y, z, kind, (lines, "line"), on_fold, mirror_y, mirror_z)
-    if kind == "wheel":
-        i = int(np.argmax(z))
-        if y[i] > 0.5 * (y[0] + y[-1]):
-            warnings.warn(f"{where}: the flange (lowest point, y = {y[i] * 1e3:.4g} mm) lies "
-                          f"on the field-side half: a profile of the other side? "
-                          f"(mirror_y=True or .mirrored())", RollerRigWarning, stacklevel=2)
-    meta = {"format": fmt.name, "path": path, **meta, **notes}
-    if units_used is not None:
-        meta["units"] = units_used
-    if mirror_y or mirror_z:
-        meta["mirrored"] = ("y" if mirror_y else "") + ("z" if mirror_z else "")
-    if bc is None and smoothing is None:
-        bc = file_bc
-    if name is None:
-        name = meta.get("name") if fmt.name == "text" and "name" in meta else \
-            os.path.splitext(os.path.basename(path))[0]
-    return Profile(y, z, kind=kind, name=str(name), meta=meta, bc=bc, smoothing=smoothing)
 
 
 class Format(NamedTuple):

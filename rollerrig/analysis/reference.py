@@ -12,7 +12,7 @@ tests/data; each CSV's first line names its source):
   friction, exact theory with falling friction and an interfacial layer,
   CONTACT's FASTSIM, and CONTACT's modified FASTSIM.
 
-    import rollerrig.reference as ref
+    import rollerrig.analysis.reference as ref
     r = ref.score("fastsim", nx=30, ny=30)     # r.error: |dF|/(mu N) per case
     r.overall["median"], r.by_spin[0.5]["p95"]
     print(ref.table([r, ref.score("fastsim_blended")]))
@@ -35,14 +35,15 @@ from typing import NamedTuple, Optional
 
 import numpy as np
 
-from ._errors import RollerRigError
-from .contact import METHODS, FallingFriction, creep_forces
+from .._errors import RollerRigError
+from ..contact.creep import METHODS, FallingFriction, creep_forces
 
 __all__ = ["ExactCases", "ScoreResult", "CreepCurve", "CurveScore", "exact_cases",
            "random_cases", "own_exact_cases", "score", "table", "creep_curves", "score_curves",
            "DATA_DIR", "TABLE_FILE", "CURVES_FILE"]
 
-DATA_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", "reference")
+DATA_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "data",
+                        "reference")
 TABLE_FILE = "contact_test_table_mx11.csv"
 CURVES_FILE = "creep_curves_exact_vs_fastsim.csv"
 
@@ -180,7 +181,7 @@ def random_cases(n=3000, seed=20261202):
     psi = rng.uniform(-1.0, 1.0, n)
     psi[rng.permutation(n) >= (2 * n) // 3] = 0.0
     G, nu = 8.2e10, 0.28
-    from .contact import kalker_coefficients
+    from ..contact.creep import kalker_coefficients
     k = kalker_coefficients(aob, nu)
     xi_ch = mu * N / (G * c * c * k.c11)
     return dict(a_over_b=aob, a=c * np.sqrt(aob), b=c / np.sqrt(aob), c=c, N=N, mu=mu, G=G,
@@ -195,7 +196,7 @@ def own_exact_cases(n=3000, seed=20261202, nx=27):
     cases=): forces over mu N, Mz over mu N c (cp = c = sqrt(ab)); a_over_b
     and spin are the split classes (a/b bins labelled 0.2 ... 5; |psi| 0, up
     to 0.5, up to 1 as 0, 0.5, 1).  About 20 ms a case at nx = 27."""
-    from .exact import exact_richardson
+    from ..contact.exact import exact_richardson
     d = random_cases(n, seed)
     est, _ = exact_richardson(d["cx"], d["cy"], d["cphi"], a=d["a"], b=d["b"], N=d["N"],
                               mu=d["mu"], G=d["G"], nu=d["nu"], nx=nx)

@@ -49,11 +49,13 @@ from functools import partial
 
 import numpy as np
 
-from . import contact
-from ._errors import RollerRigError, check_status
-from ._optional import require
-from .rig import (CREEP_OPTIONS, PARAMETERS, _parameter_problems, _retired,
-                  check_parameters, load_parameters, simulate)
+from .._errors import RollerRigError, check_status
+from .._optional import require
+from ..contact import creep as contact
+from ..rig.build import CREEP_OPTIONS
+from ..rig.params import (PARAMETERS, _parameter_problems, _retired, check_parameters,
+                          load_parameters)
+from ..rig.run import simulate
 
 __all__ = ["sweep", "sweep_rig", "UNITS", "FUNCTION_UNITS", "FUNCTIONS"]
 

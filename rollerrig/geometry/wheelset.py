@@ -1,6 +1,6 @@
 """Contact geometry of the rig's wheelset on its two rollers.
 
-A wheel profile and a roller profile (rollerrig.profiles.Profile, y to the
+A wheel profile and a roller profile (rollerrig.geometry.profiles.Profile, y to the
 field side, z down) per side, the wheel's radius r0 and the roller's R0 at
 the profiles' origins (y = 0), and where those origins sit laterally: the
 C core (csrc/geometry/rr_geometry.h) finds on each side the point of least vertical
@@ -13,7 +13,7 @@ gaps zero, for any lateral shift of the wheelset.
     c = rr.wheelset_contact(g, np.linspace(-0.005, 0.005, 11))
     c.left.r - c.right.r          # rolling-radius difference [m]
 
-The search is in the plane of the axle; rollerrig.rig_contact adds the
+The search is in the plane of the axle; rollerrig.rig.contact adds the
 wheelset's longitudinal shift and yaw, which move the contact points round
 the rollers (csrc/rig/rr_rig_contact.h).
 """
@@ -24,9 +24,9 @@ from typing import NamedTuple, Optional
 
 import numpy as np
 
-from . import _core
-from ._errors import RollerRigError, RollerRigWarning, check_status, status_message
-from ._binding import _as_float
+from .. import _core
+from .._errors import RollerRigError, RollerRigWarning, check_status, status_message
+from .._binding import _as_float
 from .profiles import DATA_DIR, Profile, read_profile
 
 __all__ = ["RigGeometry", "ContactSide", "WheelsetContact", "wheelset_contact",

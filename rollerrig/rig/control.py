@@ -20,7 +20,7 @@ import math
 import numbers
 from typing import NamedTuple
 
-from . import _core
+from .. import _core
 
 
 class RigSignals(NamedTuple):

@@ -31,10 +31,10 @@ from typing import NamedTuple
 
 import numpy as np
 
-from . import _core
-from ._errors import RollerRigError, status_message
-from ._binding import _broadcast, _finish, _friction, check_creep_options, core, loop_method
-from .geometry import ContactTable
+from .. import _core
+from .._errors import RollerRigError, status_message
+from .._binding import _broadcast, _finish, _friction, check_creep_options, core, loop_method
+from ..geometry.wheelset import ContactTable
 
 __all__ = ["RigPose", "WheelContact", "RigContact", "rig_contact", "LinearCreepages",
            "linear_creepages"]

@@ -1,18 +1,27 @@
-"""The Profile class: an immutable profile z(y) with its cubic spline."""
+"""The Profile class: an immutable profile z(y) with its cubic spline, and
+read_profile, which makes one from a file by the table of formats READERS."""
 import contextlib
 import math
 import os
+import warnings
 from types import MappingProxyType
 
 import numpy as np
 
-from .. import _core
-from .._errors import RollerRigError, status_message
-from .._files import write_file
+from ... import _core
+from ..._errors import RollerRigError, RollerRigWarning, status_message
+from ..._files import write_file
 from ._checks import (MAX_COORD, MAX_POINTS, MIN_POINTS, MIN_SPACING, MIN_WIDTH,
                       UNITS, _as_float_array, _check_bc, _check_kind, _check_number,
                       _check_scale, _prepare)
 from ._spline import _smooth, _spline_fit
+from .readers import READERS
+
+#: the shipped profile files (rollerrig/data/profiles), read by Profile.s1002,
+#: Profile.uic60 and RigGeometry.measured_pair
+DATA_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))),
+                        "data", "profiles")
+
 
 class Profile:
     """An immutable wheel or rail/roller profile z(y) with its cubic spline.
@@ -20,7 +29,7 @@ class Profile:
     Profile(y, z, kind=..., name="", meta=None, bc=None, smoothing=None)
 
     y, z:      1-D arrays [m]: y strictly increasing, towards the field side;
-               z downward (rollerrig.profiles docstring).  At least 4 finite points,
+               z downward (rollerrig.geometry.profiles docstring).  At least 4 finite points,
                |y|, |z| <= 2 m, at least 1 mm wide.
     kind:      "wheel" or "rail" (a roller is "rail").
     name:      a label; meta: a dict of header values, read-only afterwards.
@@ -328,7 +337,6 @@ class Profile:
     def s1002(cls, smoothing=None):
         """The S1002 wheel of the Manchester contact benchmark (MBench_S1002_v3.prw,
         shipped in rollerrig/data/profiles): y = 0 at the taping line, flange at y < 0."""
-        from .readers import DATA_DIR, read_profile   # the readers make Profiles
         return read_profile(os.path.join(DATA_DIR, "MBench_S1002_v3.prw"),
                             smoothing=smoothing)
 
@@ -336,7 +344,6 @@ class Profile:
     def uic60(cls, smoothing=None):
         """The UIC60 rail of the Manchester contact benchmark (MBench_UIC60_v3.prr),
         already canted 1:40: top of head z = 0 near y = 0, gauge face at y < 0."""
-        from .readers import DATA_DIR, read_profile
         return read_profile(os.path.join(DATA_DIR, "MBench_UIC60_v3.prr"),
                             smoothing=smoothing)
 
@@ -427,3 +434,73 @@ def _analytic(func, kind, param, y0, y1, n):
         raise RollerRigError(f"{func}: {status_message(status)} (y_range ({y0!r}, {y1!r}), "
                              f"n = {n!r}, parameter {param!r})")
     return y, z
+
+
+def read_profile(path, kind=None, *, units=None, on_fold="trim", mirror_y=False,
+                 mirror_z=False, smoothing=None, bc=None, name=None):
+    """Read a wheel or rail/roller profile file into a Profile.
+
+    path:      a SIMPACK .prw (wheel) / .prr (rail), MiniProf .whl (wheel) /
+               .ban (rail) or plain text .txt/.csv/.dat file: READERS by
+               extension (package docstring; each reader's rules in
+               _read_simpack, _read_miniprof, _read_text).
+    kind:      "wheel" or "rail"; by default from the SIMPACK header type,
+               else the extension, else a '# kind = ...' line of a text file
+               (a text file without one needs kind).  Given, it must agree
+               with a SIMPACK header.
+    units:     plain text only: "mm" (default), "cm" or "m"; SIMPACK files
+               declare theirs, MiniProf files are in mm.
+    on_fold:   "trim" (default: drop the points where the profile folds
+               back, with a RollerRigWarning) or "raise".
+    mirror_y, mirror_z: mirror the points after reading (y -> -y: a profile
+               of the other side; z -> -z: data with z upward).
+    smoothing, bc: as for Profile.
+    name:      default the file name without extension.
+
+    Checks (RollerRigError naming the file and line): numbers, NaN/inf,
+    at least 4 points, no duplicate y, a single-valued profile (on_fold),
+    |y|, |z| <= 2 m and width >= 1 mm after the unit conversion, MiniProf's
+    XYPoints and ColumnDef.  A wheel whose flange (max z) lies at the
+    field-side half gets a warning: it is probably the other side's profile.
+    """
+    func = "read_profile"
+    path = os.fspath(path)
+    where = f"{func}: {path}"
+    if kind is not None:
+        _check_kind(func, kind)
+    ext = os.path.splitext(path)[1].lower()
+    if not os.path.exists(path):
+        raise RollerRigError(f"{where}: no such file")
+    fmt = READERS.get(ext)
+    if fmt is None:
+        raise RollerRigError(f"{where}: unknown extension {ext!r}; expected one of "
+                             f"{list(READERS)}")
+    if units is not None and not fmt.takes_units:
+        raise RollerRigError(f"{where}: units is for plain text; {ext} files fix their "
+                             f"own units")
+    if units is not None and units not in UNITS:
+        raise RollerRigError(f"{where}: units must be one of {sorted(UNITS)}, "
+                             f"got {units!r}")
+    y, z, lines, kind, meta, units_used, file_bc = fmt.read(path, where, kind, units)
+    kind = kind or fmt.kind
+    if kind is None:
+        raise RollerRigError(f"{where}: kind unknown: pass kind='wheel' or 'rail' "
+                             f"(or write '# kind = ...' in the file)")
+    y, z, notes = _prepare(where, y, z, kind, (lines, "line"), on_fold, mirror_y, mirror_z)
+    if kind == "wheel":
+        i = int(np.argmax(z))
+        if y[i] > 0.5 * (y[0] + y[-1]):
+            warnings.warn(f"{where}: the flange (lowest point, y = {y[i] * 1e3:.4g} mm) lies "
+                          f"on the field-side half: a profile of the other side? "
+                          f"(mirror_y=True or .mirrored())", RollerRigWarning, stacklevel=2)
+    meta = {"format": fmt.name, "path": path, **meta, **notes}
+    if units_used is not None:
+        meta["units"] = units_used
+    if mirror_y or mirror_z:
+        meta["mirrored"] = ("y" if mirror_y else "") + ("z" if mirror_z else "")
+    if bc is None and smoothing is None:
+        bc = file_bc
+    if name is None:
+        name = meta.get("name") if fmt.name == "text" and "name" in meta else \
+            os.path.splitext(os.path.basename(path))[0]
+    return Profile(y, z, kind=kind, name=str(name), meta=meta, bc=bc, smoothing=smoothing)

@@ -1,10 +1,10 @@
 """Spline numerics of the profiles: the C2 interpolating cubic spline's node
 slopes and the penalised least-squares smoothing spline (Reinsch 1967).
-The package docstring (rollerrig.profiles) explains both."""
+The package docstring (rollerrig.geometry.profiles) explains both."""
 import numpy as np
 
-from .. import _core
-from .._errors import RollerRigError, status_message
+from ... import _core
+from ..._errors import RollerRigError, status_message
 
 
 def _spline_fit(y, z, bc):

@@ -13,16 +13,16 @@ problem by conjugate gradients on the active set (NormCG), the tangential
 problem of steady rolling (the material derivative as the upwind difference
 over one element) by a semismooth Newton method with GMRES, every product
 with the half-space's influence coefficients by FFT.  Forces act on the
-wheel (body 1); conventions as rollerrig.contact.
+wheel (body 1); conventions as rollerrig.contact.creep.
 """
 from dataclasses import dataclass
 
 import numpy as np
 
-from . import _core
-from ._binding import METHODS, _as_float, check_creep_options, used_numbers
-from ._errors import RollerRigError, check_status
-from .contact import TractionField, _case
+from .. import _core
+from .._binding import METHODS, _as_float, check_creep_options, used_numbers
+from .._errors import RollerRigError, check_status
+from .creep import TractionField, _case
 
 __all__ = ["ExactSolution", "exact_field", "exact_solve", "exact_richardson"]
 
@@ -188,7 +188,7 @@ def exact_richardson(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, nx
     options before either grid is solved.
     Returns (forces, error): two CreepForces-like tuples (fx, fy, mz, status).
     """
-    from .contact import CreepForces, creep_forces
+    from .creep import CreepForces, creep_forces
     func = "exact_richardson"
     ny = nx if ny is None else ny
     if "method" in options:

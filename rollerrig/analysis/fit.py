@@ -1,7 +1,7 @@
 """Fit Polach's method or modified FASTSIM to measured creep-force curves.
 
     import rollerrig as rr
-    from rollerrig.fit import fit_polach
+    from rollerrig.analysis.fit import fit_polach
     res = fit_polach([cx_5, cx_10], [fx_5, fx_10], speed=[5.0, 10.0],
                      a=6.3e-3, b=12.6e-3, N=106.7e3)
     res.params            # {'mu0': ..., 'A': ..., 'B': ..., 'kA': ..., 'kS': ...}
@@ -66,9 +66,9 @@ import math
 
 import numpy as np
 
-from ._errors import RollerRigError
-from ._optional import require
-from .contact import METHODS, FallingFriction, creep_forces
+from .._errors import RollerRigError
+from .._optional import require
+from ..contact.creep import METHODS, FallingFriction, creep_forces
 
 __all__ = ["FitResult", "fit_polach", "fit_modified_fastsim", "POLACH_PARAMETERS",
            "MODIFIED_FASTSIM_PARAMETERS", "PARAMETER_UNITS", "LOSSES"]

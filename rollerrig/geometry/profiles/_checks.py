@@ -6,7 +6,7 @@ import warnings
 
 import numpy as np
 
-from .._errors import RollerRigError, RollerRigWarning
+from ..._errors import RollerRigError, RollerRigWarning
 
 KINDS = ("wheel", "rail")
 BCS = ("not-a-knot", "natural")

@@ -29,10 +29,10 @@ from typing import NamedTuple
 
 import numpy as np
 
-from . import _core
-from ._binding import (METHODS, FallingFriction, MethodInfo, OptionInfo, _broadcast, _finish,
+from .. import _core
+from .._binding import (METHODS, FallingFriction, MethodInfo, OptionInfo, _broadcast, _finish,
                        _friction, check_creep_options, methods_doc, used_numbers)
-from ._errors import RollerRigError, check_status
+from .._errors import RollerRigError, check_status
 
 __all__ = [
     "METHODS", "BOUNDS", "MethodInfo", "OptionInfo", "FallingFriction", "HertzContact",

@@ -69,10 +69,11 @@ Layout of this package
 ----------------------
 ``_spline`` the spline numerics (the interpolating spline is the C core's,
 csrc/util/rr_spline.h; the smoothing spline is numpy), ``_checks`` the
-limits and the checks of points, ``_profile`` the Profile class,
-``readers`` the file readers and ``READERS``, the table of formats by
-extension that ``read_profile`` dispatches on: a new format is one reader
-function and one entry there.
+limits and the checks of points, ``_profile`` the Profile class and
+``read_profile``, ``readers`` the file readers and ``READERS``, the table
+of formats by extension that ``read_profile`` dispatches on: a new format is
+one reader function and one entry there (the readers return points, never
+a Profile: ``_profile`` imports ``readers``, not the reverse).
 
 Reading files
 -------------
@@ -101,9 +102,9 @@ face, 17 to 52 mm below the top, away from any contact: 6 and 4 points go.
 """
 from ._checks import (BCS, KINDS, MAX_COORD, MAX_POINTS, MIN_POINTS, MIN_SPACING,
                       MIN_WIDTH, UNITS)
-from ._profile import Profile, _rebuild
-from .readers import (DATA_DIR, MAX_FILE_BYTES, MINIPROF_EXT, READERS, SIMPACK_EXT, TEXT_EXT,
-                      Format, RawProfile, read_profile)
+from ._profile import DATA_DIR, Profile, _rebuild, read_profile
+from .readers import (MAX_FILE_BYTES, MINIPROF_EXT, READERS, SIMPACK_EXT, TEXT_EXT, Format,
+                      RawProfile)
 
 __all__ = ["Profile", "read_profile", "KINDS", "DATA_DIR", "MIN_POINTS", "READERS"]
 

@@ -1,0 +1,513 @@
+"""The rig's parameters: the declaration of every parameter (in C,
+csrc/rig/rr_rig_params.c: names, units, defaults, ranges, origins), the
+parameter files, the defaults (rollerrig/data/rig_default.toml is generated
+from the declaration) and the checks of a parameter set.
+
+Parameters are checked as a whole (check_parameters): every unknown key,
+every bad value and every documentation-only key given a new value is
+reported at once, in one RollerRigError that names the file or `params`.
+"""
+import copy
+import difflib
+import functools
+import math
+import numbers
+import os
+import stat
+import warnings
+from typing import NamedTuple
+
+from .. import _core
+from .._errors import RollerRigError, RollerRigWarning
+from .._binding import METHODS
+
+try:
+    import tomllib
+except ImportError:                                     # Python < 3.11
+    import tomli as tomllib
+
+DEFAULTS_PATH = os.path.join(os.path.dirname(os.path.dirname(__file__)), "data",
+                             "rig_default.toml")
+
+
+class RigParameter(NamedTuple):
+    """A row of the rig's parameter declaration (csrc/rig/rr_rig_params.c)."""
+    name: str           #: "section.key" of rig_default.toml
+    unit: str           #: "-" dimensionless, "" a name or a flag
+    type: str           #: "real", "int", "flag", "choice" or "list"
+    default: object     #: float, int, bool, str or tuple of floats (None: a creep row)
+    lo: float           #: range of a real, an int or each entry of a list
+    hi: float
+    lo_open: bool
+    hi_open: bool
+    choices: tuple      #: the names of a choice
+    text: str           #: the default as TOML text (None: a choice, its name)
+    creep: bool         #: an option of the creep-force method (rollerrig.contact.creep)
+    origin: str         #: where the default comes from
+
+
+#: every parameter of the rig, declared once in C: name, unit, type,
+#: default, range, origin (rig_default.toml is generated from it)
+PARAMETERS = tuple(RigParameter(*row) for row in _core.RIG_PARAMETERS)
+_PARAMETER = {p.name: p for p in PARAMETERS}
+
+#: the integrators of integration.method
+ODE_METHODS = _PARAMETER["integration.method"].choices
+#: control sample time [s], simulated time [s] (27.8 h)
+MIN_DT, MAX_DT = _PARAMETER["scenario.control_sample_time_s"][4:6]
+MAX_DURATION = _PARAMETER["scenario.duration_s"].hi
+MAX_PARAMETER_FILE_BYTES = 1 << 20  # the default file is 12 kB
+
+
+# ------------------------------------------------------------------ reading files
+
+class _Problems(Exception):
+    """What is wrong with a parameter set or file: a list of sentences, each
+    naming its key; the public functions turn it into one RollerRigError."""
+
+    def __init__(self, problems):
+        super().__init__(problems)
+        self.problems = list(problems)
+
+
+_SHOWN_PROBLEMS = 30     # a file of thousands of bad keys gives a readable message
+
+
+def _error(source, problems):
+    if len(problems) == 1:
+        return RollerRigError(f"{source}: {problems[0]}")
+    shown = [f"  {p}" for p in problems[:_SHOWN_PROBLEMS]]
+    if len(problems) > _SHOWN_PROBLEMS:
+        shown.append(f"  ... and {len(problems) - _SHOWN_PROBLEMS} more")
+    return RollerRigError(f"{source}: {len(problems)} problems:\n" + "\n".join(shown))
+
+
+def _short(value, width=60):
+    text = repr(value)
+    return text if len(text) <= width else text[:width - 3] + "..."
+
+
+def _read_parameter_file(path):
+    """The parsed TOML of `path`, or _Problems saying why not.  Only a
+    regular file of at most MAX_PARAMETER_FILE_BYTES of UTF-8 is read (a
+    FIFO is never waited on, a device never read from)."""
+    try:
+        # O_NONBLOCK: opening a FIFO for reading must not wait for a writer;
+        # the type is then checked on the open descriptor, so it cannot change
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0)
+                     | getattr(os, "O_BINARY", 0))
+    except IsADirectoryError:
+        raise _Problems(["is a directory, not a parameter file"]) from None
+    except OSError as e:
+        raise _Problems([f"cannot open it: {e.strerror or e}"]) from None
+    try:
+        info = os.fstat(fd)
+        if stat.S_ISDIR(info.st_mode):
+            raise _Problems(["is a directory, not a parameter file"])
+        if not stat.S_ISREG(info.st_mode):
+            raise _Problems(["is not a regular file (a FIFO, a device or a socket); give a "
+                             "TOML parameter file"])
+        if info.st_size > MAX_PARAMETER_FILE_BYTES:
+            raise _Problems([f"is {info.st_size} bytes; a parameter file is at most "
+                             f"{MAX_PARAMETER_FILE_BYTES} bytes (rig_default.toml: 12 kB)"])
+        with os.fdopen(fd, "rb") as fh:
+            fd = None
+            data = fh.read(MAX_PARAMETER_FILE_BYTES + 1)
+    except OSError as e:
+        raise _Problems([f"cannot read it: {e.strerror or e}"]) from None
+    finally:
+        if fd is not None:
+            os.close(fd)
+    if len(data) > MAX_PARAMETER_FILE_BYTES:             # grew while being read
+        raise _Problems([f"is more than {MAX_PARAMETER_FILE_BYTES} bytes"])
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as e:
+        raise _Problems([f"is not UTF-8 text (byte {e.start}); a parameter file is TOML "
+                         f"text"]) from None
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as e:
+        raise _Problems([f"is not valid TOML: {e}"]) from None
+    except RecursionError:
+        raise _Problems(["is nested too deeply or malformed (TOML arrays or tables inside "
+                         "each other beyond Python's recursion limit)"]) from None
+
+
+def load_parameters(path):
+    """A parameter file (TOML, the layout of rig_default.toml, any subset of
+    it) as a nested dict, not yet checked (check_parameters does).  Raises
+    RollerRigError naming the file and why: missing, a directory or FIFO,
+    over 1 MiB, not UTF-8, not TOML, nested too deeply."""
+    try:
+        return _read_parameter_file(path)
+    except _Problems as p:
+        raise _error(f"load_parameters: {os.fspath(path)}", p.problems) from None
+
+
+def _default_value(p):
+    if p.default is None:                        # a creep row: its TOML text
+        return tomllib.loads(f"v = {p.text}")["v"]
+    return list(p.default) if p.type == "list" else p.default
+
+
+@functools.lru_cache(maxsize=1)
+def _defaults():
+    """The defaults as a nested dict, from the C declaration (PARAMETERS)."""
+    D = {}
+    for p in PARAMETERS:
+        section, key = p.name.split(".")
+        D.setdefault(section, {})[key] = _default_value(p)
+    return D
+
+
+def defaults_toml():
+    """The text of rollerrig/data/rig_default.toml: the declaration of
+    PARAMETERS (csrc/rig/rr_rig_params.c) with every origin as a comment.
+    tests/test_rig_params.py checks that the shipped file equals it;
+    rollerrig.rig.write_defaults() rewrites it."""
+    notes = dict(_core.RIG_SECTIONS)
+    lines = [line.rstrip() for line in _TOML_HEADER.splitlines()]
+    section = None
+    for p in PARAMETERS:
+        sec, key = p.name.split(".")
+        if sec != section:
+            section = sec
+            lines += ["", f"[{sec}]"]
+            lines += [f"# {line}" for line in _wrap(notes.get(sec, ""), 93)]
+        text = p.text if p.text is not None else f'"{p.default}"'
+        lines.append(f"{key} = {text}".ljust(32) + f" # {p.origin}")
+    return "\n".join(lines) + "\n"
+
+
+def _wrap(text, width):
+    import textwrap
+    return textwrap.wrap(text, width) if text else []
+
+
+_TOML_HEADER = """\
+# Default parameters of the rollerrig model of the Politecnico di Torino 1/5 scaled roller rig
+# (Bosso, Gugliotta, Soma, Spiryagin, "Model of scaled test rig for real time applications",
+# the "seed paper"; section and equation numbers below are the paper's).
+#
+# GENERATED from the declaration of the rig's parameters, csrc/rig/rr_rig_params.c (names,
+# units, defaults, ranges, origins): edit that table, then run
+#     python -c "import rollerrig.rig; rollerrig.rig.write_defaults()"
+# (tests/test_rig_params.py checks that this file is current).  A copy of this file, edited, is
+# a valid scenario file (rollerrig simulate --scenario my.toml).
+#
+# SI units throughout (m, kg, s, N, Pa, rad); the unit is in each key's name.
+# Every value names its origin:
+#   "paper ..."      a number printed in the seed paper;
+#   "scaled ..."     full-scale value X / factor, by the similarity law of docs/parameters.md
+#                    (same material, same contact stresses, same speed; length factor 5),
+#                    from the Manchester benchmark vehicle 1 (docs/parameters.md);
+#   "cited ..."      a published or public source, named in the comment;
+#   "choice ..."     a value this project chose, with the reason.
+# The paper does not publish the rig's masses, inertias, radii, stiffnesses or profiles
+# (shared/reference/rig-parameters.csv: NOT_FOUND rows). Derivations, checks and
+# uncertainties: docs/parameters.md."""
+
+
+def default_parameters():
+    """The default parameter set (a fresh nested dict: change it freely)."""
+    return copy.deepcopy(_defaults())
+
+
+# ------------------------------------------------------------------ checking parameters
+
+def _real(lo=-math.inf, hi=math.inf, lo_open=False, hi_open=False):
+    """A check: a finite real number in the interval."""
+    if lo == -math.inf and hi == math.inf:
+        need = ""
+    elif hi == math.inf:
+        need = f" {'>' if lo_open else '>='} {lo:g}"
+    else:
+        need = f" in {'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
+
+    def check(v):
+        ok = isinstance(v, numbers.Real) and not isinstance(v, bool)
+        if ok:
+            try:
+                x = float(v)
+            except OverflowError:                        # an int beyond a double
+                ok = False
+            else:
+                ok = (math.isfinite(x) and (x > lo if lo_open else x >= lo)
+                      and (x < hi if hi_open else x <= hi))
+        return None if ok else f"must be a finite number{need}"
+    return check
+
+
+def _integer(lo, hi):
+    def check(v):
+        ok = isinstance(v, numbers.Integral) and not isinstance(v, bool) and lo <= v <= hi
+        return None if ok else f"must be an integer from {lo} to {hi}"
+    return check
+
+
+def _choice(*values):
+    shown = " or ".join(repr(v) for v in values)
+
+    def check(v):
+        return None if isinstance(v, str) and v in values else f"must be {shown}"
+    return check
+
+
+def _flag(v):
+    return None if isinstance(v, bool) else "must be true or false"
+
+
+def _numbers(item, need, most=math.inf, empty=False):
+    """A check: a list of numbers (at most `most`, empty only if `empty`),
+    each passing `item`."""
+    def check(v):
+        if not isinstance(v, (list, tuple)) or (not v and not empty) or len(v) > most \
+                or any(item(x) for x in v):
+            return f"must be a {'' if empty else 'non-empty '}list of {need}"
+        return None
+    return check
+
+
+def _rule(p):
+    """The check of a declared parameter (PARAMETERS row)."""
+    if p.type == "real":
+        return _real(p.lo, p.hi, p.lo_open, p.hi_open)
+    if p.type == "int":
+        return _integer(int(p.lo), int(p.hi))
+    if p.type == "flag":
+        return _flag
+    if p.type == "choice":
+        return _choice(*p.choices)
+    entry = _real(p.lo, p.hi, p.lo_open, p.hi_open)
+    need = entry(math.nan)[len("must be a finite number"):]
+    # a list whose default is empty may be empty (rr_rig_params.h)
+    return _numbers(entry, f"at most {_core.RIG_MAX_LIST} numbers{need}",
+                    _core.RIG_MAX_LIST, empty=not p.default)
+
+#: the parameter file's keys (contact section) that set a creep-force option:
+#: key -> the option's name in the registry (rollerrig.METHODS), the declared
+#: creep rows "contact.<family>_<option>" read as the C side reads them
+#: (rr_rig_params.c, creep_default); each is given to the chosen method where
+#: it has that option, and checked as the registry says
+_FILE_OPTIONS = {p.name.split(".", 1)[1]: p.name.split("_", 1)[1] for p in PARAMETERS
+                 if p.creep and p.name != "contact.creep_method"}
+
+
+def _option_rule(name):
+    """A parameter check from the registry's option `name` (its range or names)."""
+    op = next(m.options[name] for m in METHODS.values() if name in m.options)
+    if op.type == "choice":
+        return _choice(*op.choices)
+    if op.type == "int":
+        return _integer(op.lo + op.lo_open, op.hi - op.hi_open)
+    return _real(op.lo, op.hi, lo_open=op.lo_open, hi_open=op.hi_open)
+
+
+#: the check of every key the model reads: the declared ones (PARAMETERS),
+#: and the creep-force method's options
+_RULES = {}
+for _p in PARAMETERS:
+    if not _p.creep:
+        _section, _key = _p.name.split(".")
+        _RULES.setdefault(_section, {})[_key] = _rule(_p)
+_RULES["contact"].update({
+    "creep_method": _choice(*METHODS),
+    **{key: _option_rule(option) for key, option in _FILE_OPTIONS.items()},
+})
+
+#: keys (or whole sections) the parameters no longer have, since they acted
+#: on nothing, with what sets the quantity instead (csrc/rig/rr_rig_params.c):
+#: giving one is refused with that reason
+RETIRED = dict(_core.RIG_RETIRED)
+
+
+def _retired(name):
+    return RETIRED.get(name) or RETIRED.get(name.split(".", 1)[0])
+
+
+def _merge(base, over, problems, where=""):
+    """Override nested dict `base` by `over` in place, appending a sentence
+    to `problems` for each key that cannot be taken."""
+    for key, value in over.items():
+        name = f"{where}{key}"
+        reason = _retired(name) if isinstance(key, str) else None
+        if reason is not None:
+            problems.append(f"{name} does not act on the model ({reason}); it is no longer a "
+                            f"parameter, got {_short(value)}")
+            continue
+        if not isinstance(key, str) or key not in base:
+            near = difflib.get_close_matches(str(key), [k for k in base if isinstance(k, str)],
+                                             n=1)
+            hint = f" (did you mean '{where}{near[0]}'?)" if near else ""
+            problems.append(f"unknown parameter '{name}'{hint}")
+            continue
+        default = base[key]
+        if isinstance(default, dict):
+            if not isinstance(value, dict):
+                problems.append(f"'{name}' is a section: give a table of its keys, got "
+                                f"{_short(value)}")
+            else:
+                _merge(default, value, problems, name + ".")
+            continue
+        if isinstance(value, dict):
+            problems.append(f"{name} is a value, not a section, got a table")
+            continue
+        base[key] = value
+
+
+def _check_values(P):
+    """Sentences for every value of the merged parameters that breaks its
+    rule, then for the rules between keys."""
+    problems = []
+    for section, rules in _RULES.items():
+        for key, rule in rules.items():
+            v = P[section][key]
+            need = rule(v)
+            if need:
+                problems.append(f"{section}.{key} {need}, got {_short(v)}")
+    bad = {p.split(" ", 1)[0] for p in problems}
+    S, C = P["scenario"], P["contact"]
+    if not bad & {"scenario.targets", "scenario.target_start_s"}:
+        targets, starts = S["targets"], S["target_start_s"]
+        if len(targets) != len(starts):
+            problems.append(f"scenario.targets has {len(targets)} entries but "
+                            f"scenario.target_start_s has {len(starts)}: give one start "
+                            f"time per target")
+        elif any(b <= a for a, b in zip(starts, starts[1:])):
+            problems.append(f"scenario.target_start_s must increase (one start time per "
+                            f"entry of scenario.targets, in order), got {_short(starts)}")
+        elif "scenario.duration_s" not in bad and starts[-1] >= S["duration_s"]:
+            problems.append(f"scenario.target_start_s must fall inside scenario.duration_s "
+                            f"= {S['duration_s']!r} s, got {_short(starts)}")
+    A = P["adhesion"]
+    if not bad & {f"adhesion.{k}" for k in A if k.startswith("schedule_")}:
+        times = A["schedule_times_s"]
+        for key in ("schedule_mu0", "schedule_polach_A", "schedule_polach_B_s_per_m"):
+            if len(A[key]) != len(times) and (key == "schedule_mu0" or A[key]):
+                problems.append(f"adhesion.{key} has {len(A[key])} entries but "
+                                f"adhesion.schedule_times_s has {len(times)}: give one per time"
+                                f"{'' if key == 'schedule_mu0' else ', or none'}")
+        if any(b < a for a, b in zip(times, times[1:])):
+            problems.append(f"adhesion.schedule_times_s must not decrease (two equal times make "
+                            f"a step), got {_short(times)}")
+    if not bad & {"adhesion.patch_length_m", "roller.radius_m"} \
+            and A["patch_length_m"] > 2 * math.pi * P["roller"]["radius_m"]:
+        problems.append(f"adhesion.patch_length_m must be at most the roller's circumference "
+                        f"2 pi roller.radius_m = {2 * math.pi * P['roller']['radius_m']:.6g} m, "
+                        f"got {A['patch_length_m']!r}")
+    if not bad & {"contact.polach_kA", "contact.polach_kS"} \
+            and C["polach_kS"] > C["polach_kA"]:
+        problems.append(f"contact.polach_kS must be at most contact.polach_kA = "
+                        f"{C['polach_kA']!r} (Polach: kS <= kA), got {C['polach_kS']!r}")
+    return problems
+
+
+def check_parameters(params=None, *, source="check_parameters: params"):
+    """The default parameters overridden by `params` (a nested dict as the
+    layout of rig_default.toml, any subset of it), every value checked.
+
+    Returns the merged nested dict.  Raises one RollerRigError, prefixed by
+    `source`, that lists every problem at once: unknown keys, values out of
+    range (the message names the key, the range and the value), a section
+    given a value or the reverse, the lengths and order of
+    scenario.targets / target_start_s, and a key the parameters no longer
+    have (RETIRED: the similarity law, the full-scale reference, the gear
+    ratios, ...): such a key acted on nothing.
+    """
+    if params is not None and not isinstance(params, dict):
+        raise RollerRigError(f"{source} must be a nested dict (or, for simulate and "
+                             f"build_rig, the path of a TOML file), got "
+                             f"{type(params).__name__}")
+    P, problems = _parameter_problems(params)
+    if problems:
+        raise _error(source, problems)
+    scaled = _scaled_starts(params, P)
+    if scaled:
+        warnings.warn(f"{source}: {scaled}", RollerRigWarning, stacklevel=2)
+    return P
+
+
+def _parameter_problems(params):
+    """(the merged parameters, the list of their problems) of a nested dict."""
+    P = default_parameters()
+    problems = []
+    if params:
+        _merge(P, copy.deepcopy(params), problems)
+        _scale_starts(params, P)
+    return P, problems + _check_values(P)
+
+
+def _starts_not_given(params, P):
+    """True where params set scenario.duration_s (valid) but not
+    scenario.target_start_s, and the default start times do not all fall
+    inside that duration."""
+    S = params.get("scenario") if isinstance(params, dict) else None
+    if not (isinstance(S, dict) and "duration_s" in S and "target_start_s" not in S):
+        return False
+    duration = P["scenario"]["duration_s"]
+    if _real(0.0, MAX_DURATION, lo_open=True)(duration):
+        return False
+    return _defaults()["scenario"]["target_start_s"][-1] >= duration
+
+
+def _scale_starts(params, P):
+    """One rule for a duration too short for the target start times, whether
+    scenario.duration_s or simulate's duration gives it: start times the
+    caller did not give (the defaults, written for the default duration)
+    are scaled to the duration, as simulate(duration=...) scales the
+    scenario's (_target_schedule); start times given with a duration they do
+    not fit are refused (_check_values)."""
+    if _starts_not_given(params, P):
+        D = _defaults()["scenario"]
+        scale = P["scenario"]["duration_s"] / D["duration_s"]
+        P["scenario"]["target_start_s"] = [x * scale for x in D["target_start_s"]]
+
+
+def _scaled_starts(params, P):
+    """The warning's text where _scale_starts scaled the start times, else ""."""
+    if not _starts_not_given(params, P):
+        return ""
+    D = _defaults()["scenario"]
+    return (f"the default target start times {D['target_start_s']} s (for the default "
+            f"scenario.duration_s = {D['duration_s']:g} s; scenario.target_start_s not given) "
+            f"do not all fall inside scenario.duration_s = {P['scenario']['duration_s']:g} s: "
+            f"scaled by {P['scenario']['duration_s'] / D['duration_s']:g} to "
+            f"{[float(f'{x:.6g}') for x in P['scenario']['target_start_s']]} s")
+
+
+def _parameters(func, params):
+    """The checked parameters of a call: params None, a dict, or a file path."""
+    if params is None:
+        return default_parameters()
+    if isinstance(params, (str, os.PathLike)):
+        source = f"{func}: params {os.fspath(params)}"
+        try:
+            params = _read_parameter_file(params)
+        except _Problems as p:
+            raise _error(source, p.problems) from None
+        return check_parameters(params, source=source)
+    if not isinstance(params, dict):
+        raise RollerRigError(f"{func}: params must be a nested dict or the path of a TOML "
+                             f"file, got {type(params).__name__}")
+    return check_parameters(params, source=f"{func}: params")
+
+
+def _real_arg(func, name, v, lo=-math.inf, hi=math.inf, lo_open=False, unit=""):
+    need = _real(lo, hi, lo_open=lo_open)(v)
+    if need:
+        raise RollerRigError(f"{func}: {name} {need}{' ' + unit if unit else ''}, "
+                             f"got {_short(v)}")
+    return float(v)
+
+
+def _check_dt(func, dt):
+    return _real_arg(func, "dt", dt, MIN_DT, MAX_DT, unit="s")
+
+
+def write_defaults(path=DEFAULTS_PATH):
+    """Rewrite rig_default.toml from the C declaration (defaults_toml), as
+    every file is written (rollerrig._files.write_file)."""
+    from .._files import write_file
+    text = defaults_toml()
+    return write_file(path, lambda fh: fh.write(text), what="write_defaults: path")

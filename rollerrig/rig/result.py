@@ -1,0 +1,210 @@
+"""The record of a rig run and RigResult, its time histories with the
+run's schedule and parameters (summary, table, to_csv, to_xarray,
+to_dataframe)."""
+import json
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import _core
+from .._optional import require
+
+
+#: the per-sample record of the C rig (csrc/rig/rr_rig_params.c, in the order of
+#: enum rr_rig_record_index): (name, unit, meaning); each sample is recorded at its end
+RECORD = tuple((name, unit, meaning) for name, _, unit, meaning in _core.RIG_RECORD)
+RECORD_FIELDS = tuple(name for name, _, _ in RECORD)
+#: the unit of each record field ("-": dimensionless)
+RECORD_UNITS = {name: unit for name, unit, _ in RECORD}
+_RECORD_MEANING = {name: meaning for name, _, meaning in RECORD}
+
+
+@dataclass(repr=False)
+class RigResult:
+    """Time histories of a rig run, with its schedule and parameters.
+
+    records:      float array (samples kept, len(RECORD_FIELDS)), one row
+                  per kept control sample, recorded at the sample's end;
+                  each column is also an attribute: res.time [s],
+                  res.creepage [-], res.fx [N], ... (RECORD_FIELDS, units in
+                  RECORD_UNITS; res.sample_status as int8), and
+                  res.normal_load = left + right [N]
+    params:       the merged parameters (nested dict of rig_default.toml)
+    targets:      the creepage targets [-] (magnitudes, in the drive's sense)
+    target_times: their start times [s]
+    dt:           control sample time [s]
+    status:       0 the run finished; > 0 it finished but some samples
+                  warned (1: an inner iteration, e.g. the integrator's Newton
+                  iteration, ended above its tolerance; the samples'
+                  sample_status say which); -19 (ERR_UNTRUSTED) it finished
+                  but more than one sample in 20 warned (20 samples at
+                  least): its records are all there, not to be trusted;
+                  other < 0: it stopped at a sample whose state could not
+                  be computed (-1 NaN, -2 a normal load not positive:
+                  lift-off, -3 a wheel off its roller, -11 a singular
+                  system, -18 a creep force beyond mu N;
+                  rollerrig.status_message(status)), and the records end at
+                  the last good sample
+    message:      "ok", "ok with warnings: ..." (how many samples), "not to
+                  be trusted: ..." (how many), or when and why the run
+                  stopped
+    wall:         wall-clock seconds: "setup" (parameters, contact table: a
+                  one-off, as the paper's offline database) and "run" (the
+                  stepping loop)
+    record_every: the records keep every record_every-th sample (1: all);
+                  the kept samples are k record_every dt apart
+    method:       the creep-force method of the run
+    samples:      control samples stepped (default: len(records) * record_every)
+    """
+
+    records: np.ndarray
+    params: dict
+    targets: tuple
+    target_times: tuple
+    dt: float
+    status: int
+    message: str
+    wall: dict = None
+    record_every: int = 1
+    method: str = None
+    samples: int = None
+
+    def __getattr__(self, name):
+        if name in RECORD_FIELDS:
+            col = self.records[:, RECORD_FIELDS.index(name)]
+            return col.astype(np.int8) if name == "sample_status" else col
+        raise AttributeError(name)
+
+    def __repr__(self):
+        method = self.method or self.params.get("contact", {}).get("creep_method")
+        return (f"RigResult(samples={self.samples_run}, duration={self.duration:g} s, "
+                f"dt={self.dt:g} s, record_every={self.record_every}, method={method!r}, "
+                f"status={self.status}, message={self.message!r})")
+
+    @property
+    def samples_run(self):
+        """Control samples stepped."""
+        return self.samples if self.samples is not None else len(self) * self.record_every
+
+    @property
+    def duration(self):
+        """Simulated time [s]: samples stepped times dt."""
+        return self.samples_run * self.dt
+
+    @property
+    def record_dt(self):
+        """Time between two kept records [s]: record_every dt."""
+        return self.record_every * self.dt
+
+    @property
+    def normal_load(self):
+        """Sum of both wheels' normal loads [N]."""
+        return self.normal_load_left + self.normal_load_right
+
+    def __len__(self):
+        return self.records.shape[0]
+
+    def to_dataframe(self):
+        """The records as a pandas DataFrame, one column per RECORD_FIELDS
+        entry (units in RECORD_UNITS).  Needs pandas (extra "sweep")."""
+        pd = require("pandas", "RigResult.to_dataframe", "sweep")
+        return pd.DataFrame({name: getattr(self, name) for name in RECORD_FIELDS})
+
+    def to_xarray(self):
+        """The records as an xarray.Dataset: dimension "time" [s], one
+        variable per record field with its unit and meaning in attrs
+        ("units", "long_name"); the Dataset's attrs hold the targets, their
+        start times, dt, record_every, method, status, message and the
+        parameters (as JSON, key "params").  Needs xarray (extra "sweep")."""
+        xr = require("xarray", "RigResult.to_xarray", "sweep")
+
+        def attrs(name):
+            return {"units": RECORD_UNITS[name], "long_name": _RECORD_MEANING[name]}
+        method = self.method or self.params.get("contact", {}).get("creep_method")
+        return xr.Dataset(
+            {name: ("time", getattr(self, name), attrs(name)) for name in RECORD_FIELDS[1:]},
+            coords={"time": ("time", self.time, attrs("time"))},
+            attrs={"targets": np.asarray(self.targets, dtype=float),
+                   "target_times": np.asarray(self.target_times, dtype=float),
+                   "target_times_units": "s", "dt": float(self.dt), "dt_units": "s",
+                   "record_every": int(self.record_every), "method": str(method),
+                   "status": int(self.status), "message": str(self.message),
+                   "params": json.dumps(self.params)})
+
+    def to_csv(self, path):
+        """Write the records as CSV (a header of RECORD_FIELDS, one row per
+        kept sample) to `path`: a new path or a regular file, replaced
+        whole (never a symbolic link, a device or a FIFO: RollerRigError
+        naming the path).  Returns the path."""
+        import csv
+        from .._files import write_file
+
+        def write(fh):
+            w = csv.writer(fh)
+            w.writerow(RECORD_FIELDS)
+            w.writerows(self.records.tolist())
+        return write_file(path, write, what="RigResult.to_csv: path")
+
+    def summary(self, tol=0.05, window=0.25):
+        """Per target, a dict: "target"; "reached", the creepage held (mean
+        over the last 80 % of its interval) [-]; "settling_s", the settling
+        time [s] (when the creepage's running mean over `window` seconds
+        first comes within tol of the target; eq. 14's recovery steps then
+        make a small sawtooth about it; NaN if it never does); "adhesion",
+        the adhesion coefficient held [-]; "peak_force_over_muN", the peak
+        |fx| / (mu0 N) over the interval.  The creepage is taken in the
+        drive's sense (braking cx, traction -cx).  Windows are in seconds,
+        so decimated records (record_every > 1) give the same rows to within
+        their spacing.  NaN where an interval holds fewer records than the
+        window (table() says so, and why)."""
+        return [row for row, _ in self._summary(tol, window)]
+
+    def _summary(self, tol, window):
+        """summary()'s rows, each with the reason its numbers are NaN ("" if
+        none is)."""
+        mu0 = self.params["scenario"]["mu0"]
+        sense = -1.0 if self.params["scenario"].get("drive_mode") == "traction" else 1.0
+        rows = []
+        t = self.time
+        creepage = sense * self.creepage
+        ends = list(self.target_times[1:]) + [np.inf]
+        k = max(1, int(round(window / self.record_dt)))
+        for xi, t0, t1 in zip(self.targets, self.target_times, ends):
+            sel = (t > t0) & (t <= t1) & np.isfinite(creepage)
+            if np.count_nonzero(sel) < k:
+                held = min(t1, self.duration) - t0
+                why = (f"the run stopped at t = {self.duration:.4g} s, before it"
+                       if self.status < 0 and held <= 0 else
+                       f"too short to judge: its interval holds {max(held, 0.0):.3g} s of "
+                       f"records, the running mean takes {window:g} s")
+                rows.append((dict(target=xi, reached=np.nan, settling_s=np.nan,
+                                  adhesion=np.nan, peak_force_over_muN=np.nan), why))
+                continue
+            ts, cr = t[sel], creepage[sel]
+            held = ts >= ts[0] + 0.2 * (ts[-1] - ts[0])
+            mean = np.convolve(cr, np.ones(k) / k, mode="valid")   # ends at ts[k-1:]
+            inside = np.flatnonzero(np.abs(mean - xi) <= tol * abs(xi))
+            settle = ts[k - 1 + inside[0]] - t0 if inside.size else np.nan
+            peak = np.max(np.abs(self.fx[sel]) / (mu0 * self.normal_load[sel]))
+            why = "" if inside.size else (f"settling: the running mean never came within "
+                                          f"{tol:.0%} of the target")
+            rows.append((dict(target=xi, reached=float(np.mean(cr[held])),
+                              settling_s=float(settle),
+                              adhesion=float(np.mean(self.adhesion[sel][held])),
+                              peak_force_over_muN=float(peak)), why))
+        return rows
+
+    def table(self, tol=0.05):
+        """summary() as aligned text; a value that is NaN shows as "-", with
+        the reason at the end of its row."""
+        def cell(v, width, fmt):
+            return f"{v:{width}{fmt}}" if np.isfinite(v) else f"{'-':>{width}}"
+        lines = [f"{'target':>8} {'reached':>9} {'settling s':>10} {'adhesion':>9} "
+                 f"{'peak F/muN':>10}"]
+        for r, why in self._summary(tol, 0.25):
+            lines.append(f"{r['target']:8.3f} {cell(r['reached'], 9, '.5f')} "
+                         f"{cell(r['settling_s'], 10, '.3f')} {cell(r['adhesion'], 9, '.4f')} "
+                         f"{cell(r['peak_force_over_muN'], 10, '.4f')}"
+                         f"{'  ' + why if why else ''}")
+        return "\n".join(lines)
+

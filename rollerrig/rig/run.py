@@ -1,0 +1,454 @@
+"""The roller rig in time: the seed paper's mechatronic model and scenario.
+
+    import rollerrig as rr
+    res = rr.simulate()                           # the paper's scenario, default parameters
+    res.time, res.creepage, res.fx                # named numpy arrays, one value per sample
+    res = rr.simulate(duration=4.0, dt=0.004, method="polach",
+                      params={"scenario": {"mu0": 0.3}}, targets=[0.02])
+    res = rr.simulate(params="my.toml")           # a parameter file: any subset of the defaults
+    res = rr.simulate(controller=my_controller)   # a controller of one's own in the loop
+    res = rr.simulate(params={"adhesion": {"schedule_times_s": [5, 6],
+                                           "schedule_mu0": [0.4, 0.1]}})   # mu in time
+    res.summary()                                 # per target: creepage reached, settling, ...
+    res.to_xarray(), res.to_dataframe()           # with xarray / pandas (extra "sweep")
+
+The model (csrc/rig/rr_rig.h): a wheelset on two rigidly joined rollers, its
+axle boxes on springs and dampers, normal loads from its vertical and roll
+balance, contact by rr_rig_contact (FASTSIM with falling friction by
+default), roller and wheelset drives with PI speed controllers (eq. 10-11),
+torque limiters and first-order lags, encoders (eq. 12) and the creepage
+controller (eq. 13-16), sampled every dt; the plant is integrated between
+samples by a fixed-step L-stable method.  Default parameters:
+rollerrig/data/rig_default.toml, every value with its origin
+(docs/parameters.md).
+
+simulate runs it (the rig's own controllers, or a controller of the
+caller's: rollerrig.rig.control), sample by sample through the C loop; replay
+feeds a run's kinematics through a contact model (the paper's Fig. 9).
+"""
+import math
+import sys
+import time
+import warnings
+
+import numpy as np
+
+from .. import _core
+from . import control as _control
+from .._errors import RollerRigError, RollerRigWarning, status_message
+from .build import _build, _creep_options, _geometry
+from .params import MAX_DURATION, _check_dt, _integer, _parameters, _real, _real_arg, _short
+from .result import RECORD_FIELDS, RigResult
+
+
+#: the default cap on the memory of a run's records [bytes]: 1 GiB, about
+#: 4.6 million samples (5.1 hours at the 4 ms sample); simulate refuses a run
+#: whose records would not fit and says which record_every would
+RECORD_BYTES_CAP = 1 << 30
+_BYTES_PER_SAMPLE = 8 * len(RECORD_FIELDS)
+# samples stepped per call into the C loop: bounds the temporary records
+# (14 MB) whatever the run's length and decimation
+_CHUNK_SAMPLES = 1 << 16
+#: a run whose samples did not converge more often than UNTRUSTED_SHARE of
+#: them, and in at least UNTRUSTED_MIN samples, ends with status ERR_UNTRUSTED
+#: (-19): the integrator fails again and again, its results cannot be
+#: trusted.  Measured against the same runs converged (20 substeps, 3 Newton
+#: iterations): the paper's scenario at 8 ms (208 of 2500 samples not
+#: converged) misses its creepage by 40 % rms, mu0 stepped from 0.1 to 0.8
+#: (24 of 100) by 89 %, a start from rest at 2 m/s (45 of 150) by 124 %;
+#: the paper's at 4 ms (none) by 1.2 %.  A transient (a braking onset, a
+#: step of the adhesion) leaves a few such samples, a warning (status 1):
+#: in the tests' short runs 1 to 6 (up to 1 in 15)
+UNTRUSTED_SHARE = 0.05
+UNTRUSTED_MIN = 20
+
+
+def schedule(P, duration, dt, targets, target_times, roller_speed, first=0, stop=None):
+    """The references of samples first <= k < stop (default: all of the
+    duration): roller speed [rad/s] and creepage target (NaN before the
+    first target's start).  Sample k starts at k dt.  The rule is the C
+    side's (rr_rig_schedule), which a C program of the rig follows too."""
+    n = int(round(duration / dt))
+    stop = n if stop is None else min(stop, n)
+    return _core.rig_schedule(float(roller_speed), float(P["roller"]["radius_m"]),
+                              [float(x) for x in targets], [float(t) for t in target_times],
+                              float(dt), int(first), max(int(stop), int(first)))
+
+
+# ------------------------------------------------------------------ simulate
+
+def _target_schedule(S, duration, targets, target_times):
+    """(targets, start times) of a run; the rules are simulate's."""
+    def listed(v):
+        return isinstance(v, (list, tuple, np.ndarray)) and np.ndim(v) == 1 \
+            and 0 < len(v) <= _core.RIG_MAX_LIST
+    if targets is not None and (not listed(targets)
+                                or any(_real(0.0, 1.0, hi_open=True)(x) for x in targets)):
+        raise RollerRigError(f"simulate: targets must be a non-empty list of at most "
+                             f"{_core.RIG_MAX_LIST} creepages in [0, 1), got "
+                             f"{_short(targets)}")
+    if targets is None:
+        targets = S["targets"]
+        if target_times is None:
+            starts = [float(x) for x in S["target_start_s"]]
+            target_times = starts
+            if starts[-1] >= duration:
+                scale = duration / float(S["duration_s"])
+                target_times = [x * scale for x in starts]
+                warnings.warn(
+                    f"simulate: the scenario's target start times {starts} s "
+                    f"(scenario.target_start_s, for scenario.duration_s = "
+                    f"{S['duration_s']:g} s) do not all fall inside duration = "
+                    f"{duration:g} s: scaled by {scale:g} to "
+                    f"{[float(f'{x:.6g}') for x in target_times]} s", RollerRigWarning,
+                    stacklevel=3)
+    elif target_times is None:
+        target_times = [duration * k / len(targets) for k in range(len(targets))]
+    targets = tuple(float(x) for x in targets)
+    if not listed(target_times) or len(target_times) != len(targets) \
+            or any(_real(0.0)(x) for x in target_times):
+        raise RollerRigError(f"simulate: target_times must be start times >= 0 s, one per "
+                             f"target ({len(targets)}), got {_short(target_times)}")
+    target_times = tuple(float(x) for x in target_times)
+    if any(b <= a for a, b in zip(target_times, target_times[1:])):
+        raise RollerRigError(f"simulate: target_times must increase, got "
+                             f"{_short(target_times)}")
+    if target_times[-1] >= duration:
+        raise RollerRigError(f"simulate: target_times must fall inside duration = "
+                             f"{duration:g} s, got {_short(target_times)}")
+    return targets, target_times
+
+
+def _first_sample(t, dt):
+    """The first sample k whose start k dt (as the C schedule computes it,
+    rr_rig_schedule) is at or after t."""
+    k = max(0, math.ceil(t / dt))
+    while k > 0 and (k - 1) * dt >= t:
+        k -= 1
+    while k * dt < t:
+        k += 1
+    return k
+
+
+def _check_targets_applied(targets, target_times, dt, n):
+    """Refuse targets no sample would apply: the schedule gives each sample
+    the target of the last start time at or before its start (k dt), so a
+    target whose interval holds no sample start (it starts within one sample
+    of the next, or after the last sample starts) never reaches the
+    controller, and its row of the summary would be empty."""
+    firsts = [_first_sample(t, dt) for t in target_times] + [n]
+    never = [f"{x:g} from {t:g} s" for x, t, a, b in zip(targets, target_times, firsts,
+                                                          firsts[1:]) if a >= min(b, n)]
+    if never:
+        raise RollerRigError(
+            f"simulate: {len(never)} of the {len(targets)} targets would never be applied "
+            f"({', '.join(never[:5])}{', ...' if len(never) > 5 else ''}): no sample starts "
+            f"between such a target's start and the next's (dt = {dt:g} s, {n} sample"
+            f"{'s' if n > 1 else ''}); lengthen the duration or space the target_times")
+
+
+def _record_plan(n, dt, record_every, max_record_bytes):
+    """(record_every, records kept) of a run of n samples, within the cap."""
+    if _integer(1, max(1, n))(record_every):
+        raise RollerRigError(f"simulate: record_every must be an integer from 1 to the "
+                             f"number of samples ({n}), got {record_every!r}")
+    cap = _real_arg("simulate", "max_record_bytes", max_record_bytes, 0.0, lo_open=True)
+    kept = n // record_every
+    need = kept * _BYTES_PER_SAMPLE
+    if need > cap:
+        fit = -(-n * _BYTES_PER_SAMPLE // int(cap)) if cap >= _BYTES_PER_SAMPLE else None
+        advice = (f"keep one sample in {fit} (record_every={fit}; on the command line "
+                  f"--record-every {fit})" if fit and fit <= n else "shorten the run")
+        raise RollerRigError(
+            f"simulate: the records of {kept} samples"
+            f"{f' (one in {record_every} of {n})' if record_every > 1 else ''} would take "
+            f"{need / 2**30:.3g} GiB, over max_record_bytes = {cap / 2**30:.3g} GiB; "
+            f"{advice}, or raise max_record_bytes")
+    return int(record_every), kept
+
+
+def simulate(duration=None, dt=None, method=None, params=None, targets=None,
+             target_times=None, *, roller_speed=None, start="rolling", nx=None, ny=None,
+             substeps=None, ode=None, record_every=1, max_record_bytes=RECORD_BYTES_CAP,
+             progress=False, controller=None, **creep):
+    """Run the rig: by default the seed paper's scenario on the default parameters.
+
+    duration:  simulated time [s], at least one sample and at most 1e5 s
+               (default scenario.duration_s); the run has round(duration /
+               dt) samples (a RollerRigWarning says so where that is not
+               the duration)
+    dt:        control sample time and integration step [s], 1e-6 to 0.1
+               (default scenario.control_sample_time_s, the paper's 4 ms),
+               at which both drives' sampled speed loops are stable (their
+               PI gains on their inertias through their lags, eq. 10-13;
+               with the default parameters 6.7e-5 to 8.3e-3 s): another is
+               refused before the run, naming the drive and the range
+    method:    creep-force method, one of RIG_METHODS ("fastsim",
+               "fastsim_blended", "modified_fastsim", "polach", "fastrip",
+               "exact_table"; not "linear", which has no friction limit, nor
+               "exact", solved at each step); nx, ny the FASTSIM grid
+               (default: the parameters' contact section)
+    params:    None, a nested dict overriding rig_default.toml, e.g.
+               {"scenario": {"mu0": 0.3}, "wheelset": {"mass_kg": 15.0}}, or
+               the path of a TOML file of the same layout; every problem is
+               reported at once (check_parameters).  Its [adhesion] section
+               changes the friction: a schedule of mu0 (and the falling
+               law's A, B) in time, a contaminated patch on the roller
+               circumference; res.mu_left, res.mu_right record it
+    targets:   creepage targets in sequence, magnitudes in [0, 1) in the
+               drive's sense (default scenario.targets, the paper's 0.04,
+               0.015, 0.02, 0.03); target_times their start times [s],
+               increasing, inside the duration.  Without target_times:
+               targets given here start at equal intervals over the
+               duration; the scenario's own targets start at
+               scenario.target_start_s when those all fall inside the
+               duration, otherwise at those times scaled by duration /
+               scenario.duration_s, with a RollerRigWarning saying so (the
+               rule of a scenario.duration_s given without start times:
+               check_parameters).  A target no sample would apply (its
+               interval holds no sample's start) is refused
+    roller_speed: roller surface speed [m/s] held by its controller
+               (default scenario.roller_speed_m_s)
+    start:     "rolling" (wheelset rolling freely at roller_speed) or "rest"
+               (everything at standstill; the roller drive spins the rig up)
+    substeps, ode: plant steps per sample and the integrator ("ros2",
+               "trbdf2", "lineuler")
+    record_every: keep the record of every record_every-th sample only (the
+               run still takes every sample): for long runs
+    max_record_bytes: cap on the records' memory (default RECORD_BYTES_CAP,
+               1 GiB: 232 bytes per kept sample); a run over it is refused
+               before it starts, with the record_every that would fit
+    progress:  print a progress bar on stderr
+    controller: None (the rig's own controllers), or a callable called at
+               each control sample with what a real controller sees
+               (rollerrig.rig.control.RigSignals: time, encoder counts, angles
+               and speeds, drive torques, eq. 16's estimate, the scenario's
+               references) and returning the references held over the
+               sample: a dict with any of roller_speed [rad/s] or
+               roller_torque [N m], wheelset_speed, wheelset_torque or
+               xi_ref (a creepage target for the rig's own controller); a
+               drive left out (or None returned) keeps the rig's own
+               controller.  Its method start(info), if any, is called first
+               (rollerrig.rig.control.RigInfo).  A controller that raises or
+               returns NaN ends the run with a RollerRigError naming the
+               sample, whose .result holds the history so far
+    **creep:   the creep-force method's options: bound, grid, slip_speed,
+               blend_rule (blended FASTSIM), k0, alpha_inf, beta (modified
+               FASTSIM), kA, kS (Polach); see
+               rollerrig.creep_forces
+    Returns RigResult (its fields, units and status codes are in its
+    docstring).  A run that fails (a wheel off its roller, lift-off, NaN, a
+    creep force beyond mu N) stops cleanly: the result holds the history so
+    far, its status and message say why.  A run whose samples did not
+    converge more often than UNTRUSTED_SHARE (one in 20), in UNTRUSTED_MIN
+    (20) samples or more, ends with status ERR_UNTRUSTED (-19), its message
+    saying how many.
+    """
+    t0 = time.perf_counter()
+    if controller is not None and not callable(controller):
+        raise RollerRigError(f"simulate: controller must be a callable (signals -> dict of "
+                             f"references), got {_short(controller)}")
+    P = _parameters("simulate", params)
+    S = P["scenario"]
+    given_dt = dt is not None
+    dt = _check_dt("simulate", dt if dt is not None else S["control_sample_time_s"])
+    duration_name = "duration" if duration is not None else "scenario.duration_s"
+    duration = _real_arg("simulate", "duration", duration if duration is not None
+                         else S["duration_s"], 0.0, MAX_DURATION, lo_open=True, unit="s")
+    dt_name = "dt" if given_dt else "scenario.control_sample_time_s"
+    if duration < dt * (1.0 - 1e-9):
+        raise RollerRigError(f"simulate: {duration_name} = {duration:g} s is shorter than one "
+                             f"sample ({dt_name} = {dt:g} s)")
+    n = max(1, int(round(duration / dt)))
+    # a run of whole samples: say so where that changes the duration (by more
+    # than the rounding of a dt given in single precision, 5e-8)
+    if abs(n * dt - duration) > 1e-6 * duration:
+        warnings.warn(f"simulate: {duration_name} = {duration:g} s is not a whole number of "
+                      f"samples of "
+                      f"{dt_name} = {dt:g} s: the run takes {n} samples, {n * dt:.9g} s",
+                      RollerRigWarning, stacklevel=2)
+    targets, target_times = _target_schedule(S, duration, targets, target_times)
+    _check_targets_applied(targets, target_times, dt, n)
+    record_every, kept = _record_plan(n, dt, record_every, max_record_bytes)
+    rig, _, dt, V, used = _build("simulate", P, dt=dt, method=method, substeps=substeps,
+                                 ode=ode, nx=nx, ny=ny, roller_speed=roller_speed,
+                                 start=start, creep=creep, given_dt=given_dt)
+
+    out = np.full((kept, len(RECORD_FIELDS)), np.nan)
+    t1 = time.perf_counter()
+
+    def result(out, status, message, stepped):
+        wall = {"setup": t1 - t0, "run": time.perf_counter() - t1}
+        return RigResult(out, P, targets, target_times, dt, int(status), message, wall,
+                         record_every=record_every, method=used, samples=stepped)
+    if controller is not None:
+        out, stepped, status, worst, warned = _run_controlled(
+            rig, controller, P, duration, dt, targets, target_times, V, n, record_every, out,
+            progress, result)
+    else:
+        out, stepped, status, worst, warned = _run_builtin(
+            rig, P, duration, dt, targets, target_times, V, n, record_every, out, progress)
+    if progress:
+        sys.stderr.write("\n")
+    status = status if status < 0 else worst
+    if status == 0:
+        message = "ok"
+    elif status > 0 and warned > UNTRUSTED_SHARE * stepped and warned >= UNTRUSTED_MIN:
+        message = (f"not to be trusted: {warned} of {stepped} samples did not converge "
+                   f"(sample_status {status}: {status_message(status)}), more than one in "
+                   f"{round(1 / UNTRUSTED_SHARE)}; more integration.substeps or "
+                   f"newton_iterations (or a shorter dt) converge it")
+        status = _core.ERR_UNTRUSTED
+    elif status > 0:
+        message = (f"ok with warnings: {warned} of {stepped} samples warned "
+                   f"(sample_status {status}: {status_message(status)})")
+    else:
+        message = f"stopped at t = {rig.t:.4f} s: {status_message(status)}"
+    return result(out, status, message, stepped)
+
+
+def _progress(done):
+    sys.stderr.write(f"\rsimulate [{'#' * int(40 * done):<40}] {100 * done:5.1f} %")
+    sys.stderr.flush()
+
+
+def _run_builtin(rig, P, duration, dt, targets, target_times, V, n, record_every, out,
+                 progress):
+    """simulate's samples on the rig's own controllers, in chunks through
+    the C loop.  Returns (records kept, samples stepped, the run's status,
+    the worst sample status, samples warned)."""
+    # about 50 steps of the progress bar; without one, as few calls as the bound allows
+    chunk = max(1, min(n // 50 if progress else n, _CHUNK_SAMPLES))
+    stepped, worst, warned, status = 0, 0, 0, 0
+    for first in range(0, n, chunk):
+        stop = min(n, first + chunk)
+        roller_ref, xi_ref = schedule(P, duration, dt, targets, target_times, V, first, stop)
+        # every sample kept: the records straight into the result's rows
+        rec, status = rig.run(roller_ref, xi_ref, out[first:stop] if record_every == 1
+                              else None)
+        if status < 0:
+            good = np.isfinite(rec[:, 0]) & (rec[:, -1] >= 0)
+            rec = rec[:int(np.argmin(good)) if not good.all() else len(rec)]
+        # keep samples k = record_every - 1, 2 record_every - 1, ...: the
+        # records every record_every dt, ending at the duration
+        if record_every > 1:
+            offset = (record_every - 1 - first) % record_every
+            keep = rec[offset::record_every]
+            at = (first + offset) // record_every
+            out[at:at + len(keep)] = keep
+        stepped = first + len(rec)
+        # the worst warning of the chunk from its samples' own statuses: the
+        # binding's run() may report only that of its last block of samples
+        if len(rec):
+            worst = max(worst, status, int(np.max(rec[:, -1])))
+            warned += int(np.count_nonzero(rec[:, -1] > 0))
+        if progress:
+            _progress(stop / n)
+        if status < 0:
+            out = out[:stepped // record_every]
+            break
+    return out, stepped, status, worst, warned
+
+
+_XI_REF = RECORD_FIELDS.index("xi_ref")
+
+
+def _run_controlled(rig, controller, P, duration, dt, targets, target_times, V, n,
+                    record_every, out, progress, result):
+    """simulate's samples with a controller of the user's
+    (rollerrig.rig.control): read, call, write, advance, sample by sample; the
+    records' xi_ref is the scenario's target the controller was given.
+    Returns as _run_builtin; a controller that raises, or returns what is
+    not a command (reading it raises, whatever the exception) or a command
+    the rig refuses (NaN), ends the run with a RollerRigError whose .result
+    holds the history so far."""
+    core = rig._core
+    stepped, worst, warned, status = 0, 0, 0, 0
+
+    def fail(k, t, what, code, cause=None):
+        kept = out[:k // record_every]
+        text = (f"simulate: the controller failed at sample {k} (t = {t:.4f} s): {what}; "
+                f"the history so far is in this error's .result")
+        e = RollerRigError(text)
+        e.result = result(kept, code, text.split(": ", 1)[1], k)
+        raise e from cause
+
+    start = getattr(controller, "start", None)
+    if start is not None:
+        try:
+            start(rig.info)
+        except Exception as exc:
+            fail(0, 0.0, f"its start(info) raised {type(exc).__name__}: "
+                 f"{_control.safe_repr(exc, str)}", _core.ERR_CONTROLLER, exc)
+    chunk = max(1, min(n // 50 if progress else n, _CHUNK_SAMPLES))
+    for first in range(0, n, chunk):
+        stop = min(n, first + chunk)
+        roller_ref, xi_ref = schedule(P, duration, dt, targets, target_times, V, first, stop)
+        for k in range(first, stop):
+            vals, status = core.read()
+            if status < 0:
+                break
+            s = _control.RigSignals(k, *vals, float(roller_ref[k - first]),
+                                    float(xi_ref[k - first]))
+            try:
+                cmd = controller(s)
+            except Exception as exc:
+                fail(k, s.t, f"it raised {type(exc).__name__}: {_control.safe_repr(exc, str)}",
+                     _core.ERR_CONTROLLER, exc)
+            try:
+                modes = _control.command(cmd, s)
+            except ValueError as exc:                   # named by command()
+                fail(k, s.t, str(exc), _core.ERR_CONTROLLER, exc.__cause__)
+            except Exception as exc:                    # whatever else reading it raised
+                fail(k, s.t, f"reading what it returned raised {type(exc).__name__}: "
+                     f"{_control.safe_repr(exc, str)}", _core.ERR_CONTROLLER, exc)
+            status = core.write(*modes, math.nan)
+            if status < 0:
+                fail(k, s.t, f"the rig refused its command {_control.safe_repr(cmd):.80}: "
+                     f"{status_message(status)}", status)
+            rec, status = core.advance()
+            rec[_XI_REF] = s.xi_ref
+            if status < 0:
+                break
+            stepped = k + 1
+            worst = max(worst, status)
+            warned += status > 0
+            if stepped % record_every == 0:
+                out[stepped // record_every - 1] = rec
+        if progress:
+            _progress(stop / n)
+        if status < 0:
+            out = out[:stepped // record_every]
+            break
+    return out, stepped, status, worst, warned
+
+
+def replay(res, *, method=None, nx=None, ny=None, **creep):
+    """The seed paper's Fig. 9 procedure: the kinematics recorded in a run
+    (a RigResult, e.g. an offline high-accuracy run kept as a database) fed
+    sample by sample through a contact model (the real-time one by default:
+    the parameters' method and grid) with the recorded normal loads.
+    Returns rollerrig.RigContact for every sample; compare its
+    left.fx + right.fx with res.fx."""
+    from .contact import rig_contact
+    from ..contact.creep import FallingFriction
+
+    P = res.params
+    C, A = P["contact"], P["adhesion"]
+    mu0 = P["scenario"]["mu0"]
+    patch = (A["patch_mu0"], A["patch_polach_A"], A["patch_polach_B_s_per_m"])
+    if (np.any(res.mu_left != mu0) or np.any(res.mu_right != mu0)
+            or A["schedule_polach_A"] or A["schedule_polach_B_s_per_m"]
+            or (A["patch_length_m"] > 0 and patch != (mu0, C["polach_A"], C["polach_B_s_per_m"]))):
+        raise RollerRigError("replay: the run's adhesion changed (its [adhesion] section: "
+                             "mu_left, mu_right vary, or A, B do); replay takes one friction "
+                             "law, scenario.mu0 with the contact section's")
+    friction = (FallingFriction(A=C["polach_A"], B=C["polach_B_s_per_m"])
+                if C["friction_law"] == "polach_falling" else None)
+    opts = _creep_options("replay", P, method, nx, ny, creep, in_rig=False)
+    return rig_contact(_geometry(P), x=res.x, y=res.y, yaw=res.yaw, vx=res.vx, vy=res.vy,
+                       yaw_rate=res.yaw_rate, spin=res.spin, roller_spin=res.roller_spin,
+                       N_left=res.normal_load_left, N_right=res.normal_load_right,
+                       mu=P["scenario"]["mu0"], friction=friction,
+                       E=C["youngs_modulus_Pa"], nu=C["poisson_ratio"],
+                       vmin=C["min_rolling_speed_m_s"], **opts)
