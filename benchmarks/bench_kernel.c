@@ -11,8 +11,8 @@
  * length (n, or 1 for a broadcast constant) and that many doubles.  Columns:
  *   hertz: A, B, N, E1, nu1, E2, nu2                      (7)
  *   creep: cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B   (12)
- * the argument order of rollerrig/_core.c.  The loop is the binding's inner
- * loop (rollerrig/_core.c: py_hertz, py_creep_forces) without the GIL
+ * the argument order of the binding.  The loop is the binding's inner
+ * loop (rollerrig/_core_c/contact.c: py_hertz, py_creep_forces) without the GIL
  * release between chunks: read the inputs through a stride (0 for a
  * constant), call the kernel, store the outputs and the status into arrays
  * of length n.  The binding's per-call costs are deliberately left out.
