@@ -98,6 +98,7 @@ int main(int argc, char **argv)
     long n, i, bad = 0;
     int repeats, r, hertz;
     rr_creep_opts opts;
+    rr_creep_checked checked;
 
     if (argc < 4)
         die("usage: bench_kernel hertz FILE REPEATS | creep FILE REPEATS METHOD NX NY GRID");
@@ -120,8 +121,9 @@ int main(int argc, char **argv)
         if (rr_method_option(rr_method_get(opts.method), "grid") >= 0
             && rr_creep_opts_set(&opts, "grid", atof(argv[7])) < 0)
             die("invalid creep options");
-        if (rr_creep_opts_check(&opts) < 0)
-            die("invalid creep options");
+        /* checked once for the batch, as the binding does (rr_creep_check) */
+        if (rr_creep_check(&checked, &opts, NULL) < 0 || checked.work_len > 0)
+            die("invalid creep options (or a method with a workspace)");
     }
     n = read_cases(argv[2], hertz ? 7 : 12, in);
     o1 = malloc((size_t)n * sizeof *o1);
@@ -172,7 +174,8 @@ int main(int argc, char **argv)
                 c.speed = IN(in[9], i);
                 fr.A = IN(in[10], i);
                 fr.B = IN(in[11], i);
-                st[i] = (signed char)rr_creep_forces(&c, &fr, &opts, &f);
+                st[i] = (signed char)rr_creep_forces_checked(&checked, &c, &fr, NULL, 0, NULL,
+                                                             &f);
                 o1[i] = f.fx;
                 o2[i] = f.fy;
                 o3[i] = f.mz;
