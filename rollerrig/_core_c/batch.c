@@ -182,18 +182,19 @@ int int_arg(PyObject *v, const char *func, const char *name, long lo, long hi, i
     return 0;
 }
 
-PyObject *elementwise_call(const char *func, PyObject *args, const char *const *names,
-                           int nin, int nout, batch_kernel kernel, elementwise *b, double cost)
+PyObject *elementwise_call(const char *func, PyObject *args, int first,
+                           const char *const *names, int nin, int nout, batch_kernel kernel,
+                           elementwise *b, double cost)
 {
     PyObject *objs[MAX_IN], *out[MAX_OUT + 1] = {NULL, NULL, NULL, NULL, NULL}, *res;
     npy_intp n;
     int k;
-    if (!PyTuple_Check(args) || PyTuple_GET_SIZE(args) != nin) {
+    if (!PyTuple_Check(args) || PyTuple_GET_SIZE(args) != first + nin) {
         PyErr_Format(PyExc_TypeError, "%s: expected %d arrays (%s, ...)", func, nin, names[0]);
         return NULL;
     }
     for (k = 0; k < nin; k++)
-        objs[k] = PyTuple_GET_ITEM(args, k);
+        objs[k] = PyTuple_GET_ITEM(args, first + k);
     if (parse_inputs(func, objs, names, nin, &n, b->in) < 0 || new_outputs(n, nout, out) < 0)
         goto fail;
     for (k = 0; k < nout; k++)

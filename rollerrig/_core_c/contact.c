@@ -29,7 +29,7 @@ PyObject *py_hertz(PyObject *self, PyObject *args)
     static const char *const names[] = {"A", "B", "N", "E1", "nu1", "E2", "nu2"};
     elementwise b;
     (void)self;
-    return elementwise_call("hertz", args, names, 7, 4, hertz_kernel, &b, 1.0);
+    return elementwise_call("hertz", args, 0, names, 7, 4, hertz_kernel, &b, 1.0);
 }
 
 /* hertz1(A, B, N, E1, nu1, E2, nu2) -> (a, b, p0, delta, status): one case
@@ -76,7 +76,7 @@ PyObject *py_kalker(PyObject *self, PyObject *args)
     static const char *const names[] = {"a_over_b", "nu"};
     elementwise b;
     (void)self;
-    return elementwise_call("kalker_coefficients", args, names, 2, 4, kalker_kernel, &b, 1.0);
+    return elementwise_call("kalker_coefficients", args, 0, names, 2, 4, kalker_kernel, &b, 1.0);
 }
 
 /* --------------------------------------------------------- creep forces */
@@ -109,8 +109,8 @@ static int creep_kernel(void *ctx, npy_intp start, npy_intp stop)
         rr_friction fr;
         rr_forces f;
         load_case(b->in, i, &c, &fr);
-        b->st[i] = (npy_int8)rr_creep_forces_interruptible(&c, &fr, &b->o, b->work, b->work_len,
-                                                           &b->stop.hook, &f);
+        b->st[i] = (npy_int8)rr_creep_forces_checked(&b->creep, &c, &fr, b->work, b->work_len,
+                                                     &b->stop.hook, &f);
         b->out[0][i] = f.fx;
         b->out[1][i] = f.fy;
         b->out[2][i] = f.mz;
@@ -120,23 +120,27 @@ static int creep_kernel(void *ctx, npy_intp start, npy_intp stop)
     return 0;
 }
 
+/* creep_forces([opts,] cx, ..., B, *, method, <its options>): the options a
+ * CreepOptions or keywords, checked once for the batch (call_opts); each
+ * case's own numbers checked by the method */
 PyObject *py_creep_forces(PyObject *self, PyObject *args, PyObject *kwargs)
 {
     elementwise b;
     PyObject *res;
+    int first;
     (void)self;
-    if (parse_opts(kwargs, "creep_forces", NULL, &b.o) < 0)
+    if ((first = call_opts(args, kwargs, "creep_forces", &b.creep)) < 0)
         return NULL;
     /* one workspace for the whole batch, zero-filled: a method may keep
      * what it can reuse from one case to the next there (the exact
      * solver's kernel spectra); each call, so each thread, has its own */
-    b.work_len = rr_creep_workspace_len(&b.o);
+    b.work_len = b.creep.work_len;
     b.work = NULL;
     if (b.work_len > 0 && !(b.work = PyMem_Calloc(b.work_len, sizeof(double))))
         return PyErr_NoMemory();
     interrupt_hook_init(&b.stop);
-    res = elementwise_call("creep_forces", args, case_names, NCASE, 3, creep_kernel, &b,
-                           rr_creep_cost(&b.o));
+    res = elementwise_call("creep_forces", args, first, case_names, NCASE, 3, creep_kernel, &b,
+                           b.creep.cost);
     PyMem_Free(b.work);
     return res;
 }
@@ -177,10 +181,10 @@ PyObject *py_creep_forces1(PyObject *self, PyObject *const *args, Py_ssize_t nar
     fr.A = v[10];
     fr.B = v[11];
     {
-        const rr_creep_opts *o = &((CreepOptionsObject *)args[0])->o;
-        const size_t work_len = rr_creep_workspace_len(o);
+        const rr_creep_checked *o = &((CreepOptionsObject *)args[0])->k;
+        const size_t work_len = o->work_len;
         if (work_len == 0) {
-            st = rr_creep_forces(&c, &fr, o, &f);
+            st = rr_creep_forces_checked(o, &c, &fr, NULL, 0, NULL, &f);
         } else {
             /* a method with a workspace is a long computation: the GIL is let
              * go, Ctrl-C noticed within the case */
@@ -190,7 +194,7 @@ PyObject *py_creep_forces1(PyObject *self, PyObject *const *args, Py_ssize_t nar
                 return PyErr_NoMemory();
             interrupt_hook_init(&stop);
             Py_BEGIN_ALLOW_THREADS
-            st = rr_creep_forces_interruptible(&c, &fr, o, work, work_len, &stop.hook, &f);
+            st = rr_creep_forces_checked(o, &c, &fr, work, work_len, &stop.hook, &f);
             Py_END_ALLOW_THREADS
             PyMem_Free(work);
             if (stop.stopped)
@@ -224,22 +228,23 @@ PyObject *py_fastsim_field(PyObject *self, PyObject *args, PyObject *kwargs)
 {
     PyObject *objs[NCASE], *arr[7] = {NULL, NULL, NULL, NULL, NULL, NULL, NULL};
     input in[NCASE];
-    rr_creep_opts o;
+    rr_creep_checked o;
     const rr_method_desc *d;
     fastsim_field_call call;
     npy_intp n, dims[2];
+    const int first = opts_first(args);
     int k, rows, cols;
     (void)self;
 
-    if (PyTuple_GET_SIZE(args) != NCASE) {
+    if (PyTuple_GET_SIZE(args) != first + NCASE) {
         PyErr_Format(PyExc_TypeError, "fastsim_field: expected %d arrays", NCASE);
         return NULL;
     }
     for (k = 0; k < NCASE; k++)
-        objs[k] = PyTuple_GET_ITEM(args, k);
-    if (parse_opts(kwargs, "fastsim_field", NULL, &o) < 0)
+        objs[k] = PyTuple_GET_ITEM(args, first + k);
+    if (call_opts(args, kwargs, "fastsim_field", &o) < 0)
         return NULL;
-    d = rr_method_get(o.method);
+    d = o.d;
     if (!d->field) {
         const char *names[RR_METHOD_COUNT];
         PyObject *list;
@@ -261,7 +266,7 @@ PyObject *py_fastsim_field(PyObject *self, PyObject *args, PyObject *kwargs)
                      (Py_ssize_t)n);
         return NULL;
     }
-    d->field_shape(&o, &rows, &cols);
+    d->field_shape(&o.o, &rows, &cols);
     dims[0] = rows;
     dims[1] = cols;
     for (k = 0; k < 7; k++) {
@@ -277,7 +282,7 @@ PyObject *py_fastsim_field(PyObject *self, PyObject *args, PyObject *kwargs)
     call.field.slip = (signed char *)PyArray_DATA((PyArrayObject *)arr[5]);
     call.field.area = OUT(arr[6]);
     load_case(in, 0, &call.c, &call.fr);
-    call.o = &o;
+    call.o = &o.o;
     if (run_batch(fastsim_field_kernel, &call, 1, 1.0) < 0)
         goto fail;
     return Py_BuildValue("(dddiNNNNNNN)", call.f.fx, call.f.fy, call.f.mz, call.st, arr[0],

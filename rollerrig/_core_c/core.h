@@ -114,16 +114,16 @@ typedef struct {
     input in[MAX_IN];
     double *out[MAX_OUT];
     npy_int8 *st;
-    rr_creep_opts o;
+    rr_creep_checked creep;  /* creep_forces: the method and its options, checked */
     double *work;          /* the method's workspace (creep_forces), NULL if none */
     size_t work_len;
     interrupt_hook stop;   /* creep_forces: Ctrl-C within a case */
 } elementwise;
 
-/* The elementwise call func(*arrays): nin input arrays from args, named
+/* The elementwise call func(*arrays): nin input arrays from args[first:], named
  * names[], nout float64 outputs and the int8 status computed by kernel at
  * cost units a case; (outputs..., status), or NULL with an exception. */
-CORE_PRIVATE PyObject *elementwise_call(const char *func, PyObject *args,
+CORE_PRIVATE PyObject *elementwise_call(const char *func, PyObject *args, int first,
                                         const char *const *names, int nin, int nout,
                                         batch_kernel kernel, elementwise *b, double cost);
 
@@ -134,18 +134,29 @@ CORE_PRIVATE PyObject *quoted_names(const char *const *names, int n);
 
 /* The method and its options from keywords: method= a name of the registry,
  * every other keyword (but own, the call's own keyword, or NULL) an option of
- * that method; then the method's constraints across options.  0, or -1 with
- * a ValueError naming the method, the option, its range and the value. */
+ * that method; then the method's constraints across options, checked once
+ * into *k (rr_creep_check: the kernels take it as checked).  0, or -1 with a
+ * ValueError naming the method, the option, its range and the value. */
 CORE_PRIVATE int parse_opts(PyObject *kwargs, const char *func, const char *own,
-                            rr_creep_opts *o);
+                            rr_creep_checked *k);
 
 /* CreepOptions(**options): a method and its options, parsed and checked
- * once, for repeated scalar calls (creep_forces1). Immutable. */
+ * once (rr_creep_check), for repeated calls: creep_forces1, and the batch
+ * calls given one (call_opts; check_creep_options makes one).  Immutable. */
 typedef struct {
     PyObject_HEAD
-    rr_creep_opts o;
+    rr_creep_checked k;
     int ready;
 } CreepOptionsObject;
+
+/* 1 if a call's first argument is a CreepOptions (its arrays follow), else 0 */
+CORE_PRIVATE int opts_first(PyObject *args);
+
+/* The method and options of a call: a CreepOptions as its first positional
+ * argument (then no keywords), else parse_opts of its keywords, into *k.
+ * The index of the call's first array (1 or 0), or -1 with an exception. */
+CORE_PRIVATE int call_opts(PyObject *args, PyObject *kwargs, const char *func,
+                           rr_creep_checked *k);
 
 CORE_PRIVATE extern PyTypeObject CreepOptionsType;
 

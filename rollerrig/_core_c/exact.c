@@ -15,25 +15,26 @@ PyObject *py_exact_hertz_problem(PyObject *self, PyObject *args, PyObject *kwarg
 {
     PyObject *objs[NCASE];
     input in[NCASE];
-    rr_creep_opts o;
+    rr_creep_checked o;
     rr_contact_case c;
     rr_friction fr;
     rr_exact_problem pb;
     npy_intp n;
+    const int first = opts_first(args);
     int k, st;
     (void)self;
 
-    if (PyTuple_GET_SIZE(args) != NCASE) {
+    if (PyTuple_GET_SIZE(args) != first + NCASE) {
         PyErr_Format(PyExc_TypeError, "exact_hertz_problem: expected %d arrays", NCASE);
         return NULL;
     }
     for (k = 0; k < NCASE; k++)
-        objs[k] = PyTuple_GET_ITEM(args, k);
-    if (parse_opts(kwargs, "exact_field", NULL, &o) < 0)
+        objs[k] = PyTuple_GET_ITEM(args, first + k);
+    if (call_opts(args, kwargs, "exact_field", &o) < 0)
         return NULL;
-    if (o.method != RR_METHOD_EXACT) {
+    if (o.o.method != RR_METHOD_EXACT) {
         PyErr_Format(PyExc_ValueError, "exact_field: method must be 'exact', got '%s'",
-                     rr_method_get(o.method)->name);
+                     o.d->name);
         return NULL;
     }
     if (parse_inputs("exact_field", objs, case_names, NCASE, &n, in) < 0)
@@ -44,7 +45,7 @@ PyObject *py_exact_hertz_problem(PyObject *self, PyObject *args, PyObject *kwarg
         return NULL;
     }
     load_case(in, 0, &c, &fr);
-    st = rr_exact_hertz_problem(&c, &fr, &o, &pb);
+    st = rr_exact_hertz_problem(&c, &fr, &o.o, &pb);
     return Py_BuildValue("(iiidddddddddddddddi)", st, pb.grid.mx, pb.grid.my, pb.grid.dx,
                          pb.grid.dy, pb.grid.x0, pb.grid.y0, pb.A, pb.B, pb.N, pb.G, pb.nu,
                          pb.mu, pb.cx, pb.cy, pb.cphi, pb.spin_shift, pb.tol, pb.maxit);

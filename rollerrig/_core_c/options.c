@@ -139,14 +139,11 @@ static int option_value(PyObject *v, const char *func, const rr_creep_option *op
     return 0;
 }
 
-/* The method and its options from keywords: method= a name of the registry,
- * every other keyword (but own, the call's own keyword, or NULL) an option of
- * that method; then the method's constraints across options.  0, or -1 with
- * a ValueError naming the method, the option, its range and the value. */
-int parse_opts(PyObject *kwargs, const char *func, const char *own, rr_creep_opts *o)
+int parse_opts(PyObject *kwargs, const char *func, const char *own, rr_creep_checked *k)
 {
     PyObject *v = kwargs ? PyDict_GetItemString(kwargs, "method") : NULL, *key, *names;
     const rr_method_desc *d;
+    rr_creep_opts opts, *o = &opts;
     const char *mname = v && PyUnicode_Check(v) ? PyUnicode_AsUTF8(v) : NULL;
     Py_ssize_t pos = 0;
     int method, bad, st;
@@ -191,14 +188,15 @@ int parse_opts(PyObject *kwargs, const char *func, const char *own, rr_creep_opt
         if (option_value(v, func, &d->opts[i], &o->v[i]) < 0)
             return -1;
     }
-    st = rr_creep_opts_check_at(o, &bad);
+    /* the one check of the call: rr_creep_check keeps the checked options */
+    st = rr_creep_check(k, o, &bad);
     if (st < 0) {
         /* each option passed its own range: a constraint across options */
         PyObject *got = PyUnicode_FromString(""), *part;
-        int k;
-        for (k = 0; got && k < d->nopts; k++) {
-            PyObject *num = number_str(o->v[k]);
-            part = num ? PyUnicode_FromFormat("%s%s = %U", k ? ", " : "", d->opts[k].name, num)
+        int j;
+        for (j = 0; got && j < d->nopts; j++) {
+            PyObject *num = number_str(o->v[j]);
+            part = num ? PyUnicode_FromFormat("%s%s = %U", j ? ", " : "", d->opts[j].name, num)
                        : NULL;
             Py_XDECREF(num);
             if (!part) {
@@ -220,20 +218,49 @@ int parse_opts(PyObject *kwargs, const char *func, const char *own, rr_creep_opt
     return 0;
 }
 
-/* check_creep_options(func, options): the options (a dict with method=)
- * checked as every call checks them, messages naming func; None, or a
- * ValueError. */
+int opts_first(PyObject *args)
+{
+    return PyTuple_GET_SIZE(args) > 0
+           && PyObject_TypeCheck(PyTuple_GET_ITEM(args, 0), &CreepOptionsType);
+}
+
+int call_opts(PyObject *args, PyObject *kwargs, const char *func, rr_creep_checked *k)
+{
+    if (opts_first(args)) {
+        const CreepOptionsObject *opts = (const CreepOptionsObject *)PyTuple_GET_ITEM(args, 0);
+        if (!opts->ready || (kwargs && PyDict_GET_SIZE(kwargs) > 0)) {
+            PyErr_Format(PyExc_TypeError, "%s: %s", func, opts->ready
+                         ? "options given twice (a CreepOptions and keywords)"
+                         : "the CreepOptions is not initialised");
+            return -1;
+        }
+        *k = opts->k;
+        return 1;
+    }
+    return parse_opts(kwargs, func, NULL, k) < 0 ? -1 : 0;
+}
+
+/* check_creep_options(func, options) -> CreepOptions: the options (a dict
+ * with method=) checked as every call checks them, messages naming func,
+ * for the calls that take them (creep_forces, fastsim_field,
+ * exact_hertz_problem, creep_forces1); or a ValueError. */
 PyObject *py_check_creep_options(PyObject *self, PyObject *args)
 {
     const char *func;
     PyObject *d;
-    rr_creep_opts o;
+    rr_creep_checked k;
+    CreepOptionsObject *opts;
     (void)self;
     if (!PyArg_ParseTuple(args, "sO!:check_creep_options", &func, &PyDict_Type, &d))
         return NULL;
-    if (parse_opts(d, func, NULL, &o) < 0)
+    if (parse_opts(d, func, NULL, &k) < 0)
         return NULL;
-    Py_RETURN_NONE;
+    opts = (CreepOptionsObject *)CreepOptionsType.tp_alloc(&CreepOptionsType, 0);
+    if (opts) {
+        opts->k = k;
+        opts->ready = 1;
+    }
+    return (PyObject *)opts;
 }
 
 /* CreepOptions(**options): parsed once, for repeated calls (core.h) */
@@ -244,7 +271,7 @@ static int CreepOptions_init(CreepOptionsObject *self, PyObject *args, PyObject 
         PyErr_SetString(PyExc_TypeError, "CreepOptions: options are keywords only");
         return -1;
     }
-    if (parse_opts(kwargs, "creep_forces", NULL, &self->o) < 0)
+    if (parse_opts(kwargs, "creep_forces", NULL, &self->k) < 0)
         return -1;
     self->ready = 1;
     return 0;
@@ -255,7 +282,8 @@ PyTypeObject CreepOptionsType = {
     .tp_name = "rollerrig._core.CreepOptions",
     .tp_basicsize = sizeof(CreepOptionsObject),
     .tp_flags = Py_TPFLAGS_DEFAULT,
-    .tp_doc = "CreepOptions(method=..., <options>): checked options for creep_forces1",
+    .tp_doc = "CreepOptions(method=..., <options>): checked options for creep_forces1, "
+              "creep_forces, fastsim_field and exact_hertz_problem",
     .tp_init = (initproc)CreepOptions_init,
     .tp_new = PyType_GenericNew,
 };

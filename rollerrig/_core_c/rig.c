@@ -146,8 +146,12 @@ static int Rig_init(RigObject *self, PyObject *args, PyObject *kwargs)
             return -1;
         }
     }
-    if (parse_opts(creep, "Rig", NULL, &self->p.contact.creep) < 0)
-        return -1;
+    {
+        rr_creep_checked k;
+        if (parse_opts(creep, "Rig", NULL, &k) < 0)
+            return -1;
+        self->p.contact.creep = k.o;
+    }
     Py_INCREF(dobj);
     Py_XSETREF(self->data, dobj);
     st = rr_rig_init(&self->p, roller_speed, &self->rig);

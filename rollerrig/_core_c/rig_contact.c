@@ -17,7 +17,7 @@ static void store_wheel(double *d, npy_intp n, npy_intp i, const rr_wheel_contac
 
 typedef struct {
     input in[NSTATE];
-    const rr_rig_contact_model *m;
+    const rr_rig_contact_checked *m;     /* checked once for the batch */
     int kin_only;
     npy_intp n;
     npy_int8 *status, *left_status, *right_status;
@@ -45,7 +45,7 @@ static int rig_contact_kernel(void *ctx, npy_intp start, npy_intp stop)
         N[0] = IN(b->in[8], i);
         N[1] = IN(b->in[9], i);
         if (b->kin_only) {
-            b->status[i] = (npy_int8)rr_rig_kinematics(b->m, &s, &pose, w);
+            b->status[i] = (npy_int8)rr_rig_kinematics_checked(b->m, &s, &pose, w);
             for (k = 0; k < 2; k++) {
                 w[k].N = w[k].hertz.a = w[k].hertz.b = w[k].hertz.p0 = NAN;
                 w[k].f.fx = w[k].f.fy = w[k].f.mz = NAN;
@@ -53,7 +53,7 @@ static int rig_contact_kernel(void *ctx, npy_intp start, npy_intp stop)
                 w[k].moment[0] = w[k].moment[1] = w[k].moment[2] = NAN;
             }
         } else {
-            b->status[i] = (npy_int8)rr_rig_contact(b->m, &s, N, &pose, w);
+            b->status[i] = (npy_int8)rr_rig_contact_eval_checked(b->m, &s, N, &pose, w);
         }
         b->left_status[i] = (npy_int8)w[0].status;
         b->right_status[i] = (npy_int8)w[1].status;
@@ -79,6 +79,8 @@ PyObject *py_rig_contact(PyObject *self, PyObject *args, PyObject *kwargs)
     rig_contact_batch b;
     rr_contact_table t;
     rr_rig_contact_model m;
+    rr_rig_contact_checked checked;
+    rr_creep_checked creep;
     double y0, dy;
     npy_intp n, dims[2];
     int k, kin_only = 0;
@@ -97,10 +99,11 @@ PyObject *py_rig_contact(PyObject *self, PyObject *args, PyObject *kwargs)
         if (kin_only < 0)
             return NULL;
     }
-    if (parse_opts(kwargs, "rig_contact", "kinematics_only", &m.creep) < 0)
+    if (parse_opts(kwargs, "rig_contact", "kinematics_only", &creep) < 0)
         return NULL;
+    m.creep = creep.o;
     {
-        int st = rr_rig_contact_check(&m);
+        int st = rr_rig_contact_bind(&checked, &m);
         if (st < 0) {
             PyErr_Format(PyExc_ValueError, "rig_contact: invalid model: %s",
                          rr_status_message(st));
@@ -121,7 +124,7 @@ PyObject *py_rig_contact(PyObject *self, PyObject *args, PyObject *kwargs)
     for (k = 0; k < 6; k++)
         if (!out[k])
             goto fail;
-    b.m = &m;
+    b.m = &checked;
     b.kin_only = kin_only;
     b.n = n;
     b.status = OUT8(out[0]);
@@ -132,7 +135,7 @@ PyObject *py_rig_contact(PyObject *self, PyObject *args, PyObject *kwargs)
     b.right_status = OUT8(out[5]);
     /* two contacts a case, plus the kinematics (about 8 closed-form cases' work) */
     if (run_batch(rig_contact_kernel, &b, n,
-                  kin_only ? 8.0 : 8.0 + 2.0 * rr_creep_cost(&m.creep)) < 0)
+                  kin_only ? 8.0 : 8.0 + 2.0 * creep.cost) < 0)
         goto fail;
     if ((res = outputs_tuple(out, 6)) != NULL)
         return res;
