@@ -141,11 +141,15 @@ class BuildExt(build_ext):
                               dest for _, dest in self.c_copies()]
 
 
+# the binding: its files in one folder (rollerrig/_core_c/core.h says what each holds)
+BINDING_SOURCES = sorted(glob("rollerrig/_core_c/*.c"))
+
 core = Extension(
     "rollerrig._core",
-    sources=CORE_SOURCES + ["rollerrig/_core.c"],
+    sources=CORE_SOURCES + BINDING_SOURCES,
     # headers: trigger rebuilds when they change and get shipped in the sdist
-    depends=sorted(glob("csrc/*/rr_*.h") + ["csrc/rollerrig.h"]),
+    depends=sorted(glob("csrc/*/rr_*.h") + ["csrc/rollerrig.h"]
+                   + glob("rollerrig/_core_c/*.h")),
     include_dirs=["csrc", numpy.get_include()],
     define_macros=[("NPY_NO_DEPRECATED_API", "NPY_1_7_API_VERSION")],
 )

@@ -11,8 +11,8 @@
  * length (n, or 1 for a broadcast constant) and that many doubles.  Columns:
  *   hertz: A, B, N, E1, nu1, E2, nu2                      (7)
  *   creep: cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B   (12)
- * the argument order of rollerrig/_core.c.  The loop is the binding's inner
- * loop (rollerrig/_core.c: py_hertz, py_creep_forces) without the GIL
+ * the argument order of the binding.  The loop is the binding's inner
+ * loop (rollerrig/_core_c/contact.c: py_hertz, py_creep_forces) without the GIL
  * release between chunks: read the inputs through a stride (0 for a
  * constant), call the kernel, store the outputs and the status into arrays
  * of length n.  The binding's per-call costs are deliberately left out.
@@ -98,6 +98,7 @@ int main(int argc, char **argv)
     long n, i, bad = 0;
     int repeats, r, hertz;
     rr_creep_opts opts;
+    rr_creep_checked checked;
 
     if (argc < 4)
         die("usage: bench_kernel hertz FILE REPEATS | creep FILE REPEATS METHOD NX NY GRID");
@@ -120,8 +121,9 @@ int main(int argc, char **argv)
         if (rr_method_option(rr_method_get(opts.method), "grid") >= 0
             && rr_creep_opts_set(&opts, "grid", atof(argv[7])) < 0)
             die("invalid creep options");
-        if (rr_creep_opts_check(&opts) < 0)
-            die("invalid creep options");
+        /* checked once for the batch, as the binding does (rr_creep_check) */
+        if (rr_creep_check(&checked, &opts, NULL) < 0 || checked.work_len > 0)
+            die("invalid creep options (or a method with a workspace)");
     }
     n = read_cases(argv[2], hertz ? 7 : 12, in);
     o1 = malloc((size_t)n * sizeof *o1);
@@ -172,7 +174,8 @@ int main(int argc, char **argv)
                 c.speed = IN(in[9], i);
                 fr.A = IN(in[10], i);
                 fr.B = IN(in[11], i);
-                st[i] = (signed char)rr_creep_forces(&c, &fr, &opts, &f);
+                st[i] = (signed char)rr_creep_forces_checked(&checked, &c, &fr, NULL, 0, NULL,
+                                                             &f);
                 o1[i] = f.fx;
                 o2[i] = f.fy;
                 o3[i] = f.mz;

@@ -118,14 +118,19 @@ def core(call, *args, **kwargs):
         raise RollerRigError(str(e)) from None
 
 
-def check_creep_options(func, method, options):
-    """The method and options checked by the binding from the registry
-    (RollerRigError naming the method, option, range and value); returns
-    the keywords for _core (method= and the options given)."""
+def creep_options(func, method, options):
+    """The method and options parsed and checked once by the binding from
+    the registry (RollerRigError naming the method, option, range and
+    value), as the _core.CreepOptions its calls take in place of keywords."""
     method_info(func, method)
-    opts = dict(options, method=method)
-    core(_core.check_creep_options, func, opts)
-    return opts
+    return core(_core.check_creep_options, func, dict(options, method=method))
+
+
+def check_creep_options(func, method, options):
+    """As creep_options; returns the keywords for _core (method= and the
+    options given)."""
+    creep_options(func, method, options)
+    return dict(options, method=method)
 
 
 def used_numbers(method, options):

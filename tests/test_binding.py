@@ -320,6 +320,67 @@ def test_valid_option_limits_accepted():
         assert f.status == 0 and math.isfinite(f.fx)
 
 
+# ------------------------------------------------- options parsed once a call
+
+def test_array_call_parses_its_options_once(monkeypatch):
+    # issue 23: an array call parsed its options twice in the binding (the
+    # check, then creep_forces' keywords); now the check's CreepOptions is
+    # what the batch takes, no keywords
+    from rollerrig import _core
+    calls = []
+
+    def spy(name):
+        real = getattr(_core, name)
+
+        def call(*args, **kwargs):
+            calls.append((name, type(args[0]).__name__ if args else None, sorted(kwargs)))
+            return real(*args, **kwargs)
+        monkeypatch.setattr(_core, name, call)
+
+    for name in ("check_creep_options", "creep_forces", "fastsim_field"):
+        spy(name)
+    x = np.linspace(-1e-3, 1e-3, 5)
+    creep(x, method="fastsim", nx=8, ny=6)
+    rr.fastsim_field(1e-3, **CREEP_KW, nx=8, ny=6)
+    assert calls == [("check_creep_options", "str", []), ("creep_forces", "CreepOptions", []),
+                     ("check_creep_options", "str", []),
+                     ("fastsim_field", "CreepOptions", [])], calls
+
+
+@pytest.mark.parametrize("method", list(rr.METHODS))
+def test_checked_options_give_the_keywords_results(method):
+    from rollerrig import _core
+    rng = np.random.default_rng(23)
+    n = 40 if method == "exact" else 400
+    kw = dict(nx=10, ny=10) if method == "exact" else {}
+    arrays = [rng.uniform(-3e-3, 3e-3, n), rng.uniform(-3e-3, 3e-3, n), rng.uniform(-1, 1, n),
+              rng.uniform(2e-3, 1e-2, n), rng.uniform(2e-3, 1e-2, n), rng.uniform(-1e3, 1e5, n),
+              np.full(1, 0.3), np.full(1, 8.2e10), np.full(1, 0.28), rng.uniform(0.0, 20, n),
+              np.full(1, 1.0 if rr.METHODS[method].coulomb_only else 0.4), np.full(1, 0.6)]
+    o = _core.check_creep_options("creep_forces", dict(kw, method=method))
+    assert type(o) is _core.CreepOptions
+    assert_same(_core.creep_forces(o, *arrays), _core.creep_forces(*arrays, method=method, **kw))
+
+
+def test_checked_options_refused_where_wrong():
+    from rollerrig import _core
+    arrays = [np.full(1, 1e-3)] * 3 + [np.full(1, 5e-3)] * 2 + [np.full(1, 1e4)] \
+        + [np.full(1, v) for v in (0.3, 8.2e10, 0.28, 5.0, 1.0, 0.0)]
+    o = _core.CreepOptions(method="polach")
+    with pytest.raises(TypeError, match="creep_forces: options given twice"):
+        _core.creep_forces(o, *arrays, method="polach")
+    with pytest.raises(TypeError, match="creep_forces: the CreepOptions is not initialised"):
+        _core.creep_forces(_core.CreepOptions.__new__(_core.CreepOptions), *arrays)
+    with pytest.raises(TypeError, match="creep_forces: expected 12 arrays"):
+        _core.creep_forces(o, *arrays[:-1])
+    with pytest.raises(TypeError, match="fastsim_field: expected 12 arrays"):
+        _core.fastsim_field(o, *arrays, arrays[0])
+    with pytest.raises(ValueError, match="fastsim_field: method must have a traction field"):
+        _core.fastsim_field(o, *arrays)
+    with pytest.raises(ValueError, match="my_call: nx must be an integer"):
+        _core.check_creep_options("my_call", dict(method="fastsim", nx=0))
+
+
 # ------------------------------------------------------------------ threads
 
 def _thread_inputs(seed, n):

@@ -113,7 +113,7 @@ def test_a_new_method_is_one_file_and_one_row(tmp_path):
                            capture_output=True, text=True)
     assert child.returncode == 0 and child.stdout.strip() == "ok", child.stdout + child.stderr
 
-    # nothing else changed: contact.py, rig.py, _core.c ... untouched
+    # nothing else changed: contact.py, rig.py, _core_c/ ... untouched
     status = _git("status", "--porcelain", "--untracked-files=all", cwd=copy).splitlines()
     assert sorted(line[3:] for line in status) == ["csrc/contact/rr_methods.def",
                                                    "csrc/contact/rr_scaled_linear.c"], status

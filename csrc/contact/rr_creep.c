@@ -111,25 +111,56 @@ size_t rr_creep_workspace_len(const rr_creep_opts *o)
     return d ? d->workspace_len(o) : 0;
 }
 
-int rr_creep_forces_interruptible(const rr_contact_case *c, const rr_friction *fr,
-                                  const rr_creep_opts *o, double *work, size_t work_len,
-                                  const rr_interrupt *stop, rr_forces *out)
+int rr_creep_check(rr_creep_checked *k, const rr_creep_opts *o, int *bad)
 {
-    int st = out ? rr_creep_opts_check(o) : RR_ERR_NULL;
-    const rr_method_desc *d = st == RR_OK ? methods[o->method] : NULL;
+    int st;
+    if (bad)
+        *bad = -1;
+    if (!k)
+        return RR_ERR_NULL;
+    k->ready = 0;
+    k->d = NULL;
+    if ((st = rr_creep_opts_check_at(o, bad)) != RR_OK)
+        return st;
+    k->o = *o;
+    k->d = methods[o->method];
+    k->work_len = k->d->workspace_len(o);
+    k->cost = k->d->cost(o);
+    k->ready = RR_CREEP_READY;
+    return RR_OK;
+}
 
-    if (d) {
-        const size_t need = d->workspace_len(o);
-        if (need > 0 && (!work || work_len < need))
-            st = RR_ERR_WORKSPACE;
-    }
+int rr_creep_forces_checked(const rr_creep_checked *k, const rr_contact_case *c,
+                            const rr_friction *fr, double *work, size_t work_len,
+                            const rr_interrupt *stop, rr_forces *out)
+{
+    int st = RR_OK;
+
+    if (!out || !k || k->ready != RR_CREEP_READY || !k->d || k->d != rr_method_get(k->o.method))
+        st = RR_ERR_NULL;
+    else if (k->work_len > 0 && (!work || work_len < k->work_len))
+        st = RR_ERR_WORKSPACE;
     if (st < 0) {
         rr_forces_nan(out);
         return st;
     }
-    if (d->forces_interruptible)
-        return d->forces_interruptible(c, fr, o, work, stop, out);
-    return d->forces(c, fr, o, work, out);
+    if (k->d->forces_interruptible)
+        return k->d->forces_interruptible(c, fr, &k->o, work, stop, out);
+    return k->d->forces(c, fr, &k->o, work, out);
+}
+
+int rr_creep_forces_interruptible(const rr_contact_case *c, const rr_friction *fr,
+                                  const rr_creep_opts *o, double *work, size_t work_len,
+                                  const rr_interrupt *stop, rr_forces *out)
+{
+    rr_creep_checked k;
+    const int st = out ? rr_creep_check(&k, o, NULL) : RR_ERR_NULL;
+
+    if (st < 0) {
+        rr_forces_nan(out);
+        return st;
+    }
+    return rr_creep_forces_checked(&k, c, fr, work, work_len, stop, out);
 }
 
 int rr_creep_forces_work(const rr_contact_case *c, const rr_friction *fr,

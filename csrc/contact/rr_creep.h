@@ -73,6 +73,42 @@ double rr_creep_slope_scale(const rr_creep_opts *o);
 size_t rr_creep_workspace_len(const rr_creep_opts *o);
 
 /*
+ * rr_creep_checked - a method with its options, checked once for many
+ * calls (a batch of cases, the rig's time step): the constant part of a
+ * call, checked by rr_creep_check, so that rr_creep_forces_checked checks
+ * only what changes from call to call, the case and the friction law.
+ * Read-only: a changed option needs rr_creep_check again.
+ */
+typedef struct {
+    rr_creep_opts o;             /* the options, a checked copy */
+    const rr_method_desc *d;     /* their method's descriptor */
+    size_t work_len;             /* rr_creep_workspace_len */
+    double cost;                 /* rr_creep_cost */
+    unsigned ready;              /* RR_CREEP_READY once checked */
+} rr_creep_checked;
+
+#define RR_CREEP_READY 0x52524350u
+
+/*
+ * rr_creep_check - o checked as rr_creep_opts_check_at does (*bad, may be
+ * NULL: the offending option's index, -1 if none is to blame) into *k.
+ *   status:  RR_OK; rr_creep_opts_check's, or RR_ERR_NULL, with *k not
+ *            ready (rr_creep_forces_checked refuses it).
+ */
+int rr_creep_check(rr_creep_checked *k, const rr_creep_opts *o, int *bad);
+
+/*
+ * rr_creep_forces_checked - rr_creep_forces_interruptible with the options
+ * of a successful rr_creep_check: the case and the friction law checked by
+ * the method, the options not again.  The same doubles and statuses, but
+ * RR_ERR_NULL (forces NaN) for a k that rr_creep_check did not set or
+ * refused.
+ */
+int rr_creep_forces_checked(const rr_creep_checked *k, const rr_contact_case *c,
+                            const rr_friction *fr, double *work, size_t work_len,
+                            const rr_interrupt *stop, rr_forces *out);
+
+/*
  * rr_creep_forces - dispatch to the method named in o->method, after
  * rr_creep_opts_check.  The linear theory ignores friction (but refuses an
  * invalid law, as every method does); FASTSIM variants call rr_fastsim

@@ -209,8 +209,10 @@ static void strip_row(const strip_setup *s, double y, double w2, double sums[3])
     }
 }
 
-int rr_fastrip(const rr_contact_case *c, const rr_friction *fr, const rr_creep_opts *o,
-               rr_forces *out)
+/* rr_fastrip for options checked by the registry: the descriptor's entry
+ * point; the case and the law checked here */
+static int fastrip_checked(const rr_contact_case *c, const rr_friction *fr,
+                           const rr_creep_opts *o, rr_forces *out)
 {
     rr_kalker_coeffs k;
     strip_setup s;
@@ -221,9 +223,7 @@ int rr_fastrip(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
         rr_forces_nan(out);
         return RR_ERR_NULL;
     }
-    st = rr_method_check(&rr_method_fastrip, o, NULL);
-    if (st == RR_OK)
-        st = rr_creep_prepare(c, fr, &k);
+    st = rr_creep_prepare(c, fr, &k);
     if (st == RR_OK && rr_friction_is_falling(fr))
         st = RR_ERR_FRICTION;         /* FaStrip as CONTACT: Coulomb's mu0 only */
     if (st < 0) {
@@ -341,6 +341,22 @@ int rr_fastrip(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
     return rr_forces_checked(st, out);
 }
 
+int rr_fastrip(const rr_contact_case *c, const rr_friction *fr, const rr_creep_opts *o,
+               rr_forces *out)
+{
+    int st;
+
+    if (!c || !fr || !o || !out) {
+        rr_forces_nan(out);
+        return RR_ERR_NULL;
+    }
+    if ((st = rr_method_check(&rr_method_fastrip, o, NULL)) < 0) {
+        rr_forces_nan(out);
+        return st;
+    }
+    return fastrip_checked(c, fr, o, out);
+}
+
 /* ---- the descriptor ----------------------------------------------------- */
 
 static const char *const flex_names[] = {"kalker", "blended", NULL};
@@ -375,7 +391,7 @@ static int fastrip_forces(const rr_contact_case *c, const rr_friction *fr,
                           const rr_creep_opts *o, double *work, rr_forces *out)
 {
     (void)work;
-    return rr_fastrip(c, fr, o, out);
+    return fastrip_checked(c, fr, o, out);
 }
 
 /* The linear limit comes from the strip theory, whose flexibilities are

@@ -502,10 +502,11 @@ static int fail(int st, const rr_creep_opts *o, rr_forces *out, rr_fastsim_field
 
 static const rr_method_desc *variant(int method);
 
-int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_opts *o,
-               rr_forces *out, rr_fastsim_field *field)
+/* rr_fastsim for options checked by the registry (a FASTSIM variant's,
+ * valid): the descriptors' entry points; the case and the law checked here */
+static int fastsim_checked(const rr_contact_case *c, const rr_friction *fr,
+                           const rr_creep_opts *o, rr_forces *out, rr_fastsim_field *field)
 {
-    const rr_method_desc *d;
     rr_kalker_coeffs k;
     flex fl;
     march m;
@@ -516,10 +517,7 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
 
     if (!c || !fr || !o || !out)
         return fail(RR_ERR_NULL, o, out, field);
-    d = variant(o->method);
-    st = d ? rr_method_check(d, o, NULL) : RR_ERR_METHOD;
-    if (st == RR_OK)
-        st = rr_creep_prepare(c, fr, &k);
+    st = rr_creep_prepare(c, fr, &k);
     if (st < 0)
         return fail(st, o, out, field);
     grid_of(o, &nx, &ny);
@@ -599,6 +597,21 @@ int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
     return st;
 }
 
+int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_opts *o,
+               rr_forces *out, rr_fastsim_field *field)
+{
+    const rr_method_desc *d;
+    int st;
+
+    if (!c || !fr || !o || !out)
+        return fail(RR_ERR_NULL, o, out, field);
+    d = variant(o->method);
+    st = d ? rr_method_check(d, o, NULL) : RR_ERR_METHOD;
+    if (st < 0)
+        return fail(st, o, out, field);
+    return fastsim_checked(c, fr, o, out, field);
+}
+
 /* ---- the descriptors ---------------------------------------------------- */
 
 static const char *const bound_names[] = {"parabolic", "elliptic", NULL};
@@ -668,7 +681,7 @@ static int fastsim_forces(const rr_contact_case *c, const rr_friction *fr,
                           const rr_creep_opts *o, double *work, rr_forces *out)
 {
     (void)work;
-    return rr_fastsim(c, fr, o, out, NULL);
+    return fastsim_checked(c, fr, o, out, NULL);
 }
 
 static void fastsim_shape(const rr_creep_opts *o, int *rows, int *cols)
@@ -679,7 +692,7 @@ static void fastsim_shape(const rr_creep_opts *o, int *rows, int *cols)
 
 #define FASTSIM_ENTRIES                                                          \
     fastsim_cost, rr_method_unit_slope, rr_method_no_workspace, fastsim_forces, \
-        fastsim_shape, rr_fastsim, 0, NULL
+        fastsim_shape, fastsim_checked, 0, NULL
 
 const rr_method_desc rr_method_fastsim = {
     "fastsim", "FASTSIM, Kalker 1982: three flexibilities", 5, fastsim_opts, 1, NULL, NULL,
@@ -698,7 +711,7 @@ const rr_method_desc rr_method_modified_fastsim = {
     "modified FASTSIM (Spiryagin, Polach and Cole 2013): the slope reduced with the creepage",
     8, modified_opts, 1, NULL, NULL,
     fastsim_cost, modified_slope, rr_method_no_workspace, fastsim_forces, fastsim_shape,
-    rr_fastsim, 0, NULL
+    fastsim_checked, 0, NULL
 };
 
 /* The descriptor of a FASTSIM variant's number, else NULL. */

@@ -3,21 +3,18 @@
 #include "util/rr_common.h"
 #include "contact/rr_polach.h"
 
-int rr_polach(const rr_contact_case *c, const rr_friction *fr, double kA, double kS,
-              rr_forces *out)
+/* rr_polach for reduction factors already checked (the descriptor's entry
+ * point: the registry checked them); the case and the law checked here */
+static int polach_checked(const rr_contact_case *c, const rr_friction *fr, double kA,
+                          double kS, rr_forces *out)
 {
     rr_kalker_coeffs k;
     double syc, sc, s, cjj, mu, eps, F, Ft;
-    int st = RR_OK;
+    int st;
 
     if (!out)
         return RR_ERR_NULL;
-    if (!isfinite(kA) || !isfinite(kS))
-        st = RR_ERR_NONFINITE;
-    else if (kS <= 0.0 || kS > kA || kA > 1.0)
-        st = RR_ERR_PARAM;
-    else
-        st = rr_creep_prepare(c, fr, &k);
+    st = rr_creep_prepare(c, fr, &k);
     if (st < 0) {
         rr_forces_nan(out);
         return st;
@@ -71,6 +68,24 @@ int rr_polach(const rr_contact_case *c, const rr_friction *fr, double kA, double
     return rr_forces_checked(st, out);
 }
 
+int rr_polach(const rr_contact_case *c, const rr_friction *fr, double kA, double kS,
+              rr_forces *out)
+{
+    int st = RR_OK;
+
+    if (!out)
+        return RR_ERR_NULL;
+    if (!isfinite(kA) || !isfinite(kS))
+        st = RR_ERR_NONFINITE;
+    else if (kS <= 0.0 || kS > kA || kA > 1.0)
+        st = RR_ERR_PARAM;
+    if (st < 0) {
+        rr_forces_nan(out);
+        return st;
+    }
+    return polach_checked(c, fr, kA, kS, out);
+}
+
 /* Polach 2005: 0 < kS <= kA <= 1 (each option's range gives 0 < kS, kA <= 1) */
 static int polach_check(const rr_creep_opts *o, int *bad)
 {
@@ -91,7 +106,7 @@ static int polach_forces(const rr_contact_case *c, const rr_friction *fr,
                          const rr_creep_opts *o, double *work, rr_forces *out)
 {
     (void)work;
-    return rr_polach(c, fr, o->v[RR_POLACH_KA], o->v[RR_POLACH_KS], out);
+    return polach_checked(c, fr, o->v[RR_POLACH_KA], o->v[RR_POLACH_KS], out);
 }
 
 static const rr_creep_option polach_opts[] = {

@@ -32,7 +32,11 @@
  * rr_creep_forces_work, with one that stops at its first poll that or
  * RR_ERR_INTERRUPTED with NaN forces (only a method with the hook's entry);
  * rr_creep_field's arrays of the descriptor's field_shape between canaries,
- * RR_ERR_METHOD for a method without a field, NaN forces on error.
+ * RR_ERR_METHOD for a method without a field, NaN forces on error;
+ * rr_creep_check as rr_creep_opts_check_at (status and *bad, the record's
+ * workspace and cost the getters'), rr_creep_forces_checked exactly
+ * rr_creep_forces_work for a checked record, RR_ERR_NULL with NaN forces
+ * for a refused one or one whose method was changed after the check.
  */
 #include "fuzz.h"
 
@@ -457,7 +461,7 @@ static void run_registry(fz_in *in, const rr_contact_case *c, const rr_friction 
     const int nset = fz_range(in, 0, 4);
     rr_creep_opts before;
     rr_forces f, f2;
-    int i, st, st2, bad = -99;
+    int i, st, st2, ost, bad = -99;
 
     if (rr_method_count() != RR_METHOD_COUNT || rr_method_get(-1) || rr_method_get(RR_METHOD_COUNT)
         || rr_method_find(NULL) != RR_ERR_NULL || rr_method_find("no-such-method") != RR_ERR_METHOD)
@@ -503,6 +507,7 @@ static void run_registry(fz_in *in, const rr_contact_case *c, const rr_friction 
     if (fz_choice(in, 4) == 0 && d && d->nopts > 0)
         o->v[fz_range(in, 0, d->nopts - 1)] = fz_lin(in, -2.0, 5000.0);   /* by index, unchecked */
     st = rr_creep_opts_check_at(o, &bad);
+    ost = st;
     st2 = rr_creep_opts_check(o);
     fz_status("rr_creep_opts_check_at", st);
     if (st != st2 || (st < 0) != opts_invalid(o))
@@ -539,6 +544,31 @@ static void run_registry(fz_in *in, const rr_contact_case *c, const rr_friction 
                 fz_fail("rr_creep_forces_work: a workspace one double short not refused");
             if (st < 0 && (!isnan(f.fx) || !isnan(f.fy) || !isnan(f.mz)))
                 fz_fail("rr_creep_forces_work: error %d but the forces are not NaN", st);
+            /* checked once, then trusted: the same forces, or a refused record */
+            {
+                rr_creep_checked k;
+                int kbad = -99, kst;
+                kst = rr_creep_check(&k, o, &kbad);
+                fz_status("rr_creep_check", kst);
+                if (kst != ost || kbad != bad
+                    || (kst == RR_OK && (k.work_len != wl || k.cost != cost)))
+                    fz_fail("rr_creep_check: status %d, *bad %d; rr_creep_opts_check_at %d, %d",
+                            kst, kbad, ost, bad);
+                st2 = rr_creep_forces_checked(&k, c, fr, work, wl, NULL, &f2);
+                fz_status("rr_creep_forces_checked", st2);
+                if (kst == RR_OK ? st2 != st || memcmp(&f, &f2, sizeof f) != 0
+                                 : st2 != RR_ERR_NULL || !isnan(f2.fx) || !isnan(f2.fy)
+                                   || !isnan(f2.mz))
+                    fz_fail("rr_creep_forces_checked: status %d (%g, %g, %g), "
+                            "rr_creep_forces_work %d (%g, %g, %g), the record %s", st2, f2.fx,
+                            f2.fy, f2.mz, st, f.fx, f.fy, f.mz, kst ? "refused" : "checked");
+                /* the method changed after the check: not the record's */
+                k.o.method = (k.o.method + 2) % (RR_METHOD_COUNT + 2) - 1;
+                st2 = rr_creep_forces_checked(&k, c, fr, work, wl, NULL, &f2);
+                if (st2 != RR_ERR_NULL || !isnan(f2.fx) || !isnan(f2.fy) || !isnan(f2.mz))
+                    fz_fail("rr_creep_forces_checked: status %d for a record whose method "
+                            "changed to %d", st2, k.o.method);
+            }
             /* the interrupt hook: counted from 2 (never stops) or from 1 (stops) */
             {
                 int q, count;

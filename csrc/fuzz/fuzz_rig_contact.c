@@ -13,7 +13,10 @@
  * and wheel output finite; rr_rig_kinematics leaves the load fields alone;
  * each wheel with status >= 0 finite, its force within mu0 N for every
  * frictional method, its normal along t1 x t2; rr_rig_contact equal to
- * rr_rig_kinematics followed by rr_rig_contact_loads.
+ * rr_rig_kinematics followed by rr_rig_contact_loads; rr_rig_contact_bind
+ * as rr_rig_contact_check, and the checked evaluations (kinematics, the
+ * whole, the loads) exactly the unchecked ones for a bound model,
+ * RR_ERR_NULL for a refused one.
  */
 #include "fuzz_rig.h"
 
@@ -210,6 +213,31 @@ static void check_worse(const char *fn, int st, const rr_wheel_contact w[2])
                 w[1].status);
 }
 
+/* A checked evaluation (st2, pose2, w2) against the unchecked one (st, pose,
+ * w): the same status, pose and wheels' forces for a bound model;
+ * RR_ERR_NULL for a refused one. */
+static void same_checked(const char *fn, int st, int st2, const rr_rig_pose *pose,
+                         const rr_wheel_contact *w, const rr_rig_pose *pose2,
+                         const rr_wheel_contact *w2, int refused)
+{
+    int k;
+    fz_status(fn, st2);
+    if (refused) {
+        if (st2 != RR_ERR_NULL)
+            fz_fail("%s: status %d for a refused model", fn, st2);
+        return;
+    }
+    if (st2 != st || memcmp(pose, pose2, sizeof *pose) != 0)
+        fz_fail("%s: status %d, the unchecked %d, or the pose differs", fn, st2, st);
+    for (k = 0; k < 2; k++)
+        if (w[k].status != w2[k].status
+            || (w[k].status >= 0 && (memcmp(&w[k].f, &w2[k].f, sizeof w[k].f) != 0
+                                     || memcmp(w[k].force, w2[k].force, sizeof w[k].force) != 0
+                                     || memcmp(&w[k].creep, &w2[k].creep,
+                                               sizeof w[k].creep) != 0)))
+            fz_fail("%s: wheel %d differs from the unchecked evaluation", fn, k);
+}
+
 /* The fields rr_rig_kinematics must leave alone. */
 typedef struct {
     double N;
@@ -238,6 +266,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rr_rig_pose pose, pose2;
     rr_wheel_contact w[2], w2[2];
     double N[2];
+    rr_rig_contact_checked checked;
     int st, st2, k, invalid;
 
     decode_model(&in, &m, &t);
@@ -261,6 +290,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if ((st < 0) != model_invalid(&m))
         fz_fail("rr_rig_contact_check: status %d for a model that is %s", st,
                 model_invalid(&m) ? "invalid" : "valid");
+    st2 = rr_rig_contact_bind(&checked, &m);
+    fz_status("rr_rig_contact_bind", st2);
+    if (st2 != st)
+        fz_fail("rr_rig_contact_bind: status %d, rr_rig_contact_check %d", st2, st);
 
     memset(w, 0x55, sizeof w);
     memset(&pose, 0x55, sizeof pose);
@@ -281,6 +314,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             if (w[k].status >= 0)
                 fz_same(fn, &before[k], &after[k], sizeof before[k], "a wheel's load fields");
         }
+        memset(w2, 0x55, sizeof w2);       /* the load fields as untouched as w's */
+        memset(&pose2, 0x55, sizeof pose2);
+        st2 = rr_rig_kinematics_checked(&checked, &s, &pose2, w2);
+        same_checked("rr_rig_kinematics_checked", st, st2, &pose, w, &pose2, w2,
+                     model_invalid(&m));
         return 0;
     }
     st = rr_rig_contact(&m, &s, N, &pose, w);
@@ -293,6 +331,20 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         fz_status("rr_rig_contact (wheel)", w[k].status);
         check_wheel_kin("rr_rig_contact", &w[k]);
         check_wheel_loads("rr_rig_contact", &m, &w[k]);
+    }
+    memset(w2, 0x55, sizeof w2);
+    memset(&pose2, 0x55, sizeof pose2);
+    st2 = rr_rig_contact_eval_checked(&checked, &s, N, &pose2, w2);
+    same_checked("rr_rig_contact_eval_checked", st, st2, &pose, w, &pose2, w2,
+                 model_invalid(&m));
+    if (op == 2 && !model_invalid(&m)) {
+        /* the checked loads on the checked kinematics */
+        memset(w2, 0x55, sizeof w2);
+        memset(&pose2, 0x55, sizeof pose2);
+        st2 = rr_rig_kinematics_checked(&checked, &s, &pose2, w2);
+        if (!(st2 < 0 && !isfinite(pose2.c[0])))
+            st2 = rr_rig_contact_loads_checked(&checked, N, &pose2, w2);
+        same_checked("rr_rig_contact_loads_checked", st, st2, &pose, w, &pose2, w2, 0);
     }
     if (op == 2) {
         /* the same in two halves */

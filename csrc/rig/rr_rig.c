@@ -253,7 +253,7 @@ static int contact_eval(rr_rig *rig, const double *y)
     s.yaw_rate = y[RR_RIG_YAW_RATE];
     s.spin = y[RR_RIG_SPIN];
     s.roller_spin = y[RR_RIG_ROLLER_SPIN];
-    st = rr_rig_kinematics(&p->contact, &s, &rig->pose, rig->w);
+    st = rr_rig_kinematics_checked(&rig->contact, &s, &rig->pose, rig->w);
     if (st < 0)
         return st;
     /* the friction at each contact: the held law, and the patch where the
@@ -274,7 +274,7 @@ static int contact_eval(rr_rig *rig, const double *y)
         balance_row(&rig->pose, &rig->w[k], rig->w[k].n, 0.0, &fz[k], &mx[k]);
     if ((st = loads(fz[0], fz[1], mx[0], mx[1], Wz, Mx, N)) != RR_OK)
         return st;
-    st = rr_rig_contact_loads(&p->contact, N, &rig->pose, rig->w);
+    st = rr_rig_contact_loads_checked(&rig->contact, N, &rig->pose, rig->w);
     if (st < 0)
         return st;
 
@@ -673,17 +673,23 @@ int rr_rig_record(rr_rig *rig, double *rec)
 }
 
 /* What the rig takes from its parameters besides its state: their pointer,
- * the creep method's facts, the integrator's settings and model, the
- * Jacobian's constant part; the contact evaluation it keeps is dropped.
- * Parameters checked.  RR_ERR_RANGE (nothing changed) where the constant
- * part overflows: a stiffness over a near-zero mass. */
+ * the contact model checked once, the creep method's facts, the
+ * integrator's settings and model, the Jacobian's constant part; the
+ * contact evaluation it keeps is dropped.  Parameters checked.
+ * RR_ERR_RANGE (nothing changed) where the constant part overflows: a
+ * stiffness over a near-zero mass. */
 static int bind(rr_rig *rig, const rr_rig_params *p)
 {
     double J0[NS * NS];
+    rr_rig_contact_checked contact;
+    int st;
     jac_const(p, J0);
     if (!rr_all_finite(J0, NS * NS))
         return RR_ERR_RANGE;
+    if ((st = rr_rig_contact_bind(&contact, &p->contact)) != RR_OK)
+        return st;                  /* not after rr_rig_check; nothing changed */
     memcpy(rig->J0, J0, sizeof J0);
+    rig->contact = contact;
     rig->p = p;
     rig->creep_slope_scale = rr_creep_slope_scale(&p->contact.creep);
     rig->ode.method = p->method;

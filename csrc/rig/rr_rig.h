@@ -230,6 +230,9 @@ typedef struct {
      * at rr_rig_init (its options checked there; the method saturates:
      * rr_rig_method_check) */
     double creep_slope_scale;
+    /* the contact model p->contact, checked (and copied) at rr_rig_init
+     * and rr_rig_rebind, not at each evaluation */
+    rr_rig_contact_checked contact;
     double t;                      /* time [s] */
     double y[RR_RIG_NSTATE];       /* plant state */
     double z_ref;                  /* axle height at which the springs carry the preload [m] */
@@ -302,7 +305,9 @@ void rr_rig_speed_loops(const rr_rig_params *p, rr_speed_loop loops[2]);
  * holding the torques that balance the steady state, controllers primed
  * with these speeds, no creepage control (target 0) until rr_rig_step
  * gets a target.
- *   given:   p (kept by pointer: it must outlive the rig); roller_speed
+ *   given:   p (kept by pointer: it must outlive the rig; its contact model
+ *            is checked and copied here, the time step does not check it
+ *            again: a change to it acts from rr_rig_rebind); roller_speed
  *   returns: *rig
  *   status:  rr_rig_check; errors of the contact evaluation; RR_ERR_NULL.
  *   After a failed init every other rr_rig_ function returns its status (and
@@ -359,9 +364,10 @@ rr_friction rr_rig_friction_at(const rr_rig_params *p, double t, int side, doubl
  * the copy still points at the original's parameters), or after parameters
  * changed between samples (a tuned gain, the friction, the adhesion, the
  * creep method's options).  The rig takes p's pointer (p must outlive it),
- * the creep method's facts, the integrator's settings and model and the
- * Jacobian's constant part again, and drops the contact evaluation it
- * keeps; its state, controllers and encoders go on as they are.
+ * its contact model (checked, a copy), the creep method's facts, the
+ * integrator's settings and model and the Jacobian's constant part again,
+ * and drops the contact evaluation it keeps; its state, controllers and
+ * encoders go on as they are.
  *   given:   rig, initialised; p
  *   status:  0; rr_rig_check's; RR_ERR_RANGE (the Jacobian's constant part
  *            overflows); RR_ERR_NULL; the status of a rig that never

@@ -3,8 +3,10 @@
 #include "util/rr_common.h"
 #include "rig/rr_rig_contact.h"
 
-int rr_rig_contact_check(const rr_rig_contact_model *m)
+/* rr_rig_contact_check, its creep method checked into *creep */
+static int model_check(const rr_rig_contact_model *m, rr_creep_checked *creep)
 {
+    int st;
     if (!m)
         return RR_ERR_NULL;
     if (!m->table || !m->table->data)
@@ -18,18 +20,39 @@ int rr_rig_contact_check(const rr_rig_contact_model *m)
         return RR_ERR_MATERIAL;
     if (!(m->vmin > 0.0))
         return RR_ERR_SPEED;
-    {
-        int st = rr_friction_check(&m->friction);
-        if (st)
-            return st;
-    }
-    {
-        int st = rr_creep_opts_check(&m->creep);
-        if (st)
-            return st;
-    }
+    if ((st = rr_friction_check(&m->friction)) != RR_OK)
+        return st;
+    if ((st = rr_creep_check(creep, &m->creep, NULL)) != RR_OK)
+        return st;
     /* a method with a workspace (the exact solver) is not for a time step */
-    return rr_creep_workspace_len(&m->creep) > 0 ? RR_ERR_METHOD : RR_OK;
+    return creep->work_len > 0 ? RR_ERR_METHOD : RR_OK;
+}
+
+int rr_rig_contact_check(const rr_rig_contact_model *m)
+{
+    rr_creep_checked creep;
+    return model_check(m, &creep);
+}
+
+int rr_rig_contact_bind(rr_rig_contact_checked *k, const rr_rig_contact_model *m)
+{
+    int st;
+    if (!k)
+        return RR_ERR_NULL;
+    k->ready = 0;
+    if ((st = model_check(m, &k->creep)) != RR_OK) {
+        k->creep.ready = 0;
+        return st;
+    }
+    k->m = *m;
+    k->ready = RR_RIG_CONTACT_READY;
+    return RR_OK;
+}
+
+/* a successful rr_rig_contact_bind's */
+static int bound(const rr_rig_contact_checked *k)
+{
+    return k && k->ready == RR_RIG_CONTACT_READY;
 }
 
 static void vec_nan(double *v, int n)
@@ -92,17 +115,16 @@ static void cross(const double a[3], const double b[3], double out[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-int rr_rig_kinematics(const rr_rig_contact_model *m, const rr_rig_state *s, rr_rig_pose *pose,
-                      rr_wheel_contact w[2])
+/* rr_rig_kinematics with st the model's status (RR_OK: checked), pose and w
+ * not NULL */
+static int kinematics(const rr_rig_contact_model *m, int st, const rr_rig_state *s,
+                      rr_rig_pose *pose, rr_wheel_contact w[2])
 {
     rr_wheelset_pose tp, slope;
     rr_motion wheel, roller;
     double D = NAN, h, cy, sy, cr, sr, droll;
-    int k, st;
+    int k;
 
-    if (!pose || !w)
-        return RR_ERR_NULL;
-    st = s ? rr_rig_contact_check(m) : RR_ERR_NULL;
     if (st == RR_OK && !(isfinite(s->x) && isfinite(s->y) && isfinite(s->yaw)
                          && isfinite(s->vx) && isfinite(s->vy) && isfinite(s->yaw_rate)
                          && isfinite(s->spin) && isfinite(s->roller_spin)))
@@ -220,17 +242,28 @@ int rr_rig_kinematics(const rr_rig_contact_model *m, const rr_rig_state *s, rr_r
     return worse(w[0].status, w[1].status);
 }
 
-int rr_rig_contact_loads(const rr_rig_contact_model *m, const double N[2], const rr_rig_pose *pose,
-                         rr_wheel_contact w[2])
+int rr_rig_kinematics(const rr_rig_contact_model *m, const rr_rig_state *s, rr_rig_pose *pose,
+                      rr_wheel_contact w[2])
+{
+    if (!pose || !w)
+        return RR_ERR_NULL;
+    return kinematics(m, s ? rr_rig_contact_check(m) : RR_ERR_NULL, s, pose, w);
+}
+
+int rr_rig_kinematics_checked(const rr_rig_contact_checked *k, const rr_rig_state *s,
+                              rr_rig_pose *pose, rr_wheel_contact w[2])
+{
+    if (!pose || !w)
+        return RR_ERR_NULL;
+    return kinematics(bound(k) ? &k->m : NULL, s && bound(k) ? RR_OK : RR_ERR_NULL, s, pose, w);
+}
+
+/* rr_rig_contact_loads with the model's creep method checked into creep
+ * (cst its status), m, N, pose and w not NULL */
+static int loads(const rr_rig_contact_model *m, const rr_creep_checked *creep, int cst,
+                 const double N[2], const rr_rig_pose *pose, rr_wheel_contact w[2])
 {
     int k;
-    if (!w)
-        return RR_ERR_NULL;
-    if (!m || !N || !pose) {
-        wheel_nan(&w[0], RR_ERR_NULL);
-        wheel_nan(&w[1], RR_ERR_NULL);
-        return RR_ERR_NULL;
-    }
     for (k = 0; k < 2; k++) {
         rr_wheel_contact *c = &w[k];
         rr_contact_case cc;
@@ -275,7 +308,8 @@ int rr_rig_contact_loads(const rr_rig_contact_model *m, const double N[2], const
         cc.cy = c->creep.cy;
         cc.cphi = c->creep.cphi;
         cc.speed = c->creep.V;
-        sk = rr_creep_forces(&cc, &c->friction, &m->creep, &c->f);
+        sk = cst < 0 ? cst : rr_creep_forces_checked(creep, &cc, &c->friction, NULL, 0, NULL,
+                                                     &c->f);
         if (sk < 0) {
             wheel_nan(c, sk);
             continue;
@@ -295,11 +329,51 @@ int rr_rig_contact_loads(const rr_rig_contact_model *m, const double N[2], const
     return worse(w[0].status, w[1].status);
 }
 
+/* both wheels' loads refused: NULL pointers */
+static int loads_null(rr_wheel_contact w[2])
+{
+    wheel_nan(&w[0], RR_ERR_NULL);
+    wheel_nan(&w[1], RR_ERR_NULL);
+    return RR_ERR_NULL;
+}
+
+int rr_rig_contact_loads(const rr_rig_contact_model *m, const double N[2], const rr_rig_pose *pose,
+                         rr_wheel_contact w[2])
+{
+    rr_creep_checked creep;
+    if (!w)
+        return RR_ERR_NULL;
+    if (!m || !N || !pose)
+        return loads_null(w);
+    return loads(m, &creep, rr_creep_check(&creep, &m->creep, NULL), N, pose, w);
+}
+
+int rr_rig_contact_loads_checked(const rr_rig_contact_checked *k, const double N[2],
+                                 const rr_rig_pose *pose, rr_wheel_contact w[2])
+{
+    if (!w)
+        return RR_ERR_NULL;
+    if (!bound(k) || !N || !pose)
+        return loads_null(w);
+    return loads(&k->m, &k->creep, RR_OK, N, pose, w);
+}
+
+/* the kinematics' status st: nothing valid (no pose), or go on to the loads */
+static int no_loads(int st, const rr_rig_pose *pose)
+{
+    return st == RR_ERR_NULL || (st < 0 && !isfinite(pose->c[0]));
+}
+
 int rr_rig_contact(const rr_rig_contact_model *m, const rr_rig_state *s, const double N[2],
                    rr_rig_pose *pose, rr_wheel_contact w[2])
 {
     int st = rr_rig_kinematics(m, s, pose, w);
-    if (st == RR_ERR_NULL || (st < 0 && !isfinite(pose->c[0])))
-        return st;                  /* nothing valid: no pose */
-    return rr_rig_contact_loads(m, N, pose, w);
+    return no_loads(st, pose) ? st : rr_rig_contact_loads(m, N, pose, w);
+}
+
+int rr_rig_contact_eval_checked(const rr_rig_contact_checked *k, const rr_rig_state *s,
+                                const double N[2], rr_rig_pose *pose, rr_wheel_contact w[2])
+{
+    int st = rr_rig_kinematics_checked(k, s, pose, w);
+    return no_loads(st, pose) ? st : rr_rig_contact_loads_checked(k, N, pose, w);
 }

@@ -103,6 +103,30 @@ typedef struct {
 int rr_rig_contact_check(const rr_rig_contact_model *m);
 
 /*
+ * rr_rig_contact_checked - a contact model checked once, for many
+ * evaluations (the rig's time step, a batch of states): rr_rig_contact_check
+ * at rr_rig_contact_bind, then rr_rig_kinematics_checked,
+ * rr_rig_contact_loads_checked and rr_rig_contact_eval_checked check only
+ * what changes per evaluation (the state, the loads, each wheel's case and
+ * friction law).  It keeps a copy of the model (whose table must outlive
+ * it): a changed model takes effect at the next rr_rig_contact_bind.
+ */
+typedef struct {
+    rr_rig_contact_model m;          /* the model, a checked copy */
+    rr_creep_checked creep;          /* its creep method, checked */
+    unsigned ready;                  /* RR_RIG_CONTACT_READY once bound */
+} rr_rig_contact_checked;
+
+#define RR_RIG_CONTACT_READY 0x52524343u
+
+/*
+ * rr_rig_contact_bind - m checked (rr_rig_contact_check) and copied to *k.
+ *   status:  RR_OK; rr_rig_contact_check's, or RR_ERR_NULL, with *k not
+ *            ready (the *_checked functions refuse it with RR_ERR_NULL).
+ */
+int rr_rig_contact_bind(rr_rig_contact_checked *k, const rr_rig_contact_model *m);
+
+/*
  * rr_rig_kinematics - pose, contact points and frames, creepages (no loads).
  *   given:   m the model; s the wheelset and roller state
  *   returns: *pose; w[0] left, w[1] right wheel: geo, theta, frame, n, creep
@@ -144,5 +168,19 @@ int rr_rig_contact(const rr_rig_contact_model *m, const rr_rig_state *s, const d
  */
 int rr_rig_contact_loads(const rr_rig_contact_model *m, const double N[2], const rr_rig_pose *pose,
                          rr_wheel_contact w[2]);
+
+/*
+ * rr_rig_kinematics_checked, rr_rig_contact_eval_checked,
+ * rr_rig_contact_loads_checked - rr_rig_kinematics, rr_rig_contact and
+ * rr_rig_contact_loads of the model bound to k, not checked again: the
+ * same doubles and statuses, and RR_ERR_NULL (outputs NaN) where k is not
+ * a successful rr_rig_contact_bind's.
+ */
+int rr_rig_kinematics_checked(const rr_rig_contact_checked *k, const rr_rig_state *s,
+                              rr_rig_pose *pose, rr_wheel_contact w[2]);
+int rr_rig_contact_eval_checked(const rr_rig_contact_checked *k, const rr_rig_state *s,
+                                const double N[2], rr_rig_pose *pose, rr_wheel_contact w[2]);
+int rr_rig_contact_loads_checked(const rr_rig_contact_checked *k, const double N[2],
+                                 const rr_rig_pose *pose, rr_wheel_contact w[2]);
 
 #endif

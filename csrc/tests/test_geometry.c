@@ -1,6 +1,7 @@
 /* test_geometry.c - splines, contact search, wheelset pose and contact tables. */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 #include "rr_test.h"
 #include "rollerrig.h"
 
@@ -201,6 +202,98 @@ static void test_off_roller(void)
     CHECK_STATUS(rr_contact_search(&l, NAN, 0.1, 0.0, &o, &c), RR_ERR_NONFINITE, "NaN shift");
 }
 
+/* Two evaluations the same bytes: the pose, and each wheel's values as the
+ * binding stores them (rr_wheel_store: no padding compared) and status. */
+static int same_wheels(const rr_rig_pose *p, const rr_wheel_contact *w, const rr_rig_pose *q,
+                       const rr_wheel_contact *v)
+{
+    double a[RR_WHEEL_NVALUES], b[RR_WHEEL_NVALUES];
+    int k;
+    if (memcmp(p, q, sizeof *p) != 0)
+        return 0;
+    for (k = 0; k < 2; k++) {
+        rr_wheel_store(&w[k], a, 1);
+        rr_wheel_store(&v[k], b, 1);
+        if (memcmp(a, b, sizeof a) != 0 || w[k].status != v[k].status)
+            return 0;
+    }
+    return 1;
+}
+
+/* The model checked once (rr_rig_contact_bind) and evaluated without
+ * checking it again: the unchecked functions' bytes and statuses, at good
+ * and bad states and loads; an unbound record refused; the bound copy
+ * unmoved by later changes to the model. */
+static void test_rig_contact_checked(rr_rig_contact_model *m, const rr_rig_state *s0)
+{
+    rr_rig_contact_checked k;
+    rr_rig_state s;
+    rr_rig_pose p1, p2;
+    rr_wheel_contact w1[2], w2[2];
+    const double loads[4][2] = {{1000.0, 900.0}, {-1.0, 1000.0}, {NAN, 1000.0},
+                                {1000.0, 0.0}};
+    const double spins[3] = {1.0, 0.98, 1.05}, ys[3] = {0.0, 2e-3, 0.01};
+    int i, j, l, st;
+
+    CHECK_STATUS(rr_rig_contact_bind(&k, m), RR_OK, "rig: bound");
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            for (l = 0; l < 4; l++) {
+                s = *s0;
+                s.spin *= spins[i];
+                s.y = ys[j];
+                s.yaw_rate = l == 3 ? NAN : 0.0;
+                memset(w1, 0, sizeof w1);
+                memset(w2, 0, sizeof w2);
+                st = rr_rig_contact(m, &s, loads[l], &p1, w1);
+                CHECK_STATUS(rr_rig_contact_eval_checked(&k, &s, loads[l], &p2, w2), st,
+                             "rig: checked evaluation's status");
+                CHECK(same_wheels(&p1, w1, &p2, w2), "rig: checked evaluation, bit for bit");
+                st = rr_rig_kinematics(m, &s, &p1, w1);
+                CHECK_STATUS(rr_rig_kinematics_checked(&k, &s, &p2, w2), st,
+                             "rig: checked kinematics");
+                CHECK(same_wheels(&p1, w1, &p2, w2), "rig: checked kinematics, bit for bit");
+                if (st >= 0) {
+                    st = rr_rig_contact_loads(m, loads[l], &p1, w1);
+                    CHECK_STATUS(rr_rig_contact_loads_checked(&k, loads[l], &p2, w2), st,
+                                 "rig: checked loads");
+                    CHECK(same_wheels(&p1, w1, &p2, w2), "rig: checked loads, bit for bit");
+                }
+            }
+    /* a copy: the model changed after the bind does not reach it */
+    s = *s0;
+    s.spin *= 0.98;
+    rr_rig_contact_eval_checked(&k, &s, loads[0], &p1, w1);
+    m->creep.v[RR_FASTSIM_NX] = 0.5;
+    CHECK_STATUS(rr_rig_contact(m, &s, loads[0], &p2, w2), RR_ERR_GRID, "rig: nx = 0.5 refused");
+    CHECK_STATUS(rr_rig_contact_eval_checked(&k, &s, loads[0], &p2, w2), RR_OK,
+                 "rig: the bound copy is the checked model");
+    CHECK(same_wheels(&p1, w1, &p2, w2), "rig: and evaluates as before");
+    CHECK_STATUS(rr_rig_contact_bind(&k, m), RR_ERR_GRID, "rig: the changed model refused");
+    m->creep.v[RR_FASTSIM_NX] = 20;
+    /* what a C caller can get wrong: an unbound or refused record, NULLs */
+    CHECK_STATUS(rr_rig_contact_eval_checked(&k, &s, loads[0], &p2, w2), RR_ERR_NULL,
+                 "rig: a refused bind is not used");
+    CHECK(isnan(p2.c[0]) && isnan(w2[0].force[0]) && w2[1].status == RR_ERR_NULL,
+          "rig: refused: NaN");
+    memset(&k, 0, sizeof k);
+    CHECK_STATUS(rr_rig_kinematics_checked(&k, &s, &p2, w2), RR_ERR_NULL, "rig: zeroed record");
+    CHECK_STATUS(rr_rig_contact_loads_checked(&k, loads[0], &p2, w2), RR_ERR_NULL,
+                 "rig: zeroed record's loads");
+    CHECK_STATUS(rr_rig_contact_bind(&k, m), RR_OK, "rig: bound again");
+    CHECK_STATUS(rr_rig_kinematics_checked(NULL, &s, &p2, w2), RR_ERR_NULL, "rig: NULL record");
+    CHECK_STATUS(rr_rig_kinematics_checked(&k, NULL, &p2, w2), RR_ERR_NULL, "rig: NULL state");
+    CHECK_STATUS(rr_rig_kinematics_checked(&k, &s, NULL, w2), RR_ERR_NULL, "rig: NULL pose");
+    CHECK_STATUS(rr_rig_contact_eval_checked(&k, &s, loads[0], &p2, NULL), RR_ERR_NULL,
+                 "rig: NULL wheels");
+    CHECK_STATUS(rr_rig_contact_loads_checked(&k, NULL, &p2, w2), RR_ERR_NULL,
+                 "rig: NULL loads");
+    CHECK_STATUS(rr_rig_contact_loads_checked(&k, loads[0], NULL, w2), RR_ERR_NULL,
+                 "rig: NULL pose for the loads");
+    CHECK_STATUS(rr_rig_contact_bind(NULL, m), RR_ERR_NULL, "rig: NULL record to bind");
+    CHECK_STATUS(rr_rig_contact_bind(&k, NULL), RR_ERR_NULL, "rig: NULL model");
+}
+
 /* The whole evaluation on the conical pair: free rolling, braking, bad input. */
 static void test_rig_contact(void)
 {
@@ -276,6 +369,7 @@ static void test_rig_contact(void)
     m.vmin = 0.0;
     CHECK_STATUS(rr_rig_contact(&m, &s, N, &pose, w), RR_ERR_SPEED, "rig: vmin = 0");
     m.vmin = 1e-3;
+    test_rig_contact_checked(&m, &s);
     m.table = 0;
     CHECK_STATUS(rr_rig_contact_check(&m), RR_ERR_WORKSPACE, "rig: no table");
 }

@@ -8,6 +8,7 @@
 #include "contact/rr_creep.h"
 #include "contact/rr_fastsim.h"
 #include "contact/rr_polach.h"
+#include "contact/rr_exact.h"
 #include "rr_test.h"
 
 static rr_contact_case base_case(void)
@@ -200,6 +201,95 @@ static void test_dispatch(void)
     CHECK_STATUS(rr_fastsim(&c, &fr, &o, &f, NULL), RR_ERR_GRID, "rr_fastsim nx = 2.5 refused");
 }
 
+static int same_forces(const rr_forces *a, const rr_forces *b)
+{
+    return memcmp(a, b, sizeof *a) == 0;
+}
+
+/* Options checked once (rr_creep_check), then many cases without checking
+ * them again (rr_creep_forces_checked): the dispatcher's doubles and
+ * statuses for every method, good and bad cases, Coulomb and falling
+ * friction; what a C caller can get wrong refused. */
+static void test_checked(void)
+{
+    static double work[1 << 18];
+    rr_contact_case cases[6];
+    rr_friction laws[3] = {{0.3, 1.0, 0.0}, {0.3, 0.4, 0.6}, {NAN, 1.0, 0.0}};
+    rr_creep_checked k;
+    rr_creep_opts o;
+    rr_forces f, g;
+    int m, i, j, bad;
+    char what[96];
+
+    for (i = 0; i < 6; i++)
+        cases[i] = base_case();
+    cases[1].cy = 2e-3; cases[1].cphi = 0.5;    /* towards full sliding, with spin */
+    cases[2].cx = -4e-2;
+    cases[3].N = -1.0;                          /* refused by every method */
+    cases[4].a = NAN;
+    cases[5].speed = 0.0;                       /* refused with falling friction */
+    for (m = 0; m < rr_method_count(); m++) {
+        rr_creep_opts_default(&o, m);
+        if (m == RR_METHOD_EXACT)
+            o.v[RR_EXACT_NX] = o.v[RR_EXACT_NY] = 8;   /* a small grid: a quick test */
+        snprintf(what, sizeof what, "%s: checked", rr_method_get(m)->name);
+        CHECK_STATUS(rr_creep_check(&k, &o, &bad), RR_OK, what);
+        CHECK(bad == -1 && k.d == rr_method_get(m) && k.work_len == rr_creep_workspace_len(&o)
+              && k.cost == rr_creep_cost(&o), "the checked record: method, workspace, cost");
+        CHECK(k.work_len <= sizeof work / sizeof work[0], "the test's workspace suffices");
+        for (i = 0; i < 6; i++)
+            for (j = 0; j < 3; j++) {
+                const int st = rr_creep_forces_work(&cases[i], &laws[j], &o, work, k.work_len,
+                                                    &f);
+                snprintf(what, sizeof what, "%s: case %d, law %d: as the dispatcher",
+                         rr_method_get(m)->name, i, j);
+                CHECK_STATUS(rr_creep_forces_checked(&k, &cases[i], &laws[j], work, k.work_len,
+                                                     NULL, &g), st, what);
+                CHECK(same_forces(&f, &g), what);
+            }
+        CHECK_STATUS(rr_creep_forces_checked(&k, NULL, &laws[0], work, k.work_len, NULL, &g),
+                     RR_ERR_NULL, "NULL case");
+        CHECK_STATUS(rr_creep_forces_checked(&k, &cases[0], NULL, work, k.work_len, NULL, &g),
+                     RR_ERR_NULL, "NULL law");
+        CHECK(isnan(g.fx), "NULL: NaN");
+        if (k.work_len > 0) {
+            CHECK_STATUS(rr_creep_forces_checked(&k, &cases[0], &laws[0], NULL, 0, NULL, &g),
+                         RR_ERR_WORKSPACE, "no workspace");
+            CHECK_STATUS(rr_creep_forces_checked(&k, &cases[0], &laws[0], work, k.work_len - 1,
+                                                 NULL, &g), RR_ERR_WORKSPACE, "one double short");
+            CHECK(isnan(g.fx), "refused: NaN");
+        }
+    }
+    /* refused options leave no record the forces take */
+    rr_creep_opts_default(&o, RR_METHOD_POLACH);
+    o.v[RR_POLACH_KS] = 0.9;
+    o.v[RR_POLACH_KA] = 0.5;
+    CHECK_STATUS(rr_creep_check(&k, &o, &bad), RR_ERR_PARAM, "kS > kA refused");
+    CHECK(bad == RR_POLACH_KS, "naming kS");
+    CHECK_STATUS(rr_creep_forces_checked(&k, &cases[0], &laws[0], NULL, 0, NULL, &g),
+                 RR_ERR_NULL, "a refused record is not used");
+    CHECK(isnan(g.fx) && isnan(g.fy) && isnan(g.mz), "refused: NaN forces");
+    memset(&k, 0, sizeof k);
+    CHECK_STATUS(rr_creep_forces_checked(&k, &cases[0], &laws[0], NULL, 0, NULL, &g),
+                 RR_ERR_NULL, "a zeroed record is not one");
+    rr_creep_opts_default(&o, RR_METHOD_FASTSIM);
+    CHECK_STATUS(rr_creep_check(&k, &o, NULL), RR_OK, "FASTSIM checked");
+    k.o.method = RR_METHOD_COUNT;
+    CHECK_STATUS(rr_creep_forces_checked(&k, &cases[0], &laws[0], NULL, 0, NULL, &g),
+                 RR_ERR_NULL, "a method that is not the record's");
+    k.o.method = RR_METHOD_POLACH;
+    CHECK_STATUS(rr_creep_forces_checked(&k, &cases[0], &laws[0], NULL, 0, NULL, &g),
+                 RR_ERR_NULL, "nor another method's");
+    CHECK_STATUS(rr_creep_forces_checked(NULL, &cases[0], &laws[0], NULL, 0, NULL, &g),
+                 RR_ERR_NULL, "NULL record");
+    CHECK_STATUS(rr_creep_check(&k, &o, NULL), RR_OK, "FASTSIM checked again");
+    CHECK_STATUS(rr_creep_forces_checked(&k, &cases[0], &laws[0], NULL, 0, NULL, NULL),
+                 RR_ERR_NULL, "NULL output");
+    CHECK_STATUS(rr_creep_check(NULL, &o, &bad), RR_ERR_NULL, "NULL record to fill");
+    CHECK_STATUS(rr_creep_check(&k, NULL, &bad), RR_ERR_NULL, "NULL options");
+    CHECK(bad == -1, "none to blame");
+}
+
 int main(void)
 {
     test_lookup();
@@ -207,5 +297,6 @@ int main(void)
     test_set();
     test_edges();
     test_dispatch();
+    test_checked();
     return rr_test_summary();
 }

@@ -487,6 +487,27 @@ static void test_rebind(const rr_rig_params *good)
     CHECK(memcmp(&keep, &b, sizeof b) == 0, "refused: the rig unchanged");
     CHECK_STATUS(rr_rig_rebind(NULL, &q), RR_ERR_NULL, "NULL rig");
     CHECK_STATUS(rr_rig_rebind(&b, NULL), RR_ERR_NULL, "NULL parameters");
+
+    /* the contact model is checked at rr_rig_init and rr_rig_rebind, never
+     * per step: options changed under the rig (out of range, or a method it
+     * does not step with) act only through a rebind, which refuses them */
+    q = *good;
+    CHECK_STATUS(rr_rig_init(&q, 31.25, &a), RR_OK, "init");
+    CHECK_STATUS(rr_rig_init(good, 31.25, &b), RR_OK, "init the reference");
+    q.contact.creep.v[RR_FASTSIM_NX] = 1e9;
+    for (k = 0, same = 1; k < 20; k++) {
+        same &= rr_rig_step(&a, 31.25, 0.03, ra) >= 0;
+        rr_rig_step(&b, 31.25, 0.03, rb);
+        same &= memcmp(ra, rb, sizeof ra) == 0;
+    }
+    CHECK(same, "nx = 1e9 under the rig: it steps on with the checked options");
+    CHECK_STATUS(rr_rig_rebind(&a, &q), RR_ERR_GRID, "and the rebind refuses them");
+    rr_creep_opts_default(&q.contact.creep, RR_METHOD_LINEAR);
+    CHECK_STATUS(rr_rig_rebind(&a, &q), RR_ERR_METHOD, "as the linear theory");
+    CHECK(rr_rig_step(&a, 31.25, 0.03, ra) >= 0, "the rig unchanged by the refusals");
+    rr_creep_opts_default(&q.contact.creep, RR_METHOD_POLACH);
+    CHECK_STATUS(rr_rig_rebind(&a, &q), RR_OK, "Polach taken at the rebind");
+    CHECK(a.contact.creep.o.method == RR_METHOD_POLACH, "and stepped with from there");
 }
 
 /* Issue 22: what the rig must not report as a success.  The linear theory
@@ -548,12 +569,16 @@ static void test_sanity(const rr_rig_params *good)
     CHECK_STATUS(rr_speed_loop_check(&loops[0]), RR_ERR_PARAM, "the roller's at 8.4 ms");
     CHECK_STATUS(rr_rig_config_speed_loops(NULL, loops), RR_ERR_NULL, "NULL config");
 
-    /* a method that breaks its limit under the rig (options changed under
-     * it, as a byte copy without rr_rig_rebind could): braked past the
-     * knee, the linear theory's force passes mu N and the rig stops */
+    /* a method that breaks its limit under the rig: FaStrip on CONTACT's
+     * geometry passes mu N by up to 0.1 % in full sliding (rr_fastrip.h);
+     * braked past the knee, the rig stops rather than record it */
     p = *good;
+    rr_creep_opts_default(&p.contact.creep, RR_METHOD_FASTRIP);
+    p.contact.creep.v[RR_FASTRIP_GEOMETRY] = RR_FASTRIP_CONTACT;
+    p.contact.friction.A = 1.0;         /* Coulomb friction: FaStrip's */
+    p.contact.friction.B = 0.0;
+    p.adhesion.n = 0;
     CHECK_STATUS(rr_rig_init(&p, 31.25, &rig), RR_OK, "init");
-    rr_creep_opts_default(&p.contact.creep, RR_METHOD_LINEAR);
     for (k = 0; k < 500 && (st = rr_rig_step(&rig, 31.25, 0.04, rec)) >= 0; k++)
         CHECK(rec[RR_REC_ADHESION] <= p.contact.friction.mu0 * (1.0 + 1e-9),
               "no adhesion above mu0 recorded as a success");

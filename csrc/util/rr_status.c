@@ -2,8 +2,8 @@
 #include "util/rr_common.h"
 
 static const char *const rr_messages[] = {
-    /* -19 */ "too many samples did not converge (their inner iterations ended above the "
-              "tolerance): the run cannot be trusted",
+    /* -19 */ ("too many samples did not converge (their inner iterations ended above the "
+               "tolerance): the run cannot be trusted"),   /* parentheses: one string (clang) */
     /* -18 */ "a creep force exceeds mu N: the method broke its friction limit",
     /* -17 */ "interrupted by the caller",
     /* -16 */ "the controller failed (it raised, or gave what is not a command)",

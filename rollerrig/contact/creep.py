@@ -31,7 +31,7 @@ import numpy as np
 
 from .. import _core
 from .._binding import (METHODS, FallingFriction, MethodInfo, OptionInfo, _broadcast, _finish,
-                       _friction, check_creep_options, methods_doc, used_numbers)
+                       _friction, creep_options, methods_doc, used_numbers)
 from .._errors import RollerRigError, check_status
 
 __all__ = [
@@ -232,10 +232,10 @@ def creep_forces(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, method
         fast = _scalar_creep(method, options, friction, (cx, cy, cphi, a, b, N, mu, G, nu, speed))
         if fast is not None:
             return fast
-    opts = check_creep_options(func, method, options)
+    opts = creep_options(func, method, options)       # parsed once for the batch
     shape, scalar, full, flat = _case(func, cx, cy, cphi, a, b, N, mu, G, nu, speed, friction,
                                       method)
-    fx, fy, mz, status = _core.creep_forces(*flat, **opts)
+    fx, fy, mz, status = _core.creep_forces(opts, *flat)
     # the method's own numbers may explain a failure too (beta = 1e307)
     full.update(used_numbers(method, options))
     return CreepForces(*_finish(func, shape, scalar, full, (fx, fy, mz), status, errors))
@@ -252,7 +252,7 @@ def fastsim_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, metho
     total forces [N] and moment [N m]; an invalid case raises RollerRigError.
     """
     func = "fastsim_field"
-    opts = check_creep_options(func, method, options)
+    opts = creep_options(func, method, options)
     if not METHODS[method].has_field:
         with_field = ", ".join(repr(k) for k, m in METHODS.items() if m.has_field)
         raise RollerRigError(f"{func}: method must have a traction field ({with_field}), "
@@ -260,7 +260,7 @@ def fastsim_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, metho
     shape, scalar, full, flat = _case(func, cx, cy, cphi, a, b, N, mu, G, nu, speed, friction)
     if not scalar:
         raise RollerRigError(f"{func}: one case at a time; got inputs of shape {shape}")
-    fx, fy, mz, status, x, y, pn, px, py, slip, area = _core.fastsim_field(*flat, **opts)
+    fx, fy, mz, status, x, y, pn, px, py, slip, area = _core.fastsim_field(opts, *flat)
     full.update(used_numbers(method, options))
     check_status(func, np.array(status, dtype=np.int8), full, "raise")
     return TractionField(x=x, y=y, pn=pn, px=px, py=py, slip=slip.astype(bool), area=area,
