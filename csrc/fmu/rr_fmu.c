@@ -28,22 +28,23 @@ typedef struct {
     const char *description;
 } control_decl;
 
-static const control_decl controls[RR_FMU_NCONTROL] = {
-    {"control.roller_mode", roller_modes, RR_FMU_TUNABLE,
+/* each at its enum rr_fmu_control index; the sizes checked below */
+static const control_decl controls[] = {
+    [RR_FMU_ROLLER_MODE] = {"control.roller_mode", roller_modes, RR_FMU_TUNABLE,
      "how the roller drive is commanded at each sample: scenario (its PI to the scenario's "
      "speed, scenario.roller_speed_m_s over roller.radius_m), speed (its PI to the input "
      "roller_speed_ref), torque (the input roller_torque_ref to the drive)"},
-    {"control.wheelset_mode", wheelset_modes, RR_FMU_TUNABLE,
+    [RR_FMU_WHEELSET_MODE] = {"control.wheelset_mode", wheelset_modes, RR_FMU_TUNABLE,
      "how the wheelset drive is commanded at each sample: scenario (the creepage controller, "
      "eq. 13-16, to the scenario's targets, scenario.targets from scenario.target_start_s), "
      "creepage (the creepage controller to the input creepage_ref), speed (its PI to the "
      "input wheelset_speed_ref), torque (the input wheelset_torque_ref to the drive), free (no "
      "creepage control: its PI to free rolling at the roller's measured speed)"},
-    {"control.mu_source", mu_sources, RR_FMU_TUNABLE,
+    [RR_FMU_MU_SOURCE] = {"control.mu_source", mu_sources, RR_FMU_TUNABLE,
      "the static friction coefficient mu0 at each sample: adhesion (the [adhesion] schedule "
      "and patch; scenario.mu0 without a schedule) or input (the input mu; a patch still "
      "applies)"},
-    {"control.start", start_states, RR_FMU_FIXED,
+    [RR_FMU_START] = {"control.start", start_states, RR_FMU_FIXED,
      "the initial state: rolling (the wheelset rolling freely on the rollers at "
      "scenario.roller_speed_m_s) or rest (everything at standstill; the roller drive spins "
      "the rig up), as rollerrig.simulate's start"},
@@ -57,44 +58,44 @@ typedef struct {
     const char *description;
 } input_decl;
 
-static const input_decl inputs[RR_FMU_NINPUT] = {
-    {"roller_speed_ref", "rad/s", -HUGE_VAL, HUGE_VAL, 0, 0,
+static const input_decl inputs[] = {
+    [RR_FMU_IN_ROLLER_SPEED] = {"roller_speed_ref", "rad/s", -HUGE_VAL, HUGE_VAL, 0, 0,
      "roller speed reference of the roller's PI (eq. 10-11) with control.roller_mode = "
      "speed; start: scenario.roller_speed_m_s / roller.radius_m"},
-    {"roller_torque_ref", "N m", -HUGE_VAL, HUGE_VAL, 0, 0,
+    [RR_FMU_IN_ROLLER_TORQUE] = {"roller_torque_ref", "N m", -HUGE_VAL, HUGE_VAL, 0, 0,
      "roller drive torque reference with control.roller_mode = torque (clipped to "
      "roller_drive.torque_limit_N_m)"},
-    {"creepage_ref", "-", 0.0, 1.0, 0, 1,
+    [RR_FMU_IN_CREEPAGE] = {"creepage_ref", "-", 0.0, 1.0, 0, 1,
      "creepage target of the creepage controller (eq. 13-16) with control.wheelset_mode = "
      "creepage, in the drive's sense (> 0; control.wheelset_mode = free: none, free "
      "rolling); start: the first of scenario.targets"},
-    {"wheelset_speed_ref", "rad/s", -HUGE_VAL, HUGE_VAL, 0, 0,
+    [RR_FMU_IN_WHEELSET_SPEED] = {"wheelset_speed_ref", "rad/s", -HUGE_VAL, HUGE_VAL, 0, 0,
      "wheelset speed reference of the wheelset's PI with control.wheelset_mode = speed; "
      "start: scenario.roller_speed_m_s / wheelset.wheel_radius_m"},
-    {"wheelset_torque_ref", "N m", -HUGE_VAL, HUGE_VAL, 0, 0,
+    [RR_FMU_IN_WHEELSET_TORQUE] = {"wheelset_torque_ref", "N m", -HUGE_VAL, HUGE_VAL, 0, 0,
      "wheelset drive torque reference with control.wheelset_mode = torque (clipped to "
      "wheelset_drive.torque_limit_N_m)"},
-    {"mu", "-", 0.0, RR_FRICTION_MAX, 1, 0,
+    [RR_FMU_IN_MU] = {"mu", "-", 0.0, RR_FRICTION_MAX, 1, 0,
      "static friction coefficient mu0 over the sample with control.mu_source = input (the "
      "falling law's A and B stay the contact section's); start: scenario.mu0"},
 };
 
 #define ENC(name, member, unit, meaning) \
     {name, 1, (long)offsetof(rr_rig_signals, member), unit, meaning}
-static const rr_rig_field encoders[RR_FMU_NENCODER] = {
-    ENC("encoder.roller_count", roller_count, "-",
+static const rr_rig_field encoders[] = {
+    [RR_FMU_ENC_ROLLER_COUNT] = ENC("encoder.roller_count", roller_count, "-",
         "roller encoder's counter at the present time (whole counts, cumulative)"),
-    ENC("encoder.wheelset_count", wheelset_count, "-",
+    [RR_FMU_ENC_WHEELSET_COUNT] = ENC("encoder.wheelset_count", wheelset_count, "-",
         "wheelset encoder's counter at the present time (whole counts, cumulative)"),
-    ENC("encoder.roller_angle", roller_angle, "rad",
+    [RR_FMU_ENC_ROLLER_ANGLE] = ENC("encoder.roller_angle", roller_angle, "rad",
         "roller angle the encoder reads (quantised: count 2 pi / counts per revolution)"),
-    ENC("encoder.wheelset_angle", wheelset_angle, "rad",
+    [RR_FMU_ENC_WHEELSET_ANGLE] = ENC("encoder.wheelset_angle", wheelset_angle, "rad",
         "wheelset angle the encoder reads (quantised)"),
-    ENC("encoder.roller_speed", roller_speed, "rad/s",
+    [RR_FMU_ENC_ROLLER_SPEED] = ENC("encoder.roller_speed", roller_speed, "rad/s",
         "roller speed estimate from the encoder's last two readings (eq. 12)"),
-    ENC("encoder.wheelset_speed", wheelset_speed, "rad/s",
+    [RR_FMU_ENC_WHEELSET_SPEED] = ENC("encoder.wheelset_speed", wheelset_speed, "rad/s",
         "wheelset speed estimate from the encoder's last two readings (eq. 12)"),
-    ENC("encoder.xi_est", xi_est, "-",
+    [RR_FMU_ENC_XI_EST] = ENC("encoder.xi_est", xi_est, "-",
         "creepage estimate from the encoders' speeds at the present time (eq. 16, in the "
         "creepage controller's sense); the record's xi_est is the one the controller used "
         "at the last sample"),
@@ -114,10 +115,25 @@ static const char *const tunable_rows[] = {
     "adhesion.patch_edge_m",
 };
 
-static const char *const default_type_names[] = {"Real", "Integer", "Boolean", "Enumeration"};
-static const char *const causality_names[] = {"independent", "parameter", "input", "output"};
+static const char *const default_type_names[] = {
+    [RR_FMU_REAL] = "Real", [RR_FMU_INTEGER] = "Integer", [RR_FMU_BOOLEAN] = "Boolean",
+    [RR_FMU_ENUMERATION] = "Enumeration"};
+static const char *const causality_names[] = {
+    [RR_FMU_INDEPENDENT] = "independent", [RR_FMU_PARAMETER] = "parameter",
+    [RR_FMU_INPUT] = "input", [RR_FMU_OUTPUT] = "output"};
+static const char *const mode_names[] = {
+    [RR_FMU_INSTANTIATED] = "instantiated", [RR_FMU_INITIALIZATION] = "initialization mode",
+    [RR_FMU_STEPPING] = "stepping", [RR_FMU_TERMINATED] = "terminated",
+    [RR_FMU_FAILED] = "failed"};
 
-#define COUNT(a) ((int)(sizeof a / sizeof a[0]))
+#define COUNT(a) RR_COUNTOF(a)
+
+RR_STATIC_ASSERT(COUNT(controls) == RR_FMU_NCONTROL, one_control_each);
+RR_STATIC_ASSERT(COUNT(inputs) == RR_FMU_NINPUT, one_input_each);
+RR_STATIC_ASSERT(COUNT(encoders) == RR_FMU_NENCODER, one_encoder_each);
+RR_STATIC_ASSERT(COUNT(default_type_names) == RR_FMU_ENUMERATION + 1, one_type_name_each);
+RR_STATIC_ASSERT(COUNT(causality_names) == RR_FMU_OUTPUT + 1, one_causality_name_each);
+RR_STATIC_ASSERT(COUNT(mode_names) == RR_FMU_FAILED + 1, one_mode_name_each);
 
 /* ------------------------------------------------------------------ helpers */
 
@@ -853,9 +869,7 @@ int rr_fmu_reset(rr_fmu *m)
 
 static const char *mode_name(int mode)
 {
-    static const char *const names[] = {"instantiated", "initialization mode", "stepping",
-                                        "terminated", "failed"};
-    return mode >= 0 && mode <= RR_FMU_FAILED ? names[mode] : "unknown";
+    return mode >= 0 && mode <= RR_FMU_FAILED ? mode_names[mode] : "unknown";
 }
 
 static int wrong_mode(rr_fmu *m, const char *what, const char *need)

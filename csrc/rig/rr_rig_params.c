@@ -24,7 +24,7 @@
     {name, "", RR_RIG_CHOICE, index, NULL, 0, 0, 0, 0, names, NULL, 0, OFF(member), 0, origin}
 #define LIST(name, unit, entries, text, range, member, origin) \
     {name, unit, RR_RIG_LIST, 0.0, text, range, NULL, entries, \
-     (int)(sizeof entries / sizeof entries[0]), OFF(member), 0, origin}
+     RR_COUNTOF(entries), OFF(member), 0, origin}
 /* a list that may be empty, and is by default */
 #define LIST0(name, unit, range, member, origin) \
     {name, unit, RR_RIG_LIST, 0.0, "[]", range, NULL, NULL, 0, OFF(member), 0, origin}
@@ -41,6 +41,10 @@ static const char *const ode_methods[] = {"trbdf2", "ros2", "lineuler", NULL};
 static const char *const patch_sides[] = {"both", "left", "right", NULL};
 static const int patch_bits[] = {3, 1, 2};
 static const int ode_values[] = {RR_ODE_TRBDF2, RR_ODE_ROS2, RR_ODE_LINEULER};
+/* the values beside their names (each names list ends in NULL) */
+RR_STATIC_ASSERT(RR_COUNTOF(drive_senses) == RR_COUNTOF(drive_modes) - 1, one_sense_per_mode);
+RR_STATIC_ASSERT(RR_COUNTOF(patch_bits) == RR_COUNTOF(patch_sides) - 1, one_bit_set_per_side);
+RR_STATIC_ASSERT(RR_COUNTOF(ode_values) == RR_COUNTOF(ode_methods) - 1, one_value_per_method);
 
 static const double default_targets[] = {0.04, 0.015, 0.02, 0.03};
 static const double default_starts[] = {0.0, 5.0, 10.0, 15.0};
@@ -256,7 +260,7 @@ static const rr_rig_param params[] = {
            "choice: the patch on both rollers (\"left\" or \"right\": one, which yaws the "
            "wheelset)"),
 };
-#define NPARAMS ((int)(sizeof params / sizeof params[0]))
+#define NPARAMS RR_COUNTOF(params)
 
 static const rr_rig_section sections[] = {
     {"scenario", ""},
@@ -305,79 +309,19 @@ static const rr_rig_retired retired[] = {
                                   "axle, ratio 1"},
 };
 
-#define REC(name, unit, meaning) {name, 1, -1, unit, meaning}
-static const rr_rig_field records[] = {
-    REC("time", "s", "time at the end of the sample"),
-    REC("creepage", "-", "longitudinal creepage cx of the contact model, mean of both contacts "
-        "(Kalker's sign: > 0 braking, < 0 traction)"),
-    REC("xi_est", "-", "the creepage controller's estimate from the encoders (eq. 16), in the "
-        "drive's sense (> 0)"),
-    REC("xi_ref", "-", "the creepage target (> 0; NaN before the first target starts)"),
-    REC("roller_speed", "m/s", "roller surface speed, roller_spin R0"),
-    REC("wheelset_speed", "m/s", "wheel surface speed, spin r0"),
-    REC("fx", "N", "longitudinal creep force on the wheelset, both wheels (on the wheel: < 0 "
-        "braking, > 0 traction)"),
-    REC("fy", "N", "lateral creep force on the wheelset, both wheels"),
-    REC("normal_load_left", "N", "normal load of the left wheel"),
-    REC("normal_load_right", "N", "normal load of the right wheel"),
-    REC("adhesion", "-", "adhesion coefficient |fx| / (normal_load_left + normal_load_right)"),
-    REC("torque_roller", "N m", "roller drive torque (after its lag)"),
-    REC("torque_wheelset", "N m", "wheelset drive torque (after its lag)"),
-    REC("w_ref", "rad/s", "wheelset speed reference: the creepage controller's (eq. 15) or a "
-        "controller's of the caller; NaN while the wheelset's torque is commanded"),
-    REC("x", "m", "wheelset longitudinal position"),
-    REC("y", "m", "wheelset lateral position (+: to the left)"),
-    REC("yaw", "rad", "wheelset yaw angle"),
-    REC("creepage_left", "-", "longitudinal creepage of the left contact"),
-    REC("creepage_right", "-", "longitudinal creepage of the right contact"),
-    REC("torque_ref_roller", "N m", "roller torque reference held over the sample"),
-    REC("torque_ref_wheelset", "N m", "wheelset torque reference held over the sample"),
-    REC("vx", "m/s", "wheelset longitudinal velocity"),
-    REC("vy", "m/s", "wheelset lateral velocity"),
-    REC("yaw_rate", "rad/s", "wheelset yaw rate"),
-    REC("spin", "rad/s", "wheelset angular speed about its axle"),
-    REC("roller_spin", "rad/s", "roller angular speed"),
-    REC("mu_left", "-", "static friction coefficient at the left contact (the adhesion in "
-        "effect: schedule, command, patch)"),
-    REC("mu_right", "-", "static friction coefficient at the right contact"),
-    REC("sample_status", "-", "status of the sample: 0 OK, > 0 warning, < 0 error "
-        "(rollerrig.status_message)"),
-};
-/* one name per enum rr_rig_record_index entry: a compile-time check */
-typedef char records_complete[(sizeof records / sizeof records[0]) == RR_REC_COUNT ? 1 : -1];
+/* the record's fields, from the one list that also makes their enum (rr_rig.h) */
+#define REC(id, name, unit, meaning) {name, 1, -1, unit, meaning},
+static const rr_rig_field records[] = {RR_RIG_RECORD(REC)};
+RR_STATIC_ASSERT(RR_COUNTOF(records) == RR_REC_COUNT, records_complete);
+RR_STATIC_ASSERT(RR_REC_STATUS == RR_REC_COUNT - 1, status_is_last);
 
+/* the per-wheel block, from the list that also counts its fields and values */
 #define WF(name, width, member, unit, meaning) \
-    {name, width, (long)offsetof(rr_wheel_contact, member), unit, meaning}
-static const rr_rig_field wheel_fields[] = {
-    WF("p", 3, frame.p, "m", "contact point in the rig"),
-    WF("theta", 1, theta, "rad", "its angle round the roller axis from the top"),
-    WF("t1", 3, frame.t1, "-", "rolling direction (unit, rig frame)"),
-    WF("t2", 3, frame.t2, "-", "lateral direction in the contact plane"),
-    WF("n", 3, n, "-", "normal t1 x t2, into the wheel"),
-    WF("cx", 1, creep.cx, "-", "longitudinal creepage"),
-    WF("cy", 1, creep.cy, "-", "lateral creepage"),
-    WF("cphi", 1, creep.cphi, "rad/m", "spin creepage"),
-    WF("V", 1, creep.V, "m/s", "rolling speed used for the creepages"),
-    WF("N", 1, N, "N", "normal load"),
-    WF("a", 1, hertz.a, "m", "contact ellipse semi-axis along t1"),
-    WF("b", 1, hertz.b, "m", "contact ellipse semi-axis along t2"),
-    WF("p0", 1, hertz.p0, "Pa", "peak pressure"),
-    WF("fx", 1, f.fx, "N", "creep force on the wheel along t1"),
-    WF("fy", 1, f.fy, "N", "creep force on the wheel along t2"),
-    WF("mz", 1, f.mz, "N m", "spin moment on the wheel about n"),
-    WF("force", 3, force, "N", "contact force on the wheelset, rig frame"),
-    WF("moment", 3, moment, "N m", "its moment about the wheelset centre"),
-    WF("r", 1, geo.r, "m", "wheel rolling radius"),
-    WF("R", 1, geo.R, "m", "roller radius at the contact"),
-    WF("delta", 1, geo.delta, "rad", "contact angle"),
-    WF("s_wheel", 1, geo.s_wheel, "m", "profile coordinate of the contact point on the wheel"),
-    WF("s_roller", 1, geo.s_roller, "m", "profile coordinate of the contact point on the "
-       "roller"),
-};
-typedef char wheel_fields_complete[(sizeof wheel_fields / sizeof wheel_fields[0])
-                                   == RR_WHEEL_NFIELDS ? 1 : -1];
+    {name, width, (long)offsetof(rr_wheel_contact, member), unit, meaning},
+static const rr_rig_field wheel_fields[] = {RR_WHEEL_FIELDS(WF)};
+RR_STATIC_ASSERT(RR_COUNTOF(wheel_fields) == RR_WHEEL_NFIELDS, wheel_fields_complete);
 
-#define COUNT(a) ((int)(sizeof a / sizeof a[0]))
+#define COUNT(a) RR_COUNTOF(a)
 
 int rr_rig_param_count(void)
 {

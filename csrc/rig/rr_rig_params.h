@@ -260,10 +260,40 @@ const rr_rig_field *rr_rig_record_field(int i);   /* NULL unless 0 <= i < RR_REC
 /*
  * The per-wheel contact block: the rr_wheel_contact members a caller (the
  * binding) stores as RR_WHEEL_NVALUES consecutive doubles, field by field
- * (offset, width).
+ * (offset, width).  One list gives the fields and both counts:
+ * RR_WHEEL_FIELDS(F) calls F(name, width, member, unit, meaning) once per
+ * field, member the rr_wheel_contact member it reads.
  */
-#define RR_WHEEL_NFIELDS 23
-#define RR_WHEEL_NVALUES 35
+#define RR_WHEEL_FIELDS(F)                                                                    \
+    F("p", 3, frame.p, "m", "contact point in the rig")                                       \
+    F("theta", 1, theta, "rad", "its angle round the roller axis from the top")               \
+    F("t1", 3, frame.t1, "-", "rolling direction (unit, rig frame)")                          \
+    F("t2", 3, frame.t2, "-", "lateral direction in the contact plane")                       \
+    F("n", 3, n, "-", "normal t1 x t2, into the wheel")                                       \
+    F("cx", 1, creep.cx, "-", "longitudinal creepage")                                        \
+    F("cy", 1, creep.cy, "-", "lateral creepage")                                             \
+    F("cphi", 1, creep.cphi, "rad/m", "spin creepage")                                        \
+    F("V", 1, creep.V, "m/s", "rolling speed used for the creepages")                         \
+    F("N", 1, N, "N", "normal load")                                                          \
+    F("a", 1, hertz.a, "m", "contact ellipse semi-axis along t1")                             \
+    F("b", 1, hertz.b, "m", "contact ellipse semi-axis along t2")                             \
+    F("p0", 1, hertz.p0, "Pa", "peak pressure")                                               \
+    F("fx", 1, f.fx, "N", "creep force on the wheel along t1")                                \
+    F("fy", 1, f.fy, "N", "creep force on the wheel along t2")                                \
+    F("mz", 1, f.mz, "N m", "spin moment on the wheel about n")                               \
+    F("force", 3, force, "N", "contact force on the wheelset, rig frame")                     \
+    F("moment", 3, moment, "N m", "its moment about the wheelset centre")                     \
+    F("r", 1, geo.r, "m", "wheel rolling radius")                                             \
+    F("R", 1, geo.R, "m", "roller radius at the contact")                                     \
+    F("delta", 1, geo.delta, "rad", "contact angle")                                          \
+    F("s_wheel", 1, geo.s_wheel, "m", "profile coordinate of the contact point on the wheel") \
+    F("s_roller", 1, geo.s_roller, "m", "profile coordinate of the contact point on the "     \
+      "roller")
+
+#define RR_WHEEL_ONE_(name, width, member, unit, meaning) +1
+#define RR_WHEEL_WIDTH_(name, width, member, unit, meaning) +(width)
+#define RR_WHEEL_NFIELDS (0 RR_WHEEL_FIELDS(RR_WHEEL_ONE_))
+#define RR_WHEEL_NVALUES (0 RR_WHEEL_FIELDS(RR_WHEEL_WIDTH_))
 const rr_rig_field *rr_wheel_field(int i);        /* NULL unless 0 <= i < RR_WHEEL_NFIELDS */
 
 /* rr_wheel_store - the block of w into v[RR_WHEEL_NVALUES]; stride between values. */
