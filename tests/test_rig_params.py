@@ -44,6 +44,21 @@ def test_every_row_is_complete_and_its_text_is_its_value():
     assert not set(names) & set(RETIRED)
 
 
+def test_each_creep_row_declares_the_option_it_sets():
+    """The creep rows' option is a column of the C declaration (issue 23), not
+    the name cut at its first '_' (which would make fastsim_slip_speed set
+    'slip' and break on a family with an '_' in it): the file's keys, the C
+    rig and the FMU all read that column."""
+    declared = {p.name: p.option for p in PARAMETERS if p.option}
+    assert declared == {"contact.fastsim_nx": "nx", "contact.fastsim_ny": "ny",
+                        "contact.fastsim_slip_speed": "slip_speed", "contact.polach_kA": "kA",
+                        "contact.polach_kS": "kS"}
+    assert all(p.option is None for p in PARAMETERS
+               if not p.creep or p.name == "contact.creep_method")
+    assert all(any(o in m.options for m in rr.METHODS.values()) for o in declared.values())
+    assert rig._FILE_OPTIONS == {k.split(".", 1)[1]: o for k, o in declared.items()}
+
+
 def test_record_and_wheel_fields_come_from_c():
     assert rig.RECORD_FIELDS == tuple(r[0] for r in _core.RIG_RECORD)
     assert len(rig.RECORD_FIELDS) == _core.REC_COUNT

@@ -184,18 +184,17 @@ static int is_tunable(const char *name)
     return 0;
 }
 
-/* The option a creep row "contact.<family>_<option>" sets: the first
- * method's of that name (rollerrig.rig's _option_rule); NULL for
+/* The option a creep row sets (its declared option): the first method's
+ * of that name (rollerrig.rig's _option_rule); NULL for
  * contact.creep_method. */
 static const rr_creep_option *creep_option(const rr_rig_param *row)
 {
-    const char *opt = strchr(row->name, '_');
     int i, k;
-    if (!opt || strcmp(row->name, "contact.creep_method") == 0)
+    if (!row->option)
         return NULL;
     for (i = 0; i < rr_method_count(); i++) {
         const rr_method_desc *d = rr_method_get(i);
-        if (d && (k = rr_method_option(d, opt + 1)) >= 0)
+        if (d && (k = rr_method_option(d, row->option)) >= 0)
             return &d->opts[k];
     }
     return NULL;
@@ -379,10 +378,9 @@ int rr_fmu_creep_opts(const rr_fmu_config *f, rr_creep_opts *o, const char **bad
     d = rr_method_get(o->method);
     for (i = 0; i < rr_rig_param_count(); i++) {
         const rr_rig_param *row = rr_rig_param_at(i);
-        const char *opt = strchr(row->name, '_');
-        if (!row->creep || row == method_row || !opt || rr_method_option(d, opt + 1) < 0)
+        if (!row->option || rr_method_option(d, row->option) < 0)
             continue;
-        if ((st = rr_creep_opts_set(o, opt + 1, f->creep[creep_slot(row)])) != RR_OK) {
+        if ((st = rr_creep_opts_set(o, row->option, f->creep[creep_slot(row)])) != RR_OK) {
             if (bad)
                 *bad = row->name;
             return st;
@@ -394,8 +392,7 @@ int rr_fmu_creep_opts(const rr_fmu_config *f, rr_creep_opts *o, const char **bad
         *bad = method_row->name;
         for (i = 0; at >= 0 && i < rr_rig_param_count(); i++) {
             const rr_rig_param *row = rr_rig_param_at(i);
-            const char *opt = strchr(row->name, '_');
-            if (row->creep && opt && strcmp(opt + 1, d->opts[at].name) == 0)
+            if (row->option && strcmp(row->option, d->opts[at].name) == 0)
                 *bad = row->name;
         }
     }

@@ -224,9 +224,9 @@ int rr_fmu_config_set_list(rr_fmu_config *f, const char *name, int n, const doub
 
 /*
  * rr_fmu_creep_opts - the creep-force method and options of f: the method
- * of contact.creep_method, every other creep row "contact.<family>_<option>"
- * given as <option> where the method has it (as rollerrig.rig does), then
- * rr_creep_opts_check.  *bad (may be NULL): the row at fault.  Status:
+ * of contact.creep_method, every other creep row given as the option it
+ * declares (rr_rig_param.option) where the method has it (as rollerrig.rig
+ * does), then rr_creep_opts_check.  *bad (may be NULL): the row at fault.  Status:
  * rr_creep_opts_check's, RR_ERR_METHOD (a method not for a time step).
  */
 int rr_fmu_creep_opts(const rr_fmu_config *f, rr_creep_opts *o, const char **bad);

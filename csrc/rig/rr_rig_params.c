@@ -7,30 +7,38 @@
 
 #define OFF(member) ((long)offsetof(rr_rig_config, member))
 
-/* ranges: lo, hi, lo_open, hi_open */
-#define ANY (-INFINITY), INFINITY, 0, 0
-#define POS 0.0, INFINITY, 1, 0
-#define NONNEG 0.0, INFINITY, 0, 0
-#define RANGE(lo, hi, lo_open, hi_open) lo, hi, lo_open, hi_open
+/* ranges: lo, hi and whether each end is open */
+#define RANGE(l, h, lopen, hopen) .lo = (l), .hi = (h), .lo_open = (lopen), .hi_open = (hopen)
+#define ANY RANGE(-INFINITY, INFINITY, 0, 0)
+#define POS RANGE(0.0, INFINITY, 1, 0)
+#define NONNEG RANGE(0.0, INFINITY, 0, 0)
 
-#define REAL(name, unit, v, range, member, origin) \
-    {name, unit, RR_RIG_REAL, v, #v, range, NULL, NULL, 0, OFF(member), 0, origin}
-#define INT(name, v, lo, hi, member, origin) \
-    {name, "-", RR_RIG_INT, v, #v, lo, hi, 0, 0, NULL, NULL, 0, OFF(member), 0, origin}
-#define FLAG(name, v, text, member, origin) \
-    {name, "", RR_RIG_FLAG, v, text, 0, 1, 0, 0, NULL, NULL, 0, OFF(member), \
-     0, origin}
-#define CHOICE(name, names, index, member, origin) \
-    {name, "", RR_RIG_CHOICE, index, NULL, 0, 0, 0, 0, names, NULL, 0, OFF(member), 0, origin}
-#define LIST(name, unit, entries, text, range, member, origin) \
-    {name, unit, RR_RIG_LIST, 0.0, text, range, NULL, entries, \
-     RR_COUNTOF(entries), OFF(member), 0, origin}
+/* the rows by kind (by member: what a kind leaves out is 0 or NULL) */
+#define REAL(nm, un, v, range, member, orig)                                             \
+    {.name = nm, .unit = un, .type = RR_RIG_REAL, .value = v, .text = #v, range,         \
+     .offset = OFF(member), .origin = orig}
+#define INT(nm, v, l, h, member, orig)                                                   \
+    {.name = nm, .unit = "-", .type = RR_RIG_INT, .value = v, .text = #v, .lo = l,       \
+     .hi = h, .offset = OFF(member), .origin = orig}
+#define FLAG(nm, v, txt, member, orig)                                                   \
+    {.name = nm, .unit = "", .type = RR_RIG_FLAG, .value = v, .text = txt, .lo = 0,      \
+     .hi = 1, .offset = OFF(member), .origin = orig}
+#define CHOICE(nm, names, index, member, orig)                                           \
+    {.name = nm, .unit = "", .type = RR_RIG_CHOICE, .value = index, .choices = names,    \
+     .offset = OFF(member), .origin = orig}
+#define LIST(nm, un, entries, txt, range, member, orig)                                  \
+    {.name = nm, .unit = un, .type = RR_RIG_LIST, .text = txt, range, .list = entries,   \
+     .nlist = RR_COUNTOF(entries), .offset = OFF(member), .origin = orig}
 /* a list that may be empty, and is by default */
-#define LIST0(name, unit, range, member, origin) \
-    {name, unit, RR_RIG_LIST, 0.0, "[]", range, NULL, NULL, 0, OFF(member), 0, origin}
-/* creep rows: type, default and its text only (rr_creep_opts checks and applies them) */
-#define CREEP(name, unit, type, v, text, origin) \
-    {name, unit, type, v, text, NAN, NAN, 0, 0, NULL, NULL, 0, -1, 1, origin}
+#define LIST0(nm, un, range, member, orig)                                               \
+    {.name = nm, .unit = un, .type = RR_RIG_LIST, .text = "[]", range,                   \
+     .offset = OFF(member), .origin = orig}
+/* creep rows: type, default and its text, and the option of the creep-force
+ * method the row sets (NULL: the row that chooses the method); rr_creep_opts
+ * checks and applies them */
+#define CREEP(nm, opt, un, ty, v, txt, orig)                                             \
+    {.name = nm, .unit = un, .type = ty, .value = v, .text = txt, .lo = NAN, .hi = NAN,  \
+     .offset = -1, .creep = 1, .option = opt, .origin = orig}
 
 static const char *const drive_modes[] = {"braking", "traction", NULL};
 static const int drive_senses[] = {RR_CREEPCTL_BRAKING, RR_CREEPCTL_TRACTION};
@@ -134,11 +142,12 @@ static const rr_rig_param params[] = {
          "reference cases (G 82000 N/mm^2)"),
     REAL("contact.poisson_ratio", "-", 0.28, RANGE(0.0, 0.5, 0, 0), nu,
          "cited: CONTACT reference cases (POISS 0.28), shared/reference"),
-    CREEP("contact.creep_method", "", RR_RIG_CHOICE, 0, "\"fastsim\"",
+    CREEP("contact.creep_method", NULL, "", RR_RIG_CHOICE, 0, "\"fastsim\"",
           "paper section 4.4: Kalker's FASTSIM"),
-    CREEP("contact.fastsim_nx", "-", RR_RIG_INT, 20, "20", "choice: elements along x per strip"),
-    CREEP("contact.fastsim_ny", "-", RR_RIG_INT, 20, "20", "choice: strips across y"),
-    CREEP("contact.fastsim_slip_speed", "", RR_RIG_CHOICE, 0, "\"rigid\"",
+    CREEP("contact.fastsim_nx", "nx", "-", RR_RIG_INT, 20, "20",
+          "choice: elements along x per strip"),
+    CREEP("contact.fastsim_ny", "ny", "-", RR_RIG_INT, 20, "20", "choice: strips across y"),
+    CREEP("contact.fastsim_slip_speed", "slip_speed", "", RR_RIG_CHOICE, 0, "\"rigid\"",
           "choice: falling friction at each contact's rigid slip speed (Spiryagin et al. "
           "2013, CONTACT's FASTSIM), one mu per contact: 8x cheaper per rig step than at "
           "every element's own slip speed (\"local\")"),
@@ -151,9 +160,9 @@ static const rr_rig_param params[] = {
          "table not read in the paper itself)"),
     REAL("contact.polach_B_s_per_m", "s/m", 0.6, RANGE(0.0, RR_FRICTION_MAX, 0, 0), polach_B,
          "cited: as polach_A (dry: B = 0.6 s/m)"),
-    CREEP("contact.polach_kA", "-", RR_RIG_REAL, 1.0, "1.0",
+    CREEP("contact.polach_kA", "kA", "-", RR_RIG_REAL, 1.0, "1.0",
           "cited: as polach_A (dry: kA = 1.0), for method = \"polach\""),
-    CREEP("contact.polach_kS", "-", RR_RIG_REAL, 0.4, "0.4",
+    CREEP("contact.polach_kS", "kS", "-", RR_RIG_REAL, 0.4, "0.4",
           "cited: as polach_A (dry: kS = 0.4), for method = \"polach\""),
     REAL("contact.min_rolling_speed_m_s", "m/s", 0.01, POS, vmin,
          "choice: creepage denominator max(|V|, 0.01 m/s) at standstill (paper section 4.4: "
@@ -684,9 +693,9 @@ static void row_text(const rr_rig_param *row, char *buf, size_t len)
 }
 
 /* The rig's default creep-force method from the creep rows: the method of
- * contact.creep_method, then each other row "contact.<family>_<option>" as
- * the option <option> where the method has it (fastsim_nx -> nx, polach_kS
- * -> kS); a choice's text is looked up among the option's names. */
+ * contact.creep_method, then each row that declares an option (its option
+ * column: contact.fastsim_nx sets nx, contact.polach_kS kS) where the method
+ * has it; a choice's text is looked up among the option's names. */
 static void creep_default(rr_creep_opts *o)
 {
     char text[64];
@@ -697,13 +706,12 @@ static void creep_default(rr_creep_opts *o)
     d = rr_method_get(o->method);
     for (i = 0; d && i < rr_rig_param_count(); i++) {
         const rr_rig_param *row = rr_rig_param_at(i);
-        const char *opt = strchr(row->name, '_');
-        if (!row->creep || !opt || strcmp(row->name, "contact.creep_method") == 0)
+        if (!row->option)
             continue;
         for (k = 0; k < d->nopts; k++) {
             const rr_creep_option *op = &d->opts[k];
             double v = row->value;
-            if (strcmp(op->name, opt + 1) != 0)
+            if (strcmp(op->name, row->option) != 0)
                 continue;
             if (op->type == RR_OPT_CHOICE) {
                 int j;

@@ -35,9 +35,12 @@
  * and rr_rig_schedule give the paper's run sample by sample.
  *
  * Rows flagged creep (contact.creep_method, fastsim_*, polach_kA, kS) are the
- * creep-force method's options: declared here with their defaults and
+ * creep-force method and its options: declared here with their defaults and
  * origins, but checked and applied through rr_creep_opts (rr_creep.h), not
- * through rr_rig_config.
+ * through rr_rig_config.  Each creep row but contact.creep_method declares
+ * the method's option it sets (its option column: contact.fastsim_nx sets
+ * "nx"), given to the chosen method where it has that option; the C rig's
+ * default method, the FMU's creep variables and rollerrig.rig read it there.
  *
  * Statuses: RR_ERR_NULL for a NULL pointer, RR_ERR_PARAM for an unknown name,
  * a value of the wrong type (a fraction for an integer, an unknown choice,
@@ -125,7 +128,9 @@ typedef struct {
     const double *list;         /* LIST: the default entries */
     int nlist;
     long offset;                /* of the member in rr_rig_config; -1 for a creep row */
-    int creep;                  /* 1: an option of the creep-force method (see above) */
+    int creep;                  /* 1: the creep-force method or an option of it (see above) */
+    const char *option;         /* a creep row's option of the method ("nx"); NULL for
+                                   contact.creep_method and every other row */
     const char *origin;         /* where the default comes from */
 } rr_rig_param;
 

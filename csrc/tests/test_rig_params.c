@@ -28,6 +28,30 @@ int main(void)
             CHECK(strtod(row->text, NULL) == row->value, row->name);
     }
     CHECK(rr_rig_param_at(-1) == NULL && rr_rig_param_at(rr_rig_param_count()) == NULL, "at");
+    /* the creep rows' option column (issue 23: declared, not parsed from the
+     * name): every creep row but the method's names an option some method
+     * of the registry has; no other row names one */
+    {
+        int nopt = 0;
+        for (i = 0; i < rr_rig_param_count(); i++) {
+            const rr_rig_param *row = rr_rig_param_at(i);
+            int m, found = 0;
+            if (!row->creep || strcmp(row->name, "contact.creep_method") == 0) {
+                CHECK(row->option == NULL, row->name);
+                continue;
+            }
+            CHECK(row->option != NULL, row->name);
+            for (m = 0; row->option && m < rr_method_count(); m++)
+                found |= rr_method_option(rr_method_get(m), row->option) >= 0;
+            CHECK(found, row->name);
+            nopt++;
+        }
+        CHECK(nopt == 5, "five creep rows set options");
+        CHECK(nopt + 1 <= RR_FMU_MAX_CREEP, "the creep rows fit the FMU's slots");
+        CHECK(strcmp(rr_rig_param_find("contact.fastsim_slip_speed")->option, "slip_speed") == 0
+              && strcmp(rr_rig_param_find("contact.polach_kS")->option, "kS") == 0,
+              "fastsim_slip_speed sets slip_speed (not the name after its first _), polach_kS kS");
+    }
     CHECK(rr_rig_param_find("wheelset.mass") == NULL && rr_rig_param_find(NULL) == NULL,
           "unknown");
     CHECK(rr_rig_record_field(RR_REC_STATUS) && !rr_rig_record_field(RR_REC_COUNT), "records");
