@@ -181,17 +181,98 @@ int rr_rig_config_set_choice(rr_rig_config *c, const char *name, const char *cho
 int rr_rig_config_set_list(rr_rig_config *c, const char *name, int n, const double *v);
 
 /*
- * rr_rig_config_check - 0 if every member is within its row's range and the
- * scenario holds together (one start time per target, increasing, all
- * before the duration; at least one sample in the duration), and the
- * adhesion (one mu0 per schedule time, and one A and B each or none; the
- * times non-decreasing; the patch no longer than the roller's
- * circumference), and the drives' sampled speed loops are stable at the
- * sample time (rr_rig_config_speed_loops: RR_ERR_PARAM with *bad
- * "scenario.control_sample_time_s"); else the status, and *bad (may be
- * NULL) the name of the row at fault.
+ * What a problem of rr_rig_config_report breaks (rr_rig_problem.rule), and
+ * what its value, other row and bounds are then:
+ *   RANGE          the row's own range: a scalar's value (an INT or FLAG
+ *                  that is not a whole number, a CHOICE's index out of its
+ *                  names) with lo, hi its range (a CHOICE 0 .. names - 1);
+ *                  a LIST's entry `entry` with lo, hi the entries' range, or
+ *                  with entry -1 its length (value) outside lo .. hi entries
+ *   COUNT          one entry per entry of `other`: value the row's entries,
+ *                  hi other's
+ *   INCREASING     the entries increase (scenario.target_start_s): entry the
+ *                  first that does not, value it
+ *   NONDECREASING  the entries do not decrease (adhesion.schedule_times_s)
+ *   BEFORE         the last entry before `other`, the duration: value the
+ *                  entry, hi the duration
+ *   SAMPLE         at least one sample: value (the duration) >= lo, `other`
+ *                  (the sample time), within 1e-9 of it
+ *   CIRCUMFERENCE  at most the circumference of `other` (roller.radius_m):
+ *                  hi = 2 pi R
+ *   LOOP           the sampled speed loop of drive `entry` (0 the roller's,
+ *                  1 the wheelset's) is unstable at this sample time (row
+ *                  scenario.control_sample_time_s): value its largest pole's
+ *                  |z|, lo .. hi the sample times in [RR_RIG_MIN_T,
+ *                  RR_RIG_MAX_T] at which it is stable (NaN, NaN: none;
+ *                  rr_speed_loop_range)
+ *   SUM            the row plus `other` is not a finite double (Iyy, the
+ *                  wheelset's inertia with its drive's): value the sum,
+ *                  status RR_ERR_RANGE
+ */
+enum rr_rig_rule {
+    RR_RIG_RULE_RANGE = 0, RR_RIG_RULE_COUNT, RR_RIG_RULE_INCREASING, RR_RIG_RULE_NONDECREASING,
+    RR_RIG_RULE_BEFORE, RR_RIG_RULE_SAMPLE, RR_RIG_RULE_CIRCUMFERENCE, RR_RIG_RULE_LOOP,
+    RR_RIG_RULE_SUM
+};
+
+/* One problem of a configuration: the row at fault and what it breaks. */
+typedef struct {
+    const char *key;            /* the row's name (static storage) */
+    const char *other;          /* the other row of a rule between two, or NULL */
+    int status;                 /* RR_ERR_PARAM, RR_ERR_NONFINITE (a NaN or infinity in a
+                                   range), RR_ERR_RANGE (SUM) */
+    int rule;                   /* enum rr_rig_rule */
+    int entry;                  /* a list's entry (from 0), LOOP's drive, or -1 */
+    double value;               /* the value at fault (see the rules) */
+    double lo, hi;              /* the bounds it breaks (see the rules) */
+} rr_rig_problem;
+
+/* Most problems one configuration can have: one per row and one per rule
+ * (checked where the table is declared). */
+#define RR_RIG_MAX_PROBLEMS 128
+
+/*
+ * rr_rig_config_report - every problem of c, each with its row, status and
+ * rule (above), in the order of the rows, then of the rules between them:
+ * each row out of its range (one problem per row: a list's first entry at
+ * fault), then the scenario (one start time per target, increasing, the
+ * last before the duration; at least one sample in the duration), the
+ * adhesion (one mu0 per schedule time, one A and B each or none, the times
+ * non-decreasing; the patch no longer than the roller's circumference), the
+ * drives' sampled speed loops stable at the sample time
+ * (rr_rig_config_speed_loops), the wheelset's inertia with its drive's
+ * finite.  A rule is judged only where the rows it reads are in range (a
+ * bad list is not also miscounted).  The first cap problems go to out[]
+ * (caller memory; RR_RIG_MAX_PROBLEMS always suffice).
+ *   returns: the number of problems (0: c is a rig), which may exceed cap
+ *   status:  RR_ERR_NULL (c NULL, or out NULL with cap > 0)
+ */
+int rr_rig_config_report(const rr_rig_config *c, rr_rig_problem *out, int cap);
+
+/*
+ * rr_rig_config_check - rr_rig_config_report's first problem: 0 if there is
+ * none, else its status, and *bad (may be NULL) its row's name.  A speed
+ * loop unstable at the sample time is RR_ERR_PARAM with *bad
+ * "scenario.control_sample_time_s" (the message's range:
+ * rr_rig_config_speed_loops, rr_speed_loop_range).
  */
 int rr_rig_config_check(const rr_rig_config *c, const char **bad);
+
+/*
+ * rr_rig_config_put - store v in the scalar row `name` as rr_rig_config_set
+ * does but unchecked, so that rr_rig_config_report judges it with every
+ * other value (the binding's report of a whole parameter set);
+ * rr_rig_config_put_list a LIST row's n entries.  A value the member cannot
+ * hold is not stored: its status (RR_ERR_PARAM: an INT, FLAG or CHOICE value
+ * not a whole number in int's range, more than RR_RIG_MAX_LIST entries or
+ * fewer than none; RR_ERR_NONFINITE: NaN or an infinity for an INT, FLAG or
+ * CHOICE), with *p (may be NULL) its RANGE problem.  RR_ERR_PARAM for an
+ * unknown name, a creep row or a row of the other kind (*p untouched);
+ * RR_ERR_NULL.
+ */
+int rr_rig_config_put(rr_rig_config *c, const char *name, double v, rr_rig_problem *p);
+int rr_rig_config_put_list(rr_rig_config *c, const char *name, int n, const double *v,
+                           rr_rig_problem *p);
 
 /*
  * rr_rig_config_speed_loops - the drives' sampled speed loops of primary
