@@ -180,35 +180,7 @@ int rr_rig_config_set(rr_rig_config *c, const char *name, double v);
 int rr_rig_config_set_choice(rr_rig_config *c, const char *name, const char *choice);
 int rr_rig_config_set_list(rr_rig_config *c, const char *name, int n, const double *v);
 
-/*
- * What a problem of rr_rig_config_report breaks (rr_rig_problem.rule), and
- * what its value, other row and bounds are then:
- *   RANGE          the row's own range: a scalar's value (an INT or FLAG
- *                  that is not a whole number, a CHOICE's index out of its
- *                  names) with lo, hi its range (a CHOICE 0 .. names - 1);
- *                  a LIST's entry `entry` with lo, hi the entries' range, or
- *                  with entry -1 its length (value) outside lo .. hi entries
- *   COUNT          one entry per entry of `other`: value the row's entries,
- *                  hi other's
- *   INCREASING     the entries increase (scenario.target_start_s): entry the
- *                  first that does not, value it
- *   NONDECREASING  the entries do not decrease (adhesion.schedule_times_s)
- *   BEFORE         the last entry before `other`, the duration: value the
- *                  entry, hi the duration
- *   SAMPLE         at least one sample: value (the duration) >= lo, `other`
- *                  (the sample time), within 1e-9 of it
- *   CIRCUMFERENCE  at most the circumference of `other` (roller.radius_m):
- *                  hi = 2 pi R
- *   LOOP           the sampled speed loop of drive `entry` (0 the roller's,
- *                  1 the wheelset's) is unstable at this sample time (row
- *                  scenario.control_sample_time_s): value its largest pole's
- *                  |z|, lo .. hi the sample times in [RR_RIG_MIN_T,
- *                  RR_RIG_MAX_T] at which it is stable (NaN, NaN: none;
- *                  rr_speed_loop_range)
- *   SUM            the row plus `other` is not a finite double (Iyy, the
- *                  wheelset's inertia with its drive's): value the sum,
- *                  status RR_ERR_RANGE
- */
+/* What a problem of rr_rig_config_report breaks (rr_rig_problem.rule; there). */
 enum rr_rig_rule {
     RR_RIG_RULE_RANGE = 0, RR_RIG_RULE_COUNT, RR_RIG_RULE_INCREASING, RR_RIG_RULE_NONDECREASING,
     RR_RIG_RULE_BEFORE, RR_RIG_RULE_SAMPLE, RR_RIG_RULE_CIRCUMFERENCE, RR_RIG_RULE_LOOP,
@@ -233,7 +205,7 @@ typedef struct {
 
 /*
  * rr_rig_config_report - every problem of c, each with its row, status and
- * rule (above), in the order of the rows, then of the rules between them:
+ * rule, in the order of the rows, then of the rules between them:
  * each row out of its range (one problem per row: a list's first entry at
  * fault), then the scenario (one start time per target, increasing, the
  * last before the duration; at least one sample in the duration), the
@@ -246,6 +218,34 @@ typedef struct {
  * (caller memory; RR_RIG_MAX_PROBLEMS always suffice).
  *   returns: the number of problems (0: c is a rig), which may exceed cap
  *   status:  RR_ERR_NULL (c NULL, or out NULL with cap > 0)
+ * Each problem's rule, and what its value, other row and bounds are then:
+ *   RANGE          the row's own range: a scalar's value (an INT or FLAG
+ *                  that is not a whole number, a CHOICE's index out of its
+ *                  names) with lo, hi its range (a CHOICE 0 .. names - 1);
+ *                  a LIST's entry `entry` with lo, hi the entries' range, or
+ *                  with entry -1 its length (value) outside lo .. hi entries
+ *   COUNT          one entry per entry of `other`: value the row's entries,
+ *                  hi other's
+ *   INCREASING     the entries increase (scenario.target_start_s): entry the
+ *                  first that does not, value it
+ *   NONDECREASING  the entries do not decrease (adhesion.schedule_times_s)
+ *   BEFORE         the last entry before `other`, the duration: value the
+ *                  entry, hi the duration
+ *   SAMPLE         at least one sample: value (the duration) >= lo, `other`
+ *                  (the sample time), within 1e-9 of it
+ *   CIRCUMFERENCE  at most the circumference of `other` (roller.radius_m):
+ *                  hi = 2 pi R
+ *   LOOP           the sampled speed loop of drive `entry` (0 the roller's,
+ *                  1 the wheelset's) is unstable at this sample time (row
+ *                  scenario.control_sample_time_s): value its largest pole's
+ *                  |z|, lo .. hi the sample times in [RR_RIG_MIN_T,
+ *                  RR_RIG_MAX_T] at which it is stable (NaN, NaN: none;
+ *                  rr_speed_loop_range); judged where the sample time, the
+ *                  inertias, both drives' gains, torque limits and lags and
+ *                  creepage_controller.alpha are in range
+ *   SUM            the row plus `other` is not a finite double (Iyy, the
+ *                  wheelset's inertia with its drive's): value the sum,
+ *                  status RR_ERR_RANGE
  */
 int rr_rig_config_report(const rr_rig_config *c, rr_rig_problem *out, int cap);
 
