@@ -456,4 +456,18 @@ int rr_rig_rhs(rr_rig *rig, double t, const double *y, double *dydt);
 /* rr_rig_jac - the approximate Jacobian the integrator uses, J[n*n], n = RR_RIG_NSTATE. */
 int rr_rig_jac(rr_rig *rig, double t, const double *y, double *J);
 
+/* Not API: what the sampled side (rr_rig.c) and the plant (rr_rig_plant.c)
+ * take from each other.  rr_rig_usable: 0 if the rig can step, else the
+ * failed rr_rig_init's status, or RR_ERR_NULL for a rig never initialised
+ * (e.g. zeroed memory).  rr_rig_schedule_law: the adhesion schedule's law
+ * at time t (p->contact.friction without points).  rr_rig_bind: what the
+ * rig takes from its (checked) parameters besides its state: their pointer,
+ * the creep method's facts, the integrator's settings and model, the
+ * Jacobian's constant part; the contact evaluation it keeps is dropped;
+ * RR_ERR_RANGE (nothing changed) where the constant part overflows (a
+ * stiffness over a near-zero mass). */
+int rr_rig_usable(const rr_rig *rig);
+rr_friction rr_rig_schedule_law(const rr_rig_params *p, double t);
+int rr_rig_bind(rr_rig *rig, const rr_rig_params *p);
+
 #endif
