@@ -2346,7 +2346,7 @@ static int report_real(PyObject *v, PyObject *real, double *x)
 /* The value of row r stored in c (rr_rig_config_put), or its problem in *p:
  * 0 stored, 1 a problem, -1 an exception. */
 static int report_value(const rr_rig_param *r, PyObject *v, PyObject *real, PyObject *integral,
-                      rr_rig_config *c, rr_rig_problem *p)
+                        rr_rig_config *c, rr_rig_problem *p)
 {
     double x = NAN;
     int ok, entry = -1;
