@@ -40,14 +40,20 @@ static int scaled_forces(const rr_contact_case *c, const rr_friction *fr,
 }
 
 static const rr_creep_option scaled_opts[] = {
-    {"scale", RR_OPT_REAL, "", 1.0, 0.0, 10.0, 1, 0, NULL, RR_ERR_PARAM,
-     "factor on the linear theory's forces"},
+    [SCALE] = {"scale", RR_OPT_REAL, "", 1.0, 0.0, 10.0, 1, 0, NULL, RR_ERR_PARAM,
+               "factor on the linear theory's forces"},
 };
 
 const rr_method_desc rr_method_scaled_linear = {
-    "scaled_linear", "Kalker's linear theory times a factor", 1, scaled_opts, 0, NULL, NULL,
-    rr_method_unit_cost, rr_method_unit_slope, rr_method_no_workspace, scaled_forces, NULL, NULL,
-    0
+    .name = "scaled_linear",
+    .doc = "Kalker's linear theory times a factor",
+    .nopts = RR_COUNTOF(scaled_opts),
+    .opts = scaled_opts,
+    .saturates = 0,
+    .cost = rr_method_unit_cost,
+    .slope_scale = rr_method_unit_slope,
+    .workspace_len = rr_method_no_workspace,
+    .forces = scaled_forces,
 };
 '''
 

@@ -44,6 +44,90 @@ def test_every_row_is_complete_and_its_text_is_its_value():
     assert not set(names) & set(RETIRED)
 
 
+def test_each_creep_row_declares_the_option_it_sets():
+    """The creep rows' option is a column of the C declaration (issue 23), not
+    the name cut at its first '_' (which would make fastsim_slip_speed set
+    'slip' and break on a family with an '_' in it): the file's keys, the C
+    rig and the FMU all read that column."""
+    declared = {p.name: p.option for p in PARAMETERS if p.option}
+    assert declared == {"contact.fastsim_nx": "nx", "contact.fastsim_ny": "ny",
+                        "contact.fastsim_slip_speed": "slip_speed", "contact.polach_kA": "kA",
+                        "contact.polach_kS": "kS"}
+    assert all(p.option is None for p in PARAMETERS
+               if not p.creep or p.name == "contact.creep_method")
+    assert all(any(o in m.options for m in rr.METHODS.values()) for o in declared.values())
+    assert rig.params._FILE_OPTIONS == {k.split(".", 1)[1]: o for k, o in declared.items()}
+
+
+PARAM, NONFINITE, RANGE = -9, -1, -12      # statuses (csrc/util/rr_common.h)
+
+
+def _c_values(P):
+    """{"section.key": value} of merged parameters' rig rows, as the binding takes them."""
+    return {p.name: P[p.name.split(".")[0]][p.name.split(".")[1]] for p in PARAMETERS
+            if not p.creep}
+
+
+@pytest.mark.parametrize("params", [
+    {"wheelset": {"mass_kg": math.nan}, "roller": {"radius_m": -0.1},
+     "integration": {"table_rows": 2.5}},
+    {"scenario": {"targets": [0.01, 0.02]}},
+    {"scenario": {"target_start_s": [0.0, 5.0, 3.0, 15.0]}},
+    {"scenario": {"duration_s": 10.0, "target_start_s": [0.0, 2.0, 4.0, 12.0]}},
+    {"adhesion": {"schedule_times_s": [0.0, 2.0, 1.0], "schedule_mu0": [0.3, 0.2]}},
+    {"adhesion": {"schedule_times_s": [0.0, 1.0], "schedule_mu0": [0.3, 0.2],
+                  "schedule_polach_A": [0.5]}},
+    {"adhesion": {"patch_length_m": 2.0}},
+    {"scenario": {"targets": [0.5, 2.0], "target_start_s": [0.0]}},
+    {"scenario": {"drive_mode": "coasting", "targets": [0.1, True]},
+     "integration": {"linear_first_stage": 1}, "wheelset": {"conicity": "x"}},
+])
+def test_the_c_report_names_every_key_the_python_rules_name(params):
+    """rig_config_report (rr_rig_config_report, issue 23): every problem of a
+    parameter set with its key, status, rule, other key and bounds, in one
+    call: each key rig.py's own rules name is in it, and each of its problems
+    names one of them (a rule between two keys names both)."""
+    P, problems = rig.params._parameter_problems(params)
+    named = {p.split(" ", 1)[0] for p in problems}
+    report = _core.rig_config_report(_c_values(P))
+    assert named and report
+    keys = [{key, other} - {None} for key, _, _, other, *_ in report]
+    assert named <= set().union(*keys), (problems, report)
+    assert all(k & named for k in keys), (problems, report)
+    for key, status, rule, other, entry, value, lo, hi in report:
+        assert status in (PARAM, NONFINITE) and rule in (
+            "range", "count", "increasing", "nondecreasing", "before", "circumference")
+
+
+def test_the_c_report_carries_what_the_messages_need():
+    bad = _core.rig_config_report({"scenario.targets": [0.01, 0.02],
+                                   "adhesion.patch_length_m": 2.0, "wheelset.mass_kg": -1.0,
+                                   "integration.table_rows": 2.5})
+    assert bad == [
+        ("wheelset.mass_kg", PARAM, "range", None, -1, -1.0, 0.0, math.inf),
+        ("integration.table_rows", PARAM, "range", None, -1, 2.5, 2.0, 100000.0),
+        ("scenario.target_start_s", PARAM, "count", "scenario.targets", -1, 4.0,
+         pytest.approx(math.nan, nan_ok=True), 2.0),
+        ("adhesion.patch_length_m", PARAM, "circumference", "roller.radius_m", -1,
+         2.0, pytest.approx(math.nan, nan_ok=True), 2 * math.pi * 0.16)]
+    # the drives' loops, as rig_speed_loops gives them, and the inertias' sum
+    cp = {"scenario.control_sample_time_s": 0.02}
+    loops = [(key, entry, value, lo, hi) for key, _, rule, _, entry, value, lo, hi
+             in _core.rig_config_report(cp) if rule == "loop"]
+    assert loops == [("scenario.control_sample_time_s", k, rho, lo, hi)
+                     for k, (stable, rho, lo, hi) in enumerate(_core.rig_speed_loops(cp))
+                     if not stable] and len(loops) == 2
+    assert _core.rig_config_report({"wheelset.spin_inertia_kg_m2": 1.5e308,
+                                    "wheelset_drive.drive_inertia_kg_m2": 1.5e308}) == [
+        ("wheelset.spin_inertia_kg_m2", RANGE, "sum",
+         "wheelset_drive.drive_inertia_kg_m2", -1, math.inf,
+         pytest.approx(math.nan, nan_ok=True), pytest.approx(math.nan, nan_ok=True))]
+    assert _core.rig_config_report({}) == []
+    for unknown in ({"wheelset.mass": 1.0}, {"contact.fastsim_nx": 20}):
+        with pytest.raises(ValueError, match="not a rig parameter"):
+            _core.rig_config_report(unknown)
+
+
 def test_record_and_wheel_fields_come_from_c():
     assert rig.RECORD_FIELDS == tuple(r[0] for r in _core.RIG_RECORD)
     assert len(rig.RECORD_FIELDS) == _core.REC_COUNT

@@ -87,24 +87,33 @@ static int exact_forces(const rr_contact_case *c, const rr_friction *fr,
     return exact_forces_interruptible(c, fr, o, work, NULL, out);
 }
 
+/* each option at its index of rr_exact.h */
 static const rr_creep_option exact_opts[] = {
-    {"nx", RR_OPT_INT, "", 27.0, 1.0, RR_EXACT_MAX_GRID - 2 * RR_EXACT_MARGIN, 0, 0, NULL,
-     RR_ERR_GRID, "elements across the ellipse's 2a (the grid adds 2 on each side)"},
-    {"ny", RR_OPT_INT, "", 27.0, 1.0, RR_EXACT_MAX_GRID - 2 * RR_EXACT_MARGIN, 0, 0, NULL,
-     RR_ERR_GRID, "elements across the ellipse's 2b"},
-    {"tol", RR_OPT_REAL, "", 1e-6, 1e-14, 0.1, 0, 0, NULL, RR_ERR_PARAM,
-     "relative tolerance of the normal and the tangential solution"},
-    {"maxit", RR_OPT_INT, "", 5000.0, 1.0, 1e7, 0, 0, NULL, RR_ERR_PARAM,
-     "most FFT products each problem may use (then the status warns)"},
-    {"spin_shift", RR_OPT_REAL, "", 1.0 / 6.0, -1.0, 1.0, 0, 0, NULL, RR_ERR_PARAM,
-     "spin's rigid slip taken at x + spin_shift dx: CONTACT's 1/6; 0 keeps C23 = C32 on "
-     "every grid"},
+    [RR_EXACT_NX] = {"nx", RR_OPT_INT, "", 27.0, 1.0, RR_EXACT_MAX_GRID - 2 * RR_EXACT_MARGIN,
+                     0, 0, NULL, RR_ERR_GRID,
+                     "elements across the ellipse's 2a (the grid adds 2 on each side)"},
+    [RR_EXACT_NY] = {"ny", RR_OPT_INT, "", 27.0, 1.0, RR_EXACT_MAX_GRID - 2 * RR_EXACT_MARGIN,
+                     0, 0, NULL, RR_ERR_GRID, "elements across the ellipse's 2b"},
+    [RR_EXACT_TOL] = {"tol", RR_OPT_REAL, "", 1e-6, 1e-14, 0.1, 0, 0, NULL, RR_ERR_PARAM,
+                      "relative tolerance of the normal and the tangential solution"},
+    [RR_EXACT_MAXIT] = {"maxit", RR_OPT_INT, "", 5000.0, 1.0, 1e7, 0, 0, NULL, RR_ERR_PARAM,
+                        "most FFT products each problem may use (then the status warns)"},
+    [RR_EXACT_SPIN_SHIFT] = {"spin_shift", RR_OPT_REAL, "", 1.0 / 6.0, -1.0, 1.0, 0, 0, NULL,
+                             RR_ERR_PARAM, "spin's rigid slip taken at x + spin_shift dx: "
+                             "CONTACT's 1/6; 0 keeps C23 = C32 on every grid"},
 };
 
 const rr_method_desc rr_method_exact = {
-    "exact",
-    "Kalker's exact theory (CONTACT's discretisation: steady rolling on the half-space, "
-    "Coulomb friction), FFT-accelerated",
-    5, exact_opts, 1, NULL, NULL, exact_cost, rr_method_unit_slope, exact_workspace,
-    exact_forces, NULL, NULL, 1, exact_forces_interruptible
+    .name = "exact",
+    .doc = "Kalker's exact theory (CONTACT's discretisation: steady rolling on the "
+           "half-space, Coulomb friction), FFT-accelerated",
+    .nopts = RR_COUNTOF(exact_opts),
+    .opts = exact_opts,
+    .saturates = 1,
+    .cost = exact_cost,
+    .slope_scale = rr_method_unit_slope,
+    .workspace_len = exact_workspace,
+    .forces = exact_forces,
+    .coulomb_only = 1,
+    .forces_interruptible = exact_forces_interruptible,
 };

@@ -329,9 +329,12 @@ static int table_forces(const rr_contact_case *c, const rr_friction *fr,
 }
 
 const rr_method_desc rr_method_exact_table = {
-    "exact_table",
-    "Kalker's exact theory extrapolated to the continuum, from the built-in table "
-    "(nu = 0.28, a/b in [0.1, 10]; falling friction at the rigid slip speed)",
-    0, NULL, 1, NULL, NULL, rr_method_unit_cost, rr_method_unit_slope,
-    rr_method_no_workspace, table_forces, NULL, NULL, 0, NULL
+    .name = "exact_table",
+    .doc = "Kalker's exact theory extrapolated to the continuum, from the built-in table "
+           "(nu = 0.28, a/b in [0.1, 10]; falling friction at the rigid slip speed)",
+    .saturates = 1,
+    .cost = rr_method_unit_cost,
+    .slope_scale = rr_method_unit_slope,
+    .workspace_len = rr_method_no_workspace,
+    .forces = table_forces,
 };

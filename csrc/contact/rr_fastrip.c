@@ -362,23 +362,28 @@ int rr_fastrip(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
 static const char *const flex_names[] = {"kalker", "blended", NULL};
 static const char *const geometry_names[] = {"ellipse", "contact", NULL};
 
+/* each option at its index of rr_fastrip.h; fields: name, type, unit, default, lo, hi,
+ * lo_open, hi_open, choices, the status of a bad value, doc */
 static const rr_creep_option fastrip_opts[] = {
-    {"nx", RR_OPT_INT, "", 30.0, 1.0, RR_FASTRIP_MAX_GRID, 0, 0, NULL, RR_ERR_GRID,
-     "elements along x per row"},
-    {"ny", RR_OPT_INT, "", 30.0, 1.0, RR_FASTRIP_MAX_GRID, 0, 0, NULL, RR_ERR_GRID,
-     "rows (strips) across the patch"},
-    {"flex", RR_OPT_CHOICE, "", RR_FASTRIP_FLEX_BLENDED, 0.0, 1.0, 0, 0, flex_names,
-     RR_ERR_METHOD, "FASTSIM part's flexibilities: kalker (three) or blended towards one "
-     "with the creepage (CONTACT as shipped)"},
-    {"geometry", RR_OPT_CHOICE, "", RR_FASTRIP_ELLIPSE, 0.0, 1.0, 0, 0, geometry_names,
-     RR_ERR_METHOD, "strips on the ellipse's chords, pressure summing to N (ellipse), or "
-     "CONTACT's element extents and Hertz's peak (contact: |F| may pass mu N by 0.1 %)"},
-    {"k0", RR_OPT_REAL, "", 1.0, 0.0, 1.0, 1, 0, NULL, RR_ERR_PARAM,
-     "FASTSIM part's slope over Kalker's (CONTACT's K0_MF; 1: none)"},
-    {"alpha_inf", RR_OPT_REAL, "", 1.0, 0.0, 1.0, 0, 0, NULL, RR_ERR_PARAM,
-     "FASTSIM part's slope reduction at large creepage (ALFAMF; 1: none)"},
-    {"beta", RR_OPT_REAL, "", 1.0, 0.0, HUGE_VAL, 0, 1, NULL, RR_ERR_PARAM,
-     "rate of that reduction with the creepage (BETAMF)"},
+    [RR_FASTRIP_NX] = {"nx", RR_OPT_INT, "", 30.0, 1.0, RR_FASTRIP_MAX_GRID, 0, 0, NULL,
+                       RR_ERR_GRID, "elements along x per row"},
+    [RR_FASTRIP_NY] = {"ny", RR_OPT_INT, "", 30.0, 1.0, RR_FASTRIP_MAX_GRID, 0, 0, NULL,
+                       RR_ERR_GRID, "rows (strips) across the patch"},
+    [RR_FASTRIP_FLEX] = {"flex", RR_OPT_CHOICE, "", RR_FASTRIP_FLEX_BLENDED, 0.0, 1.0, 0, 0,
+                         flex_names, RR_ERR_METHOD, "FASTSIM part's flexibilities: kalker "
+                         "(three) or blended towards one with the creepage (CONTACT as "
+                         "shipped)"},
+    [RR_FASTRIP_GEOMETRY] = {"geometry", RR_OPT_CHOICE, "", RR_FASTRIP_ELLIPSE, 0.0, 1.0, 0, 0,
+                             geometry_names, RR_ERR_METHOD, "strips on the ellipse's chords, "
+                             "pressure summing to N (ellipse), or CONTACT's element extents "
+                             "and Hertz's peak (contact: |F| may pass mu N by 0.1 %)"},
+    [RR_FASTRIP_K0] = {"k0", RR_OPT_REAL, "", 1.0, 0.0, 1.0, 1, 0, NULL, RR_ERR_PARAM,
+                       "FASTSIM part's slope over Kalker's (CONTACT's K0_MF; 1: none)"},
+    [RR_FASTRIP_ALPHA_INF] = {"alpha_inf", RR_OPT_REAL, "", 1.0, 0.0, 1.0, 0, 0, NULL,
+                              RR_ERR_PARAM, "FASTSIM part's slope reduction at large "
+                              "creepage (ALFAMF; 1: none)"},
+    [RR_FASTRIP_BETA] = {"beta", RR_OPT_REAL, "", 1.0, 0.0, HUGE_VAL, 0, 1, NULL, RR_ERR_PARAM,
+                         "rate of that reduction with the creepage (BETAMF)"},
 };
 
 /* the row scans: contact extent, bound check, march */
@@ -397,9 +402,15 @@ static int fastrip_forces(const rr_contact_case *c, const rr_friction *fr,
 /* The linear limit comes from the strip theory, whose flexibilities are
  * Kalker's: slope 1 whatever k0 (it scales only the FASTSIM part). */
 const rr_method_desc rr_method_fastrip = {
-    "fastrip",
-    "FaStrip (Sichani, Enblom and Berg 2016) as CONTACT's modified FaStrip: strip theory "
-    "per row, FASTSIM's slip directions",
-    7, fastrip_opts, 1, NULL, NULL, fastrip_cost, rr_method_unit_slope, rr_method_no_workspace,
-    fastrip_forces, NULL, NULL, 1, NULL
+    .name = "fastrip",
+    .doc = "FaStrip (Sichani, Enblom and Berg 2016) as CONTACT's modified FaStrip: strip "
+           "theory per row, FASTSIM's slip directions",
+    .nopts = RR_COUNTOF(fastrip_opts),
+    .opts = fastrip_opts,
+    .saturates = 1,
+    .cost = fastrip_cost,
+    .slope_scale = rr_method_unit_slope,
+    .workspace_len = rr_method_no_workspace,
+    .forces = fastrip_forces,
+    .coulomb_only = 1,
 };

@@ -618,21 +618,24 @@ static const char *const bound_names[] = {"parabolic", "elliptic", NULL};
 static const char *const grid_names[] = {"rect", "strips", NULL};
 static const char *const slip_names[] = {"local", "rigid", NULL};
 
-/* the options every variant has, then modified FASTSIM's; slip_speed's
- * default is set per variant */
+/* the options every variant has, each at its index of rr_fastsim.h, then
+ * modified FASTSIM's; slip_speed's default is set per variant */
 #define FASTSIM_OPTS(slip_default)                                                          \
-    {"nx", RR_OPT_INT, "", 30.0, 1.0, RR_FASTSIM_MAX_GRID, 0, 0, NULL, RR_ERR_GRID,         \
-     "elements along x per row"},                                                           \
-    {"ny", RR_OPT_INT, "", 30.0, 1.0, RR_FASTSIM_MAX_GRID, 0, 0, NULL, RR_ERR_GRID,         \
-     "rows (strips) across the patch"},                                                     \
-    {"bound", RR_OPT_CHOICE, "", RR_BOUND_PARABOLIC, 0.0, 1.0, 0, 0, bound_names,           \
-     RR_ERR_METHOD, "traction bound: parabolic (Kalker's) or elliptic (Hertzian)"},         \
-    {"grid", RR_OPT_CHOICE, "", RR_GRID_RECT, 0.0, 1.0, 0, 0, grid_names, RR_ERR_METHOD,    \
-     "rows over the ellipse's bounding box (rect, CONTACT's) or each its own chord "        \
-     "(strips, Kalker's: converges faster)"},                                               \
-    {"slip_speed", RR_OPT_CHOICE, "", slip_default, 0.0, 1.0, 0, 0, slip_names,             \
-     RR_ERR_METHOD, "falling friction at each element's own slip speed (local) or at the "  \
-     "rigid slip speed (rigid)"}
+    [RR_FASTSIM_NX] = {"nx", RR_OPT_INT, "", 30.0, 1.0, RR_FASTSIM_MAX_GRID, 0, 0, NULL,   \
+                       RR_ERR_GRID, "elements along x per row"},                            \
+    [RR_FASTSIM_NY] = {"ny", RR_OPT_INT, "", 30.0, 1.0, RR_FASTSIM_MAX_GRID, 0, 0, NULL,   \
+                       RR_ERR_GRID, "rows (strips) across the patch"},                      \
+    [RR_FASTSIM_BOUND] = {"bound", RR_OPT_CHOICE, "", RR_BOUND_PARABOLIC, 0.0, 1.0, 0, 0,  \
+                          bound_names, RR_ERR_METHOD,                                       \
+                          "traction bound: parabolic (Kalker's) or elliptic (Hertzian)"},   \
+    [RR_FASTSIM_GRID] = {"grid", RR_OPT_CHOICE, "", RR_GRID_RECT, 0.0, 1.0, 0, 0,          \
+                         grid_names, RR_ERR_METHOD, "rows over the ellipse's bounding box " \
+                         "(rect, CONTACT's) or each its own chord (strips, Kalker's: "      \
+                         "converges faster)"},                                              \
+    [RR_FASTSIM_SLIP_SPEED] = {"slip_speed", RR_OPT_CHOICE, "", slip_default, 0.0, 1.0, 0, \
+                               0, slip_names, RR_ERR_METHOD, "falling friction at each "    \
+                               "element's own slip speed (local) or at the rigid slip "     \
+                               "speed (rigid)"}
 
 static const rr_creep_option fastsim_opts[] = {FASTSIM_OPTS(RR_SLIP_LOCAL)};
 
@@ -651,19 +654,19 @@ static const char *const blend_names[] = {"contact", "spin", NULL};
 
 static const rr_creep_option blended_opts[] = {
     FASTSIM_OPTS(RR_SLIP_LOCAL),
-    {"blend_rule", RR_OPT_CHOICE, "", RR_BLEND_DEFAULT, 0.0, 1.0, 0, 0, blend_names,
-     RR_ERR_METHOD, RR_BLEND_DOC},
+    [RR_FASTSIM_BLEND_RULE] = {"blend_rule", RR_OPT_CHOICE, "", RR_BLEND_DEFAULT, 0.0, 1.0, 0,
+                               0, blend_names, RR_ERR_METHOD, RR_BLEND_DOC},
 };
 
 /* modified FASTSIM was calibrated with friction at the rigid slip speed */
 static const rr_creep_option modified_opts[] = {
     FASTSIM_OPTS(RR_SLIP_RIGID),
-    {"k0", RR_OPT_REAL, "", 0.54, 0.0, 1.0, 1, 0, NULL, RR_ERR_PARAM,
-     "initial slope over Kalker's"},
-    {"alpha_inf", RR_OPT_REAL, "", 0.02, 0.0, 1.0, 0, 0, NULL, RR_ERR_PARAM,
-     "slope reduction at large creepage"},
-    {"beta", RR_OPT_REAL, "", 0.62, 0.0, HUGE_VAL, 0, 1, NULL, RR_ERR_PARAM,
-     "rate of the slope reduction with the creepage"},
+    [RR_FASTSIM_K0] = {"k0", RR_OPT_REAL, "", 0.54, 0.0, 1.0, 1, 0, NULL, RR_ERR_PARAM,
+                       "initial slope over Kalker's"},
+    [RR_FASTSIM_ALPHA_INF] = {"alpha_inf", RR_OPT_REAL, "", 0.02, 0.0, 1.0, 0, 0, NULL,
+                              RR_ERR_PARAM, "slope reduction at large creepage"},
+    [RR_FASTSIM_BETA] = {"beta", RR_OPT_REAL, "", 0.62, 0.0, HUGE_VAL, 0, 1, NULL,
+                         RR_ERR_PARAM, "rate of the slope reduction with the creepage"},
 };
 
 static double fastsim_cost(const rr_creep_opts *o)
@@ -690,28 +693,38 @@ static void fastsim_shape(const rr_creep_opts *o, int *rows, int *cols)
     *cols = (int)o->v[RR_FASTSIM_NX];
 }
 
+/* what the three variants share */
 #define FASTSIM_ENTRIES                                                          \
-    fastsim_cost, rr_method_unit_slope, rr_method_no_workspace, fastsim_forces, \
-        fastsim_shape, fastsim_checked, 0, NULL
+    .saturates = 1, .cost = fastsim_cost, .workspace_len = rr_method_no_workspace, \
+    .forces = fastsim_forces, .field_shape = fastsim_shape, .field = fastsim_checked
 
 const rr_method_desc rr_method_fastsim = {
-    "fastsim", "FASTSIM, Kalker 1982: three flexibilities", 5, fastsim_opts, 1, NULL, NULL,
-    FASTSIM_ENTRIES
+    .name = "fastsim",
+    .doc = "FASTSIM, Kalker 1982: three flexibilities",
+    .nopts = RR_COUNTOF(fastsim_opts),
+    .opts = fastsim_opts,
+    .slope_scale = rr_method_unit_slope,
+    FASTSIM_ENTRIES,
 };
 
 const rr_method_desc rr_method_fastsim_blended = {
-    "fastsim_blended",
-    "FASTSIM with flexibilities blended from three to one as the creepage grows "
-    "(Vollebregt and Voltr 2023)",
-    6, blended_opts, 1, NULL, NULL, FASTSIM_ENTRIES
+    .name = "fastsim_blended",
+    .doc = "FASTSIM with flexibilities blended from three to one as the creepage grows "
+           "(Vollebregt and Voltr 2023)",
+    .nopts = RR_COUNTOF(blended_opts),
+    .opts = blended_opts,
+    .slope_scale = rr_method_unit_slope,
+    FASTSIM_ENTRIES,
 };
 
 const rr_method_desc rr_method_modified_fastsim = {
-    "modified_fastsim",
-    "modified FASTSIM (Spiryagin, Polach and Cole 2013): the slope reduced with the creepage",
-    8, modified_opts, 1, NULL, NULL,
-    fastsim_cost, modified_slope, rr_method_no_workspace, fastsim_forces, fastsim_shape,
-    fastsim_checked, 0, NULL
+    .name = "modified_fastsim",
+    .doc = "modified FASTSIM (Spiryagin, Polach and Cole 2013): the slope reduced with the "
+           "creepage",
+    .nopts = RR_COUNTOF(modified_opts),
+    .opts = modified_opts,
+    .slope_scale = modified_slope,
+    FASTSIM_ENTRIES,
 };
 
 /* The descriptor of a FASTSIM variant's number, else NULL. */

@@ -38,7 +38,11 @@ static int linear_forces(const rr_contact_case *c, const rr_friction *fr,
 }
 
 const rr_method_desc rr_method_linear = {
-    "linear", "Kalker's linear theory (no saturation: the forces grow without bound)",
-    0, NULL, 0, NULL, NULL, rr_method_unit_cost, rr_method_unit_slope, rr_method_no_workspace,
-    linear_forces, NULL, NULL, 0, NULL
+    .name = "linear",
+    .doc = "Kalker's linear theory (no saturation: the forces grow without bound)",
+    .saturates = 0,
+    .cost = rr_method_unit_cost,
+    .slope_scale = rr_method_unit_slope,
+    .workspace_len = rr_method_no_workspace,
+    .forces = linear_forces,
 };

@@ -109,15 +109,24 @@ static int polach_forces(const rr_contact_case *c, const rr_friction *fr,
     return polach_checked(c, fr, o->v[RR_POLACH_KA], o->v[RR_POLACH_KS], out);
 }
 
+/* each option at its index of rr_polach.h */
 static const rr_creep_option polach_opts[] = {
-    {"kA", RR_OPT_REAL, "", 1.0, 0.0, 1.0, 1, 0, NULL, RR_ERR_PARAM,
-     "adhesion reduction factor (small creepage)"},
-    {"kS", RR_OPT_REAL, "", 1.0, 0.0, 1.0, 1, 0, NULL, RR_ERR_PARAM,
-     "slip reduction factor (large creepage), kS <= kA"},
+    [RR_POLACH_KA] = {"kA", RR_OPT_REAL, "", 1.0, 0.0, 1.0, 1, 0, NULL, RR_ERR_PARAM,
+                      "adhesion reduction factor (small creepage)"},
+    [RR_POLACH_KS] = {"kS", RR_OPT_REAL, "", 1.0, 0.0, 1.0, 1, 0, NULL, RR_ERR_PARAM,
+                      "slip reduction factor (large creepage), kS <= kA"},
 };
 
 const rr_method_desc rr_method_polach = {
-    "polach", "Polach 1999/2005 with spin: reduction factors 0 < kS <= kA <= 1",
-    2, polach_opts, 1, polach_check, "0 < kS <= kA <= 1", rr_method_unit_cost, polach_slope,
-    rr_method_no_workspace, polach_forces, NULL, NULL, 0, NULL
+    .name = "polach",
+    .doc = "Polach 1999/2005 with spin: reduction factors 0 < kS <= kA <= 1",
+    .nopts = RR_COUNTOF(polach_opts),
+    .opts = polach_opts,
+    .saturates = 1,
+    .check = polach_check,
+    .check_doc = "0 < kS <= kA <= 1",
+    .cost = rr_method_unit_cost,
+    .slope_scale = polach_slope,
+    .workspace_len = rr_method_no_workspace,
+    .forces = polach_forces,
 };

@@ -224,9 +224,9 @@ int rr_fmu_config_set_list(rr_fmu_config *f, const char *name, int n, const doub
 
 /*
  * rr_fmu_creep_opts - the creep-force method and options of f: the method
- * of contact.creep_method, every other creep row "contact.<family>_<option>"
- * given as <option> where the method has it (as rollerrig.rig does), then
- * rr_creep_opts_check.  *bad (may be NULL): the row at fault.  Status:
+ * of contact.creep_method, every other creep row given as the option it
+ * declares (rr_rig_param.option) where the method has it (as rollerrig.rig
+ * does), then rr_creep_opts_check.  *bad (may be NULL): the row at fault.  Status:
  * rr_creep_opts_check's, RR_ERR_METHOD (a method not for a time step).
  */
 int rr_fmu_creep_opts(const rr_fmu_config *f, rr_creep_opts *o, const char **bad);
@@ -331,5 +331,23 @@ int rr_fmu_set(rr_fmu *m, int type, unsigned vr, double v);
  */
 int rr_fmu_save(const rr_fmu *m, rr_fmu_state *st);
 int rr_fmu_restore(rr_fmu *m, const rr_fmu_state *st);
+
+/* Not API: what the unit (rr_fmu_unit.c) takes from its variables and
+ * configuration (rr_fmu.c).  What a variable is (rr_fmu_var.kind); the
+ * present value of a parameter or input variable from a configuration and
+ * inputs (in may be NULL: an input is NaN), an output's or the time's from
+ * the unit's state; the inputs' start values of a start configuration; an
+ * input's name ("" out of range); v set to x in f or in (an input), checked
+ * as its row or option says (rr_rig_config_set, the creep option's range),
+ * the status. */
+enum rr_fmu_kind {
+    RR_FMU_K_TIME = 0, RR_FMU_K_PARAM, RR_FMU_K_LIST, RR_FMU_K_CREEP, RR_FMU_K_CONTROL,
+    RR_FMU_K_INPUT, RR_FMU_K_RECORD, RR_FMU_K_ENCODER, RR_FMU_K_WHEEL
+};
+double rr_fmu_value(const rr_fmu_config *f, const double *in, const rr_fmu_var *v);
+double rr_fmu_output(const rr_fmu_state *s, const rr_fmu_var *v);
+void rr_fmu_input_starts(const rr_fmu_config *f, double *in);
+const char *rr_fmu_input_name(int i);
+int rr_fmu_store(rr_fmu_config *f, double *in, const rr_fmu_var *v, double x);
 
 #endif

@@ -1,7 +1,8 @@
 /*
  * fuzz_rig_params.c - the rig's declared parameters (rr_rig_params.h): the
  * table (rr_rig_param_at, _find, _choice), the config's setters
- * (rr_rig_config_set, _set_choice, _set_list) and rr_rig_config_check, and
+ * (rr_rig_config_set, _set_choice, _set_list, _put, _put_list),
+ * rr_rig_config_check and rr_rig_config_report, and
  * what is derived from a config (rr_rig_params_from, rr_rig_params_default,
  * rr_rig_geometry_from, rr_rig_samples, rr_rig_schedule), rr_wheel_store.
  *
@@ -25,7 +26,14 @@
  * rr_rig_geometry_from as documented, rr_rig_samples round(duration / T)
  * >= 1, rr_rig_schedule's references finite (xi_ref the target of the last
  * start time <= k T, NaN before the first); rr_wheel_store writing exactly
- * RR_WHEEL_NVALUES values at the stride, the fields' values, nothing else.
+ * RR_WHEEL_NVALUES values at the stride, the fields' values, nothing else;
+ * then (issue 23) up to 12 values stored unchecked (rr_rig_config_put,
+ * _put_list: statuses, the member's value, the problem of a value the
+ * member cannot hold, nothing changed on error), and rr_rig_config_report
+ * on the result: every problem (key, other key, status, rule, entry, value,
+ * bounds) as an independent reading of the header predicts it, in its
+ * order, the first cap written and nothing beyond, the count alone the
+ * same, rr_rig_config_check its first.
  */
 #include "fuzz.h"
 
@@ -146,7 +154,14 @@ static int predict_check(const rr_rig_config *c, const char **bad)
             || rr_speed_loop_check(&wheelset) == RR_ERR_PARAM)
             *bad = "scenario.control_sample_time_s";
     }
-    return *bad ? RR_ERR_PARAM : RR_OK;
+    if (*bad)
+        return RR_ERR_PARAM;
+    /* the wheelset's inertia with its drive's, a finite double */
+    if (!isfinite(c->spin_inertia + c->drive_inertia)) {
+        *bad = "wheelset.spin_inertia_kg_m2";
+        return RR_ERR_RANGE;
+    }
+    return RR_OK;
 }
 
 /* a value for row r: in its range, near its default, or an edge */
@@ -443,6 +458,303 @@ static void check_wheel_store(fz_in *in)
     fz_guard_free(v);
 }
 
+/* ------------------------------------------------------------------ the report */
+
+#define MAX_PUTS 12
+
+/* a problem as the header describes it */
+static void problem(rr_rig_problem *p, const char *key, const char *other, int status, int rule,
+                    int entry, double value, double lo, double hi)
+{
+    p->key = key;
+    p->other = other;
+    p->status = status;
+    p->rule = rule;
+    p->entry = entry;
+    p->value = value;
+    p->lo = lo;
+    p->hi = hi;
+}
+
+static int same_double(double a, double b)
+{
+    return memcmp(&a, &b, sizeof a) == 0 || a == b || (isnan(a) && isnan(b));
+}
+
+static int same_problem(const rr_rig_problem *a, const rr_rig_problem *b)
+{
+    return a->key && b->key && strcmp(a->key, b->key) == 0
+           && ((!a->other && !b->other) || (a->other && b->other && strcmp(a->other, b->other) == 0))
+           && a->status == b->status && a->rule == b->rule && a->entry == b->entry
+           && same_double(a->value, b->value) && same_double(a->lo, b->lo)
+           && same_double(a->hi, b->hi);
+}
+
+/* row r's own problem in c (the header's RANGE), or 0 */
+static int predict_row(const rr_rig_config *c, const rr_rig_param *r, rr_rig_problem *p)
+{
+    const char *at = (const char *)c + r->offset;
+    int k, st;
+    if (r->type == RR_RIG_LIST) {
+        const rr_rig_list *l = (const rr_rig_list *)(const void *)at;
+        const int least = r->nlist > 0;
+        if (l->n < least || l->n > RR_RIG_MAX_LIST) {
+            problem(p, r->name, NULL, RR_ERR_PARAM, RR_RIG_RULE_RANGE, -1, l->n, least,
+                    RR_RIG_MAX_LIST);
+            return RR_ERR_PARAM;
+        }
+        for (k = 0; k < l->n; k++)
+            if ((st = in_range(r, l->v[k])) != RR_OK) {
+                problem(p, r->name, NULL, st, RR_RIG_RULE_RANGE, k, l->v[k], r->lo, r->hi);
+                return st;
+            }
+        return RR_OK;
+    }
+    {
+        const double v = r->type == RR_RIG_REAL ? *(const double *)(const void *)at
+                                                : (double)*(const int *)(const void *)at;
+        if ((st = predict_set(r, v)) != RR_OK) {
+            const int choice = r->type == RR_RIG_CHOICE;
+            problem(p, r->name, NULL, st, RR_RIG_RULE_RANGE, -1, v, choice ? 0.0 : r->lo,
+                    choice ? nchoices(r) - 1.0 : r->hi);
+        }
+        return st;
+    }
+}
+
+static int row_bad(const rr_rig_config *c, const char *name)
+{
+    rr_rig_problem p;
+    return predict_row(c, rr_rig_param_find(name), &p) != RR_OK;
+}
+
+/* every problem rr_rig_config_report must give, in its order; their number
+ * (a loop's pole and stable times only within the first cap: the scan of
+ * sample times is the costly part, and the report's too) */
+static int predict_report(const rr_rig_config *c, rr_rig_problem *out, int cap)
+{
+    static const char *const loop_rows[] = {
+        "scenario.control_sample_time_s", "roller.inertia_kg_m2", "wheelset.spin_inertia_kg_m2",
+        "wheelset_drive.drive_inertia_kg_m2", "roller_drive.kp_N_m_s_per_rad",
+        "roller_drive.ki_N_m_s_per_rad", "roller_drive.torque_limit_N_m",
+        "roller_drive.lag_time_constant_s", "wheelset_drive.kp_N_m_s_per_rad",
+        "wheelset_drive.ki_N_m_s_per_rad", "wheelset_drive.torque_limit_N_m",
+        "wheelset_drive.lag_time_constant_s", "creepage_controller.alpha"};
+    const rr_rig_list *ts = &c->target_start, *st = &c->schedule_t;
+    const rr_rig_list *sched[3] = {&c->schedule_mu0, &c->schedule_A, &c->schedule_B};
+    const char *sched_names[3] = {"adhesion.schedule_mu0", "adhesion.schedule_polach_A",
+                                  "adhesion.schedule_polach_B_s_per_m"};
+    int n = 0, i, k, loops_ok = 1;
+    for (i = 0; i < rr_rig_param_count(); i++) {
+        const rr_rig_param *r = rr_rig_param_at(i);
+        if (!r->creep && predict_row(c, r, &out[n]) != RR_OK)
+            n++;
+    }
+    if (!row_bad(c, "scenario.targets") && !row_bad(c, "scenario.target_start_s")) {
+        if (ts->n != c->targets.n) {
+            problem(&out[n++], "scenario.target_start_s", "scenario.targets", RR_ERR_PARAM,
+                    RR_RIG_RULE_COUNT, -1, ts->n, NAN, c->targets.n);
+        } else {
+            for (k = 1; k < ts->n; k++)
+                if (!(ts->v[k] > ts->v[k - 1]))
+                    break;
+            if (k < ts->n)
+                problem(&out[n++], "scenario.target_start_s", NULL, RR_ERR_PARAM,
+                        RR_RIG_RULE_INCREASING, k, ts->v[k], NAN, NAN);
+            else if (!row_bad(c, "scenario.duration_s") && !(ts->v[ts->n - 1] < c->duration))
+                problem(&out[n++], "scenario.target_start_s", "scenario.duration_s",
+                        RR_ERR_PARAM, RR_RIG_RULE_BEFORE, ts->n - 1, ts->v[ts->n - 1], NAN,
+                        c->duration);
+        }
+    }
+    if (!row_bad(c, "scenario.duration_s") && !row_bad(c, "scenario.control_sample_time_s")
+        && !(c->duration >= c->T * (1.0 - 1e-9)))
+        problem(&out[n++], "scenario.duration_s", "scenario.control_sample_time_s", RR_ERR_PARAM,
+                RR_RIG_RULE_SAMPLE, -1, c->duration, c->T, NAN);
+    if (!row_bad(c, "adhesion.schedule_times_s") && !row_bad(c, sched_names[0])
+        && !row_bad(c, sched_names[1]) && !row_bad(c, sched_names[2])) {
+        for (k = 0; k < 3; k++)
+            if (sched[k]->n != st->n && !(k > 0 && sched[k]->n == 0))
+                problem(&out[n++], sched_names[k], "adhesion.schedule_times_s", RR_ERR_PARAM,
+                        RR_RIG_RULE_COUNT, -1, sched[k]->n, NAN, st->n);
+        for (k = 1; k < st->n; k++)
+            if (!(st->v[k] >= st->v[k - 1]))
+                break;
+        if (k < st->n)
+            problem(&out[n++], "adhesion.schedule_times_s", NULL, RR_ERR_PARAM,
+                    RR_RIG_RULE_NONDECREASING, k, st->v[k], NAN, NAN);
+    }
+    if (!row_bad(c, "adhesion.patch_length_m") && !row_bad(c, "roller.radius_m")
+        && !(c->patch_length <= 2.0 * RR_PI * c->roller_radius))
+        problem(&out[n++], "adhesion.patch_length_m", "roller.radius_m", RR_ERR_PARAM,
+                RR_RIG_RULE_CIRCUMFERENCE, -1, c->patch_length, NAN,
+                2.0 * RR_PI * c->roller_radius);
+    for (k = 0; k < (int)(sizeof loop_rows / sizeof loop_rows[0]); k++)
+        loops_ok &= !row_bad(c, loop_rows[k]);
+    if (loops_ok) {
+        rr_speed_loop l[2];
+        l[0].pi.T = l[1].pi.T = c->T;
+        l[0].pi.Kp = c->roller_kp;
+        l[0].pi.KI = c->roller_ki;
+        l[0].pi.Tmax = c->roller_tmax;
+        l[0].J = c->roller_inertia;
+        l[0].tau = c->roller_tau;
+        l[0].alpha = 0.0;
+        l[1].pi.Kp = c->wheelset_kp;
+        l[1].pi.KI = c->wheelset_ki;
+        l[1].pi.Tmax = c->wheelset_tmax;
+        l[1].J = c->spin_inertia + c->drive_inertia;
+        l[1].tau = c->wheelset_tau;
+        l[1].alpha = c->ctl_alpha;
+        for (k = 0; k < 2; k++)
+            if (rr_speed_loop_check(&l[k]) == RR_ERR_PARAM) {
+                double rho = NAN, lo = NAN, hi = NAN;
+                if (n < cap) {
+                    rr_speed_loop_radius(&l[k], &rho);
+                    rr_speed_loop_range(&l[k], RR_RIG_MIN_T, RR_RIG_MAX_T, &lo, &hi);
+                }
+                problem(&out[n++], "scenario.control_sample_time_s", NULL, RR_ERR_PARAM,
+                        RR_RIG_RULE_LOOP, k, rho, lo, hi);
+            }
+    }
+    if (!row_bad(c, "wheelset.spin_inertia_kg_m2")
+        && !row_bad(c, "wheelset_drive.drive_inertia_kg_m2")
+        && !isfinite(c->spin_inertia + c->drive_inertia))
+        problem(&out[n++], "wheelset.spin_inertia_kg_m2", "wheelset_drive.drive_inertia_kg_m2",
+                RR_ERR_RANGE, RR_RIG_RULE_SUM, -1, c->spin_inertia + c->drive_inertia, NAN, NAN);
+    return n;
+}
+
+/* a few values stored unchecked (rr_rig_config_put, _put_list), each
+ * status, stored value and problem as the header says */
+static void run_puts(fz_in *in, rr_rig_config *c)
+{
+    const int nputs = fz_range(in, 0, MAX_PUTS);
+    int call, i;
+    for (call = 0; call < nputs; call++) {
+        const rr_rig_param *r;
+        const char *name = decode_name(in, &r);
+        rr_rig_config before = *c;
+        rr_rig_problem got, want;
+        int st, wst;
+        got.key = "canary";
+        problem(&want, "canary", NULL, 0, 0, 0, 0.0, 0.0, 0.0);
+        if (fz_choice(in, 2) == 0) {
+            const double v = decode_value(in, r);
+            st = rr_rig_config_put(c, name, v, &got);
+            fz_note("; put %s = %.17g: %d", name ? name : "NULL", v, st);
+            if (!name)
+                wst = RR_ERR_NULL;
+            else if (!r || r->creep || r->type == RR_RIG_LIST)
+                wst = RR_ERR_PARAM;
+            else if (r->type == RR_RIG_REAL || (v == floor(v) && fabs(v) <= 2147483647.0))
+                wst = RR_OK;
+            else {
+                const int choice = r->type == RR_RIG_CHOICE;
+                wst = predict_set(r, v);
+                problem(&want, r->name, NULL, wst, RR_RIG_RULE_RANGE, -1, v,
+                        choice ? 0.0 : r->lo, choice ? nchoices(r) - 1.0 : r->hi);
+                if (wst == RR_OK)
+                    fz_fail("rr_rig_config_put: %s cannot hold %.17g, yet it is in range",
+                            name, v);
+            }
+            if (st == RR_OK && wst == RR_OK) {
+                const char *at = (const char *)c + r->offset;
+                const double held = r->type == RR_RIG_REAL ? *(const double *)(const void *)at
+                                                          : (double)*(const int *)(const void *)at;
+                if (!same_double(held, v))
+                    fz_fail("rr_rig_config_put: %s = %.17g, the member holds %.17g", name, v,
+                            held);
+            }
+        } else {
+            double v[RR_RIG_MAX_LIST + 1];
+            int n = fz_int(in, -1, 8);
+            const int vnull = fz_choice(in, 16) == 0;
+            if (n > RR_RIG_MAX_LIST + 1)
+                n = RR_RIG_MAX_LIST + 1;
+            for (i = 0; i < n && i <= RR_RIG_MAX_LIST; i++)
+                v[i] = fz_choice(in, 4) == 0 ? decode_value(in, r)
+                       : r && r->hi <= 1.0 ? fz_lin(in, 0.0, 1.0) : fz_log(in, 1e-3, 30.0);
+            st = rr_rig_config_put_list(c, name, n, vnull ? NULL : v, &got);
+            fz_note("; put_list %s n %d: %d", name ? name : "NULL", n, st);
+            if (!name || (vnull && n > 0))
+                wst = RR_ERR_NULL;
+            else if (!r || r->creep || r->type != RR_RIG_LIST)
+                wst = RR_ERR_PARAM;
+            else if (n < 0 || n > RR_RIG_MAX_LIST) {
+                wst = RR_ERR_PARAM;
+                problem(&want, r->name, NULL, RR_ERR_PARAM, RR_RIG_RULE_RANGE, -1, n,
+                        r->nlist > 0, RR_RIG_MAX_LIST);
+            } else {
+                const rr_rig_list *l = (const rr_rig_list *)(const void *)((const char *)c
+                                                                           + r->offset);
+                wst = RR_OK;
+                if (st == RR_OK && (l->n != n || (n > 0 && memcmp(l->v, v, (size_t)n
+                                                                           * sizeof v[0]))))
+                    fz_fail("rr_rig_config_put_list: %s not the %d values given", name, n);
+            }
+        }
+        fz_status("rr_rig_config_put", st);
+        if (st != wst)
+            fz_fail("rr_rig_config_put: %s status %d, the header's %d", name ? name : "NULL",
+                    st, wst);
+        if (strcmp(want.key, "canary") == 0 ? strcmp(got.key, "canary") != 0
+                                            : !same_problem(&got, &want))
+            fz_fail("rr_rig_config_put: %s's problem not the header's", name ? name : "NULL");
+        if (st != RR_OK)
+            fz_same("rr_rig_config_put", &before, c, sizeof *c, "the config (on error)");
+    }
+    if (rr_rig_config_put(NULL, "wheelset.mass_kg", 1.0, NULL) != RR_ERR_NULL
+        || rr_rig_config_put_list(NULL, "scenario.targets", 0, NULL, NULL) != RR_ERR_NULL)
+        fz_fail("rr_rig_config_put: a NULL config not RR_ERR_NULL");
+}
+
+/* rr_rig_config_report: every problem as predicted, in order; the cap
+ * honoured; rr_rig_config_check its first */
+static void check_report(fz_in *in, const rr_rig_config *c0)
+{
+    rr_rig_config c = *c0;
+    rr_rig_problem want[RR_RIG_MAX_PROBLEMS], *got;
+    const char *bad;
+    int n, nw, cap, k, st;
+    run_puts(in, &c);
+    /* the cap: every problem one input in 32 (not where the input has ended:
+     * zero bytes, the first choice); else short of the first loop's problem,
+     * whose scan of sample times (in the report and in the prediction) took
+     * the fuzzer from 311 inputs a second to 30 */
+    nw = predict_report(&c, want, 0);
+    if (nw > RR_RIG_MAX_PROBLEMS)
+        fz_fail("rr_rig_config_report: %d problems, more than RR_RIG_MAX_PROBLEMS", nw);
+    for (k = 0; k < nw && want[k].rule != RR_RIG_RULE_LOOP; k++)
+        ;
+    cap = fz_choice(in, 32) == 31 ? RR_RIG_MAX_PROBLEMS : fz_range(in, 0, k);
+    if (cap > k)
+        predict_report(&c, want, cap);
+    got = fz_guarded((size_t)(cap > 0 ? cap : 1) * sizeof *got);
+    n = rr_rig_config_report(&c, got, cap);
+    fz_note("; report: %d problems (predicted %d), cap %d", n, nw, cap);
+    if (n != nw)
+        fz_fail("rr_rig_config_report: %d problems, predicted %d", n, nw);
+    for (k = 0; k < n && k < cap; k++)
+        if (!same_problem(&got[k], &want[k]))
+            fz_fail("rr_rig_config_report: problem %d is %s (status %d, rule %d), predicted %s "
+                    "(status %d, rule %d)", k, got[k].key, got[k].status, got[k].rule,
+                    want[k].key, want[k].status, want[k].rule);
+    if (cap < RR_RIG_MAX_PROBLEMS)
+        fz_guard_ok("rr_rig_config_report", got, (size_t)(cap > 0 ? cap : 1) * sizeof *got,
+                    "out[cap]");
+    fz_guard_free(got);
+    if (rr_rig_config_report(&c, NULL, 0) != n || rr_rig_config_report(NULL, NULL, 0)
+                                                   != RR_ERR_NULL
+        || rr_rig_config_report(&c, NULL, 1) != RR_ERR_NULL)
+        fz_fail("rr_rig_config_report: the count alone, or a NULL, not as documented");
+    st = rr_rig_config_check(&c, &bad);
+    if (n == 0 ? st != RR_OK || bad != NULL
+               : st != want[0].status || !bad || strcmp(bad, want[0].key) != 0)
+        fz_fail("rr_rig_config_check: status %d at %s, not the report's first", st,
+                bad ? bad : "NULL");
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fz_in in = fz_start(data, size);
@@ -476,5 +788,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             fz_fail("rr_rig_params_from: not rr_rig_config_check's status");
     }
     check_wheel_store(&in);
+    check_report(&in, &c);
     return 0;
 }

@@ -139,33 +139,56 @@ typedef struct {
     rr_creepctl_params creepctl;              /* radii, alpha, beta, vmin, sense */
 } rr_rig_params;
 
-/* The quantities recorded at the end of each sample, in this order. */
+/*
+ * The quantities recorded at the end of each sample, in this order: one
+ * list gives both the enum (RR_REC_<ID>) and each field's name, unit and
+ * meaning (rr_rig_record_field, rr_rig_params.h), so that a name cannot
+ * drift from its index.  RR_RIG_RECORD(F) calls F(ID, name, unit, meaning)
+ * once per field; the sample's status is always the last field.
+ */
+#define RR_RIG_RECORD(F)                                                                      \
+    F(T, "time", "s", "time at the end of the sample")                                        \
+    F(CREEPAGE, "creepage", "-", "longitudinal creepage cx of the contact model, mean of "    \
+      "both contacts (Kalker's sign: > 0 braking, < 0 traction)")                             \
+    F(XI_EST, "xi_est", "-", "the creepage controller's estimate from the encoders (eq. "     \
+      "16), in the drive's sense (> 0)")                                                      \
+    F(XI_REF, "xi_ref", "-", "the creepage target (> 0; NaN before the first target starts)") \
+    F(ROLLER_SPEED, "roller_speed", "m/s", "roller surface speed, roller_spin R0")            \
+    F(WHEELSET_SPEED, "wheelset_speed", "m/s", "wheel surface speed, spin r0")                \
+    F(FX, "fx", "N", "longitudinal creep force on the wheelset, both wheels (on the wheel: "  \
+      "< 0 braking, > 0 traction)")                                                           \
+    F(FY, "fy", "N", "lateral creep force on the wheelset, both wheels")                      \
+    F(N_LEFT, "normal_load_left", "N", "normal load of the left wheel")                       \
+    F(N_RIGHT, "normal_load_right", "N", "normal load of the right wheel")                    \
+    F(ADHESION, "adhesion", "-", "adhesion coefficient |fx| / (normal_load_left + "           \
+      "normal_load_right)")                                                                   \
+    F(T_ROLLER, "torque_roller", "N m", "roller drive torque (after its lag)")                \
+    F(T_WHEELSET, "torque_wheelset", "N m", "wheelset drive torque (after its lag)")          \
+    F(W_REF, "w_ref", "rad/s", "wheelset speed reference: the creepage controller's (eq. "    \
+      "15) or a controller's of the caller; NaN while the wheelset's torque is commanded")    \
+    F(X, "x", "m", "wheelset longitudinal position")                                          \
+    F(Y, "y", "m", "wheelset lateral position (+: to the left)")                              \
+    F(YAW, "yaw", "rad", "wheelset yaw angle")                                                \
+    F(CX_LEFT, "creepage_left", "-", "longitudinal creepage of the left contact")             \
+    F(CX_RIGHT, "creepage_right", "-", "longitudinal creepage of the right contact")          \
+    F(TREF_ROLLER, "torque_ref_roller", "N m", "roller torque reference held over the "       \
+      "sample")                                                                               \
+    F(TREF_WHEELSET, "torque_ref_wheelset", "N m", "wheelset torque reference held over "     \
+      "the sample")                                                                           \
+    F(VX, "vx", "m/s", "wheelset longitudinal velocity")                                      \
+    F(VY, "vy", "m/s", "wheelset lateral velocity")                                           \
+    F(YAW_RATE, "yaw_rate", "rad/s", "wheelset yaw rate")                                     \
+    F(SPIN, "spin", "rad/s", "wheelset angular speed about its axle")                         \
+    F(ROLLER_SPIN, "roller_spin", "rad/s", "roller angular speed")                            \
+    F(MU_LEFT, "mu_left", "-", "static friction coefficient at the left contact (the "        \
+      "adhesion in effect: schedule, command, patch)")                                        \
+    F(MU_RIGHT, "mu_right", "-", "static friction coefficient at the right contact")          \
+    F(STATUS, "sample_status", "-", "status of the sample: 0 OK, > 0 warning, < 0 error "     \
+      "(rollerrig.status_message)")
+
+#define RR_REC_ENUM_(id, name, unit, meaning) RR_REC_##id,
 enum rr_rig_record_index {
-    RR_REC_T = 0,          /* time [s] */
-    RR_REC_CREEPAGE,       /* longitudinal creepage, mean of both contacts (cx, Kalker's sign:
-                              > 0 braking) [-] */
-    RR_REC_XI_EST,         /* the controller's estimate (eq. 16, in its sense) [-] */
-    RR_REC_XI_REF,         /* the target [-] */
-    RR_REC_ROLLER_SPEED,   /* roller surface speed roller_spin R0 [m/s] */
-    RR_REC_WHEELSET_SPEED, /* wheel surface speed spin r0 [m/s] */
-    RR_REC_FX,             /* longitudinal creep force on the wheelset, sum of fx [N] */
-    RR_REC_FY,             /* lateral creep force on the wheelset, sum of fy [N] */
-    RR_REC_N_LEFT,         /* normal loads [N] */
-    RR_REC_N_RIGHT,
-    RR_REC_ADHESION,       /* |sum fx| / sum N [-] */
-    RR_REC_T_ROLLER,       /* drive torques [N m] */
-    RR_REC_T_WHEELSET,
-    RR_REC_W_REF,          /* wheelset speed reference [rad/s] */
-    RR_REC_X, RR_REC_Y, RR_REC_YAW,   /* wheelset position [m], [m], [rad] */
-    RR_REC_CX_LEFT, RR_REC_CX_RIGHT,  /* each contact's longitudinal creepage */
-    RR_REC_TREF_ROLLER,    /* torque references held over the sample [N m] */
-    RR_REC_TREF_WHEELSET,
-    RR_REC_VX, RR_REC_VY, RR_REC_YAW_RATE,   /* the wheelset's rates [m/s], [m/s], [rad/s] */
-    RR_REC_SPIN, RR_REC_ROLLER_SPIN,         /* angular speeds [rad/s]: with x, y, yaw the
-                                                kinematics a contact model needs (replay) */
-    RR_REC_MU_LEFT, RR_REC_MU_RIGHT,         /* static friction coefficient mu0 at each
-                                                contact (the adhesion in effect) [-] */
-    RR_REC_STATUS,         /* the sample's status; always the last field */
+    RR_RIG_RECORD(RR_REC_ENUM_)
     RR_REC_COUNT
 };
 
@@ -438,5 +461,21 @@ int rr_rig_rhs(rr_rig *rig, double t, const double *y, double *dydt);
 
 /* rr_rig_jac - the approximate Jacobian the integrator uses, J[n*n], n = RR_RIG_NSTATE. */
 int rr_rig_jac(rr_rig *rig, double t, const double *y, double *J);
+
+/* Not API: what the sampled side (rr_rig.c) and the plant (rr_rig_plant.c)
+ * take from each other.  rr_rig_usable: 0 if the rig can step, else the
+ * failed rr_rig_init's status, or RR_ERR_NULL for a rig never initialised
+ * (e.g. zeroed memory).  rr_rig_schedule_law: the adhesion schedule's law
+ * at time t (p->contact.friction without points).  rr_rig_bind: what the
+ * rig takes from its (checked) parameters besides its state: their pointer,
+ * the contact model checked once (a copy, rr_rig_contact_bind; its status
+ * where that refuses it, nothing changed), the creep method's facts, the
+ * integrator's settings and model, the
+ * Jacobian's constant part; the contact evaluation it keeps is dropped;
+ * RR_ERR_RANGE (nothing changed) where the constant part overflows (a
+ * stiffness over a near-zero mass). */
+int rr_rig_usable(const rr_rig *rig);
+rr_friction rr_rig_schedule_law(const rr_rig_params *p, double t);
+int rr_rig_bind(rr_rig *rig, const rr_rig_params *p);
 
 #endif

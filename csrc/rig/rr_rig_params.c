@@ -1,4 +1,11 @@
-/* rr_rig_params.c - the rig's parameters, scenario and outputs, declared once. */
+/*
+ * rr_rig_params.c - the rig's parameters, scenario and outputs, declared
+ * once (the tables and their accessors), and the rig's parameters derived
+ * from a checked configuration (rr_rig_params_from and what goes with it:
+ * the drives, the adhesion, the default creep-force method, the contact
+ * table's radii, the geometry, the samples and the schedule).  Setting and
+ * checking a configuration is rr_rig_config.c's.
+ */
 #include <math.h>
 #include <string.h>
 #include "util/rr_common.h"
@@ -7,30 +14,38 @@
 
 #define OFF(member) ((long)offsetof(rr_rig_config, member))
 
-/* ranges: lo, hi, lo_open, hi_open */
-#define ANY (-INFINITY), INFINITY, 0, 0
-#define POS 0.0, INFINITY, 1, 0
-#define NONNEG 0.0, INFINITY, 0, 0
-#define RANGE(lo, hi, lo_open, hi_open) lo, hi, lo_open, hi_open
+/* ranges: lo, hi and whether each end is open */
+#define RANGE(l, h, lopen, hopen) .lo = (l), .hi = (h), .lo_open = (lopen), .hi_open = (hopen)
+#define ANY RANGE(-INFINITY, INFINITY, 0, 0)
+#define POS RANGE(0.0, INFINITY, 1, 0)
+#define NONNEG RANGE(0.0, INFINITY, 0, 0)
 
-#define REAL(name, unit, v, range, member, origin) \
-    {name, unit, RR_RIG_REAL, v, #v, range, NULL, NULL, 0, OFF(member), 0, origin}
-#define INT(name, v, lo, hi, member, origin) \
-    {name, "-", RR_RIG_INT, v, #v, lo, hi, 0, 0, NULL, NULL, 0, OFF(member), 0, origin}
-#define FLAG(name, v, text, member, origin) \
-    {name, "", RR_RIG_FLAG, v, text, 0, 1, 0, 0, NULL, NULL, 0, OFF(member), \
-     0, origin}
-#define CHOICE(name, names, index, member, origin) \
-    {name, "", RR_RIG_CHOICE, index, NULL, 0, 0, 0, 0, names, NULL, 0, OFF(member), 0, origin}
-#define LIST(name, unit, entries, text, range, member, origin) \
-    {name, unit, RR_RIG_LIST, 0.0, text, range, NULL, entries, \
-     (int)(sizeof entries / sizeof entries[0]), OFF(member), 0, origin}
+/* the rows by kind (by member: what a kind leaves out is 0 or NULL) */
+#define REAL(nm, un, v, range, member, orig)                                             \
+    {.name = nm, .unit = un, .type = RR_RIG_REAL, .value = v, .text = #v, range,         \
+     .offset = OFF(member), .origin = orig}
+#define INT(nm, v, l, h, member, orig)                                                   \
+    {.name = nm, .unit = "-", .type = RR_RIG_INT, .value = v, .text = #v, .lo = l,       \
+     .hi = h, .offset = OFF(member), .origin = orig}
+#define FLAG(nm, v, txt, member, orig)                                                   \
+    {.name = nm, .unit = "", .type = RR_RIG_FLAG, .value = v, .text = txt, .lo = 0,      \
+     .hi = 1, .offset = OFF(member), .origin = orig}
+#define CHOICE(nm, names, index, member, orig)                                           \
+    {.name = nm, .unit = "", .type = RR_RIG_CHOICE, .value = index, .choices = names,    \
+     .offset = OFF(member), .origin = orig}
+#define LIST(nm, un, entries, txt, range, member, orig)                                  \
+    {.name = nm, .unit = un, .type = RR_RIG_LIST, .text = txt, range, .list = entries,   \
+     .nlist = RR_COUNTOF(entries), .offset = OFF(member), .origin = orig}
 /* a list that may be empty, and is by default */
-#define LIST0(name, unit, range, member, origin) \
-    {name, unit, RR_RIG_LIST, 0.0, "[]", range, NULL, NULL, 0, OFF(member), 0, origin}
-/* creep rows: type, default and its text only (rr_creep_opts checks and applies them) */
-#define CREEP(name, unit, type, v, text, origin) \
-    {name, unit, type, v, text, NAN, NAN, 0, 0, NULL, NULL, 0, -1, 1, origin}
+#define LIST0(nm, un, range, member, orig)                                               \
+    {.name = nm, .unit = un, .type = RR_RIG_LIST, .text = "[]", range,                   \
+     .offset = OFF(member), .origin = orig}
+/* creep rows: type, default and its text, and the option of the creep-force
+ * method the row sets (NULL: the row that chooses the method); rr_creep_opts
+ * checks and applies them */
+#define CREEP(nm, opt, un, ty, v, txt, orig)                                             \
+    {.name = nm, .unit = un, .type = ty, .value = v, .text = txt, .lo = NAN, .hi = NAN,  \
+     .offset = -1, .creep = 1, .option = opt, .origin = orig}
 
 static const char *const drive_modes[] = {"braking", "traction", NULL};
 static const int drive_senses[] = {RR_CREEPCTL_BRAKING, RR_CREEPCTL_TRACTION};
@@ -41,6 +56,10 @@ static const char *const ode_methods[] = {"trbdf2", "ros2", "lineuler", NULL};
 static const char *const patch_sides[] = {"both", "left", "right", NULL};
 static const int patch_bits[] = {3, 1, 2};
 static const int ode_values[] = {RR_ODE_TRBDF2, RR_ODE_ROS2, RR_ODE_LINEULER};
+/* the values beside their names (each names list ends in NULL) */
+RR_STATIC_ASSERT(RR_COUNTOF(drive_senses) == RR_COUNTOF(drive_modes) - 1, one_sense_per_mode);
+RR_STATIC_ASSERT(RR_COUNTOF(patch_bits) == RR_COUNTOF(patch_sides) - 1, one_bit_set_per_side);
+RR_STATIC_ASSERT(RR_COUNTOF(ode_values) == RR_COUNTOF(ode_methods) - 1, one_value_per_method);
 
 static const double default_targets[] = {0.04, 0.015, 0.02, 0.03};
 static const double default_starts[] = {0.0, 5.0, 10.0, 15.0};
@@ -130,11 +149,12 @@ static const rr_rig_param params[] = {
          "reference cases (G 82000 N/mm^2)"),
     REAL("contact.poisson_ratio", "-", 0.28, RANGE(0.0, 0.5, 0, 0), nu,
          "cited: CONTACT reference cases (POISS 0.28), shared/reference"),
-    CREEP("contact.creep_method", "", RR_RIG_CHOICE, 0, "\"fastsim\"",
+    CREEP("contact.creep_method", NULL, "", RR_RIG_CHOICE, 0, "\"fastsim\"",
           "paper section 4.4: Kalker's FASTSIM"),
-    CREEP("contact.fastsim_nx", "-", RR_RIG_INT, 20, "20", "choice: elements along x per strip"),
-    CREEP("contact.fastsim_ny", "-", RR_RIG_INT, 20, "20", "choice: strips across y"),
-    CREEP("contact.fastsim_slip_speed", "", RR_RIG_CHOICE, 0, "\"rigid\"",
+    CREEP("contact.fastsim_nx", "nx", "-", RR_RIG_INT, 20, "20",
+          "choice: elements along x per strip"),
+    CREEP("contact.fastsim_ny", "ny", "-", RR_RIG_INT, 20, "20", "choice: strips across y"),
+    CREEP("contact.fastsim_slip_speed", "slip_speed", "", RR_RIG_CHOICE, 0, "\"rigid\"",
           "choice: falling friction at each contact's rigid slip speed (Spiryagin et al. "
           "2013, CONTACT's FASTSIM), one mu per contact: 8x cheaper per rig step than at "
           "every element's own slip speed (\"local\")"),
@@ -147,9 +167,9 @@ static const rr_rig_param params[] = {
          "table not read in the paper itself)"),
     REAL("contact.polach_B_s_per_m", "s/m", 0.6, RANGE(0.0, RR_FRICTION_MAX, 0, 0), polach_B,
          "cited: as polach_A (dry: B = 0.6 s/m)"),
-    CREEP("contact.polach_kA", "-", RR_RIG_REAL, 1.0, "1.0",
+    CREEP("contact.polach_kA", "kA", "-", RR_RIG_REAL, 1.0, "1.0",
           "cited: as polach_A (dry: kA = 1.0), for method = \"polach\""),
-    CREEP("contact.polach_kS", "-", RR_RIG_REAL, 0.4, "0.4",
+    CREEP("contact.polach_kS", "kS", "-", RR_RIG_REAL, 0.4, "0.4",
           "cited: as polach_A (dry: kS = 0.4), for method = \"polach\""),
     REAL("contact.min_rolling_speed_m_s", "m/s", 0.01, POS, vmin,
          "choice: creepage denominator max(|V|, 0.01 m/s) at standstill (paper section 4.4: "
@@ -256,7 +276,10 @@ static const rr_rig_param params[] = {
            "choice: the patch on both rollers (\"left\" or \"right\": one, which yaws the "
            "wheelset)"),
 };
-#define NPARAMS ((int)(sizeof params / sizeof params[0]))
+#define NPARAMS RR_COUNTOF(params)
+/* a report holds a problem per row and per rule (rr_rig_config.c's
+ * rr_rig_config_report: ten at most) */
+RR_STATIC_ASSERT(NPARAMS + 10 <= RR_RIG_MAX_PROBLEMS, a_report_holds_every_problem);
 
 static const rr_rig_section sections[] = {
     {"scenario", ""},
@@ -305,79 +328,19 @@ static const rr_rig_retired retired[] = {
                                   "axle, ratio 1"},
 };
 
-#define REC(name, unit, meaning) {name, 1, -1, unit, meaning}
-static const rr_rig_field records[] = {
-    REC("time", "s", "time at the end of the sample"),
-    REC("creepage", "-", "longitudinal creepage cx of the contact model, mean of both contacts "
-        "(Kalker's sign: > 0 braking, < 0 traction)"),
-    REC("xi_est", "-", "the creepage controller's estimate from the encoders (eq. 16), in the "
-        "drive's sense (> 0)"),
-    REC("xi_ref", "-", "the creepage target (> 0; NaN before the first target starts)"),
-    REC("roller_speed", "m/s", "roller surface speed, roller_spin R0"),
-    REC("wheelset_speed", "m/s", "wheel surface speed, spin r0"),
-    REC("fx", "N", "longitudinal creep force on the wheelset, both wheels (on the wheel: < 0 "
-        "braking, > 0 traction)"),
-    REC("fy", "N", "lateral creep force on the wheelset, both wheels"),
-    REC("normal_load_left", "N", "normal load of the left wheel"),
-    REC("normal_load_right", "N", "normal load of the right wheel"),
-    REC("adhesion", "-", "adhesion coefficient |fx| / (normal_load_left + normal_load_right)"),
-    REC("torque_roller", "N m", "roller drive torque (after its lag)"),
-    REC("torque_wheelset", "N m", "wheelset drive torque (after its lag)"),
-    REC("w_ref", "rad/s", "wheelset speed reference: the creepage controller's (eq. 15) or a "
-        "controller's of the caller; NaN while the wheelset's torque is commanded"),
-    REC("x", "m", "wheelset longitudinal position"),
-    REC("y", "m", "wheelset lateral position (+: to the left)"),
-    REC("yaw", "rad", "wheelset yaw angle"),
-    REC("creepage_left", "-", "longitudinal creepage of the left contact"),
-    REC("creepage_right", "-", "longitudinal creepage of the right contact"),
-    REC("torque_ref_roller", "N m", "roller torque reference held over the sample"),
-    REC("torque_ref_wheelset", "N m", "wheelset torque reference held over the sample"),
-    REC("vx", "m/s", "wheelset longitudinal velocity"),
-    REC("vy", "m/s", "wheelset lateral velocity"),
-    REC("yaw_rate", "rad/s", "wheelset yaw rate"),
-    REC("spin", "rad/s", "wheelset angular speed about its axle"),
-    REC("roller_spin", "rad/s", "roller angular speed"),
-    REC("mu_left", "-", "static friction coefficient at the left contact (the adhesion in "
-        "effect: schedule, command, patch)"),
-    REC("mu_right", "-", "static friction coefficient at the right contact"),
-    REC("sample_status", "-", "status of the sample: 0 OK, > 0 warning, < 0 error "
-        "(rollerrig.status_message)"),
-};
-/* one name per enum rr_rig_record_index entry: a compile-time check */
-typedef char records_complete[(sizeof records / sizeof records[0]) == RR_REC_COUNT ? 1 : -1];
+/* the record's fields, from the one list that also makes their enum (rr_rig.h) */
+#define REC(id, name, unit, meaning) {name, 1, -1, unit, meaning},
+static const rr_rig_field records[] = {RR_RIG_RECORD(REC)};
+RR_STATIC_ASSERT(RR_COUNTOF(records) == RR_REC_COUNT, records_complete);
+RR_STATIC_ASSERT(RR_REC_STATUS == RR_REC_COUNT - 1, status_is_last);
 
+/* the per-wheel block, from the list that also counts its fields and values */
 #define WF(name, width, member, unit, meaning) \
-    {name, width, (long)offsetof(rr_wheel_contact, member), unit, meaning}
-static const rr_rig_field wheel_fields[] = {
-    WF("p", 3, frame.p, "m", "contact point in the rig"),
-    WF("theta", 1, theta, "rad", "its angle round the roller axis from the top"),
-    WF("t1", 3, frame.t1, "-", "rolling direction (unit, rig frame)"),
-    WF("t2", 3, frame.t2, "-", "lateral direction in the contact plane"),
-    WF("n", 3, n, "-", "normal t1 x t2, into the wheel"),
-    WF("cx", 1, creep.cx, "-", "longitudinal creepage"),
-    WF("cy", 1, creep.cy, "-", "lateral creepage"),
-    WF("cphi", 1, creep.cphi, "rad/m", "spin creepage"),
-    WF("V", 1, creep.V, "m/s", "rolling speed used for the creepages"),
-    WF("N", 1, N, "N", "normal load"),
-    WF("a", 1, hertz.a, "m", "contact ellipse semi-axis along t1"),
-    WF("b", 1, hertz.b, "m", "contact ellipse semi-axis along t2"),
-    WF("p0", 1, hertz.p0, "Pa", "peak pressure"),
-    WF("fx", 1, f.fx, "N", "creep force on the wheel along t1"),
-    WF("fy", 1, f.fy, "N", "creep force on the wheel along t2"),
-    WF("mz", 1, f.mz, "N m", "spin moment on the wheel about n"),
-    WF("force", 3, force, "N", "contact force on the wheelset, rig frame"),
-    WF("moment", 3, moment, "N m", "its moment about the wheelset centre"),
-    WF("r", 1, geo.r, "m", "wheel rolling radius"),
-    WF("R", 1, geo.R, "m", "roller radius at the contact"),
-    WF("delta", 1, geo.delta, "rad", "contact angle"),
-    WF("s_wheel", 1, geo.s_wheel, "m", "profile coordinate of the contact point on the wheel"),
-    WF("s_roller", 1, geo.s_roller, "m", "profile coordinate of the contact point on the "
-       "roller"),
-};
-typedef char wheel_fields_complete[(sizeof wheel_fields / sizeof wheel_fields[0])
-                                   == RR_WHEEL_NFIELDS ? 1 : -1];
+    {name, width, (long)offsetof(rr_wheel_contact, member), unit, meaning},
+static const rr_rig_field wheel_fields[] = {RR_WHEEL_FIELDS(WF)};
+RR_STATIC_ASSERT(RR_COUNTOF(wheel_fields) == RR_WHEEL_NFIELDS, wheel_fields_complete);
 
-#define COUNT(a) ((int)(sizeof a / sizeof a[0]))
+#define COUNT(a) RR_COUNTOF(a)
 
 int rr_rig_param_count(void)
 {
@@ -454,227 +417,6 @@ int rr_rig_param_choice(const rr_rig_param *row, const char *choice)
     return -1;
 }
 
-static int nchoices(const rr_rig_param *row)
-{
-    int n = 0;
-    while (row->choices[n])
-        n++;
-    return n;
-}
-
-/* 0 if v is within the row's range (REAL, INT, LIST entries), else the status. */
-static int in_range(const rr_rig_param *row, double v)
-{
-    if (!isfinite(v))
-        return RR_ERR_NONFINITE;
-    if ((row->lo_open ? !(v > row->lo) : !(v >= row->lo))
-        || (row->hi_open ? !(v < row->hi) : !(v <= row->hi)))
-        return RR_ERR_PARAM;
-    return RR_OK;
-}
-
-/* 0 if v may be stored in a (non-LIST) row. */
-static int value_ok(const rr_rig_param *row, double v)
-{
-    int st;
-    switch (row->type) {
-    case RR_RIG_REAL:
-        return in_range(row, v);
-    case RR_RIG_INT:
-        if ((st = in_range(row, v)) != RR_OK)
-            return st;
-        return v == floor(v) ? RR_OK : RR_ERR_PARAM;
-    case RR_RIG_FLAG:
-        if (!isfinite(v))
-            return RR_ERR_NONFINITE;
-        return v == 0.0 || v == 1.0 ? RR_OK : RR_ERR_PARAM;
-    case RR_RIG_CHOICE:
-        if (!isfinite(v))
-            return RR_ERR_NONFINITE;
-        return v >= 0.0 && v < nchoices(row) && v == floor(v) ? RR_OK : RR_ERR_PARAM;
-    default:
-        return RR_ERR_PARAM;
-    }
-}
-
-static void store(rr_rig_config *c, const rr_rig_param *row, double v)
-{
-    char *at = (char *)c + row->offset;
-    if (row->type == RR_RIG_REAL)
-        *(double *)at = v;
-    else
-        *(int *)at = (int)v;
-}
-
-static double load(const rr_rig_config *c, const rr_rig_param *row)
-{
-    const char *at = (const char *)c + row->offset;
-    return row->type == RR_RIG_REAL ? *(const double *)at : (double)*(const int *)at;
-}
-
-/* the row `name` if the config may hold it: not NULL, not a creep row */
-static const rr_rig_param *settable(const char *name, int *st)
-{
-    const rr_rig_param *row = rr_rig_param_find(name);
-    *st = !name ? RR_ERR_NULL : !row || row->creep ? RR_ERR_PARAM : RR_OK;
-    return *st == RR_OK ? row : NULL;
-}
-
-int rr_rig_config_default(rr_rig_config *c)
-{
-    int i;
-    if (!c)
-        return RR_ERR_NULL;
-    memset(c, 0, sizeof *c);
-    for (i = 0; i < NPARAMS; i++) {
-        const rr_rig_param *row = &params[i];
-        if (row->creep)
-            continue;
-        if (row->type == RR_RIG_LIST) {
-            rr_rig_list *l = (rr_rig_list *)(void *)((char *)c + row->offset);
-            l->n = row->nlist;
-            if (row->nlist > 0)
-                memcpy(l->v, row->list, (size_t)row->nlist * sizeof l->v[0]);
-        } else {
-            store(c, row, row->value);
-        }
-    }
-    return RR_OK;
-}
-
-int rr_rig_config_set(rr_rig_config *c, const char *name, double v)
-{
-    int st;
-    const rr_rig_param *row = settable(name, &st);
-    if (!c)
-        return RR_ERR_NULL;
-    if (!row)
-        return st;
-    if ((st = value_ok(row, v)) != RR_OK)
-        return st;
-    store(c, row, v);
-    return RR_OK;
-}
-
-int rr_rig_config_set_choice(rr_rig_config *c, const char *name, const char *choice)
-{
-    int st, k;
-    const rr_rig_param *row = settable(name, &st);
-    if (!c || !choice)
-        return RR_ERR_NULL;
-    if (!row)
-        return st;
-    if ((k = rr_rig_param_choice(row, choice)) < 0)
-        return RR_ERR_PARAM;
-    store(c, row, k);
-    return RR_OK;
-}
-
-int rr_rig_config_set_list(rr_rig_config *c, const char *name, int n, const double *v)
-{
-    int st, i;
-    const rr_rig_param *row = settable(name, &st);
-    rr_rig_list *l;
-    if (!c || (!v && n > 0))
-        return RR_ERR_NULL;
-    if (!row)
-        return st;
-    if (row->type != RR_RIG_LIST || n < (row->nlist > 0) || n > RR_RIG_MAX_LIST)
-        return RR_ERR_PARAM;
-    for (i = 0; i < n; i++)
-        if ((st = in_range(row, v[i])) != RR_OK)
-            return st;
-    l = (rr_rig_list *)(void *)((char *)c + row->offset);
-    l->n = n;
-    if (n > 0)
-        memcpy(l->v, v, (size_t)n * sizeof v[0]);
-    return RR_OK;
-}
-
-int rr_rig_config_check(const rr_rig_config *c, const char **bad)
-{
-    int i, k, st;
-    const char *who = NULL;
-    if (bad)
-        *bad = NULL;
-    if (!c)
-        return RR_ERR_NULL;
-    for (i = 0; i < NPARAMS; i++) {
-        const rr_rig_param *row = &params[i];
-        if (row->creep)
-            continue;
-        if (row->type == RR_RIG_LIST) {
-            const rr_rig_list *l = (const rr_rig_list *)(const void *)((const char *)c
-                                                                       + row->offset);
-            st = l->n >= (row->nlist > 0) && l->n <= RR_RIG_MAX_LIST ? RR_OK : RR_ERR_PARAM;
-            for (k = 0; st == RR_OK && k < l->n; k++)
-                st = in_range(row, l->v[k]);
-        } else {
-            st = value_ok(row, load(c, row));
-        }
-        if (st != RR_OK) {
-            if (bad)
-                *bad = row->name;
-            return st;
-        }
-    }
-    /* the scenario: one start time per target, increasing, inside the duration */
-    st = RR_OK;
-    if (c->target_start.n != c->targets.n) {
-        who = "scenario.target_start_s";
-        st = RR_ERR_PARAM;
-    }
-    for (k = 1; st == RR_OK && k < c->target_start.n; k++)
-        if (!(c->target_start.v[k] > c->target_start.v[k - 1])) {
-            who = "scenario.target_start_s";
-            st = RR_ERR_PARAM;
-        }
-    if (st == RR_OK && !(c->target_start.v[c->target_start.n - 1] < c->duration)) {
-        who = "scenario.target_start_s";
-        st = RR_ERR_PARAM;
-    }
-    if (st == RR_OK && !(c->duration >= c->T * (1.0 - 1e-9))) {
-        who = "scenario.duration_s";
-        st = RR_ERR_PARAM;
-    }
-    /* the adhesion: one mu0 (and A, B, or none) per time, in order; the patch on the roller */
-    if (st == RR_OK && c->schedule_mu0.n != c->schedule_t.n) {
-        who = "adhesion.schedule_mu0";
-        st = RR_ERR_PARAM;
-    }
-    if (st == RR_OK && c->schedule_A.n != 0 && c->schedule_A.n != c->schedule_t.n) {
-        who = "adhesion.schedule_polach_A";
-        st = RR_ERR_PARAM;
-    }
-    if (st == RR_OK && c->schedule_B.n != 0 && c->schedule_B.n != c->schedule_t.n) {
-        who = "adhesion.schedule_polach_B_s_per_m";
-        st = RR_ERR_PARAM;
-    }
-    for (k = 1; st == RR_OK && k < c->schedule_t.n; k++)
-        if (!(c->schedule_t.v[k] >= c->schedule_t.v[k - 1])) {
-            who = "adhesion.schedule_times_s";
-            st = RR_ERR_PARAM;
-        }
-    if (st == RR_OK && !(c->patch_length <= 2.0 * RR_PI * c->roller_radius)) {
-        who = "adhesion.patch_length_m";
-        st = RR_ERR_PARAM;
-    }
-    /* the drives' sampled loops stable at the sample time (rr_rig_check's
-     * rule; an inertia sum that overflows is rr_rig_params_from's RR_ERR_RANGE) */
-    if (st == RR_OK) {
-        rr_speed_loop loops[2];
-        rr_rig_config_speed_loops(c, loops);
-        for (k = 0; k < 2 && st == RR_OK; k++)
-            if (rr_speed_loop_check(&loops[k]) == RR_ERR_PARAM) {
-                who = "scenario.control_sample_time_s";
-                st = RR_ERR_PARAM;
-            }
-    }
-    if (st != RR_OK && bad)
-        *bad = who;
-    return st;
-}
-
 /* The drives of primary values: sample time, PI gains and limits, lags,
  * the wheelset's inertia with its drive's, eq. 13-16's settings (the
  * radii nominal: rr_rig_params_set_table calibrates them). */
@@ -699,7 +441,10 @@ static void drives_from(const rr_rig_config *c, rr_rig_params *p)
     p->creepctl.alpha = c->ctl_alpha;
     p->creepctl.beta = c->ctl_beta;
     p->creepctl.vmin = c->ctl_vmin;
-    p->creepctl.sense = drive_senses[c->drive_mode];
+    /* a mode out of range (rr_rig_config_speed_loops checks nothing, and the
+     * report reads the loops of any config): no sense, which no loop reads */
+    p->creepctl.sense = c->drive_mode >= 0 && c->drive_mode < RR_COUNTOF(drive_senses)
+                      ? drive_senses[c->drive_mode] : 0;
 }
 
 int rr_rig_config_speed_loops(const rr_rig_config *c, rr_speed_loop loops[2])
@@ -740,9 +485,9 @@ static void row_text(const rr_rig_param *row, char *buf, size_t len)
 }
 
 /* The rig's default creep-force method from the creep rows: the method of
- * contact.creep_method, then each other row "contact.<family>_<option>" as
- * the option <option> where the method has it (fastsim_nx -> nx, polach_kS
- * -> kS); a choice's text is looked up among the option's names. */
+ * contact.creep_method, then each row that declares an option (its option
+ * column: contact.fastsim_nx sets nx, contact.polach_kS kS) where the method
+ * has it; a choice's text is looked up among the option's names. */
 static void creep_default(rr_creep_opts *o)
 {
     char text[64];
@@ -753,13 +498,12 @@ static void creep_default(rr_creep_opts *o)
     d = rr_method_get(o->method);
     for (i = 0; d && i < rr_rig_param_count(); i++) {
         const rr_rig_param *row = rr_rig_param_at(i);
-        const char *opt = strchr(row->name, '_');
-        if (!row->creep || !opt || strcmp(row->name, "contact.creep_method") == 0)
+        if (!row->option)
             continue;
         for (k = 0; k < d->nopts; k++) {
             const rr_creep_option *op = &d->opts[k];
             double v = row->value;
-            if (strcmp(op->name, opt + 1) != 0)
+            if (strcmp(op->name, row->option) != 0)
                 continue;
             if (op->type == RR_OPT_CHOICE) {
                 int j;

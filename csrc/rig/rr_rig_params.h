@@ -35,9 +35,12 @@
  * and rr_rig_schedule give the paper's run sample by sample.
  *
  * Rows flagged creep (contact.creep_method, fastsim_*, polach_kA, kS) are the
- * creep-force method's options: declared here with their defaults and
+ * creep-force method and its options: declared here with their defaults and
  * origins, but checked and applied through rr_creep_opts (rr_creep.h), not
- * through rr_rig_config.
+ * through rr_rig_config.  Each creep row but contact.creep_method declares
+ * the method's option it sets (its option column: contact.fastsim_nx sets
+ * "nx"), given to the chosen method where it has that option; the C rig's
+ * default method, the FMU's creep variables and rollerrig.rig read it there.
  *
  * Statuses: RR_ERR_NULL for a NULL pointer, RR_ERR_PARAM for an unknown name,
  * a value of the wrong type (a fraction for an integer, an unknown choice,
@@ -125,7 +128,9 @@ typedef struct {
     const double *list;         /* LIST: the default entries */
     int nlist;
     long offset;                /* of the member in rr_rig_config; -1 for a creep row */
-    int creep;                  /* 1: an option of the creep-force method (see above) */
+    int creep;                  /* 1: the creep-force method or an option of it (see above) */
+    const char *option;         /* a creep row's option of the method ("nx"); NULL for
+                                   contact.creep_method and every other row */
     const char *origin;         /* where the default comes from */
 } rr_rig_param;
 
@@ -175,18 +180,99 @@ int rr_rig_config_set(rr_rig_config *c, const char *name, double v);
 int rr_rig_config_set_choice(rr_rig_config *c, const char *name, const char *choice);
 int rr_rig_config_set_list(rr_rig_config *c, const char *name, int n, const double *v);
 
+/* What a problem of rr_rig_config_report breaks (rr_rig_problem.rule; there). */
+enum rr_rig_rule {
+    RR_RIG_RULE_RANGE = 0, RR_RIG_RULE_COUNT, RR_RIG_RULE_INCREASING, RR_RIG_RULE_NONDECREASING,
+    RR_RIG_RULE_BEFORE, RR_RIG_RULE_SAMPLE, RR_RIG_RULE_CIRCUMFERENCE, RR_RIG_RULE_LOOP,
+    RR_RIG_RULE_SUM
+};
+
+/* One problem of a configuration: the row at fault and what it breaks. */
+typedef struct {
+    const char *key;            /* the row's name (static storage) */
+    const char *other;          /* the other row of a rule between two, or NULL */
+    int status;                 /* RR_ERR_PARAM, RR_ERR_NONFINITE (a NaN or infinity in a
+                                   range), RR_ERR_RANGE (SUM) */
+    int rule;                   /* enum rr_rig_rule */
+    int entry;                  /* a list's entry (from 0), LOOP's drive, or -1 */
+    double value;               /* the value at fault (see the rules) */
+    double lo, hi;              /* the bounds it breaks (see the rules) */
+} rr_rig_problem;
+
+/* Most problems one configuration can have: one per row and one per rule
+ * (checked where the table is declared). */
+#define RR_RIG_MAX_PROBLEMS 128
+
 /*
- * rr_rig_config_check - 0 if every member is within its row's range and the
- * scenario holds together (one start time per target, increasing, all
- * before the duration; at least one sample in the duration), and the
- * adhesion (one mu0 per schedule time, and one A and B each or none; the
- * times non-decreasing; the patch no longer than the roller's
- * circumference), and the drives' sampled speed loops are stable at the
- * sample time (rr_rig_config_speed_loops: RR_ERR_PARAM with *bad
- * "scenario.control_sample_time_s"); else the status, and *bad (may be
- * NULL) the name of the row at fault.
+ * rr_rig_config_report - every problem of c, each with its row, status and
+ * rule, in the order of the rows, then of the rules between them:
+ * each row out of its range (one problem per row: a list's first entry at
+ * fault), then the scenario (one start time per target, increasing, the
+ * last before the duration; at least one sample in the duration), the
+ * adhesion (one mu0 per schedule time, one A and B each or none, the times
+ * non-decreasing; the patch no longer than the roller's circumference), the
+ * drives' sampled speed loops stable at the sample time
+ * (rr_rig_config_speed_loops), the wheelset's inertia with its drive's
+ * finite.  A rule is judged only where the rows it reads are in range (a
+ * bad list is not also miscounted).  The first cap problems go to out[]
+ * (caller memory; RR_RIG_MAX_PROBLEMS always suffice).
+ *   returns: the number of problems (0: c is a rig), which may exceed cap
+ *   status:  RR_ERR_NULL (c NULL, or out NULL with cap > 0)
+ * Each problem's rule, and what its value, other row and bounds are then:
+ *   RANGE          the row's own range: a scalar's value (an INT or FLAG
+ *                  that is not a whole number, a CHOICE's index out of its
+ *                  names) with lo, hi its range (a CHOICE 0 .. names - 1);
+ *                  a LIST's entry `entry` with lo, hi the entries' range, or
+ *                  with entry -1 its length (value) outside lo .. hi entries
+ *   COUNT          one entry per entry of `other`: value the row's entries,
+ *                  hi other's
+ *   INCREASING     the entries increase (scenario.target_start_s): entry the
+ *                  first that does not, value it
+ *   NONDECREASING  the entries do not decrease (adhesion.schedule_times_s)
+ *   BEFORE         the last entry before `other`, the duration: value the
+ *                  entry, hi the duration
+ *   SAMPLE         at least one sample: value (the duration) >= lo, `other`
+ *                  (the sample time), within 1e-9 of it
+ *   CIRCUMFERENCE  at most the circumference of `other` (roller.radius_m):
+ *                  hi = 2 pi R
+ *   LOOP           the sampled speed loop of drive `entry` (0 the roller's,
+ *                  1 the wheelset's) is unstable at this sample time (row
+ *                  scenario.control_sample_time_s): value its largest pole's
+ *                  |z|, lo .. hi the sample times in [RR_RIG_MIN_T,
+ *                  RR_RIG_MAX_T] at which it is stable (NaN, NaN: none;
+ *                  rr_speed_loop_range); judged where the sample time, the
+ *                  inertias, both drives' gains, torque limits and lags and
+ *                  creepage_controller.alpha are in range
+ *   SUM            the row plus `other` is not a finite double (Iyy, the
+ *                  wheelset's inertia with its drive's): value the sum,
+ *                  status RR_ERR_RANGE
+ */
+int rr_rig_config_report(const rr_rig_config *c, rr_rig_problem *out, int cap);
+
+/*
+ * rr_rig_config_check - rr_rig_config_report's first problem: 0 if there is
+ * none, else its status, and *bad (may be NULL) its row's name.  A speed
+ * loop unstable at the sample time is RR_ERR_PARAM with *bad
+ * "scenario.control_sample_time_s" (the message's range:
+ * rr_rig_config_speed_loops, rr_speed_loop_range).
  */
 int rr_rig_config_check(const rr_rig_config *c, const char **bad);
+
+/*
+ * rr_rig_config_put - store v in the scalar row `name` as rr_rig_config_set
+ * does but unchecked, so that rr_rig_config_report judges it with every
+ * other value (the binding's report of a whole parameter set);
+ * rr_rig_config_put_list a LIST row's n entries.  A value the member cannot
+ * hold is not stored: its status (RR_ERR_PARAM: an INT, FLAG or CHOICE value
+ * not a whole number in int's range, more than RR_RIG_MAX_LIST entries or
+ * fewer than none; RR_ERR_NONFINITE: NaN or an infinity for an INT, FLAG or
+ * CHOICE), with *p (may be NULL) its RANGE problem.  RR_ERR_PARAM for an
+ * unknown name, a creep row or a row of the other kind (*p untouched);
+ * RR_ERR_NULL.
+ */
+int rr_rig_config_put(rr_rig_config *c, const char *name, double v, rr_rig_problem *p);
+int rr_rig_config_put_list(rr_rig_config *c, const char *name, int n, const double *v,
+                           rr_rig_problem *p);
 
 /*
  * rr_rig_config_speed_loops - the drives' sampled speed loops of primary
@@ -260,10 +346,40 @@ const rr_rig_field *rr_rig_record_field(int i);   /* NULL unless 0 <= i < RR_REC
 /*
  * The per-wheel contact block: the rr_wheel_contact members a caller (the
  * binding) stores as RR_WHEEL_NVALUES consecutive doubles, field by field
- * (offset, width).
+ * (offset, width).  One list gives the fields and both counts:
+ * RR_WHEEL_FIELDS(F) calls F(name, width, member, unit, meaning) once per
+ * field, member the rr_wheel_contact member it reads.
  */
-#define RR_WHEEL_NFIELDS 23
-#define RR_WHEEL_NVALUES 35
+#define RR_WHEEL_FIELDS(F)                                                                    \
+    F("p", 3, frame.p, "m", "contact point in the rig")                                       \
+    F("theta", 1, theta, "rad", "its angle round the roller axis from the top")               \
+    F("t1", 3, frame.t1, "-", "rolling direction (unit, rig frame)")                          \
+    F("t2", 3, frame.t2, "-", "lateral direction in the contact plane")                       \
+    F("n", 3, n, "-", "normal t1 x t2, into the wheel")                                       \
+    F("cx", 1, creep.cx, "-", "longitudinal creepage")                                        \
+    F("cy", 1, creep.cy, "-", "lateral creepage")                                             \
+    F("cphi", 1, creep.cphi, "rad/m", "spin creepage")                                        \
+    F("V", 1, creep.V, "m/s", "rolling speed used for the creepages")                         \
+    F("N", 1, N, "N", "normal load")                                                          \
+    F("a", 1, hertz.a, "m", "contact ellipse semi-axis along t1")                             \
+    F("b", 1, hertz.b, "m", "contact ellipse semi-axis along t2")                             \
+    F("p0", 1, hertz.p0, "Pa", "peak pressure")                                               \
+    F("fx", 1, f.fx, "N", "creep force on the wheel along t1")                                \
+    F("fy", 1, f.fy, "N", "creep force on the wheel along t2")                                \
+    F("mz", 1, f.mz, "N m", "spin moment on the wheel about n")                               \
+    F("force", 3, force, "N", "contact force on the wheelset, rig frame")                     \
+    F("moment", 3, moment, "N m", "its moment about the wheelset centre")                     \
+    F("r", 1, geo.r, "m", "wheel rolling radius")                                             \
+    F("R", 1, geo.R, "m", "roller radius at the contact")                                     \
+    F("delta", 1, geo.delta, "rad", "contact angle")                                          \
+    F("s_wheel", 1, geo.s_wheel, "m", "profile coordinate of the contact point on the wheel") \
+    F("s_roller", 1, geo.s_roller, "m", "profile coordinate of the contact point on the "     \
+      "roller")
+
+#define RR_WHEEL_ONE_(name, width, member, unit, meaning) +1
+#define RR_WHEEL_WIDTH_(name, width, member, unit, meaning) +(width)
+#define RR_WHEEL_NFIELDS (0 RR_WHEEL_FIELDS(RR_WHEEL_ONE_))
+#define RR_WHEEL_NVALUES (0 RR_WHEEL_FIELDS(RR_WHEEL_WIDTH_))
 const rr_rig_field *rr_wheel_field(int i);        /* NULL unless 0 <= i < RR_WHEEL_NFIELDS */
 
 /* rr_wheel_store - the block of w into v[RR_WHEEL_NVALUES]; stride between values. */

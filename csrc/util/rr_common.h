@@ -59,6 +59,12 @@ const char *rr_status_message(int status);
 
 #define RR_PI 3.14159265358979323846
 
+/* Tables that cannot drift (the core's own, not for callers): the entries
+ * of an array counted by its size, and a condition the compiler checks
+ * (C99 has no _Static_assert: an array of size -1 stops the build). */
+#define RR_COUNTOF(a) ((int)(sizeof(a) / sizeof((a)[0])))
+#define RR_STATIC_ASSERT(cond, name) typedef char rr_static_assert_##name[(cond) ? 1 : -1]
+
 /* The caller's interrupt hook of a computation that may take seconds (the
  * exact theory's solve): poll(ctx) is called between its steps, and a
  * nonzero return stops it with RR_ERR_INTERRUPTED (outputs NaN).  poll must

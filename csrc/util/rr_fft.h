@@ -119,11 +119,14 @@ typedef struct {
     size_t cap;          /* doubles of one component of a plane (>= L1 L2) */
     double *plane[2];    /* two scratch planes: re [0, cap), im [cap, 2 cap) */
     const double *zero;  /* vmax zeros */
-    double *tmp;         /* 36 lines of vmax: partial butterflies */
+    double *tmp;         /* RR_CONV2D_TMP_LINES lines of vmax: partial butterflies */
     unsigned ready;      /* RR_CONV2D_READY once initialised */
 } rr_conv2d;
 
 #define RR_CONV2D_READY 0x52524654u
+/* scratch lines of the partial butterflies: r in and r out, real and
+ * imaginary, for the largest radix (9) */
+#define RR_CONV2D_TMP_LINES 36
 
 /*
  * rr_conv2d_workspace_len - doubles of workspace rr_conv2d_init needs for

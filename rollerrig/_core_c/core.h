@@ -14,6 +14,7 @@
  *   geometry.c     contact search, contact tables, profile splines and tables
  *   rig_contact.c  the rig's contact model over arrays of states
  *   rig.c          the rig in time (the Rig type), its schedule and speed loops
+ *   rig_config.c   every problem of the rig's parameters (rig_config_report)
  *
  * Thin by design: no physics here.  Every batch call takes 1-D float64
  * arrays, each of length n or 1 (a length-1 array is broadcast; any stride
@@ -207,5 +208,7 @@ CORE_PRIVATE extern PyTypeObject RigType;
 
 CORE_PRIVATE PyObject *py_rig_schedule(PyObject *self, PyObject *args);
 CORE_PRIVATE PyObject *py_rig_speed_loops(PyObject *self, PyObject *arg);
+/* rig_config.c */
+CORE_PRIVATE PyObject *py_rig_config_report(PyObject *self, PyObject *arg);
 
 #endif

@@ -73,6 +73,9 @@ static PyMethodDef core_methods[] = {
     {"rig_speed_loops", py_rig_speed_loops, METH_O,
      "rig_speed_loops({\"section.key\": value}) -> ((stable, rho, lo, hi) of the roller's "
      "and the wheelset's sampled speed loops)"},
+    {"rig_config_report", py_rig_config_report, METH_O,
+     "rig_config_report({\"section.key\": value}) -> [(key, status, rule, other, entry, "
+     "value, lo, hi), ...]: every problem of the rig's parameters (rr_rig_config_report)"},
     {"status_message", py_status_message, METH_O, "status_message(code) -> str"},
     {NULL, NULL, 0, NULL}
 };
@@ -96,7 +99,7 @@ static int add_double(PyObject *m, const char *name, double v)
 
 /* The declarations of rr_rig_params.h as tuples of tuples (module constants):
  * RIG_PARAMETERS rows (name, unit, type, default, lo, hi, lo_open, hi_open,
- * choices, text, creep, origin) with type "real", "int", "flag", "choice" or
+ * choices, text, creep, origin, option) with type "real", "int", "flag", "choice" or
  * "list" and default a float, int, bool, str or tuple of floats (a creep row:
  * None, its text is the TOML default); RIG_SECTIONS (name, note);
  * RIG_RETIRED (name, reason); RIG_RECORD and RIG_WHEEL_FIELDS (name, width,
@@ -157,10 +160,10 @@ static PyObject *param_tuple(int i)
     const rr_rig_param *r = rr_rig_param_at(i);
     PyObject *dflt = param_default(r), *choices = names_tuple(r->choices), *res = NULL;
     if (dflt && choices)
-        res = Py_BuildValue("(sssOddOOOzOs)", r->name, r->unit, types[r->type], dflt, r->lo,
+        res = Py_BuildValue("(sssOddOOOzOsz)", r->name, r->unit, types[r->type], dflt, r->lo,
                             r->hi, r->lo_open ? Py_True : Py_False,
                             r->hi_open ? Py_True : Py_False, choices, r->text,
-                            r->creep ? Py_True : Py_False, r->origin);
+                            r->creep ? Py_True : Py_False, r->origin, r->option);
     Py_XDECREF(dflt);
     Py_XDECREF(choices);
     return res;

@@ -42,8 +42,9 @@ class RigParameter(NamedTuple):
     hi_open: bool
     choices: tuple      #: the names of a choice
     text: str           #: the default as TOML text (None: a choice, its name)
-    creep: bool         #: an option of the creep-force method (rollerrig.contact.creep)
+    creep: bool         #: the creep-force method or an option of it (rollerrig.contact.creep)
     origin: str         #: where the default comes from
+    option: str         #: a creep row's option of the method ("nx"; None: not one)
 
 
 #: every parameter of the rig, declared once in C: name, unit, type,
@@ -286,12 +287,11 @@ def _rule(p):
                     _core.RIG_MAX_LIST, empty=not p.default)
 
 #: the parameter file's keys (contact section) that set a creep-force option:
-#: key -> the option's name in the registry (rollerrig.METHODS), the declared
-#: creep rows "contact.<family>_<option>" read as the C side reads them
-#: (rr_rig_params.c, creep_default); each is given to the chosen method where
+#: key -> the option's name in the registry (rollerrig.METHODS), as each
+#: creep row declares it (its option column, csrc/rig/rr_rig_params.c, which
+#: the C rig and the FMU read too); each is given to the chosen method where
 #: it has that option, and checked as the registry says
-_FILE_OPTIONS = {p.name.split(".", 1)[1]: p.name.split("_", 1)[1] for p in PARAMETERS
-                 if p.creep and p.name != "contact.creep_method"}
+_FILE_OPTIONS = {p.name.split(".", 1)[1]: p.option for p in PARAMETERS if p.option}
 
 
 def _option_rule(name):
