@@ -6,6 +6,10 @@
  * Reference: the seed paper, section 5, eq. (10)-(16); domain notes section 7,
  * items 12-14.  The numbers of the plants below are test values chosen for a
  * well-damped loop, not the rig's defaults.
+ *
+ * Over 800 lines on purpose: one test program per module, each check a
+ * function of its own read by its name (main lists them), so the file is
+ * held a check at a time, not whole; split it where a second module appears.
  */
 #include <math.h>
 #include <stdio.h>

@@ -9,6 +9,10 @@
  *     test set: van der Pol y1' = y2, y2' = ((1 - y1^2) y2 - y1)/eps,
  *     eps = 1e-6 (mu = 1000), y(0) = (2, -0.66), stiff and smooth on
  *     [0, 0.5] (the first relaxation jump is near t = 0.8).
+ *
+ * Over 800 lines on purpose: one test program per module, each check a
+ * function of its own read by its name (main lists them), so the file is
+ * held a check at a time, not whole; split it where a second module appears.
  */
 #include <float.h>
 #include <math.h>
