@@ -99,6 +99,21 @@ def test_the_c_report_names_every_key_the_python_rules_name(params):
             "range", "count", "increasing", "nondecreasing", "before", "circumference")
 
 
+def test_the_report_reads_choice_names_whole():
+    """A choice's name with a NUL inside is not its head (rr_rig_param_choice
+    read 'braking' in 'braking\\0x'), and a str UTF-8 cannot hold is no
+    name, not an exception; a key with a NUL inside is no row."""
+    for bad in ("braking\0x", "\ud800", "braking "):
+        assert _core.rig_config_report({"scenario.drive_mode": bad}) == [
+            ("scenario.drive_mode", PARAM, "range", None, -1,
+             pytest.approx(math.nan, nan_ok=True), 0.0, 1.0)]
+        with pytest.raises(rr.RollerRigError, match="scenario.drive_mode must be 'braking' or "
+                                                    "'traction'"):
+            rig.check_parameters({"scenario": {"drive_mode": bad}})
+    with pytest.raises(ValueError, match="not a rig parameter"):
+        _core.rig_config_report({"wheelset.mass_kg\0x": 1.0})
+
+
 def test_the_c_report_carries_what_the_messages_need():
     bad = _core.rig_config_report({"scenario.targets": [0.01, 0.02],
                                    "adhesion.patch_length_m": 2.0, "wheelset.mass_kg": -1.0,
@@ -108,6 +123,7 @@ def test_the_c_report_carries_what_the_messages_need():
         ("integration.table_rows", PARAM, "range", None, -1, 2.5, 2.0, 100000.0),
         ("scenario.target_start_s", PARAM, "count", "scenario.targets", -1, 4.0,
          pytest.approx(math.nan, nan_ok=True), 2.0),
+        # (a count's lo: 0 where none would do too, NaN where not)
         ("adhesion.patch_length_m", PARAM, "circumference", "roller.radius_m", -1,
          2.0, pytest.approx(math.nan, nan_ok=True), 2 * math.pi * 0.16)]
     # the drives' loops, as rig_speed_loops gives them, and the inertias' sum
@@ -122,6 +138,11 @@ def test_the_c_report_carries_what_the_messages_need():
         ("wheelset.spin_inertia_kg_m2", RANGE, "sum",
          "wheelset_drive.drive_inertia_kg_m2", -1, math.inf,
          pytest.approx(math.nan, nan_ok=True), pytest.approx(math.nan, nan_ok=True))]
+    times = {"adhesion.schedule_times_s": [0.0, 1.0], "adhesion.schedule_mu0": [0.3],
+             "adhesion.schedule_polach_A": [0.3]}
+    assert [(key, lo) for key, _, rule, _, _, _, lo, _ in _core.rig_config_report(times)] == [
+        ("adhesion.schedule_mu0", pytest.approx(math.nan, nan_ok=True)),
+        ("adhesion.schedule_polach_A", 0.0)]
     assert _core.rig_config_report({}) == []
     for unknown in ({"wheelset.mass": 1.0}, {"contact.fastsim_nx": 20}):
         with pytest.raises(ValueError, match="not a rig parameter"):
