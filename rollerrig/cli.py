@@ -170,10 +170,9 @@ def _as_option(message, prefix="simulate: ", options=_OPTION_OF):
     named as the option the user typed (duration -> --duration)."""
     text = str(message)
     text = text[len(prefix):] if text.startswith(prefix) else text
-    word = re.match(r"\w+", text)
-    if word and word[0] in options:
-        text = options[word[0]] + text[word.end():]
-    return text
+    # the message's first word, and each listed problem's ("N problems:\n  dt = ...")
+    return re.sub(r"^(  )?(\w+)", lambda m: (m[1] or "") + options.get(m[2], m[2]), text,
+                  flags=re.M)
 
 
 def _positive_int(text):

@@ -192,6 +192,18 @@ def test_errors_after_parsing_name_the_option(argv, option, tmp_path, capsys):
     assert os.listdir(tmp_path) == []
 
 
+def test_every_problem_of_a_list_names_the_option(tmp_path, capsys):
+    """A sample time at which both drives' loops ring is two problems (the C
+    report's "loop", one per drive); each line names --dt, not simulate's
+    dt (only the message's first word was renamed)."""
+    code, out, err = run_cli(capsys, "--dt", "0.01", "--out", str(tmp_path / "out"))
+    lines = err.splitlines()
+    assert code == 2 and lines[0] == "rollerrig simulate: 2 problems:", err
+    assert [line[:40] for line in lines[1:]] == [
+        "  --dt = 0.01 s: the roller drive's samp", "  --dt = 0.01 s: the wheelset drive's sa"]
+    assert not (tmp_path / "out").exists()
+
+
 def test_methods_offered_are_the_rigs_from_the_registry(capsys):
     """--method's help, its choices and its error list the methods of the
     registry the rig steps with (in_rig), and only those."""

@@ -35,8 +35,8 @@ def test_every_row_is_complete_and_its_text_is_its_value():
             continue
         if p.type in ("real", "int"):
             assert float(p.text) == p.default, p.name
-            assert rig.params._rule(p)(p.default) is None
-            assert rig.params._rule(p)(math.nan) is not None
+            assert rig.params._in_range(p.name, p.default)
+            assert not rig.params._in_range(p.name, math.nan)
         if p.type == "list":
             assert list(tomllib.loads(f"v = {p.text}")["v"]) == list(p.default), p.name
         if p.type == "choice":
@@ -81,22 +81,50 @@ def _c_values(P):
     {"scenario": {"targets": [0.5, 2.0], "target_start_s": [0.0]}},
     {"scenario": {"drive_mode": "coasting", "targets": [0.1, True]},
      "integration": {"linear_first_stage": 1}, "wheelset": {"conicity": "x"}},
+    {"wheelset": {"spin_inertia_kg_m2": 1.5e308},
+     "wheelset_drive": {"drive_inertia_kg_m2": 1.5e308}},
 ])
-def test_the_c_report_names_every_key_the_python_rules_name(params):
+def test_a_parameter_set_is_judged_by_the_c_report(params):
     """rig_config_report (rr_rig_config_report, issue 23): every problem of a
     parameter set with its key, status, rule, other key and bounds, in one
-    call: each key rig.py's own rules name is in it, and each of its problems
-    names one of them (a rule between two keys names both)."""
+    call; check_parameters says each of them (but for the rules a run judges
+    at its sample time) in one sentence that starts with its key and names
+    the other, in the report's order, and writes none of the rules again."""
     P, problems = rig.params._parameter_problems(params)
-    named = {p.split(" ", 1)[0] for p in problems}
-    report = _core.rig_config_report(_c_values(P))
-    assert named and report
-    keys = [{key, other} - {None} for key, _, _, other, *_ in report]
-    assert named <= set().union(*keys), (problems, report)
-    assert all(k & named for k in keys), (problems, report)
-    for key, status, rule, other, entry, value, lo, hi in report:
-        assert status in (PARAM, NONFINITE) and rule in (
-            "range", "count", "increasing", "nondecreasing", "before", "circumference")
+    report = [r for r in _core.rig_config_report(_c_values(P))
+              if r[2] not in rig.params._RUN_RULES]
+    assert report and len(problems) == len(report), (problems, report)
+    for sentence, (key, status, rule, other, entry, value, lo, hi) in zip(problems, report):
+        assert sentence.split(" ", 1)[0] == key and (other is None or other in sentence)
+        assert status in (PARAM, NONFINITE, RANGE) and rule in (
+            "range", "count", "increasing", "nondecreasing", "before", "circumference", "sum")
+
+
+def test_a_rule_between_creep_options_is_the_registrys():
+    """Polach's kS <= kA is the registry's method check (rr_polach.c), not
+    written again for the file: the sentence names both keys and the rule
+    as the registry words it."""
+    P, problems = rig.params._parameter_problems({"contact": {"polach_kA": 0.5,
+                                                              "polach_kS": 0.9}})
+    assert problems == ["contact.polach_kS must satisfy 0 < kS <= kA <= 1 (method 'polach'), "
+                        "got contact.polach_kA = 0.5, contact.polach_kS = 0.9"]
+    assert rig.params._parameter_problems({"contact": {"polach_kA": 0.5,
+                                                       "polach_kS": 0.5}})[1] == []
+
+
+def test_the_report_reads_choice_names_whole():
+    """A choice's name with a NUL inside is not its head (rr_rig_param_choice
+    read 'braking' in 'braking\\0x'), and a str UTF-8 cannot hold is no
+    name, not an exception; a key with a NUL inside is no row."""
+    for bad in ("braking\0x", "\ud800", "braking "):
+        assert _core.rig_config_report({"scenario.drive_mode": bad}) == [
+            ("scenario.drive_mode", PARAM, "range", None, -1,
+             pytest.approx(math.nan, nan_ok=True), 0.0, 1.0)]
+        with pytest.raises(rr.RollerRigError, match="scenario.drive_mode must be 'braking' or "
+                                                    "'traction'"):
+            rig.check_parameters({"scenario": {"drive_mode": bad}})
+    with pytest.raises(ValueError, match="not a rig parameter"):
+        _core.rig_config_report({"wheelset.mass_kg\0x": 1.0})
 
 
 def test_the_c_report_carries_what_the_messages_need():
@@ -108,6 +136,7 @@ def test_the_c_report_carries_what_the_messages_need():
         ("integration.table_rows", PARAM, "range", None, -1, 2.5, 2.0, 100000.0),
         ("scenario.target_start_s", PARAM, "count", "scenario.targets", -1, 4.0,
          pytest.approx(math.nan, nan_ok=True), 2.0),
+        # (a count's lo: 0 where none would do too, NaN where not)
         ("adhesion.patch_length_m", PARAM, "circumference", "roller.radius_m", -1,
          2.0, pytest.approx(math.nan, nan_ok=True), 2 * math.pi * 0.16)]
     # the drives' loops, as rig_speed_loops gives them, and the inertias' sum
@@ -122,6 +151,11 @@ def test_the_c_report_carries_what_the_messages_need():
         ("wheelset.spin_inertia_kg_m2", RANGE, "sum",
          "wheelset_drive.drive_inertia_kg_m2", -1, math.inf,
          pytest.approx(math.nan, nan_ok=True), pytest.approx(math.nan, nan_ok=True))]
+    times = {"adhesion.schedule_times_s": [0.0, 1.0], "adhesion.schedule_mu0": [0.3],
+             "adhesion.schedule_polach_A": [0.3]}
+    assert [(key, lo) for key, _, rule, _, _, _, lo, _ in _core.rig_config_report(times)] == [
+        ("adhesion.schedule_mu0", pytest.approx(math.nan, nan_ok=True)),
+        ("adhesion.schedule_polach_A", 0.0)]
     assert _core.rig_config_report({}) == []
     for unknown in ({"wheelset.mass": 1.0}, {"contact.fastsim_nx": 20}):
         with pytest.raises(ValueError, match="not a rig parameter"):
@@ -172,3 +206,93 @@ def test_schedule_is_the_c_schedule():
     assert np.array_equal(xi, want, equal_nan=True) and np.isnan(xi[0])
     with pytest.raises(ValueError, match="targets must have 1 to 256"):
         rig.schedule(P, 1.0, dt, [0.01] * 257, [0.0] * 257, 5.0)
+
+
+# ------------------------------------------------------------------ what the rig cannot start with
+
+@pytest.fixture
+def builds(monkeypatch):
+    """The C rigs and contact tables built from here on (the table cache
+    emptied first, so that each table is counted)."""
+    built = {"rig": 0, "table": 0}
+    real_rig, real_table = _core.Rig, _core.rig_table
+
+    def counted(kind, real):
+        def call(*args):
+            built[kind] += 1
+            return real(*args)
+        return call
+    monkeypatch.setattr(_core, "Rig", counted("rig", real_rig))
+    monkeypatch.setattr(_core, "rig_table", counted("table", real_table))
+    rig.build._rig_table.cache_clear()
+    yield built
+    rig.build._rig_table.cache_clear()
+
+
+#: a scenario file's usual changes, none of them at fault
+CHANGED = {"wheelset": {"yaw_inertia_kg_m2": 0.9}, "suspension": {"kx_N_per_m": 2e5},
+           "contact": {"poisson_ratio": 0.29}}
+
+
+def _with(**sections):
+    params = {k: dict(v) for k, v in CHANGED.items()}
+    for section, values in sections.items():
+        params.setdefault(section, {}).update(values)
+    return params
+
+
+SHORT = {"duration_s": 0.002, "targets": [0.02], "target_start_s": [0.0]}
+
+
+def test_a_rule_the_report_judges_is_said_before_anything_is_built(builds):
+    """The inertias' sum (Iyy) overflowing, and a scenario's duration under
+    one sample, are rules of the C report: named with their keys before a
+    rig is built.  Before, the sum gave "rig_speed_loops: input is NaN or
+    infinite" (no key), the duration one rebuild per changed value (5 rigs
+    here) to find the culprit."""
+    with pytest.raises(rr.RollerRigError) as e:
+        rr.simulate(params=_with(wheelset={"spin_inertia_kg_m2": 1.5e308},
+                                 wheelset_drive={"drive_inertia_kg_m2": 1.5e308}))
+    assert str(e.value) == ("simulate: params: wheelset.spin_inertia_kg_m2 + "
+                            "wheelset_drive.drive_inertia_kg_m2 must be a finite number (the "
+                            "wheelset's inertia with its drive's), got 1.5e+308 + 1.5e+308")
+    with pytest.raises(rr.RollerRigError) as e:
+        rr.build_rig(_with(scenario=SHORT))
+    assert str(e.value) == ("build_rig: scenario.duration_s = 0.002 s is shorter than one "
+                            "sample (scenario.control_sample_time_s = 0.004 s)")
+    with pytest.raises(rr.RollerRigError, match=r"^build_rig: scenario.duration_s = 0.002 s is "
+                                                r"shorter than one sample \(dt = 0.004 s\)$"):
+        rr.build_rig(_with(scenario=SHORT), dt=0.004)
+    assert builds == {"rig": 0, "table": 0}
+    # simulate's duration is the run's, as its dt is: the file's does not refuse it
+    res = rr.simulate(duration=0.04, targets=[0.02], target_times=[0.0],
+                      params={"scenario": SHORT})
+    assert res.status >= 0 and len(res) == 10
+
+
+def test_the_start_no_rule_predicts_is_searched_once_per_changed_value(builds):
+    """What stays of the rebuilds (rollerrig.rig.build._culprits): values each
+    in range that the start's evaluation cannot carry (the contact's
+    RR_ERR_RANGE) are found by putting each changed value back alone: one rig
+    per changed value the start reads.  A geometry with no contact table
+    is searched among the changed geometry keys only, by their tables, with
+    no rig (before: a rig and its table per changed value of any kind)."""
+    with pytest.raises(rr.RollerRigError) as e:
+        rr.build_rig(_with(wheelset={"mass_kg": 1e300}))
+    assert str(e.value).startswith("build_rig: the rig cannot start with params "
+                                   "wheelset.mass_kg = 1e+300: Rig: ")
+    assert builds == {"rig": 1 + 4, "table": 1}
+    rig.build._rig_table.cache_clear()
+    builds.update(rig=0, table=0)
+    with pytest.raises(rr.RollerRigError) as e:
+        rr.build_rig(_with(wheelset={"wheel_radius_m": 1e300}))
+    assert str(e.value).startswith("build_rig: the rig cannot start with params "
+                                   "wheelset.wheel_radius_m = 1e+300: params: the rig's geometry")
+    assert builds == {"rig": 0, "table": 2}
+    rig.build._rig_table.cache_clear()
+    builds.update(rig=0, table=0)
+    # a given roller speed is the run's: named as the argument
+    with pytest.raises(rr.RollerRigError, match=r"^build_rig: the rig cannot start with "
+                                                r"roller_speed = 1.7e\+308: "):
+        rr.build_rig(roller_speed=1.7e308)
+    assert builds == {"rig": 2, "table": 1}

@@ -576,7 +576,7 @@ static int predict_report(const rr_rig_config *c, rr_rig_problem *out, int cap)
         for (k = 0; k < 3; k++)
             if (sched[k]->n != st->n && !(k > 0 && sched[k]->n == 0))
                 problem(&out[n++], sched_names[k], "adhesion.schedule_times_s", RR_ERR_PARAM,
-                        RR_RIG_RULE_COUNT, -1, sched[k]->n, NAN, st->n);
+                        RR_RIG_RULE_COUNT, -1, sched[k]->n, k > 0 ? 0.0 : NAN, st->n);
         for (k = 1; k < st->n; k++)
             if (!(st->v[k] >= st->v[k - 1]))
                 break;

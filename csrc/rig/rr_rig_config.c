@@ -254,12 +254,14 @@ static const char *const loop_rows[] = {
     "wheelset_drive.torque_limit_N_m", "wheelset_drive.lag_time_constant_s",
     "creepage_controller.alpha", NULL};
 
-/* A schedule list of as many entries as the times, or (may_be_empty) none. */
+/* A schedule list of as many entries as the times, or (may_be_empty) none:
+ * lo 0 says that none would do too. */
 static void schedule_count(const rr_rig_config *c, const char *key, const rr_rig_list *l,
                            int may_be_empty, sink *s)
 {
     if (l->n != c->schedule_t.n && !(may_be_empty && l->n == 0))
-        add(s, key, TIMES, RR_ERR_PARAM, RR_RIG_RULE_COUNT, -1, l->n, NAN, c->schedule_t.n);
+        add(s, key, TIMES, RR_ERR_PARAM, RR_RIG_RULE_COUNT, -1, l->n, may_be_empty ? 0.0 : NAN,
+            c->schedule_t.n);
 }
 
 /* rr_rig_config_report; scans 0: a loop's pole and stable sample times

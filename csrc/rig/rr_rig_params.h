@@ -225,7 +225,8 @@ typedef struct {
  *                  a LIST's entry `entry` with lo, hi the entries' range, or
  *                  with entry -1 its length (value) outside lo .. hi entries
  *   COUNT          one entry per entry of `other`: value the row's entries,
- *                  hi other's
+ *                  hi other's; lo 0 where none would do too (the schedule's
+ *                  A and B), else NaN
  *   INCREASING     the entries increase (scenario.target_start_s): entry the
  *                  first that does not, value it
  *   NONDECREASING  the entries do not decrease (adhesion.schedule_times_s)

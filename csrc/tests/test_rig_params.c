@@ -78,7 +78,7 @@ static void test_report(void)
           "3: four start times for two targets");
     CHECK(is(&p[3], "adhesion.schedule_mu0", RR_ERR_PARAM, RR_RIG_RULE_COUNT)
           && strcmp(p[3].other, "adhesion.schedule_times_s") == 0 && p[3].value == 2
-          && p[3].hi == 3, "4: two mu0 for three times");
+          && p[3].hi == 3 && isnan(p[3].lo), "4: two mu0 for three times (none would not do)");
     CHECK(is(&p[4], "adhesion.schedule_times_s", RR_ERR_PARAM, RR_RIG_RULE_NONDECREASING)
           && p[4].entry == 2 && p[4].value == 1.0, "5: the times decrease at entry 2");
     /* no sixth: the patch's rule reads the radius, out of range; the loops
@@ -126,8 +126,8 @@ static void test_report(void)
     rr_rig_config_put_list(&c, "adhesion.schedule_polach_B_s_per_m", 1, mu, NULL);
     n = rr_rig_config_report(&c, p, RR_RIG_MAX_PROBLEMS);
     CHECK(n == 2 && is(&p[0], "adhesion.schedule_polach_B_s_per_m", RR_ERR_PARAM,
-                       RR_RIG_RULE_COUNT) && p[0].value == 1 && p[0].hi == 2,
-          "one B for two times (none for A is fine)");
+                       RR_RIG_RULE_COUNT) && p[0].value == 1 && p[0].hi == 2 && p[0].lo == 0.0,
+          "one B for two times (none for A is fine, and would be for B: lo 0)");
     CHECK(is(&p[1], "adhesion.patch_length_m", RR_ERR_PARAM, RR_RIG_RULE_CIRCUMFERENCE)
           && strcmp(p[1].other, "roller.radius_m") == 0 && p[1].hi == 2.0 * RR_PI * c.roller_radius,
           "a patch longer than the roller's circumference");

@@ -6,6 +6,7 @@
 #include "core.h"
 
 #include <math.h>
+#include <string.h>
 
 /* rig_config_report(params) -> [(key, status, rule, other, entry, value, lo,
  * hi), ...]: every problem of the rig's primary values {"section.key":
@@ -66,11 +67,17 @@ static int report_value(const rr_rig_param *r, PyObject *v, PyObject *real, PyOb
                                                                            : (int)n,
                                           vals, p) == RR_OK ? 0 : 1;
     } else if (r->type == RR_RIG_CHOICE) {
-        const char *text = PyUnicode_Check(v) ? PyUnicode_AsUTF8(v) : NULL;
+        Py_ssize_t len = 0;
+        const char *text = PyUnicode_Check(v) ? PyUnicode_AsUTF8AndSize(v, &len) : NULL;
         int k;
-        if (!text && PyErr_Occurred())
-            return -1;
-        if (text && (k = rr_rig_param_choice(r, text)) >= 0)
+        if (!text && PyErr_Occurred()) {
+            /* a str UTF-8 cannot hold (a lone surrogate) is no name */
+            if (!PyErr_ExceptionMatches(PyExc_UnicodeEncodeError))
+                return -1;
+            PyErr_Clear();
+        }
+        /* a name with a NUL inside is none of the names, not its head */
+        if (text && strlen(text) == (size_t)len && (k = rr_rig_param_choice(r, text)) >= 0)
             return rr_rig_config_put(c, r->name, k, p) == RR_OK ? 0 : 1;
         ok = 0;
     } else if (r->type == RR_RIG_FLAG) {
@@ -154,8 +161,10 @@ PyObject *py_rig_config_report(PyObject *self, PyObject *arg)
         goto done;
     rr_rig_config_default(&c);
     while (PyDict_Next(arg, &pos, &key, &v)) {
-        const char *name = PyUnicode_Check(key) ? PyUnicode_AsUTF8(key) : NULL;
-        const rr_rig_param *row = name ? rr_rig_param_find(name) : NULL;
+        Py_ssize_t len = 0;
+        const char *name = PyUnicode_Check(key) ? PyUnicode_AsUTF8AndSize(key, &len) : NULL;
+        const rr_rig_param *row = name && strlen(name) == (size_t)len ? rr_rig_param_find(name)
+                                                                      : NULL;
         int st;
         if (!row || row->creep) {
             if (!PyErr_Occurred())

@@ -3,7 +3,7 @@ rig built from them (build), a run and its record (run, result), the rig's
 contact model over arrays (contact), a controller of the caller's in the
 loop (control), one wheel solved by the exact theory (exact).  This face
 hands on the public names of its rooms; a private name comes from its room
-(rollerrig.rig.params._RULES, say)."""
+(rollerrig.rig.params._report_problems, say)."""
 from .params import (DEFAULTS_PATH, MAX_DT, MAX_DURATION, MAX_PARAMETER_FILE_BYTES, MIN_DT,
                      ODE_METHODS, PARAMETERS, RETIRED, RigParameter, check_parameters,
                      default_parameters, defaults_toml, load_parameters, write_defaults)

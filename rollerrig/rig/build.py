@@ -13,8 +13,8 @@ from .._errors import RollerRigError, status_message
 from .._binding import METHODS, _as_float, check_creep_options, core, loop_method, rig_method
 from ..geometry.profiles import Profile
 from ..geometry.wheelset import MAX_ROWS, ContactTable, RigGeometry
-from .params import (_FILE_OPTIONS, MAX_DT, MIN_DT, ODE_METHODS, PARAMETERS, _check_dt,
-                     _defaults, _integer, _parameters, _real_arg, _short)
+from .params import (_FILE_OPTIONS, _SAMPLE_TIME, PARAMETERS, _c_values, _check_run, _defaults,
+                     _parameters, _short)
 
 
 #: the creep-force methods the rig steps with (the registry's in_rig: no
@@ -22,13 +22,13 @@ from .params import (_FILE_OPTIONS, MAX_DT, MIN_DT, ODE_METHODS, PARAMETERS, _ch
 RIG_METHODS = tuple(name for name, m in METHODS.items() if m.in_rig)
 
 
-def _c_params(P, dt, substeps, ode):
+def _c_params(P, dt, substeps, ode, run=None):
     """The C rig's primary values {"section.key": value} (csrc/rig/rr_rig_params.h,
-    rr_rig_config) of checked parameters, with the call's sample time,
+    rr_rig_config) of checked parameters, with the run's own values (run:
+    simulate's duration, targets, ...; checked) and the call's sample time,
     substeps and integrator; the C side derives the rig's parameters."""
-    cp = {p.name: P[p.name.split(".")[0]][p.name.split(".")[1]]
-          for p in PARAMETERS if not p.creep}
-    cp["scenario.control_sample_time_s"] = float(dt)
+    cp = {**_c_values(P), **(run or {})}
+    cp[_SAMPLE_TIME] = float(dt)
     cp["integration.substeps"] = int(substeps)
     cp["integration.method"] = ode
     return cp
@@ -241,102 +241,98 @@ class Rig:
 
 
 def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, creep,
-           given_dt=None):
-    """(the C rig, dt, roller speed [m/s], creep options) of checked parameters P;
-    given_dt: whether the caller gave dt (default: dt not None), for messages."""
-    S, I = P["scenario"], P["integration"]
+           given_dt=None, run=None, names=None):
+    """(the C rig, its table, dt, roller speed [m/s], method) of checked
+    parameters P; given_dt: whether the caller gave dt (default: dt not
+    None), for messages; run, names: more of the run's own values
+    {"section.key": value} (simulate's duration, targets, start times) and
+    the arguments that gave them."""
     given_dt = dt is not None if given_dt is None else given_dt
-    dt = _check_dt(func, dt if dt is not None else S["control_sample_time_s"])
-    substeps = substeps if substeps is not None else I["substeps"]
-    if _integer(1, 1000)(substeps):
-        raise RollerRigError(f"{func}: substeps must be an integer from 1 to 1000, "
-                             f"got {substeps!r}")
-    ode = ode if ode is not None else I["method"]
-    if ode not in ODE_METHODS:
-        raise RollerRigError(f"{func}: ode must be one of {sorted(ODE_METHODS)}, got {ode!r}")
-    _check_loops(func, P, _c_params(P, dt, int(substeps), ode),
-                 "dt" if given_dt else "scenario.control_sample_time_s")
+    run, names = dict(run or {}), dict(names or {})
+    run[_SAMPLE_TIME] = dt if dt is not None else P["scenario"]["control_sample_time_s"]
+    if given_dt:
+        names[_SAMPLE_TIME] = "dt"
+    for key, arg, v in (("integration.substeps", "substeps", substeps),
+                        ("integration.method", "ode", ode),
+                        ("scenario.roller_speed_m_s", "roller_speed", roller_speed)):
+        if v is not None:
+            run[key], names[key] = v, arg
+    # every value and rule of the run's configuration (the drives' loops at
+    # dt too), each problem named, before anything is built
+    values = _check_run(func, P, run, names)
+    dt, substeps, ode = (float(values[_SAMPLE_TIME]), int(values["integration.substeps"]),
+                         values["integration.method"])
+    V = float(values["scenario.roller_speed_m_s"])
     opts = _creep_options(func, P, method, nx, ny, creep)
-    c_opts = opts
-    V = _real_arg(func, "roller_speed", roller_speed if roller_speed is not None
-                  else S["roller_speed_m_s"], unit="m/s")
     if start not in ("rolling", "rest"):
         raise RollerRigError(f"{func}: start must be 'rolling' or 'rest', got {start!r}")
 
-    def make(P, V):
-        V = P["scenario"]["roller_speed_m_s"] if V is None else V
-        table = _geometry(P)
-        cp = _c_params(P, dt, int(substeps), ode)
+    def make(Q, run, table=None):
+        table = _geometry(Q) if table is None else table
+        cp = _c_params(Q, dt, substeps, ode, run)
         # the C side (rr_rig_params_set_table) takes eq. 15-16's radii at the
         # centred wheelset's rolling radii, as a rig is calibrated: the
         # profiles' nominal radii would bias the creepage by
         # (r - r0)/r0 + (R0 - R)/R0, about 0.2 % of creepage here
-        return table, core(_core.Rig, table.data, table.y0, table.dy, cp, c_opts,
-                           V / float(P["roller"]["radius_m"]) if start == "rolling"
-                           else 0.0)
-    given_V = None if roller_speed is None else V      # None: the scenario's own
+        return core(_core.Rig, table.data, table.y0, table.dy, cp, opts,
+                    float(cp["scenario.roller_speed_m_s"]) / float(Q["roller"]["radius_m"])
+                    if start == "rolling" else 0.0)
     try:
-        table, rig = make(P, given_V)
+        table = _geometry(P)
+    except RollerRigError as e:
+        raise _cannot_start(func, e, _culprits(P, run, names, GEOMETRY_KEYS,
+                                               lambda Q, run: _geometry(Q))) from None
+    try:
+        rig = make(P, run, table)
     except (ValueError, RollerRigError) as e:
-        culprits = _culprits(P, given_V, make)
-        named = f"the rig cannot start with {', '.join(culprits)}: " if culprits else ""
-        raise RollerRigError(f"{func}: {named}{e}") from None
+        raise _cannot_start(func, e, _culprits(P, run, names, [p.name for p in PARAMETERS
+                                                               if not p.creep], make)) from None
     return Rig(rig), table, dt, V, opts["method"]
 
 
-def _check_loops(func, P, cp, name):
-    """Refuse a sample time at which a drive's sampled speed loop is
-    unstable (csrc/rig/rr_rig.h, rr_rig_speed_loops; the C rig refuses it
-    too): the message names the drive, the settings its loop depends on and
-    the sample times at which it is stable (rr_speed_loop_range)."""
-    R, W = P["roller_drive"], P["wheelset_drive"]
-    settings = (
-        f"roller_drive.kp_N_m_s_per_rad = {R['kp_N_m_s_per_rad']:g}, ki_N_m_s_per_rad = "
-        f"{R['ki_N_m_s_per_rad']:g} and lag_time_constant_s = {R['lag_time_constant_s']:g} on "
-        f"roller.inertia_kg_m2 = {P['roller']['inertia_kg_m2']:g}",
-        f"wheelset_drive.kp_N_m_s_per_rad = {W['kp_N_m_s_per_rad']:g}, ki_N_m_s_per_rad = "
-        f"{W['ki_N_m_s_per_rad']:g} and lag_time_constant_s = {W['lag_time_constant_s']:g} on "
-        f"wheelset.spin_inertia_kg_m2 + wheelset_drive.drive_inertia_kg_m2 = "
-        f"{P['wheelset']['spin_inertia_kg_m2'] + W['drive_inertia_kg_m2']:g}, within eq. 13's "
-        f"creepage_controller.alpha = {P['creepage_controller']['alpha']:g}")
-    dt = cp["scenario.control_sample_time_s"]
-    for drive, text, (stable, rho, lo, hi) in zip(("roller", "wheelset"), settings,
-                                                  core(_core.rig_speed_loops, cp)):
-        if stable:
-            continue
-        where = (f"it is stable for sample times from {lo:.3g} to {hi:.3g} s"
-                 if not math.isnan(lo) else
-                 f"it is stable at no sample time from {MIN_DT:g} to {MAX_DT:g} s")
-        raise RollerRigError(
-            f"{func}: {name} = {dt:g} s: the {drive} drive's sampled speed loop ({text}) is "
-            f"unstable at this sample time (its largest closed-loop pole |z| = {rho:.4g}); "
-            f"{where}")
+def _cannot_start(func, e, culprits):
+    named = f"the rig cannot start with {', '.join(culprits)}: " if culprits else ""
+    return RollerRigError(f"{func}: {named}{e}")
 
 
-def _culprits(P, given_V, make):
-    """The changed values the rig cannot start with: each parameter that
-    differs from its default, and a given roller speed, is put back to its
-    default alone; those whose default lets the rig start are named (the
-    core's status cannot say which of 44 numbers overflowed)."""
+def _culprits(P, run, names, keys, build):
+    """The changed values the rig cannot start with, where every value is in
+    range and every rule holds (_check_run said so): each of `keys` that
+    differs from its default (not one the run replaces: its own values are
+    arguments), and a given roller speed, is put back to its default alone,
+    build(Q, run) tried; those whose default lets it succeed are named.
+
+    The one rebuild that stays (issue 23): the start's evaluation (the
+    contact table of the geometry; the normal loads, the contact and the
+    drives at the first state) can overflow or underflow for values each in
+    range and far from the rig (wheelset.mass_kg = 1e300, scenario.mu0 =
+    1e100, contact.youngs_modulus_Pa = 1e300: RR_ERR_RANGE from the contact
+    layer), which no bound on a value or a pair of them predicts without
+    evaluating the rig; the core's status cannot say which of the numbers
+    it read was at fault.  So only after such a failure, one build per
+    changed value (where the geometry gives no table: one table per changed
+    geometry key, and no rig)."""
     D = _defaults()
 
-    def starts(Q, V):
+    def succeeds(Q, run):
         try:
-            make(Q, V)
+            build(Q, run)
         except (ValueError, RollerRigError):
             return False
         return True
     found = []
-    for section, values in P.items():
-        for key, v in values.items():
-            if v == D[section][key]:
-                continue
-            Q = {k: dict(s) for k, s in P.items()}
-            Q[section][key] = D[section][key]
-            if starts(Q, given_V):
-                found.append(f"params {section}.{key} = {v!r}")
-    if given_V is not None and starts(P, D["scenario"]["roller_speed_m_s"]):
-        found.append(f"roller_speed = {given_V!r}")
+    for name in keys:
+        section, key = name.split(".")
+        v = P[section][key]
+        if name in run or v == D[section][key]:
+            continue
+        Q = {k: dict(s) for k, s in P.items()}
+        Q[section][key] = D[section][key]
+        if succeeds(Q, run):
+            found.append(f"params {name} = {v!r}")
+    V = "scenario.roller_speed_m_s"
+    if V in names and succeeds(P, {**run, V: D["scenario"]["roller_speed_m_s"]}):
+        found.append(f"{names[V]} = {run[V]!r}")
     return found
 
 

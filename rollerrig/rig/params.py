@@ -6,6 +6,11 @@ from the declaration) and the checks of a parameter set.
 Parameters are checked as a whole (check_parameters): every unknown key,
 every bad value and every documentation-only key given a new value is
 reported at once, in one RollerRigError that names the file or `params`.
+The values of the rig's rows and the rules between them are judged in C,
+once (rr_rig_config_report, through _core.rig_config_report): this module
+words each problem it reports (_report_problems), and checks what is the
+file's own (unknown and retired keys, sections) and the creep rows (the
+registry's, rollerrig.contact).
 """
 import copy
 import difflib
@@ -19,7 +24,7 @@ from typing import NamedTuple
 
 from .. import _core
 from .._errors import RollerRigError, RollerRigWarning
-from .._binding import METHODS
+from .._binding import METHODS, creep_options
 
 try:
     import tomllib
@@ -217,14 +222,20 @@ def default_parameters():
 
 # ------------------------------------------------------------------ checking parameters
 
-def _real(lo=-math.inf, hi=math.inf, lo_open=False, hi_open=False):
-    """A check: a finite real number in the interval."""
+def _range_text(lo, hi, lo_open, hi_open):
+    """" >= 0", " in (0, 1]" or "" (no bound): a range as the messages write it."""
     if lo == -math.inf and hi == math.inf:
-        need = ""
-    elif hi == math.inf:
-        need = f" {'>' if lo_open else '>='} {lo:g}"
-    else:
-        need = f" in {'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
+        return ""
+    if hi == math.inf:
+        return f" {'>' if lo_open else '>='} {lo:g}"
+    return f" in {'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
+
+
+def _real(lo=-math.inf, hi=math.inf, lo_open=False, hi_open=False):
+    """A check: a finite real number in the interval (for an argument that
+    is no parameter of the rig; a parameter's range is checked in C, by
+    rig_config_report)."""
+    need = _range_text(lo, hi, lo_open, hi_open)
 
     def check(v):
         ok = isinstance(v, numbers.Real) and not isinstance(v, bool)
@@ -255,36 +266,22 @@ def _choice(*values):
     return check
 
 
-def _flag(v):
-    return None if isinstance(v, bool) else "must be true or false"
-
-
-def _numbers(item, need, most=math.inf, empty=False):
-    """A check: a list of numbers (at most `most`, empty only if `empty`),
-    each passing `item`."""
-    def check(v):
-        if not isinstance(v, (list, tuple)) or (not v and not empty) or len(v) > most \
-                or any(item(x) for x in v):
-            return f"must be a {'' if empty else 'non-empty '}list of {need}"
-        return None
-    return check
-
-
-def _rule(p):
-    """The check of a declared parameter (PARAMETERS row)."""
+def _need(p):
+    """What a value of row p must be, in words: its declared type and range
+    (the message of rig_config_report's "range" problem, which checks it)."""
+    within = _range_text(p.lo, p.hi, p.lo_open, p.hi_open)
     if p.type == "real":
-        return _real(p.lo, p.hi, p.lo_open, p.hi_open)
+        return f"must be a finite number{within}"
     if p.type == "int":
-        return _integer(int(p.lo), int(p.hi))
+        return f"must be an integer from {int(p.lo)} to {int(p.hi)}"
     if p.type == "flag":
-        return _flag
+        return "must be true or false"
     if p.type == "choice":
-        return _choice(*p.choices)
-    entry = _real(p.lo, p.hi, p.lo_open, p.hi_open)
-    need = entry(math.nan)[len("must be a finite number"):]
+        return "must be " + " or ".join(map(repr, p.choices))
     # a list whose default is empty may be empty (rr_rig_params.h)
-    return _numbers(entry, f"at most {_core.RIG_MAX_LIST} numbers{need}",
-                    _core.RIG_MAX_LIST, empty=not p.default)
+    return (f"must be a {'' if not p.default else 'non-empty '}list of at most "
+            f"{_core.RIG_MAX_LIST} numbers{within}")
+
 
 #: the parameter file's keys (contact section) that set a creep-force option:
 #: key -> the option's name in the registry (rollerrig.METHODS), as each
@@ -304,17 +301,135 @@ def _option_rule(name):
     return _real(op.lo, op.hi, lo_open=op.lo_open, hi_open=op.hi_open)
 
 
-#: the check of every key the model reads: the declared ones (PARAMETERS),
-#: and the creep-force method's options
-_RULES = {}
-for _p in PARAMETERS:
-    if not _p.creep:
-        _section, _key = _p.name.split(".")
-        _RULES.setdefault(_section, {})[_key] = _rule(_p)
-_RULES["contact"].update({
-    "creep_method": _choice(*METHODS),
-    **{key: _option_rule(option) for key, option in _FILE_OPTIONS.items()},
-})
+#: the checks of the creep rows (the creep-force method and its options,
+#: from the registry: rollerrig.contact's, not the rig's configuration); every
+#: other row is checked by the C report (_report_problems)
+_CREEP_RULES = {"contact.creep_method": _choice(*METHODS),
+                **{f"contact.{key}": _option_rule(o) for key, o in _FILE_OPTIONS.items()}}
+
+_SAMPLE_TIME = "scenario.control_sample_time_s"
+#: the report's rules that read the sample time: judged for a run, at its dt
+#: (build._build, simulate), not in a parameter set, whose sample time a
+#: run's dt replaces
+_RUN_RULES = ("loop", "sample")
+#: a count rule's request, by the list the row must match
+_ONE_PER = {"scenario.targets": "one start time per target",
+            "adhesion.schedule_times_s": "one per time"}
+
+
+def _c_values(P):
+    """{"section.key": value} of the merged parameters' rig rows (not the
+    creep rows): the C configuration (rr_rig_config) they make."""
+    return {p.name: P[p.name.split(".")[0]][p.name.split(".")[1]] for p in PARAMETERS
+            if not p.creep}
+
+
+def _loop_sentence(name, values, drive, rho, lo, hi):
+    """A drive's sampled speed loop unstable at the sample time: the drive,
+    the settings its loop depends on, its pole and the sample times at
+    which it is stable (rr_speed_loop_range)."""
+    v = values.get
+    if drive == 0:
+        text = (f"roller_drive.kp_N_m_s_per_rad = {v('roller_drive.kp_N_m_s_per_rad'):g}, "
+                f"ki_N_m_s_per_rad = {v('roller_drive.ki_N_m_s_per_rad'):g} and "
+                f"lag_time_constant_s = {v('roller_drive.lag_time_constant_s'):g} on "
+                f"roller.inertia_kg_m2 = {v('roller.inertia_kg_m2'):g}")
+    else:
+        text = (f"wheelset_drive.kp_N_m_s_per_rad = {v('wheelset_drive.kp_N_m_s_per_rad'):g}, "
+                f"ki_N_m_s_per_rad = {v('wheelset_drive.ki_N_m_s_per_rad'):g} and "
+                f"lag_time_constant_s = {v('wheelset_drive.lag_time_constant_s'):g} on "
+                f"wheelset.spin_inertia_kg_m2 + wheelset_drive.drive_inertia_kg_m2 = "
+                f"{v('wheelset.spin_inertia_kg_m2') + v('wheelset_drive.drive_inertia_kg_m2'):g}"
+                f", within eq. 13's creepage_controller.alpha = "
+                f"{v('creepage_controller.alpha'):g}")
+    where = (f"it is stable for sample times from {lo:.3g} to {hi:.3g} s" if not math.isnan(lo)
+             else f"it is stable at no sample time from {MIN_DT:g} to {MAX_DT:g} s")
+    return (f"{name} = {v(_SAMPLE_TIME):g} s: the {('roller', 'wheelset')[drive]} drive's "
+            f"sampled speed loop ({text}) is unstable at this sample time (its largest "
+            f"closed-loop pole |z| = {rho:.4g}); {where}")
+
+
+def _report_problems(values, names=None, skip=(), about=None):
+    """Sentences for the problems of the C configuration `values`
+    ({"section.key": value}, rig rows only; the rest at their defaults), as
+    rr_rig_config_report finds them (csrc/rig/rr_rig_params.h: every rule of
+    a configuration is there, and only there), each naming its keys.
+
+    names: {"section.key": the argument that gave it} (simulate's dt, ...):
+        the message names that instead, with the row's unit after its range;
+    skip:  rules not judged here (_RUN_RULES in a parameter set);
+    about: only problems wholly about these keys (the key, and the other
+        row if any), where the rest of `values` is not yet the run's."""
+    names = names or {}
+
+    def name(key):
+        return names.get(key, key)
+    out = []
+    for key, _, rule, other, entry, value, lo, hi in _core.rig_config_report(values):
+        if rule in skip or (about is not None and not {key, other} - {None} <= set(about)):
+            continue
+        v, p = values.get(key), _PARAMETER[key]
+        if rule == "range":
+            unit = f" {p.unit}" if key in names and p.unit not in ("", "-") else ""
+            out.append(f"{name(key)} {_need(p)}{unit}, got {_short(v)}")
+        elif rule == "count":
+            empty = ", or none" if lo == 0 else ""     # lo 0: none is allowed too
+            out.append(f"{name(key)} has {value:g} entries but {name(other)} has {hi:g}: give "
+                       f"{_ONE_PER.get(other, f'one per entry of {name(other)}')}{empty}")
+        elif rule == "increasing":
+            out.append(f"{name(key)} must increase, got {_short(v)}")
+        elif rule == "nondecreasing":
+            out.append(f"{name(key)} must not decrease (two equal times make a step), got "
+                       f"{_short(v)}")
+        elif rule == "before":
+            out.append(f"{name(key)} must fall inside {name(other)} = {hi:g} s, got "
+                       f"{_short(v)}")
+        elif rule == "sample":
+            out.append(f"{name(key)} = {value:g} s is shorter than one sample ({name(other)} = "
+                       f"{lo:g} s)")
+        elif rule == "circumference":
+            out.append(f"{name(key)} must be at most the roller's circumference 2 pi "
+                       f"{name(other)} = {hi:.6g} m, got {_short(v)}")
+        elif rule == "loop":
+            out.append(_loop_sentence(name(key), values, entry, value, lo, hi))
+        elif rule == "sum":
+            out.append(f"{name(key)} + {name(other)} must be a finite number (the wheelset's "
+                       f"inertia with its drive's), got {_short(v)} + "
+                       f"{_short(values.get(other))}")
+        else:                                   # a rule this module has no words for yet
+            out.append(f"{name(key)} = {_short(v)} breaks the rig's rule {rule!r}"
+                       f"{f' with {name(other)}' if other else ''}")
+    return out
+
+
+def _creep_problems(C):
+    """Sentences for the creep rows of the contact section C: each value as
+    the registry declares it, then, where those are good, each method's own
+    rule between its options (the registry's check: Polach's kS <= kA) for
+    the options the file sets."""
+    problems = []
+    for name, rule in _CREEP_RULES.items():
+        need = rule(C[name.split(".")[1]])
+        if need:
+            problems.append(f"{name} {need}, got {_short(C[name.split('.')[1]])}")
+    if problems:
+        return problems
+    for method, info in METHODS.items():
+        given = {key: o for key, o in _FILE_OPTIONS.items() if o in info.options}
+        if len(given) < 2:
+            continue                             # no rule between options
+        try:
+            creep_options("", method, {o: C[key] for key, o in given.items()})
+        except RollerRigError as e:
+            # the registry's words ("kS must satisfy 0 < kS <= kA <= 1
+            # (method 'polach'), got ...") with the file's keys
+            rule = str(e).split(": ", 1)[-1].split(", got ", 1)[0]
+            option, _, rest = rule.partition(" ")
+            key = next((f"contact.{k}" for k, o in given.items() if o == option), option)
+            values = ", ".join(f"contact.{k} = {C[k]!r}" for k in given)
+            problems.append(f"{key} {rest}, got {values}")
+    return problems
+
 
 #: keys (or whole sections) the parameters no longer have, since they acted
 #: on nothing, with what sets the quantity instead (csrc/rig/rr_rig_params.c):
@@ -358,49 +473,10 @@ def _merge(base, over, problems, where=""):
 
 def _check_values(P):
     """Sentences for every value of the merged parameters that breaks its
-    rule, then for the rules between keys."""
-    problems = []
-    for section, rules in _RULES.items():
-        for key, rule in rules.items():
-            v = P[section][key]
-            need = rule(v)
-            if need:
-                problems.append(f"{section}.{key} {need}, got {_short(v)}")
-    bad = {p.split(" ", 1)[0] for p in problems}
-    S, C = P["scenario"], P["contact"]
-    if not bad & {"scenario.targets", "scenario.target_start_s"}:
-        targets, starts = S["targets"], S["target_start_s"]
-        if len(targets) != len(starts):
-            problems.append(f"scenario.targets has {len(targets)} entries but "
-                            f"scenario.target_start_s has {len(starts)}: give one start "
-                            f"time per target")
-        elif any(b <= a for a, b in zip(starts, starts[1:])):
-            problems.append(f"scenario.target_start_s must increase (one start time per "
-                            f"entry of scenario.targets, in order), got {_short(starts)}")
-        elif "scenario.duration_s" not in bad and starts[-1] >= S["duration_s"]:
-            problems.append(f"scenario.target_start_s must fall inside scenario.duration_s "
-                            f"= {S['duration_s']!r} s, got {_short(starts)}")
-    A = P["adhesion"]
-    if not bad & {f"adhesion.{k}" for k in A if k.startswith("schedule_")}:
-        times = A["schedule_times_s"]
-        for key in ("schedule_mu0", "schedule_polach_A", "schedule_polach_B_s_per_m"):
-            if len(A[key]) != len(times) and (key == "schedule_mu0" or A[key]):
-                problems.append(f"adhesion.{key} has {len(A[key])} entries but "
-                                f"adhesion.schedule_times_s has {len(times)}: give one per time"
-                                f"{'' if key == 'schedule_mu0' else ', or none'}")
-        if any(b < a for a, b in zip(times, times[1:])):
-            problems.append(f"adhesion.schedule_times_s must not decrease (two equal times make "
-                            f"a step), got {_short(times)}")
-    if not bad & {"adhesion.patch_length_m", "roller.radius_m"} \
-            and A["patch_length_m"] > 2 * math.pi * P["roller"]["radius_m"]:
-        problems.append(f"adhesion.patch_length_m must be at most the roller's circumference "
-                        f"2 pi roller.radius_m = {2 * math.pi * P['roller']['radius_m']:.6g} m, "
-                        f"got {A['patch_length_m']!r}")
-    if not bad & {"contact.polach_kA", "contact.polach_kS"} \
-            and C["polach_kS"] > C["polach_kA"]:
-        problems.append(f"contact.polach_kS must be at most contact.polach_kA = "
-                        f"{C['polach_kA']!r} (Polach: kS <= kA), got {C['polach_kS']!r}")
-    return problems
+    rule, then for the rules between keys: the rig rows by the C report
+    (but for the rules a run judges at its dt), the creep rows by the
+    registry."""
+    return _report_problems(_c_values(P), skip=_RUN_RULES) + _creep_problems(P["contact"])
 
 
 def check_parameters(params=None, *, source="check_parameters: params"):
@@ -446,7 +522,7 @@ def _starts_not_given(params, P):
     if not (isinstance(S, dict) and "duration_s" in S and "target_start_s" not in S):
         return False
     duration = P["scenario"]["duration_s"]
-    if _real(0.0, MAX_DURATION, lo_open=True)(duration):
+    if not _in_range("scenario.duration_s", duration):
         return False
     return _defaults()["scenario"]["target_start_s"][-1] >= duration
 
@@ -501,8 +577,26 @@ def _real_arg(func, name, v, lo=-math.inf, hi=math.inf, lo_open=False, unit=""):
     return float(v)
 
 
-def _check_dt(func, dt):
-    return _real_arg(func, "dt", dt, MIN_DT, MAX_DT, unit="s")
+def _in_range(key, value):
+    """Whether rig row `key` takes `value` (its declared type and range, as
+    the C report's "range" rule judges them)."""
+    return not any(k == key and rule == "range"
+                   for k, _, rule, *_ in _core.rig_config_report({key: value}))
+
+
+def _check_run(func, P, run, names=None, about=None, skip=()):
+    """The C configuration of a run: the checked parameters' rig rows with
+    the run's own values in their place (run: {"section.key": value}, its
+    sample time, duration, targets, ...).  Raises one RollerRigError,
+    prefixed by func, for all its problems (_report_problems; names: the
+    arguments that gave run's values), or only those wholly `about` some
+    keys, and not of the rules `skip`, where the rest of the run is not yet
+    known."""
+    values = {**_c_values(P), **run}
+    problems = _report_problems(values, names, skip=skip, about=about)
+    if problems:
+        raise _error(func, problems)
+    return values
 
 
 def write_defaults(path=DEFAULTS_PATH):

@@ -37,7 +37,7 @@ from .. import _core
 from . import control as _control
 from .._errors import RollerRigError, RollerRigWarning, status_message
 from .build import _build, _creep_options, _geometry
-from .params import MAX_DURATION, _check_dt, _integer, _parameters, _real, _real_arg, _short
+from .params import _SAMPLE_TIME, _check_run, _integer, _parameters, _real_arg, _short
 from .result import RECORD_FIELDS, RigResult
 
 
@@ -77,16 +77,24 @@ def schedule(P, duration, dt, targets, target_times, roller_speed, first=0, stop
 
 # ------------------------------------------------------------------ simulate
 
-def _target_schedule(S, duration, targets, target_times):
-    """(targets, start times) of a run; the rules are simulate's."""
-    def listed(v):
-        return isinstance(v, (list, tuple, np.ndarray)) and np.ndim(v) == 1 \
-            and 0 < len(v) <= _core.RIG_MAX_LIST
-    if targets is not None and (not listed(targets)
-                                or any(_real(0.0, 1.0, hi_open=True)(x) for x in targets)):
-        raise RollerRigError(f"simulate: targets must be a non-empty list of at most "
-                             f"{_core.RIG_MAX_LIST} creepages in [0, 1), got "
-                             f"{_short(targets)}")
+_TARGETS, _STARTS, _DURATION = "scenario.targets", "scenario.target_start_s", "scenario.duration_s"
+
+
+def _as_list(v):
+    """A 1-D array as the list the C report takes (anything else as given:
+    the report names what it is not)."""
+    return v.tolist() if isinstance(v, np.ndarray) and v.ndim == 1 else v
+
+
+def _target_schedule(P, duration, dt, targets, target_times, names):
+    """(targets, start times) of a run: the scenario's (scaled to the
+    duration where they do not fit it, with a warning), or the caller's
+    (equal intervals of the duration where target_times is None); checked
+    with the duration by the C report's rules (one start time per target,
+    increasing, inside the duration).  names: the arguments' names of
+    _check_run, more given here."""
+    S = P["scenario"]
+    names = dict(names, **{_STARTS: "target_times"} if target_times is not None else {})
     if targets is None:
         targets = S["targets"]
         if target_times is None:
@@ -102,21 +110,16 @@ def _target_schedule(S, duration, targets, target_times):
                     f"{duration:g} s: scaled by {scale:g} to "
                     f"{[float(f'{x:.6g}') for x in target_times]} s", RollerRigWarning,
                     stacklevel=3)
-    elif target_times is None:
-        target_times = [duration * k / len(targets) for k in range(len(targets))]
-    targets = tuple(float(x) for x in targets)
-    if not listed(target_times) or len(target_times) != len(targets) \
-            or any(_real(0.0)(x) for x in target_times):
-        raise RollerRigError(f"simulate: target_times must be start times >= 0 s, one per "
-                             f"target ({len(targets)}), got {_short(target_times)}")
-    target_times = tuple(float(x) for x in target_times)
-    if any(b <= a for a, b in zip(target_times, target_times[1:])):
-        raise RollerRigError(f"simulate: target_times must increase, got "
-                             f"{_short(target_times)}")
-    if target_times[-1] >= duration:
-        raise RollerRigError(f"simulate: target_times must fall inside duration = "
-                             f"{duration:g} s, got {_short(target_times)}")
-    return targets, target_times
+    else:
+        targets = _as_list(targets)
+        names[_TARGETS] = "targets"
+        if target_times is None and isinstance(targets, (list, tuple)):
+            target_times = [duration * k / len(targets) for k in range(len(targets))]
+    run = {_SAMPLE_TIME: dt, _DURATION: duration, _TARGETS: targets}
+    if target_times is not None:
+        run[_STARTS] = _as_list(target_times)
+    _check_run("simulate", P, run, names, about=(_TARGETS, _STARTS, _DURATION))
+    return tuple(float(x) for x in targets), tuple(float(x) for x in target_times)
 
 
 def _first_sample(t, dt):
@@ -251,14 +254,17 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     P = _parameters("simulate", params)
     S = P["scenario"]
     given_dt = dt is not None
-    dt = _check_dt("simulate", dt if dt is not None else S["control_sample_time_s"])
-    duration_name = "duration" if duration is not None else "scenario.duration_s"
-    duration = _real_arg("simulate", "duration", duration if duration is not None
-                         else S["duration_s"], 0.0, MAX_DURATION, lo_open=True, unit="s")
-    dt_name = "dt" if given_dt else "scenario.control_sample_time_s"
-    if duration < dt * (1.0 - 1e-9):
-        raise RollerRigError(f"simulate: {duration_name} = {duration:g} s is shorter than one "
-                             f"sample ({dt_name} = {dt:g} s)")
+    names = {k: arg for k, arg, v in ((_SAMPLE_TIME, "dt", dt), (_DURATION, "duration", duration))
+             if v is not None}
+    duration_name, dt_name = names.get(_DURATION, _DURATION), names.get(_SAMPLE_TIME, _SAMPLE_TIME)
+    # the sample time and the duration first (their ranges, one sample at
+    # least): the samples and targets follow from them; the drives' loops at
+    # dt with the rest of the rig (_build)
+    run = _check_run("simulate", P, {_SAMPLE_TIME: dt if given_dt else S["control_sample_time_s"],
+                                     _DURATION: duration if duration is not None
+                                     else S["duration_s"]}, names, about=(_SAMPLE_TIME, _DURATION),
+                     skip=("loop",))
+    dt, duration = float(run[_SAMPLE_TIME]), float(run[_DURATION])
     n = max(1, int(round(duration / dt)))
     # a run of whole samples: say so where that changes the duration (by more
     # than the rounding of a dt given in single precision, 5e-8)
@@ -267,12 +273,14 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
                       f"samples of "
                       f"{dt_name} = {dt:g} s: the run takes {n} samples, {n * dt:.9g} s",
                       RollerRigWarning, stacklevel=2)
-    targets, target_times = _target_schedule(S, duration, targets, target_times)
+    targets, target_times = _target_schedule(P, duration, dt, targets, target_times, names)
     _check_targets_applied(targets, target_times, dt, n)
     record_every, kept = _record_plan(n, dt, record_every, max_record_bytes)
     rig, _, dt, V, used = _build("simulate", P, dt=dt, method=method, substeps=substeps,
                                  ode=ode, nx=nx, ny=ny, roller_speed=roller_speed,
-                                 start=start, creep=creep, given_dt=given_dt)
+                                 start=start, creep=creep, given_dt=given_dt,
+                                 run={_DURATION: duration, _TARGETS: list(targets),
+                                      _STARTS: list(target_times)}, names=names)
 
     out = np.full((kept, len(RECORD_FIELDS)), np.nan)
     t1 = time.perf_counter()
