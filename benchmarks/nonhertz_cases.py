@@ -25,7 +25,9 @@ N n_z + fy t2_z = Fz) extended to patches farther apart than 4 mm (each its
 own plane, one pose), on grids of 60 elements across a patch's longer side
 and at least 24 across its shorter one (rig_exact's default n = 40 puts 4
 to 7 across the flange's patches), the forces extrapolated to the
-continuum by Richardson from elements half that size (the steady-rolling
+continuum by Richardson from elements half that size, each patch's plane
+(CONTACT's weighted reference) set at the final approach (rig_exact sets
+it at its first pass's load, Fz / cos(delta): see nonhertz_geom.exact_multi) (the steady-rolling
 upwind difference is first order in the element size, as
 rollerrig.exact_table's nodes are extrapolated), the normal solution the
 fine grid's.  rig_exact on its default grid is kept beside it.
@@ -125,6 +127,22 @@ def sweep_cases(quick=False):
     return cases
 
 
+#: friction of the "mu" set (the tables' corrections are built at MU)
+MU_OTHER = 0.3
+CREEP_MU = [(0.0005, 0.0), (0.002, 0.0), (0.003, -0.002), (0.0, 0.004)]
+
+
+def mu_cases():
+    """The sweep's shifts every 0.5 mm at friction MU_OTHER, four creepages."""
+    cases = []
+    for pair, side in (("miniprof", "left"), ("miniprof", "right"), ("s1002", "left")):
+        for y in np.round(np.arange(-8.0, 8.001, 0.5), 3):
+            for cx, cy in CREEP_MU:
+                cases.append(dict(set="mu", pair=pair, side=side, y=y * 1e-3, load=1.0,
+                                  cx_t=cx, cy_t=cy, mu=MU_OTHER))
+    return cases
+
+
 def csv_cases():
     from reference_cases import read_columns
     C = read_columns("roller_nonhertz_cases.csv")
@@ -153,7 +171,8 @@ def solve_case(case, geo):
     rec = dict(case, Fz=Fz)
     t0 = time.perf_counter()
     m = ng.exact_multi(ng.Wheel(g, case["side"]), tab, case["y"], Fz, spin=case["spin"],
-                       roller_spin=case["roller_spin"], vy=case["vy"], mu=MU, G=G, nu=NU,
+                       roller_spin=case["roller_spin"], vy=case["vy"], mu=case.get("mu", MU),
+                       G=G, nu=NU,
                        **REF_GRID)
     rec["t_multi"] = time.perf_counter() - t0
     rec.update(N=m.N, force=m.force, area=m.area, pmax=m.pmax, centre=m.centre, dz=m.dz,
@@ -169,7 +188,8 @@ def solve_case(case, geo):
     with warnings.catch_warnings(record=True) as wl:
         warnings.simplefilter("always")
         try:
-            e = rr.rig_exact(g, case["y"], Fz=Fz, mu=MU, side=case["side"], spin=case["spin"],
+            e = rr.rig_exact(g, case["y"], Fz=Fz, mu=case.get("mu", MU), side=case["side"],
+                             spin=case["spin"],
                              roller_spin=case["roller_spin"], vy=case["vy"], E=E, nu=NU,
                              table=tab)
             rec["rig_exact"] = dict(N=e.N, force=e.force, fx=e.solution.fx, fy=e.solution.fy,
@@ -218,7 +238,7 @@ def load(name):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true", help="every 4th shift of the sweep")
-    ap.add_argument("--set", choices=("csv", "sweep", "both"), default="both")
+    ap.add_argument("--set", choices=("csv", "sweep", "both", "mu"), default="both")
     args = ap.parse_args()
     os.makedirs(OUT, exist_ok=True)
     geo = geometries()
@@ -226,6 +246,8 @@ def main():
         run(csv_cases(), os.path.join(OUT, "csv.pkl"), geo)
     if args.set in ("sweep", "both"):
         run(sweep_cases(args.quick), os.path.join(OUT, "sweep.pkl"), geo)
+    if args.set == "mu":
+        run(mu_cases(), os.path.join(OUT, "mu.pkl"), geo)
 
 
 if __name__ == "__main__":

@@ -73,7 +73,13 @@ def exact_table(cx, cy, cphi, a, b, N, mu, G=G_DEF, nu=NU_DEF):
     return float(f.fx), float(f.fy), float(f.mz)
 
 
-def clamp_ab(a, b, lo=0.1, hi=10.0):
+#: the exact table's a/b range, a hair inside: rr_kalker's coefficients jump
+#: at a/b = 10 (C11 11.83 -> 11.40 from 10 to 10 (1 + 2e-16), Kalker's table
+#: to its asymptote), and exact_table's forces with them (0.017 mu N seen)
+AB_LO, AB_HI = 0.1 * (1 + 1e-9), 10.0 * (1 - 1e-9)
+
+
+def clamp_ab(a, b, lo=AB_LO, hi=AB_HI):
     """The same c^2 = ab with a/b inside the exact table's range."""
     r = min(max(a / b, lo), hi)
     c = np.sqrt(a * b)
@@ -172,24 +178,26 @@ def multi_hertz(wheel, table, y, Fz, *, spin, roller_spin, vy=0.0, mu=0.52, G=G_
             S += N * n[2] + fy * t2[2]
         return out, S
 
-    pts = []
-    for _ in range(40):
-        out, S = at(dz)
-        if abs(S - Fz) < 1e-6 * Fz:
-            break
-        pts.append((dz, S))
-        if len(pts) == 1:
-            dz *= (Fz / S) ** (2 / 3)
-        else:
-            (d0, S0), (d1, S1) = pts[-2], pts[-1]
-            f0, f1 = S0 ** (2 / 3) - Fz ** (2 / 3), S1 ** (2 / 3) - Fz ** (2 / 3)
-            dz = d1 - f1 * (d1 - d0) / (f1 - f0) if f1 != f0 else dz
+    dz, (out, S) = solve_dz(at, Fz, dz, tol=1e-6)
     res = _combine(out)
     res.dz = dz
     return res
 
 
 # ------------------------------------------------------------------ tables per lateral shift
+
+#: the correction's nodes: u = rho / (rho + 1) of the creepage in the
+#: calibrated ellipse's normalised coordinates (x, y) = (K11 cx, K22 cy) / (mu N)
+#: about the centroid, and its direction theta; the spin the row's own
+CORR_U = np.array([0.2, 0.4, 0.6, 0.8])
+CORR_TH = np.arange(8) * (np.pi / 4)
+#: the nodes of approach that carry a correction (NODES' indices: about
+#: 0.5 and 1.2 times 61 kN on these pairs; 4 nodes, 0.5 to 1.5, gained
+#: nothing measurable)
+CORR_NODES = (4, 6)
+#: elements across the correction's grids (Richardson from these and twice)
+CORR_N = 30
+
 
 #: approach nodes of a patch: fractions of its largest lowering beyond its gap
 NODES = np.array([0.03, 0.1, 0.2, 0.33, 0.46, 0.6, 0.75, 0.88, 1.0])
@@ -280,7 +288,7 @@ def _richardson(grid, fine, N, mu, G, nu, cx, cy, cphi):
 
 
 def build_row(wheel, y, Fz_max, *, mu=0.52, G=G_DEF, nu=NU_DEF, n=40, n_short=16,
-              nodes=NODES, calibrate=True, fields=True, correct=None):
+              nodes=NODES, calibrate=True, fields=True, correct=None, corr_n=CORR_N):
     """One row of the table: every patch at its approach nodes, solved by the
     exact theory (nonhertz_geom's construction).  Fz_max: the largest
     vertical load the row must carry (sets the largest lowering, dz_max,
@@ -307,8 +315,21 @@ def build_row(wheel, y, Fz_max, *, mu=0.52, G=G_DEF, nu=NU_DEF, n=40, n_short=16
         recs = []
         for f in nodes:
             e = f * (dz_max - gr["g"])
-            app = e * np.cos(gr["delta"])
-            pt.reference(j, app)
+            # the plane as exact_multi (and rig_exact) set it: the weighted
+            # reference at the approach a first coarse solution finds
+            pt.reference(j, e * np.cos(gr["delta"]))
+            g1 = pt.grid(j, gr["g"] + e, n=max(4, n // 2), cover=1.5, n_short=max(4, n_short // 2))
+            # and again at the approach on that plane, to a consistent plane
+            for _ in range(3):
+                if g1 is None:
+                    break
+                pt.reference(j, g1.pen)
+                g2 = pt.grid(j, gr["g"] + e, n=max(4, n // 2), cover=1.5,
+                             n_short=max(4, n_short // 2))
+                done = g2 is None or abs(g2.pen / g1.pen - 1) < 0.01
+                g1 = g2
+                if done:
+                    break
             for cover in (1.3, 1.6, 2.0):
                 grid = pt.grid(j, gr["g"] + e, n=n, cover=cover, n_short=n_short)
                 if grid is None:
@@ -343,7 +364,7 @@ def build_row(wheel, y, Fz_max, *, mu=0.52, G=G_DEF, nu=NU_DEF, n=40, n_short=16
                              delta=grid.delta, P=grid.point, area=sf.contact_area,
                              pmax=sf.pmax, xc=xc, yc=yc, a5=a5, b5=b5, K=Kmat,
                              field=Field(s.pn / N, grid) if fields else None,
-                             grid=grid, fine=fine))
+                             grid=grid, fine=fine, cover=cover))
         if not recs:
             continue
         pn_ = PatchNodes(g=gr["g"], **{k: np.array([r[k] for r in recs]) for k in
@@ -360,6 +381,13 @@ def build_row(wheel, y, Fz_max, *, mu=0.52, G=G_DEF, nu=NU_DEF, n=40, n_short=16
                 gr_ = r["grid"]
                 cphi = correct.creepages(gr_.point, gr_.t1, gr_.t2, gr_.n, gr_.pen,
                                          pn_.g + r["e"])[2]
+                if corr_n is not None:
+                    # the correction's exact solutions on their own grids
+                    pt.groups[j]["s_roller"], pt.groups[j]["delta"] = r["s_roller"], r["delta"]
+                    gc = pt.grid(j, pn_.g + r["e"], n=corr_n, cover=r["cover"],
+                                 n_short=max(4, corr_n * n_short // n))
+                    r = dict(r, grid=gc, fine=pt.grid(j, pn_.g + r["e"], cover=r["cover"],
+                                                      dx=gc.dx / 2))
                 pn_.corr.append(residual_at_node(r, mu, G, nu, cphi))
                 row.solves += 2 * (1 + len(CORR_U) * len(CORR_TH))
         row.patches.append(pn_)
@@ -372,7 +400,7 @@ def calibrated_ellipse(K, a5, b5, G, nu):
     the scales of cy and cphi that give its exact C22 and C23 (K: the
     patch's linear coefficients about its centroid, PatchNodes.K).
     Returns (a, b, sy, sp)."""
-    r = min(max(a5 / b5, 0.1), 10.0)
+    r = min(max(a5 / b5, AB_LO), AB_HI)
     k = rr.kalker_coefficients(r, nu)
     c2 = -K[0, 0] / (G * float(k.c11))
     c = np.sqrt(c2)
@@ -380,16 +408,6 @@ def calibrated_ellipse(K, a5, b5, G, nu):
     sy = -K[1, 1] / (G * c2 * float(k.c22))
     sp = -K[1, 2] / (G * c ** 3 * float(k.c23))
     return a, b, sy, sp
-
-
-#: the correction's nodes: u = rho / (rho + 1) of the creepage in the
-#: calibrated ellipse's normalised coordinates (x, y) = (K11 cx, K22 cy) / (mu N)
-#: about the centroid, and its direction theta; the spin the row's own
-CORR_U = np.array([0.2, 0.4, 0.6, 0.8])
-CORR_TH = np.arange(8) * (np.pi / 4)
-#: the nodes of approach that carry a correction (NODES' indices: about
-#: 0.55, 0.85, 1.2 and 1.5 times 61 kN on these pairs)
-CORR_NODES = (4, 5, 6, 7)
 
 
 def residual_at_node(r, mu, G, nu, cphi, u=CORR_U, th=CORR_TH):
@@ -433,6 +451,34 @@ def residual_eval(c, x, y):
     i = int(np.clip(np.searchsorted(us, u) - 1, 0, len(us) - 2))
     t = (u - us[i]) / (us[i + 1] - us[i])
     return (1 - t) * vals[i] + t * vals[i + 1]
+
+
+def solve_dz(at, Fz, dz, tol=1e-7, maxit=60):
+    """The lowering dz at which at(dz) = (anything, S) has S = Fz: secant on
+    S^(2/3) (nearly linear in dz), kept inside a bracket once one is found
+    (bisection when the secant leaves it).  Returns (dz, at(dz))."""
+    pts = []
+    for _ in range(maxit):
+        out = at(dz)
+        S = out[1]
+        if abs(S - Fz) < tol * Fz:
+            return dz, out
+        pts.append((dz, S))
+        lo = max((d for d, v in pts if v < Fz), default=None)
+        hi = min((d for d, v in pts if v > Fz), default=None)
+        step = dz * (Fz / max(S, 1e-3 * Fz)) ** (2.0 / 3.0)
+        if len(pts) > 1:
+            (d0, S0), (d1, S1) = pts[-2], pts[-1]
+            f0 = np.cbrt(max(S0, 0.0)) ** 2 - np.cbrt(Fz) ** 2
+            f1 = np.cbrt(max(S1, 0.0)) ** 2 - np.cbrt(Fz) ** 2
+            if f1 != f0 and d1 != d0:
+                step = d1 - f1 * (d1 - d0) / (f1 - f0)
+        if lo is not None and hi is not None and not lo < step < hi:
+            step = 0.5 * (lo + hi)
+        elif not (np.isfinite(step) and step > 0):
+            step = 0.5 * dz if hi is not None else 2.0 * dz
+        dz = step
+    raise rr.RollerRigError(f"solve_dz: the vertical load {Fz} did not settle")
 
 
 def _interp(e, nodes, values):
@@ -602,21 +648,10 @@ class TableMethod:
                 parts.append(part)
                 S += s
             return parts, S
-        # dz: secant on S^(2/3), from the primary patch's nodes
+        # dz from the primary patch's nodes, then the balance
         p0 = row.patches[0]
-        dz = p0.g + float(np.interp(Fz, p0.N * np.cos(p0.delta), p0.e))
-        pts = []
-        for _ in range(40):
-            parts, S = at(dz)
-            if abs(S - Fz) < 1e-7 * Fz:
-                break
-            pts.append((dz, S))
-            if len(pts) == 1 or pts[-1][1] == pts[-2][1]:
-                dz *= (Fz / max(S, 1e-3 * Fz)) ** (2 / 3)
-            else:
-                (d0, S0), (d1, S1) = pts[-2], pts[-1]
-                f0, f1 = np.cbrt(S0) ** 2 - np.cbrt(Fz) ** 2, np.cbrt(S1) ** 2 - np.cbrt(Fz) ** 2
-                dz = d1 - f1 * (d1 - d0) / (f1 - f0)
+        dz0 = p0.g + float(np.interp(Fz, p0.N * np.cos(p0.delta), p0.e))
+        dz, (parts, S) = solve_dz(at, Fz, dz0)
         res = _combine(parts)
         res.dz = dz
         return res

@@ -478,7 +478,8 @@ def _edge(contact):
 
 
 def exact_multi(wheel, table, y_ws, Fz, *, spin, roller_spin, vy=0.0, mu=0.52, G=8.2e10,
-                nu=0.28, n=40, n_short=16, richardson=True, dz0=None, tol=1e-6):
+                nu=0.28, n=40, n_short=16, richardson=True, dz0=None, tol=1e-6,
+                consistent_plane=True):
     """One wheel at y_ws under the vertical load Fz solved by the exact
     theory on every patch (see the module's docstring), as rig_exact does
     one: a first balance on grids from an estimate, each patch's reference
@@ -550,18 +551,30 @@ def exact_multi(wheel, table, y_ws, Fz, *, spin, roller_spin, vy=0.0, mu=0.52, G
     grids = [pt.grid(j, dz0, n=max(4, n // 2), cover=1.5, n_short=max(4, n_short // 2))
              for j in range(len(pt.groups))]
     dz, res, _ = balance(grids, dz0, dz0, False)
-    # each patch's reference at its approach found, its grid at the pose found
-    for j, (gr, (N, s0)) in enumerate(zip(grids, res)):
-        if s0 is not None:
-            pt.reference(j, s0.delta)
-    for cover in (1.1, 1.3, 1.6):
-        grids = [pt.grid(j, dz, n=n, cover=cover, n_short=n_short) for j in range(len(pt.groups))]
-        dz_b = dz
-        dz, res, tan = balance(grids, dz_b, dz, True)
-        if not any(t is not None and (_edge(t[0].contact) or t[0].delta > 1.02 * cover *
-                                      (dz_b - pt.groups[j]["g"]) * np.cos(grids[j].delta))
-                   for j, t in enumerate(tan)):
+    # each patch's reference at its approach found, its grid at the pose found;
+    # then (consistent_plane) again at the approach of the balance with the
+    # tangential forces, until the plane is the final load's: rig_exact sets
+    # it once, at the first pass's load Fz / cos(delta) (the lateral creep
+    # force's share fy sin(delta) of Fz left out: at the flange root, up to
+    # 20 % of the approach, 0.01 rad of plane, 0.03 mu N in the forces)
+    apps = [s0.delta if s0 is not None else None for (N, s0) in res]
+    for _ in range(4 if consistent_plane else 1):
+        for j, a in enumerate(apps):
+            if a is not None:
+                pt.reference(j, a)
+        for cover in (1.1, 1.3, 1.6):
+            grids = [pt.grid(j, dz, n=n, cover=cover, n_short=n_short)
+                     for j in range(len(pt.groups))]
+            dz_b = dz
+            dz, res, tan = balance(grids, dz_b, dz, True)
+            if not any(t is not None and (_edge(t[0].contact) or t[0].delta > 1.02 * cover *
+                                          (dz_b - pt.groups[j]["g"]) * np.cos(grids[j].delta))
+                       for j, t in enumerate(tan)):
+                break
+        new = [t[0].delta if t is not None else None for t in tan]
+        if all(a is None or b is None or abs(b / a - 1) < 0.01 for a, b in zip(apps, new)):
             break
+        apps = new
     patches = []
     for j, (gr, (N, s0), t) in enumerate(zip(grids, res, tan)):
         if t is None:

@@ -41,7 +41,7 @@ def row_path(pair, side, tag):
 
 def base_tag(tag):
     """The shifts' tag of a table's tag ("cases+c": cases, corrected)."""
-    return tag.split("+")[0]
+    return tag.split("+")[0].split(":")[0]
 
 
 def row_shifts(tag, pair, side):
@@ -55,6 +55,8 @@ def row_shifts(tag, pair, side):
                     ys.add(round(r["y"], 9))
         return sorted(ys)
     d = float(tag[1:])
+    if tag[0] == "o":       # offset by half a spacing: the sweep's shifts fall between rows
+        return list(np.round(np.arange(-8.5 - d / 2, 8.5 + d / 2 + 1e-9, d) * 1e-3, 9))
     return list(np.round(np.arange(-8.5, 8.5 + 1e-9, d) * 1e-3, 9))
 
 
@@ -114,15 +116,18 @@ class Context:
         return self._wheels[(pair, side)]
 
     def rows(self, pair, side, tag):
+        """A table's rows; tag "o0.1+c:2": every 2nd row of o0.1+c."""
         if (pair, side, tag) not in self._rows:
-            self._rows[(pair, side, tag)] = load_rows(pair, side, tag)
+            base, _, stride = tag.partition(":")
+            rows = load_rows(pair, side, base)
+            self._rows[(pair, side, tag)] = rows[::int(stride)] if stride else rows
         return self._rows[(pair, side, tag)]
 
-    def table_method(self, pair, side, tag, tangential, y=None):
+    def table_method(self, pair, side, tag, tangential, y=None, mu=nc.MU):
         rows = self.rows(pair, side, tag)
         if base_tag(tag) == "cases":       # the row at the case's own shift
             rows = [r for r in rows if abs(r.y - y) < 1e-9]
-        return nf.TableMethod(rows, self.wheel(pair, side), tangential=tangential, mu=nc.MU,
+        return nf.TableMethod(rows, self.wheel(pair, side), tangential=tangential, mu=mu,
                               G=nc.G, nu=nc.NU)
 
 
@@ -131,23 +136,24 @@ def run_method(ctx, name, rec):
     tab = nc.table(pair, ctx.geo)
     kw = dict(spin=rec["spin"], roller_spin=rec["roller_spin"], vy=rec["vy"])
     Fz = rec["Fz"]
+    mu = rec.get("mu", nc.MU)
     if name == "hertz_fastsim":
-        return nf.hertz(tab, y, Fz, side, method="fastsim", mu=nc.MU, G=nc.G, nu=nc.NU, **kw)
+        return nf.hertz(tab, y, Fz, side, method="fastsim", mu=mu, G=nc.G, nu=nc.NU, **kw)
     if name == "hertz_exact_table":
-        return nf.hertz(tab, y, Fz, side, method="exact_table", mu=nc.MU, G=nc.G, nu=nc.NU,
+        return nf.hertz(tab, y, Fz, side, method="exact_table", mu=mu, G=nc.G, nu=nc.NU,
                         **kw)
     if name == "multi_hertz":
-        return nf.multi_hertz(ctx.wheel(pair, side), tab, y, Fz, mu=nc.MU, G=nc.G, nu=nc.NU,
+        return nf.multi_hertz(ctx.wheel(pair, side), tab, y, Fz, mu=mu, G=nc.G, nu=nc.NU,
                               **kw)
     if name.startswith("table_"):
         _, tangential, tag = name.split("_", 2)
-        return ctx.table_method(pair, side, tag, tangential, y)(tab, y, Fz, **kw)
+        return ctx.table_method(pair, side, tag, tangential, y, mu)(tab, y, Fz, **kw)
     raise ValueError(name)
 
 
 def errors(rec, res):
     """The errors of one result against the reference record."""
-    muN = nc.MU * rec["N"]
+    muN = rec.get("mu", nc.MU) * rec["N"]
     creep_ref = rec["force"] - sum(p["N"] * p["n"] for p in rec["patches"])
     return dict(
         dF=float(np.linalg.norm(res.force - rec["force"]) / muN),
@@ -253,7 +259,7 @@ def report(methods=None):
              "| load p95 | area p95 | peak p95 | centre p95 [mm] | failed |",
              "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for name in names:
-        for s in ("csv", "sweep"):
+        for s in ("csv", "sweep", "mu"):
             if (name, s) not in done:
                 continue
             es = done[(name, s)]
