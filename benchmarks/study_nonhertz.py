@@ -241,6 +241,61 @@ def continuity(methods, step=1e-5, half=0.5e-3):
         pickle.dump(old, f)
 
 
+# ------------------------------------------------------------------ export for the C prototype
+
+def export(tag, pair, side, path_table, path_cases, tangential="corrected"):
+    """The table of one side and the sweep's cases of it, as flat doubles
+    for benchmarks/bench_nonhertz_runtime.c (its header describes the
+    layout), with the Python prototype's results to compare."""
+    ctx = Context()
+    rows = ctx.rows(pair, side, tag)
+    w = ctx.wheel(pair, side)
+    K = len(nf.NODES)
+    nu_, nth = len(nf.CORR_U), len(nf.CORR_TH)
+    ncn = len(nf.CORR_NODES)
+    out = [0x4e48, len(rows), K, nu_, nth, ncn, w.sigma, float(w.g.roller_radius)]
+    out += list(nf.CORR_U)
+    for r in rows:
+        out += [r.y, len(r.patches)]
+        for p in r.patches:
+            sig = w.sigma
+            PY = sig * (w.roller_y + p.s_roller)
+            PZ = -w.roller.z_at(p.s_roller)
+            ab = np.clip(p.a5 / p.b5, nf.AB_LO, nf.AB_HI)
+            out += [p.g]
+            for arr in (p.e, p.N / p.e ** 1.5, PY, PZ, p.delta, p.xc, p.yc,
+                        p.area / p.N ** (2 / 3), p.pmax / p.N ** (1 / 3), ab,
+                        -p.K[:, 0, 0], -p.K[:, 1, 1], -p.K[:, 1, 2]):
+                out += list(np.asarray(arr, dtype=float))
+            cs = [c for c in p.corr if c is not None]
+            ks = [k for k, c in enumerate(p.corr) if c is not None]
+            assert len(cs) == ncn
+            for k, c in zip(ks, cs):
+                out += [p.e[k]] + list(c["R0"]) + list(np.asarray(c["R"]).ravel())
+    np.asarray(out, dtype="<f8").tofile(path_table)
+    tab = nc.table(pair, ctx.geo)
+    recs = [r for r in nc.load("sweep") if r["pair"] == pair and r["side"] == side]
+    ys = np.array([r.y for r in rows])
+    cases = []
+    for rec in recs:
+        y = rec["y"]
+        i = int(np.clip(np.searchsorted(ys, y) - 1, 0, len(ys) - 2))
+        tt = (y - ys[i]) / (ys[i + 1] - ys[i])
+        m = nf.TableMethod(rows, w, tangential=tangential, mu=nc.MU, G=nc.G, nu=nc.NU)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", rr.RollerRigWarning)
+            res = m(tab, y, rec["Fz"], spin=rec["spin"], roller_spin=rec["roller_spin"],
+                    vy=rec["vy"])
+        c = [y, rec["Fz"], nc.MU, rec["roller_spin"], i, tt]
+        for k in (i, i + 1):
+            kin = ng.Kinematics(tab, rows[k].y, rec["spin"], rec["roller_spin"], vy=rec["vy"])
+            c += list(kin.c) + list(kin.v) + list(kin.w)
+        c += list(res.force) + [res.N]
+        cases.append(c)
+    np.asarray(cases, dtype="<f8").tofile(path_cases)
+    log(f"{len(rows)} rows, {len(cases)} cases written")
+
+
 # ------------------------------------------------------------------ report
 
 def _stats(v):
@@ -280,7 +335,8 @@ def report(methods=None):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("what", choices=("rows", "evaluate", "continuity", "report"))
+    ap.add_argument("what", choices=("rows", "evaluate", "continuity", "report", "export"))
+    ap.add_argument("--side", default="left")
     ap.add_argument("--tag", default="cases", help="rows: 'cases' or 'd<mm>' (d0.1)")
     ap.add_argument("--pair", default=None)
     ap.add_argument("--methods", default="hertz_fastsim,hertz_exact_table,multi_hertz,"
@@ -294,6 +350,10 @@ def main():
         evaluate(methods, args.sets.split(","))
     elif args.what == "continuity":
         continuity(methods)
+    elif args.what == "export":
+        export(args.tag, args.pair, args.side,
+               os.path.join(OUT, f"table_{args.pair}_{args.side}.bin"),
+               os.path.join(OUT, f"cases_{args.pair}_{args.side}.bin"))
     else:
         report(None if args.methods == "all" else methods)
 
