@@ -228,9 +228,20 @@ def run(cases, path, geo):
     return [done[key(c)] for c in cases]
 
 
+#: "" or "_split" (patches split by angle, nonhertz_geom.A_SEP): the files' suffix
+SUFFIX = ""
+
+
+def set_split(a_sep):
+    """Use (and write) the reference with patches split by angle a_sep [rad]."""
+    global SUFFIX
+    ng.A_SEP = a_sep
+    SUFFIX = "" if a_sep is None else "_split"
+
+
 def load(name):
-    """The cached records of a set ("csv" or "sweep"), in the cases' order."""
-    with open(os.path.join(OUT, f"{name}.pkl"), "rb") as f:
+    """The cached records of a set ("csv", "sweep", "mu"), in the cases' order."""
+    with open(os.path.join(OUT, f"{name}{SUFFIX}.pkl"), "rb") as f:
         done = pickle.load(f)
     return list(done.values())
 
@@ -239,15 +250,22 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true", help="every 4th shift of the sweep")
     ap.add_argument("--set", choices=("csv", "sweep", "both", "mu"), default="both")
+    ap.add_argument("--split", type=float, default=None,
+                    help="split patches whose gap minima's angles differ by more [rad]")
+    ap.add_argument("--pair", default=None)
     args = ap.parse_args()
+    set_split(args.split)
     os.makedirs(OUT, exist_ok=True)
     geo = geometries()
     if args.set in ("csv", "both"):
-        run(csv_cases(), os.path.join(OUT, "csv.pkl"), geo)
+        run([k for k in csv_cases() if args.pair in (None, k["pair"])],
+            os.path.join(OUT, f"csv{SUFFIX}.pkl"), geo)
     if args.set in ("sweep", "both"):
-        run(sweep_cases(args.quick), os.path.join(OUT, "sweep.pkl"), geo)
+        run([k for k in sweep_cases(args.quick) if args.pair in (None, k["pair"])],
+            os.path.join(OUT, f"sweep{SUFFIX}.pkl"), geo)
     if args.set == "mu":
-        run(mu_cases(), os.path.join(OUT, "mu.pkl"), geo)
+        run([k for k in mu_cases() if args.pair in (None, k["pair"])],
+            os.path.join(OUT, f"mu{SUFFIX}.pkl"), geo)
 
 
 if __name__ == "__main__":

@@ -126,6 +126,41 @@ def groups(Y, pen, combine=COMBINE):
     return out
 
 
+#: split a group where the roller's inclination at two neighbouring gap
+#: minima differs by more than this [rad] (None: never; CONTACT's A_SEP, 90
+#: degrees in the 72 cases): each part its own patch and plane, cut at the
+#: gap's largest value between them
+A_SEP = None
+
+
+def split_by_angle(Y, g, alpha, runs, a_sep):
+    """A group's runs split into parts at the saddles between gap minima
+    whose inclinations differ by more than a_sep.  Returns a list of lists
+    of (a, b)."""
+    idx = np.concatenate([np.arange(a, b) for a, b in runs])
+    gi = g[idx]
+    # local minima within the group (a run's ends count where they are lowest)
+    m = np.flatnonzero((np.r_[np.inf, gi[:-1]] >= gi) & (np.r_[gi[1:], np.inf] > gi))
+    if m.size < 2:
+        return [runs]
+    cuts = []
+    last = m[0]
+    for k in m[1:]:
+        if abs(alpha[idx[k]] - alpha[idx[last]]) > a_sep:
+            cuts.append(last + int(np.argmax(gi[last:k + 1])))
+        if gi[k] < gi[last] or abs(alpha[idx[k]] - alpha[idx[last]]) > a_sep:
+            last = k
+    if not cuts:
+        return [runs]
+    bounds = [idx[0]] + [idx[c] for c in cuts] + [idx[-1] + 1]
+    out = []
+    for lo, hi in zip(bounds[:-1], bounds[1:]):
+        part = [(max(a, lo), min(b, hi)) for a, b in runs if min(b, hi) > max(a, lo)]
+        if part:
+            out.append(part)
+    return out
+
+
 def weighted_reference(Y, g_shifted, curv, alpha, sr, approach, delta, runs):
     """CONTACT's reference of a patch (patch.py's _weighted_reference) over
     the sample runs of its group: each strip weighted by pen^2.5 / sqrt(a),
@@ -420,13 +455,17 @@ class Patches:
     vertical gap's regions where it is under cover * dz_ref, each with its
     plane (CONTACT's weighted reference at its approach)."""
 
-    def __init__(self, wheel, pose0, dz_ref, cover=1.5, combine=COMBINE):
+    def __init__(self, wheel, pose0, dz_ref, cover=1.5, combine=COMBINE, a_sep=None):
         self.wheel, self.pose0 = wheel, pose0
         Y, g, sr, curv, alpha = wheel.vertical_gap(pose0)
         g = g - g.min()
         self.Y, self.g, self.sr, self.curv, self.alpha = Y, g, sr, curv, alpha
         self.groups = []
-        for runs in groups(Y, cover * dz_ref - g, combine):
+        a_sep = A_SEP if a_sep is None else a_sep
+        parts = groups(Y, cover * dz_ref - g, combine)
+        if a_sep is not None:
+            parts = [p for runs in parts for p in split_by_angle(Y, g, alpha, runs, a_sep)]
+        for runs in parts:
             idx = np.concatenate([np.arange(a, b) for a, b in runs])
             k = idx[np.argmin(g[idx])]
             self.groups.append(dict(runs=runs, g=float(g[k]), k=int(k),
