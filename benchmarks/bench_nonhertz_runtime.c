@@ -423,7 +423,7 @@ int main(int argc, char **argv)
 {
     table_t tb;
     long n, nc, i;
-    double *cs, times[101], worst = 0.0;
+    double *cs, times[101], worst = 0.0, worst_y = 0.0;
     int repeats = argc > 3 ? atoi(argv[3]) : 7, r, k;
     result_t *out;
     if (argc < 3 || load_table(argv[1], &tb) != 0) {
@@ -459,7 +459,10 @@ int main(int argc, char **argv)
         const double *c = cs + i * NCASE;
         const double d = sqrt(pow(out[i].force[0] - c[24], 2) + pow(out[i].force[1] - c[25], 2)
                               + pow(out[i].force[2] - c[26], 2)) / (c[2] * c[27]);
-        worst = d > worst ? d : worst;
+        if (d > worst) {
+            worst = d;
+            worst_y = c[0];
+        }
     }
     for (r = 1; r < repeats; r++) {     /* sort */
         double v = times[r];
@@ -471,7 +474,7 @@ int main(int argc, char **argv)
         times[k + 1] = v;
     }
     printf("{\"cases\": %ld, \"best_us\": %.3f, \"median_us\": %.3f, \"table_calls_per_wheel\": "
-           "%.2f, \"max_diff_from_python_muN\": %.2e}\n", nc, times[0] * 1e6,
-           times[repeats / 2] * 1e6, (double)table_calls / (double)nc, worst);
+           "%.2f, \"max_diff_from_python_muN\": %.2e, \"at_y_mm\": %.2f}\n", nc, times[0] * 1e6,
+           times[repeats / 2] * 1e6, (double)table_calls / (double)nc, worst, worst_y * 1e3);
     return 0;
 }
