@@ -287,6 +287,41 @@ def _richardson(grid, fine, N, mu, G, nu, cx, cy, cphi):
     return np.array([2 * s2.fx - s1.fx, 2 * s2.fy - s1.fy, 2 * s2.mz - s1.mz])
 
 
+def _node(pt, j, gr, e, n, n_short, cover, Fz_max, dz_max, mu, G, nu, calibrate, row):
+    """One approach node of patch j: its grid (cover), normal solution (load
+    for the grid's own interpenetration), the fine grid's, the pressure's
+    moments and the linear coefficients; None if the patch is not on a
+    grid; RollerRigError if a contact reaches the grid's edge."""
+    grid = pt.grid(j, gr["g"] + e, n=n, cover=cover, n_short=n_short)
+    if grid is None:
+        return None
+    N0 = Fz_max * (grid.pen / (dz_max * np.cos(grid.delta))) ** 1.5
+    N, s = ng.load_for_approach(grid, grid.pen, mu, G, nu, N0)
+    row.solves += 4
+    if ng._edge(s.contact):
+        raise rr.RollerRigError("the contact reaches the grid's edge")
+    fine = pt.grid(j, gr["g"] + e, cover=cover, dx=grid.dx / 2)
+    sf = ng._solve(fine, N, mu, G, nu)      # the normal solution's numbers: the fine grid's
+    row.solves += 1
+    w = s.pn / s.pn.sum()
+    xc, yc = float((w * s.x).sum()), float((w * s.y).sum())
+    a5 = np.sqrt(5 * float((w * (s.x - xc) ** 2).sum()))
+    b5 = np.sqrt(5 * float((w * (s.y - yc) ** 2).sum()))
+    Kmat = np.full((3, 3), np.nan)
+    if calibrate:
+        Fx = _richardson(grid, fine, N, mu, G, nu, EPS_C, 0, 0) / EPS_C
+        Fy = _richardson(grid, fine, N, mu, G, nu, 0, EPS_C, 0) / EPS_C
+        Fp = _richardson(grid, fine, N, mu, G, nu, 0, 0, EPS_PHI) / EPS_PHI
+        row.solves += 6
+        # spin about the centroid: creepages at P cx = cphi yc, cy = -cphi xc
+        Fpc = Fp + yc * Fx - xc * Fy
+        # moments about the centroid: mz_c = mz_P - (xc fy - yc fx)
+        K = np.stack([Fx, Fy, Fpc], axis=1)
+        K[2] -= xc * K[1] - yc * K[0]
+        Kmat = K
+    return grid, fine, N, s, sf, xc, yc, a5, b5, Kmat
+
+
 def build_row(wheel, y, Fz_max, *, mu=0.52, G=G_DEF, nu=NU_DEF, n=40, n_short=16,
               nodes=NODES, calibrate=True, fields=True, correct=None, corr_n=CORR_N):
     """One row of the table: every patch at its approach nodes, solved by the
@@ -330,36 +365,20 @@ def build_row(wheel, y, Fz_max, *, mu=0.52, G=G_DEF, nu=NU_DEF, n=40, n_short=16
                 g1 = g2
                 if done:
                     break
-            for cover in (1.3, 1.6, 2.0):
-                grid = pt.grid(j, gr["g"] + e, n=n, cover=cover, n_short=n_short)
-                if grid is None:
+            node = None
+            for cover in (1.3, 1.6, 2.0, 2.6):
+                # a grid whose contact (coarse and fine, at every creepage)
+                # keeps off its edge: else the next cover
+                try:
+                    node = _node(pt, j, gr, e, n, n_short, cover, Fz_max, dz_max, mu, G, nu,
+                                 calibrate, row)
+                except rr.RollerRigError:
+                    continue
+                if node is not None:
                     break
-                N0 = Fz_max * (grid.pen / (dz_max * np.cos(grid.delta))) ** 1.5
-                N, s = ng.load_for_approach(grid, grid.pen, mu, G, nu, N0)
-                row.solves += 4
-                if not ng._edge(s.contact):
-                    break
-            if grid is None:
+            if node is None:
                 continue
-            fine = pt.grid(j, gr["g"] + e, cover=cover, dx=grid.dx / 2)
-            sf = ng._solve(fine, N, mu, G, nu)      # the normal solution's numbers: the fine grid's
-            row.solves += 1
-            w = s.pn / s.pn.sum()
-            xc, yc = float((w * s.x).sum()), float((w * s.y).sum())
-            a5 = np.sqrt(5 * float((w * (s.x - xc) ** 2).sum()))
-            b5 = np.sqrt(5 * float((w * (s.y - yc) ** 2).sum()))
-            Kmat = np.full((3, 3), np.nan)
-            if calibrate:
-                Fx = _richardson(grid, fine, N, mu, G, nu, EPS_C, 0, 0) / EPS_C
-                Fy = _richardson(grid, fine, N, mu, G, nu, 0, EPS_C, 0) / EPS_C
-                Fp = _richardson(grid, fine, N, mu, G, nu, 0, 0, EPS_PHI) / EPS_PHI
-                row.solves += 6
-                # spin about the centroid: creepages at P cx = cphi yc, cy = -cphi xc
-                Fpc = Fp + yc * Fx - xc * Fy
-                # moments about the centroid: mz_c = mz_P - (xc fy - yc fx)
-                K = np.stack([Fx, Fy, Fpc], axis=1)
-                K[2] -= xc * K[1] - yc * K[0]
-                Kmat = K
+            grid, fine, N, s, sf, xc, yc, a5, b5, Kmat = node
             recs.append(dict(e=e, N=N, approach=s.delta, s_roller=grid.s_roller,
                              delta=grid.delta, P=grid.point, area=sf.contact_area,
                              pmax=sf.pmax, xc=xc, yc=yc, a5=a5, b5=b5, K=Kmat,
@@ -381,14 +400,27 @@ def build_row(wheel, y, Fz_max, *, mu=0.52, G=G_DEF, nu=NU_DEF, n=40, n_short=16
                 gr_ = r["grid"]
                 cphi = correct.creepages(gr_.point, gr_.t1, gr_.t2, gr_.n, gr_.pen,
                                          pn_.g + r["e"])[2]
-                if corr_n is not None:
-                    # the correction's exact solutions on their own grids
-                    pt.groups[j]["s_roller"], pt.groups[j]["delta"] = r["s_roller"], r["delta"]
-                    gc = pt.grid(j, pn_.g + r["e"], n=corr_n, cover=r["cover"],
-                                 n_short=max(4, corr_n * n_short // n))
-                    r = dict(r, grid=gc, fine=pt.grid(j, pn_.g + r["e"], cover=r["cover"],
-                                                      dx=gc.dx / 2))
-                pn_.corr.append(residual_at_node(r, mu, G, nu, cphi))
+                res = None
+                for grow in (1.0, 1.3, 1.7):
+                    rk = r
+                    if corr_n is not None:
+                        # the correction's exact solutions on their own grids
+                        pt.groups[j]["s_roller"] = r["s_roller"]
+                        pt.groups[j]["delta"] = r["delta"]
+                        gc = pt.grid(j, pn_.g + r["e"], n=corr_n, cover=grow * r["cover"],
+                                     n_short=max(4, corr_n * n_short // n))
+                        rk = dict(r, grid=gc, fine=pt.grid(j, pn_.g + r["e"],
+                                                           cover=grow * r["cover"],
+                                                           dx=gc.dx / 2))
+                    try:
+                        res = residual_at_node(rk, mu, G, nu, cphi)
+                        break
+                    except rr.RollerRigError:
+                        continue
+                if res is None:
+                    raise rr.RollerRigError(f"build_row: y = {y}: the correction's contact "
+                                            f"reaches its grid's edge")
+                pn_.corr.append(res)
                 row.solves += 2 * (1 + len(CORR_U) * len(CORR_TH))
         row.patches.append(pn_)
     return row

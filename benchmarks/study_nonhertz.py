@@ -205,7 +205,7 @@ def evaluate(methods, sets=("csv", "sweep")):
 
 # ------------------------------------------------------------------ continuity
 
-def continuity(methods, step=1e-5, half=0.5e-3):
+def continuity(methods, step=1e-5, half=0.5e-3, only=None):
     """Force against y at `step` through every two-point zone (the contact
     point's jumps, +-half around them), at the nominal load and a mid
     creepage: the largest change between neighbours over mu N."""
@@ -215,6 +215,8 @@ def continuity(methods, step=1e-5, half=0.5e-3):
     out = {}
     for name in methods:
         for (pair, side), js in jumps.items():
+            if only and pair != only:
+                continue
             tab = nc.table(pair, ctx.geo)
             for yj in js:
                 yj *= 1e-3
@@ -363,7 +365,7 @@ def main():
     elif args.what == "evaluate":
         evaluate(methods, args.sets.split(","))
     elif args.what == "continuity":
-        continuity(methods)
+        continuity(methods, only=args.pair)
     elif args.what == "export":
         export(args.tag, args.pair, args.side,
                os.path.join(OUT, f"table_{args.pair}_{args.side}.bin"),
