@@ -26,8 +26,8 @@ own plane, one pose), on grids of 60 elements across a patch's longer side
 and at least 24 across its shorter one (rig_exact's default n = 40 puts 4
 to 7 across the flange's patches), the forces extrapolated to the
 continuum by Richardson from elements half that size, each patch's plane
-(CONTACT's weighted reference) set at the final approach (rig_exact sets
-it at its first pass's load, Fz / cos(delta): see nonhertz_geom.exact_multi) (the steady-rolling
+(CONTACT's weighted reference) set at the final approach, as rig_exact's
+rebuild does (see nonhertz_geom.exact_multi) (the steady-rolling
 upwind difference is first order in the element size, as
 rollerrig.exact_table's nodes are extrapolated), the normal solution the
 fine grid's.  rig_exact on its default grid is kept beside it.

@@ -592,10 +592,10 @@ def exact_multi(wheel, table, y_ws, Fz, *, spin, roller_spin, vy=0.0, mu=0.52, G
     dz, res, _ = balance(grids, dz0, dz0, False)
     # each patch's reference at its approach found, its grid at the pose found;
     # then (consistent_plane) again at the approach of the balance with the
-    # tangential forces, until the plane is the final load's: rig_exact sets
-    # it once, at the first pass's load Fz / cos(delta) (the lateral creep
-    # force's share fy sin(delta) of Fz left out: at the flange root, up to
-    # 20 % of the approach, 0.01 rad of plane, 0.03 mu N in the forces)
+    # tangential forces, until the plane is the final load's, as rig_exact's
+    # rebuild makes it (the first balance leaves out the creep force's share
+    # fy sin(delta) of Fz: at the flange root 20 % of the approach, 0.01 rad
+    # of plane, 0.037 mu N in the forces)
     apps = [s0.delta if s0 is not None else None for (N, s0) in res]
     for _ in range(4 if consistent_plane else 1):
         for j, a in enumerate(apps):
