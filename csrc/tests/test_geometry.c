@@ -235,7 +235,7 @@ static void test_rig_contact_checked(rr_rig_contact_model *m, const rr_rig_state
     const double spins[3] = {1.0, 0.98, 1.05}, ys[3] = {0.0, 2e-3, 0.01};
     int i, j, l, st;
 
-    CHECK_STATUS(rr_rig_contact_bind(&k, m), RR_OK, "rig: bound");
+    CHECK_STATUS(rr_rig_contact_bind(&k, m, NULL, 0), RR_OK, "rig: bound");
     for (i = 0; i < 3; i++)
         for (j = 0; j < 3; j++)
             for (l = 0; l < 4; l++) {
@@ -269,7 +269,7 @@ static void test_rig_contact_checked(rr_rig_contact_model *m, const rr_rig_state
     CHECK_STATUS(rr_rig_contact_eval_checked(&k, &s, loads[0], &p2, w2), RR_OK,
                  "rig: the bound copy is the checked model");
     CHECK(same_wheels(&p1, w1, &p2, w2), "rig: and evaluates as before");
-    CHECK_STATUS(rr_rig_contact_bind(&k, m), RR_ERR_GRID, "rig: the changed model refused");
+    CHECK_STATUS(rr_rig_contact_bind(&k, m, NULL, 0), RR_ERR_GRID, "rig: the changed model refused");
     m->creep.v[RR_FASTSIM_NX] = 20;
     /* what a C caller can get wrong: an unbound or refused record, NULLs */
     CHECK_STATUS(rr_rig_contact_eval_checked(&k, &s, loads[0], &p2, w2), RR_ERR_NULL,
@@ -280,7 +280,7 @@ static void test_rig_contact_checked(rr_rig_contact_model *m, const rr_rig_state
     CHECK_STATUS(rr_rig_kinematics_checked(&k, &s, &p2, w2), RR_ERR_NULL, "rig: zeroed record");
     CHECK_STATUS(rr_rig_contact_loads_checked(&k, loads[0], &p2, w2), RR_ERR_NULL,
                  "rig: zeroed record's loads");
-    CHECK_STATUS(rr_rig_contact_bind(&k, m), RR_OK, "rig: bound again");
+    CHECK_STATUS(rr_rig_contact_bind(&k, m, NULL, 0), RR_OK, "rig: bound again");
     CHECK_STATUS(rr_rig_kinematics_checked(NULL, &s, &p2, w2), RR_ERR_NULL, "rig: NULL record");
     CHECK_STATUS(rr_rig_kinematics_checked(&k, NULL, &p2, w2), RR_ERR_NULL, "rig: NULL state");
     CHECK_STATUS(rr_rig_kinematics_checked(&k, &s, NULL, w2), RR_ERR_NULL, "rig: NULL pose");
@@ -290,8 +290,8 @@ static void test_rig_contact_checked(rr_rig_contact_model *m, const rr_rig_state
                  "rig: NULL loads");
     CHECK_STATUS(rr_rig_contact_loads_checked(&k, loads[0], NULL, w2), RR_ERR_NULL,
                  "rig: NULL pose for the loads");
-    CHECK_STATUS(rr_rig_contact_bind(NULL, m), RR_ERR_NULL, "rig: NULL record to bind");
-    CHECK_STATUS(rr_rig_contact_bind(&k, NULL), RR_ERR_NULL, "rig: NULL model");
+    CHECK_STATUS(rr_rig_contact_bind(NULL, m, NULL, 0), RR_ERR_NULL, "rig: NULL record to bind");
+    CHECK_STATUS(rr_rig_contact_bind(&k, NULL, NULL, 0), RR_ERR_NULL, "rig: NULL model");
 }
 
 /* The whole evaluation on the conical pair: free rolling, braking, bad input. */

@@ -31,7 +31,7 @@ import numpy as np
 
 from .. import _core
 from .._binding import (METHODS, FallingFriction, MethodInfo, OptionInfo, _broadcast, _finish,
-                       _friction, creep_options, methods_doc, used_numbers)
+                       _friction, creep_blame, creep_options, methods_doc, used_numbers)
 from .._errors import RollerRigError, check_status
 
 __all__ = [
@@ -238,7 +238,8 @@ def creep_forces(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, method
     fx, fy, mz, status = _core.creep_forces(opts, *flat)
     # the method's own numbers may explain a failure too (beta = 1e307)
     full.update(used_numbers(method, options))
-    return CreepForces(*_finish(func, shape, scalar, full, (fx, fy, mz), status, errors))
+    return CreepForces(*_finish(func, shape, scalar, full, (fx, fy, mz), status, errors,
+                                creep_blame(opts, flat)))
 
 
 def fastsim_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, method="fastsim",
@@ -262,7 +263,7 @@ def fastsim_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, metho
         raise RollerRigError(f"{func}: one case at a time; got inputs of shape {shape}")
     fx, fy, mz, status, x, y, pn, px, py, slip, area = _core.fastsim_field(opts, *flat)
     full.update(used_numbers(method, options))
-    check_status(func, np.array(status, dtype=np.int8), full, "raise")
+    check_status(func, np.array(status, dtype=np.int8), full, "raise", creep_blame(opts, flat))
     return TractionField(x=x, y=y, pn=pn, px=px, py=py, slip=slip.astype(bool), area=area,
                          fx=fx, fy=fy, mz=mz, status=status)
 
