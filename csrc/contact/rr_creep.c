@@ -148,14 +148,40 @@ static int takes(const rr_method_desc *d, const rr_contact_problem *p)
     return p->patch != RR_PATCH_GRID || d->takes_grid;
 }
 
-/* 1 where the method of k needs more workspace for p than work_len doubles
- * at work (the ellipse's need is k's, a grid's its descriptor's) */
-static int workspace_short(const rr_creep_checked *k, const rr_contact_problem *p,
-                           const double *work, size_t work_len)
+/* the method's entry for the checked record k, problem p */
+static int method_forces(const rr_creep_checked *k, const rr_contact_problem *p, double *work,
+                         const rr_interrupt *stop, rr_forces *out)
 {
-    const size_t need = p->patch == RR_PATCH_GRID ? k->d->workspace_len(&k->o, &p->grid)
-                                                  : k->work_len;
-    return need > 0 && (!work || work_len < need);
+    if (k->d->forces_interruptible)
+        return k->d->forces_interruptible(p, &k->o, work, stop, out);
+    return k->d->forces(p, &k->o, work, out);
+}
+
+/* not inlined (where the compiler has the attribute): the path that calls
+ * it then needs no stack frame of its own, the time step's ellipses none */
+#if defined(__GNUC__)
+#define NOINLINE __attribute__((noinline))
+#else
+#define NOINLINE
+#endif
+
+/* rr_creep_forces_checked of a problem that is not an ellipse (k ready):
+ * a patch the method takes, with the workspace its descriptor asks for the
+ * grid (apart, so that the ellipse's path calls nothing but the method) */
+static NOINLINE int forces_other(const rr_creep_checked *k, const rr_contact_problem *p, double *work,
+                        size_t work_len, const rr_interrupt *stop, rr_forces *out)
+{
+    int st = RR_OK;
+    size_t need;
+    if (!takes(k->d, p))
+        st = RR_ERR_PATCH;
+    else if ((need = k->d->workspace_len(&k->o, &p->grid)) > 0 && (!work || work_len < need))
+        st = RR_ERR_WORKSPACE;
+    if (st < 0) {
+        rr_forces_nan(out);
+        return st;
+    }
+    return method_forces(k, p, work, stop, out);
 }
 
 int rr_creep_forces_checked(const rr_creep_checked *k, const rr_contact_problem *p,
@@ -167,17 +193,15 @@ int rr_creep_forces_checked(const rr_creep_checked *k, const rr_contact_problem 
     if (!out || !p || !k || k->ready != RR_CREEP_READY || !k->d
         || k->d != rr_method_get(k->o.method))
         st = RR_ERR_NULL;
-    else if (!takes(k->d, p))
-        st = RR_ERR_PATCH;
-    else if (workspace_short(k, p, work, work_len))
+    else if (p->patch != RR_PATCH_ELLIPSE)
+        return forces_other(k, p, work, work_len, stop, out);
+    else if (k->work_len > 0 && (!work || work_len < k->work_len))
         st = RR_ERR_WORKSPACE;
     if (st < 0) {
         rr_forces_nan(out);
         return st;
     }
-    if (k->d->forces_interruptible)
-        return k->d->forces_interruptible(p, &k->o, work, stop, out);
-    return k->d->forces(p, &k->o, work, out);
+    return method_forces(k, p, work, stop, out);
 }
 
 int rr_creep_forces_interruptible(const rr_contact_problem *p, const rr_creep_opts *o,

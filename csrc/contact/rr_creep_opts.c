@@ -87,23 +87,24 @@ int rr_creep_kalker(const rr_contact_problem *p, rr_kalker_coeffs *k)
 
 int rr_creep_ellipse_check(const rr_contact_problem *p)
 {
-    if (p && p->patch != RR_PATCH_ELLIPSE)
-        return RR_ERR_PATCH;
-    return rr_contact_problem_check(p, NULL);
+    return p && p->patch != RR_PATCH_ELLIPSE ? RR_ERR_PATCH : rr_contact_problem_check(p, NULL);
 }
 
 int rr_creep_prepare(const rr_contact_problem *p, rr_kalker_coeffs *k)
 {
-    int st = k ? rr_creep_ellipse_check(p) : RR_ERR_NULL;
-    const rr_friction *fr = p ? &p->friction : NULL;
+    int st;
 
-    if (st == RR_OK && rr_friction_is_falling(fr) && !(p->speed > 0.0))
-        st = RR_ERR_SPEED;
+    if (!k || !p)
+        return RR_ERR_NULL;
+    if (p->patch != RR_PATCH_ELLIPSE)
+        return RR_ERR_PATCH;
+    if ((st = rr_contact_problem_check(p, NULL)) < 0)
+        return st;
+    if (rr_friction_is_falling(&p->friction) && !(p->speed > 0.0))
+        return RR_ERR_SPEED;
     /* the friction limit itself must have a double's digits: a subnormal
      * mu0 N rounds the saturated force above it */
-    if (st == RR_OK && !isnormal(fr->mu0 * p->N))
-        st = RR_ERR_RANGE;
-    if (st == RR_OK)
-        st = rr_creep_kalker(p, k);
-    return st;
+    if (!isnormal(p->friction.mu0 * p->N))
+        return RR_ERR_RANGE;
+    return rr_creep_kalker(p, k);
 }

@@ -200,7 +200,7 @@ static int outside(const rr_exact_table *t, const rr_contact_problem *c, double 
 static int forces(const rr_exact_table *t, const rr_contact_problem *c, int simd,
                   rr_forces *out)
 {
-    const rr_friction *fr = c ? &c->friction : NULL;
+    const rr_friction *fr;
     rr_kalker_coeffs k;
     double q[4], f[3], cc, mu, muN, x, y, z, m, R, sign = 1.0, sx = 1.0, sy = 1.0, aob;
     double sat;
@@ -218,6 +218,7 @@ static int forces(const rr_exact_table *t, const rr_contact_problem *c, int simd
         rr_forces_nan(out);
         return st;
     }
+    fr = &c->friction;
     out->fx = out->fy = out->mz = 0.0;
     cc = sqrt(c->a) * sqrt(c->b);
     /* the creepages times s (the saturation scale cancels in the direction);

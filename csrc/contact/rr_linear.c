@@ -24,13 +24,13 @@ static int linear_checked(const rr_contact_problem *c, rr_forces *out)
 
 int rr_linear(const rr_contact_problem *p, rr_forces *out)
 {
+    int st = !out ? RR_ERR_NULL : rr_creep_ellipse_check(p);
+
     /* the friction law goes unused, but a NaN or invalid one is still
-     * refused, before the rest of the problem (as always) */
-    int st = out ? (p && p->patch == RR_PATCH_ELLIPSE ? rr_friction_check(&p->friction)
-                                                      : rr_creep_ellipse_check(p))
-                 : RR_ERR_NULL;
-    if (st == RR_OK)
-        st = rr_creep_ellipse_check(p);
+     * refused, and before the rest of the problem (as always) */
+    if (st < 0 && out && p && p->patch == RR_PATCH_ELLIPSE
+        && rr_friction_check(&p->friction) < 0)
+        st = rr_friction_check(&p->friction);
     if (st < 0) {
         rr_forces_nan(out);
         return st;
