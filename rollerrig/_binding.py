@@ -138,15 +138,58 @@ def check_creep_options(func, method, options):
     return dict(options, method=method)
 
 
+# one valid creep-force case, in the order of the binding's arguments (cx, cy,
+# cphi, a, b, N, mu, G, nu, speed, friction.A, friction.B): swap_blame's
+CREEP_VALID = dict(cx=0.0, cy=0.0, cphi=0.0, a=6e-3, b=4e-3, N=1e4, mu=0.3, G=8.2e10, nu=0.28,
+                   speed=1.0, **{"friction.A": 1.0, "friction.B": 0.0})
+
+
 def creep_blame(opts, flat):
     """blame(i, status) for check_status: the argument of a creep-force case
     (as _case names them) that the C core blames for element i's status
     (rr_creep_blame, mapped by the binding), from the CreepOptions opts and
-    the case's flat inputs."""
+    the case's flat inputs; where it blames no one member (a result out of
+    range), those whose own values give the status (swap_blame)."""
+    def status_of(*values):
+        return _core.creep_forces1(opts, *values)[3]
+    swapped = swap_blame(status_of, flat, list(CREEP_VALID), CREEP_VALID)
+
     def blame(i, code):
         values = [float(a[i if a.size > 1 else 0]) for a in flat]
         name = _core.creep_blame(opts, *values, code)
-        return [name] if name else None
+        return [name] if name else swapped(i, code)
+    return blame
+
+
+def swap_blame(status_of, flat, names, reference):
+    """blame(i, status) for check_status, for a call whose C function reports
+    no member: the arguments of element i whose own values give the status,
+    found by the C function itself, not by restating its rules: each
+    replaced by its value in a valid case (reference: name -> value), one at
+    a time; where no single one clears the status (two bad values), all of
+    them in turn, then each put back where the status stays cleared without
+    it.  status_of(*values) -> the status of one case (names' order)."""
+    def blame(i, code):
+        values = [float(np.reshape(a, -1)[i if np.size(a) > 1 else 0]) for a in flat]
+        swapped = [k for k, n in enumerate(names)
+                   if status_of(*(reference[n] if j == k else v
+                                  for j, v in enumerate(values))) != code]
+        if not swapped:
+            trial = list(values)
+            for k, n in enumerate(names):
+                trial[k] = reference[n]
+                if status_of(*trial) != code:
+                    break
+            else:
+                return None
+            swapped = [j for j in range(k + 1) if values[j] != trial[j]]
+            for j in list(swapped[:-1]):
+                trial[j] = values[j]
+                if status_of(*trial) == code:
+                    trial[j] = reference[names[j]]
+                else:
+                    swapped.remove(j)
+        return [names[k] for k in swapped]
     return blame
 
 

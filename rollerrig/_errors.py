@@ -25,33 +25,19 @@ def status_message(code):
 STATUS = {code: status_message(code) for code in range(_core.STATUS_MIN, _core.STATUS_MAX + 1)}
 
 
-def _moderate(v):
-    """Not among the values that push a result out of floating-point range."""
-    return v == 0.0 or 1e-30 <= abs(v) <= 1e30
-
-
-# the statuses whose meaning names the kind of value at fault, where the C
-# core names no argument: any non-finite value, any extreme one
-_NONFINITE, _RANGE = -1, -12
-
-
 def _value(arr, index):
     return float(arr.reshape(-1)[index if arr.size > 1 else 0])
 
 
-def _culprits(code, args, index, blamed=None):
-    """'name = value' for the arguments of status `code` at `index`: those the
-    C core blamed (blamed: names; one not in args is named alone, "h"), or,
-    where it blamed none, the non-finite ones (RR_ERR_NONFINITE), the
-    extreme ones (RR_ERR_RANGE: a result out of range, no one value at
-    fault), else every argument."""
+def _culprits(args, index, blamed=None):
+    """'name = value' for the arguments at `index` that the C core blamed
+    (blamed: names, from its check's report or from the C function itself,
+    never from rules restated here; one not in args is named alone, "h"),
+    else for every argument."""
     if blamed:
         return ", ".join(f"{n} = {_value(args[n], index)!r}" if n in args else n
                          for n in blamed)
-    values = {n: _value(arr, index) for n, arr in args.items()}
-    test = {_NONFINITE: np.isfinite, _RANGE: _moderate}.get(code)
-    found = [f"{n} = {v!r}" for n, v in values.items() if test is not None and not test(v)]
-    return ", ".join(found or (f"{n} = {v!r}" for n, v in values.items())) or "(options)"
+    return ", ".join(f"{n} = {_value(a, index)!r}" for n, a in args.items()) or "(options)"
 
 
 def check_status(func, status, args, errors, blame=None):
@@ -65,7 +51,8 @@ def check_status(func, status, args, errors, blame=None):
             "ignore".
     blame:  None, or blame(flat index, status) -> the names of the
             arguments the C core blames for that element's status (its
-            check's report mapped to the call's arguments), or None
+            check's report mapped to the call's arguments, or the arguments
+            whose own values give it: _binding.swap_blame), or None
     """
     if errors == "ignore":
         return
@@ -77,7 +64,7 @@ def check_status(func, status, args, errors, blame=None):
         index = tuple(int(k) for k in np.unravel_index(i, status.shape))
         where = f" at index {index}" if status.ndim else ""
         blamed = blame(i, code) if blame is not None else None
-        msg = (f"{func}: {_culprits(code, args, i, blamed)}{where}: {status_message(code)}"
+        msg = (f"{func}: {_culprits(args, i, blamed)}{where}: {status_message(code)}"
                + (f" ({bad.size} of {flat.size} elements failed; their results are NaN)"
                   if flat.size > 1 else ""))
         if errors == "raise":
