@@ -515,6 +515,46 @@ static void test_rebind(const rr_rig_params *good)
  * rr_rig_method_check; a sample time at which a drive's loop is unstable
  * by rr_rig_check and rr_rig_config_check (naming it); and a creep force
  * beyond mu N from any method stops the rig (RR_ERR_FRICTION_LIMIT). */
+/* The rig's workspace: the caller's, given at rr_rig_init, kept by
+ * rr_rig_rebind and handed to the creep method (none for the methods the
+ * rig steps with today: each asks 0 doubles); no method is refused for
+ * needing one (rr_rig_method_check: not iterative, saturates). */
+static void test_workspace(const rr_rig_params *good)
+{
+    static rr_rig rig, ref;
+    static double work[8];
+    static rr_rig_params p;
+    double rec[RR_REC_COUNT], rref[RR_REC_COUNT];
+    int m, k;
+
+    p = *good;
+    for (m = 0; m < rr_method_count(); m++) {
+        rr_creep_opts o;
+        rr_creep_opts_default(&o, m);
+        CHECK((rr_rig_method_check(&o) == RR_OK)
+              == (!rr_method_get(m)->iterative && rr_method_get(m)->saturates),
+              "rr_rig_method_check: not iterative and saturating, whatever the workspace");
+        if (rr_rig_method_check(&o) == RR_OK) {
+            p.contact.creep = o;
+            CHECK(rr_rig_workspace_len(&p) == rr_creep_workspace_len(&o, NULL),
+                  "rr_rig_workspace_len: the method's for the ellipse");
+        }
+    }
+    CHECK(rr_rig_workspace_len(NULL) == 0, "rr_rig_workspace_len(NULL)");
+    p = *good;
+    CHECK_STATUS(rr_rig_init(&p, 31.25, work, 8, &rig), RR_OK, "init with a workspace");
+    CHECK(rig.work == work && rig.work_len == 8 && rig.contact.work == work
+          && rig.contact.work_len == 8, "the workspace kept, and bound to the contact model");
+    CHECK_STATUS(rr_rig_rebind(&rig, &p), RR_OK, "rebind");
+    CHECK(rig.work == work && rig.contact.work == work, "rebind keeps it");
+    CHECK_STATUS(rr_rig_init(&p, 31.25, NULL, 0, &ref), RR_OK, "init without");
+    for (k = 0; k < 40; k++) {
+        const int st = rr_rig_step(&rig, 5.0, 0.02, rec);
+        CHECK(st >= 0 && st == rr_rig_step(&ref, 5.0, 0.02, rref), "a step, as without");
+    }
+    CHECK(memcmp(rec, rref, sizeof rec) == 0, "a workspace no method reads changes nothing");
+}
+
 static void test_sanity(const rr_rig_params *good)
 {
     static rr_rig rig;
@@ -532,7 +572,9 @@ static void test_sanity(const rr_rig_params *good)
     CHECK_STATUS(rr_rig_check(&p), RR_ERR_METHOD, "the rig refuses the linear theory");
     CHECK_STATUS(rr_rig_init(&p, 31.25, NULL, 0, &rig), RR_ERR_METHOD, "and does not start with it");
     rr_creep_opts_default(&p.contact.creep, RR_METHOD_EXACT);
-    CHECK_STATUS(rr_rig_check(&p), RR_ERR_METHOD, "the exact solver: a workspace");
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_METHOD, "the exact solver: iterative");
+    CHECK(rr_creep_iterative(&p.contact.creep) && rr_rig_workspace_len(&p) == 0,
+          "the exact solver: refused for its iterations, so no workspace asked");
     rr_creep_opts_default(&p.contact.creep, RR_METHOD_POLACH);
     CHECK_STATUS(rr_rig_check(&p), RR_OK, "Polach saturates: taken");
     CHECK_STATUS(rr_rig_method_check(NULL), RR_ERR_NULL, "NULL options");
@@ -605,6 +647,7 @@ int main(void)
     test_external_commands(&p);
     test_adhesion(&p);
     test_rebind(&p);
+    test_workspace(&p);
     test_sanity(&p);
     return rr_test_summary();
 }
