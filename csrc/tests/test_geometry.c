@@ -292,6 +292,30 @@ static void test_rig_contact_checked(rr_rig_contact_model *m, const rr_rig_state
                  "rig: NULL pose for the loads");
     CHECK_STATUS(rr_rig_contact_bind(NULL, m, NULL, 0), RR_ERR_NULL, "rig: NULL record to bind");
     CHECK_STATUS(rr_rig_contact_bind(&k, NULL, NULL, 0), RR_ERR_NULL, "rig: NULL model");
+    /* the bound workspace reaches the creep method: a record whose method
+     * asks 4 doubles (as one with a workspace would) is refused each wheel
+     * without it, and evaluates as before with it */
+    {
+        double work[4];
+        CHECK(rr_rig_contact_workspace_len(m) == 0, "rig: FASTSIM asks no workspace");
+        CHECK(rr_rig_contact_workspace_len(NULL) == 0, "rig: a NULL model asks none");
+        CHECK_STATUS(rr_rig_contact_bind(&k, m, work, 4), RR_OK, "rig: bound with a workspace");
+        CHECK(k.work == work && k.work_len == 4, "rig: the workspace kept");
+        s = *s0;
+        s.spin *= 0.98;
+        rr_rig_contact_eval_checked(&k, &s, loads[0], &p1, w1);
+        k.creep.work_len = 4;
+        k.work = NULL;
+        k.work_len = 0;
+        rr_rig_contact_eval_checked(&k, &s, loads[0], &p2, w2);
+        CHECK(w2[0].status == RR_ERR_WORKSPACE && w2[1].status == RR_ERR_WORKSPACE,
+              "rig: a method's workspace missing: each wheel refused");
+        k.work = work;
+        k.work_len = 4;
+        CHECK_STATUS(rr_rig_contact_eval_checked(&k, &s, loads[0], &p2, w2), RR_OK,
+                     "rig: with the workspace");
+        CHECK(same_wheels(&p1, w1, &p2, w2), "rig: with the workspace, as before");
+    }
 }
 
 /* The whole evaluation on the conical pair: free rolling, braking, bad input. */
