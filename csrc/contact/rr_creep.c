@@ -168,8 +168,9 @@ static int method_forces(const rr_creep_checked *k, const rr_contact_problem *p,
 /* rr_creep_forces_checked of a problem that is not an ellipse (k ready):
  * a patch the method takes, with the workspace its descriptor asks for the
  * grid (apart, so that the ellipse's path calls nothing but the method) */
-static NOINLINE int forces_other(const rr_creep_checked *k, const rr_contact_problem *p, double *work,
-                        size_t work_len, const rr_interrupt *stop, rr_forces *out)
+static NOINLINE int forces_other(const rr_creep_checked *k, const rr_contact_problem *p,
+                                 double *work, size_t work_len, const rr_interrupt *stop,
+                                 rr_forces *out)
 {
     int st = RR_OK;
     size_t need;

@@ -275,43 +275,6 @@ static void check_forces(const char *fn, int st, const rr_contact_problem *c, co
         fz_bound(fn, st, f->fx, f->fy, fr->mu0, c->N);
 }
 
-/* The member field of ellipse problem c is at fault as status st says
- * (rr_contact_problem_check's documentation, judged member by member). */
-static int member_at_fault(const rr_contact_problem *c, int field, int st)
-{
-    const rr_friction *f = &c->friction;
-    double v;
-    switch (field) {
-    case RR_PF_A: v = c->a; break;
-    case RR_PF_B: v = c->b; break;
-    case RR_PF_N: v = c->N; break;
-    case RR_PF_G: v = c->G; break;
-    case RR_PF_NU: v = c->nu; break;
-    case RR_PF_CX: v = c->cx; break;
-    case RR_PF_CY: v = c->cy; break;
-    case RR_PF_CPHI: v = c->cphi; break;
-    case RR_PF_SPEED: v = c->speed; break;
-    case RR_PF_MU0: v = f->mu0; break;
-    case RR_PF_FRICTION_A: v = f->A; break;
-    case RR_PF_FRICTION_B: v = f->B; break;
-    default: return 0;       /* no member of an ellipse problem */
-    }
-    switch (st) {
-    case RR_ERR_NONFINITE: return !isfinite(v);
-    case RR_ERR_GEOMETRY: return (field == RR_PF_A || field == RR_PF_B) && !(v > 0.0);
-    case RR_ERR_LOAD: return field == RR_PF_N && !(v > 0.0);
-    case RR_ERR_MATERIAL: return (field == RR_PF_G && !(v > 0.0))
-                                 || (field == RR_PF_NU && !(v >= 0.0 && v <= 0.5));
-    case RR_ERR_SPEED: return field == RR_PF_SPEED && !(v >= 0.0);
-    case RR_ERR_FRICTION: return (field == RR_PF_MU0 && !(v > 0.0))
-                                 || (field == RR_PF_FRICTION_A && !(v > 0.0 && v <= 1.0))
-                                 || (field == RR_PF_FRICTION_B && !(v >= 0.0));
-    case RR_ERR_RANGE: return ((field == RR_PF_MU0 || field == RR_PF_FRICTION_B)
-                               && v > RR_FRICTION_MAX) || !isnormal(v);
-    default: return 0;
-    }
-}
-
 /* rr_creep_blame's member for status st of a checked method: one at fault
  * by the problem's check, or what a method asks of a valid problem: the
  * speed for falling friction at rest, the law for a Coulomb-only method,
@@ -319,7 +282,7 @@ static int member_at_fault(const rr_contact_problem *c, int field, int st)
 static int blame_right(const rr_creep_checked *k, const rr_contact_problem *c, int field, int st)
 {
     if (rr_contact_problem_check(c, NULL) != RR_OK)
-        return member_at_fault(c, field, st);
+        return fz_member_at_fault(c, field, st);
     switch (st) {
     case RR_ERR_SPEED:
         return field == RR_PF_SPEED && falling(&c->friction) && c->speed == 0.0;
@@ -466,7 +429,7 @@ static void run_shared(fz_in *in, const rr_contact_problem *c, const rr_friction
         if ((st < 0) != bad)
             fz_fail("rr_contact_problem_check: status %d for a problem that is %s", st,
                     bad ? "invalid" : "valid");
-        if (st < 0 ? !member_at_fault(c, field, st) : field != RR_PF_NONE)
+        if (st < 0 ? !fz_member_at_fault(c, field, st) : field != RR_PF_NONE)
             fz_fail("rr_contact_problem_check: status %d names member %d (%s)", st, field,
                     rr_problem_field_name(field) ? rr_problem_field_name(field) : "none");
         if (st != rr_contact_problem_check(c, NULL))

@@ -146,48 +146,6 @@ static void check_fields(const rr_exact_problem *pb, int st, const rr_exact_resu
                 nc, ns);
 }
 
-/* Member field of grid problem g at fault as status st says
- * (rr_contact_problem_check's documentation, member by member). */
-static int grid_member_at_fault(const rr_contact_problem *g, int field, int st)
-{
-    const rr_grid *q = &g->grid;
-    double v;
-    int i, bad;
-    switch (field) {
-    case RR_PF_MX: return st == RR_ERR_GRID && !(q->mx >= 1 && q->mx <= RR_CONTACT_MAX_GRID);
-    case RR_PF_MY: return st == RR_ERR_GRID && !(q->my >= 1 && q->my <= RR_CONTACT_MAX_GRID);
-    case RR_PF_H:
-        if (st == RR_ERR_NULL)
-            return !g->h;
-        for (i = 0, bad = 0; g->h && i < q->mx * q->my; i++)
-            bad |= !isfinite(g->h[i]);
-        return st == RR_ERR_NONFINITE && bad;
-    case RR_PF_DX: v = q->dx; break;
-    case RR_PF_DY: v = q->dy; break;
-    case RR_PF_X0: v = q->x0; break;
-    case RR_PF_Y0: v = q->y0; break;
-    case RR_PF_N: v = g->N; break;
-    case RR_PF_G: v = g->G; break;
-    case RR_PF_NU: v = g->nu; break;
-    case RR_PF_CX: v = g->cx; break;
-    case RR_PF_CY: v = g->cy; break;
-    case RR_PF_CPHI: v = g->cphi; break;
-    case RR_PF_SPEED: v = g->speed; break;
-    case RR_PF_MU0: v = g->friction.mu0; break;
-    default: return 0;
-    }
-    switch (st) {
-    case RR_ERR_NONFINITE: return !isfinite(v);
-    case RR_ERR_GEOMETRY: return (field == RR_PF_DX || field == RR_PF_DY) && !(v > 0.0);
-    case RR_ERR_LOAD: return field == RR_PF_N && !(v > 0.0);
-    case RR_ERR_MATERIAL: return (field == RR_PF_G && !(v > 0.0))
-                                 || (field == RR_PF_NU && !(v >= 0.0 && v <= 0.5));
-    case RR_ERR_FRICTION: return field == RR_PF_MU0 && !(v > 0.0);
-    case RR_ERR_RANGE: return (field == RR_PF_MU0 && v > RR_FRICTION_MAX) || !isnormal(v);
-    default: return 0;
-    }
-}
-
 /* pb's h as a contact problem on the grid through the registry (the
  * solve of pb gave st, r on a workspace that was zero-filled or NaN) */
 static void grid_problem(const rr_exact_problem *pb, int st, const rr_exact_result *r)
@@ -214,7 +172,7 @@ static void grid_problem(const rr_exact_problem *pb, int st, const rr_exact_resu
     g.cphi = pb->cphi;
     pst = rr_contact_problem_check(&g, &field);
     fz_status("rr_contact_problem_check (grid)", pst);
-    if (pst < 0 ? !grid_member_at_fault(&g, field, pst) : field != RR_PF_NONE)
+    if (pst < 0 ? !fz_member_at_fault(&g, field, pst) : field != RR_PF_NONE)
         fz_fail("rr_contact_problem_check (grid): status %d names member %d (%s)", pst, field,
                 rr_problem_field_name(field) ? rr_problem_field_name(field) : "none");
     /* the method "exact" with pb's settings, where they are valid options */
@@ -244,7 +202,7 @@ static void grid_problem(const rr_exact_problem *pb, int st, const rr_exact_resu
         const int blamed = rr_creep_blame(&k, &g, fst);
         if (!isnan(f.fx) || !isnan(f.fy) || !isnan(f.mz))
             fz_fail("the grid problem: error %d but the forces are not NaN", fst);
-        if (blamed != RR_PF_NONE && !grid_member_at_fault(&g, blamed, fst))
+        if (blamed != RR_PF_NONE && !fz_member_at_fault(&g, blamed, fst))
             fz_fail("rr_creep_blame (grid): status %d blames member %d (%s)", fst, blamed,
                     rr_problem_field_name(blamed));
         if (pst < 0 && pst == fst && blamed != field)
@@ -338,7 +296,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if ((pb.grid.mx < 1 || pb.grid.my < 1 || pb.grid.mx > RR_CONTACT_MAX_GRID
              || pb.grid.my > RR_CONTACT_MAX_GRID)
             && ((st = rr_contact_problem_check(&g, &field)) != RR_ERR_GRID
-                || !grid_member_at_fault(&g, field, st)))
+                || !fz_member_at_fault(&g, field, st)))
             fz_fail("rr_contact_problem_check: a %d x %d grid gave status %d, member %d",
                     g.grid.mx, g.grid.my, st, field);
         free(h);
