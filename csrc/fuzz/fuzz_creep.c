@@ -6,7 +6,7 @@
  * rr_creep_cost/saturates/slope_scale/workspace_len, rr_creep_forces_work,
  * rr_creep_forces_interruptible and rr_creep_field.
  *
- * Input: one byte choosing the entry point, then the contact case (semi-
+ * Input: one byte choosing the entry point, then the ellipse problem (semi-
  * axes 0.1 .. 20 mm, load 1 N .. 100 kN, G 1 .. 100 GPa, creepages of
  * either sign 1e-8 .. 1, spin 1e-6 .. 100 1/m, speed 0.01 .. 100 m/s), the
  * friction law, the options (every field, valid or not: unknown methods,
