@@ -59,9 +59,8 @@ int main(int argc, char **argv)
     long n = 100000, i;
     int repeats = 7, r, k, bad = 0, method;
     double times[101], sum = 0.0;
-    rr_contact_case *cs;
+    rr_contact_problem *cs;
     rr_forces *out;
-    rr_friction *fr;
     rr_creep_opts o;
 
     rng_state = 1;
@@ -78,10 +77,9 @@ int main(int argc, char **argv)
     method = rr_method_find("exact_table");
     if (method < 0 || rr_creep_opts_default(&o, method) != RR_OK)
         return 1;
-    cs = malloc((size_t)n * sizeof *cs);
+    cs = calloc((size_t)n, sizeof *cs);          /* zeroed: ellipse problems */
     out = malloc((size_t)n * sizeof *out);
-    fr = malloc((size_t)n * sizeof *fr);
-    if (!cs || !out || !fr)
+    if (!cs || !out)
         return 1;
     for (i = 0; i < n; i++) {
         const double aob = exp(uniform(log(0.1), log(10.0))), c = uniform(3e-3, 9e-3);
@@ -101,16 +99,16 @@ int main(int argc, char **argv)
         cs[i].cy = mag[1] / 4.0;
         cs[i].cphi = mag[2] / (4.0 * c);
         cs[i].speed = 0.0;
-        fr[i].mu0 = mu;             /* Coulomb */
-        fr[i].A = 1.0;
-        fr[i].B = 0.0;
+        cs[i].friction.mu0 = mu;     /* Coulomb */
+        cs[i].friction.A = 1.0;
+        cs[i].friction.B = 0.0;
     }
     for (i = 0; i < n; i++)
         out[i].fx = out[i].fy = out[i].mz = 0.0;
     for (r = 0; r < repeats; r++) {
         const double t0 = now();
         for (i = 0; i < n; i++)
-            if (rr_creep_forces(&cs[i], &fr[i], &o, &out[i]) < 0)
+            if (rr_creep_forces(&cs[i], &o, &out[i]) < 0)
                 bad++;
         times[r] = (now() - t0) / (double)n;
     }
@@ -122,7 +120,6 @@ int main(int argc, char **argv)
            "\"bad\": %d, \"checksum\": %.17g}\n",
            n, repeats, times[0] * 1e6, times[repeats / 2] * 1e6, bad, sum);
     free(cs);
-    free(fr);
     free(out);
     return 0;
 }

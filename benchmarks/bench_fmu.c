@@ -133,7 +133,7 @@ int main(int argc, char **argv)
             st = 0;
             if (run == 0) {
                 double roller_ref, xi_ref;
-                rr_rig_init(&p, c.roller_speed / c.roller_radius, &rig);
+                rr_rig_init(&p, c.roller_speed / c.roller_radius, NULL, 0, &rig);
                 t0 = now();
                 for (k = 0; k < n && st >= 0; k++) {
                     rr_rig_schedule(&c, k, &roller_ref, &xi_ref);

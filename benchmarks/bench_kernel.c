@@ -159,8 +159,7 @@ int main(int argc, char **argv)
         } else {
             /* as py_creep_forces and its load_case */
             for (i = 0; i < n; i++) {
-                rr_contact_case c;
-                rr_friction fr;
+                rr_contact_problem c;
                 rr_forces f;
                 c.cx = IN(in[0], i);
                 c.cy = IN(in[1], i);
@@ -168,14 +167,14 @@ int main(int argc, char **argv)
                 c.a = IN(in[3], i);
                 c.b = IN(in[4], i);
                 c.N = IN(in[5], i);
-                fr.mu0 = IN(in[6], i);
+                c.friction.mu0 = IN(in[6], i);
                 c.G = IN(in[7], i);
                 c.nu = IN(in[8], i);
                 c.speed = IN(in[9], i);
-                fr.A = IN(in[10], i);
-                fr.B = IN(in[11], i);
-                st[i] = (signed char)rr_creep_forces_checked(&checked, &c, &fr, NULL, 0, NULL,
-                                                             &f);
+                c.friction.A = IN(in[10], i);
+                c.friction.B = IN(in[11], i);
+                c.patch = RR_PATCH_ELLIPSE;
+                st[i] = (signed char)rr_creep_forces_checked(&checked, &c, NULL, 0, NULL, &f);
                 o1[i] = f.fx;
                 o2[i] = f.fy;
                 o3[i] = f.mz;

@@ -51,7 +51,7 @@ static double run(const rr_rig_config *c, const rr_rig_params *p, double *last)
     double rec[RR_REC_COUNT], roller_ref, xi_ref, t0;
     long k, n = rr_rig_samples(c);
     int st;
-    if ((st = rr_rig_init(p, c->roller_speed / c->roller_radius, &rig)) < 0) {
+    if ((st = rr_rig_init(p, c->roller_speed / c->roller_radius, NULL, 0, &rig)) < 0) {
         fprintf(stderr, "init: %s\n", rr_status_message(st));
         return -1.0;
     }

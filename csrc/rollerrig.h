@@ -8,7 +8,8 @@
  *   rr_hertz.h     Hertzian contact ellipse
  *   rr_kalker.h    Kalker's creep coefficients C11, C22, C23, C33
  *   rr_friction.h  Coulomb and Polach's falling friction
- *   rr_contact.h   the contact case and the forces every method returns
+ *   rr_contact.h   the contact problem every method takes (the Hertz ellipse or an
+ *                  undeformed distance on a grid; its check) and the forces it returns
  *   rr_creep_opts.h  method options and descriptors, what every method shares
  *   rr_linear.h    Kalker's linear theory
  *   rr_polach.h    Polach's method

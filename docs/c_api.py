@@ -110,11 +110,17 @@ and builds the library into `rollerrig/_c/lib/` there.
 
 - **Workspace.** Nothing allocates: the caller owns every buffer.  A
   function that needs scratch memory takes `double *work` and its length,
-  sized by a query (`rr_creep_workspace_len`, `rr_exact_workspace_len`,
-  `rr_profile_table_work_len`, `RR_RIG_TABLE_WORK_LEN`,
-  `rr_rig_table_data_len` for a table's data), and returns
-  `RR_ERR_WORKSPACE` when it is missing or too short.  One workspace per
-  thread; there is no global state that changes.
+  sized by a query (`rr_creep_workspace_len` of a method for a problem's
+  size, `rr_exact_workspace_len`, `rr_rig_workspace_len` for the rig,
+  given once to `rr_rig_init`, `rr_profile_table_work_len`,
+  `RR_RIG_TABLE_WORK_LEN`, `rr_rig_table_data_len` for a table's data), and
+  returns `RR_ERR_WORKSPACE` when it is missing or too short.  One workspace
+  per thread; there is no global state that changes.
+- **The contact problem.** Every creep-force method takes one
+  `rr_contact_problem` (`contact/rr_contact.h`): the Hertz ellipse or an
+  undeformed distance on a grid, with the load, material, friction law and
+  creepages; `rr_contact_problem_check` checks one and names the member at
+  fault (docs/architecture.md, "The contact problem").
 - **Structs.** Parameters come in `const` structs, evolving state in a
   separate struct the caller allocates (an `rr_rig` may be `static`) and
   the library initialises (`rr_rig_init`).  Units are SI (m, s, N, Pa,
@@ -153,7 +159,9 @@ int main(void)
     if ((st = rr_rig_table_build(&g, data, rr_rig_table_data_len(&g), work,
                                  RR_RIG_TABLE_WORK_LEN, &t, NULL)) < 0
         || (st = rr_rig_params_from(&c, &t, &p)) < 0
-        || (st = rr_rig_init(&p, c.roller_speed / c.roller_radius, &rig)) < 0) {
+        /* no workspace: the rig's default method needs none
+         * (rr_rig_workspace_len(&p) doubles, for one that does) */
+        || (st = rr_rig_init(&p, c.roller_speed / c.roller_radius, NULL, 0, &rig)) < 0) {
         fprintf(stderr, "%s\n", rr_status_message(st));
         free(data);
         return 1;

@@ -24,7 +24,8 @@ int main(void)
     rr_rig_geometry g;
     rr_contact_table t;
     rr_rig_params p;
-    double rec[RR_REC_COUNT], *data, roller_ref, xi_ref;
+    double rec[RR_REC_COUNT], *data, *rig_work = NULL, roller_ref, xi_ref;
+    size_t nwork = 0;
     long k, n, len;
     int st;
 
@@ -35,10 +36,18 @@ int main(void)
         fprintf(stderr, "rig_paper: out of memory\n");
         return 1;
     }
-    if ((st = rr_rig_table_build(&g, data, len, work, RR_RIG_TABLE_WORK_LEN, &t, NULL)) < 0
-        || (st = rr_rig_params_from(&c, &t, &p)) < 0
-        || (st = rr_rig_init(&p, c.roller_speed / c.roller_radius, &rig)) < 0) {
+    if ((st = rr_rig_table_build(&g, data, len, work, RR_RIG_TABLE_WORK_LEN, &t, NULL)) >= 0
+        && (st = rr_rig_params_from(&c, &t, &p)) >= 0) {
+        /* the creep method's workspace is the caller's, allocated before the
+         * run (none for the methods the rig steps with today) */
+        nwork = rr_rig_workspace_len(&p);
+        if (nwork > 0 && !(rig_work = malloc(nwork * sizeof *rig_work)))
+            st = RR_ERR_WORKSPACE;
+    }
+    if (st < 0 || (st = rr_rig_init(&p, c.roller_speed / c.roller_radius, rig_work, nwork,
+                                    &rig)) < 0) {
         fprintf(stderr, "rig_paper: %s\n", rr_status_message(st));
+        free(rig_work);
         free(data);
         return 1;
     }
@@ -48,15 +57,18 @@ int main(void)
         st = rr_rig_step(&rig, roller_ref, xi_ref, rec);
         if (st < 0) {
             fprintf(stderr, "rig_paper: sample %ld: %s\n", k, rr_status_message(st));
+            free(rig_work);
             free(data);
             return 1;
         }
         if (fwrite(rec, sizeof rec[0], RR_REC_COUNT, stdout) != RR_REC_COUNT) {
             fprintf(stderr, "rig_paper: cannot write the records\n");
+            free(rig_work);
             free(data);
             return 1;
         }
     }
+    free(rig_work);
     free(data);
     return 0;
 }

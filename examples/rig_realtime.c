@@ -98,7 +98,8 @@ int main(int argc, char **argv)
     nsteps = (long)(seconds / period + 0.5);
     if (nsteps > MAXSTEPS)
         nsteps = MAXSTEPS;
-    if ((st = rr_rig_init(&p, V / R0, &rig)) < 0) {
+    /* no workspace: the rig's default method needs none (rr_rig_workspace_len) */
+    if ((st = rr_rig_init(&p, V / R0, NULL, 0, &rig)) < 0) {
         fprintf(stderr, "rig: %s\n", rr_status_message(st));
         return 1;
     }
@@ -109,7 +110,7 @@ int main(int argc, char **argv)
         for (k = 0; k < 200; k++)
             rr_rig_step(&rig, V / R0, targets[0], rec);
         t_step = (rt_now_us() - t0) / 200.0;
-        rr_rig_init(&p, V / R0, &rig);
+        rr_rig_init(&p, V / R0, NULL, 0, &rig);
         t0 = rt_now_us();
         sink = busy(1000000, sink);
         t_busy = (rt_now_us() - t0) / 1e6;

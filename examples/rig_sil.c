@@ -115,7 +115,7 @@ int main(int argc, char **argv)
         || (st = rr_rig_table_build(&g, table_data, rr_rig_table_data_len(&g), table_work,
                                     RR_RIG_TABLE_WORK_LEN, &table, NULL)) != RR_OK
         || (st = rr_rig_params_from(&c, &table, &p)) != RR_OK
-        || (st = rr_rig_init(&p, c.roller_speed / c.roller_radius, &rig)) < 0) {
+        || (st = rr_rig_init(&p, c.roller_speed / c.roller_radius, NULL, 0, &rig)) < 0) {
         fprintf(stderr, "rig: %s\n", rr_status_message(st));
         return 1;
     }

@@ -39,10 +39,13 @@ class MethodInfo(NamedTuple):
     """A creep-force method of the registry: its doc, options (name ->
     OptionInfo, in the descriptor's order), whether it has a traction field
     (fastsim_field), whether it saturates (|F| <= mu N), whether it is a
-    time-loop method (no workspace, bounded cost: the rig's contact model,
-    rig_contact, takes it), whether it takes Coulomb friction only, and
-    whether the rig steps with it (in_rig: a time-loop method that
-    saturates; csrc/rig/rr_rig.h, rr_rig_method_check)."""
+    time-loop method (a case of bounded work, not solved iteratively to a
+    tolerance: the rig's contact model, rig_contact, takes it), whether it
+    takes Coulomb friction only, whether the rig steps with it (in_rig: a
+    time-loop method that saturates; csrc/rig/rr_rig.h,
+    rr_rig_method_check), and whether it takes a contact problem on a grid
+    (an undeformed distance, as exact_solve's; the others the Hertz ellipse
+    only)."""
     name: str
     doc: str
     options: MappingProxyType
@@ -51,6 +54,7 @@ class MethodInfo(NamedTuple):
     in_loop: bool
     coulomb_only: bool
     in_rig: bool
+    takes_grid: bool
 
     def defaults(self):
         """Option name -> default value."""
@@ -60,8 +64,8 @@ class MethodInfo(NamedTuple):
 #: name -> MethodInfo, in the registry's order (read-only)
 METHODS = MappingProxyType({
     name: MethodInfo(name, doc, MappingProxyType({o[0]: OptionInfo(*o) for o in opts}),
-                     bool(field), bool(sat), bool(loop), bool(coulomb), bool(rig))
-    for name, doc, opts, field, sat, loop, coulomb, rig in _core.METHODS})
+                     bool(field), bool(sat), bool(loop), bool(coulomb), bool(rig), bool(grid))
+    for name, doc, opts, field, sat, loop, coulomb, rig, grid in _core.METHODS})
 
 
 def methods_doc():
@@ -90,8 +94,9 @@ def loop_method(func, method):
     if not info.in_loop:
         names = ", ".join(repr(k) for k, m in METHODS.items() if m.in_loop)
         raise RollerRigError(f"{func}: method {method!r} is not a time-loop method (it solves "
-                             f"each contact iteratively on a grid, milliseconds a case, in a "
-                             f"workspace of its own); the rig runs {names}")
+                             f"each contact iteratively to a tolerance on a grid, milliseconds "
+                             f"to seconds a case: no bound on its work a time step could plan "
+                             f"on); the rig runs {names}")
     return info
 
 
@@ -131,6 +136,61 @@ def check_creep_options(func, method, options):
     options given)."""
     creep_options(func, method, options)
     return dict(options, method=method)
+
+
+# one valid creep-force case, in the order of the binding's arguments (cx, cy,
+# cphi, a, b, N, mu, G, nu, speed, friction.A, friction.B): swap_blame's
+CREEP_VALID = dict(cx=0.0, cy=0.0, cphi=0.0, a=6e-3, b=4e-3, N=1e4, mu=0.3, G=8.2e10, nu=0.28,
+                   speed=1.0, **{"friction.A": 1.0, "friction.B": 0.0})
+
+
+def creep_blame(opts, flat):
+    """blame(i, status) for check_status: the argument of a creep-force case
+    (as _case names them) that the C core blames for element i's status
+    (rr_creep_blame, mapped by the binding), from the CreepOptions opts and
+    the case's flat inputs; where it blames no one member (a result out of
+    range), those whose own values give the status (swap_blame)."""
+    def status_of(*values):
+        return _core.creep_forces1(opts, *values)[3]
+    swapped = swap_blame(status_of, flat, list(CREEP_VALID), CREEP_VALID)
+
+    def blame(i, code):
+        values = [float(a[i if a.size > 1 else 0]) for a in flat]
+        name = _core.creep_blame(opts, *values, code)
+        return [name] if name else swapped(i, code)
+    return blame
+
+
+def swap_blame(status_of, flat, names, reference):
+    """blame(i, status) for check_status, for a call whose C function reports
+    no member: the arguments of element i whose own values give the status,
+    found by the C function itself, not by restating its rules: each
+    replaced by its value in a valid case (reference: name -> value), one at
+    a time; where no single one clears the status (two bad values), all of
+    them in turn, then each put back where the status stays cleared without
+    it.  status_of(*values) -> the status of one case (names' order)."""
+    def blame(i, code):
+        values = [float(np.reshape(a, -1)[i if np.size(a) > 1 else 0]) for a in flat]
+        swapped = [k for k, n in enumerate(names)
+                   if status_of(*(reference[n] if j == k else v
+                                  for j, v in enumerate(values))) != code]
+        if not swapped:
+            trial = list(values)
+            for k, n in enumerate(names):
+                trial[k] = reference[n]
+                if status_of(*trial) != code:
+                    break
+            else:
+                return None
+            swapped = [j for j in range(k + 1) if values[j] != trial[j]]
+            for j in list(swapped[:-1]):
+                trial[j] = values[j]
+                if status_of(*trial) == code:
+                    trial[j] = reference[names[j]]
+                else:
+                    swapped.remove(j)
+        return [names[k] for k in swapped]
+    return blame
 
 
 def used_numbers(method, options):
@@ -215,14 +275,14 @@ def _broadcast(func, named):
     return shape, scalar, full, flat
 
 
-def _finish(func, shape, scalar, full, outputs, status, errors):
+def _finish(func, shape, scalar, full, outputs, status, errors, blame=None):
     if errors is None:
         errors = "raise" if scalar else "warn"
     if errors not in ("raise", "warn", "ignore"):
         raise RollerRigError(f"{func}: errors must be 'raise', 'warn' or 'ignore', "
                              f"got {errors!r}")
     status = status.reshape(shape)
-    check_status(func, status, full, errors)
+    check_status(func, status, full, errors, blame)
     outs = [o.reshape(shape) for o in outputs]
     if scalar:
         return [float(o) for o in outs] + [int(status)]

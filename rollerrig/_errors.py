@@ -25,51 +25,22 @@ def status_message(code):
 STATUS = {code: status_message(code) for code in range(_core.STATUS_MIN, _core.STATUS_MAX + 1)}
 
 
-def _positive(v):
-    return v > 0.0
+def _value(arr, index):
+    return float(arr.reshape(-1)[index if arr.size > 1 else 0])
 
 
-def _poisson(v):
-    return 0.0 <= v <= 0.5
+def _culprits(args, index, blamed=None):
+    """'name = value' for the arguments at `index` that the C core blamed
+    (blamed: names, from its check's report or from the C function itself,
+    never from rules restated here; one not in args is named alone, "h"),
+    else for every argument."""
+    if blamed:
+        return ", ".join(f"{n} = {_value(args[n], index)!r}" if n in args else n
+                         for n in blamed)
+    return ", ".join(f"{n} = {_value(a, index)!r}" for n, a in args.items()) or "(options)"
 
 
-def _moderate(v):
-    """Not among the values that push a result out of floating-point range."""
-    return v == 0.0 or 1e-30 <= abs(v) <= 1e30
-
-
-# For each error status, the arguments it may be about and the test their
-# values must pass; a message names those that fail it.
-_STATUS_ARGS = {
-    -2: {"N": _positive, "N_left": _positive, "N_right": _positive},
-    -3: {**{n: _positive for n in ("A", "B", "a", "b", "a_over_b")},
-         "y_ws": lambda v: False,      # a shift that puts a wheel off its roller
-         "y": lambda v: False, "x": lambda v: False},
-    -4: {"E": _positive, "E2": _positive, "G": _positive, "nu": _poisson, "nu2": _poisson},
-    -5: {"mu": _positive, "friction.A": lambda v: 0.0 < v <= 1.0,
-         "friction.B": lambda v: v >= 0.0},
-    -7: {"speed": _positive},
-    # outside the exact-theory table: the semi-axes and nu together decide
-    -14: {"a": lambda v: False, "b": lambda v: False, "nu": lambda v: False},
-}
-# a result out of range: any argument may share the blame; name the extreme ones
-_RANGE = -12
-
-
-def _culprits(code, args, index):
-    """'name = value' for the arguments that explain status `code` at `index`."""
-    found, group = [], []
-    for name, arr in args.items():
-        value = float(arr.reshape(-1)[index if arr.size > 1 else 0])
-        test = _moderate if code == _RANGE else _STATUS_ARGS.get(code, {}).get(name)
-        if code == -1 or test is not None:
-            group.append(f"{name} = {value!r}")
-        if (code == -1 and not np.isfinite(value)) or (test is not None and not test(value)):
-            found.append(f"{name} = {value!r}")
-    return ", ".join(found or group) or "(options)"
-
-
-def check_status(func, status, args, errors):
+def check_status(func, status, args, errors, blame=None):
     """Raise, warn or stay silent for the statuses of a call.
 
     func:   the public function's name, for the message
@@ -78,6 +49,10 @@ def check_status(func, status, args, errors):
     errors: "raise" (any error raises RollerRigError), "warn" (errors and
             warnings become one RollerRigWarning; bad elements are NaN) or
             "ignore".
+    blame:  None, or blame(flat index, status) -> the names of the
+            arguments the C core blames for that element's status (its
+            check's report mapped to the call's arguments, or the arguments
+            whose own values give it: _binding.swap_blame), or None
     """
     if errors == "ignore":
         return
@@ -88,7 +63,8 @@ def check_status(func, status, args, errors):
         code = int(flat[i])
         index = tuple(int(k) for k in np.unravel_index(i, status.shape))
         where = f" at index {index}" if status.ndim else ""
-        msg = (f"{func}: {_culprits(code, args, i)}{where}: {status_message(code)}"
+        blamed = blame(i, code) if blame is not None else None
+        msg = (f"{func}: {_culprits(args, i, blamed)}{where}: {status_message(code)}"
                + (f" ({bad.size} of {flat.size} elements failed; their results are NaN)"
                   if flat.size > 1 else ""))
         if errors == "raise":

@@ -22,16 +22,14 @@ METHOD_C = r'''
 
 enum { SCALE = 0 };
 
-static int scaled_forces(const rr_contact_case *c, const rr_friction *fr,
-                         const rr_creep_opts *o, double *work, rr_forces *out)
+static int scaled_forces(const rr_contact_problem *p, const rr_creep_opts *o,
+                         double *work, rr_forces *out)
 {
-    int st = out ? rr_friction_check(fr) : RR_ERR_NULL;
+    int st;
     (void)work;
-    if (st < 0) {
-        rr_forces_nan(out);
-        return st;
-    }
-    if ((st = rr_linear(c, out)) < 0)
+    if (!out)
+        return RR_ERR_NULL;
+    if ((st = rr_linear(p, out)) < 0)
         return st;
     out->fx *= o->v[SCALE];
     out->fy *= o->v[SCALE];

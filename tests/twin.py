@@ -139,8 +139,9 @@ def _check_nu(nu):
 
 
 def _check_contact(a, b, N, G, nu, cx, cy, cphi, speed):
-    """The contact case (rr_contact_check): finite inputs, a, b, N, G > 0,
-    0 <= nu <= 0.5, speed >= 0.  Returns the inputs as floats."""
+    """The contact problem's ellipse (rr_contact_problem_check): finite
+    inputs, a, b, N, G > 0, 0 <= nu <= 0.5, speed >= 0.  Returns the inputs
+    as floats."""
     a = _positive("a", a)
     b = _positive("b", b)
     N = _positive("N", N)

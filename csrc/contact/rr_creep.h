@@ -7,8 +7,10 @@
  * ranges, its cost, its small-creepage slope and its entry points.  This
  * header finds them by number or name, fills and checks options from
  * them, and dispatches a call to the method named in the options.  Every
- * method takes an rr_contact_case (rr_contact.h), a friction law
- * (rr_friction.h) and options, and returns the forces on the wheel.
+ * method takes a contact problem (rr_contact_problem, rr_contact.h: the
+ * Hertz ellipse, or for a method that takes it an undeformed distance on a
+ * grid; the friction law inside), options and the caller's workspace, and
+ * returns the forces on the wheel.
  */
 #ifndef RR_CREEP_H
 #define RR_CREEP_H
@@ -65,24 +67,30 @@ int rr_creep_opts_check_at(const rr_creep_opts *o, int *bad);
 /* For valid options (else 0, NaN): the work of one case in FASTSIM elements
  * (1 for a closed form: chunk sizes), whether the method saturates
  * (|F| <= mu N; the linear theory does not), the small-creepage slope over
- * the linear theory's (the rig's linearisation), and the doubles of
- * workspace rr_creep_forces_work needs. */
+ * the linear theory's (the rig's linearisation), whether it takes grid
+ * problems, whether it solves a case iteratively (not a time-loop method:
+ * the descriptor's iterative), and the doubles of workspace
+ * rr_creep_forces_work needs on a problem of grid (NULL: the ellipse's; a
+ * workspace for a grid serves a smaller one; 0 also for a grid the method
+ * does not take). */
 double rr_creep_cost(const rr_creep_opts *o);
 int rr_creep_saturates(const rr_creep_opts *o);
 double rr_creep_slope_scale(const rr_creep_opts *o);
-size_t rr_creep_workspace_len(const rr_creep_opts *o);
+int rr_creep_takes_grid(const rr_creep_opts *o);
+int rr_creep_iterative(const rr_creep_opts *o);
+size_t rr_creep_workspace_len(const rr_creep_opts *o, const rr_grid *grid);
 
 /*
  * rr_creep_checked - a method with its options, checked once for many
  * calls (a batch of cases, the rig's time step): the constant part of a
  * call, checked by rr_creep_check, so that rr_creep_forces_checked checks
- * only what changes from call to call, the case and the friction law.
- * Read-only: a changed option needs rr_creep_check again.
+ * only what changes from call to call, the problem.  Read-only: a changed
+ * option needs rr_creep_check again.
  */
 typedef struct {
     rr_creep_opts o;             /* the options, a checked copy */
     const rr_method_desc *d;     /* their method's descriptor */
-    size_t work_len;             /* rr_creep_workspace_len */
+    size_t work_len;             /* rr_creep_workspace_len of the ellipse */
     double cost;                 /* rr_creep_cost */
     unsigned ready;              /* RR_CREEP_READY once checked */
 } rr_creep_checked;
@@ -99,29 +107,28 @@ int rr_creep_check(rr_creep_checked *k, const rr_creep_opts *o, int *bad);
 
 /*
  * rr_creep_forces_checked - rr_creep_forces_interruptible with the options
- * of a successful rr_creep_check: the case and the friction law checked by
- * the method, the options not again.  The same doubles and statuses, but
- * RR_ERR_NULL (forces NaN) for a k that rr_creep_check did not set or
- * refused.
+ * of a successful rr_creep_check: the problem checked by the method, the
+ * options not again.  The same doubles and statuses, but RR_ERR_NULL
+ * (forces NaN) for a k that rr_creep_check did not set or refused.
  */
-int rr_creep_forces_checked(const rr_creep_checked *k, const rr_contact_case *c,
-                            const rr_friction *fr, double *work, size_t work_len,
-                            const rr_interrupt *stop, rr_forces *out);
+int rr_creep_forces_checked(const rr_creep_checked *k, const rr_contact_problem *p,
+                            double *work, size_t work_len, const rr_interrupt *stop,
+                            rr_forces *out);
 
 /*
- * rr_creep_forces - dispatch to the method named in o->method, after
- * rr_creep_opts_check.  The linear theory ignores friction (but refuses an
- * invalid law, as every method does); FASTSIM variants call rr_fastsim
- * (rr_fastsim.h) without a traction field.  A method that needs workspace
- * (rr_creep_workspace_len > 0) gets RR_ERR_WORKSPACE here: call
- * rr_creep_forces_work with work of at least that many doubles.  On error
- * the forces are NaN.
+ * rr_creep_forces - dispatch problem p to the method named in o->method,
+ * after rr_creep_opts_check.  A patch the method does not take (a grid
+ * problem, where the descriptor's takes_grid is 0) is RR_ERR_PATCH; the
+ * method checks the rest of the problem.  The linear theory ignores
+ * friction (but refuses an invalid law, as every method does); FASTSIM
+ * variants call rr_fastsim (rr_fastsim.h) without a traction field.  A
+ * method that needs workspace for p (rr_creep_workspace_len > 0) gets
+ * RR_ERR_WORKSPACE here: call rr_creep_forces_work with work of at least
+ * that many doubles.  On error the forces are NaN.
  */
-int rr_creep_forces(const rr_contact_case *c, const rr_friction *fr,
-                    const rr_creep_opts *o, rr_forces *out);
-int rr_creep_forces_work(const rr_contact_case *c, const rr_friction *fr,
-                         const rr_creep_opts *o, double *work, size_t work_len,
-                         rr_forces *out);
+int rr_creep_forces(const rr_contact_problem *p, const rr_creep_opts *o, rr_forces *out);
+int rr_creep_forces_work(const rr_contact_problem *p, const rr_creep_opts *o, double *work,
+                         size_t work_len, rr_forces *out);
 
 /*
  * rr_creep_forces_interruptible - rr_creep_forces_work with the caller's
@@ -132,16 +139,31 @@ int rr_creep_forces_work(const rr_contact_case *c, const rr_friction *fr,
  * RR_ERR_INTERRUPTED (forces NaN); one that never does, the doubles of
  * rr_creep_forces_work.
  */
-int rr_creep_forces_interruptible(const rr_contact_case *c, const rr_friction *fr,
-                                  const rr_creep_opts *o, double *work, size_t work_len,
-                                  const rr_interrupt *stop, rr_forces *out);
+int rr_creep_forces_interruptible(const rr_contact_problem *p, const rr_creep_opts *o,
+                                  double *work, size_t work_len, const rr_interrupt *stop,
+                                  rr_forces *out);
 
 /*
  * rr_creep_field - the forces with the traction field, for methods that
  * have one (descriptor field_shape: rows x cols elements); RR_ERR_METHOD
- * for the others (forces NaN), else as the method's field entry point.
+ * for the others, RR_ERR_PATCH for a patch the method does not take
+ * (forces NaN), else as the method's field entry point.
  */
-int rr_creep_field(const rr_contact_case *c, const rr_friction *fr, const rr_creep_opts *o,
-                   rr_forces *out, rr_traction_field *field);
+int rr_creep_field(const rr_contact_problem *p, const rr_creep_opts *o, rr_forces *out,
+                   rr_traction_field *field);
+
+/*
+ * rr_creep_blame - the member of problem p (enum rr_problem_field) to
+ * blame for the status st that the method of k gave it: RR_PF_PATCH for
+ * RR_ERR_PATCH where the method does not take p's patch;
+ * rr_contact_problem_check's member where that check gives st itself;
+ * for what a method asks of a valid problem on its own terms, RR_PF_SPEED
+ * for RR_ERR_SPEED (falling friction at rest), RR_PF_FRICTION_A for
+ * RR_ERR_FRICTION (a falling law, a Coulomb-only method), then the
+ * method's own (descriptor's blame: exact_table's a/b or nu); RR_PF_NONE
+ * where no one member is to blame (st >= 0, a result out of range, an
+ * unready k).  For the messages of a caller that names its arguments.
+ */
+int rr_creep_blame(const rr_creep_checked *k, const rr_contact_problem *p, int st);
 
 #endif

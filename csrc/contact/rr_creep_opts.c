@@ -17,9 +17,10 @@ double rr_method_unit_slope(const rr_creep_opts *o)
     return 1.0;
 }
 
-size_t rr_method_no_workspace(const rr_creep_opts *o)
+size_t rr_method_no_workspace(const rr_creep_opts *o, const rr_grid *grid)
 {
     (void)o;
+    (void)grid;
     return 0;
 }
 
@@ -74,29 +75,36 @@ int rr_method_check(const rr_method_desc *d, const rr_creep_opts *o, int *bad)
     return RR_OK;
 }
 
-int rr_creep_kalker(const rr_contact_case *c, rr_kalker_coeffs *k)
+int rr_creep_kalker(const rr_contact_problem *p, rr_kalker_coeffs *k)
 {
-    const double q = c->a / c->b;
+    const double q = p->a / p->b;
     if (!isnormal(q)) {
         k->c11 = k->c22 = k->c23 = k->c33 = NAN;
         return RR_ERR_RANGE;
     }
-    return rr_kalker(q, c->nu, k);
+    return rr_kalker(q, p->nu, k);
 }
 
-int rr_creep_prepare(const rr_contact_case *c, const rr_friction *fr, rr_kalker_coeffs *k)
+int rr_creep_ellipse_check(const rr_contact_problem *p)
 {
-    int st = k ? rr_contact_check(c) : RR_ERR_NULL;
+    return p && p->patch != RR_PATCH_ELLIPSE ? RR_ERR_PATCH : rr_contact_problem_check(p, NULL);
+}
 
-    if (st == RR_OK)
-        st = rr_friction_check(fr);
-    if (st == RR_OK && rr_friction_is_falling(fr) && !(c->speed > 0.0))
-        st = RR_ERR_SPEED;
+int rr_creep_prepare(const rr_contact_problem *p, rr_kalker_coeffs *k)
+{
+    int st;
+
+    if (!k || !p)
+        return RR_ERR_NULL;
+    if (p->patch != RR_PATCH_ELLIPSE)
+        return RR_ERR_PATCH;
+    if ((st = rr_contact_problem_check(p, NULL)) < 0)
+        return st;
+    if (rr_friction_is_falling(&p->friction) && !(p->speed > 0.0))
+        return RR_ERR_SPEED;
     /* the friction limit itself must have a double's digits: a subnormal
      * mu0 N rounds the saturated force above it */
-    if (st == RR_OK && !isnormal(fr->mu0 * c->N))
-        st = RR_ERR_RANGE;
-    if (st == RR_OK)
-        st = rr_creep_kalker(c, k);
-    return st;
+    if (!isnormal(p->friction.mu0 * p->N))
+        return RR_ERR_RANGE;
+    return rr_creep_kalker(p, k);
 }

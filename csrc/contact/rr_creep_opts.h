@@ -14,7 +14,6 @@
 #include <stddef.h>
 #include "util/rr_common.h"
 #include "contact/rr_contact.h"
-#include "contact/rr_friction.h"
 #include "contact/rr_kalker.h"
 
 /* The methods' numbers, in the order of rr_methods.def: RR_METHOD_LINEAR,
@@ -80,9 +79,11 @@ typedef struct {
 
 /*
  * A method's descriptor: all the rest of the library and the binding know
- * of a method.  Entry points get options already checked by
- * rr_method_check (and the method's check hook); they still return
- * RR_ERR_NULL for NULL pointers.
+ * of a method.  Entry points take a contact problem (rr_contact.h) of a
+ * patch the method takes (takes_grid), the options already checked by
+ * rr_method_check (and the method's check hook) and the caller's workspace
+ * of workspace_len doubles for the problem's size; they still check the
+ * problem, and return RR_ERR_NULL for NULL pointers.
  */
 typedef struct {
     const char *name;                   /* "fastsim" */
@@ -99,29 +100,43 @@ typedef struct {
     /* small-creepage slope over the linear theory's, for the rig's
      * linearisation (Polach: (kA + kS)/2) */
     double (*slope_scale)(const rr_creep_opts *o);
-    /* doubles of caller workspace one call needs (0: none) */
-    size_t (*workspace_len)(const rr_creep_opts *o);
-    int (*forces)(const rr_contact_case *c, const rr_friction *fr, const rr_creep_opts *o,
-                  double *work, rr_forces *out);
-    /* NULL, or the traction field's rows, columns and the evaluation with it */
-    void (*field_shape)(const rr_creep_opts *o, int *rows, int *cols);
-    int (*field)(const rr_contact_case *c, const rr_friction *fr, const rr_creep_opts *o,
-                 rr_forces *out, rr_traction_field *field);
+    /* doubles of caller workspace one call needs on a problem of grid
+     * (NULL: the ellipse's); 0: none */
+    size_t (*workspace_len)(const rr_creep_opts *o, const rr_grid *grid);
+    int (*forces)(const rr_contact_problem *p, const rr_creep_opts *o, double *work,
+                  rr_forces *out);
+    /* NULL, or the traction field's rows, columns (of a problem of grid;
+     * NULL: the ellipse's) and the evaluation with it */
+    void (*field_shape)(const rr_creep_opts *o, const rr_grid *grid, int *rows, int *cols);
+    int (*field)(const rr_contact_problem *p, const rr_creep_opts *o, rr_forces *out,
+                 rr_traction_field *field);
     /* 1: Coulomb friction only (a falling law is RR_ERR_FRICTION); 0 (the
      * default of a descriptor that leaves it out): any law */
     int coulomb_only;
     /* NULL (the default of a descriptor that leaves it out), or forces with
      * the caller's interrupt hook (rr_common.h), for a method whose one case
      * may take seconds (the exact theory on a fine grid) */
-    int (*forces_interruptible)(const rr_contact_case *c, const rr_friction *fr,
-                                const rr_creep_opts *o, double *work,
-                                const rr_interrupt *stop, rr_forces *out);
+    int (*forces_interruptible)(const rr_contact_problem *p, const rr_creep_opts *o,
+                                double *work, const rr_interrupt *stop, rr_forces *out);
+    /* 1: grid problems too (RR_PATCH_GRID: the exact theory); 0 (left out):
+     * the ellipse only, a grid problem is RR_ERR_PATCH */
+    int takes_grid;
+    /* 1: one case is solved iteratively to a tolerance (the exact theory:
+     * milliseconds to seconds, its work set by convergence, not known
+     * before a time step): not a time-loop method, the rig refuses it;
+     * 0 (left out): a case of bounded work (closed forms, FASTSIM's march,
+     * a table) */
+    int iterative;
+    /* NULL (left out), or the member of a valid problem to blame for a
+     * status the method gave it on its own terms (rr_creep_blame;
+     * exact_table: RR_ERR_TABLE, a/b or nu) */
+    int (*blame)(const rr_contact_problem *p, const rr_creep_opts *o, int st);
 } rr_method_desc;
 
 /* Helpers for descriptors: a cost of 1 and a slope scale of 1, and no workspace. */
 double rr_method_unit_cost(const rr_creep_opts *o);
 double rr_method_unit_slope(const rr_creep_opts *o);
-size_t rr_method_no_workspace(const rr_creep_opts *o);
+size_t rr_method_no_workspace(const rr_creep_opts *o, const rr_grid *grid);
 
 /* The index of d's option named name, or -1 (also for NULL arguments). */
 int rr_method_option(const rr_method_desc *d, const char *name);
@@ -143,17 +158,23 @@ int rr_method_option_check(const rr_creep_option *op, double x);
 int rr_method_check(const rr_method_desc *d, const rr_creep_opts *o, int *bad);
 
 /*
- * rr_creep_prepare - the checks every frictional method starts with, then
- * Kalker's coefficients of the case.
- *   status: rr_contact_check, rr_friction_check, RR_ERR_SPEED (falling
- *   friction needs speed > 0), RR_ERR_RANGE (mu0 N not a normal double),
- *   rr_kalker, RR_ERR_RANGE (a/b not a normal double), RR_ERR_NULL.
+ * rr_creep_prepare - the checks every frictional method of the ellipse
+ * starts with, then Kalker's coefficients of the ellipse.
+ *   status: RR_ERR_PATCH (a grid problem), rr_contact_problem_check,
+ *   RR_ERR_SPEED (falling friction needs speed > 0), RR_ERR_RANGE (mu0 N
+ *   not a normal double), rr_kalker, RR_ERR_RANGE (a/b not a normal
+ *   double), RR_ERR_NULL.
  */
-int rr_creep_prepare(const rr_contact_case *c, const rr_friction *fr, rr_kalker_coeffs *k);
+int rr_creep_prepare(const rr_contact_problem *p, rr_kalker_coeffs *k);
 
-/* Kalker's coefficients of a checked case; RR_ERR_RANGE (NaN coefficients)
- * where a/b is not a normal double (semi-axes some 300 orders of magnitude
- * apart). */
-int rr_creep_kalker(const rr_contact_case *c, rr_kalker_coeffs *k);
+/* Kalker's coefficients of a checked ellipse problem; RR_ERR_RANGE (NaN
+ * coefficients) where a/b is not a normal double (semi-axes some 300
+ * orders of magnitude apart). */
+int rr_creep_kalker(const rr_contact_problem *p, rr_kalker_coeffs *k);
+
+/* rr_contact_problem_check of an ellipse problem (RR_ERR_PATCH for a grid
+ * one, RR_ERR_NULL for NULL): the check of the ellipse methods' public
+ * functions. */
+int rr_creep_ellipse_check(const rr_contact_problem *p);
 
 #endif

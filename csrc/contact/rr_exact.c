@@ -22,7 +22,7 @@ size_t rr_exact_workspace_len(int mx, int my)
     return rr_exact_carve(&L, mx, my, NULL);
 }
 
-int rr_exact_hertz_grid(double a, double b, int nx, int ny, rr_exact_grid *g)
+int rr_exact_hertz_grid(double a, double b, int nx, int ny, rr_grid *g)
 {
     if (!g)
         return RR_ERR_NULL;
@@ -126,7 +126,7 @@ static void field_nan(const rr_exact_problem *pb, rr_exact_field *f)
 
 static int check_problem(const rr_exact_problem *pb, size_t work_len)
 {
-    const rr_exact_grid *g = &pb->grid;
+    const rr_grid *g = &pb->grid;
     const double reals[] = {g->dx, g->dy, g->x0, g->y0, pb->N, pb->G, pb->nu, pb->mu,
                             pb->cx, pb->cy, pb->cphi, pb->spin_shift, pb->tol};
     size_t need;

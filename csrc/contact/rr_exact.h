@@ -26,7 +26,7 @@
  * Conventions as rr_contact.h (CONTACT's): x rolling, material entering at
  * +x, tractions and forces on body 1 (the wheel), rigid slip (cx - cphi y,
  * cy + cphi x) about the reference point.  Element (i, j) of every field
- * is stored at j * mx + i, its centre at (x0 + i dx, y0 + j dy).
+ * is stored at j * mx + i, its centre at (x0 + i dx, y0 + j dy) (rr_grid).
  *
  * Memory: caller workspace only (rr_exact_workspace_len doubles for the
  * largest grid used), zero-filled before its first use: the solver keeps
@@ -43,20 +43,17 @@
 #include "util/rr_common.h"
 #include "contact/rr_creep_opts.h"
 
-/* Largest mx, my accepted. */
-#define RR_EXACT_MAX_GRID 1024
+/* Largest mx, my accepted: a contact problem's (rr_contact.h). */
+#define RR_EXACT_MAX_GRID RR_CONTACT_MAX_GRID
 /* Elements the Hertzian grid adds on each side of the ellipse (as CONTACT's
  * potential contact area with SCALE = mx / (mx - 4)). */
 #define RR_EXACT_MARGIN 2
 
+/* The solver's problem: a contact problem's grid and gap (or Hertz's, from
+ * its curvatures) with the solver's settings; rr_exact_problem_from makes
+ * it from a contact problem and the options of the method "exact". */
 typedef struct {
-    int mx, my;          /* elements along x (rolling) and y */
-    double dx, dy;       /* element size [m] */
-    double x0, y0;       /* centre of element (0, 0) relative to the reference point [m] */
-} rr_exact_grid;
-
-typedef struct {
-    rr_exact_grid grid;
+    rr_grid grid;        /* the grid (rr_contact.h) */
     const double *h;     /* undeformed distance at the element centres [m], mx * my
                             (any constant offset: the approach is solved for);
                             NULL: the Hertzian h = A x^2 + B y^2 */
@@ -131,18 +128,19 @@ int rr_exact_solve(const rr_exact_problem *pb, double *work, size_t work_len,
  * element edges).  Status: RR_OK, RR_ERR_NONFINITE, RR_ERR_GEOMETRY,
  * RR_ERR_GRID, RR_ERR_NULL.
  */
-int rr_exact_hertz_grid(double a, double b, int nx, int ny, rr_exact_grid *g);
+int rr_exact_hertz_grid(double a, double b, int nx, int ny, rr_grid *g);
 
 /*
- * rr_exact_hertz_problem - *pb for the Hertzian case c (its ellipse, load
- * and material; the curvatures from rr_hertz_curvatures) on the grid and
- * with the settings of o, options of the method "exact".  Coulomb
- * friction only: a falling law is RR_ERR_FRICTION; no interrupt hook
- * (pb->interrupt NULL).  Status as
- * rr_contact_check, rr_friction_check, rr_exact_hertz_grid,
- * rr_hertz_curvatures.
+ * rr_exact_problem_from - *pb for contact problem p with the settings of o,
+ * options of the method "exact": an ellipse problem on the ellipse's grid
+ * (rr_exact_hertz_grid of o's nx, ny) with Hertz's gap (the curvatures
+ * from rr_hertz_curvatures, h NULL); a grid problem on its grid with its h
+ * (nx, ny unused).  Coulomb friction only: a falling law is
+ * RR_ERR_FRICTION; no interrupt hook (pb->interrupt NULL).  Status as
+ * rr_contact_problem_check, RR_ERR_FRICTION, rr_exact_hertz_grid,
+ * rr_hertz_curvatures; RR_ERR_NULL.
  */
-int rr_exact_hertz_problem(const rr_contact_case *c, const rr_friction *fr,
-                           const rr_creep_opts *o, rr_exact_problem *pb);
+int rr_exact_problem_from(const rr_contact_problem *p, const rr_creep_opts *o,
+                          rr_exact_problem *pb);
 
 #endif

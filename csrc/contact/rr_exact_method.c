@@ -1,42 +1,45 @@
 /* rr_exact_method.c - the exact theory as a creep-force method of the
- * registry ("exact"): the Hertzian case of an rr_contact_case on the
- * ellipse's own grid, Coulomb friction. */
+ * registry ("exact"): an ellipse problem on the ellipse's own grid with
+ * Hertz's gap, a grid problem on its grid with its gap; Coulomb friction. */
 #include <math.h>
+#include <string.h>
 #include "util/rr_common.h"
 #include "contact/rr_hertz.h"
 #include "contact/rr_exact.h"
 #include "contact/rr_creep_opts.h"
 
-int rr_exact_hertz_problem(const rr_contact_case *c, const rr_friction *fr,
-                           const rr_creep_opts *o, rr_exact_problem *pb)
+int rr_exact_problem_from(const rr_contact_problem *p, const rr_creep_opts *o,
+                          rr_exact_problem *pb)
 {
     int st;
 
     if (!pb)
         return RR_ERR_NULL;
-    pb->h = NULL;
-    pb->interrupt = NULL;
-    if (!c || !fr || !o)
+    memset(pb, 0, sizeof *pb);
+    if (!p || !o)
         return RR_ERR_NULL;
-    st = rr_contact_check(c);
-    if (st == RR_OK)
-        st = rr_friction_check(fr);
+    st = rr_contact_problem_check(p, NULL);
     /* built for Coulomb friction: a falling law would need the slip speed in
      * the traction bound, which this solver does not iterate on */
-    if (st == RR_OK && rr_friction_is_falling(fr))
+    if (st == RR_OK && rr_friction_is_falling(&p->friction))
         st = RR_ERR_FRICTION;
-    if (st == RR_OK)
-        st = rr_exact_hertz_grid(c->a, c->b, (int)o->v[RR_EXACT_NX], (int)o->v[RR_EXACT_NY],
-                                 &pb->grid);
-    if (st == RR_OK)
-        st = rr_hertz_curvatures(c->a, c->b, c->N, c->G / (1.0 - c->nu), &pb->A, &pb->B);
-    pb->N = c->N;
-    pb->G = c->G;
-    pb->nu = c->nu;
-    pb->mu = fr->mu0;
-    pb->cx = c->cx;
-    pb->cy = c->cy;
-    pb->cphi = c->cphi;
+    if (p->patch == RR_PATCH_GRID) {
+        pb->grid = p->grid;
+        pb->h = p->h;
+    } else {
+        if (st == RR_OK)
+            st = rr_exact_hertz_grid(p->a, p->b, (int)o->v[RR_EXACT_NX],
+                                     (int)o->v[RR_EXACT_NY], &pb->grid);
+        if (st == RR_OK)
+            st = rr_hertz_curvatures(p->a, p->b, p->N, p->G / (1.0 - p->nu), &pb->A, &pb->B);
+    }
+    pb->N = p->N;
+    pb->G = p->G;
+    pb->nu = p->nu;
+    pb->mu = p->friction.mu0;
+    pb->cx = p->cx;
+    pb->cy = p->cy;
+    pb->cphi = p->cphi;
     pb->tol = o->v[RR_EXACT_TOL];
     pb->maxit = (int)o->v[RR_EXACT_MAXIT];
     pb->spin_shift = o->v[RR_EXACT_SPIN_SHIFT];
@@ -51,15 +54,17 @@ static double exact_cost(const rr_creep_opts *o)
     return 60.0 * 4.0 * n * log2(4.0 * n);
 }
 
-static size_t exact_workspace(const rr_creep_opts *o)
+/* the ellipse's grid (nx, ny across it and the margins), or the problem's */
+static size_t exact_workspace(const rr_creep_opts *o, const rr_grid *grid)
 {
+    if (grid)
+        return rr_exact_workspace_len(grid->mx, grid->my);
     return rr_exact_workspace_len((int)o->v[RR_EXACT_NX] + 2 * RR_EXACT_MARGIN,
                                   (int)o->v[RR_EXACT_NY] + 2 * RR_EXACT_MARGIN);
 }
 
-static int exact_forces_interruptible(const rr_contact_case *c, const rr_friction *fr,
-                                      const rr_creep_opts *o, double *work,
-                                      const rr_interrupt *stop, rr_forces *out)
+static int exact_forces_interruptible(const rr_contact_problem *p, const rr_creep_opts *o,
+                                      double *work, const rr_interrupt *stop, rr_forces *out)
 {
     rr_exact_problem pb;
     rr_exact_result res;
@@ -67,10 +72,12 @@ static int exact_forces_interruptible(const rr_contact_case *c, const rr_frictio
 
     if (!out)
         return RR_ERR_NULL;
-    st = rr_exact_hertz_problem(c, fr, o, &pb);
+    st = rr_exact_problem_from(p, o, &pb);
     pb.interrupt = stop;
     if (st == RR_OK)
-        st = rr_exact_solve(&pb, work, exact_workspace(o), &res, NULL);
+        st = rr_exact_solve(&pb, work, exact_workspace(o, p->patch == RR_PATCH_GRID
+                                                           ? &p->grid : NULL),
+                            &res, NULL);
     if (st < 0) {
         rr_forces_nan(out);
         return st;
@@ -81,10 +88,10 @@ static int exact_forces_interruptible(const rr_contact_case *c, const rr_frictio
     return rr_forces_checked(st, out);
 }
 
-static int exact_forces(const rr_contact_case *c, const rr_friction *fr,
-                        const rr_creep_opts *o, double *work, rr_forces *out)
+static int exact_forces(const rr_contact_problem *p, const rr_creep_opts *o, double *work,
+                        rr_forces *out)
 {
-    return exact_forces_interruptible(c, fr, o, work, NULL, out);
+    return exact_forces_interruptible(p, o, work, NULL, out);
 }
 
 /* each option at its index of rr_exact.h */
@@ -116,4 +123,6 @@ const rr_method_desc rr_method_exact = {
     .forces = exact_forces,
     .coulomb_only = 1,
     .forces_interruptible = exact_forces_interruptible,
+    .takes_grid = 1,
+    .iterative = 1,
 };

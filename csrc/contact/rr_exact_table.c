@@ -184,29 +184,41 @@ static void interpolate(const rr_exact_table *t, const double q[4], int simd, do
              + (w[3][2] * acc[k + 6] + w[3][3] * acc[k + 9]);
 }
 
-/* the forces of a checked table */
-static int forces(const rr_exact_table *t, const rr_contact_case *c, const rr_friction *fr,
-                  int simd, rr_forces *out)
+/* The member of a valid ellipse problem c (q = log(a/b)) outside table t,
+ * RR_PF_NU (not the table's nu) or RR_PF_A (a/b beyond its range), else
+ * RR_PF_NONE. */
+static int outside(const rr_exact_table *t, const rr_contact_problem *c, double q)
 {
+    if (fabs(c->nu - t->nu) > NU_TOL)
+        return RR_PF_NU;
+    if (q < t->lo[0] - AOB_TOL * fabs(t->lo[0]) || q > t->hi[0] + AOB_TOL * fabs(t->hi[0]))
+        return RR_PF_A;
+    return RR_PF_NONE;
+}
+
+/* the forces of a checked table */
+static int forces(const rr_exact_table *t, const rr_contact_problem *c, int simd,
+                  rr_forces *out)
+{
+    const rr_friction *fr;
     rr_kalker_coeffs k;
     double q[4], f[3], cc, mu, muN, x, y, z, m, R, sign = 1.0, sx = 1.0, sy = 1.0, aob;
     double sat;
     int e = 0;
     int st;
 
-    st = rr_creep_prepare(c, fr, &k);
+    st = rr_creep_prepare(c, &k);
     if (st == RR_OK) {
         aob = c->a / c->b;
         q[0] = log(aob);
-        if (fabs(c->nu - t->nu) > NU_TOL
-            || q[0] < t->lo[0] - AOB_TOL * fabs(t->lo[0])
-            || q[0] > t->hi[0] + AOB_TOL * fabs(t->hi[0]))
+        if (outside(t, c, q[0]) != RR_PF_NONE)
             st = RR_ERR_TABLE;
     }
     if (st < 0) {
         rr_forces_nan(out);
         return st;
     }
+    fr = &c->friction;
     out->fx = out->fy = out->mz = 0.0;
     cc = sqrt(c->a) * sqrt(c->b);
     /* the creepages times s (the saturation scale cancels in the direction);
@@ -290,8 +302,8 @@ static int forces(const rr_exact_table *t, const rr_contact_case *c, const rr_fr
 }
 
 /* the checked entries: simd 0 takes the baseline build of the sums */
-static int checked(const rr_exact_table *t, const rr_contact_case *c, const rr_friction *fr,
-                   int simd, rr_forces *out)
+static int checked(const rr_exact_table *t, const rr_contact_problem *p, int simd,
+                   rr_forces *out)
 {
     int st;
     if (!out)
@@ -300,32 +312,44 @@ static int checked(const rr_exact_table *t, const rr_contact_case *c, const rr_f
         rr_forces_nan(out);
         return st;
     }
-    return forces(t, c, fr, simd, out);
+    return forces(t, p, simd, out);
 }
 
-int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
-                          const rr_friction *fr, rr_forces *out)
+int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_problem *p,
+                          rr_forces *out)
 {
-    return checked(t, c, fr, 1, out);
+    return checked(t, p, 1, out);
 }
 
-int rr_exact_table_forces_baseline(const rr_exact_table *t, const rr_contact_case *c,
-                                   const rr_friction *fr, rr_forces *out)
+int rr_exact_table_forces_baseline(const rr_exact_table *t, const rr_contact_problem *p,
+                                   rr_forces *out)
 {
-    return checked(t, c, fr, 0, out);
+    return checked(t, p, 0, out);
 }
 
 /* ---- the method ---------------------------------------------------------------- */
 
-static int table_forces(const rr_contact_case *c, const rr_friction *fr,
-                        const rr_creep_opts *o, double *work, rr_forces *out)
+static int table_forces(const rr_contact_problem *p, const rr_creep_opts *o, double *work,
+                        rr_forces *out)
 {
     (void)o;
     (void)work;
     if (!out)
         return RR_ERR_NULL;
+    if (!p) {
+        rr_forces_nan(out);
+        return RR_ERR_NULL;
+    }
     /* the built-in table is checked by csrc/tests/test_exact_table.c */
-    return forces(&rr_exact_table_builtin, c, fr, 1, out);
+    return forces(&rr_exact_table_builtin, p, 1, out);
+}
+
+/* outside the table: nu or a/b (the problem valid) */
+static int table_blame(const rr_contact_problem *p, const rr_creep_opts *o, int st)
+{
+    (void)o;
+    return st == RR_ERR_TABLE && p->patch == RR_PATCH_ELLIPSE
+           ? outside(&rr_exact_table_builtin, p, log(p->a / p->b)) : RR_PF_NONE;
 }
 
 const rr_method_desc rr_method_exact_table = {
@@ -337,4 +361,5 @@ const rr_method_desc rr_method_exact_table = {
     .slope_scale = rr_method_unit_slope,
     .workspace_len = rr_method_no_workspace,
     .forces = table_forces,
+    .blame = table_blame,
 };

@@ -21,7 +21,6 @@
 #define RR_EXACT_TABLE_H
 
 #include "contact/rr_contact.h"
-#include "contact/rr_friction.h"
 
 typedef struct {
     int n[4];             /* nodes along log(a/b), alpha, theta, u; each >= 4 */
@@ -40,22 +39,23 @@ extern const rr_exact_table rr_exact_table_builtin;
 int rr_exact_table_check(const rr_exact_table *t);
 
 /*
- * rr_exact_table_forces - the forces of a Hertzian case from table t.
- *   status: RR_OK; the checks of rr_creep_prepare; RR_ERR_TABLE (a/b
+ * rr_exact_table_forces - the forces of an ellipse problem from table t.
+ *   status: RR_OK; the checks of rr_creep_prepare (RR_ERR_PATCH for a grid
+ *   problem); RR_ERR_TABLE (a/b
  *   outside the table's range, nu more than 1e-9 from the table's);
  *   RR_ERR_RANGE (mu N or the saturation scale mu N / (G a b) not a normal
  *   double: inputs some 300 orders of magnitude from a contact's);
  *   rr_exact_table_check's.  |(fx, fy)| <= mu N holds (the interpolation's
  *   overshoot near full sliding is clipped).  Cost: 256 interpolation nodes.
  */
-int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_case *c,
-                          const rr_friction *fr, rr_forces *out);
+int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_problem *p,
+                          rr_forces *out);
 
 /* Not API: rr_exact_table_forces with the interpolation's sums in the
  * baseline build (on x86-64 with GCC or clang rr_exact_table_forces takes
  * an AVX2 build of them where the processor has it), for the test that
  * both give the same doubles. */
-int rr_exact_table_forces_baseline(const rr_exact_table *t, const rr_contact_case *c,
-                                   const rr_friction *fr, rr_forces *out);
+int rr_exact_table_forces_baseline(const rr_exact_table *t, const rr_contact_problem *p,
+                                   rr_forces *out);
 
 #endif

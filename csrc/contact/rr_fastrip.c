@@ -36,7 +36,7 @@ static double elem_q(const strip_setup *s, int i, double w2, double *x)
  * homogeneous in the creepages, so they are taken of creepages scaled by
  * their largest (no underflow of the squares).
  */
-static void blend(const rr_contact_case *c, double mu, const rr_kalker_coeffs *k, double L[3])
+static void blend(const rr_contact_problem *c, double mu, const rr_kalker_coeffs *k, double L[3])
 {
     const double ps = c->cphi * 3.0 * RR_PI * c->a / 32.0;
     const double m = fmax(fabs(c->cx), fmax(fabs(c->cy), fabs(ps)));
@@ -211,19 +211,21 @@ static void strip_row(const strip_setup *s, double y, double w2, double sums[3])
 
 /* rr_fastrip for options checked by the registry: the descriptor's entry
  * point; the case and the law checked here */
-static int fastrip_checked(const rr_contact_case *c, const rr_friction *fr,
-                           const rr_creep_opts *o, rr_forces *out)
+static int fastrip_checked(const rr_contact_problem *c, const rr_creep_opts *o,
+                           rr_forces *out)
 {
+    const rr_friction *fr;
     rr_kalker_coeffs k;
     strip_setup s;
     double L[3], sums[3] = {0.0, 0.0, 0.0}, cc, facx, facy;
     int st, i, j, ny, ncon = 0, imin = -1, imax = -1, jmin = -1, jmax = -1;
 
-    if (!c || !fr || !o || !out) {
+    if (!c || !o || !out) {
         rr_forces_nan(out);
         return RR_ERR_NULL;
     }
-    st = rr_creep_prepare(c, fr, &k);
+    st = rr_creep_prepare(c, &k);
+    fr = &c->friction;
     if (st == RR_OK && rr_friction_is_falling(fr))
         st = RR_ERR_FRICTION;         /* FaStrip as CONTACT: Coulomb's mu0 only */
     if (st < 0) {
@@ -341,12 +343,11 @@ static int fastrip_checked(const rr_contact_case *c, const rr_friction *fr,
     return rr_forces_checked(st, out);
 }
 
-int rr_fastrip(const rr_contact_case *c, const rr_friction *fr, const rr_creep_opts *o,
-               rr_forces *out)
+int rr_fastrip(const rr_contact_problem *p, const rr_creep_opts *o, rr_forces *out)
 {
     int st;
 
-    if (!c || !fr || !o || !out) {
+    if (!p || !o || !out) {
         rr_forces_nan(out);
         return RR_ERR_NULL;
     }
@@ -354,7 +355,7 @@ int rr_fastrip(const rr_contact_case *c, const rr_friction *fr, const rr_creep_o
         rr_forces_nan(out);
         return st;
     }
-    return fastrip_checked(c, fr, o, out);
+    return fastrip_checked(p, o, out);
 }
 
 /* ---- the descriptor ----------------------------------------------------- */
@@ -392,11 +393,11 @@ static double fastrip_cost(const rr_creep_opts *o)
     return 2.0 * o->v[RR_FASTRIP_NX] * o->v[RR_FASTRIP_NY];
 }
 
-static int fastrip_forces(const rr_contact_case *c, const rr_friction *fr,
-                          const rr_creep_opts *o, double *work, rr_forces *out)
+static int fastrip_forces(const rr_contact_problem *p, const rr_creep_opts *o, double *work,
+                          rr_forces *out)
 {
     (void)work;
-    return fastrip_checked(c, fr, o, out);
+    return fastrip_checked(p, o, out);
 }
 
 /* The linear limit comes from the strip theory, whose flexibilities are

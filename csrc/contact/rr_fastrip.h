@@ -58,11 +58,11 @@ extern const rr_method_desc rr_method_fastrip;
  *   1.5 N / (pi a b) unnormalised: CONTACT's M=5 to 2e-7 mu N.
  *   Not done: CONTACT's "original" FaStrip (M=6, 7: per-row parabolic
  *   pressure, a one-flexibility rerun when the leading edge slips).
- *   Coulomb friction only (mu0).  status: rr_creep_prepare's, RR_ERR_FRICTION
- *   (a falling law), rr_method_check's, RR_ERR_RANGE (results beyond the
+ *   Coulomb friction only (mu0).  status: rr_creep_prepare's (RR_ERR_PATCH
+ *   for a grid problem, rr_contact_problem_check's), RR_ERR_FRICTION (a
+ *   falling law), rr_method_check's, RR_ERR_RANGE (results beyond the
  *   floating-point range), RR_ERR_NULL.
  */
-int rr_fastrip(const rr_contact_case *c, const rr_friction *fr, const rr_creep_opts *o,
-               rr_forces *out);
+int rr_fastrip(const rr_contact_problem *p, const rr_creep_opts *o, rr_forces *out);
 
 #endif

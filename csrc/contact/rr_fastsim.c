@@ -10,7 +10,7 @@ typedef struct {
     double L1, L2, L3;   /* flexibilities [m/Pa] after blending and modification */
 } flex;
 
-static void flexibilities(const rr_contact_case *c, const rr_friction *fr, int method,
+static void flexibilities(const rr_contact_problem *c, const rr_friction *fr, int method,
                           const rr_creep_opts *o, const rr_kalker_coeffs *k, flex *fl)
 {
     const double a = c->a, b = c->b, G = c->G;
@@ -161,7 +161,7 @@ static int newton_step(const law *l, newton *n, int *converged)
 
 /* What the march of every row shares. */
 typedef struct {
-    const rr_contact_case *c;
+    const rr_contact_problem *c;
     const flex *fl;
     law lw;
     double scale, mu_bound;     /* pressure scale [Pa]; bound's friction coefficient */
@@ -206,7 +206,7 @@ static int any_inside(const march *m, const group *g, int i)
  * rows go in 12, etc.). */
 static void group_init(const march *m, int j0, group *g)
 {
-    const rr_contact_case *c = m->c;
+    const rr_contact_problem *c = m->c;
     const int left = m->ny - j0, nv = (left + m->lanes - 1) / m->lanes;
     const double inv_ny = 1.0 / m->ny;     /* products, not a quotient per row */
     int k;
@@ -504,9 +504,10 @@ static const rr_method_desc *variant(int method);
 
 /* rr_fastsim for options checked by the registry (a FASTSIM variant's,
  * valid): the descriptors' entry points; the case and the law checked here */
-static int fastsim_checked(const rr_contact_case *c, const rr_friction *fr,
-                           const rr_creep_opts *o, rr_forces *out, rr_fastsim_field *field)
+static int fastsim_checked(const rr_contact_problem *c, const rr_creep_opts *o,
+                           rr_forces *out, rr_fastsim_field *field)
 {
+    const rr_friction *fr;
     rr_kalker_coeffs k;
     flex fl;
     march m;
@@ -515,11 +516,12 @@ static int fastsim_checked(const rr_contact_case *c, const rr_friction *fr,
     double dy, S = 0.0, fx = 0.0, fy = 0.0, mz = 0.0;
     int st, j, n, falling, local, converged = 1, nslip = 0;
 
-    if (!c || !fr || !o || !out)
+    if (!c || !o || !out)
         return fail(RR_ERR_NULL, o, out, field);
-    st = rr_creep_prepare(c, fr, &k);
+    st = rr_creep_prepare(c, &k);
     if (st < 0)
         return fail(st, o, out, field);
+    fr = &c->friction;
     grid_of(o, &nx, &ny);
     flexibilities(c, fr, o->method, o, &k, &fl);
     falling = rr_friction_is_falling(fr);
@@ -597,19 +599,19 @@ static int fastsim_checked(const rr_contact_case *c, const rr_friction *fr,
     return st;
 }
 
-int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_opts *o,
-               rr_forces *out, rr_fastsim_field *field)
+int rr_fastsim(const rr_contact_problem *p, const rr_creep_opts *o, rr_forces *out,
+               rr_fastsim_field *field)
 {
     const rr_method_desc *d;
     int st;
 
-    if (!c || !fr || !o || !out)
+    if (!p || !o || !out)
         return fail(RR_ERR_NULL, o, out, field);
     d = variant(o->method);
     st = d ? rr_method_check(d, o, NULL) : RR_ERR_METHOD;
     if (st < 0)
         return fail(st, o, out, field);
-    return fastsim_checked(c, fr, o, out, field);
+    return fastsim_checked(p, o, out, field);
 }
 
 /* ---- the descriptors ---------------------------------------------------- */
@@ -680,15 +682,17 @@ static double modified_slope(const rr_creep_opts *o)
     return o->v[RR_FASTSIM_K0];
 }
 
-static int fastsim_forces(const rr_contact_case *c, const rr_friction *fr,
-                          const rr_creep_opts *o, double *work, rr_forces *out)
+static int fastsim_forces(const rr_contact_problem *p, const rr_creep_opts *o, double *work,
+                          rr_forces *out)
 {
     (void)work;
-    return fastsim_checked(c, fr, o, out, NULL);
+    return fastsim_checked(p, o, out, NULL);
 }
 
-static void fastsim_shape(const rr_creep_opts *o, int *rows, int *cols)
+/* the ellipse's field (a grid problem is refused before the shape is asked) */
+static void fastsim_shape(const rr_creep_opts *o, const rr_grid *grid, int *rows, int *cols)
 {
+    (void)grid;
     *rows = (int)o->v[RR_FASTSIM_NY];
     *cols = (int)o->v[RR_FASTSIM_NX];
 }

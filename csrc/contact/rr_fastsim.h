@@ -90,7 +90,7 @@ typedef rr_traction_field rr_fastsim_field;
 
 /*
  * rr_fastsim - creep forces by FASTSIM.
- *   given:   c   the contact case; fr the friction law; o the options with
+ *   given:   p   the contact problem (the ellipse); o the options with
  *                o->method one of RR_METHOD_FASTSIM, RR_METHOD_FASTSIM_BLENDED,
  *                RR_METHOD_MODIFIED_FASTSIM (the defaults: 30 x 30, RR_GRID_RECT,
  *                RR_BOUND_PARABOLIC, RR_SLIP_LOCAL but RR_SLIP_RIGID for modified
@@ -101,12 +101,13 @@ typedef rr_traction_field rr_fastsim_field;
  *   returns: *out (and *field)
  *   status:  0 OK; RR_WARN_NOT_CONVERGED (falling-friction iteration hit
  *            its cap in some element; results usable); errors as
- *            rr_contact_check, rr_friction_check, rr_method_check,
+ *            rr_creep_prepare (RR_ERR_PATCH for a grid problem,
+ *            rr_contact_problem_check's), rr_method_check,
  *            RR_ERR_METHOD (not a FASTSIM method), RR_ERR_SPEED (falling
  *            friction with speed 0), RR_ERR_RANGE (the bound mu p outside
  *            [1e-80, 1e100] Pa, a rigid-slip increment over 1e150 Pa per
  *            element, elements of subnormal size: no physical case),
- *            RR_ERR_NULL (c, fr, o or out NULL).  On error the forces and
+ *            RR_ERR_NULL (p, o or out NULL).  On error the forces and
  *            the field (where o gives its size) are NaN.
  *   Flexibilities (Kalker 1982): L1 = 8a/(3 C11 G), L2 = 8a/(3 C22 G),
  *   L3 = pi a sqrt(a/b)/(4 C23 G).
@@ -134,7 +135,7 @@ typedef rr_traction_field rr_fastsim_field;
  *   eps = pi G a b k0 C11 |(cx, cy + a cphi)| / (4 mu N) with mu at the
  *   rigid slip speed (CONTACT's fastsim_params).
  */
-int rr_fastsim(const rr_contact_case *c, const rr_friction *fr, const rr_creep_opts *o,
-               rr_forces *out, rr_fastsim_field *field);
+int rr_fastsim(const rr_contact_problem *p, const rr_creep_opts *o, rr_forces *out,
+               rr_fastsim_field *field);
 
 #endif

@@ -3,14 +3,13 @@
 #include "util/rr_common.h"
 #include "contact/rr_linear.h"
 
-int rr_linear(const rr_contact_case *c, rr_forces *out)
+/* rr_linear of a checked ellipse problem */
+static int linear_checked(const rr_contact_problem *c, rr_forces *out)
 {
     rr_kalker_coeffs k;
     double ab, c3;
-    int st = out ? rr_contact_check(c) : RR_ERR_NULL;
+    const int st = rr_creep_kalker(c, &k);
 
-    if (st == RR_OK)
-        st = rr_creep_kalker(c, &k);
     if (st < 0) {
         rr_forces_nan(out);
         return st;
@@ -23,18 +22,28 @@ int rr_linear(const rr_contact_case *c, rr_forces *out)
     return rr_forces_checked(st, out);    /* no saturation: large inputs overflow */
 }
 
-static int linear_forces(const rr_contact_case *c, const rr_friction *fr,
-                         const rr_creep_opts *o, double *work, rr_forces *out)
+int rr_linear(const rr_contact_problem *p, rr_forces *out)
 {
-    /* the friction law goes unused, but a NaN or invalid one is still refused */
-    int st = out ? rr_friction_check(fr) : RR_ERR_NULL;
-    (void)o;
-    (void)work;
+    int st = !out ? RR_ERR_NULL : rr_creep_ellipse_check(p);
+
+    /* the friction law goes unused, but a NaN or invalid one is still
+     * refused, and before the rest of the problem (as always) */
+    if (st < 0 && out && p && p->patch == RR_PATCH_ELLIPSE
+        && rr_friction_check(&p->friction) < 0)
+        st = rr_friction_check(&p->friction);
     if (st < 0) {
         rr_forces_nan(out);
         return st;
     }
-    return rr_linear(c, out);
+    return linear_checked(p, out);
+}
+
+static int linear_forces(const rr_contact_problem *p, const rr_creep_opts *o, double *work,
+                         rr_forces *out)
+{
+    (void)o;
+    (void)work;
+    return rr_linear(p, out);
 }
 
 const rr_method_desc rr_method_linear = {

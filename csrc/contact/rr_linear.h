@@ -13,9 +13,11 @@
  *   theory's 32/(15 pi) C23 (b/a)^(3/2) (flexibility L3), used here before,
  *   is 27 % low at a/b = 5, 15 % low at a/b = 1 and 7 % high at a/b = 0.2
  *   (nu = 0.28); FASTSIM keeps L3, which belongs to its own theory.
- *   status: as rr_contact_check; RR_ERR_RANGE where a force overflows (the
- *   linear theory does not saturate); RR_ERR_NULL.
+ *   The friction law goes unused (but an invalid one is refused).
+ *   status: RR_ERR_PATCH (a grid problem), rr_contact_problem_check's;
+ *   RR_ERR_RANGE where a force overflows (the linear theory does not
+ *   saturate); RR_ERR_NULL.
  */
-int rr_linear(const rr_contact_case *c, rr_forces *out);
+int rr_linear(const rr_contact_problem *p, rr_forces *out);
 
 #endif

@@ -5,20 +5,21 @@
 
 /* rr_polach for reduction factors already checked (the descriptor's entry
  * point: the registry checked them); the case and the law checked here */
-static int polach_checked(const rr_contact_case *c, const rr_friction *fr, double kA,
-                          double kS, rr_forces *out)
+static int polach_checked(const rr_contact_problem *c, double kA, double kS, rr_forces *out)
 {
+    const rr_friction *fr;
     rr_kalker_coeffs k;
     double syc, sc, s, cjj, mu, eps, F, Ft;
     int st;
 
     if (!out)
         return RR_ERR_NULL;
-    st = rr_creep_prepare(c, fr, &k);
+    st = rr_creep_prepare(c, &k);
     if (st < 0) {
         rr_forces_nan(out);
         return st;
     }
+    fr = &c->friction;
     out->fx = out->fy = out->mz = 0.0;
 
     /* spin adds to the lateral creepage only where it increases it */
@@ -68,8 +69,7 @@ static int polach_checked(const rr_contact_case *c, const rr_friction *fr, doubl
     return rr_forces_checked(st, out);
 }
 
-int rr_polach(const rr_contact_case *c, const rr_friction *fr, double kA, double kS,
-              rr_forces *out)
+int rr_polach(const rr_contact_problem *p, double kA, double kS, rr_forces *out)
 {
     int st = RR_OK;
 
@@ -83,7 +83,7 @@ int rr_polach(const rr_contact_case *c, const rr_friction *fr, double kA, double
         rr_forces_nan(out);
         return st;
     }
-    return polach_checked(c, fr, kA, kS, out);
+    return polach_checked(p, kA, kS, out);
 }
 
 /* Polach 2005: 0 < kS <= kA <= 1 (each option's range gives 0 < kS, kA <= 1) */
@@ -102,11 +102,11 @@ static double polach_slope(const rr_creep_opts *o)
     return 0.5 * (o->v[RR_POLACH_KA] + o->v[RR_POLACH_KS]);
 }
 
-static int polach_forces(const rr_contact_case *c, const rr_friction *fr,
-                         const rr_creep_opts *o, double *work, rr_forces *out)
+static int polach_forces(const rr_contact_problem *p, const rr_creep_opts *o, double *work,
+                         rr_forces *out)
 {
     (void)work;
-    return polach_checked(c, fr, o->v[RR_POLACH_KA], o->v[RR_POLACH_KS], out);
+    return polach_checked(p, o->v[RR_POLACH_KA], o->v[RR_POLACH_KS], out);
 }
 
 /* each option at its index of rr_polach.h */

@@ -24,11 +24,11 @@ enum { RR_POLACH_KA = 0, RR_POLACH_KS = 1 };
  *   The method gives no spin moment: mz = 0.  The spin force is added
  *   without a bound of its own, so the sum is kept on the friction limit:
  *   |(fx, fy)| <= mu N, mu at the slip speed s_C speed.
- *   status: rr_contact_check, rr_friction_check, RR_ERR_PARAM, RR_ERR_NONFINITE
- *   (kA, kS), RR_ERR_SPEED (falling friction with speed 0), RR_ERR_RANGE (a
- *   force beyond the floating-point range), RR_ERR_NULL.
+ *   status: RR_ERR_PARAM, RR_ERR_NONFINITE (kA, kS), rr_creep_prepare's
+ *   (RR_ERR_PATCH for a grid problem, rr_contact_problem_check's,
+ *   RR_ERR_SPEED: falling friction with speed 0), RR_ERR_RANGE (a force
+ *   beyond the floating-point range), RR_ERR_NULL.
  */
-int rr_polach(const rr_contact_case *c, const rr_friction *fr, double kA, double kS,
-              rr_forces *out);
+int rr_polach(const rr_contact_problem *p, double kA, double kS, rr_forces *out);
 
 #endif

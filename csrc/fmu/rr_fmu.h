@@ -62,11 +62,13 @@
  * alpha, beta and speed floor, the adhesion schedule and patch, and the
  * control modes); a tunable change takes effect at the next step.
  *
- * Memory: the unit allocates one thing, the contact table's rows
- * (rr_rig_table_build), through the caller's functions, when it
- * initialises (rr_fmu_exit_init, the outputs asked in initialisation mode,
- * rr_fmu_restore of a state of another geometry).  rr_fmu_do_step
- * allocates nothing.  No globals: instances are independent.
+ * Memory: the unit allocates two things, the contact table's rows
+ * (rr_rig_table_build) and its rig's workspace for the creep method
+ * (rr_rig_workspace_len; none for the methods the rig steps with today),
+ * through the caller's functions, when it initialises (rr_fmu_exit_init,
+ * the outputs asked in initialisation mode, rr_fmu_restore of a state of
+ * another geometry or method).  rr_fmu_do_step allocates nothing.  No
+ * globals: instances are independent.
  *
  * Statuses (rr_common.h): 0, > 0 a warning, < 0 an error; every error and
  * warning leaves a message in rr_fmu_message(m) naming the variable, value
@@ -196,6 +198,9 @@ typedef struct {
     double *table_data;
     long table_cap;                 /* doubles allocated */
     double table_work[RR_RIG_TABLE_WORK_LEN];
+    /* the rig's workspace for its creep method (rr_rig_workspace_len) */
+    double *rig_work;
+    size_t rig_work_cap;            /* doubles allocated */
     rr_fmu_alloc alloc;
     rr_fmu_free release;
     void *mem_ctx;

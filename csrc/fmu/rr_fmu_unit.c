@@ -121,6 +121,10 @@ void rr_fmu_release(rr_fmu *m)
         m->release(m->mem_ctx, m->table_data);
     m->table_data = NULL;
     m->table_cap = 0;
+    if (m->rig_work)
+        m->release(m->mem_ctx, m->rig_work);
+    m->rig_work = NULL;
+    m->rig_work_cap = 0;
     m->table_ok = 0;
     m->s.ready = 0;
 }
@@ -202,6 +206,27 @@ static int table_for(rr_fmu *m, const rr_rig_config *c)
     return RR_OK;
 }
 
+/* The rig's workspace of at least need doubles (allocating it, zeroed, if
+ * the one held is shorter): its creep method's, the unit's to own. */
+static int rig_work_for(rr_fmu *m, size_t need)
+{
+    double *work;
+    size_t i;
+    if (need <= m->rig_work_cap)
+        return RR_OK;
+    if (need > (size_t)-1 / sizeof *work
+        || !(work = m->alloc(m->mem_ctx, need * sizeof *work)))
+        return fail(m, RR_ERR_WORKSPACE, "the rig's workspace: out of memory (%lu doubles)",
+                    (unsigned long)need);
+    for (i = 0; i < need; i++)
+        work[i] = 0.0;
+    if (m->rig_work)
+        m->release(m->mem_ctx, m->rig_work);
+    m->rig_work = work;
+    m->rig_work_cap = need;
+    return RR_OK;
+}
+
 /* The refusal of a sample time at which a drive's speed loop is unstable:
  * which drive, and the sample times at which it is stable. */
 static int loop_fail(rr_fmu *m, const rr_rig_config *c, int st)
@@ -265,10 +290,12 @@ static int build(rr_fmu *m)
     int st;
     if (s->ready)
         return RR_OK;
-    if ((st = derive(m, &s->cfg, &s->p)) < 0)
+    if ((st = derive(m, &s->cfg, &s->p)) < 0
+        || (st = rig_work_for(m, rr_rig_workspace_len(&s->p))) < 0)
         return st;
     st = rr_rig_init(&s->p, s->cfg.control[RR_FMU_START] == RR_FMU_START_REST
-                                ? 0.0 : c->roller_speed / c->roller_radius, &s->rig);
+                                ? 0.0 : c->roller_speed / c->roller_radius,
+                     m->rig_work, m->rig_work_cap, &s->rig);
     if (st < 0)
         return fail(m, st, "the rig cannot start: %s", rr_status_message(st));
     s->k = 0;
@@ -601,12 +628,16 @@ int rr_fmu_restore(rr_fmu *m, const rr_fmu_state *st)
         /* the pointers of the copy are remade: the rig's parameters, their
          * table (this unit's, of the state's geometry) and the
          * integrator's model function (this process's) */
-        if ((status = table_for(m, &st->cfg.c)) < 0)
+        if ((status = table_for(m, &st->cfg.c)) < 0
+            || (status = rig_work_for(m, rr_creep_workspace_len(&st->p.contact.creep, NULL)))
+                   < 0)
             return status;
     }
     m->s = *st;
     if (m->s.ready) {
         m->s.p.contact.table = &m->table;
+        m->s.rig.work = m->rig_work;
+        m->s.rig.work_len = m->rig_work_cap;
         if ((status = rr_rig_rebind(&m->s.rig, &m->s.p)) < 0)
             return fail(m, status, "set FMU state: the state's rig cannot go on: %s",
                         rr_status_message(status));

@@ -371,6 +371,62 @@ static inline void fz_guard_free(void *buf)
         free((unsigned char *)buf - FZ_GUARD);
 }
 
+/* 1 where member `field` of contact problem p (either patch) is at fault as
+ * status st says, judged member by member from rr_contact_problem_check's
+ * documentation (the one oracle of fuzz_creep and fuzz_exact). */
+static inline int fz_member_at_fault(const rr_contact_problem *p, int field, int st)
+{
+    const rr_grid *q = &p->grid;
+    const int grid = p->patch == RR_PATCH_GRID;
+    double v;
+    long i, bad = 0;
+    switch (field) {
+    case RR_PF_PATCH: return st == RR_ERR_PATCH && !grid && p->patch != RR_PATCH_ELLIPSE;
+    case RR_PF_MX:
+        return grid && st == RR_ERR_GRID && !(q->mx >= 1 && q->mx <= RR_CONTACT_MAX_GRID);
+    case RR_PF_MY:
+        return grid && st == RR_ERR_GRID && !(q->my >= 1 && q->my <= RR_CONTACT_MAX_GRID);
+    case RR_PF_H:
+        if (!grid || st == RR_ERR_NULL)
+            return grid && !p->h;
+        for (i = 0; p->h && i < (long)q->mx * q->my; i++)
+            bad |= !isfinite(p->h[i]);
+        return st == RR_ERR_NONFINITE && bad;
+    case RR_PF_A: if (grid) return 0; v = p->a; break;
+    case RR_PF_B: if (grid) return 0; v = p->b; break;
+    case RR_PF_DX: if (!grid) return 0; v = q->dx; break;
+    case RR_PF_DY: if (!grid) return 0; v = q->dy; break;
+    case RR_PF_X0: if (!grid) return 0; v = q->x0; break;
+    case RR_PF_Y0: if (!grid) return 0; v = q->y0; break;
+    case RR_PF_N: v = p->N; break;
+    case RR_PF_G: v = p->G; break;
+    case RR_PF_NU: v = p->nu; break;
+    case RR_PF_CX: v = p->cx; break;
+    case RR_PF_CY: v = p->cy; break;
+    case RR_PF_CPHI: v = p->cphi; break;
+    case RR_PF_SPEED: v = p->speed; break;
+    case RR_PF_MU0: v = p->friction.mu0; break;
+    case RR_PF_FRICTION_A: v = p->friction.A; break;
+    case RR_PF_FRICTION_B: v = p->friction.B; break;
+    default: return 0;
+    }
+    switch (st) {
+    case RR_ERR_NONFINITE: return !isfinite(v);
+    case RR_ERR_GEOMETRY: return (field == RR_PF_A || field == RR_PF_B || field == RR_PF_DX
+                                  || field == RR_PF_DY) && !(v > 0.0);
+    case RR_ERR_LOAD: return field == RR_PF_N && !(v > 0.0);
+    case RR_ERR_MATERIAL: return (field == RR_PF_G && !(v > 0.0))
+                                 || (field == RR_PF_NU && !(v >= 0.0 && v <= 0.5));
+    case RR_ERR_SPEED: return field == RR_PF_SPEED && !(v >= 0.0);
+    case RR_ERR_FRICTION: return (field == RR_PF_MU0 && !(v > 0.0))
+                                 || (field == RR_PF_FRICTION_A && !(v > 0.0 && v <= 1.0))
+                                 || (field == RR_PF_FRICTION_B && !(v >= 0.0));
+    case RR_ERR_RANGE: return ((field == RR_PF_MU0 || field == RR_PF_FRICTION_B)
+                               && v > RR_FRICTION_MAX) || !isnormal(v);
+    default: return 0;
+    }
+}
+
 /* 1 if v[0..n-1] are all NaN. */
 static inline int fz_all_nan(const double *v, long n)
 {

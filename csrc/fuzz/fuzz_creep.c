@@ -6,7 +6,7 @@
  * rr_creep_cost/saturates/slope_scale/workspace_len, rr_creep_forces_work,
  * rr_creep_forces_interruptible and rr_creep_field.
  *
- * Input: one byte choosing the entry point, then the contact case (semi-
+ * Input: one byte choosing the entry point, then the ellipse problem (semi-
  * axes 0.1 .. 20 mm, load 1 N .. 100 kN, G 1 .. 100 GPa, creepages of
  * either sign 1e-8 .. 1, spin 1e-6 .. 100 1/m, speed 0.01 .. 100 m/s), the
  * friction law, the options (every field, valid or not: unknown methods,
@@ -36,7 +36,15 @@
  * rr_creep_check as rr_creep_opts_check_at (status and *bad, the record's
  * workspace and cost the getters'), rr_creep_forces_checked exactly
  * rr_creep_forces_work for a checked record, RR_ERR_NULL with NaN forces
- * for a refused one or one whose method was changed after the check.
+ * for a refused one or one whose method was changed after the check.  The
+ * problem's check: rr_contact_problem_check refuses exactly an invalid
+ * ellipse or law, naming a member at fault as its status says (judged
+ * member by member); rr_creep_blame of a method's error names such a member,
+ * or for a valid problem the speed (falling friction at rest), the law
+ * (a Coulomb-only method) or exact_table's nu or a/b, and no member only for
+ * a result out of range, the exact solver's own refusals, or a problem the
+ * check refuses for another reason than the method (the linear theory
+ * judges the law first).  (The grid problem: fuzz_exact.)
  */
 #include "fuzz.h"
 
@@ -50,7 +58,7 @@ static int polled(void *ctx)
     return (*c)++ == 1;
 }
 
-static int contact_invalid(const rr_contact_case *c)
+static int contact_invalid(const rr_contact_problem *c)
 {
     return !isfinite(c->a) || !isfinite(c->b) || !isfinite(c->N) || !isfinite(c->G)
         || !isfinite(c->nu) || !isfinite(c->cx) || !isfinite(c->cy) || !isfinite(c->cphi)
@@ -127,7 +135,7 @@ static int falling(const rr_friction *f)
     return f->A < 1.0 && f->B > 0.0;
 }
 
-static void decode_case(fz_in *in, rr_contact_case *c)
+static void decode_case(fz_in *in, rr_contact_problem *c)
 {
     c->a = fz_log(in, 1e-4, 2e-2);
     c->b = fz_log(in, 1e-4, 2e-2);
@@ -217,7 +225,7 @@ static int in_range(double v, double lo, double hi)
  * mu0 is near zero, and beta = 0 times it is NaN: inf or NaN forces with
  * status 0; Polach's
  * F rounds above mu0 N where mu0 N is subnormal. */
-static int known_extreme(const rr_contact_case *c, const rr_friction *fr)
+static int known_extreme(const rr_contact_problem *c, const rr_friction *fr)
 {
     return !in_range(c->a, 1e-30, 1e30) || !in_range(c->b, 1e-30, 1e30)
         || !in_range(c->a / c->b, 1e-30, 1e30) || !in_range(c->N, 1e-30, 1e30)
@@ -229,7 +237,7 @@ static int known_extreme(const rr_contact_case *c, const rr_friction *fr)
 
 /* Known: blended FASTSIM with a creepage so small (< 1e-154) that its
  * square underflows: the single flexibility is 0/0, NaN forces, status 0. */
-static int known_blended(const rr_contact_case *c, int method)
+static int known_blended(const rr_contact_problem *c, int method)
 {
     const double m = fmax(fabs(c->cx), fmax(fabs(c->cy), fabs(c->cphi)));
     return method == RR_METHOD_FASTSIM_BLENDED && m > 0.0 && m < 1e-150;
@@ -245,12 +253,12 @@ static int unbounded_fastrip(const rr_creep_opts *o)
 
 /* Known: Polach's spin force is added outside the saturation, so that with
  * spin |F| exceeds mu N. */
-static int known_polach(const rr_contact_case *c)
+static int known_polach(const rr_contact_problem *c)
 {
     return c->cphi != 0.0;
 }
 
-static void check_forces(const char *fn, int st, const rr_contact_case *c, const rr_friction *fr,
+static void check_forces(const char *fn, int st, const rr_contact_problem *c, const rr_friction *fr,
                          int frictional, int invalid, const rr_forces *f)
 {
     fz_status(fn, st);
@@ -267,7 +275,30 @@ static void check_forces(const char *fn, int st, const rr_contact_case *c, const
         fz_bound(fn, st, f->fx, f->fy, fr->mu0, c->N);
 }
 
-static void check_field(int st, const rr_contact_case *c, const rr_friction *fr,
+/* rr_creep_blame's member for status st of a checked method: one at fault
+ * by the problem's check, or what a method asks of a valid problem: the
+ * speed for falling friction at rest, the law for a Coulomb-only method,
+ * exact_table's nu or a/b (outside [0.1, 10]) */
+static int blame_right(const rr_creep_checked *k, const rr_contact_problem *c, int field, int st)
+{
+    if (rr_contact_problem_check(c, NULL) != RR_OK)
+        return fz_member_at_fault(c, field, st);
+    switch (st) {
+    case RR_ERR_SPEED:
+        return field == RR_PF_SPEED && falling(&c->friction) && c->speed == 0.0;
+    case RR_ERR_FRICTION:
+        return field == RR_PF_FRICTION_A && falling(&c->friction) && k->d->coulomb_only;
+    case RR_ERR_TABLE:
+        return k->o.method == RR_METHOD_EXACT_TABLE
+               && (field == RR_PF_NU ? fabs(c->nu - 0.28) > 1e-9
+                   : field == RR_PF_A && !(c->a / c->b >= 0.1 * (1 - 1e-9)
+                                          && c->a / c->b <= 10.0 * (1 + 1e-9)));
+    default:
+        return 0;
+    }
+}
+
+static void check_field(int st, const rr_contact_problem *c, const rr_friction *fr,
                         const rr_creep_opts *o, const rr_forces *f, const rr_fastsim_field *fl)
 {
     const char *fn = "rr_fastsim (field)";
@@ -321,7 +352,7 @@ static void check_field(int st, const rr_contact_case *c, const rr_friction *fr,
         fz_fail("%s: py sums to %.17g, not fy = %.17g", fn, sum_y * area, f->fy);
 }
 
-static void run_fastsim(fz_in *in, const rr_contact_case *c, const rr_friction *fr,
+static void run_fastsim(fz_in *in, const rr_contact_problem *c, const rr_friction *fr,
                         rr_creep_opts *o)
 {
     const int mode = fz_choice(in, 3), mask = (int)fz_u8(in);
@@ -355,7 +386,7 @@ static void run_fastsim(fz_in *in, const rr_contact_case *c, const rr_friction *
         fl.py = (mode == 1 || (mask & 16)) ? fz_alloc(n * sizeof *fl.py) : NULL;
         fl.slip = (mode == 1 || (mask & 32)) ? fz_alloc(n * sizeof *fl.slip) : NULL;
     }
-    st = rr_fastsim(c, fr, o, &f, mode > 0 ? &fl : NULL);
+    st = rr_fastsim(c, o, &f, mode > 0 ? &fl : NULL);
     if (!(st >= 0 && (fz_known("extreme", known_extreme(c, fr))
                       || fz_known("blended", known_blended(c, o->method))))) {
         check_forces("rr_fastsim", st, c, fr, 1, invalid, &f);
@@ -363,7 +394,7 @@ static void run_fastsim(fz_in *in, const rr_contact_case *c, const rr_friction *
             check_field(st, c, fr, o, &f, &fl);
         if (st >= 0 && mode == 0) {
             /* the dispatcher must give exactly the same */
-            st2 = rr_creep_forces(c, fr, o, &f2);
+            st2 = rr_creep_forces(c, o, &f2);
             if (st2 != st || memcmp(&f, &f2, sizeof f) != 0)
                 fz_fail("rr_creep_forces: status %d (%g, %g, %g) but rr_fastsim %d (%g, %g, %g)",
                         st2, f2.fx, f2.fy, f2.mz, st, f.fx, f.fy, f.mz);
@@ -377,7 +408,7 @@ static void run_fastsim(fz_in *in, const rr_contact_case *c, const rr_friction *
     free(fl.slip);
 }
 
-static void run_shared(fz_in *in, const rr_contact_case *c, const rr_friction *fr,
+static void run_shared(fz_in *in, const rr_contact_problem *c, const rr_friction *fr,
                        const rr_creep_opts *o)
 {
     rr_kalker_coeffs k;
@@ -390,17 +421,26 @@ static void run_shared(fz_in *in, const rr_contact_case *c, const rr_friction *f
     if ((st < 0) != opts_invalid(o))
         fz_fail("rr_creep_opts_check: status %d for options that are %s", st,
                 opts_invalid(o) ? "invalid" : "valid");
-    st = rr_contact_check(c);
-    fz_status("rr_contact_check", st);
-    if ((st < 0) != contact_invalid(c))
-        fz_fail("rr_contact_check: status %d for a case that is %s", st,
-                contact_invalid(c) ? "invalid" : "valid");
+    {
+        int field = -99;
+        const int bad = contact_invalid(c) || friction_invalid(fr);
+        st = rr_contact_problem_check(c, &field);
+        fz_status("rr_contact_problem_check", st);
+        if ((st < 0) != bad)
+            fz_fail("rr_contact_problem_check: status %d for a problem that is %s", st,
+                    bad ? "invalid" : "valid");
+        if (st < 0 ? !fz_member_at_fault(c, field, st) : field != RR_PF_NONE)
+            fz_fail("rr_contact_problem_check: status %d names member %d (%s)", st, field,
+                    rr_problem_field_name(field) ? rr_problem_field_name(field) : "none");
+        if (st != rr_contact_problem_check(c, NULL))
+            fz_fail("rr_contact_problem_check: another status without the report");
+    }
     st = rr_friction_check(fr);
     fz_status("rr_friction_check", st);
     if ((st < 0) != friction_invalid(fr))
         fz_fail("rr_friction_check: status %d for a law that is %s", st,
                 friction_invalid(fr) ? "invalid" : "valid");
-    st = rr_creep_prepare(c, fr, &k);
+    st = rr_creep_prepare(c, &k);
     fz_status("rr_creep_prepare", st);
     fz_error("rr_creep_prepare", st,
              contact_invalid(c) || friction_invalid(fr) || (falling(fr) && !(c->speed > 0.0)),
@@ -453,7 +493,7 @@ static int predict_option(const rr_creep_option *op, double x)
 /* The registry: rr_method_count/get/find, rr_creep_opts_default/set/
  * check_at, cost, saturates, slope scale, workspace length, and
  * rr_creep_forces_work and rr_creep_field against rr_creep_forces. */
-static void run_registry(fz_in *in, const rr_contact_case *c, const rr_friction *fr,
+static void run_registry(fz_in *in, const rr_contact_problem *c, const rr_friction *fr,
                          rr_creep_opts *o)
 {
     const int m = fz_int(in, 0, RR_METHOD_COUNT - 1);
@@ -518,7 +558,7 @@ static void run_registry(fz_in *in, const rr_contact_case *c, const rr_friction 
     {
         const double cost = rr_creep_cost(o), slope = rr_creep_slope_scale(o);
         const int sat = rr_creep_saturates(o);
-        const size_t wl = rr_creep_workspace_len(o);
+        const size_t wl = rr_creep_workspace_len(o, NULL);
         if (st < 0 ? !(cost == 0.0 && isnan(slope) && sat == 0 && wl == 0)
                    : !(isfinite(cost) && cost >= 1.0 && isfinite(slope) && slope > 0.0
                        && sat == d->saturates && (sat == 0) == (m == RR_METHOD_LINEAR)))
@@ -533,13 +573,13 @@ static void run_registry(fz_in *in, const rr_contact_case *c, const rr_friction 
         {
             const size_t n = wl > 0 ? wl : 1;
             double *work = fz_guarded(n * sizeof(double));
-            st = rr_creep_forces_work(c, fr, o, work, wl, &f);
+            st = rr_creep_forces_work(c, o, work, wl, &f);
             fz_guard_ok("rr_creep_forces_work", work, n * sizeof(double), "work");
-            st2 = rr_creep_forces(c, fr, o, &f2);
+            st2 = rr_creep_forces(c, o, &f2);
             if (wl == 0 && (st != st2 || memcmp(&f, &f2, sizeof f) != 0))
                 fz_fail("rr_creep_forces_work: status %d (%g, %g, %g), rr_creep_forces %d "
                         "(%g, %g, %g)", st, f.fx, f.fy, f.mz, st2, f2.fx, f2.fy, f2.mz);
-            if (wl > 0 && (rr_creep_forces_work(c, fr, o, work, wl - 1, &f2) != RR_ERR_WORKSPACE
+            if (wl > 0 && (rr_creep_forces_work(c, o, work, wl - 1, &f2) != RR_ERR_WORKSPACE
                            || st2 != RR_ERR_WORKSPACE))
                 fz_fail("rr_creep_forces_work: a workspace one double short not refused");
             if (st < 0 && (!isnan(f.fx) || !isnan(f.fy) || !isnan(f.mz)))
@@ -554,7 +594,7 @@ static void run_registry(fz_in *in, const rr_contact_case *c, const rr_friction 
                     || (kst == RR_OK && (k.work_len != wl || k.cost != cost)))
                     fz_fail("rr_creep_check: status %d, *bad %d; rr_creep_opts_check_at %d, %d",
                             kst, kbad, ost, bad);
-                st2 = rr_creep_forces_checked(&k, c, fr, work, wl, NULL, &f2);
+                st2 = rr_creep_forces_checked(&k, c, work, wl, NULL, &f2);
                 fz_status("rr_creep_forces_checked", st2);
                 if (kst == RR_OK ? st2 != st || memcmp(&f, &f2, sizeof f) != 0
                                  : st2 != RR_ERR_NULL || !isnan(f2.fx) || !isnan(f2.fy)
@@ -562,9 +602,29 @@ static void run_registry(fz_in *in, const rr_contact_case *c, const rr_friction 
                     fz_fail("rr_creep_forces_checked: status %d (%g, %g, %g), "
                             "rr_creep_forces_work %d (%g, %g, %g), the record %s", st2, f2.fx,
                             f2.fy, f2.mz, st, f.fx, f.fy, f.mz, kst ? "refused" : "checked");
+                /* the member a method's status blames (for kst OK: the status it gave) */
+                if (kst == RR_OK && st < 0) {
+                    const int field = rr_creep_blame(&k, c, st);
+                    if (field != RR_PF_NONE && !blame_right(&k, c, field, st))
+                        fz_fail("rr_creep_blame: status %d of %s blames member %d (%s)", st,
+                                k.d->name, field, rr_problem_field_name(field));
+                    /* none: a result out of range, or a problem the check refuses
+                     * for another reason than the method (the linear theory
+                     * judges the friction law first) */
+                    if (field == RR_PF_NONE && st != RR_ERR_RANGE && st != RR_ERR_NULL
+                        && st != RR_ERR_WORKSPACE && rr_contact_problem_check(c, NULL) >= 0
+                        && !(m == RR_METHOD_EXACT && (st == RR_ERR_GEOMETRY
+                                                      || st == RR_ERR_GRID)))
+                        fz_fail("rr_creep_blame: status %d of %s blames no member", st,
+                                k.d->name);
+                }
+                if (rr_creep_blame(&k, c, RR_OK) != RR_PF_NONE
+                    || rr_creep_blame(NULL, c, RR_ERR_LOAD) != RR_PF_NONE
+                    || rr_creep_blame(&k, NULL, RR_ERR_LOAD) != RR_PF_NONE)
+                    fz_fail("rr_creep_blame: a member for success or NULL arguments");
                 /* the method changed after the check: not the record's */
                 k.o.method = (k.o.method + 2) % (RR_METHOD_COUNT + 2) - 1;
-                st2 = rr_creep_forces_checked(&k, c, fr, work, wl, NULL, &f2);
+                st2 = rr_creep_forces_checked(&k, c, work, wl, NULL, &f2);
                 if (st2 != RR_ERR_NULL || !isnan(f2.fx) || !isnan(f2.fy) || !isnan(f2.mz))
                     fz_fail("rr_creep_forces_checked: status %d for a record whose method "
                             "changed to %d", st2, k.o.method);
@@ -577,7 +637,7 @@ static void run_registry(fz_in *in, const rr_contact_case *c, const rr_friction 
                 hook.ctx = &count;
                 for (q = 2; q >= 1; q--) {
                     count = q;
-                    st2 = rr_creep_forces_interruptible(c, fr, o, work, wl, &hook, &f2);
+                    st2 = rr_creep_forces_interruptible(c, o, work, wl, &hook, &f2);
                     if (count > q && !(d && d->forces_interruptible))
                         fz_fail("rr_creep_forces_interruptible: a method without the hook's "
                                 "entry polled it");
@@ -607,7 +667,7 @@ static void run_registry(fz_in *in, const rr_contact_case *c, const rr_friction 
         const int has = st2 >= 0 || (d && rr_creep_opts_check(o) == RR_OK);
         memset(&fl, 0, sizeof fl);
         if (has && d && d->field_shape) {
-            d->field_shape(o, &rows, &cols);
+            d->field_shape(o, NULL, &rows, &cols);
             if (!(rows >= 1 && cols >= 1 && (size_t)rows * (size_t)cols <= (size_t)MAX_ELEMENTS))
                 fz_fail("field_shape: %d x %d for valid options", rows, cols);
             n = (size_t)rows * (size_t)cols;
@@ -619,7 +679,7 @@ static void run_registry(fz_in *in, const rr_contact_case *c, const rr_friction 
         fl.px = fz_guarded(n * sizeof(double));
         fl.py = fz_guarded(n * sizeof(double));
         fl.slip = fz_guarded(n);
-        st = rr_creep_field(c, fr, o, &f, &fl);
+        st = rr_creep_field(c, o, &f, &fl);
         fz_status("rr_creep_field", st);
         fz_guard_ok("rr_creep_field", fl.x, n * sizeof(double), "x");
         fz_guard_ok("rr_creep_field", fl.y, n * sizeof(double), "y");
@@ -655,7 +715,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fz_in in = fz_start(data, size);
     const int op = fz_choice(&in, 6);
-    rr_contact_case c;
+    rr_contact_problem c = {0};     /* an ellipse problem */
     rr_friction fr;
     rr_creep_opts o;
     rr_forces f, f2;
@@ -663,6 +723,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 
     decode_case(&in, &c);
     decode_friction(&in, &fr);
+    c.friction = fr;
     decode_opts(&in, &o);
     fz_note("op %d; case a = %.17g, b = %.17g, N = %.17g, G = %.17g, nu = %.17g, cx = %.17g, "
             "cy = %.17g, cphi = %.17g, speed = %.17g; friction mu0 = %.17g, A = %.17g, B = %.17g; "
@@ -675,7 +736,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                             || (o.method != RR_METHOD_LINEAR
                                 && (friction_invalid(&fr) || (falling(&fr) && !(c.speed > 0.0))))
                             || (o.method == RR_METHOD_FASTRIP && falling(&fr));   /* Coulomb only */
-        st = rr_creep_forces(&c, &fr, &o, &f);
+        st = rr_creep_forces(&c, &o, &f);
         if (st >= 0 && (fz_known("extreme", known_extreme(&c, &fr))
                         || fz_known("blended", known_blended(&c, o.method))
                         || fz_known("polach", o.method == RR_METHOD_POLACH && known_polach(&c))))
@@ -688,30 +749,30 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         st = rr_linear(&c, &f);
         if (st >= 0 && fz_known("extreme", known_extreme(&c, &fr)))
             break;
-        check_forces("rr_linear", st, &c, &fr, 0, contact_invalid(&c), &f);
+        /* an invalid friction law is refused, before the rest, though the
+         * linear theory reads none */
+        check_forces("rr_linear", st, &c, &fr, 0, contact_invalid(&c) || friction_invalid(&fr),
+                     &f);
+        if (friction_invalid(&fr) && st != rr_friction_check(&fr))
+            fz_fail("rr_linear: status %d with an invalid law (its check: %d)", st,
+                    rr_friction_check(&fr));
         o.method = RR_METHOD_LINEAR;
-        st2 = rr_creep_forces(&c, &fr, &o, &f2);
-        /* the dispatcher refuses an invalid friction law even for the linear
-         * theory, which reads none; otherwise it is rr_linear itself */
-        if (friction_invalid(&fr)) {
-            if (st2 != rr_friction_check(&fr) || !isnan(f2.fx))
-                fz_fail("rr_creep_forces: linear theory with an invalid law: status %d", st2);
-        } else if (st2 != st || memcmp(&f, &f2, sizeof f) != 0) {
+        st2 = rr_creep_forces(&c, &o, &f2);
+        if (st2 != st || memcmp(&f, &f2, sizeof f) != 0)
             fz_fail("rr_creep_forces: linear theory differs from rr_linear");
-        }
         break;
     case 2: {
         const int invalid = contact_invalid(&c) || friction_invalid(&fr)
                             || (falling(&fr) && !(c.speed > 0.0))
                             || !(isfinite(o.v[RR_POLACH_KA]) && isfinite(o.v[RR_POLACH_KS]) && o.v[RR_POLACH_KS] > 0.0
                                  && o.v[RR_POLACH_KS] <= o.v[RR_POLACH_KA] && o.v[RR_POLACH_KA] <= 1.0);
-        st = rr_polach(&c, &fr, o.v[RR_POLACH_KA], o.v[RR_POLACH_KS], &f);
+        st = rr_polach(&c, o.v[RR_POLACH_KA], o.v[RR_POLACH_KS], &f);
         if (st >= 0 && (fz_known("extreme", known_extreme(&c, &fr))
                         || fz_known("polach", known_polach(&c))))
             break;
         check_forces("rr_polach", st, &c, &fr, 1, invalid, &f);
         o.method = RR_METHOD_POLACH;
-        st2 = rr_creep_forces(&c, &fr, &o, &f2);
+        st2 = rr_creep_forces(&c, &o, &f2);
         /* the dispatcher checks the options first, in the descriptor's
          * order (kA, then kS); rr_polach both for finiteness first: with
          * invalid options only the dispatcher's own status is promised */

@@ -1,7 +1,9 @@
 /*
  * fuzz_exact.c - Kalker's exact theory (rr_exact.h): rr_exact_solve on
- * small grids, Hertzian or with any undeformed distance h, and the method
- * "exact" through rr_exact_hertz_problem.
+ * small grids, Hertzian or with any undeformed distance h, and the same h
+ * as a contact problem on a grid (rr_contact_problem, RR_PATCH_GRID)
+ * through the registry: the method "exact", and every method that takes
+ * the ellipse only.
  *
  * Input: the grid (1 .. 14 elements a side, sometimes 0, negative or past
  * RR_EXACT_MAX_GRID), its element sizes and placement, h (a bowl, a bowl
@@ -22,7 +24,13 @@
  * fresh workspace where the first had one of NaN; the hook: stopped at the
  * poll it asks (RR_ERR_INTERRUPTED, NaN results), or never polled that
  * often and the doubles unchanged; after it, the workspace gives the first
- * solve's status and doubles.
+ * solve's status and doubles.  The grid problem: rr_contact_problem_check
+ * refuses exactly an invalid grid, h or number, naming a member at fault;
+ * the method "exact" on a fresh workspace of rr_creep_workspace_len for the
+ * grid (one double short refused) gives rr_exact_solve's status and doubles
+ * where the problem is valid, an error with NaN forces where it is not, and
+ * rr_creep_blame a member at fault; every method of the ellipse only
+ * refuses it (RR_ERR_PATCH, NaN forces).
  */
 #include "fuzz.h"
 
@@ -61,7 +69,7 @@ static int grid_side(fz_in *in)
 
 static int problem_invalid(const rr_exact_problem *pb)
 {
-    const rr_exact_grid *g = &pb->grid;
+    const rr_grid *g = &pb->grid;
     int k, n;
     if (g->mx < 1 || g->my < 1 || g->mx > RR_EXACT_MAX_GRID || g->my > RR_EXACT_MAX_GRID)
         return 1;
@@ -86,7 +94,7 @@ static int problem_invalid(const rr_exact_problem *pb)
         || !(pb->spin_shift >= -1.0 && pb->spin_shift <= 1.0);
 }
 
-static void decode_h(fz_in *in, const rr_exact_grid *g, double *h)
+static void decode_h(fz_in *in, const rr_grid *g, double *h)
 {
     const int kind = fz_choice(in, 4), n = g->mx * g->my;
     const double A = fz_log(in, 0.01, 100.0), B = fz_log(in, 0.01, 100.0);
@@ -136,6 +144,85 @@ static void check_fields(const rr_exact_problem *pb, int st, const rr_exact_resu
     if (st >= 0 && (nc != r->ncontact || ns != r->nslip))
         fz_fail("rr_exact_solve: counts %d, %d but the map says %d, %d", r->ncontact, r->nslip,
                 nc, ns);
+}
+
+/* pb's h as a contact problem on the grid through the registry (the
+ * solve of pb gave st, r on a workspace that was zero-filled or NaN) */
+static void grid_problem(const rr_exact_problem *pb, int st, const rr_exact_result *r)
+{
+    rr_contact_problem g;
+    rr_creep_opts o;
+    rr_creep_checked k;
+    rr_forces f;
+    size_t wl;
+    double *work;
+    int field = -99, pst, st2, m, fst;
+
+    memset(&g, 0, sizeof g);
+    g.patch = RR_PATCH_GRID;
+    g.grid = pb->grid;
+    g.h = pb->h;
+    g.N = pb->N;
+    g.G = pb->G;
+    g.nu = pb->nu;
+    g.friction.mu0 = pb->mu;
+    g.friction.A = 1.0;
+    g.cx = pb->cx;
+    g.cy = pb->cy;
+    g.cphi = pb->cphi;
+    pst = rr_contact_problem_check(&g, &field);
+    fz_status("rr_contact_problem_check (grid)", pst);
+    if (pst < 0 ? !fz_member_at_fault(&g, field, pst) : field != RR_PF_NONE)
+        fz_fail("rr_contact_problem_check (grid): status %d names member %d (%s)", pst, field,
+                rr_problem_field_name(field) ? rr_problem_field_name(field) : "none");
+    /* the method "exact" with pb's settings, where they are valid options */
+    rr_creep_opts_default(&o, RR_METHOD_EXACT);
+    o.v[RR_EXACT_TOL] = pb->tol;
+    o.v[RR_EXACT_MAXIT] = pb->maxit;
+    o.v[RR_EXACT_SPIN_SHIFT] = pb->spin_shift;
+    if (rr_creep_check(&k, &o, NULL) != RR_OK)
+        return;
+    wl = rr_creep_workspace_len(&o, &g.grid);
+    if (wl != rr_exact_workspace_len(g.grid.mx, g.grid.my))
+        fz_fail("rr_creep_workspace_len: %zu for a %d x %d grid, the solver's %zu", wl,
+                g.grid.mx, g.grid.my, rr_exact_workspace_len(g.grid.mx, g.grid.my));
+    work = fz_guarded((wl > 0 ? wl : 1) * sizeof *work);
+    memset(work, 0, (wl > 0 ? wl : 1) * sizeof *work);
+    fst = rr_creep_forces_work(&g, &o, work, wl, &f);
+    fz_status("rr_creep_forces_work (grid)", fst);
+    fz_guard_ok("rr_creep_forces_work (grid)", work, (wl > 0 ? wl : 1) * sizeof *work, "work");
+    if (pst == RR_OK && (fst != st || (st >= 0 && (memcmp(&f.fx, &r->fx, sizeof f.fx) != 0
+                                                   || memcmp(&f.fy, &r->fy, sizeof f.fy) != 0
+                                                   || memcmp(&f.mz, &r->mz, sizeof f.mz) != 0))))
+        fz_fail("the grid problem: status %d (%.17g, %.17g, %.17g), rr_exact_solve %d "
+                "(%.17g, %.17g, %.17g)", fst, f.fx, f.fy, f.mz, st, r->fx, r->fy, r->mz);
+    if (pst < 0 && fst >= 0)
+        fz_fail("the grid problem: status %d for an invalid problem (%d)", fst, pst);
+    if (fst < 0) {
+        const int blamed = rr_creep_blame(&k, &g, fst);
+        if (!isnan(f.fx) || !isnan(f.fy) || !isnan(f.mz))
+            fz_fail("the grid problem: error %d but the forces are not NaN", fst);
+        if (blamed != RR_PF_NONE && !fz_member_at_fault(&g, blamed, fst))
+            fz_fail("rr_creep_blame (grid): status %d blames member %d (%s)", fst, blamed,
+                    rr_problem_field_name(blamed));
+        if (pst < 0 && pst == fst && blamed != field)
+            fz_fail("rr_creep_blame (grid): member %d, the check's %d", blamed, field);
+    }
+    if (wl > 0 && rr_creep_forces_work(&g, &o, work, wl - 1, &f) != RR_ERR_WORKSPACE)
+        fz_fail("the grid problem: a workspace one double short not refused");
+    fz_guard_free(work);
+    /* the methods of the ellipse only */
+    for (m = 0; m < RR_METHOD_COUNT; m++) {
+        if (rr_method_get(m)->takes_grid)
+            continue;
+        rr_creep_opts_default(&o, m);
+        st2 = rr_creep_forces(&g, &o, &f);
+        if (st2 != RR_ERR_PATCH || !isnan(f.fx) || !isnan(f.fy) || !isnan(f.mz))
+            fz_fail("%s: status %d for a grid problem, not RR_ERR_PATCH with NaN forces",
+                    rr_method_get(m)->name, st2);
+        if (rr_creep_check(&k, &o, NULL) == RR_OK && rr_creep_blame(&k, &g, st2) != RR_PF_PATCH)
+            fz_fail("rr_creep_blame: %s's RR_ERR_PATCH not the patch's", rr_method_get(m)->name);
+    }
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -196,9 +283,22 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (n == 0) {
         /* a grid outside the sizes this target allocates: only refusal is allowed */
         double w1[4];
+        rr_contact_problem g;
+        int field = -99;
         st = rr_exact_solve(&pb, w1, 4, &r, NULL);
         fz_status("rr_exact_solve", st);
         fz_error("rr_exact_solve", st, 1, "the grid is out of range or too large a workspace");
+        /* as a contact problem: a grid out of range refused before h is read */
+        memset(&g, 0, sizeof g);
+        g.patch = RR_PATCH_GRID;
+        g.grid = pb.grid;
+        g.h = w1;
+        if ((pb.grid.mx < 1 || pb.grid.my < 1 || pb.grid.mx > RR_CONTACT_MAX_GRID
+             || pb.grid.my > RR_CONTACT_MAX_GRID)
+            && ((st = rr_contact_problem_check(&g, &field)) != RR_ERR_GRID
+                || !fz_member_at_fault(&g, field, st)))
+            fz_fail("rr_contact_problem_check: a %d x %d grid gave status %d, member %d",
+                    g.grid.mx, g.grid.my, st, field);
         free(h);
         return 0;
     }
@@ -249,6 +349,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     if (want_field)
         check_fields(&pb, st, &r, &f);
+    if (pb.h && wmode > 1)
+        grid_problem(&pb, st, &r);
     if (st >= 0) {
         /* again, with the workspace as the first solve left it */
         st2 = rr_exact_solve(&pb, work, wgive, &r2, NULL);

@@ -15,7 +15,7 @@
 
 #define MAX_NODES 6
 
-static void decode_case(fz_in *in, rr_contact_case *c, double nu)
+static void decode_case(fz_in *in, rr_contact_problem *c, double nu)
 {
     c->a = fz_log(in, 1e-4, 2e-2);
     c->b = fz_log(in, 1e-4, 2e-2);
@@ -42,14 +42,14 @@ static int table_invalid(const rr_exact_table *t)
     return nodes > (1L << 28);
 }
 
-static void check(const rr_exact_table *t, const rr_contact_case *c, const rr_friction *fr,
-                  int builtin)
+static void check(const rr_exact_table *t, const rr_contact_problem *c, int builtin)
 {
+    const rr_friction *fr = &c->friction;
     const char *fn = "rr_exact_table_forces";
     rr_forces f, r;
     int st;
     memset(&f, 0x55, sizeof f);
-    st = rr_exact_table_forces(t, c, fr, &f);
+    st = rr_exact_table_forces(t, c, &f);
     fz_status(fn, st);
     if (table_invalid(t) && st != RR_ERR_PARAM)
         fz_fail("%s: a bad table gave status %d, not RR_ERR_PARAM", fn, st);
@@ -72,11 +72,11 @@ static void check(const rr_exact_table *t, const rr_contact_case *c, const rr_fr
     if (!(hypot(f.fx, f.fy) <= fr->mu0 * c->N * (1.0 + 1e-12)))
         fz_fail("%s: |F| = %.17g above mu0 N = %.17g", fn, hypot(f.fx, f.fy), fr->mu0 * c->N);
     if (builtin) {
-        rr_contact_case m = *c;
+        rr_contact_problem m = *c;
         m.cx = -m.cx;
         m.cy = -m.cy;
         m.cphi = -m.cphi;
-        if (rr_exact_table_forces(t, &m, fr, &r) != st || r.fx != -f.fx || r.fy != -f.fy
+        if (rr_exact_table_forces(t, &m, &r) != st || r.fx != -f.fx || r.fy != -f.fy
             || r.mz != -f.mz)
             fz_fail("%s: reversed creepages do not reverse the forces: (%.17g, %.17g, %.17g) "
                     "against (%.17g, %.17g, %.17g)", fn, f.fx, f.fy, f.mz, r.fx, r.fy, r.mz);
@@ -92,7 +92,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fz_in in = fz_start(data, size);
     const int builtin = fz_choice(&in, 4) != 0;
     rr_exact_table t = rr_exact_table_builtin;
-    rr_contact_case c;
+    rr_contact_problem c = {0};     /* an ellipse problem */
     rr_friction fr;
     int d, i, n = 1;
 
@@ -124,12 +124,25 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fz_status("rr_exact_table_check", rr_exact_table_check(&t));
     if (rr_exact_table_check(NULL) != RR_ERR_NULL)
         fz_fail("rr_exact_table_check(NULL) is not RR_ERR_NULL");
-    check(&t, &c, &fr, builtin);
+    c.friction = fr;
+    check(&t, &c, builtin);
     {
         rr_forces f;
-        if (rr_exact_table_forces(&t, &c, &fr, NULL) != RR_ERR_NULL
-            || rr_exact_table_forces(NULL, &c, &fr, &f) != RR_ERR_NULL || !isnan(f.fx))
+        if (rr_exact_table_forces(&t, &c, NULL) != RR_ERR_NULL
+            || rr_exact_table_forces(NULL, &c, &f) != RR_ERR_NULL || !isnan(f.fx)
+            || rr_exact_table_forces(&rr_exact_table_builtin, NULL, &f) != RR_ERR_NULL
+            || !isnan(f.fx))
             fz_fail("rr_exact_table_forces: NULL arguments not refused with NaN forces");
+    }
+    {
+        /* a grid problem: not the table's */
+        rr_contact_problem g = c;
+        rr_forces f;
+        g.patch = RR_PATCH_GRID;
+        if (rr_exact_table_forces(rr_exact_table_check(&t) == RR_OK ? &t
+                                  : &rr_exact_table_builtin, &g, &f) != RR_ERR_PATCH
+            || !isnan(f.fx))
+            fz_fail("rr_exact_table_forces: a grid problem not refused (RR_ERR_PATCH)");
     }
     return 0;
 }

@@ -630,7 +630,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if ((st < 0) != invalid)
         fz_fail("rr_rig_check: status %d for parameters that are %s", st,
                 invalid ? "invalid" : "valid");
-    st = rr_rig_init(p, roller_speed, rig);
+    st = rr_rig_init(p, roller_speed, NULL, 0, rig);
     fz_status("rr_rig_init", st);
     fz_error("rr_rig_init", st, invalid || !isfinite(roller_speed), "an argument is invalid");
     if (st != rig->status)

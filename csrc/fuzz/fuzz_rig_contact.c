@@ -97,7 +97,7 @@ static int model_invalid(const rr_rig_contact_model *m)
         || !isfinite(m->G) || !isfinite(m->nu) || !isfinite(m->vmin) || !(m->R0 > 0.0)
         || !(m->estar > 0.0) || !(m->G > 0.0) || !(m->nu >= 0.0 && m->nu <= 0.5)
         || !(m->vmin > 0.0) || rr_friction_check(f) != RR_OK || rr_creep_opts_check(o) != RR_OK
-        || rr_creep_workspace_len(o) > 0;   /* the exact solver: not a time-step method */
+        || rr_creep_iterative(o);   /* the exact solver: not a time-step method */
 }
 
 static int state_nonfinite(const rr_rig_state *s)
@@ -290,10 +290,22 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if ((st < 0) != model_invalid(&m))
         fz_fail("rr_rig_contact_check: status %d for a model that is %s", st,
                 model_invalid(&m) ? "invalid" : "valid");
-    st2 = rr_rig_contact_bind(&checked, &m);
-    fz_status("rr_rig_contact_bind", st2);
-    if (st2 != st)
-        fz_fail("rr_rig_contact_bind: status %d, rr_rig_contact_check %d", st2, st);
+    {
+        /* the method's workspace, as long as it asks (and none for a
+         * method that needs none): bound; a double short: refused */
+        static double work[4096];      /* more than any time-loop method asks today */
+        const size_t wl = rr_rig_contact_workspace_len(&m);
+        if (st < 0 ? wl != 0 : wl != rr_creep_workspace_len(&m.creep, NULL))
+            fz_fail("rr_rig_contact_workspace_len: %zu for a model of status %d", wl, st);
+        if (wl > RR_COUNTOF(work))
+            fz_fail("rr_rig_contact_workspace_len: %zu doubles, more than this target has", wl);
+        if (wl > 0 && rr_rig_contact_bind(&checked, &m, work, wl - 1) != RR_ERR_WORKSPACE)
+            fz_fail("rr_rig_contact_bind: a workspace one double short not refused");
+        st2 = rr_rig_contact_bind(&checked, &m, wl > 0 ? work : NULL, wl);
+        fz_status("rr_rig_contact_bind", st2);
+        if (st2 != st)
+            fz_fail("rr_rig_contact_bind: status %d, rr_rig_contact_check %d", st2, st);
+    }
 
     memset(w, 0x55, sizeof w);
     memset(&pose, 0x55, sizeof pose);

@@ -104,7 +104,12 @@ int rr_rig_method_check(const rr_creep_opts *o)
         return RR_ERR_NULL;
     if ((st = rr_creep_opts_check(o)) != RR_OK)
         return st;
-    return rr_creep_workspace_len(o) == 0 && rr_creep_saturates(o) ? RR_OK : RR_ERR_METHOD;
+    return !rr_creep_iterative(o) && rr_creep_saturates(o) ? RR_OK : RR_ERR_METHOD;
+}
+
+size_t rr_rig_workspace_len(const rr_rig_params *p)
+{
+    return p ? rr_rig_contact_workspace_len(&p->contact) : 0;
 }
 
 void rr_rig_speed_loops(const rr_rig_params *p, rr_speed_loop loops[2])
@@ -210,7 +215,8 @@ int rr_rig_record(rr_rig *rig, double *rec)
     return status;
 }
 
-int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig)
+int rr_rig_init(const rr_rig_params *p, double roller_speed, double *work, size_t work_len,
+                rr_rig *rig)
 {
     rr_wheelset_pose tp;
     rr_contact_point cl, cr;
@@ -221,6 +227,8 @@ int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig)
         return RR_ERR_NULL;
     memset(rig, 0, sizeof *rig);
     rig->p = p;
+    rig->work = work;
+    rig->work_len = work ? work_len : 0;
     rig->status = RR_ERR_PARAM;
     if ((st = rr_rig_check(p)) != RR_OK)
         return rig->status = st;

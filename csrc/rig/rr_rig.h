@@ -256,6 +256,10 @@ typedef struct {
     /* the contact model p->contact, checked (and copied) at rr_rig_init
      * and rr_rig_rebind, not at each evaluation */
     rr_rig_contact_checked contact;
+    /* the caller's workspace for the creep method (rr_rig_workspace_len),
+     * given at rr_rig_init, kept by rr_rig_rebind */
+    double *work;
+    size_t work_len;
     double t;                      /* time [s] */
     double y[RR_RIG_NSTATE];       /* plant state */
     double z_ref;                  /* axle height at which the springs carry the preload [m] */
@@ -299,14 +303,25 @@ int rr_rig_check(const rr_rig_params *p);
 
 /*
  * rr_rig_method_check - RR_OK if the rig steps with the creep-force method
- * of o: one that needs no workspace (a time-loop method: not the exact
- * theory solved at each step, milliseconds a contact) and keeps |F| <= mu N
- * (the registry's saturates: not the linear theory, whose force grows past
- * mu N, an adhesion the rig would report as measured); else RR_ERR_METHOD,
- * or RR_ERR_NULL.  The one rule: rr_rig_check, the FMU's list of methods
- * and rollerrig.METHODS[m].in_rig follow it.
+ * of o: a time-loop method, whose case has bounded work (not one solved
+ * iteratively to a tolerance, the registry's iterative: the exact theory,
+ * milliseconds to seconds a contact, its work not known before the step)
+ * and one that keeps |F| <= mu N (the registry's saturates: not the linear
+ * theory, whose force grows past mu N, an adhesion the rig would report as
+ * measured); else RR_ERR_METHOD, or RR_ERR_NULL.  A method's workspace is
+ * no reason: the rig gives it one (rr_rig_workspace_len).  The one rule:
+ * rr_rig_check, the FMU's list of methods and rollerrig.METHODS[m].in_rig
+ * follow it.
  */
 int rr_rig_method_check(const rr_creep_opts *o);
+
+/*
+ * rr_rig_workspace_len - the doubles of workspace the rig of parameters p
+ * needs for its creep method (rr_rig_contact_workspace_len of p->contact:
+ * 0 for every method the rig steps with today), for rr_rig_init; 0 for
+ * invalid parameters or NULL.
+ */
+size_t rr_rig_workspace_len(const rr_rig_params *p);
 
 /*
  * rr_rig_speed_loops - the drives' sampled speed loops of p at p->T
@@ -330,14 +345,20 @@ void rr_rig_speed_loops(const rr_rig_params *p, rr_speed_loop loops[2]);
  * gets a target.
  *   given:   p (kept by pointer: it must outlive the rig; its contact model
  *            is checked and copied here, the time step does not check it
- *            again: a change to it acts from rr_rig_rebind); roller_speed
+ *            again: a change to it acts from rr_rig_rebind); roller_speed;
+ *            work, work_len: the caller's workspace for the creep method,
+ *            at least rr_rig_workspace_len(p) doubles (NULL, 0 where that
+ *            is 0), kept by pointer (it must outlive the rig; one rig a
+ *            workspace): no step allocates
  *   returns: *rig
- *   status:  rr_rig_check; errors of the contact evaluation; RR_ERR_NULL.
+ *   status:  rr_rig_check; RR_ERR_WORKSPACE (work too short); errors of the
+ *            contact evaluation; RR_ERR_NULL.
  *   After a failed init every other rr_rig_ function returns its status (and
  *   NaN records); on a rig never initialised (zeroed memory) they return
  *   RR_ERR_NULL.  All of them return RR_ERR_NULL for a NULL argument.
  */
-int rr_rig_init(const rr_rig_params *p, double roller_speed, rr_rig *rig);
+int rr_rig_init(const rr_rig_params *p, double roller_speed, double *work, size_t work_len,
+                rr_rig *rig);
 
 /*
  * rr_rig_read - the sampling instant's measurement, for a controller of the
@@ -389,12 +410,15 @@ rr_friction rr_rig_friction_at(const rr_rig_params *p, double t, int side, doubl
  * creep method's options).  The rig takes p's pointer (p must outlive it),
  * its contact model (checked, a copy), the creep method's facts, the
  * integrator's settings and model and the Jacobian's constant part again,
- * and drops the contact evaluation it keeps; its state, controllers and
- * encoders go on as they are.
+ * and drops the contact evaluation it keeps; its state, controllers,
+ * encoders and workspace go on as they are (a byte copy keeps the
+ * original's workspace pointer: set rig->work, rig->work_len to the copy's
+ * own before the rebind).
  *   given:   rig, initialised; p
- *   status:  0; rr_rig_check's; RR_ERR_RANGE (the Jacobian's constant part
- *            overflows); RR_ERR_NULL; the status of a rig that never
- *            started.  On error the rig is unchanged.
+ *   status:  0; rr_rig_check's; RR_ERR_WORKSPACE (p's method needs more
+ *            workspace than the rig has); RR_ERR_RANGE (the Jacobian's
+ *            constant part overflows); RR_ERR_NULL; the status of a rig
+ *            that never started.  On error the rig is unchanged.
  */
 int rr_rig_rebind(rr_rig *rig, const rr_rig_params *p);
 
@@ -468,8 +492,9 @@ int rr_rig_jac(rr_rig *rig, double t, const double *y, double *J);
  * (e.g. zeroed memory).  rr_rig_schedule_law: the adhesion schedule's law
  * at time t (p->contact.friction without points).  rr_rig_bind: what the
  * rig takes from its (checked) parameters besides its state: their pointer,
- * the contact model checked once (a copy, rr_rig_contact_bind; its status
- * where that refuses it, nothing changed), the creep method's facts, the
+ * the contact model checked once (a copy, rr_rig_contact_bind with the
+ * rig's workspace; its status where that refuses it, nothing changed), the
+ * creep method's facts, the
  * integrator's settings and model, the
  * Jacobian's constant part; the contact evaluation it keeps is dropped;
  * RR_ERR_RANGE (nothing changed) where the constant part overflows (a

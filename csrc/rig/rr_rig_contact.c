@@ -24,8 +24,9 @@ static int model_check(const rr_rig_contact_model *m, rr_creep_checked *creep)
         return st;
     if ((st = rr_creep_check(creep, &m->creep, NULL)) != RR_OK)
         return st;
-    /* a method with a workspace (the exact solver) is not for a time step */
-    return creep->work_len > 0 ? RR_ERR_METHOD : RR_OK;
+    /* a case solved iteratively to a tolerance (the exact theory) has no
+     * bound on its work a time step could plan on */
+    return creep->d->iterative ? RR_ERR_METHOD : RR_OK;
 }
 
 int rr_rig_contact_check(const rr_rig_contact_model *m)
@@ -34,17 +35,29 @@ int rr_rig_contact_check(const rr_rig_contact_model *m)
     return model_check(m, &creep);
 }
 
-int rr_rig_contact_bind(rr_rig_contact_checked *k, const rr_rig_contact_model *m)
+size_t rr_rig_contact_workspace_len(const rr_rig_contact_model *m)
+{
+    rr_creep_checked creep;
+    return model_check(m, &creep) == RR_OK ? creep.work_len : 0;
+}
+
+int rr_rig_contact_bind(rr_rig_contact_checked *k, const rr_rig_contact_model *m, double *work,
+                        size_t work_len)
 {
     int st;
     if (!k)
         return RR_ERR_NULL;
     k->ready = 0;
-    if ((st = model_check(m, &k->creep)) != RR_OK) {
+    if ((st = model_check(m, &k->creep)) == RR_OK && k->creep.work_len > 0
+        && (!work || work_len < k->creep.work_len))
+        st = RR_ERR_WORKSPACE;
+    if (st != RR_OK) {
         k->creep.ready = 0;
         return st;
     }
     k->m = *m;
+    k->work = work;
+    k->work_len = work_len;
     k->ready = RR_RIG_CONTACT_READY;
     return RR_OK;
 }
@@ -259,14 +272,15 @@ int rr_rig_kinematics_checked(const rr_rig_contact_checked *k, const rr_rig_stat
 }
 
 /* rr_rig_contact_loads with the model's creep method checked into creep
- * (cst its status), m, N, pose and w not NULL */
+ * (cst its status) and its workspace, m, N, pose and w not NULL */
 static int loads(const rr_rig_contact_model *m, const rr_creep_checked *creep, int cst,
-                 const double N[2], const rr_rig_pose *pose, rr_wheel_contact w[2])
+                 double *work, size_t work_len, const double N[2], const rr_rig_pose *pose,
+                 rr_wheel_contact w[2])
 {
     int k;
     for (k = 0; k < 2; k++) {
         rr_wheel_contact *c = &w[k];
-        rr_contact_case cc;
+        rr_contact_problem cc;
         double arm[3];
         int j, sk;
 
@@ -308,8 +322,9 @@ static int loads(const rr_rig_contact_model *m, const rr_creep_checked *creep, i
         cc.cy = c->creep.cy;
         cc.cphi = c->creep.cphi;
         cc.speed = c->creep.V;
-        sk = cst < 0 ? cst : rr_creep_forces_checked(creep, &cc, &c->friction, NULL, 0, NULL,
-                                                     &c->f);
+        cc.friction = c->friction;
+        cc.patch = RR_PATCH_ELLIPSE;
+        sk = cst < 0 ? cst : rr_creep_forces_checked(creep, &cc, work, work_len, NULL, &c->f);
         if (sk < 0) {
             wheel_nan(c, sk);
             continue;
@@ -345,7 +360,7 @@ int rr_rig_contact_loads(const rr_rig_contact_model *m, const double N[2], const
         return RR_ERR_NULL;
     if (!m || !N || !pose)
         return loads_null(w);
-    return loads(m, &creep, rr_creep_check(&creep, &m->creep, NULL), N, pose, w);
+    return loads(m, &creep, rr_creep_check(&creep, &m->creep, NULL), NULL, 0, N, pose, w);
 }
 
 int rr_rig_contact_loads_checked(const rr_rig_contact_checked *k, const double N[2],
@@ -355,7 +370,7 @@ int rr_rig_contact_loads_checked(const rr_rig_contact_checked *k, const double N
         return RR_ERR_NULL;
     if (!bound(k) || !N || !pose)
         return loads_null(w);
-    return loads(&k->m, &k->creep, RR_OK, N, pose, w);
+    return loads(&k->m, &k->creep, RR_OK, k->work, k->work_len, N, pose, w);
 }
 
 /* the kinematics' status st: nothing valid (no pose), or go on to the loads */

@@ -97,34 +97,52 @@ typedef struct {
  * rr_rig_contact_check - 0 if the model is usable, else RR_ERR_WORKSPACE
  * (no table), RR_ERR_NONFINITE, RR_ERR_GEOMETRY (R0 <= 0), RR_ERR_MATERIAL
  * (E*, G not positive, nu outside [0, 0.5]), RR_ERR_FRICTION, RR_ERR_SPEED
- * (vmin <= 0), rr_creep_opts_check, RR_ERR_METHOD (a method that needs a
- * workspace, the exact solver: not a time-step method), RR_ERR_NULL.
+ * (vmin <= 0), rr_creep_opts_check, RR_ERR_METHOD (a method that solves
+ * each case iteratively to a tolerance, the exact theory: milliseconds to
+ * seconds a case, its work not known before a step: not a time-step
+ * method; rr_creep_iterative), RR_ERR_NULL.
  */
 int rr_rig_contact_check(const rr_rig_contact_model *m);
+
+/*
+ * rr_rig_contact_workspace_len - the doubles of workspace the model's
+ * creep method needs for a wheel's problem (the ellipse; the wheels take
+ * turns in it), 0 for a method that needs none or an invalid model
+ * (rr_creep_workspace_len).
+ */
+size_t rr_rig_contact_workspace_len(const rr_rig_contact_model *m);
 
 /*
  * rr_rig_contact_checked - a contact model checked once, for many
  * evaluations (the rig's time step, a batch of states): rr_rig_contact_check
  * at rr_rig_contact_bind, then rr_rig_kinematics_checked,
  * rr_rig_contact_loads_checked and rr_rig_contact_eval_checked check only
- * what changes per evaluation (the state, the loads, each wheel's case and
- * friction law).  It keeps a copy of the model (whose table must outlive
- * it): a changed model takes effect at the next rr_rig_contact_bind.
+ * what changes per evaluation (the state, the loads, each wheel's problem
+ * and friction law).  It keeps a copy of the model (whose table must
+ * outlive it) and the caller's workspace for the creep method (which must
+ * outlive it too): a changed model takes effect at the next
+ * rr_rig_contact_bind.
  */
 typedef struct {
     rr_rig_contact_model m;          /* the model, a checked copy */
     rr_creep_checked creep;          /* its creep method, checked */
+    double *work;                    /* the caller's workspace for it, or NULL */
+    size_t work_len;                 /* its doubles */
     unsigned ready;                  /* RR_RIG_CONTACT_READY once bound */
 } rr_rig_contact_checked;
 
 #define RR_RIG_CONTACT_READY 0x52524343u
 
 /*
- * rr_rig_contact_bind - m checked (rr_rig_contact_check) and copied to *k.
- *   status:  RR_OK; rr_rig_contact_check's, or RR_ERR_NULL, with *k not
- *            ready (the *_checked functions refuse it with RR_ERR_NULL).
+ * rr_rig_contact_bind - m checked (rr_rig_contact_check) and copied to *k,
+ * with the caller's workspace work of work_len doubles for the creep method
+ * (NULL, 0 for a method that needs none: rr_rig_contact_workspace_len).
+ *   status:  RR_OK; rr_rig_contact_check's, RR_ERR_WORKSPACE (work shorter
+ *            than the method needs), or RR_ERR_NULL, with *k not ready (the
+ *            *_checked functions refuse it with RR_ERR_NULL).
  */
-int rr_rig_contact_bind(rr_rig_contact_checked *k, const rr_rig_contact_model *m);
+int rr_rig_contact_bind(rr_rig_contact_checked *k, const rr_rig_contact_model *m, double *work,
+                        size_t work_len);
 
 /*
  * rr_rig_kinematics - pose, contact points and frames, creepages (no loads).
@@ -145,13 +163,15 @@ int rr_rig_kinematics(const rr_rig_contact_model *m, const rr_rig_state *s, rr_r
  *   given:   m; s; N[0], N[1] the normal loads of the left and right
  *            wheel [N]
  *   returns: *pose, w[0..1] complete: Hertz ellipse from the table's
- *            curvature sums, creep forces by m->creep's method, and the
- *            force and moment on the wheelset,
+ *            curvature sums, creep forces of that ellipse problem by
+ *            m->creep's method (without workspace: a method that needs one
+ *            is RR_ERR_WORKSPACE here, rr_rig_contact_eval_checked gives it
+ *            the bound one), and the force and moment on the wheelset,
  *            force = fx t1 + fy t2 + N n, moment = (p - c) x force + mz n.
  *   status:  the worse of the two wheels' (errors < 0 before warnings);
  *            each wheel's own in w[k].status, so one bad wheel leaves the
  *            other's results valid.  rr_rig_kinematics, rr_hertz
- *            (RR_ERR_LOAD for N <= 0), rr_creep_forces, RR_ERR_RANGE (a load
+ *            (RR_ERR_LOAD for N <= 0), rr_creep_forces_work, RR_ERR_RANGE (a load
  *            so extreme that the ellipse or a force overflows).
  */
 int rr_rig_contact(const rr_rig_contact_model *m, const rr_rig_state *s, const double N[2],

@@ -23,7 +23,8 @@
  *     rr_rig_geometry_from(&c, &g);
  *     rr_rig_table_build(&g, data, ..., work, ..., &t, NULL);   (rr_tables.h)
  *     rr_rig_params_from(&c, &t, &p);            (table, calibrated radii)
- *     rr_rig_init(&p, c.roller_speed / c.roller_radius, &rig);
+ *     rr_rig_init(&p, c.roller_speed / c.roller_radius, work, rr_rig_workspace_len(&p),
+ *                 &rig);                         (work NULL where that is 0)
  *
  * (examples/rig_paper.c runs the paper's scenario so, bitwise as
  * rollerrig.simulate()), or rr_rig_params_default(&p) and then

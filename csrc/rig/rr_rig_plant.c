@@ -488,7 +488,7 @@ int rr_rig_bind(rr_rig *rig, const rr_rig_params *p)
     jac_const(p, J0);
     if (!rr_all_finite(J0, NS * NS))
         return RR_ERR_RANGE;
-    if ((st = rr_rig_contact_bind(&contact, &p->contact)) != RR_OK)
+    if ((st = rr_rig_contact_bind(&contact, &p->contact, rig->work, rig->work_len)) != RR_OK)
         return st;                  /* not after rr_rig_check; nothing changed */
     memcpy(rig->J0, J0, sizeof J0);
     rig->contact = contact;

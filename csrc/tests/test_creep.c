@@ -20,6 +20,15 @@
 #include "contact/rr_fastrip.h"
 #include "rr_test.h"
 
+/* problem c with the friction law fr (the tests vary the two apart): c's
+ * law set to *fr, c returned (NULL stays NULL) */
+static const rr_contact_problem *with_law(rr_contact_problem *c, const rr_friction *fr)
+{
+    if (c && fr)
+        c->friction = *fr;
+    return c;
+}
+
 /* ---- helpers ------------------------------------------------------------- */
 
 #define MAXEL (80 * 80)   /* largest grid whose traction field is requested */
@@ -28,9 +37,9 @@ static double fld_x[MAXEL], fld_y[MAXEL], fld_pn[MAXEL], fld_px[MAXEL], fld_py[M
 static signed char fld_slip[MAXEL];
 
 /* A locomotive-like wheel: a/b = 1.5, N = 80 kN, steel. */
-static rr_contact_case base_case(void)
+static rr_contact_problem base_case(void)
 {
-    rr_contact_case c;
+    rr_contact_problem c = {0};    /* an ellipse problem */
     c.a = 6e-3;
     c.b = 4e-3;
     c.N = 8e4;
@@ -38,6 +47,9 @@ static rr_contact_case base_case(void)
     c.nu = 0.28;
     c.cx = c.cy = c.cphi = 0.0;
     c.speed = 10.0;
+    c.friction.mu0 = 0.3;
+    c.friction.A = 1.0;
+    c.friction.B = 0.0;
     return c;
 }
 
@@ -75,7 +87,7 @@ static int forces_nan(const rr_forces *f)
     return isnan(f->fx) && isnan(f->fy) && isnan(f->mz);
 }
 
-static rr_kalker_coeffs coeffs(const rr_contact_case *c)
+static rr_kalker_coeffs coeffs(const rr_contact_problem *c)
 {
     rr_kalker_coeffs k;
     rr_kalker(c->a / c->b, c->nu, &k);
@@ -107,7 +119,7 @@ static const char *const bound_name[2] = {"parabolic", "elliptic"};
 
 static void test_linear(void)
 {
-    rr_contact_case c = base_case();
+    rr_contact_problem c = base_case();
     rr_kalker_coeffs k = coeffs(&c);
     rr_forces f, fd, f1, f2, f3, fn;
     rr_creep_opts o = opts(RR_METHOD_LINEAR, 30, 30, RR_BOUND_PARABOLIC, RR_GRID_RECT);
@@ -134,7 +146,7 @@ static void test_linear(void)
         };
         unsigned i;
         for (i = 0; i < sizeof node / sizeof node[0]; i++) {
-            rr_contact_case s = c;
+            rr_contact_problem s = c;
             rr_forces fs;
             double sab = node[i].a * node[i].b;
             s.a = node[i].a;
@@ -150,13 +162,13 @@ static void test_linear(void)
     }
 
     /* the dispatcher gives the same, and ignores friction */
-    st = rr_creep_forces(&c, &fr, &o, &fd);
+    st = rr_creep_forces(with_law(&c, &fr), &o, &fd);
     CHECK_STATUS(st, RR_OK, "dispatcher, linear: status");
     CHECK(fd.fx == f.fx && fd.fy == f.fy && fd.mz == f.mz, "dispatcher = rr_linear");
 
     /* superposition of the three creepages */
     {
-        rr_contact_case c1 = c, c2 = c, c3c = c;
+        rr_contact_problem c1 = c, c2 = c, c3c = c;
         c1.cy = c1.cphi = 0.0;
         c2.cx = c2.cphi = 0.0;
         c3c.cx = c3c.cy = 0.0;
@@ -196,7 +208,7 @@ static void test_linear(void)
         };
         unsigned i;
         for (i = 0; i < sizeof t / sizeof t[0]; i++) {
-            rr_contact_case b = base_case();
+            rr_contact_problem b = base_case();
             double *fieldp[8];
             fieldp[0] = &b.a;
             fieldp[1] = &b.b;
@@ -207,7 +219,7 @@ static void test_linear(void)
             fieldp[6] = &b.cphi;
             fieldp[7] = &b.speed;
             *fieldp[t[i].field] = t[i].value;
-            CHECK_STATUS(rr_contact_check(&b), t[i].status, t[i].what);
+            CHECK_STATUS(rr_contact_problem_check(&b, NULL), t[i].status, t[i].what);
             st = rr_linear(&b, &f);
             CHECK_STATUS(st, t[i].status, t[i].what);
             CHECK(forces_nan(&f), t[i].what);
@@ -219,7 +231,7 @@ static void test_linear(void)
 
 static void test_polach(void)
 {
-    rr_contact_case c = base_case();
+    rr_contact_problem c = base_case();
     rr_kalker_coeffs k = coeffs(&c);
     rr_friction fr = coulomb(0.3);
     rr_forces f, fl;
@@ -228,7 +240,7 @@ static void test_polach(void)
 
     /* small creepage: Kalker's linear theory (kA = kS = 1) */
     c.cx = 1e-9;
-    st = rr_polach(&c, &fr, 1.0, 1.0, &f);
+    st = rr_polach(with_law(&c, &fr), 1.0, 1.0, &f);
     CHECK_STATUS(st, RR_OK, "Polach status");
     rr_linear(&c, &fl);
     /* Polach's series deviates by O(eps^2) ~ 1e-12 at creepage 1e-9: 1e-6 */
@@ -238,7 +250,7 @@ static void test_polach(void)
 
     c.cx = 0.0;
     c.cy = -1e-9;
-    rr_polach(&c, &fr, 1.0, 1.0, &f);
+    rr_polach(with_law(&c, &fr), 1.0, 1.0, &f);
     rr_linear(&c, &fl);
     /* as above */
     CHECK_CLOSE(f.fy, fl.fy, 0.0, 1e-6, "Polach small cy = linear fy");
@@ -248,25 +260,25 @@ static void test_polach(void)
     /* spin only: fy = -G c^3 C23 cphi */
     c.cy = 0.0;
     c.cphi = 1e-7;
-    rr_polach(&c, &fr, 1.0, 1.0, &f);
+    rr_polach(with_law(&c, &fr), 1.0, 1.0, &f);
     /* K_M = -(2/3) eps_M + O(eps_M^3): eps_M ~ 1e-9 here: 1e-6 */
     CHECK_CLOSE(f.fy, -c.G * c3 * k.c23 * c.cphi, 0.0, 1e-6, "Polach spin only: -G c^3 C23 cphi");
     CHECK(f.fx == 0.0 && f.mz == 0.0, "Polach spin only: fx = mz = 0");
     c.cphi = -1e-7;
-    rr_polach(&c, &fr, 1.0, 1.0, &f);
+    rr_polach(with_law(&c, &fr), 1.0, 1.0, &f);
     CHECK_CLOSE(f.fy, -c.G * c3 * k.c23 * c.cphi, 0.0, 1e-6, "Polach negative spin only");
 
     /* reduction factors: small-creepage slope times (kA + kS)/2 */
     c.cphi = 0.0;
     c.cx = 1e-9;
     c.cy = 0.0;
-    rr_polach(&c, &fr, 0.8, 0.3, &f);
+    rr_polach(with_law(&c, &fr), 0.8, 0.3, &f);
     rr_linear(&c, &fl);
     /* as above */
     CHECK_CLOSE(f.fx, 0.55 * fl.fx, 0.0, 1e-6, "Polach kA = 0.8, kS = 0.3: fx = 0.55 linear");
     c.cx = 0.0;
     c.cy = 1e-9;
-    rr_polach(&c, &fr, 0.8, 0.3, &f);
+    rr_polach(with_law(&c, &fr), 0.8, 0.3, &f);
     rr_linear(&c, &fl);
     CHECK_CLOSE(f.fy, 0.55 * fl.fy, 0.0, 1e-6, "Polach kA = 0.8, kS = 0.3: fy = 0.55 linear");
 
@@ -275,7 +287,7 @@ static void test_polach(void)
      * linear force itself points elsewhere when C11 != C22 */
     c.cx = 1e-9;
     c.cy = 2e-9;
-    rr_polach(&c, &fr, 1.0, 1.0, &f);
+    rr_polach(with_law(&c, &fr), 1.0, 1.0, &f);
     rr_linear(&c, &fl);
     /* as above */
     CHECK_CLOSE(hypot(f.fx, f.fy), hypot(fl.fx, fl.fy), 0.0, 1e-6,
@@ -285,7 +297,7 @@ static void test_polach(void)
 
     /* zero creepage: zero force */
     c.cx = c.cy = c.cphi = 0.0;
-    st = rr_polach(&c, &fr, 1.0, 1.0, &f);
+    st = rr_polach(with_law(&c, &fr), 1.0, 1.0, &f);
     CHECK(st == RR_OK && f.fx == 0.0 && f.fy == 0.0 && f.mz == 0.0, "Polach zero creepage");
 
     /* saturation: |F| grows monotonically toward mu N, never beyond */
@@ -295,7 +307,7 @@ static void test_polach(void)
         for (cx = 1e-6; cx <= 1.0; cx *= 1.5) {
             c.cx = cx;
             c.cy = 0.3 * cx;
-            rr_polach(&c, &fr, 1.0, 1.0, &f);
+            rr_polach(with_law(&c, &fr), 1.0, 1.0, &f);
             F = hypot(f.fx, f.fy);
             if (!(F > prev))
                 mono = 0;
@@ -313,16 +325,16 @@ static void test_polach(void)
         rr_friction ff = falling(0.3, 0.4, 0.6);
         c.cx = 5.0;
         c.cy = 0.0;
-        st = rr_polach(&c, &ff, 1.0, 1.0, &f);
+        st = rr_polach(with_law(&c, &ff), 1.0, 1.0, &f);
         CHECK_STATUS(st, RR_OK, "Polach falling friction status");
         /* eps ~ 4000: the 1/eps^3 term is ~1e-11: 1e-9 */
         CHECK_CLOSE(-f.fx, rr_friction_mu(&ff, c.speed * c.cx) * c.N, 0.0, 1e-9,
                     "Polach falling friction: |F| -> mu(speed cx) N");
         c.speed = 0.0;
-        st = rr_polach(&c, &ff, 1.0, 1.0, &f);
+        st = rr_polach(with_law(&c, &ff), 1.0, 1.0, &f);
         CHECK_STATUS(st, RR_ERR_SPEED, "Polach falling friction at speed 0");
         CHECK(forces_nan(&f), "Polach falling friction at speed 0: NaN");
-        st = rr_polach(&c, &fr, 1.0, 1.0, &f);
+        st = rr_polach(with_law(&c, &fr), 1.0, 1.0, &f);
         CHECK_STATUS(st, RR_OK, "Polach Coulomb friction at speed 0 is fine");
         c.speed = 10.0;
     }
@@ -332,11 +344,11 @@ static void test_polach(void)
         c.cx = 2e-3;
         c.cy = -1e-3;
         c.cphi = 0.8;
-        rr_polach(&c, &fr, 0.9, 0.7, &f);
+        rr_polach(with_law(&c, &fr), 0.9, 0.7, &f);
         c.cx = -c.cx;
         c.cy = -c.cy;
         c.cphi = -c.cphi;
-        rr_polach(&c, &fr, 0.9, 0.7, &fn);
+        rr_polach(with_law(&c, &fr), 0.9, 0.7, &fn);
         CHECK(fn.fx == -f.fx && fn.fy == -f.fy && fn.mz == -f.mz, "Polach odd symmetry");
     }
     /* moderate spin, beyond the linear range: Polach (1999) transcribed here
@@ -370,7 +382,7 @@ static void test_polach(void)
             km = fabs(epsm) * (d * d * d / 3.0 - d * d / 2.0 + 1.0 / 6.0)
                - sqrt(pow(1.0 - d * d, 3.0)) / 3.0;
             fys = 9.0 / 16.0 * c.a * c.N * fr.mu0 * km * ks * c.cphi / sc;
-            st = rr_polach(&c, &fr, 1.0, 1.0, &f);
+            st = rr_polach(with_law(&c, &fr), 1.0, 1.0, &f);
             snprintf(buf, sizeof buf, "Polach (1999) with spin, case %d: fx", i);
             /* the same closed forms evaluated in another order: ~1e-15; K_M
              * cancels mildly near eps_M ~ 1: 1e-12 on the scale mu N */
@@ -385,20 +397,20 @@ static void test_polach(void)
     {
         c = base_case();
         c.cx = 1e-3;
-        st = rr_polach(&c, &fr, 2.0, 1.0, &f);
+        st = rr_polach(with_law(&c, &fr), 2.0, 1.0, &f);
         CHECK_STATUS(st, RR_ERR_PARAM, "Polach kA = 2");
         CHECK(forces_nan(&f), "Polach kA = 2: NaN");
-        st = rr_polach(&c, &fr, 0.0, 1.0, &f);
+        st = rr_polach(with_law(&c, &fr), 0.0, 1.0, &f);
         CHECK_STATUS(st, RR_ERR_PARAM, "Polach kA = 0");
-        st = rr_polach(&c, &fr, 1.0, 1.5, &f);
+        st = rr_polach(with_law(&c, &fr), 1.0, 1.5, &f);
         CHECK_STATUS(st, RR_ERR_PARAM, "Polach kS = 1.5");
-        st = rr_polach(&c, &fr, 0.5, 0.6, &f);
+        st = rr_polach(with_law(&c, &fr), 0.5, 0.6, &f);
         CHECK_STATUS(st, RR_ERR_PARAM, "Polach kS > kA (Polach 2005: kS <= kA)");
-        st = rr_polach(&c, &fr, NAN, 1.0, &f);
+        st = rr_polach(with_law(&c, &fr), NAN, 1.0, &f);
         CHECK_STATUS(st, RR_ERR_NONFINITE, "Polach kA NaN");
         CHECK(forces_nan(&f), "Polach kA NaN: NaN");
         fr.mu0 = 0.0;
-        st = rr_polach(&c, &fr, 1.0, 1.0, &f);
+        st = rr_polach(with_law(&c, &fr), 1.0, 1.0, &f);
         CHECK_STATUS(st, RR_ERR_FRICTION, "Polach mu0 = 0");
         CHECK(forces_nan(&f), "Polach mu0 = 0: NaN");
     }
@@ -416,7 +428,7 @@ static void test_fastsim_bound(void)
     char buf[200];
 
     for (n = 0; n < 150; n++) {
-        rr_contact_case c;
+        rr_contact_problem c = {0};    /* an ellipse problem */
         rr_friction fr;
         int im, bound, grid;
         c.a = lcg_range(2e-3, 1e-2);
@@ -439,7 +451,7 @@ static void test_fastsim_bound(void)
                     rr_forces f;
                     int st;
                     o.v[RR_FASTSIM_SLIP_SPEED] = n % 2 == 0 ? RR_SLIP_LOCAL : RR_SLIP_RIGID;
-                    st = rr_fastsim(&c, &fr, &o, &f, 0);
+                    st = rr_fastsim(with_law(&c, &fr), &o, &f, 0);
                     ncase++;
                     if (st != RR_OK) {
                         bad_status++;
@@ -484,7 +496,7 @@ static void test_full_sliding(void)
     for (grid = 0; grid < 2; grid++)
         for (bound = 0; bound < 2; bound++)
             for (d = 0; d < 3; d++) {
-                rr_contact_case c = base_case();
+                rr_contact_problem c = base_case();
                 rr_friction fr = coulomb(0.3);
                 rr_creep_opts o = opts(RR_METHOD_FASTSIM, 31, 24, bound, grid);
                 rr_fastsim_field fld = {0, 0, 0, 0, 0, 0, 0, 0};
@@ -493,7 +505,7 @@ static void test_full_sliding(void)
                 fld.pn = fld_pn;
                 c.cx = 2.0 * dirs[d][0];
                 c.cy = 2.0 * dirs[d][1];
-                st = rr_fastsim(&c, &fr, &o, &f, &fld);
+                st = rr_fastsim(with_law(&c, &fr), &o, &f, &fld);
                 snprintf(buf, sizeof buf, "full sliding %s %s dir (%g, %g)", grid_name[grid],
                          bound_name[bound], dirs[d][0], dirs[d][1]);
                 CHECK_STATUS(st, RR_OK, buf);
@@ -528,18 +540,18 @@ static void test_odd_symmetry(void)
             for (grid = 0; grid < 2; grid++)
                 for (sm = 0; sm < 2; sm++)
                     for (ic = 0; ic < 4; ic++) {
-                        rr_contact_case c = base_case();
+                        rr_contact_problem c = base_case();
                         rr_friction fr = sm == 0 ? coulomb(0.3) : falling(0.3, 0.4, 0.6);
                         rr_creep_opts o = opts(methods[im], 20, 16, bound, grid);
                         rr_forces f, g;
                         c.cx = cr[ic][0];
                         c.cy = cr[ic][1];
                         c.cphi = cr[ic][2];
-                        rr_fastsim(&c, &fr, &o, &f, 0);
+                        rr_fastsim(with_law(&c, &fr), &o, &f, 0);
                         c.cx = -c.cx;
                         c.cy = -c.cy;
                         c.cphi = -c.cphi;
-                        rr_fastsim(&c, &fr, &o, &g, 0);
+                        rr_fastsim(with_law(&c, &fr), &o, &g, 0);
                         n++;
                         /* negation is exact in IEEE arithmetic and every
                          * magnitude (|p*|, |(cx, cy)|) is sign-blind: exact */
@@ -558,7 +570,7 @@ static void test_odd_symmetry(void)
 static void test_slope(void)
 {
     static const int ns[] = {5, 10, 20, 40, 80, 160};
-    rr_contact_case c = base_case();
+    rr_contact_problem c = base_case();
     rr_kalker_coeffs k = coeffs(&c);
     rr_friction fr = coulomb(0.3);
     double lin = c.G * c.a * c.b * k.c11, linphi = c.G * pow(c.a * c.b, 1.5) * k.c23;
@@ -578,7 +590,7 @@ static void test_slope(void)
                 double err;
                 c.cx = 1e-9;
                 c.cy = c.cphi = 0.0;
-                rr_fastsim(&c, &fr, &o, &f, 0);
+                rr_fastsim(with_law(&c, &fr), &o, &f, 0);
                 err = f.fx / (-lin * c.cx) - 1.0;
                 errs[bound] = err;
                 snprintf(buf, sizeof buf, "slope %s %s n = %d: error %.3e > 0", grid_name[grid],
@@ -621,7 +633,7 @@ static void test_slope(void)
                 rr_forces f;
                 c.cx = 0.0;
                 c.cy = 1e-9;
-                rr_fastsim(&c, &fr, &o, &f, 0);
+                rr_fastsim(with_law(&c, &fr), &o, &f, 0);
                 snprintf(buf, sizeof buf, "slope in cy %s n = %d equals the slope in cx",
                          grid_name[grid], n);
                 /* same discretisation factor: rounding only */
@@ -634,7 +646,7 @@ static void test_slope(void)
                 rr_forces f;
                 double e;
                 c.cphi = 1e-7;
-                rr_fastsim(&c, &fr, &o, &f, 0);
+                rr_fastsim(with_law(&c, &fr), &o, &f, 0);
                 e = fabs(f.fy / (-linphi * c.cphi) - 1.0);
                 snprintf(buf, sizeof buf, "spin slope strips n = %d: error %.3e", n, e);
                 /* measured 3.1e-2 at n = 5 falling 4x per doubling: (1/n)^2 bounds it */
@@ -649,7 +661,7 @@ static void test_slope(void)
 /* Falling friction: the force peaks and falls toward A mu0 N. */
 static void test_falling(void)
 {
-    rr_contact_case c = base_case();
+    rr_contact_problem c = base_case();
     rr_friction ff = falling(0.3, 0.4, 0.6);
     double muN0 = ff.mu0 * c.N;
     int sm;
@@ -663,7 +675,7 @@ static void test_falling(void)
         for (i = 0; i < 24; i++, cx *= 2.0) {
             rr_forces f;
             c.cx = cx;
-            st = rr_fastsim(&c, &ff, &o, &f, 0);
+            st = rr_fastsim(with_law(&c, &ff), &o, &f, 0);
             if (st != RR_OK)
                 allok = 0;
             cxs[i] = cx;
@@ -731,7 +743,7 @@ static void test_falling(void)
                 c = base_case();
                 c.cx = mags[i] * dirs[d][0];
                 c.cy = mags[i] * dirs[d][1];
-                st = rr_fastsim(&c, &ff, &o, &f, 0);
+                st = rr_fastsim(with_law(&c, &ff), &o, &f, 0);
                 snprintf(buf, sizeof buf, "falling local, creepage (%g, %g): |F| ~ mu(speed |c|) N",
                          c.cx, c.cy);
                 CHECK_STATUS(st, RR_OK, buf);
@@ -754,14 +766,14 @@ static void test_falling(void)
             c = base_case();
             c.cx = 1e-3;
             c.speed = 0.0;
-            st = rr_fastsim(&c, &ff, &o, &f, 0);
+            st = rr_fastsim(with_law(&c, &ff), &o, &f, 0);
             snprintf(buf, sizeof buf, "falling friction at speed 0, method %d", methods[im]);
             CHECK_STATUS(st, RR_ERR_SPEED, buf);
             CHECK(forces_nan(&f), buf);
-            st = rr_creep_forces(&c, &ff, &o, &f);
+            st = rr_creep_forces(with_law(&c, &ff), &o, &f);
             CHECK_STATUS(st, RR_ERR_SPEED, buf);
             CHECK(forces_nan(&f), buf);
-            st = rr_fastsim(&c, &fr, &o, &f, 0);
+            st = rr_fastsim(with_law(&c, &fr), &o, &f, 0);
             snprintf(buf, sizeof buf, "Coulomb friction at speed 0, method %d", methods[im]);
             CHECK_STATUS(st, RR_OK, buf);
             CHECK(isfinite(f.fx) && f.fx < 0.0, buf);
@@ -772,7 +784,7 @@ static void test_falling(void)
 /* Bad options, friction and cases: documented status and NaN forces. */
 static void test_bad_options(void)
 {
-    rr_contact_case c = base_case();
+    rr_contact_problem c = base_case();
     rr_friction fr = coulomb(0.3);
     rr_forces f;
     rr_creep_opts o;
@@ -785,7 +797,7 @@ static void test_bad_options(void)
         stmt;                                                                \
         CHECK_STATUS(rr_creep_opts_check(&o), (want), what " (opts_check)"); \
         f.fx = f.fy = f.mz = 0.0;                                            \
-        st = rr_creep_forces(&c, &fr, &o, &f);                               \
+        st = rr_creep_forces(with_law(&c, &fr), &o, &f);                               \
         CHECK_STATUS(st, (want), what " (rr_creep_forces)");                 \
         CHECK(forces_nan(&f), what " (rr_creep_forces NaN)");                \
     } while (0)
@@ -828,26 +840,26 @@ static void test_bad_options(void)
     CHECK_STATUS(rr_creep_opts_check(&o), RR_OK, "Polach ignores the values past kA, kS");
     /* the largest grid is accepted (one strip keeps it cheap) */
     o = opts(RR_METHOD_FASTSIM, RR_FASTSIM_MAX_GRID, 1, RR_BOUND_PARABOLIC, RR_GRID_STRIPS);
-    st = rr_fastsim(&c, &fr, &o, &f, 0);
+    st = rr_fastsim(with_law(&c, &fr), &o, &f, 0);
     CHECK_STATUS(st, RR_OK, "nx = RR_FASTSIM_MAX_GRID accepted");
     CHECK(isfinite(f.fx), "nx = RR_FASTSIM_MAX_GRID: finite");
     /* the smallest grid: one element */
     o = opts(RR_METHOD_FASTSIM, 1, 1, RR_BOUND_PARABOLIC, RR_GRID_RECT);
-    st = rr_fastsim(&c, &fr, &o, &f, 0);
+    st = rr_fastsim(with_law(&c, &fr), &o, &f, 0);
     CHECK_STATUS(st, RR_OK, "1 x 1 grid accepted");
     /* one element, pressure N/area: full sliding or not, |F| <= mu N */
     CHECK(isfinite(f.fx) && fabs(f.fx) <= 0.3 * c.N * (1.0 + 1e-12), "1 x 1 grid: finite, bounded");
 
     /* rr_fastsim with a method that is not FASTSIM */
     o = opts(RR_METHOD_POLACH, 10, 10, RR_BOUND_PARABOLIC, RR_GRID_RECT);
-    st = rr_fastsim(&c, &fr, &o, &f, 0);
+    st = rr_fastsim(with_law(&c, &fr), &o, &f, 0);
     CHECK_STATUS(st, RR_ERR_METHOD, "rr_fastsim with method Polach");
     CHECK(forces_nan(&f), "rr_fastsim with method Polach: NaN");
     o.method = RR_METHOD_LINEAR;
-    st = rr_fastsim(&c, &fr, &o, &f, 0);
+    st = rr_fastsim(with_law(&c, &fr), &o, &f, 0);
     CHECK_STATUS(st, RR_ERR_METHOD, "rr_fastsim with method linear");
     o = opts(RR_METHOD_FASTSIM, 10, 10, 7, RR_GRID_RECT);
-    st = rr_fastsim(&c, &fr, &o, &f, 0);
+    st = rr_fastsim(with_law(&c, &fr), &o, &f, 0);
     CHECK_STATUS(st, RR_ERR_METHOD, "rr_fastsim with bound = 7");
     CHECK(forces_nan(&f), "rr_fastsim with bound = 7: NaN");
 
@@ -871,26 +883,26 @@ static void test_bad_options(void)
         for (i = 0; i < sizeof t / sizeof t[0]; i++) {
             rr_friction b = falling(t[i].mu0, t[i].A, t[i].B);
             CHECK_STATUS(rr_friction_check(&b), t[i].status, t[i].what);
-            st = rr_fastsim(&c, &b, &o, &f, 0);
+            st = rr_fastsim(with_law(&c, &b), &o, &f, 0);
             CHECK_STATUS(st, t[i].status, t[i].what);
             CHECK(forces_nan(&f), t[i].what);
         }
     }
     /* bad contact case through FASTSIM */
     {
-        rr_contact_case b = base_case();
+        rr_contact_problem b = base_case();
         o = opts(RR_METHOD_FASTSIM, 10, 10, RR_BOUND_PARABOLIC, RR_GRID_RECT);
         b.N = -1.0;
-        st = rr_fastsim(&b, &fr, &o, &f, 0);
+        st = rr_fastsim(with_law(&b, &fr), &o, &f, 0);
         CHECK_STATUS(st, RR_ERR_LOAD, "FASTSIM N < 0");
         CHECK(forces_nan(&f), "FASTSIM N < 0: NaN");
         b = base_case();
         b.cy = NAN;
-        st = rr_fastsim(&b, &fr, &o, &f, 0);
+        st = rr_fastsim(with_law(&b, &fr), &o, &f, 0);
         CHECK_STATUS(st, RR_ERR_NONFINITE, "FASTSIM cy NaN");
         b = base_case();
         b.b = 0.0;
-        st = rr_fastsim(&b, &fr, &o, &f, 0);
+        st = rr_fastsim(with_law(&b, &fr), &o, &f, 0);
         CHECK_STATUS(st, RR_ERR_GEOMETRY, "FASTSIM b = 0");
     }
 }
@@ -906,15 +918,15 @@ static void test_blended(void)
     for (grid = 0; grid < 2; grid++)
         for (sm = 0; sm < 2; sm++)
             for (i = 0; i < sizeof cxs / sizeof cxs[0]; i++) {
-                rr_contact_case c = base_case();
+                rr_contact_problem c = base_case();
                 rr_friction fr = sm == 0 ? coulomb(0.3) : falling(0.3, 0.4, 0.6);
                 rr_creep_opts op = opts(RR_METHOD_FASTSIM, 30, 30, RR_BOUND_PARABOLIC, grid);
                 rr_creep_opts ob = opts(RR_METHOD_FASTSIM_BLENDED, 30, 30, RR_BOUND_PARABOLIC, grid);
                 rr_forces fp, fb;
                 double scale = fr.mu0 * c.N;
                 c.cx = cxs[i] * (i % 2 ? -1.0 : 1.0);
-                rr_fastsim(&c, &fr, &op, &fp, 0);
-                rr_fastsim(&c, &fr, &ob, &fb, 0);
+                rr_fastsim(with_law(&c, &fr), &op, &fp, 0);
+                rr_fastsim(with_law(&c, &fr), &ob, &fb, 0);
                 snprintf(buf, sizeof buf, "blended = plain, pure cx = %g, %s, %s", c.cx,
                          grid_name[grid], sm ? "falling" : "Coulomb");
                 /* the single flexibility is cx^2/(cx^2/L1) = L1 up to an ulp, and L2,
@@ -935,7 +947,7 @@ static void test_blended(void)
         int ic, rule;
         for (rule = 0; rule < 2; rule++)
         for (ic = 0; ic < 3; ic++) {
-            rr_contact_case c = base_case(), c1, c2, c3;
+            rr_contact_problem c = base_case(), c1, c2, c3;
             rr_kalker_coeffs k = coeffs(&c);
             rr_friction fr = coulomb(0.3);
             rr_creep_opts op = opts(RR_METHOD_FASTSIM, 24, 20, RR_BOUND_PARABOLIC, RR_GRID_RECT);
@@ -975,11 +987,11 @@ static void test_blended(void)
             c1.cy = c1.cphi = 0.0;
             c2.cx = c2.cphi = 0.0;
             c3.cx = c3.cy = 0.0;
-            rr_fastsim(&c1, &fr, &op, &f1, 0);
-            rr_fastsim(&c2, &fr, &op, &f2, 0);
-            rr_fastsim(&c3, &fr, &op, &f3, 0);
+            rr_fastsim(with_law(&c1, &fr), &op, &f1, 0);
+            rr_fastsim(with_law(&c2, &fr), &op, &f2, 0);
+            rr_fastsim(with_law(&c3, &fr), &op, &f3, 0);
             fld.slip = fld_slip;
-            rr_fastsim(&c, &fr, &ob, &fb, &fld);
+            rr_fastsim(with_law(&c, &fr), &ob, &fb, &fld);
             snprintf(buf, sizeof buf, "blended flexibilities as documented, rule %d, case %d "
                      "(w = %.2e)", rule, ic, w);
             CHECK(fld.nslip == 0 && w > 1e-5, buf);
@@ -998,7 +1010,7 @@ static void test_blended(void)
     /* with lateral creepage and spin the blend does change the result at
      * large creepage (sanity: the option is not a no-op) */
     {
-        rr_contact_case c = base_case();
+        rr_contact_problem c = base_case();
         rr_friction fr = coulomb(0.3);
         rr_creep_opts op = opts(RR_METHOD_FASTSIM, 30, 30, RR_BOUND_PARABOLIC, RR_GRID_RECT);
         rr_creep_opts ob = opts(RR_METHOD_FASTSIM_BLENDED, 30, 30, RR_BOUND_PARABOLIC, RR_GRID_RECT);
@@ -1006,8 +1018,8 @@ static void test_blended(void)
         c.cx = 2e-3;
         c.cy = 2e-3;
         c.cphi = 1.0;
-        rr_fastsim(&c, &fr, &op, &fp, 0);
-        rr_fastsim(&c, &fr, &ob, &fb, 0);
+        rr_fastsim(with_law(&c, &fr), &op, &fp, 0);
+        rr_fastsim(with_law(&c, &fr), &ob, &fb, 0);
         CHECK(fb.fy != fp.fy, "blended differs from plain with cy and spin");
     }
 }
@@ -1025,7 +1037,7 @@ static void test_modified(void)
     for (grid = 0; grid < 2; grid++)
         for (sm = 0; sm < 3; sm++)
             for (ic = 0; ic < 5; ic++) {
-                rr_contact_case c = base_case();
+                rr_contact_problem c = base_case();
                 rr_friction fr = sm == 0 ? coulomb(0.3) : falling(0.3, 0.4, 0.6);
                 rr_creep_opts op = opts(RR_METHOD_FASTSIM, 25, 20, RR_BOUND_ELLIPTIC, grid);
                 rr_creep_opts om = opts(RR_METHOD_MODIFIED_FASTSIM, 25, 20, RR_BOUND_ELLIPTIC, grid);
@@ -1038,8 +1050,8 @@ static void test_modified(void)
                 c.cx = cr[ic][0];
                 c.cy = cr[ic][1];
                 c.cphi = cr[ic][2];
-                rr_fastsim(&c, &fr, &op, &fp, 0);
-                rr_fastsim(&c, &fr, &om, &fm, 0);
+                rr_fastsim(with_law(&c, &fr), &op, &fp, 0);
+                rr_fastsim(with_law(&c, &fr), &om, &fm, 0);
                 snprintf(buf, sizeof buf, "modified(k0 = 1, alpha_inf = 1) = plain, %s, case %d, "
                          "friction %d", grid_name[grid], ic, sm);
                 /* k = 1 (1 + 0/(1 + beta eps)) = 1 exactly, L/1 = L: 1e-12 on the
@@ -1049,14 +1061,14 @@ static void test_modified(void)
                 CHECK_CLOSE(fm.mz, fp.mz, 1e-12 * scale * c.a, 1e-12, buf);
             }
     {
-        rr_contact_case c = base_case();
+        rr_contact_problem c = base_case();
         rr_friction fr = coulomb(0.3);
         rr_creep_opts op = opts(RR_METHOD_FASTSIM, 30, 30, RR_BOUND_PARABOLIC, RR_GRID_RECT);
         rr_creep_opts om = opts(RR_METHOD_MODIFIED_FASTSIM, 30, 30, RR_BOUND_PARABOLIC, RR_GRID_RECT);
         rr_forces fp, fm;
         c.cx = 1e-10;
-        rr_fastsim(&c, &fr, &op, &fp, 0);
-        rr_fastsim(&c, &fr, &om, &fm, 0);
+        rr_fastsim(with_law(&c, &fr), &op, &fp, 0);
+        rr_fastsim(with_law(&c, &fr), &om, &fm, 0);
         /* eps ~ 1e-7 at this creepage: k = k0 (1 - (1 - alpha_inf) beta eps): 1e-6 */
         CHECK_CLOSE(fm.fx, om.v[RR_FASTSIM_K0] * fp.fx, 0.0, 1e-6, "modified FASTSIM: initial slope k0 x plain");
     }
@@ -1072,7 +1084,7 @@ static void test_modified(void)
         char buf[160];
         for (sm = 0; sm < 2; sm++)
             for (ic = 0; ic < 4; ic++) {
-                rr_contact_case c = base_case();
+                rr_contact_problem c = base_case();
                 rr_kalker_coeffs k = coeffs(&c);
                 rr_friction fr = sm == 0 ? coulomb(0.3) : falling(0.3, 0.4, 0.6);
                 rr_creep_opts op = opts(RR_METHOD_FASTSIM, 24, 20, RR_BOUND_PARABOLIC, RR_GRID_RECT);
@@ -1088,9 +1100,9 @@ static void test_modified(void)
                 mu = rr_friction_mu(&fr, c.speed * hypot(c.cx, c.cy));
                 eps = RR_PI * c.G * c.a * c.b * om.v[RR_FASTSIM_K0] * k.c11 * hypot(c.cx, nphi) / (4.0 * mu * c.N);
                 kf = om.v[RR_FASTSIM_K0] * (om.v[RR_FASTSIM_ALPHA_INF] + (1.0 - om.v[RR_FASTSIM_ALPHA_INF]) / (1.0 + om.v[RR_FASTSIM_BETA] * eps));
-                rr_fastsim(&c, &fr, &op, &fp, 0);
+                rr_fastsim(with_law(&c, &fr), &op, &fp, 0);
                 fld.slip = fld_slip;
-                rr_fastsim(&c, &fr, &om, &fm, &fld);
+                rr_fastsim(with_law(&c, &fr), &om, &fm, &fld);
                 snprintf(buf, sizeof buf, "modified FASTSIM k as documented, case %d friction %d "
                          "(k/k0 - 1 = %.2e)", ic, sm, kf / om.v[RR_FASTSIM_K0] - 1.0);
                 CHECK(fld.nslip == 0, buf);
@@ -1118,7 +1130,7 @@ static void test_field(void)
                 for (im = 0; im < 2; im++)
                     for (sm = 0; sm < 2; sm++) {
                         const int nx = 27, ny = 22;
-                        rr_contact_case c = base_case();
+                        rr_contact_problem c = base_case();
                         rr_friction fr = sm == 0 ? coulomb(0.3) : falling(0.3, 0.4, 0.6);
                         rr_creep_opts o = opts(methods[im], nx, ny, bound, grid);
                         rr_fastsim_field fld;
@@ -1137,8 +1149,8 @@ static void test_field(void)
                         fld.slip = fld_slip;
                         fld.nslip = -1;
                         fld.area = NULL;   /* not wanted here */
-                        st = rr_fastsim(&c, &fr, &o, &f, &fld);
-                        rr_fastsim(&c, &fr, &o, &f0, 0);
+                        st = rr_fastsim(with_law(&c, &fr), &o, &f, &fld);
+                        rr_fastsim(with_law(&c, &fr), &o, &f0, 0);
                         snprintf(buf, sizeof buf, "field %s %s case %d method %d friction %d",
                                  grid_name[grid], bound_name[bound], ic, methods[im], sm);
                         CHECK_STATUS(st, RR_OK, buf);
@@ -1194,7 +1206,7 @@ static void test_field(void)
 
     /* partial field: only some outputs wanted; the rest stay untouched */
     {
-        rr_contact_case c = base_case();
+        rr_contact_problem c = base_case();
         rr_friction fr = coulomb(0.3);
         rr_creep_opts o = opts(RR_METHOD_FASTSIM, 12, 10, RR_BOUND_PARABOLIC, RR_GRID_RECT);
         rr_fastsim_field fld = {0, 0, 0, 0, 0, 0, 0, 0};
@@ -1205,8 +1217,8 @@ static void test_field(void)
         fld.py = fld_py;
         c.cx = 1e-3;
         c.cy = 1e-3;
-        st = rr_fastsim(&c, &fr, &o, &f, &fld);
-        rr_fastsim(&c, &fr, &o, &f0, 0);
+        st = rr_fastsim(with_law(&c, &fr), &o, &f, &fld);
+        rr_fastsim(with_law(&c, &fr), &o, &f0, 0);
         CHECK_STATUS(st, RR_OK, "partial field: status");
         CHECK(f.fx == f0.fx && f.fy == f0.fy && f.mz == f0.mz, "partial field: same forces");
         for (i = 0; i < 120; i++)
@@ -1242,7 +1254,7 @@ static void test_vector_kernel(void)
             const int nx = 1 + (int)((ny <= 40 ? 40 : 37) * lcg());
             const int grid = rep & 1 ? RR_GRID_STRIPS : RR_GRID_RECT;
             const int bound = rep & 2 ? RR_BOUND_ELLIPTIC : RR_BOUND_PARABOLIC;
-            rr_contact_case c = base_case();
+            rr_contact_problem c = base_case();
             rr_friction fr = rep & 4 ? falling(lcg_range(0.1, 0.6), lcg_range(0.2, 0.9),
                                                lcg_range(0.1, 2.0))
                                      : coulomb(lcg_range(0.1, 0.6));
@@ -1259,8 +1271,8 @@ static void test_vector_kernel(void)
             c.cphi = lcg() < 0.2 ? 0.0 : lcg_creep(2.0);
             c.speed = lcg_range(0.5, 30.0);
             fld.px = fld_px;
-            st = rr_fastsim(&c, &fr, &o, &f, 0);
-            st0 = rr_fastsim(&c, &fr, &o, &f0, &fld);
+            st = rr_fastsim(with_law(&c, &fr), &o, &f, 0);
+            st0 = rr_fastsim(with_law(&c, &fr), &o, &f0, &fld);
             if (st != RR_OK || st0 != RR_OK)
                 st_ok = 0;
             if (!same_bits(f.fx, f0.fx) || !same_bits(f.fy, f0.fy) || !same_bits(f.mz, f0.mz)) {
@@ -1283,7 +1295,7 @@ static void test_dispatch(void)
 {
     static const int methods[3] = {RR_METHOD_FASTSIM, RR_METHOD_FASTSIM_BLENDED,
                                    RR_METHOD_MODIFIED_FASTSIM};
-    rr_contact_case c = base_case();
+    rr_contact_problem c = base_case();
     rr_friction fr = falling(0.3, 0.4, 0.6);
     rr_forces f, g;
     int im, st;
@@ -1294,8 +1306,8 @@ static void test_dispatch(void)
     for (im = 0; im < 3; im++) {
         rr_creep_opts o;
         rr_creep_opts_default(&o, methods[im]);
-        st = rr_creep_forces(&c, &fr, &o, &f);
-        rr_fastsim(&c, &fr, &o, &g, 0);
+        st = rr_creep_forces(with_law(&c, &fr), &o, &f);
+        rr_fastsim(with_law(&c, &fr), &o, &g, 0);
         CHECK(st == RR_OK && f.fx == g.fx && f.fy == g.fy && f.mz == g.mz,
               "dispatcher = rr_fastsim");
     }
@@ -1304,8 +1316,8 @@ static void test_dispatch(void)
         rr_creep_opts_default(&o, RR_METHOD_POLACH);
         o.v[RR_POLACH_KA] = 0.9;
         o.v[RR_POLACH_KS] = 0.6;
-        st = rr_creep_forces(&c, &fr, &o, &f);
-        rr_polach(&c, &fr, 0.9, 0.6, &g);
+        st = rr_creep_forces(with_law(&c, &fr), &o, &f);
+        rr_polach(with_law(&c, &fr), 0.9, 0.6, &g);
         CHECK(st == RR_OK && f.fx == g.fx && f.fy == g.fy && f.mz == g.mz,
               "dispatcher = rr_polach with the options' kA, kS");
     }
@@ -1329,7 +1341,7 @@ static void test_dispatch(void)
  * Polach's total force on the friction limit. */
 static void test_extremes(void)
 {
-    rr_contact_case c;
+    rr_contact_problem c = {0};    /* an ellipse problem */
     rr_friction fr = {0.3, 1.0, 0.0};
     rr_creep_opts o;
     rr_forces f;
@@ -1339,27 +1351,27 @@ static void test_extremes(void)
     c.a = 2.2e-308; c.b = 0.0068; c.N = 1e4; c.G = 8.2e10; c.nu = 0.28;
     c.cx = 0.0068; c.cy = 0.001; c.cphi = 0.094; c.speed = 0.0;
     rr_creep_opts_default(&o, RR_METHOD_FASTSIM);
-    st = rr_creep_forces(&c, &fr, &o, &f);
+    st = rr_creep_forces(with_law(&c, &fr), &o, &f);
     CHECK_STATUS(st, RR_ERR_RANGE, "FASTSIM a = 2.2e-308 (was NaN with status 0)");
     CHECK(isnan(f.fx) && isnan(f.fy) && isnan(f.mz), "RANGE: NaN forces");
 
     c.a = 1e12; c.cx = 1e300; c.cy = 0.0; c.cphi = 0.0;
     rr_creep_opts_default(&o, RR_METHOD_LINEAR);
-    st = rr_creep_forces(&c, &fr, &o, &f);
+    st = rr_creep_forces(with_law(&c, &fr), &o, &f);
     CHECK_STATUS(st, RR_ERR_RANGE, "linear cx = 1e300, a = 1e12 (was -inf)");
     CHECK(isnan(f.fx), "RANGE: NaN");
 
     /* huge creepage on an ordinary patch: full sliding, |F| = mu N */
     c.a = c.b = 0.006; c.cx = 1e3;
     rr_creep_opts_default(&o, RR_METHOD_FASTSIM);
-    st = rr_creep_forces(&c, &fr, &o, &f);
+    st = rr_creep_forces(with_law(&c, &fr), &o, &f);
     CHECK_STATUS(st, RR_OK, "FASTSIM cx = 1e3");
     CHECK_CLOSE(f.fx, -0.3e4, 0.0, 1e-12, "FASTSIM cx = 1e3: full sliding");
     c.cx = 1e40;         /* 1e43 times the saturation creepage: still full sliding */
-    CHECK_STATUS(rr_creep_forces(&c, &fr, &o, &f), RR_OK, "FASTSIM cx = 1e40");
+    CHECK_STATUS(rr_creep_forces(with_law(&c, &fr), &o, &f), RR_OK, "FASTSIM cx = 1e40");
     CHECK_CLOSE(f.fx, -0.3e4, 0.0, 1e-12, "FASTSIM cx = 1e40: full sliding");
     c.cx = 1e160;        /* increments beyond 1e150 Pa: their squares would overflow */
-    CHECK_STATUS(rr_creep_forces(&c, &fr, &o, &f), RR_ERR_RANGE, "FASTSIM cx = 1e160");
+    CHECK_STATUS(rr_creep_forces(with_law(&c, &fr), &o, &f), RR_ERR_RANGE, "FASTSIM cx = 1e160");
 
     /* Polach with spin: 401 x 401 grid of cy, cphi at kS = 0.4, the rig's
      * default; the reproducer was cy = -0.0019, cphi = 0.38: |F| = 1.012 mu N */
@@ -1369,7 +1381,7 @@ static void test_extremes(void)
         for (j = 0; j <= 400; j++) {
             c.cy = -0.01 + 0.02 * i / 400.0;
             c.cphi = -1.0 + 2.0 * j / 400.0;
-            st = rr_polach(&c, &fr, 1.0, 0.4, &f);
+            st = rr_polach(with_law(&c, &fr), 1.0, 0.4, &f);
             if (st != RR_OK || !(hypot(f.fx, f.fy) <= 0.5e4 * (1.0 + 1e-14)))
                 over++;
             if (hypot(f.fx, f.fy) / 0.5e4 > worst)
@@ -1377,17 +1389,16 @@ static void test_extremes(void)
         }
     CHECK(over == 0, "Polach with spin: |F| <= mu N on the whole grid");
     c.cy = -0.0019; c.cphi = 0.38;
-    CHECK_STATUS(rr_polach(&c, &fr, 1.0, 0.4, &f), RR_OK, "Polach reproducer");
+    CHECK_STATUS(rr_polach(with_law(&c, &fr), 1.0, 0.4, &f), RR_OK, "Polach reproducer");
     CHECK_CLOSE(hypot(f.fx, f.fy), 0.5e4, 0.0, 1e-14, "Polach reproducer: on the limit");
     CHECK(worst > 0.99, "the grid reaches the limit (the check is not vacuous)");
 
     /* NULL pointers */
-    CHECK_STATUS(rr_creep_forces(NULL, &fr, &o, &f), RR_ERR_NULL, "case NULL");
-    CHECK(isnan(f.fx), "case NULL: NaN");
-    CHECK_STATUS(rr_creep_forces(&c, NULL, &o, &f), RR_ERR_NULL, "friction NULL");
-    CHECK_STATUS(rr_creep_forces(&c, &fr, NULL, &f), RR_ERR_NULL, "options NULL");
-    CHECK_STATUS(rr_creep_forces(&c, &fr, &o, NULL), RR_ERR_NULL, "out NULL");
-    CHECK_STATUS(rr_fastsim(&c, &fr, NULL, &f, NULL), RR_ERR_NULL, "fastsim options NULL");
+    CHECK_STATUS(rr_creep_forces(NULL, &o, &f), RR_ERR_NULL, "problem NULL");
+    CHECK(isnan(f.fx), "problem NULL: NaN");
+    CHECK_STATUS(rr_creep_forces(with_law(&c, &fr), NULL, &f), RR_ERR_NULL, "options NULL");
+    CHECK_STATUS(rr_creep_forces(with_law(&c, &fr), &o, NULL), RR_ERR_NULL, "out NULL");
+    CHECK_STATUS(rr_fastsim(with_law(&c, &fr), NULL, &f, NULL), RR_ERR_NULL, "fastsim options NULL");
     /* the friction law at an infinite slip speed: Coulomb stays mu0 */
     fr.mu0 = 0.3; fr.A = 1.0; fr.B = 0.0;
     CHECK(rr_friction_mu(&fr, INFINITY) == 0.3, "Coulomb mu at w = inf");
@@ -1400,7 +1411,7 @@ static void test_extremes(void)
 
 static void test_fastrip(void)
 {
-    rr_contact_case c = base_case();
+    rr_contact_problem c = base_case();
     rr_friction fr = coulomb(0.3), ff = falling(0.3, 0.4, 0.5);
     rr_kalker_coeffs k;
     rr_creep_opts o;
@@ -1410,29 +1421,29 @@ static void test_fastrip(void)
     rr_creep_opts_default(&o, RR_METHOD_FASTRIP);
     o.v[RR_FASTRIP_NX] = o.v[RR_FASTRIP_NY] = 90.0;
 
-    CHECK_STATUS(rr_fastrip(&c, &fr, &o, &f), RR_OK, "fastrip zero creepage");
+    CHECK_STATUS(rr_fastrip(with_law(&c, &fr), &o, &f), RR_OK, "fastrip zero creepage");
     CHECK(f.fx == 0.0 && f.fy == 0.0 && f.mz == 0.0, "zero creepage, zero force");
 
     /* linear limit: the strip theory's is Kalker's in the continuum; on 90 x
      * 90 the trailing edge's square-root traction costs about 1 % */
     c.cx = 1e-7;
-    CHECK_STATUS(rr_fastrip(&c, &fr, &o, &f), RR_OK, "fastrip small cx");
+    CHECK_STATUS(rr_fastrip(with_law(&c, &fr), &o, &f), RR_OK, "fastrip small cx");
     CHECK_CLOSE(f.fx, -c.G * ab * k.c11 * c.cx, 0.0, 0.02, "fastrip -> C11");
     CHECK(fabs(f.fy) <= 1e-12 * fabs(f.fx), "no lateral force from cx");
     c.cx = 0.0;
     c.cy = 1e-7;
-    rr_fastrip(&c, &fr, &o, &f);
+    rr_fastrip(with_law(&c, &fr), &o, &f);
     CHECK_CLOSE(f.fy, -c.G * ab * k.c22 * c.cy, 0.0, 0.02, "fastrip -> C22");
     c.cy = 0.0;
     c.cphi = 1e-5;
-    rr_fastrip(&c, &fr, &o, &f);
+    rr_fastrip(with_law(&c, &fr), &o, &f);
     CHECK_CLOSE(f.fy, -c.G * ab * cc * k.c23 * c.cphi, 0.0, 0.03, "fastrip -> C23");
 
     /* full sliding: |F| -> mu N on the pressure that sums to N */
     c.cphi = 0.0;
     c.cx = 0.3;
     c.cy = -0.4;
-    rr_fastrip(&c, &fr, &o, &f);
+    rr_fastrip(with_law(&c, &fr), &o, &f);
     CHECK_CLOSE(hypot(f.fx, f.fy), 0.3 * c.N, 0.0, 1e-3, "fastrip full sliding");
     CHECK(hypot(f.fx, f.fy) <= 0.3 * c.N * (1.0 + 1e-12), "fastrip within mu N");
 
@@ -1440,33 +1451,33 @@ static void test_fastrip(void)
     c.cx = 2e-4;
     c.cy = 3e-4;
     c.cphi = 0.3;
-    rr_fastrip(&c, &fr, &o, &f);
+    rr_fastrip(with_law(&c, &fr), &o, &f);
     c.cx = -c.cx;
-    rr_fastrip(&c, &fr, &o, &g);
+    rr_fastrip(with_law(&c, &fr), &o, &g);
     CHECK_CLOSE(g.fx, -f.fx, 1e-9 * c.N, 0.0, "fx odd in xi");
     CHECK_CLOSE(g.fy, f.fy, 1e-9 * c.N, 0.0, "fy even in xi");
     c.cy = -c.cy;
     c.cphi = -c.cphi;
-    rr_fastrip(&c, &fr, &o, &g);
+    rr_fastrip(with_law(&c, &fr), &o, &g);
     CHECK_CLOSE(g.fx, -f.fx, 1e-9 * c.N, 0.0, "all signs: fx odd");
     CHECK_CLOSE(g.fy, -f.fy, 1e-9 * c.N, 0.0, "all signs: fy odd");
     CHECK_CLOSE(g.mz, -f.mz, 1e-9 * c.N * c.a, 0.0, "all signs: mz odd");
 
     /* refusals */
-    CHECK_STATUS(rr_fastrip(&c, &ff, &o, &f), RR_ERR_FRICTION, "falling friction refused");
+    CHECK_STATUS(rr_fastrip(with_law(&c, &ff), &o, &f), RR_ERR_FRICTION, "falling friction refused");
     CHECK(isnan(f.fx), "NaN on error");
-    CHECK_STATUS(rr_fastrip(NULL, &fr, &o, &f), RR_ERR_NULL, "NULL case");
+    CHECK_STATUS(rr_fastrip(NULL, &o, &f), RR_ERR_NULL, "NULL problem");
     o.v[RR_FASTRIP_NX] = 0.0;
-    CHECK_STATUS(rr_fastrip(&c, &fr, &o, &f), RR_ERR_GRID, "nx = 0");
+    CHECK_STATUS(rr_fastrip(with_law(&c, &fr), &o, &f), RR_ERR_GRID, "nx = 0");
     o.v[RR_FASTRIP_NX] = 30.0;
     o.v[RR_FASTRIP_K0] = 0.0;
-    CHECK_STATUS(rr_fastrip(&c, &fr, &o, &f), RR_ERR_PARAM, "k0 = 0");
+    CHECK_STATUS(rr_fastrip(with_law(&c, &fr), &o, &f), RR_ERR_PARAM, "k0 = 0");
     o.v[RR_FASTRIP_K0] = 1.0;
     o.v[RR_FASTRIP_GEOMETRY] = 2.0;
-    CHECK_STATUS(rr_fastrip(&c, &fr, &o, &f), RR_ERR_METHOD, "no geometry 2");
+    CHECK_STATUS(rr_fastrip(with_law(&c, &fr), &o, &f), RR_ERR_METHOD, "no geometry 2");
     o.v[RR_FASTRIP_GEOMETRY] = RR_FASTRIP_CONTACT;
-    CHECK_STATUS(rr_creep_forces(&c, &fr, &o, &g), RR_OK, "dispatcher");
-    CHECK_STATUS(rr_fastrip(&c, &fr, &o, &f), RR_OK, "contact geometry");
+    CHECK_STATUS(rr_creep_forces(with_law(&c, &fr), &o, &g), RR_OK, "dispatcher");
+    CHECK_STATUS(rr_fastrip(with_law(&c, &fr), &o, &f), RR_OK, "contact geometry");
     CHECK(f.fx == g.fx && f.fy == g.fy && f.mz == g.mz, "dispatcher gives rr_fastrip's");
 }
 

@@ -25,6 +25,15 @@
 #include "contact/rr_exact_table.h"
 #include "rr_test.h"
 
+/* problem c with the friction law fr (the tests vary the two apart): c's
+ * law set to *fr, c returned (NULL stays NULL) */
+static const rr_contact_problem *with_law(rr_contact_problem *c, const rr_friction *fr)
+{
+    if (c && fr)
+        c->friction = *fr;
+    return c;
+}
+
 #define G_MOD 8.2e10
 #define NU 0.28
 
@@ -95,7 +104,7 @@ static void fill_quadratic(rr_exact_table *t)
 
 /* The lookup's forces by the header's definition: the coordinates of the
  * case, the quadratic at their positions on the axes, the folding. */
-static void by_definition(const rr_exact_table *t, const rr_contact_case *c, double mu,
+static void by_definition(const rr_exact_table *t, const rr_contact_problem *c, double mu,
                           double f[3])
 {
     rr_kalker_coeffs k;
@@ -137,7 +146,7 @@ static void test_quadratic_reproduced(void)
     fill_quadratic(&t);
     CHECK_STATUS(rr_exact_table_check(&t), RR_OK, "the quadratic table is valid");
     for (i = 0; i < 400; i++) {
-        rr_contact_case c;
+        rr_contact_problem c = {0};    /* an ellipse problem */
         rr_forces got, base;
         double want[3], xs, ys, zs, scale;
         const double aob = exp(uniform(log(0.5), log(2.0))), cc = uniform(3e-3, 8e-3);
@@ -178,8 +187,8 @@ static void test_quadratic_reproduced(void)
             c.cy = ys * scale / kc.c22;
             c.cphi = (i & 16 ? -1.0 : 1.0) * zs * scale / (cc * kc.c11);
         }
-        st = rr_exact_table_forces(&t, &c, &fr, &got);
-        st |= rr_exact_table_forces_baseline(&t, &c, &fr, &base);
+        st = rr_exact_table_forces(&t, with_law(&c, &fr), &got);
+        st |= rr_exact_table_forces_baseline(&t, with_law(&c, &fr), &base);
         by_definition(&t, &c, fr.mu0, want);
         snprintf(what, sizeof what, "case %d: status", i);
         CHECK_STATUS(st, RR_OK, what);
@@ -195,7 +204,7 @@ static void test_quadratic_reproduced(void)
 
 /* ---- the built-in table ------------------------------------------------------- */
 
-static void random_case(rr_contact_case *c, rr_friction *fr)
+static void random_case(rr_contact_problem *c, rr_friction *fr)
 {
     const double aob = exp(uniform(log(0.1), log(10.0))), cc = uniform(3e-3, 9e-3);
     const double N = uniform(5e3, 1e5), mu = uniform(0.1, 0.5), s = mu * N / (G_MOD * cc * cc);
@@ -228,14 +237,14 @@ static void test_builtin(void)
     CHECK_STATUS(rr_exact_table_check(t), RR_OK, "the built-in table passes its check");
     CHECK(m >= 0 && rr_creep_opts_default(&o, m) == RR_OK, "method exact_table");
     for (i = 0; i < 20000; i++) {
-        rr_contact_case c;
+        rr_contact_problem c = {0};    /* an ellipse problem */
         rr_friction fr;
         rr_forces f1, f2, f3;
         int s1, s2, s3;
         random_case(&c, &fr);
-        s1 = rr_exact_table_forces(t, &c, &fr, &f1);
-        s2 = rr_creep_forces(&c, &fr, &o, &f2);
-        s3 = rr_exact_table_forces_baseline(t, &c, &fr, &f3);
+        s1 = rr_exact_table_forces(t, with_law(&c, &fr), &f1);
+        s2 = rr_creep_forces(with_law(&c, &fr), &o, &f2);
+        s3 = rr_exact_table_forces_baseline(t, with_law(&c, &fr), &f3);
         same &= s1 == s2 && memcmp(&f1, &f2, sizeof f1) == 0;
         same_isa &= s1 == s3 && memcmp(&f1, &f3, sizeof f1) == 0;
         bad += s1 != RR_OK;
@@ -248,36 +257,36 @@ static void test_builtin(void)
     CHECK(bad == 0, "every random case inside the table is looked up");
     CHECK(bound, "|(fx, fy)| <= mu N");
     {
-        rr_contact_case c = {6e-3, 4e-3, 5e4, G_MOD, NU, 0.0, 0.0, 0.0, 1.0};
-        const rr_friction fr = {0.3, 1.0, 0.0};
+        rr_contact_problem c = {.a = 6e-3, .b = 4e-3, .N = 5e4, .G = G_MOD, .nu = NU,
+                                .speed = 1.0, .friction = {0.3, 1.0, 0.0}};
         rr_forces f;
-        CHECK_STATUS(rr_exact_table_forces(t, &c, &fr, &f), RR_OK, "no creepage");
+        CHECK_STATUS(rr_exact_table_forces(t, &c, &f), RR_OK, "no creepage");
         CHECK(f.fx == 0.0 && f.fy == 0.0 && f.mz == 0.0, "no creepage: no force");
         c.cx = 3.0;
         c.cy = -4.0;
-        CHECK_STATUS(rr_exact_table_forces(t, &c, &fr, &f), RR_OK, "full sliding");
+        CHECK_STATUS(rr_exact_table_forces(t, &c, &f), RR_OK, "full sliding");
         CHECK_CLOSE(hypot(f.fx, f.fy), 0.3 * 5e4, 0.0, 1e-6, "full sliding: |F| = mu N");
         CHECK_CLOSE(f.fx / f.fy, -0.75, 0.0, 1e-3, "full sliding: F against the slip");
         c.nu = 0.3;
-        CHECK_STATUS(rr_exact_table_forces(t, &c, &fr, &f), RR_ERR_TABLE, "nu not the table's");
+        CHECK_STATUS(rr_exact_table_forces(t, &c, &f), RR_ERR_TABLE, "nu not the table's");
         CHECK(isnan(f.fx) && isnan(f.fy) && isnan(f.mz), "refused: NaN forces");
         c.nu = NU;
         c.a = 0.3e-3;
-        CHECK_STATUS(rr_exact_table_forces(t, &c, &fr, &f), RR_ERR_TABLE, "a/b below 0.1");
-        CHECK_STATUS(rr_exact_table_forces(t, &c, &fr, NULL), RR_ERR_NULL, "out NULL");
-        CHECK_STATUS(rr_exact_table_forces(NULL, &c, &fr, &f), RR_ERR_NULL, "table NULL");
-        CHECK_STATUS(rr_creep_forces(&c, &fr, &o, NULL), RR_ERR_NULL, "method: out NULL");
+        CHECK_STATUS(rr_exact_table_forces(t, &c, &f), RR_ERR_TABLE, "a/b below 0.1");
+        CHECK_STATUS(rr_exact_table_forces(t, &c, NULL), RR_ERR_NULL, "out NULL");
+        CHECK_STATUS(rr_exact_table_forces(NULL, &c, &f), RR_ERR_NULL, "table NULL");
+        CHECK_STATUS(rr_creep_forces(&c, &o, NULL), RR_ERR_NULL, "method: out NULL");
     }
 }
 
 static void test_bad_tables(void)
 {
     rr_exact_table t = rr_exact_table_builtin;
-    const rr_contact_case c = {6e-3, 4e-3, 5e4, G_MOD, NU, 1e-3, 0.0, 0.0, 1.0};
-    const rr_friction fr = {0.3, 1.0, 0.0};
+    const rr_contact_problem c = {.a = 6e-3, .b = 4e-3, .N = 5e4, .G = G_MOD, .nu = NU,
+                                  .cx = 1e-3, .speed = 1.0, .friction = {0.3, 1.0, 0.0}};
     rr_forces f;
     t.n[2] = 3;
-    CHECK_STATUS(rr_exact_table_forces(&t, &c, &fr, &f), RR_ERR_PARAM, "3 nodes on an axis");
+    CHECK_STATUS(rr_exact_table_forces(&t, &c, &f), RR_ERR_PARAM, "3 nodes on an axis");
     CHECK(isnan(f.fx), "a bad table: NaN forces");
     t = rr_exact_table_builtin;
     t.r0 = 0.0;

@@ -239,7 +239,7 @@ static int paper_run(long n, int free_rolling, double *recs)
     if (st >= 0)
         st = rr_rig_params_from(&c, &t, &p);
     if (st >= 0)
-        st = rr_rig_init(&p, c.roller_speed / c.roller_radius, &rig);
+        st = rr_rig_init(&p, c.roller_speed / c.roller_radius, NULL, 0, &rig);
     for (k = 0; st >= 0 && k < n; k++) {
         rr_rig_schedule(&c, k, &roller_ref, &xi_ref);
         if (free_rolling)

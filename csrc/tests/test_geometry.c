@@ -235,7 +235,7 @@ static void test_rig_contact_checked(rr_rig_contact_model *m, const rr_rig_state
     const double spins[3] = {1.0, 0.98, 1.05}, ys[3] = {0.0, 2e-3, 0.01};
     int i, j, l, st;
 
-    CHECK_STATUS(rr_rig_contact_bind(&k, m), RR_OK, "rig: bound");
+    CHECK_STATUS(rr_rig_contact_bind(&k, m, NULL, 0), RR_OK, "rig: bound");
     for (i = 0; i < 3; i++)
         for (j = 0; j < 3; j++)
             for (l = 0; l < 4; l++) {
@@ -269,7 +269,7 @@ static void test_rig_contact_checked(rr_rig_contact_model *m, const rr_rig_state
     CHECK_STATUS(rr_rig_contact_eval_checked(&k, &s, loads[0], &p2, w2), RR_OK,
                  "rig: the bound copy is the checked model");
     CHECK(same_wheels(&p1, w1, &p2, w2), "rig: and evaluates as before");
-    CHECK_STATUS(rr_rig_contact_bind(&k, m), RR_ERR_GRID, "rig: the changed model refused");
+    CHECK_STATUS(rr_rig_contact_bind(&k, m, NULL, 0), RR_ERR_GRID, "rig: the changed model refused");
     m->creep.v[RR_FASTSIM_NX] = 20;
     /* what a C caller can get wrong: an unbound or refused record, NULLs */
     CHECK_STATUS(rr_rig_contact_eval_checked(&k, &s, loads[0], &p2, w2), RR_ERR_NULL,
@@ -280,7 +280,7 @@ static void test_rig_contact_checked(rr_rig_contact_model *m, const rr_rig_state
     CHECK_STATUS(rr_rig_kinematics_checked(&k, &s, &p2, w2), RR_ERR_NULL, "rig: zeroed record");
     CHECK_STATUS(rr_rig_contact_loads_checked(&k, loads[0], &p2, w2), RR_ERR_NULL,
                  "rig: zeroed record's loads");
-    CHECK_STATUS(rr_rig_contact_bind(&k, m), RR_OK, "rig: bound again");
+    CHECK_STATUS(rr_rig_contact_bind(&k, m, NULL, 0), RR_OK, "rig: bound again");
     CHECK_STATUS(rr_rig_kinematics_checked(NULL, &s, &p2, w2), RR_ERR_NULL, "rig: NULL record");
     CHECK_STATUS(rr_rig_kinematics_checked(&k, NULL, &p2, w2), RR_ERR_NULL, "rig: NULL state");
     CHECK_STATUS(rr_rig_kinematics_checked(&k, &s, NULL, w2), RR_ERR_NULL, "rig: NULL pose");
@@ -290,8 +290,32 @@ static void test_rig_contact_checked(rr_rig_contact_model *m, const rr_rig_state
                  "rig: NULL loads");
     CHECK_STATUS(rr_rig_contact_loads_checked(&k, loads[0], NULL, w2), RR_ERR_NULL,
                  "rig: NULL pose for the loads");
-    CHECK_STATUS(rr_rig_contact_bind(NULL, m), RR_ERR_NULL, "rig: NULL record to bind");
-    CHECK_STATUS(rr_rig_contact_bind(&k, NULL), RR_ERR_NULL, "rig: NULL model");
+    CHECK_STATUS(rr_rig_contact_bind(NULL, m, NULL, 0), RR_ERR_NULL, "rig: NULL record to bind");
+    CHECK_STATUS(rr_rig_contact_bind(&k, NULL, NULL, 0), RR_ERR_NULL, "rig: NULL model");
+    /* the bound workspace reaches the creep method: a record whose method
+     * asks 4 doubles (as one with a workspace would) is refused each wheel
+     * without it, and evaluates as before with it */
+    {
+        double work[4];
+        CHECK(rr_rig_contact_workspace_len(m) == 0, "rig: FASTSIM asks no workspace");
+        CHECK(rr_rig_contact_workspace_len(NULL) == 0, "rig: a NULL model asks none");
+        CHECK_STATUS(rr_rig_contact_bind(&k, m, work, 4), RR_OK, "rig: bound with a workspace");
+        CHECK(k.work == work && k.work_len == 4, "rig: the workspace kept");
+        s = *s0;
+        s.spin *= 0.98;
+        rr_rig_contact_eval_checked(&k, &s, loads[0], &p1, w1);
+        k.creep.work_len = 4;
+        k.work = NULL;
+        k.work_len = 0;
+        rr_rig_contact_eval_checked(&k, &s, loads[0], &p2, w2);
+        CHECK(w2[0].status == RR_ERR_WORKSPACE && w2[1].status == RR_ERR_WORKSPACE,
+              "rig: a method's workspace missing: each wheel refused");
+        k.work = work;
+        k.work_len = 4;
+        CHECK_STATUS(rr_rig_contact_eval_checked(&k, &s, loads[0], &p2, w2), RR_OK,
+                     "rig: with the workspace");
+        CHECK(same_wheels(&p1, w1, &p2, w2), "rig: with the workspace, as before");
+    }
 }
 
 /* The whole evaluation on the conical pair: free rolling, braking, bad input. */

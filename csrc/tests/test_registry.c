@@ -11,11 +11,21 @@
 #include "contact/rr_exact.h"
 #include "rr_test.h"
 
-static rr_contact_case base_case(void)
+/* problem c with the friction law fr (the tests vary the two apart): c's
+ * law set to *fr, c returned (NULL stays NULL) */
+static const rr_contact_problem *with_law(rr_contact_problem *c, const rr_friction *fr)
 {
-    rr_contact_case c;
+    if (c && fr)
+        c->friction = *fr;
+    return c;
+}
+
+static rr_contact_problem base_case(void)
+{
+    rr_contact_problem c = {0};    /* an ellipse problem */
     c.a = 0.006; c.b = 0.004; c.N = 1e4; c.G = 8.2e10; c.nu = 0.28;
     c.cx = 1e-3; c.cy = 0.0; c.cphi = 0.0; c.speed = 5.0;
+    c.friction.mu0 = 0.3; c.friction.A = 1.0; c.friction.B = 0.0;
     return c;
 }
 
@@ -61,7 +71,7 @@ static void test_defaults_and_costs(void)
         CHECK_STATUS(rr_creep_opts_default(&o, m), RR_OK, "defaults");
         CHECK_STATUS(rr_creep_opts_check(&o), RR_OK, "defaults are valid");
         /* only the exact solver needs workspace (its grid and FFT planes) */
-        CHECK((rr_creep_workspace_len(&o) > 0) == (m == RR_METHOD_EXACT),
+        CHECK((rr_creep_workspace_len(&o, NULL) > 0) == (m == RR_METHOD_EXACT),
               "workspace only for the exact solver");
     }
     CHECK_STATUS(rr_creep_opts_default(&o, RR_METHOD_COUNT), RR_ERR_METHOD,
@@ -176,7 +186,7 @@ static void test_edges(void)
 
 static void test_dispatch(void)
 {
-    rr_contact_case c = base_case();
+    rr_contact_problem c = base_case();
     rr_friction fr = {0.3, 1.0, 0.0};
     rr_creep_opts o;
     rr_forces f;
@@ -185,20 +195,20 @@ static void test_dispatch(void)
     memset(&fl, 0, sizeof fl);
     fl.x = x;
     rr_creep_opts_default(&o, RR_METHOD_POLACH);
-    CHECK_STATUS(rr_creep_field(&c, &fr, &o, &f, &fl), RR_ERR_METHOD, "Polach has no field");
+    CHECK_STATUS(rr_creep_field(with_law(&c, &fr), &o, &f, &fl), RR_ERR_METHOD, "Polach has no field");
     CHECK(isnan(f.fx), "no field: NaN forces");
     rr_creep_opts_default(&o, RR_METHOD_FASTSIM);
     o.v[RR_FASTSIM_NX] = 2;
     o.v[RR_FASTSIM_NY] = 2;
-    CHECK_STATUS(rr_creep_field(&c, &fr, &o, &f, &fl), RR_OK, "FASTSIM field 2 x 2");
+    CHECK_STATUS(rr_creep_field(with_law(&c, &fr), &o, &f, &fl), RR_OK, "FASTSIM field 2 x 2");
     CHECK(isfinite(f.fx) && isfinite(x[0]), "FASTSIM field: finite");
-    CHECK_STATUS(rr_creep_forces(&c, &fr, NULL, &f), RR_ERR_NULL, "NULL options");
-    CHECK_STATUS(rr_creep_forces(&c, &fr, &o, NULL), RR_ERR_NULL, "NULL output");
-    CHECK_STATUS(rr_creep_forces_work(&c, &fr, &o, NULL, 0, &f), RR_OK, "no workspace needed");
+    CHECK_STATUS(rr_creep_forces(with_law(&c, &fr), NULL, &f), RR_ERR_NULL, "NULL options");
+    CHECK_STATUS(rr_creep_forces(with_law(&c, &fr), &o, NULL), RR_ERR_NULL, "NULL output");
+    CHECK_STATUS(rr_creep_forces_work(with_law(&c, &fr), &o, NULL, 0, &f), RR_OK, "no workspace needed");
     o.v[RR_FASTSIM_NX] = 2.5;
-    CHECK_STATUS(rr_creep_forces(&c, &fr, &o, &f), RR_ERR_GRID, "nx = 2.5 refused");
+    CHECK_STATUS(rr_creep_forces(with_law(&c, &fr), &o, &f), RR_ERR_GRID, "nx = 2.5 refused");
     CHECK(isnan(f.fx), "refused: NaN");
-    CHECK_STATUS(rr_fastsim(&c, &fr, &o, &f, NULL), RR_ERR_GRID, "rr_fastsim nx = 2.5 refused");
+    CHECK_STATUS(rr_fastsim(with_law(&c, &fr), &o, &f, NULL), RR_ERR_GRID, "rr_fastsim nx = 2.5 refused");
 }
 
 static int same_forces(const rr_forces *a, const rr_forces *b)
@@ -213,7 +223,7 @@ static int same_forces(const rr_forces *a, const rr_forces *b)
 static void test_checked(void)
 {
     static double work[1 << 18];
-    rr_contact_case cases[6];
+    rr_contact_problem cases[6];
     rr_friction laws[3] = {{0.3, 1.0, 0.0}, {0.3, 0.4, 0.6}, {NAN, 1.0, 0.0}};
     rr_creep_checked k;
     rr_creep_opts o;
@@ -234,28 +244,26 @@ static void test_checked(void)
             o.v[RR_EXACT_NX] = o.v[RR_EXACT_NY] = 8;   /* a small grid: a quick test */
         snprintf(what, sizeof what, "%s: checked", rr_method_get(m)->name);
         CHECK_STATUS(rr_creep_check(&k, &o, &bad), RR_OK, what);
-        CHECK(bad == -1 && k.d == rr_method_get(m) && k.work_len == rr_creep_workspace_len(&o)
+        CHECK(bad == -1 && k.d == rr_method_get(m) && k.work_len == rr_creep_workspace_len(&o, NULL)
               && k.cost == rr_creep_cost(&o), "the checked record: method, workspace, cost");
         CHECK(k.work_len <= sizeof work / sizeof work[0], "the test's workspace suffices");
         for (i = 0; i < 6; i++)
             for (j = 0; j < 3; j++) {
-                const int st = rr_creep_forces_work(&cases[i], &laws[j], &o, work, k.work_len,
+                const int st = rr_creep_forces_work(with_law(&cases[i], &laws[j]), &o, work, k.work_len,
                                                     &f);
                 snprintf(what, sizeof what, "%s: case %d, law %d: as the dispatcher",
                          rr_method_get(m)->name, i, j);
-                CHECK_STATUS(rr_creep_forces_checked(&k, &cases[i], &laws[j], work, k.work_len,
+                CHECK_STATUS(rr_creep_forces_checked(&k, with_law(&cases[i], &laws[j]), work, k.work_len,
                                                      NULL, &g), st, what);
                 CHECK(same_forces(&f, &g), what);
             }
-        CHECK_STATUS(rr_creep_forces_checked(&k, NULL, &laws[0], work, k.work_len, NULL, &g),
-                     RR_ERR_NULL, "NULL case");
-        CHECK_STATUS(rr_creep_forces_checked(&k, &cases[0], NULL, work, k.work_len, NULL, &g),
-                     RR_ERR_NULL, "NULL law");
+        CHECK_STATUS(rr_creep_forces_checked(&k, NULL, work, k.work_len, NULL, &g),
+                     RR_ERR_NULL, "NULL problem");
         CHECK(isnan(g.fx), "NULL: NaN");
         if (k.work_len > 0) {
-            CHECK_STATUS(rr_creep_forces_checked(&k, &cases[0], &laws[0], NULL, 0, NULL, &g),
+            CHECK_STATUS(rr_creep_forces_checked(&k, with_law(&cases[0], &laws[0]), NULL, 0, NULL, &g),
                          RR_ERR_WORKSPACE, "no workspace");
-            CHECK_STATUS(rr_creep_forces_checked(&k, &cases[0], &laws[0], work, k.work_len - 1,
+            CHECK_STATUS(rr_creep_forces_checked(&k, with_law(&cases[0], &laws[0]), work, k.work_len - 1,
                                                  NULL, &g), RR_ERR_WORKSPACE, "one double short");
             CHECK(isnan(g.fx), "refused: NaN");
         }
@@ -266,24 +274,24 @@ static void test_checked(void)
     o.v[RR_POLACH_KA] = 0.5;
     CHECK_STATUS(rr_creep_check(&k, &o, &bad), RR_ERR_PARAM, "kS > kA refused");
     CHECK(bad == RR_POLACH_KS, "naming kS");
-    CHECK_STATUS(rr_creep_forces_checked(&k, &cases[0], &laws[0], NULL, 0, NULL, &g),
+    CHECK_STATUS(rr_creep_forces_checked(&k, with_law(&cases[0], &laws[0]), NULL, 0, NULL, &g),
                  RR_ERR_NULL, "a refused record is not used");
     CHECK(isnan(g.fx) && isnan(g.fy) && isnan(g.mz), "refused: NaN forces");
     memset(&k, 0, sizeof k);
-    CHECK_STATUS(rr_creep_forces_checked(&k, &cases[0], &laws[0], NULL, 0, NULL, &g),
+    CHECK_STATUS(rr_creep_forces_checked(&k, with_law(&cases[0], &laws[0]), NULL, 0, NULL, &g),
                  RR_ERR_NULL, "a zeroed record is not one");
     rr_creep_opts_default(&o, RR_METHOD_FASTSIM);
     CHECK_STATUS(rr_creep_check(&k, &o, NULL), RR_OK, "FASTSIM checked");
     k.o.method = RR_METHOD_COUNT;
-    CHECK_STATUS(rr_creep_forces_checked(&k, &cases[0], &laws[0], NULL, 0, NULL, &g),
+    CHECK_STATUS(rr_creep_forces_checked(&k, with_law(&cases[0], &laws[0]), NULL, 0, NULL, &g),
                  RR_ERR_NULL, "a method that is not the record's");
     k.o.method = RR_METHOD_POLACH;
-    CHECK_STATUS(rr_creep_forces_checked(&k, &cases[0], &laws[0], NULL, 0, NULL, &g),
+    CHECK_STATUS(rr_creep_forces_checked(&k, with_law(&cases[0], &laws[0]), NULL, 0, NULL, &g),
                  RR_ERR_NULL, "nor another method's");
-    CHECK_STATUS(rr_creep_forces_checked(NULL, &cases[0], &laws[0], NULL, 0, NULL, &g),
+    CHECK_STATUS(rr_creep_forces_checked(NULL, with_law(&cases[0], &laws[0]), NULL, 0, NULL, &g),
                  RR_ERR_NULL, "NULL record");
     CHECK_STATUS(rr_creep_check(&k, &o, NULL), RR_OK, "FASTSIM checked again");
-    CHECK_STATUS(rr_creep_forces_checked(&k, &cases[0], &laws[0], NULL, 0, NULL, NULL),
+    CHECK_STATUS(rr_creep_forces_checked(&k, with_law(&cases[0], &laws[0]), NULL, 0, NULL, NULL),
                  RR_ERR_NULL, "NULL output");
     CHECK_STATUS(rr_creep_check(NULL, &o, &bad), RR_ERR_NULL, "NULL record to fill");
     CHECK_STATUS(rr_creep_check(&k, NULL, &bad), RR_ERR_NULL, "NULL options");

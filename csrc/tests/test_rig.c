@@ -111,7 +111,7 @@ static void test_steps(const rr_rig_params *p)
     static rr_rig rig;
     double rec[RR_REC_COUNT], sum = 0.0;
     int k, n = 0, nfev = -1, same = 1;
-    CHECK_STATUS(rr_rig_init(p, 5.0 / 0.16, &rig), RR_OK, "init");
+    CHECK_STATUS(rr_rig_init(p, 5.0 / 0.16, NULL, 0, &rig), RR_OK, "init");
     for (k = 0; k < 1500; k++) {
         CHECK(rr_rig_step(&rig, 5.0 / 0.16, 0.03, rec) >= 0, "step");
         if (nfev >= 0 && rig.ode.nfev != nfev)
@@ -143,7 +143,7 @@ static void test_model(const rr_rig_params *good)
 
     p = *good;
     p.newton_model = 1;
-    CHECK_STATUS(rr_rig_init(&p, 5.0 / 0.16, &rig), RR_OK, "init with the model");
+    CHECK_STATUS(rr_rig_init(&p, 5.0 / 0.16, NULL, 0, &rig), RR_OK, "init with the model");
     CHECK(rig.ode.model != NULL && rr_ode_nfev(&rig.ode, 1) == 1,
           "newton_model: one f evaluation per step");
     for (c = 0; c < 2; c++) {
@@ -204,9 +204,9 @@ static void test_errors(const rr_rig_params *good)
     rr_rig_params p;
     double rec[RR_REC_COUNT], y[RR_RIG_NSTATE];
     p = *good; p.mass = -1.0;
-    CHECK_STATUS(rr_rig_init(&p, 31.25, &rig), RR_ERR_PARAM, "negative mass");
+    CHECK_STATUS(rr_rig_init(&p, 31.25, NULL, 0, &rig), RR_ERR_PARAM, "negative mass");
     p = *good; p.kz = NAN;
-    CHECK_STATUS(rr_rig_init(&p, 31.25, &rig), RR_ERR_NONFINITE, "NaN stiffness");
+    CHECK_STATUS(rr_rig_init(&p, 31.25, NULL, 0, &rig), RR_ERR_NONFINITE, "NaN stiffness");
     p = *good; p.roller_pi.T = 0.001;
     CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "controllers at another sample time");
     p = *good; p.nsub = 0;
@@ -221,9 +221,9 @@ static void test_errors(const rr_rig_params *good)
     CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "linear_tr neither 0 nor 1");
     p = *good; p.newton_model = 2;
     CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "newton_model neither 0 nor 1");
-    CHECK_STATUS(rr_rig_init(good, NAN, &rig), RR_ERR_NONFINITE, "NaN speed");
+    CHECK_STATUS(rr_rig_init(good, NAN, NULL, 0, &rig), RR_ERR_NONFINITE, "NaN speed");
     /* a wheel off its roller: a clean stop at the sample's start */
-    CHECK_STATUS(rr_rig_init(good, 31.25, &rig), RR_OK, "init");
+    CHECK_STATUS(rr_rig_init(good, 31.25, NULL, 0, &rig), RR_OK, "init");
     memcpy(y, rig.y, sizeof y);
     y[RR_RIG_Y] = 0.006;
     CHECK_STATUS(rr_rig_set_state(&rig, 0.0, y), RR_OK, "set state");
@@ -256,21 +256,21 @@ static void test_unusable(const rr_rig_params *good)
     CHECK_STATUS(rr_rig_set_state(&rig, 0.0, y), RR_ERR_NULL, "zeroed rig: set_state");
     CHECK(rr_rig_run(&rig, 2, rr_, xr, recs, &st) == 0 && st == RR_ERR_NULL, "zeroed rig: run");
     CHECK_STATUS(rr_rig_step(NULL, 31.25, 0.02, rec), RR_ERR_NULL, "rig NULL");
-    CHECK_STATUS(rr_rig_init(good, 31.25, NULL), RR_ERR_NULL, "init into NULL");
-    CHECK_STATUS(rr_rig_init(NULL, 31.25, &rig), RR_ERR_NULL, "init from NULL params");
+    CHECK_STATUS(rr_rig_init(good, 31.25, NULL, 0, NULL), RR_ERR_NULL, "init into NULL");
+    CHECK_STATUS(rr_rig_init(NULL, 31.25, NULL, 0, &rig), RR_ERR_NULL, "init from NULL params");
     CHECK_STATUS(rr_rig_step(&rig, 31.25, 0.02, rec), RR_ERR_NULL, "after init from NULL");
 
     /* a failed init leaves a rig that reports the init's status */
     p = *good;
     p.mass = -1.0;
-    CHECK_STATUS(rr_rig_init(&p, 31.25, &rig), RR_ERR_PARAM, "bad mass");
+    CHECK_STATUS(rr_rig_init(&p, 31.25, NULL, 0, &rig), RR_ERR_PARAM, "bad mass");
     CHECK_STATUS(rr_rig_step(&rig, 31.25, 0.02, rec), RR_ERR_PARAM, "after a failed init: step");
     CHECK(isnan(rec[RR_REC_FX]), "after a failed init: NaN record");
     CHECK_STATUS(rr_rig_rhs(&rig, 0.0, y, J), RR_ERR_PARAM, "after a failed init: rhs");
     CHECK(rr_rig_run(&rig, 2, rr_, xr, recs, &st) == 0 && st == RR_ERR_PARAM,
           "after a failed init: run");
     /* and a good init afterwards works */
-    CHECK_STATUS(rr_rig_init(good, 31.25, &rig), RR_OK, "init again");
+    CHECK_STATUS(rr_rig_init(good, 31.25, NULL, 0, &rig), RR_OK, "init again");
     CHECK_STATUS(rr_rig_step(&rig, 31.25, 0.02, rec), RR_OK, "then steps");
     CHECK(rr_rig_run(&rig, -1, rr_, xr, recs, &st) == 0 && st == RR_ERR_PARAM, "run n < 0");
     CHECK(rr_rig_run(&rig, 2, NULL, xr, recs, &st) == 0 && st == RR_ERR_NULL, "run refs NULL");
@@ -287,8 +287,8 @@ static void test_external_builtin(const rr_rig_params *p)
     double ra[RR_REC_COUNT], rb[RR_REC_COUNT];
     int k, same = 1;
 
-    CHECK_STATUS(rr_rig_init(p, 31.25, &a), RR_OK, "init a");
-    CHECK_STATUS(rr_rig_init(p, 31.25, &b), RR_OK, "init b");
+    CHECK_STATUS(rr_rig_init(p, 31.25, NULL, 0, &a), RR_OK, "init a");
+    CHECK_STATUS(rr_rig_init(p, 31.25, NULL, 0, &b), RR_OK, "init b");
     rr_rig_command_builtin(&c, 31.25, 0.02);
     CHECK_STATUS(rr_rig_write(&b, &c), RR_ERR_SEQUENCE, "write before read");
     for (k = 0; k < 200; k++) {
@@ -324,7 +324,7 @@ static void test_external_commands(const rr_rig_params *p)
     double rec[RR_REC_COUNT];
     int k;
 
-    CHECK_STATUS(rr_rig_init(p, 31.25, &rig), RR_OK, "init");
+    CHECK_STATUS(rr_rig_init(p, 31.25, NULL, 0, &rig), RR_OK, "init");
     for (k = 0; k < 100; k++) {
         CHECK_STATUS(rr_rig_read(&rig, &s), RR_OK, "read");
         c.roller_mode = RR_CMD_SPEED;
@@ -415,7 +415,7 @@ static void test_adhesion(const rr_rig_params *good)
                 0.0, "the other edge");
 
     /* in the loop: the left wheel meets the patch once a revolution */
-    CHECK_STATUS(rr_rig_init(&p, 31.25, &rig), RR_OK, "init with a patch");
+    CHECK_STATUS(rr_rig_init(&p, 31.25, NULL, 0, &rig), RR_OK, "init with a patch");
     for (k = 0; k < 200; k++) {
         CHECK(rr_rig_step(&rig, 31.25, NAN, rec) >= 0, "steps through the patch");
         seen_low |= rec[RR_REC_MU_LEFT] == 0.1;
@@ -461,7 +461,7 @@ static void test_rebind(const rr_rig_params *good)
     double ra[RR_REC_COUNT], rb[RR_REC_COUNT];
     int k, same = 1;
 
-    CHECK_STATUS(rr_rig_init(good, 31.25, &a), RR_OK, "init");
+    CHECK_STATUS(rr_rig_init(good, 31.25, NULL, 0, &a), RR_OK, "init");
     for (k = 0; k < 50; k++)
         rr_rig_step(&a, 31.25, k < 10 ? NAN : 0.03, ra);
     q = *good;
@@ -492,8 +492,8 @@ static void test_rebind(const rr_rig_params *good)
      * per step: options changed under the rig (out of range, or a method it
      * does not step with) act only through a rebind, which refuses them */
     q = *good;
-    CHECK_STATUS(rr_rig_init(&q, 31.25, &a), RR_OK, "init");
-    CHECK_STATUS(rr_rig_init(good, 31.25, &b), RR_OK, "init the reference");
+    CHECK_STATUS(rr_rig_init(&q, 31.25, NULL, 0, &a), RR_OK, "init");
+    CHECK_STATUS(rr_rig_init(good, 31.25, NULL, 0, &b), RR_OK, "init the reference");
     q.contact.creep.v[RR_FASTSIM_NX] = 1e9;
     for (k = 0, same = 1; k < 20; k++) {
         same &= rr_rig_step(&a, 31.25, 0.03, ra) >= 0;
@@ -515,6 +515,46 @@ static void test_rebind(const rr_rig_params *good)
  * rr_rig_method_check; a sample time at which a drive's loop is unstable
  * by rr_rig_check and rr_rig_config_check (naming it); and a creep force
  * beyond mu N from any method stops the rig (RR_ERR_FRICTION_LIMIT). */
+/* The rig's workspace: the caller's, given at rr_rig_init, kept by
+ * rr_rig_rebind and handed to the creep method (none for the methods the
+ * rig steps with today: each asks 0 doubles); no method is refused for
+ * needing one (rr_rig_method_check: not iterative, saturates). */
+static void test_workspace(const rr_rig_params *good)
+{
+    static rr_rig rig, ref;
+    static double work[8];
+    static rr_rig_params p;
+    double rec[RR_REC_COUNT], rref[RR_REC_COUNT];
+    int m, k;
+
+    p = *good;
+    for (m = 0; m < rr_method_count(); m++) {
+        rr_creep_opts o;
+        rr_creep_opts_default(&o, m);
+        CHECK((rr_rig_method_check(&o) == RR_OK)
+              == (!rr_method_get(m)->iterative && rr_method_get(m)->saturates),
+              "rr_rig_method_check: not iterative and saturating, whatever the workspace");
+        if (rr_rig_method_check(&o) == RR_OK) {
+            p.contact.creep = o;
+            CHECK(rr_rig_workspace_len(&p) == rr_creep_workspace_len(&o, NULL),
+                  "rr_rig_workspace_len: the method's for the ellipse");
+        }
+    }
+    CHECK(rr_rig_workspace_len(NULL) == 0, "rr_rig_workspace_len(NULL)");
+    p = *good;
+    CHECK_STATUS(rr_rig_init(&p, 31.25, work, 8, &rig), RR_OK, "init with a workspace");
+    CHECK(rig.work == work && rig.work_len == 8 && rig.contact.work == work
+          && rig.contact.work_len == 8, "the workspace kept, and bound to the contact model");
+    CHECK_STATUS(rr_rig_rebind(&rig, &p), RR_OK, "rebind");
+    CHECK(rig.work == work && rig.contact.work == work, "rebind keeps it");
+    CHECK_STATUS(rr_rig_init(&p, 31.25, NULL, 0, &ref), RR_OK, "init without");
+    for (k = 0; k < 40; k++) {
+        const int st = rr_rig_step(&rig, 5.0, 0.02, rec);
+        CHECK(st >= 0 && st == rr_rig_step(&ref, 5.0, 0.02, rref), "a step, as without");
+    }
+    CHECK(memcmp(rec, rref, sizeof rec) == 0, "a workspace no method reads changes nothing");
+}
+
 static void test_sanity(const rr_rig_params *good)
 {
     static rr_rig rig;
@@ -530,9 +570,11 @@ static void test_sanity(const rr_rig_params *good)
     rr_creep_opts_default(&p.contact.creep, RR_METHOD_LINEAR);
     CHECK_STATUS(rr_rig_method_check(&p.contact.creep), RR_ERR_METHOD, "linear: no limit");
     CHECK_STATUS(rr_rig_check(&p), RR_ERR_METHOD, "the rig refuses the linear theory");
-    CHECK_STATUS(rr_rig_init(&p, 31.25, &rig), RR_ERR_METHOD, "and does not start with it");
+    CHECK_STATUS(rr_rig_init(&p, 31.25, NULL, 0, &rig), RR_ERR_METHOD, "and does not start with it");
     rr_creep_opts_default(&p.contact.creep, RR_METHOD_EXACT);
-    CHECK_STATUS(rr_rig_check(&p), RR_ERR_METHOD, "the exact solver: a workspace");
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_METHOD, "the exact solver: iterative");
+    CHECK(rr_creep_iterative(&p.contact.creep) && rr_rig_workspace_len(&p) == 0,
+          "the exact solver: refused for its iterations, so no workspace asked");
     rr_creep_opts_default(&p.contact.creep, RR_METHOD_POLACH);
     CHECK_STATUS(rr_rig_check(&p), RR_OK, "Polach saturates: taken");
     CHECK_STATUS(rr_rig_method_check(NULL), RR_ERR_NULL, "NULL options");
@@ -553,7 +595,7 @@ static void test_sanity(const rr_rig_params *good)
     CHECK_CLOSE(hi, 8.768e-3, 0.0, 1e-3, "wheelset: up to 8.8 ms");
     p.T = p.roller_pi.T = p.wheelset_pi.T = p.roller_enc.T = p.wheelset_enc.T = 0.01;
     CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "10 ms: the roller's loop unstable");
-    CHECK_STATUS(rr_rig_init(&p, 31.25, &rig), RR_ERR_PARAM, "and the rig does not start");
+    CHECK_STATUS(rr_rig_init(&p, 31.25, NULL, 0, &rig), RR_ERR_PARAM, "and the rig does not start");
     p.T = p.roller_pi.T = p.wheelset_pi.T = p.roller_enc.T = p.wheelset_enc.T = 2e-5;
     CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "20 us: the wheelset's loop unstable");
     p.roller_pi.Kp = p.roller_pi.KI = p.wheelset_pi.Kp = p.wheelset_pi.KI = 0.0;
@@ -578,7 +620,7 @@ static void test_sanity(const rr_rig_params *good)
     p.contact.friction.A = 1.0;         /* Coulomb friction: FaStrip's */
     p.contact.friction.B = 0.0;
     p.adhesion.n = 0;
-    CHECK_STATUS(rr_rig_init(&p, 31.25, &rig), RR_OK, "init");
+    CHECK_STATUS(rr_rig_init(&p, 31.25, NULL, 0, &rig), RR_OK, "init");
     for (k = 0; k < 500 && (st = rr_rig_step(&rig, 31.25, 0.04, rec)) >= 0; k++)
         CHECK(rec[RR_REC_ADHESION] <= p.contact.friction.mu0 * (1.0 + 1e-9),
               "no adhesion above mu0 recorded as a success");
@@ -594,7 +636,7 @@ int main(void)
     static rr_rig_params p;
     static rr_rig rig;
     setup(&t, &p);
-    CHECK_STATUS(rr_rig_init(&p, 5.0 / 0.16, &rig), RR_OK, "init");
+    CHECK_STATUS(rr_rig_init(&p, 5.0 / 0.16, NULL, 0, &rig), RR_OK, "init");
     test_equilibrium(&rig);
     test_jacobian(&rig);
     test_steps(&p);
@@ -605,6 +647,7 @@ int main(void)
     test_external_commands(&p);
     test_adhesion(&p);
     test_rebind(&p);
+    test_workspace(&p);
     test_sanity(&p);
     return rr_test_summary();
 }

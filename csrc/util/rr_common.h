@@ -47,11 +47,13 @@ enum rr_status {
                                    what is not a command): set by the loop that calls it */
     RR_ERR_INTERRUPTED = -17,   /* stopped by the caller's interrupt hook (rr_interrupt) */
     RR_ERR_FRICTION_LIMIT = -18, /* a creep force exceeds mu N: the method broke its limit */
-    RR_ERR_UNTRUSTED = -19      /* a run's samples did not converge too often to be trusted:
+    RR_ERR_UNTRUSTED = -19,     /* a run's samples did not converge too often to be trusted:
                                    set by the loop that judges the run */
+    RR_ERR_PATCH = -20          /* a contact patch the method does not take (an undeformed
+                                   distance on a grid, for a method of the ellipse only) */
 };
 
-#define RR_STATUS_MIN (-19)
+#define RR_STATUS_MIN (-20)
 #define RR_STATUS_MAX 1
 
 /* Message of a status code; a fixed string, never NULL. */

@@ -4,6 +4,8 @@
 /* each message at its code (designated: a row cannot land on another code) */
 #define AT(code) [(code) - RR_STATUS_MIN]
 static const char *const rr_messages[] = {
+    AT(RR_ERR_PATCH) = "the method does not take this contact patch (it is defined on the Hertz "
+        "ellipse only, not on an undeformed distance on a grid)",
     AT(RR_ERR_UNTRUSTED) = "too many samples did not converge (their inner iterations ended above "
         "the tolerance): the run cannot be trusted",
     AT(RR_ERR_FRICTION_LIMIT) = "a creep force exceeds mu N: the method broke its friction limit",

@@ -84,7 +84,7 @@ PyObject *py_kalker(PyObject *self, PyObject *args)
 const char *const case_names[NCASE] = {"cx", "cy", "cphi", "a", "b", "N",
                                        "mu", "G", "nu", "speed", "A", "B"};
 
-void load_case(const input *in, npy_intp i, rr_contact_case *c, rr_friction *fr)
+void load_case(const input *in, npy_intp i, rr_contact_problem *c)
 {
     c->cx = IN(in[0], i);
     c->cy = IN(in[1], i);
@@ -92,12 +92,38 @@ void load_case(const input *in, npy_intp i, rr_contact_case *c, rr_friction *fr)
     c->a = IN(in[3], i);
     c->b = IN(in[4], i);
     c->N = IN(in[5], i);
-    fr->mu0 = IN(in[6], i);
+    c->friction.mu0 = IN(in[6], i);
     c->G = IN(in[7], i);
     c->nu = IN(in[8], i);
     c->speed = IN(in[9], i);
-    fr->A = IN(in[10], i);
-    fr->B = IN(in[11], i);
+    c->friction.A = IN(in[10], i);
+    c->friction.B = IN(in[11], i);
+    c->patch = RR_PATCH_ELLIPSE;
+}
+
+/* The problem of one case's NCASE numbers v[] (in case_names' order). */
+static void case_of(const double *v, rr_contact_problem *c)
+{
+    input in[NCASE];
+    int k;
+    for (k = 0; k < NCASE; k++) {
+        in[k].data = (const char *)&v[k];
+        in[k].stride = 0;
+    }
+    load_case(in, 0, c);
+}
+
+/* The argument of the case's calls (case_names) holding each member of an
+ * ellipse problem, by enum rr_problem_field; NULL: none (the grid's) */
+static const char *const case_arg[RR_PF_COUNT] = {
+    [RR_PF_A] = "a", [RR_PF_B] = "b", [RR_PF_N] = "N", [RR_PF_G] = "G", [RR_PF_NU] = "nu",
+    [RR_PF_CX] = "cx", [RR_PF_CY] = "cy", [RR_PF_CPHI] = "cphi", [RR_PF_SPEED] = "speed",
+    [RR_PF_MU0] = "mu", [RR_PF_FRICTION_A] = "friction.A", [RR_PF_FRICTION_B] = "friction.B",
+};
+
+const char *case_blame(int field)
+{
+    return field > RR_PF_NONE && field < RR_PF_COUNT ? case_arg[field] : NULL;
 }
 
 static int creep_kernel(void *ctx, npy_intp start, npy_intp stop)
@@ -105,11 +131,10 @@ static int creep_kernel(void *ctx, npy_intp start, npy_intp stop)
     elementwise *b = ctx;
     npy_intp i;
     for (i = start; i < stop; i++) {
-        rr_contact_case c;
-        rr_friction fr;
+        rr_contact_problem c;
         rr_forces f;
-        load_case(b->in, i, &c, &fr);
-        b->st[i] = (npy_int8)rr_creep_forces_checked(&b->creep, &c, &fr, b->work, b->work_len,
+        load_case(b->in, i, &c);
+        b->st[i] = (npy_int8)rr_creep_forces_checked(&b->creep, &c, b->work, b->work_len,
                                                      &b->stop.hook, &f);
         b->out[0][i] = f.fx;
         b->out[1][i] = f.fy;
@@ -151,8 +176,7 @@ PyObject *py_creep_forces(PyObject *self, PyObject *args, PyObject *kwargs)
 PyObject *py_creep_forces1(PyObject *self, PyObject *const *args, Py_ssize_t nargs)
 {
     double v[NCASE];
-    rr_contact_case c;
-    rr_friction fr;
+    rr_contact_problem c = {0};
     rr_forces f;
     int k, st;
     (void)self;
@@ -168,23 +192,12 @@ PyObject *py_creep_forces1(PyObject *self, PyObject *const *args, Py_ssize_t nar
         if (v[k] == -1.0 && PyErr_Occurred())
             return NULL;
     }
-    c.cx = v[0];
-    c.cy = v[1];
-    c.cphi = v[2];
-    c.a = v[3];
-    c.b = v[4];
-    c.N = v[5];
-    fr.mu0 = v[6];
-    c.G = v[7];
-    c.nu = v[8];
-    c.speed = v[9];
-    fr.A = v[10];
-    fr.B = v[11];
+    case_of(v, &c);
     {
         const rr_creep_checked *o = &((CreepOptionsObject *)args[0])->k;
         const size_t work_len = o->work_len;
         if (work_len == 0) {
-            st = rr_creep_forces_checked(o, &c, &fr, NULL, 0, NULL, &f);
+            st = rr_creep_forces_checked(o, &c, NULL, 0, NULL, &f);
         } else {
             /* a method with a workspace is a long computation: the GIL is let
              * go, Ctrl-C noticed within the case */
@@ -194,7 +207,7 @@ PyObject *py_creep_forces1(PyObject *self, PyObject *const *args, Py_ssize_t nar
                 return PyErr_NoMemory();
             interrupt_hook_init(&stop);
             Py_BEGIN_ALLOW_THREADS
-            st = rr_creep_forces_checked(o, &c, &fr, work, work_len, &stop.hook, &f);
+            st = rr_creep_forces_checked(o, &c, work, work_len, &stop.hook, &f);
             Py_END_ALLOW_THREADS
             PyMem_Free(work);
             if (stop.stopped)
@@ -205,8 +218,7 @@ PyObject *py_creep_forces1(PyObject *self, PyObject *const *args, Py_ssize_t nar
 }
 
 typedef struct {
-    rr_contact_case c;
-    rr_friction fr;
+    rr_contact_problem c;
     const rr_creep_opts *o;
     rr_forces f;
     rr_fastsim_field field;
@@ -218,7 +230,7 @@ static int fastsim_field_kernel(void *ctx, npy_intp start, npy_intp stop)
     fastsim_field_call *k = ctx;
     (void)start;
     (void)stop;
-    k->st = rr_creep_field(&k->c, &k->fr, k->o, &k->f, &k->field);
+    k->st = rr_creep_field(&k->c, k->o, &k->f, &k->field);
     return 0;
 }
 
@@ -266,7 +278,7 @@ PyObject *py_fastsim_field(PyObject *self, PyObject *args, PyObject *kwargs)
                      (Py_ssize_t)n);
         return NULL;
     }
-    d->field_shape(&o.o, &rows, &cols);
+    d->field_shape(&o.o, NULL, &rows, &cols);
     dims[0] = rows;
     dims[1] = cols;
     for (k = 0; k < 7; k++) {
@@ -281,7 +293,7 @@ PyObject *py_fastsim_field(PyObject *self, PyObject *args, PyObject *kwargs)
     call.field.py = OUT(arr[4]);
     call.field.slip = (signed char *)PyArray_DATA((PyArrayObject *)arr[5]);
     call.field.area = OUT(arr[6]);
-    load_case(in, 0, &call.c, &call.fr);
+    load_case(in, 0, &call.c);
     call.o = &o.o;
     if (run_batch(fastsim_field_kernel, &call, 1, 1.0) < 0)
         goto fail;
@@ -290,4 +302,36 @@ PyObject *py_fastsim_field(PyObject *self, PyObject *args, PyObject *kwargs)
 fail:
     release(arr, 7);
     return NULL;
+}
+
+/* creep_blame(opts, cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B, status)
+ * -> the name of the argument of one case that the method's status blames
+ * (rr_creep_blame mapped to the case's arguments), or None where no one
+ * argument is: for the message of a failed element. */
+PyObject *py_creep_blame(PyObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    double v[NCASE];
+    rr_contact_problem c = {0};
+    const char *name;
+    int k, st;
+    (void)self;
+    if (nargs != NCASE + 2 || !PyObject_TypeCheck(args[0], &CreepOptionsType)
+        || !((CreepOptionsObject *)args[0])->ready) {
+        PyErr_Format(PyExc_TypeError, "creep_blame: expected a CreepOptions, %d numbers and "
+                     "a status", NCASE);
+        return NULL;
+    }
+    for (k = 0; k < NCASE; k++) {
+        v[k] = PyFloat_AsDouble(args[k + 1]);
+        if (v[k] == -1.0 && PyErr_Occurred())
+            return NULL;
+    }
+    st = (int)PyLong_AsLong(args[NCASE + 1]);
+    if (st == -1 && PyErr_Occurred())
+        return NULL;
+    case_of(v, &c);
+    name = case_blame(rr_creep_blame(&((CreepOptionsObject *)args[0])->k, &c, st));
+    if (!name)
+        Py_RETURN_NONE;
+    return PyUnicode_FromString(name);
 }

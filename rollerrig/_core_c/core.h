@@ -169,8 +169,12 @@ CORE_PRIVATE PyObject *py_check_creep_options(PyObject *self, PyObject *args);
 #define NCASE 12
 CORE_PRIVATE extern const char *const case_names[NCASE];
 
-/* Case i of the NCASE inputs in[]. */
-CORE_PRIVATE void load_case(const input *in, npy_intp i, rr_contact_case *c, rr_friction *fr);
+/* Case i of the NCASE inputs in[]: an ellipse problem (its grid untouched). */
+CORE_PRIVATE void load_case(const input *in, npy_intp i, rr_contact_problem *c);
+
+/* The case's argument (case_names) holding a member of its problem (enum
+ * rr_problem_field), or NULL where none does (RR_PF_NONE, the grid's). */
+CORE_PRIVATE const char *case_blame(int field);
 
 CORE_PRIVATE PyObject *py_hertz(PyObject *self, PyObject *args);
 CORE_PRIVATE PyObject *py_hertz1(PyObject *self, PyObject *const *args, Py_ssize_t nargs);
@@ -178,11 +182,13 @@ CORE_PRIVATE PyObject *py_kalker(PyObject *self, PyObject *args);
 CORE_PRIVATE PyObject *py_creep_forces(PyObject *self, PyObject *args, PyObject *kwargs);
 CORE_PRIVATE PyObject *py_creep_forces1(PyObject *self, PyObject *const *args, Py_ssize_t nargs);
 CORE_PRIVATE PyObject *py_fastsim_field(PyObject *self, PyObject *args, PyObject *kwargs);
+CORE_PRIVATE PyObject *py_creep_blame(PyObject *self, PyObject *const *args, Py_ssize_t nargs);
 
 /* ------------------------------------------------------------- exact.c */
 
 CORE_PRIVATE PyObject *py_exact_table_builtin(PyObject *self, PyObject *unused);
 CORE_PRIVATE PyObject *py_exact_hertz_problem(PyObject *self, PyObject *args, PyObject *kwargs);
+CORE_PRIVATE PyObject *py_exact_field(PyObject *self, PyObject *args, PyObject *kwargs);
 CORE_PRIVATE PyObject *py_exact_solve(PyObject *self, PyObject *args);
 
 /* ---------------------------------------------------------- geometry.c */

@@ -34,13 +34,19 @@ static PyMethodDef core_methods[] = {
      "check_creep_options(func, {method: ..., <its options>}) -> None, or ValueError"},
     {"creep_forces1", (PyCFunction)(void (*)(void))py_creep_forces1, METH_FASTCALL,
      "creep_forces1(opts, cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B) -> (fx, fy, mz, status)"},
+    {"creep_blame", (PyCFunction)(void (*)(void))py_creep_blame, METH_FASTCALL,
+     "creep_blame(opts, cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B, status) -> the argument "
+     "the method's status blames, or None"},
     {"exact_hertz_problem", (PyCFunction)(void (*)(void))py_exact_hertz_problem,
      METH_VARARGS | METH_KEYWORDS,
      "exact_hertz_problem(<as creep_forces, one case>, method='exact', <options>) -> (status, "
      "mx, my, dx, dy, x0, y0, A, B, N, G, nu, mu, cx, cy, cphi, spin_shift, tol, maxit)"},
+    {"exact_field", (PyCFunction)(void (*)(void))py_exact_field, METH_VARARGS | METH_KEYWORDS,
+     "exact_field([opts,] <as creep_forces, one case>, method='exact', <options>) -> (status, "
+     "blamed, grid, results, pn, px, py, sx, sy, state)"},
     {"exact_solve", py_exact_solve, METH_VARARGS,
-     "exact_solve(mx, my, dx, dy, x0, y0, h, A, B, N, G, nu, mu, cx, cy, cphi, spin_shift, "
-     "tol, maxit) -> (status, results, pn, px, py, sx, sy, state)"},
+     "exact_solve(opts, h, dx, dy, x0, y0, N, mu, G, nu, cx, cy, cphi) -> (status, blamed, "
+     "grid, results, pn, px, py, sx, sy, state)"},
     {"fastsim_field", (PyCFunction)(void (*)(void))py_fastsim_field,
      METH_VARARGS | METH_KEYWORDS,
      "fastsim_field(<as creep_forces, one case>) -> (fx, fy, mz, status, x, y, pn, px, py, slip, area)"},
@@ -219,11 +225,12 @@ static int add_rows(PyObject *m, const char *name, int n, PyObject *(*row)(int))
 }
 
 /* The registry as _core.METHODS: a tuple of (name, doc, options, has_field,
- * saturates, in_loop, coulomb_only, in_rig), in_loop True where the method
- * needs no workspace (a time-loop method: the rig's contact model takes it),
- * in_rig where the rig steps with it (rr_rig_method_check: in_loop and
- * saturates), coulomb_only
- * True where it refuses a falling friction law, options a tuple of (name, type, unit, default, lo, hi,
+ * saturates, in_loop, coulomb_only, in_rig, takes_grid), in_loop True where
+ * a case has bounded work (not iterative: a time-loop method, the rig's
+ * contact model takes it), in_rig where the rig steps with it
+ * (rr_rig_method_check: in_loop and saturates), coulomb_only True where it
+ * refuses a falling friction law, takes_grid where it takes a contact
+ * problem on a grid (the exact theory), options a tuple of (name, type, unit, default, lo, hi,
  * lo_open, hi_open, choices, doc): type "int", "real" or "choice"; an
  * integer's default and range as ints, a choice's default as its name (its
  * range None), choices a tuple of names (empty but for a choice). */
@@ -273,11 +280,12 @@ static int add_methods(PyObject *m)
         }
         rr_creep_opts o;
         rr_creep_opts_default(&o, i);
-        row = Py_BuildValue("(ssNNNNNN)", d->name, d->doc, opts,
+        row = Py_BuildValue("(ssNNNNNNN)", d->name, d->doc, opts,
                             PyBool_FromLong(d->field != NULL), PyBool_FromLong(d->saturates),
-                            PyBool_FromLong(rr_creep_workspace_len(&o) == 0),
+                            PyBool_FromLong(!rr_creep_iterative(&o)),
                             PyBool_FromLong(d->coulomb_only),
-                            PyBool_FromLong(rr_rig_method_check(&o) == RR_OK));
+                            PyBool_FromLong(rr_rig_method_check(&o) == RR_OK),
+                            PyBool_FromLong(d->takes_grid));
         if (!row)
             goto fail;
         PyTuple_SET_ITEM(all, i, row);

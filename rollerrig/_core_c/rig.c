@@ -18,6 +18,7 @@ typedef struct {
     rr_contact_table table;
     rr_rig_params p;
     rr_rig rig;
+    double *work;              /* the rig's workspace (rr_rig_workspace_len), or NULL */
     int ready;                 /* 1 after a successful __init__ */
     int busy;                  /* 1 while a method works on the rig */
 } RigObject;
@@ -110,6 +111,7 @@ static void rig_leave(RigObject *self)
 
 static void Rig_dealloc(RigObject *self)
 {
+    PyMem_Free(self->work);
     Py_XDECREF(self->data);
     Py_TYPE(self)->tp_free((PyObject *)self);
 }
@@ -154,7 +156,18 @@ static int Rig_init(RigObject *self, PyObject *args, PyObject *kwargs)
     }
     Py_INCREF(dobj);
     Py_XSETREF(self->data, dobj);
-    st = rr_rig_init(&self->p, roller_speed, &self->rig);
+    {
+        /* the rig's workspace for its creep method, the rig's own: allocated
+         * here, never in a step (none for the methods it steps with today) */
+        const size_t len = rr_rig_workspace_len(&self->p);
+        PyMem_Free(self->work);
+        self->work = NULL;
+        if (len > 0 && !(self->work = PyMem_Calloc(len, sizeof(double)))) {
+            PyErr_NoMemory();
+            return -1;
+        }
+        st = rr_rig_init(&self->p, roller_speed, self->work, len, &self->rig);
+    }
     if (st < 0) {
         PyErr_Format(PyExc_ValueError, "Rig: %s", rr_status_message(st));
         return -1;

@@ -81,7 +81,7 @@ PyObject *py_rig_contact(PyObject *self, PyObject *args, PyObject *kwargs)
     rr_rig_contact_model m;
     rr_rig_contact_checked checked;
     rr_creep_checked creep;
-    double y0, dy;
+    double y0, dy, *work = NULL;
     npy_intp n, dims[2];
     int k, kin_only = 0;
     (void)self;
@@ -103,15 +103,24 @@ PyObject *py_rig_contact(PyObject *self, PyObject *args, PyObject *kwargs)
         return NULL;
     m.creep = creep.o;
     {
-        int st = rr_rig_contact_bind(&checked, &m);
+        /* the creep method's workspace, the call's own (none for the time-loop
+         * methods of today) */
+        const size_t len = rr_rig_contact_workspace_len(&m);
+        int st;
+        if (len > 0 && !(work = PyMem_Calloc(len, sizeof(double))))
+            return PyErr_NoMemory();
+        st = rr_rig_contact_bind(&checked, &m, work, len);
         if (st < 0) {
             PyErr_Format(PyExc_ValueError, "rig_contact: invalid model: %s",
                          rr_status_message(st));
+            PyMem_Free(work);
             return NULL;
         }
     }
-    if (parse_inputs("rig_contact", objs, state_names, NSTATE, &n, b.in) < 0)
+    if (parse_inputs("rig_contact", objs, state_names, NSTATE, &n, b.in) < 0) {
+        PyMem_Free(work);
         return NULL;
+    }
     dims[1] = n;
     out[0] = PyArray_SimpleNew(1, &n, NPY_INT8);
     dims[0] = NPOSE;
@@ -137,9 +146,12 @@ PyObject *py_rig_contact(PyObject *self, PyObject *args, PyObject *kwargs)
     if (run_batch(rig_contact_kernel, &b, n,
                   kin_only ? 8.0 : 8.0 + 2.0 * creep.cost) < 0)
         goto fail;
-    if ((res = outputs_tuple(out, 6)) != NULL)
+    if ((res = outputs_tuple(out, 6)) != NULL) {
+        PyMem_Free(work);
         return res;
+    }
 fail:
+    PyMem_Free(work);
     release(out, 6);
     return NULL;
 }

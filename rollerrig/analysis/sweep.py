@@ -482,7 +482,13 @@ def sweep(func, grid, *, chunk=None, backend="threads", workers=None, client=Non
             for i, (n, ax) in enumerate(zip(names, axes))}
         args.update({k: np.asarray(v, dtype=float) for k, v in fixed.items()
                      if isinstance(v, numbers.Real) and not isinstance(v, bool)})
-        check_status(name, data["status"], args, "warn")
+        def blame(i, code):
+            """the arguments the C core blames for the failed case i"""
+            index = np.unravel_index(i, shape)
+            kwargs = {n: float(ax[k]) for n, ax, k in zip(names, axes, index)}
+            kwargs, case_fixed = _with_friction(kwargs, fixed)
+            return contact._case_blame(name, dict(case_fixed, **kwargs), code)
+        check_status(name, data["status"], args, "warn", blame)
 
     attrs = {"function": name, **{k: _as_attr(v) for k, v in fixed.items()}}
     return _package(xr, dict(zip(names, axes)), {f: names for f in data}, data, attrs,

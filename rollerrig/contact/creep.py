@@ -31,7 +31,8 @@ import numpy as np
 
 from .. import _core
 from .._binding import (METHODS, FallingFriction, MethodInfo, OptionInfo, _broadcast, _finish,
-                       _friction, creep_options, methods_doc, used_numbers)
+                       _friction, creep_blame, creep_options, methods_doc, swap_blame,
+                       used_numbers)
 from .._errors import RollerRigError, check_status
 
 __all__ = [
@@ -146,6 +147,49 @@ def _scalar_creep(method, options, friction, case):
     return _tuple_new(CreepForces, r) if r[3] == 0 else None
 
 
+# one valid case of hertz and of kalker_coefficients, whose values replace a
+# failed element's one at a time to find the arguments its status is about
+# (swap_blame: the C core judges, no rule is restated here)
+_HERTZ_VALID = dict(A=1.0, B=1.0, N=1e4, E=2.1e11, nu=0.28, E2=2.1e11, nu2=0.28)
+_KALKER_VALID = dict(a_over_b=1.0, nu=0.28)
+
+
+def _hertz_status(*v):
+    return _core.hertz1(*v)[-1]
+
+
+def _kalker_status(*v):
+    return int(_core.kalker(*(np.array([x]) for x in v))[-1][0])
+
+
+def _case_blame(func, kwargs, code):
+    """The arguments the C core blames for status `code` of one case of the
+    library function `func` (creep_forces, hertz or kalker_coefficients)
+    given as keywords (a sweep's element), or None."""
+    if func == "creep_forces":
+        kw = dict(kwargs)
+        method, friction = kw.pop("method", "fastsim"), kw.pop("friction", None)
+        case = [kw.pop(n, d) for n, d in (("cx", None), ("cy", 0.0), ("cphi", 0.0),
+                                           ("a", None), ("b", None), ("N", None), ("mu", None),
+                                           ("G", 8.2e10), ("nu", 0.28), ("speed", 0.0))]
+        kw.pop("errors", None)
+        flat = _case(func, *case, friction, method)[3]
+        return creep_blame(creep_options(func, method, kw), flat)(0, code)
+    if func == "hertz":
+        kw = dict(_HERTZ_VALID, **{k: v for k, v in kwargs.items() if k != "errors"})
+        kw["E2"] = kwargs.get("E2") if kwargs.get("E2") is not None else kw["E"]
+        kw["nu2"] = kwargs.get("nu2") if kwargs.get("nu2") is not None else kw["nu"]
+        names = list(_HERTZ_VALID)
+        return swap_blame(_hertz_status, [np.asarray(float(kw[n])) for n in names], names,
+                          _HERTZ_VALID)(0, code)
+    if func == "kalker_coefficients":
+        kw = dict(_KALKER_VALID, **{k: v for k, v in kwargs.items() if k != "errors"})
+        names = list(_KALKER_VALID)
+        return swap_blame(_kalker_status, [np.asarray(float(kw[n])) for n in names], names,
+                          _KALKER_VALID)(0, code)
+    return None
+
+
 def hertz(A, B, N, E=2.1e11, nu=0.28, E2=None, nu2=None, *, errors=None):
     """Hertzian contact ellipse of two elastic bodies.
 
@@ -175,7 +219,8 @@ def hertz(A, B, N, E=2.1e11, nu=0.28, E2=None, nu2=None, *, errors=None):
     shape, scalar, full, flat = _broadcast("hertz", named)
     a, b, p0, delta, status = _core.hertz(*flat)
     return HertzContact(*_finish("hertz", shape, scalar, full, (a, b, p0, delta), status,
-                                 errors))
+                                 errors, swap_blame(_hertz_status, flat, list(named),
+                                                    _HERTZ_VALID)))
 
 
 def kalker_coefficients(a_over_b, nu=0.28, *, errors=None):
@@ -194,7 +239,9 @@ def kalker_coefficients(a_over_b, nu=0.28, *, errors=None):
                                            dict(a_over_b=a_over_b, nu=nu))
     c11, c22, c23, c33, status = _core.kalker(*flat)
     return KalkerCoefficients(*_finish("kalker_coefficients", shape, scalar, full,
-                                       (c11, c22, c23, c33), status, errors))
+                                       (c11, c22, c23, c33), status, errors,
+                                       swap_blame(_kalker_status, flat, ["a_over_b", "nu"],
+                                                  _KALKER_VALID)))
 
 
 def _case(func, cx, cy, cphi, a, b, N, mu, G, nu, speed, friction, method=None):
@@ -238,7 +285,8 @@ def creep_forces(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, method
     fx, fy, mz, status = _core.creep_forces(opts, *flat)
     # the method's own numbers may explain a failure too (beta = 1e307)
     full.update(used_numbers(method, options))
-    return CreepForces(*_finish(func, shape, scalar, full, (fx, fy, mz), status, errors))
+    return CreepForces(*_finish(func, shape, scalar, full, (fx, fy, mz), status, errors,
+                                creep_blame(opts, flat)))
 
 
 def fastsim_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, method="fastsim",
@@ -262,7 +310,7 @@ def fastsim_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, metho
         raise RollerRigError(f"{func}: one case at a time; got inputs of shape {shape}")
     fx, fy, mz, status, x, y, pn, px, py, slip, area = _core.fastsim_field(opts, *flat)
     full.update(used_numbers(method, options))
-    check_status(func, np.array(status, dtype=np.int8), full, "raise")
+    check_status(func, np.array(status, dtype=np.int8), full, "raise", creep_blame(opts, flat))
     return TractionField(x=x, y=y, pn=pn, px=px, py=py, slip=slip.astype(bool), area=area,
                          fx=fx, fy=fy, mz=mz, status=status)
 

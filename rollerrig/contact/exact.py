@@ -20,7 +20,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import _core
-from .._binding import METHODS, _as_float, check_creep_options, used_numbers
+from .._binding import (METHODS, _as_float, check_creep_options, creep_blame, creep_options,
+                        swap_blame, used_numbers)
 from .._errors import RollerRigError, check_status
 from .creep import TractionField, _case
 
@@ -55,14 +56,16 @@ def _edge(contact):
     return ", ".join(name for name, c in sides if c.any())
 
 
-def _solution(func, grid, out, args, edge_ok=False):
-    """The ExactSolution of _core.exact_solve's output; RollerRigError for an
-    error status, or (unless edge_ok) for a contact that reaches the grid's
-    edge: the grid then cut the contact area off, and the solution is not
-    that of the gap given (rig_exact takes it to size a larger grid)."""
+def _solution(func, out, args, blame, edge_ok=False):
+    """The ExactSolution of _core.exact_solve's or exact_field's output;
+    RollerRigError for an error status (naming the arguments blame(0,
+    status) gives: check_status), or (unless edge_ok) for a contact that
+    reaches the grid's edge: the grid then cut the contact area off, and the
+    solution is not that of the gap given (rig_exact takes it to size a
+    larger grid)."""
+    status, _, grid, r, pn, px, py, sx, sy, state = out
     mx, my, dx, dy, x0, y0 = grid
-    status, r, pn, px, py, sx, sy, state = out
-    check_status(func, np.array(status, dtype=np.int8), args, "raise")
+    check_status(func, np.array(status, dtype=np.int8), args, "raise", blame)
     edge = _edge(state >= 0)
     if edge and not edge_ok:
         raise RollerRigError(f"{func}: the contact reaches the grid's edge ({edge} of a "
@@ -92,16 +95,12 @@ def exact_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, nx=None
     func = "exact_field"
     options = {k: v for k, v in dict(nx=nx, ny=ny, tol=tol, maxit=maxit,
                                      spin_shift=spin_shift).items() if v is not None}
-    opts = check_creep_options(func, "exact", options)
+    opts = creep_options(func, "exact", options)
     shape, scalar, full, flat = _case(func, cx, cy, cphi, a, b, N, mu, G, nu, 0.0, None, "exact")
     if not scalar:
         raise RollerRigError(f"{func}: one case at a time; got inputs of shape {shape}")
-    pb = _core.exact_hertz_problem(*flat, **opts)
     full.update(used_numbers("exact", options))
-    check_status(func, np.array(pb[0], dtype=np.int8), full, "raise")
-    grid = pb[1:7]
-    out = _core.exact_solve(*grid, None, *pb[7:])
-    return _solution(func, grid, out, full)
+    return _solution(func, _core.exact_field(opts, *flat), full, creep_blame(opts, flat))
 
 
 def exact_solve(h, *, dx, dy, N, mu, G=8.2e10, nu=0.28, cx=0.0, cy=0.0, cphi=0.0, x0=None,
@@ -140,8 +139,7 @@ def _exact_solve(func, h, numbers, options, edge_ok=False):
                              f"side, got shape {h.shape}")
     # the options by the registry's rules (their names, ranges, integers only)
     options = {k: v for k, v in options.items() if v is not None}
-    check_creep_options(func, "exact", options)
-    opts = dict(METHODS["exact"].defaults(), **options)
+    opts = creep_options(func, "exact", options)
     full = {}
     for k, v in numbers.items():
         if v is None:
@@ -165,13 +163,23 @@ def _exact_solve(func, h, numbers, options, edge_ok=False):
                              f"dy = {dy!r}")
     x0 = float(full["x0"]) if "x0" in full else -0.5 * (mx - 1) * dx
     y0 = float(full["y0"]) if "y0" in full else -0.5 * (my - 1) * dy
-    grid = (mx, my, dx, dy, x0, y0)
     full.update(used_numbers("exact", options))
-    out = _core.exact_solve(*grid, h, 1.0, 1.0, float(full["N"]), float(full["G"]),
-                            float(full["nu"]), float(full["mu"]), float(full["cx"]),
-                            float(full["cy"]), float(full["cphi"]), float(opts["spin_shift"]),
-                            float(opts["tol"]), int(opts["maxit"]))
-    return _solution(func, grid, out, full, edge_ok)
+    names = ("dx", "dy", "x0", "y0", "N", "mu", "G", "nu", "cx", "cy", "cphi")
+    case = dict(full, x0=x0, y0=y0)
+    out = _core.exact_solve(opts, h, *(float(case[n]) for n in names))
+
+    def status_of(*values):
+        return _core.exact_solve(opts, h, *values)[0]
+    # a valid case on this grid, whose values replace the failed one's one at
+    # a time where the C core's report names no argument (a result out of
+    # range: swap_blame); the element's own size and the grid centred
+    valid = dict(dx=dx, dy=dy, x0=-0.5 * (mx - 1) * dx, y0=-0.5 * (my - 1) * dy, N=1e4,
+                 mu=0.3, G=8.2e10, nu=0.28, cx=0.0, cy=0.0, cphi=0.0)
+    swapped = swap_blame(status_of, [np.asarray(float(case[n])) for n in names], list(names),
+                         valid)
+    blamed = out[1]
+    return _solution(func, out, full,
+                     lambda i, code: [blamed] if blamed else swapped(i, code), edge_ok)
 
 
 def exact_richardson(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, nx=27,

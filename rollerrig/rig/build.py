@@ -17,8 +17,8 @@ from .params import (_FILE_OPTIONS, _SAMPLE_TIME, PARAMETERS, _c_values, _check_
                      _parameters, _short)
 
 
-#: the creep-force methods the rig steps with (the registry's in_rig: no
-#: workspace, and |F| <= mu N; csrc/rig/rr_rig.h, rr_rig_method_check)
+#: the creep-force methods the rig steps with (the registry's in_rig: not
+#: iterative, and |F| <= mu N; csrc/rig/rr_rig.h, rr_rig_method_check)
 RIG_METHODS = tuple(name for name, m in METHODS.items() if m.in_rig)
 
 

@@ -33,7 +33,8 @@ import numpy as np
 
 from .. import _core
 from .._errors import RollerRigError, status_message
-from .._binding import _broadcast, _finish, _friction, check_creep_options, core, loop_method
+from .._binding import (_broadcast, _finish, _friction, check_creep_options, core, loop_method,
+                        swap_blame)
 from ..geometry.wheelset import ContactTable
 
 __all__ = ["RigPose", "WheelContact", "RigContact", "rig_contact", "LinearCreepages",
@@ -114,6 +115,14 @@ def _model(func, table, mu, E, nu, vmin, friction):
     return (float(g.roller_radius), estar, G, float(nu), float(mu), fA, fB, float(vmin))
 
 
+# one valid state and model, whose values replace a failed element's one at a
+# time to find the arguments its status is about (swap_blame: the C core
+# judges, no rule is restated here)
+_VALID_STATE = dict(x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spin=10.0,
+                    roller_spin=10.0, N_left=1e4, N_right=1e4, mu=0.4, E=2.1e11, nu=0.28,
+                    vmin=1e-3)
+
+
 def rig_contact(table, *, x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spin,
                 roller_spin, N_left, N_right, mu=0.4, friction=None, E=2.1e11, nu=0.28,
                 vmin=1e-3, method="fastsim", kinematics_only=False, errors=None, **options):
@@ -151,9 +160,19 @@ def rig_contact(table, *, x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, s
         # no loads were used: do not let a placeholder load be blamed
         full = {k: v for k, v in full.items() if not k.startswith("N_")}
     # the model's constants may explain a failure too (an extreme modulus)
-    full.update({name: np.asarray(float(v)) for name, v in
-                 (("mu", mu), ("E", E), ("nu", nu), ("vmin", vmin))})
-    _finish(func, shape, scalar, full, (), status, errors)
+    constants = {name: np.asarray(float(v)) for name, v in
+                 (("mu", mu), ("E", E), ("nu", nu), ("vmin", vmin))}
+    full.update(constants)
+
+    def status_of(*v):
+        """the status of one state under the model of constants v[10:]"""
+        m = _model(func, table, *v[10:], friction)
+        return int(core(_core.rig_contact, table.data, table.y0, table.dy, m,
+                        *(np.array([x]) for x in v[:10]),
+                        kinematics_only=bool(kinematics_only), **opts)[0][0])
+    names = list(named) + list(constants)
+    _finish(func, shape, scalar, full, (), status, errors,
+            swap_blame(status_of, flat + list(constants.values()), names, _VALID_STATE))
     status = status.reshape(shape)
     p = RigPose(pose[0:3].reshape((3,) + shape), pose[3].reshape(shape),
                 pose[4].reshape(shape), pose[5:8].reshape((3,) + shape),
