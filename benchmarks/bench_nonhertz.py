@@ -1,7 +1,9 @@
-"""Time per case of the non-Hertzian wheel-on-roller patch (rollerrig.geometry.patch)
-on CONTACT's 72 roller-rig cases (tests/data/roller_nonhertz_cases.csv):
+"""Time per case of the non-Hertzian wheel-on-roller patch and of rig_exact on
+CONTACT's 72 roller-rig cases (tests/data/roller_nonhertz_cases.csv), before
+and after the C core took them over (issue 24: csrc/geometry/rr_gap.h,
+rr_wheel_exact.h):
 
-    python benchmarks/bench_nonhertz.py
+    python benchmarks/bench_nonhertz.py [--repeat R]
 
 - h alone: undeformed_distance on CONTACT's inputs (its pose, reference and
   0.4 mm grid);
@@ -10,19 +12,37 @@ on CONTACT's 72 roller-rig cases (tests/data/roller_nonhertz_cases.csv):
 - the full chain: rig_exact from rollerrig's geometry with the vertical
   load (its first, coarse pass, the load's iteration and the rebuild), on
   the 0.4 mm grid and on the default grid (n = 40);
-- CONTACT: the file's t_calc, cntc_calculate's wall time per case (its header:
-  a 2-core shared machine), for context; it includes CONTACT's own search
-  for the vertical load.
+- "before" is the Python construction as it was (tests/_nonhertz_python.py,
+  which the tests hold the C one to), "after" the package's;
+- where the full chain's time goes (after): the Python before the core
+  (the zero-gap pose and contact point, the wheelset's motion from
+  rig_contact), the patches built (their count times one build's time:
+  undeformed_distance at the final patch's options less its pose search)
+  and the solves (their count times one exact_solve of the final patch, a
+  fresh workspace: an upper bound, the core keeps a grid's spectra from
+  solve to solve);
+- CONTACT: the file's t_calc, cntc_calculate's wall time per case (its
+  header: a 2-core shared machine), for context; it includes CONTACT's own
+  search for the vertical load.
+Times are medians of R repeats (default 1) per case, then the median and
+the largest over the cases; the machine is shared, so they move by 10-30 %
+from run to run.
 """
+import argparse
 import csv
 import os
+import sys
 import time
 
 import numpy as np
 
 import rollerrig as rr
+from rollerrig.geometry.patch import _pose_and_point
+from rollerrig.rig.exact import _motion
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "tests"))
+import _nonhertz_python as before  # noqa: E402  (the construction the core replaced)
 
 
 def cases():
@@ -34,47 +54,105 @@ def cases():
             for r in rows]
 
 
+def timed(f, c, repeat):
+    t = []
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        out = f(c)
+        t.append(time.perf_counter() - t0)
+    return float(np.median(t)), out
+
+
 def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--repeat", type=int, default=1)
+    repeat = ap.parse_args().repeat
     geo = {"miniprof": rr.RigGeometry.measured_pair(),
            "s1002_uic60": rr.RigGeometry.standard(roller_radius=0.8001)}
     tables = {k: rr.contact_table(g, -0.0065, 0.0065, 261) for k, g in geo.items()}
     cs = cases()
 
-    def patch(c):
-        return rr.undeformed_distance(geo[c["pair"]], c["y_ws"], approach=c["approach"],
-                                      reference=(c["s_roller"], c["delta"]), dx=c["dx"],
-                                      dy=c["ds"], z=c["wheel_radius"] - c["z_ws"],
-                                      roll=c["roll"])
+    def mk(m):
+        def patch(c):
+            return m.undeformed_distance(geo[c["pair"]], c["y_ws"], approach=c["approach"],
+                                         reference=(c["s_roller"], c["delta"]), dx=c["dx"],
+                                         dy=c["ds"], z=c["wheel_radius"] - c["z_ws"],
+                                         roll=c["roll"])
 
-    def solve(c):
-        p = patch(c)
-        return rr.exact_solve(p.h, dx=p.dx, dy=p.dy, x0=p.x0, y0=p.y0, N=c["FN"], mu=c["mu"],
-                              G=c["G"], nu=c["nu"], cx=c["cx"], cy=c["cy"], cphi=c["cphi"])
+        def solve(c):
+            p = patch(c)
+            return rr.exact_solve(p.h, dx=p.dx, dy=p.dy, x0=p.x0, y0=p.y0, N=c["FN"],
+                                  mu=c["mu"], G=c["G"], nu=c["nu"], cx=c["cx"], cy=c["cy"],
+                                  cphi=c["cphi"])
 
-    def chain(c, **kw):
-        return rr.rig_exact(geo[c["pair"]], c["y_ws"], Fz=c["FZ"], mu=c["mu"], spin=c["spin"],
-                            roller_spin=c["roller_spin"], E=2 * c["G"] * (1 + c["nu"]),
-                            nu=c["nu"], table=tables[c["pair"]], **kw)
+        def chain(c, **kw):
+            return m.rig_exact(geo[c["pair"]], c["y_ws"], Fz=c["FZ"], mu=c["mu"],
+                               spin=c["spin"], roller_spin=c["roller_spin"],
+                               E=2 * c["G"] * (1 + c["nu"]), nu=c["nu"],
+                               table=tables[c["pair"]], **kw)
+        return patch, solve, chain
 
-    rows = []
-    for name, f in (("h alone (CONTACT's inputs, 0.4 mm)", patch),
-                    ("h and one solve (CONTACT's inputs, 0.4 mm)", solve),
-                    ("full chain, Fz (0.4 mm)", lambda c: chain(c, dx=c["dx"], dy=c["ds"])),
-                    ("full chain, Fz (n = 40)", chain)):
-        f(cs[0])                                        # warm up
-        t = []
-        for c in cs:
-            t0 = time.perf_counter()
-            f(c)
-            t.append(time.perf_counter() - t0)
-        rows.append((name, 1e3 * np.median(t), 1e3 * np.max(t)))
+    rows, after_chains = [], {}
+    impls = (("before", mk(before)), ("after", mk(rr)))
+    for name, which in (("h alone (CONTACT's inputs, 0.4 mm)", 0),
+                        ("h and one solve (CONTACT's inputs, 0.4 mm)", 1),
+                        ("full chain, Fz (0.4 mm)", 2), ("full chain, Fz (n = 40)", 3)):
+        row = [name]
+        for label, (patch, solve, chain) in impls:
+            f = {0: patch, 1: solve,
+                 2: lambda c, chain=chain: chain(c, dx=c["dx"], dy=c["ds"]),
+                 3: chain}[which]
+            f(cs[0])                                     # warm up
+            res = [timed(f, c, repeat) for c in cs]
+            t = np.array([r[0] for r in res])
+            row += [1e3 * np.median(t), 1e3 * t.max()]
+            if which >= 2:
+                row.append(np.median([r[1].passes for r in res]))
+                if label == "after":
+                    after_chains[name] = (t, [r[1] for r in res])
+            else:
+                row.append(float("nan"))
+        rows.append(row)
     tc = np.array([c["t_calc"] for c in cs])
-    rows.append(("CONTACT cntc_calculate (the file's t_calc)", 1e3 * np.median(tc),
-                 1e3 * np.max(tc)))
-    print("| what | ms per case, median | max |")
-    print("|---|---|---|")
-    for name, med, mx in rows:
-        print(f"| {name} | {med:.1f} | {mx:.1f} |")
+    print("| what | before: ms per case, median | max | solves | after: median | max "
+          "| solves |")
+    print("|---|---|---|---|---|---|---|")
+    for name, bm, bx, bs, am, ax, as_ in rows:
+        s = (lambda v: "" if np.isnan(v) else f"{v:g}")
+        print(f"| {name} | {bm:.1f} | {bx:.1f} | {s(bs)} | {am:.1f} | {ax:.1f} | {s(as_)} |")
+    print(f"| CONTACT cntc_calculate (the file's t_calc) | | | | {1e3 * np.median(tc):.1f} | "
+          f"{1e3 * tc.max():.1f} | |")
+
+    # where the full chain's time goes (after)
+    print()
+    print("| after, full chain | per case, median: total ms | pose and motion (Python) | "
+          "builds x one build | solves x one solve (fresh) |")
+    print("|---|---|---|---|---|")
+    for name, (t, res) in after_chains.items():
+        pre, build, solve = [], [], []
+        for c, e in zip(cs, res):
+            g, p = geo[c["pair"]], e.patch
+            t0 = time.perf_counter()
+            _pose_and_point("bench", g, c["y_ws"], "left")
+            _motion(g, c["y_ws"], c["spin"], c["roller_spin"], 0.0, 0.0, 1e-3,
+                    tables[c["pair"]])
+            t1 = time.perf_counter()
+            rr.undeformed_distance(g, c["y_ws"], approach=p.approach, cover=p.cover,
+                                   dx=p.dx, dy=p.dy, z=p.z, roll=p.roll)
+            t2 = time.perf_counter()
+            _pose_and_point("bench", g, c["y_ws"], "left")
+            t3 = time.perf_counter()
+            rr.exact_solve(p.h, dx=p.dx, dy=p.dy, x0=p.x0, y0=p.y0, N=e.N, mu=c["mu"],
+                           G=c["G"], nu=c["nu"], cx=e.cx, cy=e.cy, cphi=e.cphi)
+            t4 = time.perf_counter()
+            pre.append(t1 - t0)
+            build.append(e.builds * ((t2 - t1) - (t3 - t2)))
+            solve.append(e.passes * (t4 - t3))
+        med = (lambda v: 1e3 * float(np.median(v)))
+        builds = np.median([e.builds for e in res])
+        passes = np.median([e.passes for e in res])
+        print(f"| {name} | {med(t):.1f} | {med(pre):.2f} | {builds:g} x = {med(build):.2f} | "
+              f"{passes:g} x = {med(solve):.1f} |")
 
 
 if __name__ == "__main__":

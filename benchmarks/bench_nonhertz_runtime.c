@@ -242,8 +242,7 @@ static int patch_forces(const table_t *tb, const patch_t *p, double dz, const po
     double vw[3], vr[3], slip[3], V, cx, cy, cphi, cxc, cyc, c2, cc, sy, sp, muN, x, y;
     double corr[3], dd[3];
     rr_kalker_coeffs kc;
-    rr_contact_case cs;
-    rr_friction fr;
+    rr_contact_problem cs;
     rr_forces f;
     int k, st, c, m;
     if (e <= 0.0) {
@@ -293,6 +292,7 @@ static int patch_forces(const table_t *tb, const patch_t *p, double dz, const po
     cc = sqrt(c2);
     sy = K22 / (G * c2 * kc.c22);
     sp = K23 / (G * c2 * cc * kc.c23);
+    memset(&cs, 0, sizeof cs);          /* a zeroed problem is an ellipse */
     cs.a = cc * sqrt(ab);
     cs.b = cc / sqrt(ab);
     cs.N = N;
@@ -302,11 +302,11 @@ static int patch_forces(const table_t *tb, const patch_t *p, double dz, const po
     cs.cy = sy * cyc;
     cs.cphi = sp * cphi;
     cs.speed = 0.0;
-    fr.mu0 = mu;
-    fr.A = 1.0;
-    fr.B = 0.0;
+    cs.friction.mu0 = mu;
+    cs.friction.A = 1.0;
+    cs.friction.B = 0.0;
     table_calls++;
-    if ((st = rr_exact_table_forces(&rr_exact_table_builtin, &cs, &fr, &f)) < 0)
+    if ((st = rr_exact_table_forces(&rr_exact_table_builtin, &cs, &f)) < 0)
         return st;
     /* the correction: linear in e between its nodes, held at the ends */
     muN = mu * N;

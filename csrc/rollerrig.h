@@ -20,6 +20,8 @@
  *   rr_spline.h    natural cubic splines for profiles
  *   rr_geometry.h  contact search, wheelset pose, contact tables
  *   rr_tables.h    tables from profile points, the rig's default table
+ *   rr_gap.h       the undeformed distance of a wheel on its roller (non-Hertzian patch)
+ *   rr_wheel_exact.h  one wheel solved by the exact theory on that patch, its load found
  *   rr_rig_contact.h  one contact evaluation of the wheelset on the rollers
  *   rr_control.h   PI speed controllers, drive lag, encoders, creepage controller
  *   rr_ode.h       fixed-step L-stable integrators (ROS2, TR-BDF2, lin. Euler)
@@ -56,6 +58,8 @@
 #include "util/rr_spline.h"
 #include "geometry/rr_geometry.h"
 #include "geometry/rr_tables.h"
+#include "geometry/rr_gap.h"
+#include "geometry/rr_wheel_exact.h"
 #include "rig/rr_rig_contact.h"
 #include "rig/rr_control.h"
 #include "util/rr_ode.h"

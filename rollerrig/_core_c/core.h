@@ -12,6 +12,8 @@
  *   contact.c      Hertz, Kalker's coefficients, creep forces, traction fields
  *   exact.c        the exact theory: its problem, its solver, its table
  *   geometry.c     contact search, contact tables, profile splines and tables
+ *   gap.c          the undeformed distance of a wheel on its roller (rr_gap), and
+ *                  one wheel solved by the exact theory on it (rr_wheel_exact)
  *   rig_contact.c  the rig's contact model over arrays of states
  *   rig.c          the rig in time (the Rig type), its schedule and speed loops
  *   rig_config.c   every problem of the rig's parameters (rig_config_report)
@@ -198,6 +200,19 @@ CORE_PRIVATE PyObject *py_exact_solve(PyObject *self, PyObject *args);
 CORE_PRIVATE int parse_table(PyObject *obj, double y0, double dy, const char *func,
                              rr_contact_table *t);
 
+/* The two wheel-roller pairs of a RigGeometry (its _arrays(): knots,
+ * values and second derivatives of four profiles, then its _params():
+ * r0, R0, wheel_y, roller_y per side), parsed by PAIR_FORMAT; prof[]
+ * keeps the NPROF arrays alive (release them).  0, or -1 with an
+ * exception naming func. */
+#define NPROF 12
+#define PAIR_FORMAT "OOOOOOOOOOOO(dddddddd)"
+#define PAIR_ARGS(pobj, par) &pobj[0], &pobj[1], &pobj[2], &pobj[3], &pobj[4], &pobj[5], \
+    &pobj[6], &pobj[7], &pobj[8], &pobj[9], &pobj[10], &pobj[11], &par[0], &par[1], &par[2], \
+    &par[3], &par[4], &par[5], &par[6], &par[7]
+CORE_PRIVATE int parse_pairs(PyObject *const *pobj, const double *par, const char *func,
+                             PyArrayObject **prof, rr_wheel_roller *pair);
+
 CORE_PRIVATE PyObject *py_wheelset_contact(PyObject *self, PyObject *args);
 CORE_PRIVATE PyObject *py_contact_table(PyObject *self, PyObject *args);
 CORE_PRIVATE PyObject *py_table_lookup(PyObject *self, PyObject *args);
@@ -205,6 +220,11 @@ CORE_PRIVATE PyObject *py_spline_fit(PyObject *self, PyObject *args);
 CORE_PRIVATE PyObject *py_analytic_profile(PyObject *self, PyObject *args);
 CORE_PRIVATE PyObject *py_profile_table(PyObject *self, PyObject *args);
 CORE_PRIVATE PyObject *py_rig_table(PyObject *self, PyObject *args);
+
+/* --------------------------------------------------------------- gap.c */
+
+CORE_PRIVATE PyObject *py_gap_build(PyObject *self, PyObject *args);
+CORE_PRIVATE PyObject *py_wheel_exact(PyObject *self, PyObject *args);
 
 /* ------------------------------------------------ rig_contact.c, rig.c */
 

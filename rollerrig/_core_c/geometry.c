@@ -24,15 +24,14 @@ static PyArrayObject *profile_array(PyObject *obj, const char *name)
 }
 
 #define NGEO 11   /* per side: y z s_wheel s_roller r R delta A B gap two_point */
-#define NPROF 12  /* knots, values, second derivatives of four profiles */
 
 /* The four profiles (each its spline: knots, values, second derivatives,
  * the Profile's own, so that Python and C evaluate the same curve) and the
  * eight placement parameters (r0, R0, wheel_y, roller_y per side) as the two
  * wheel-roller pairs; prof[] keeps the arrays alive.  0, or -1 with an
  * exception set. */
-static int parse_pairs(PyObject *const *pobj, const double *par, const char *func,
-                       PyArrayObject **prof, rr_wheel_roller *pair)
+int parse_pairs(PyObject *const *pobj, const double *par, const char *func,
+                PyArrayObject **prof, rr_wheel_roller *pair)
 {
     static const char *const pnames[4] = {"wheel_left", "roller_left", "wheel_right",
                                           "roller_right"};
@@ -71,11 +70,6 @@ static int parse_pairs(PyObject *const *pobj, const double *par, const char *fun
     }
     return 0;
 }
-
-#define PAIR_FORMAT "OOOOOOOOOOOO(dddddddd)"
-#define PAIR_ARGS(pobj, par) &pobj[0], &pobj[1], &pobj[2], &pobj[3], &pobj[4], &pobj[5], \
-    &pobj[6], &pobj[7], &pobj[8], &pobj[9], &pobj[10], &pobj[11], &par[0], &par[1], &par[2], \
-    &par[3], &par[4], &par[5], &par[6], &par[7]
 
 /* One side's geometry into column i of a [NGEO, n] block. */
 static void store_geo(double *d, npy_intp n, npy_intp i, const rr_contact_point *q)

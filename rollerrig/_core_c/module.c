@@ -18,6 +18,33 @@ static PyObject *py_status_message(PyObject *self, PyObject *arg)
     return PyUnicode_FromString(rr_status_message((int)code));
 }
 
+/* The undeformed distance's references and the reasons of a failed build
+ * (rr_gap.h), as GAP_<NAME> constants, and those of rr_wheel_exact
+ * (WHEEL_EXACT_<NAME>). */
+static int add_gap(PyObject *m)
+{
+    static const struct { const char *name; int value; } c[] = {
+        {"GAP_WEIGHTED", RR_GAP_WEIGHTED}, {"GAP_POINT", RR_GAP_POINT},
+        {"GAP_GIVEN", RR_GAP_GIVEN}, {"GAP_MAX_N", RR_GAP_MAX_N},
+        {"GAP_MAX_RUNS", RR_GAP_MAX_RUNS},
+        {"GAP_OFF_PROFILE", RR_GAP_OFF_PROFILE}, {"GAP_FOLD", RR_GAP_FOLD},
+        {"GAP_APART", RR_GAP_APART}, {"GAP_REGION_ENDS", RR_GAP_REGION_ENDS},
+        {"GAP_REGION_LONG", RR_GAP_REGION_LONG}, {"GAP_REGION_BEYOND", RR_GAP_REGION_BEYOND},
+        {"GAP_TOO_MANY", RR_GAP_TOO_MANY}, {"GAP_PATCH_REACHES", RR_GAP_PATCH_REACHES},
+        {"GAP_PATCH_NONFINITE", RR_GAP_PATCH_NONFINITE}, {"GAP_RUNS", RR_GAP_RUNS},
+        {"GAP_WEIGHTS", RR_GAP_WEIGHTS}, {"GAP_SCAN", RR_GAP_SCAN},
+        {"GAP_H_BUFFER", RR_GAP_H_BUFFER}, {"GAP_FAR", RR_GAP_FAR},
+        {"WHEEL_EXACT_GAP", RR_WHEEL_EXACT_GAP}, {"WHEEL_EXACT_HERTZ", RR_WHEEL_EXACT_HERTZ},
+        {"WHEEL_EXACT_SOLVE", RR_WHEEL_EXACT_SOLVE}, {"WHEEL_EXACT_EDGE", RR_WHEEL_EXACT_EDGE},
+        {"WHEEL_EXACT_SETTLE", RR_WHEEL_EXACT_SETTLE},
+        {"WHEEL_EXACT_CREEP", RR_WHEEL_EXACT_CREEP}};
+    int k;
+    for (k = 0; k < RR_COUNTOF(c); k++)
+        if (PyModule_AddIntConstant(m, c[k].name, c[k].value) < 0)
+            return -1;
+    return 0;
+}
+
 static PyMethodDef core_methods[] = {
     {"hertz", py_hertz, METH_VARARGS,
      "hertz(A, B, N, E1, nu1, E2, nu2) -> (a, b, p0, delta, status)"},
@@ -53,6 +80,16 @@ static PyMethodDef core_methods[] = {
     {"wheelset_contact", py_wheelset_contact, METH_VARARGS,
      "wheelset_contact(12 profile arrays (s, z, z'' each), 8 params, y_ws, nsamples, tol, sep)"
      " -> (status, z, roll, left, right)"},
+    {"gap_build", py_gap_build, METH_VARARGS,
+     "gap_build(12 profile arrays, 8 params, side, y_ws, z, roll, s_roller, s_wheel, delta, "
+     "reference, ref_s_roller, ref_delta, approach, cover, n, dx, dy, combine) -> (status, h, "
+     "{patch}): rr_gap_build"},
+    {"wheel_exact", py_wheel_exact, METH_VARARGS,
+     "wheel_exact(12 profile arrays, 8 params, side, y_ws, (z0, roll0), (s_roller, s_wheel, "
+     "delta, A, B), (N, Fz, E, nu, mu), (creep_given, cx, cy, cphi), ((c), (v), (w)), "
+     "roller_spin, vmin, (reference, ref_s_roller, ref_delta, approach, cover, n, dx, dy, "
+     "combine), (z, roll, loaded, passes), (tol, maxit, spin_shift)) -> (status, results, pn, "
+     "px, py, sx, sy, state, h, {patch}, {result}): rr_wheel_exact"},
     {"contact_table", py_contact_table, METH_VARARGS,
      "contact_table(12 profile arrays, 8 params, y0, dy, n, nsamples, tol, sep)"
      " -> (data, status, bad_y)"},
@@ -333,6 +370,7 @@ PyMODINIT_FUNC PyInit__core(void)
         || PyModule_AddIntConstant(m, "ERR_CONTROLLER", RR_ERR_CONTROLLER) < 0
         || PyModule_AddIntConstant(m, "EXACT_MAX_GRID", RR_EXACT_MAX_GRID) < 0
         || PyModule_AddIntConstant(m, "EXACT_MARGIN", RR_EXACT_MARGIN) < 0
+        || add_gap(m) < 0
         || PyModule_AddIntConstant(m, "ERR_FRICTION_LIMIT", RR_ERR_FRICTION_LIMIT) < 0
         || PyModule_AddIntConstant(m, "ERR_UNTRUSTED", RR_ERR_UNTRUSTED) < 0
         || add_rows(m, "RIG_PARAMETERS", rr_rig_param_count(), param_tuple) < 0

@@ -54,6 +54,12 @@ profiles' change of direction across the patch (at the flange root the
 normal turns by some degrees within it, and the half-space assumption
 degrades).  Zero yaw and longitudinal shift only (a yawed wheel crosses its
 roller at an angle: h and the frame change).
+
+The construction is the C core's (csrc/geometry/rr_gap.h, rr_gap_build),
+which a C program calls as well; this module checks the arguments, finds
+the zero-gap pose and Hertz's approach, and words the core's reasons for
+a patch it cannot build.  tests/_nonhertz_python.py keeps the Python
+construction it replaced, and tests/test_gap.py holds the two together.
 """
 import warnings
 from dataclasses import dataclass
@@ -62,7 +68,7 @@ from typing import NamedTuple
 import numpy as np
 
 from .. import _core
-from .._errors import RollerRigError, RollerRigWarning
+from .._errors import RollerRigError, RollerRigWarning, status_message
 from .wheelset import RigGeometry, wheelset_contact
 
 __all__ = ["Patch", "undeformed_distance", "patch_shape", "PatchShape"]
@@ -128,167 +134,6 @@ class Patch:
         return np.broadcast_to((self.y0 + self.dy * np.arange(my))[:, None], (my, mx))
 
 
-class _Pair:
-    """One side's wheel and roller, placed in the rig at a pose; their
-    cross-sections at longitudinal position x, in the rig's (Y, Z)."""
-
-    def __init__(self, geometry, side, y_ws, z, roll):
-        r0, R0, wheel_y, roller_y = geometry._params()[:4]
-        left = side == "left"
-        self.sigma = 1.0 if left else -1.0
-        self.wheel = geometry.wheel if left else (geometry.wheel_right or geometry.wheel)
-        self.roller = geometry.roller if left else (geometry.roller_right or geometry.roller)
-        self.r0, self.R0, self.wheel_y, self.roller_y = r0, R0, wheel_y, roller_y
-        self.y_ws, self.z, self.roll = float(y_ws), float(z), float(roll)
-
-    @staticmethod
-    def _drop(radius, x):
-        """radius - sqrt(radius^2 - x^2), without cancellation."""
-        x2 = np.square(x)
-        return x2 / (radius + np.sqrt(np.maximum(np.square(radius) - x2, 0.0)))
-
-    def roller_yz(self, sr, x=0.0, zr=None):
-        """Rig (Y, Z) of the roller's cross-section at x; zr: the profile's
-        heights at sr if known (z_r = R - R0, up)."""
-        zr = -self.roller.z_at(sr) if zr is None else zr
-        return (self.sigma * (self.roller_y + sr),
-                zr - self._drop(self.R0 + zr, x))
-
-    def wheel_yz(self, s, x=0.0, zw=None):
-        """Rig (Y, Z) of the wheel's cross-section at x; zw: the profile's
-        heights at s if known (z_w = r0 - r)."""
-        zw = -self.wheel.z_at(s) if zw is None else zw
-        yl = self.sigma * (self.wheel_y + s)
-        zl = -self.r0 + zw + self._drop(self.r0 - zw, x)
-        c, sn = np.cos(self.roll), np.sin(self.roll)
-        return self.y_ws + yl * c - zl * sn, self.z + yl * sn + zl * c
-
-    def roller_radius(self, sr):
-        return self.R0 - self.roller.z_at(sr)
-
-    def wheel_radius(self, s):
-        return self.r0 + self.wheel.z_at(s)
-
-    def roller_angle(self, sr):
-        """Inclination of the roller's surface [rad], > 0 rising outward."""
-        return np.arctan(-self.roller.slope(sr))
-
-
-class _Frame:
-    """The tangent plane through P (rig (Y, Z)) at angle delta."""
-
-    def __init__(self, sigma, P, delta):
-        self.P = np.asarray(P, dtype=float)
-        self.delta = float(delta)
-        c, s = np.cos(delta), np.sin(delta)
-        self.t2 = np.array([c, sigma * s])
-        self.n = np.array([-sigma * s, c])
-
-    def project(self, Y, Z):
-        dY, dZ = Y - self.P[0], Z - self.P[1]
-        return dY * self.t2[0] + dZ * self.t2[1], dY * self.n[0] + dZ * self.n[1]
-
-    def vectors(self):
-        t1 = np.array([1.0, 0.0, 0.0])
-        t2 = np.array([0.0, *self.t2])
-        n = np.array([0.0, *self.n])
-        return t1, t2, n
-
-
-def _samples(profile, centre, window, step):
-    lo = max(profile.y_min, centre - window)
-    hi = min(profile.y_max, centre + window)
-    if not hi > lo:
-        raise RollerRigError(f"undeformed_distance: the reference point lies off the "
-                             f"{profile.kind} profile ({centre!r} m, profile from "
-                             f"{profile.y_min:g} to {profile.y_max:g} m)")
-    k = int(np.ceil((hi - lo) / step)) + 1
-    return np.linspace(lo, hi, k)
-
-
-def _single_valued(yc, zeta, k0):
-    """The run of samples around index k0 along which yc is strictly
-    monotonic and finite (the cross-section is a function of yc there),
-    ordered by increasing yc."""
-    d = np.diff(yc)
-    k0 = int(np.clip(k0, 0, d.size - 1))
-    sgn = np.sign(d[k0])
-    good = np.isfinite(d) & (np.sign(d) == sgn) & np.isfinite(zeta[1:]) & np.isfinite(zeta[:-1])
-    if not good[k0]:
-        raise RollerRigError("undeformed_distance: a profile folds at the reference point")
-    bad = np.flatnonzero(~good)
-    lo = bad[bad < k0]
-    hi = bad[bad > k0]
-    lo = int(lo[-1]) + 1 if lo.size else 0
-    hi = int(hi[0]) if hi.size else d.size
-    y, z = yc[lo:hi + 1], zeta[lo:hi + 1]
-    return (y, z) if sgn > 0 else (y[::-1], z[::-1])
-
-
-class _Sections:
-    """Both bodies' cross-sections at x in the plane's (y, zeta): the gap
-    along n at any (x, y), from dense profile samples (linear between
-    samples _SAMPLE apart: 1e-8 m where the profile's radius is 5 mm)."""
-
-    def __init__(self, pair, frame, sr_P, sw_P, window, step):
-        self.pair, self.frame = pair, frame
-        self.sr = _samples(pair.roller, sr_P, window, step)
-        self.sw = _samples(pair.wheel, sw_P, window, step)
-        self._zr = -pair.roller.z_at(self.sr)
-        self._zw = -pair.wheel.z_at(self.sw)
-        self.k_r = int(np.argmin(np.abs(self.sr - sr_P)))
-        self.k_w = int(np.argmin(np.abs(self.sw - sw_P)))
-        self._roller_s = self._wheel_s = None
-        yr, _ = self._section(0.0, "roller")
-        yw, _ = self._section(0.0, "wheel")
-        self.lo, self.hi = max(yr[0], yw[0]), min(yr[-1], yw[-1])
-        if not self.hi > self.lo:
-            _apart(pair)
-
-    def _section(self, x, body):
-        if body == "roller":
-            Y, Z = self.pair.roller_yz(self.sr, x, self._zr)
-            k0 = self.k_r
-        else:
-            Y, Z = self.pair.wheel_yz(self.sw, x, self._zw)
-            k0 = self.k_w
-        yc, zeta = self.frame.project(Y, Z)
-        return _single_valued(yc, zeta, k0)
-
-    def gap(self, x, y):
-        """h along n at longitudinal x (a number) and lateral positions y;
-        NaN outside both sections."""
-        y = np.asarray(y, dtype=float)
-        yr, zr = self._section(x, "roller")
-        yw, zw = self._section(x, "wheel")
-        g = np.interp(y, yw, zw) - np.interp(y, yr, zr)
-        g[(y < max(yr[0], yw[0])) | (y > min(yr[-1], yw[-1]))] = np.nan
-        return g
-
-    def roller_at(self, y):
-        """Roller profile coordinate of the roller's point at lateral y of
-        the plane (x = 0)."""
-        if self._roller_s is None:
-            yc, _ = self.frame.project(*self.pair.roller_yz(self.sr, 0.0, self._zr))
-            self._roller_s = _single_valued(yc, self.sr, self.k_r)
-        return np.interp(y, *self._roller_s)
-
-    def wheel_at(self, y):
-        """Wheel profile coordinate of the wheel's point at lateral y."""
-        if self._wheel_s is None:
-            yc, _ = self.frame.project(*self.pair.wheel_yz(self.sw, 0.0, self._zw))
-            self._wheel_s = _single_valued(yc, self.sw, self.k_w)
-        return np.interp(y, *self._wheel_s)
-
-
-def _apart(pair):
-    """RollerRigError: the cross-sections lie side by side (the pose given
-    puts the wheel beside its roller)."""
-    raise RollerRigError(f"undeformed_distance: at y_ws = {pair.y_ws!r} m, axle height z = "
-                         f"{pair.z!r} m and roll {pair.roll!r} rad the wheel's and the "
-                         f"roller's cross-sections do not overlap laterally: no patch")
-
-
 def _runs(mask):
     """(start, stop) index pairs of the runs of True in a 1-D mask."""
     m = np.concatenate(([False], mask, [False])).astype(np.int8)
@@ -314,6 +159,119 @@ def _pose_and_point(func, geometry, y_ws, side):
     y_ws = _number(func, "y_ws", y_ws, positive=False)
     c = wheelset_contact(geometry, y_ws)
     return float(c.z[0]), float(c.roll[0]), getattr(c, side)
+
+
+def _reference(func, reference):
+    """(code, s_roller, delta) of the core (rr_gap.h) for a reference."""
+    if isinstance(reference, str) and reference in ("point", "weighted"):
+        return (_core.GAP_POINT if reference == "point" else _core.GAP_WEIGHTED), 0.0, 0.0
+    if isinstance(reference, (tuple, list)) and len(reference) == 2:
+        sr = _number(func, "reference s_roller", reference[0], positive=False)
+        delta = _number(func, "reference delta", reference[1], positive=False)
+        if not abs(delta) < 0.5 * np.pi:
+            raise RollerRigError(f"{func}: the reference angle must be within +-pi/2, got "
+                                 f"{delta!r}")
+        return _core.GAP_GIVEN, sr, delta
+    raise RollerRigError(f"{func}: reference must be 'point', 'weighted' or "
+                         f"(s_roller, delta), got {reference!r:.60}")
+
+
+def _combine(func, combine):
+    combine = _number(func, "combine", combine, positive=False)
+    if combine < 0:
+        # a negative one kept not even the deepest interval (issue 24: min()
+        # of an empty sequence)
+        raise RollerRigError(f"{func}: combine must be >= 0 [m], got {combine!r}")
+    return combine
+
+
+def _gap_error(func, status, info, geometry, side, y_ws, load, z, roll):
+    """The RollerRigError of a failed rr_gap_build: its reason (info["why"])
+    in words, with the numbers the core left for it."""
+    why = info["why"]
+    level = info["level"]
+
+    def too_large(where):
+        return (f"{func}: at y_ws = {y_ws!r} m and {load} the region to cover (h <= cover x "
+                f"approach = {level:.3g} m) {where}: a load or approach beyond one planar "
+                f"patch on these profiles")
+    if why == _core.GAP_OFF_PROFILE:
+        left = side == "left"
+        prof = (geometry.roller if left else (geometry.roller_right or geometry.roller)) \
+            if info["off_body"] == 0 else \
+            (geometry.wheel if left else (geometry.wheel_right or geometry.wheel))
+        msg = (f"{func}: the reference point lies off the {prof.kind} profile "
+               f"({info['off_s']!r} m, profile from {info['off_lo']:g} to {info['off_hi']:g} m)")
+    elif why == _core.GAP_FOLD:
+        msg = f"{func}: a profile folds at the reference point"
+    elif why == _core.GAP_APART:
+        msg = (f"{func}: at y_ws = {y_ws!r} m, axle height z = {z!r} m and roll {roll!r} rad "
+               f"the wheel's and the roller's cross-sections do not overlap laterally: no patch")
+    elif why == _core.GAP_REGION_ENDS:
+        msg = too_large(f"reaches the end of the profiles in the tangent plane (y from "
+                        f"{info['plane_lo']:g} to {info['plane_hi']:g} m from the reference "
+                        f"point)")
+    elif why == _core.GAP_REGION_LONG:
+        msg = too_large(f"is {2 * info['x_t']:.3g} m long, as long as the radii "
+                        f"({info['r']:.3g}, {info['R']:.3g} m)")
+    elif why == _core.GAP_REGION_BEYOND:
+        msg = too_large(f"ends, {info['x_t']:.3g} m ahead and behind, beyond the profiles in "
+                        f"the tangent plane")
+    elif why == _core.GAP_TOO_MANY:
+        msg = (f"{func}: dx = {info['dx']!r} m, dy = {info['dy']!r} m: this patch "
+               f"({2.0 * info['half_length']:.3g} m by {info['hi'] - info['lo']:.3g} m) would "
+               f"need {_count(info['need_my'])} x {_count(info['need_mx'])} elements, at most "
+               f"{_core.EXACT_MAX_GRID} a side (give larger elements)")
+    elif why == _core.GAP_PATCH_REACHES:
+        msg = (f"{func}: at y_ws = {y_ws!r} m and {load} the patch reaches where a profile "
+               f"folds or ends in the tangent plane (y from {info['plane_lo']:g} to "
+               f"{info['plane_hi']:g} m from the reference point)")
+    elif why == _core.GAP_PATCH_NONFINITE:
+        msg = (f"{func}: at y_ws = {y_ws!r} m and {load} the patch reaches where a profile "
+               f"folds or ends in the tangent plane")
+    elif why == _core.GAP_RUNS:
+        msg = too_large(f"has more than {_core.GAP_MAX_RUNS} separate intervals")
+    elif why == _core.GAP_WEIGHTS:
+        msg = (f"{func}: at y_ws = {y_ws!r} m and {load} the weighted reference's weights "
+               f"vanish or overflow (the interpenetration ** 2.5): give a larger approach or "
+               f"reference='point'")
+    elif why == _core.GAP_FAR:
+        msg = (f"{func}: dy = {info['dy']!r} m: the region to cover ({info['lo']:.3g} to "
+               f"{info['hi']:.3g} m in the plane) lies more than 1e8 elements from the "
+               f"reference point: elements far too small for where it is")
+    elif why == _core.GAP_SCAN:
+        msg = (f"{func}: at y_ws = {y_ws!r} m the cross-sections in the tangent plane are far "
+               f"longer than the profiles' window ({info['plane_lo']:g} to "
+               f"{info['plane_hi']:g} m): profiles with coordinates in the wrong unit?")
+    else:
+        msg = f"{func}: {status_message(status)}"
+    return RollerRigError(msg)
+
+
+def _count(v):
+    """An element count the core gave as a double, as an integer."""
+    return int(v) if np.isfinite(v) else v
+
+
+def _patch(h, info, side, y_ws, z, roll, approach, cover, lowered):
+    """The Patch of a built grid (rr_gap_build's h and numbers)."""
+    vec = (lambda k: np.array(info[k], dtype=float))
+    return Patch(h=h, dx=info["dx"], dy=info["dy"], x0=info["x0"], y0=info["y0"],
+                 point=vec("point"), wheel_point=vec("wheel_point"), lowered=lowered,
+                 t1=vec("t1"), t2=vec("t2"), n=vec("n"), delta=info["delta"],
+                 s_roller=info["s_roller"], s_wheel=info["s_wheel"], r=info["r"], R=info["R"],
+                 side=side, y_ws=y_ws, z=z, roll=roll, approach=approach, cover=cover,
+                 regions=tuple(info["regions"]), excluded=tuple(info["excluded"]))
+
+
+def _warn_excluded(func, info, y_ws, side, combine, stacklevel=3):
+    rest = info["excluded"]
+    if rest:
+        warnings.warn(f"{func}: at y_ws = {y_ws!r} m the {side} wheel has "
+                      f"{len(rest)} more interpenetration region(s) farther than "
+                      f"combine = {combine:g} m from the deepest one (at y = "
+                      f"{', '.join(f'{0.5 * (a + b):.4g}' for a, b in rest)} m in the plane): "
+                      f"a separate patch, left out", RollerRigWarning, stacklevel=stacklevel)
 
 
 def undeformed_distance(geometry, y_ws, *, side="left", N=None, approach=None, n=40, E=2.1e11,
@@ -343,10 +301,11 @@ def undeformed_distance(geometry, y_ws, *, side="left", N=None, approach=None, n
     solver's 1024 elements a side is refused before it is built).  A load
     or approach whose region reaches past the profiles in the plane, or a
     pose whose cross-sections do not overlap, is refused, naming it.
-    combine [m]: lateral intervals
-    of that region at most this far from the deepest one are on the grid,
-    the rest are a separate patch (Patch.excluded, a warning).
-    Returns a Patch (h with least value 0, its grid and frame).
+    combine [m] (>= 0): lateral intervals of that region at most this far
+    from the deepest one are on the grid, the rest are a separate patch
+    (Patch.excluded, a warning).
+    Returns a Patch (h with least value 0, its grid and frame), built by
+    the C core (csrc/geometry/rr_gap.h).
     """
     func = "undeformed_distance"
     z_ws, roll_ws, cpt = _pose_and_point(func, geometry, y_ws, side)
@@ -363,187 +322,24 @@ def undeformed_distance(geometry, y_ws, *, side="left", N=None, approach=None, n
     cover = _number(func, "cover", cover)
     if cover < 1.0:
         raise RollerRigError(f"{func}: cover must be >= 1, got {cover!r}")
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 4 <= n <= 1000:
-        raise RollerRigError(f"{func}: n must be an integer from 4 to 1000, got {n!r}")
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) \
+            or not 4 <= n <= _core.GAP_MAX_N:
+        raise RollerRigError(f"{func}: n must be an integer from 4 to {_core.GAP_MAX_N}, "
+                             f"got {n!r}")
     dx = _number(func, "dx", dx, allow_none=True)
     dy = _number(func, "dy", dy, allow_none=True)
-    combine = _number(func, "combine", combine, positive=False)
-    pair = _Pair(geometry, side, y_ws, z, roll)
-
-    # the reference point and angle
-    if isinstance(reference, str) and reference in ("point", "weighted"):
-        sr_P, delta = float(cpt.s_roller[0]), float(cpt.delta[0])
-    elif isinstance(reference, (tuple, list)) and len(reference) == 2:
-        sr_P = _number(func, "reference s_roller", reference[0], positive=False)
-        delta = _number(func, "reference delta", reference[1], positive=False)
-        if not abs(delta) < 0.5 * np.pi:
-            raise RollerRigError(f"{func}: the reference angle must be within +-pi/2, got "
-                                 f"{delta!r}")
-    else:
-        raise RollerRigError(f"{func}: reference must be 'point', 'weighted' or "
-                             f"(s_roller, delta), got {reference!r:.60}")
-    step = max(min(_SAMPLE, 0.1 * min(v for v in (dx, dy, 1.0) if v is not None)), _SAMPLE_MIN)
-    sw_P = float(cpt.s_wheel[0])
-
-    def sections(sr, dl, sw):
-        frame = _Frame(pair.sigma, pair.roller_yz(sr), dl)
-        return _Sections(pair, frame, sr, sw, _WINDOW, step)
-
-    sec = sections(sr_P, delta, sw_P)
-    if reference == "weighted":
-        sr_P, delta = _weighted_reference(pair, sr_P, sw_P, approach, delta, combine, step)
-        sec = sections(sr_P, delta, sw_P)
-    sw_P = float(sec.wheel_at(0.0))   # where P's normal meets the wheel
-    sec = sections(sr_P, delta, sw_P)
-
-    # the region to cover, at x = 0: its lateral intervals
-    level = cover * approach
-    yf = np.linspace(sec.lo, sec.hi, int(np.ceil((sec.hi - sec.lo) / step)) + 1)
-    hy = sec.gap(0.0, yf)
-    hmin = np.nanmin(hy)
-    runs, rest = _group(yf, hy - hmin <= level, int(np.nanargmin(hy)), combine)
-    lo, hi = min(a for a, _ in runs), max(b for _, b in runs)
-    kept = tuple(runs)
-    load = f"N = {float(N)!r} N" if N is not None else f"approach = {approach!r} m"
-
-    def too_large(where):
-        raise RollerRigError(f"{func}: at y_ws = {y_ws!r} m and {load} the region to cover "
-                             f"(h <= cover x approach = {level:.3g} m) {where}: a load or "
-                             f"approach beyond one planar patch on these profiles")
-    if lo <= yf[0] or hi >= yf[-1]:
-        too_large(f"reaches the end of the profiles in the tangent plane (y from "
-                  f"{sec.lo:g} to {sec.hi:g} m from the reference point)")
-    if rest:
-        warnings.warn(f"{func}: at y_ws = {y_ws!r} m the {side} wheel has "
-                      f"{len(rest)} more interpenetration region(s) farther than "
-                      f"combine = {combine:g} m from the deepest one (at y = "
-                      f"{', '.join(f'{0.5 * (a + b):.4g}' for a, b in rest)} m in the plane): "
-                      f"a separate patch, left out", RollerRigWarning, stacklevel=2)
-
-    # the half-length: where h reaches the level along x, at the widest strip
-    in_region = (yf >= lo) & (yf <= hi) & (hy - hmin <= level)
-    r_P, R_P = pair.wheel_radius(sw_P), pair.roller_radius(sr_P)
-    x_t = np.sqrt(2.0 * level / (np.cos(delta) * (1.0 / r_P + 1.0 / R_P)))
-    if not x_t < 0.5 * min(r_P, R_P):
-        too_large(f"is {2 * x_t:.3g} m long, as long as the radii ({r_P:.3g}, {R_P:.3g} m)")
-    rise = np.maximum((sec.gap(x_t, yf) - hy)[in_region], 1e-3 * level) / x_t ** 2
-    xh = float(np.max(np.sqrt((level - (hy - hmin)[in_region]) / rise)))
-    if not np.isfinite(xh):
-        too_large(f"ends, {x_t:.3g} m ahead and behind, beyond the profiles in the tangent plane")
-    if dx is None or dy is None:
-        d = max(2.0 * xh, hi - lo) / n
-        dx = d if dx is None else dx
-        dy = d if dy is None else dy
-    i_lo, i_hi = int(np.floor(-xh / dx)) - 1, int(np.ceil(xh / dx)) + 1
-    j_lo, j_hi = int(np.floor(lo / dy)) - 1, int(np.ceil(hi / dy)) + 1
-
-    def bounded():
-        # the solver's largest grid, checked before h's memory is asked for
-        mx, my = i_hi - i_lo + 1, j_hi - j_lo + 1
-        if max(mx, my) > _core.EXACT_MAX_GRID:
-            raise RollerRigError(f"{func}: dx = {dx!r} m, dy = {dy!r} m: this patch "
-                                 f"({2.0 * xh:.3g} m by {hi - lo:.3g} m) would need {my} x "
-                                 f"{mx} elements, at most {_core.EXACT_MAX_GRID} a side (give "
-                                 f"larger elements)")
-    bounded()
-    # grow the grid until the region has an exterior element on every side
-    for _ in range(1000):
-        xs = dx * np.arange(i_lo, i_hi + 1)
-        ys = dy * np.arange(j_lo, j_hi + 1)
-        if ys[0] < sec.lo or ys[-1] > sec.hi:
-            raise RollerRigError(f"{func}: at y_ws = {y_ws!r} m and {load} the patch reaches "
-                                 f"where a profile folds or ends in the tangent plane (y from "
-                                 f"{sec.lo:g} to {sec.hi:g} m from the reference point)")
-        h = np.stack([sec.gap(x, ys) for x in xs], axis=1)
-        inside = h - hmin <= level
-        inside[(ys < lo - 0.5 * dy) | (ys > hi + 0.5 * dy), :] = False   # left out
-        grow = (inside[:, 0].any(), inside[:, -1].any(), inside[0].any(), inside[-1].any())
-        if not any(grow):
-            break
-        i_lo -= grow[0]
-        i_hi += grow[1]
-        j_lo -= grow[2]
-        j_hi += grow[3]
-        bounded()
-    if not np.all(np.isfinite(h)):
-        raise RollerRigError(f"{func}: at y_ws = {y_ws!r} m and {load} the patch reaches "
-                             f"where a profile folds or ends in the tangent plane")
-    hmin_grid = float(np.min(h))
-    h = h - hmin_grid
-    pen = max(0.0, -hmin_grid)      # the pose's interpenetration along n (0 at zero gap)
-    t1, t2, nn = sec.frame.vectors()
-    P = np.array([0.0, *sec.frame.P])
-    return Patch(h=h, dx=float(dx), dy=float(dy), x0=float(xs[0]), y0=float(ys[0]), point=P,
-                 wheel_point=P - pen * nn, lowered=z_ws - z,
-                 t1=t1, t2=t2, n=nn, delta=float(delta), s_roller=float(sr_P),
-                 s_wheel=float(sw_P), r=float(r_P), R=float(R_P), side=side,
-                 y_ws=float(y_ws), z=z, roll=float(roll), approach=approach,
-                 cover=cover, regions=kept, excluded=tuple(rest))
-
-
-def _group(y, mask, deep, combine):
-    """The runs of True in mask (as (y_lo, y_hi)): those within `combine`
-    of the one holding index `deep`, merged step by step, and the rest."""
-    runs = [tuple(sorted((y[a], y[b - 1]))) for a, b in _runs(mask)]
-    lo, hi = next((a, b) for a, b in runs if a <= y[deep] <= b)
-    kept, rest = [], []
-    pending = sorted(runs, key=lambda iv: min(abs(iv[0] - y[deep]), abs(iv[1] - y[deep])))
-    grown = True
-    while grown:
-        grown = False
-        for iv in list(pending):
-            if iv[0] - hi <= combine and lo - iv[1] <= combine:
-                lo, hi = min(lo, iv[0]), max(hi, iv[1])
-                kept.append(iv)
-                pending.remove(iv)
-                grown = True
-    rest = pending
-    return sorted(kept), sorted(rest)
-
-
-def _weighted_reference(pair, sr_P, sw_P, approach, delta, combine, step):
-    """CONTACT's reference of a patch (its locate_interpen_1d and
-    set_cpatch_reference): at the pose lowered by approach / cos(delta),
-    the centre of the vertical interpenetration pen(Y) and the roller's
-    mean inclination, each lateral strip weighted by the integral over x of
-    its squared interpenetration, pen^2 (1 - x^2/t0^2)^2 over |x| < t0 =
-    sqrt(pen / a), that is 16/15 pen^2.5 / sqrt(a) (a = (1/r + 1/R)/2 the
-    strip's longitudinal curvature); delta, which sets the lowering, is
-    iterated.  Lowering the wheel by d takes d off every vertical gap, so
-    the pose's own gap g(Y), shifted to least value 0, stands for the
-    lowered one.  Returns (s_roller, delta) of the reference."""
-    sr = _samples(pair.roller, sr_P, _WINDOW, step)
-    Yr, Zr = pair.roller_yz(sr)
-    sw = _samples(pair.wheel, sw_P, _WINDOW, step)
-    Yw, Zw = pair.wheel_yz(sw)
-    k = int(np.argmin(np.abs(Yw - pair.sigma * (pair.roller_y + sr_P))))
-    Ys, Zs = _single_valued(Yw, Zw, k)
-    _, ss = _single_valued(Yw, sw, k)
-    inside = (Yr >= Ys[0]) & (Yr <= Ys[-1])
-    if not inside.any():
-        _apart(pair)
-    Yr, Zr, sr = Yr[inside], Zr[inside], sr[inside]
-    g = np.interp(Yr, Ys, Zs) - Zr
-    g -= np.min(g)
-    r = pair.wheel_radius(np.interp(Yr, Ys, ss))
-    a = 0.5 * (1.0 / r + 1.0 / pair.roller_radius(sr))
-    alpha = pair.roller_angle(sr)
-    deep = int(np.argmin(g))
-    for _ in range(50):
-        pen = approach / np.cos(delta) - g
-        runs, _ = _group(Yr, pen > 0, deep, combine)
-        keep = np.zeros(Yr.size, dtype=bool)
-        for lo, hi in runs:
-            keep |= (Yr >= lo) & (Yr <= hi)
-        w = np.where(keep, np.maximum(pen, 0.0) ** 2.5 / np.sqrt(a), 0.0)
-        new = float(np.sum(w * alpha) / np.sum(w))
-        done = abs(new - delta) < 1e-13
-        delta = new
-        if done:
-            break
-    Yc = float(np.sum(w * Yr) / np.sum(w))
-    order = slice(None) if Yr[-1] > Yr[0] else slice(None, None, -1)
-    return float(np.interp(Yc, Yr[order], sr[order])), delta
+    combine = _combine(func, combine)
+    code, ref_s, ref_d = _reference(func, reference)
+    y_ws = float(y_ws)
+    status, h, info = _core.gap_build(
+        *geometry._arrays(), geometry._params(), 0 if side == "left" else 1, y_ws, z, roll,
+        float(cpt.s_roller[0]), float(cpt.s_wheel[0]), float(cpt.delta[0]), code, ref_s, ref_d,
+        approach, cover, int(n), dx or 0.0, dy or 0.0, combine)
+    if status < 0:
+        load = f"N = {float(N)!r} N" if N is not None else f"approach = {approach!r} m"
+        raise _gap_error(func, status, info, geometry, side, y_ws, load, z, roll)
+    _warn_excluded(func, info, y_ws, side, combine)
+    return _patch(h, info, side, y_ws, z, roll, approach, cover, z_ws - z)
 
 
 # ---------------------------------------------------------------- the patch's shape

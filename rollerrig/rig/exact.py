@@ -10,17 +10,20 @@ the wheel's vertical load, the creepages from the rig's kinematics.
 The pose, as CONTACT's: h at the wheelset where the load puts it, lowered
 vertically by the approach over cos(delta) (loaded=True; the patch module
 says what that changes), and the creepages at CONTACT's material points
-(_creepages).  The frame is the patch's, that of rollerrig.rig.contact at
+(_motion).  The frame is the patch's, that of rollerrig.rig.contact at
 zero yaw and longitudinal shift: fx, fy, mz are rollerrig's (on the wheel;
-mz about n at P).
+mz about n at P).  The C core does the whole (csrc/geometry/rr_wheel_exact.h).
 """
 from dataclasses import dataclass
 
 import numpy as np
 
-from .._errors import RollerRigError
-from ..contact.exact import ExactSolution, _edge, _exact_solve
-from ..geometry.patch import Patch, _number, _pose_and_point, patch_shape, undeformed_distance
+from .. import _core
+from .._binding import METHODS, check_creep_options
+from .._errors import RollerRigError, check_status, status_message
+from ..contact.exact import ExactSolution, _solution
+from ..geometry.patch import (Patch, _combine, _gap_error, _number, _patch, _pose_and_point,
+                              _reference, _warn_excluded, patch_shape)
 from ..geometry.wheelset import contact_table
 from .contact import rig_contact
 
@@ -39,6 +42,7 @@ class RigExact:
     V: float                 #: rolling speed [m/s] (0 where the creepages were given)
     N: float                 #: normal load [N]
     passes: int              #: grids solved (the first ones find the approach and load)
+    builds: int = 0          #: patches built (the first pass's, the loaded one, rebuilds)
 
     @property
     def shape(self):
@@ -53,34 +57,25 @@ class RigExact:
         return s.fx * p.t1 + s.fy * p.t2 + s.fn * p.n
 
 
-def _creepages(geometry, p, spin, roller_spin, vy, yaw_rate, vmin, table):
-    """Kalker's creepages of patch p, as rr_creepage.h, from the rigid
-    motions of the wheelset (rig_contact's at y_ws, x = yaw = 0, its centre
-    lowered as p's pose) and of the roller (about the rig's roller axis):
-    the slip of the wheel's material point at p.wheel_point relative to
-    the roller's at P, over the rolling speed, in p's frame.  At the
-    zero-gap pose both are P (rig_contact's creepages, at rollerrig's
-    contact point); at the loaded pose the wheel's point is P moved by the
-    pose's interpenetration along -n, CONTACT's point Q: with the centre
-    lowered by pen / cos(delta) its distance from the axle is then the
-    zero-gap one less pen sin^2(delta) / cos(delta), 3e-5 of cx at the
-    flange root (delta = 0.34 rad), where the wheel's material point
-    taken at P with the zero-gap centre would differ by that."""
+def _motion(geometry, y_ws, spin, roller_spin, vy, yaw_rate, vmin, table):
+    """The wheelset's rigid motion at y_ws (rig_contact's pose at x = yaw =
+    0: centre, velocity, angular velocity), from which the core takes the
+    creepages of a patch (rr_wheel_exact.h: the slip of the wheel's
+    material point at P - pen n, CONTACT's point Q, with the centre
+    lowered as the patch's pose, relative to the roller's at P, over the
+    rolling speed).  At the zero-gap pose both points are P (rig_contact's
+    creepages, at rollerrig's contact point); at the loaded pose, with the
+    centre lowered by pen / cos(delta), the wheel's point lies pen
+    sin^2(delta) / cos(delta) nearer the axle than at the zero-gap pose,
+    3e-5 of cx at the flange root (delta = 0.34 rad)."""
     if table is None:
-        table = contact_table(geometry, p.y_ws - 1e-5, p.y_ws + 1e-5, 3)
-    c = rig_contact(table, y=p.y_ws, vy=vy, yaw_rate=yaw_rate, spin=spin,
+        table = contact_table(geometry, y_ws - 1e-5, y_ws + 1e-5, 3)
+    c = rig_contact(table, y=y_ws, vy=vy, yaw_rate=yaw_rate, spin=spin,
                     roller_spin=roller_spin, N_left=1.0, N_right=1.0, kinematics_only=True,
                     vmin=vmin, errors="raise")
     pose = c.pose
-    R0 = float(geometry.roller_radius)
-    centre = np.asarray(pose.c) - np.array([0.0, 0.0, p.lowered])
-    vw = np.asarray(pose.v) + np.cross(np.asarray(pose.w), p.wheel_point - centre)
-    wr = np.array([0.0, -float(roller_spin), 0.0])
-    vr = np.cross(wr, p.point - np.array([0.0, 0.0, -R0]))
-    V = max(abs(float(np.dot(vw + vr, p.t1))) / 2.0, vmin)
-    slip = vw - vr
-    return (float(np.dot(slip, p.t1)) / V, float(np.dot(slip, p.t2)) / V,
-            float(np.dot(np.asarray(pose.w) - wr, p.n)) / V, V)
+    return tuple(tuple(float(v) for v in np.asarray(a).reshape(3))
+                 for a in (pose.c, pose.v, pose.w))
 
 
 def rig_exact(geometry, y_ws, *, mu, N=None, Fz=None, side="left", spin=None,
@@ -97,7 +92,7 @@ def rig_exact(geometry, y_ws, *, mu, N=None, Fz=None, side="left", spin=None,
     Creepages: cx, cy, cphi given (at the patch's reference point, in its
     frame), or from the kinematics: spin, roller_spin [rad/s] as for
     rig_contact (vy [m/s], yaw_rate [rad/s]; zero yaw and longitudinal
-    shift; see _creepages for the material points); table: a ContactTable
+    shift; see _motion for the material points); table: a ContactTable
     of geometry for the wheelset's pose and rates (default: one built
     around y_ws).  reference: as undeformed_distance (default "weighted",
     CONTACT's reference: the patch's centre, not its deepest point).
@@ -115,6 +110,8 @@ def rig_exact(geometry, y_ws, *, mu, N=None, Fz=None, side="left", spin=None,
     tol, maxit: the solver's.  **patch_options: further options of
     undeformed_distance (approach, cover, dx, dy, combine, z, roll).
     Returns RigExact (the ExactSolution, the Patch, the creepages used).
+    The whole of it, patches, load iteration and solves, runs in the C
+    core (csrc/geometry/rr_wheel_exact.h).
     """
     func = "rig_exact"
     if (N is None) == (Fz is None):
@@ -131,91 +128,88 @@ def rig_exact(geometry, y_ws, *, mu, N=None, Fz=None, side="left", spin=None,
     unknown = set(patch_options) - {"approach", "cover", "dx", "dy", "combine", "z", "roll"}
     if unknown:
         raise RollerRigError(f"{func}: unknown option(s) {sorted(unknown)}")
-    G = E / (2.0 * (1.0 + nu))
     opts = dict(patch_options)
-    approach = opts.pop("approach", None)
-    cover = opts.pop("cover", 1.5)
-    z_given = opts.pop("z", None)
-    z0, _, cpt = _pose_and_point(func, geometry, y_ws, side)
-    delta0 = float(cpt.delta[0])
-    first_ref = "point" if reference == "weighted" else reference
-    count = 0
-
-    def build(load, nn, a, cov, ref, lower, coarse=1.0):
-        z = z_given if z_given is not None else (z0 - a / np.cos(delta0) if lower else None)
-        o = {k: coarse * v if k in ("dx", "dy") and v is not None else v
-             for k, v in opts.items()}
-        try:
-            return undeformed_distance(geometry, y_ws, side=side, N=load, n=nn, E=E, nu=nu,
-                                       approach=a, cover=cov, reference=ref, z=z, **o)
-        except RollerRigError as e:
-            if coarse == 1.0 or (o.get("dx") is None and o.get("dy") is None):
-                raise
-            raise RollerRigError(f"{func}: the first pass, on elements twice dx, dy: "
-                                 f"{e}") from None
-
-    def solve(p, load):
-        nonlocal count
-        count += 1
-        if all(given):
-            k = (float(cx), float(cy), float(cphi), 0.0)
-        else:
-            k = _creepages(geometry, p, spin, roller_spin, vy, yaw_rate, vmin, table)
-        # a contact at the grid's edge is taken here: it sizes the next grid
-        s = _exact_solve(func, p.h, dict(dx=p.dx, dy=p.dy, x0=p.x0, y0=p.y0, N=load, mu=mu,
-                                         G=G, nu=nu, cx=k[0], cy=k[1], cphi=k[2]),
-                         dict(tol=tol, maxit=maxit), edge_ok=True)
-        return s, k
-
-    def at(load, a):
-        """Patch, solution and creepages for the normal load; a: an
-        estimate of the approach (None: find it)."""
-        cov = 1.1
-        if a is None:
-            if passes == 2:
-                s, _ = solve(build(load, max(4, n // 2), approach, cover, first_ref, False,
-                                   coarse=2.0), load)
-                a = s.delta
-            else:
-                a, cov = approach, cover
-                if a is None:
-                    from ..contact.creep import hertz
-                    a = float(hertz(float(cpt.A[0]), float(cpt.B[0]), load, E=E,
-                                    nu=nu).delta)
-        p = build(load, n, a, cov, reference, loaded)
-        s, k = solve(p, load)
-        # the contact lies where h <= the approach found: a grid that covers
-        # less, or a contact that reaches the grid's edge, is solved again
-        for _ in range(4):
-            if not (_edge(s.contact) or s.delta > p.approach * p.cover):
-                return p, s, k
-            p = build(load, n, s.delta, 1.3, reference, loaded)
-            s, k = solve(p, load)
-        raise RollerRigError(f"{func}: at y_ws = {y_ws!r} m the contact keeps reaching the "
-                             f"grid's edge")
-
-    if Fz is None:
-        p, s, k = at(N, None)
+    approach = _number(func, "approach", opts.pop("approach", None), allow_none=True)
+    cover = _number(func, "cover", opts.pop("cover", 1.5))
+    if cover < 1.0:
+        raise RollerRigError(f"{func}: cover must be >= 1, got {cover!r}")
+    z_given = _number(func, "z", opts.pop("z", None), allow_none=True)
+    roll_given = _number(func, "roll", opts.pop("roll", None), positive=False,
+                         allow_none=True)
+    dx = _number(func, "dx", opts.pop("dx", None), allow_none=True)
+    dy = _number(func, "dy", opts.pop("dy", None), allow_none=True)
+    combine = _combine(func, opts.pop("combine", 4e-3))
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) \
+            or not 4 <= n <= _core.GAP_MAX_N:
+        raise RollerRigError(f"{func}: n must be an integer from 4 to {_core.GAP_MAX_N}, "
+                             f"got {n!r}")
+    code, ref_s, ref_d = _reference(func, reference)
+    E = _number(func, "E", E)
+    nu = _number(func, "nu", nu, positive=False)
+    mu = _number(func, "mu", mu)
+    G = E / (2.0 * (1.0 + nu))
+    # the solver's options by the registry's rules (names, ranges, integers)
+    check_creep_options(func, "exact", dict(tol=tol, maxit=maxit))
+    spin_shift = float(METHODS["exact"].defaults()["spin_shift"])
+    z0, roll0, cpt = _pose_and_point(func, geometry, y_ws, side)
+    y_ws = float(y_ws)
+    if all(given):
+        creep = (1, float(cx), float(cy), float(cphi))
+        motion = ((0.0,) * 3,) * 3
+        roller_spin_ = 0.0
     else:
-        # vertical balance: Fz = N n_z + fy t2_z (t1 is horizontal), by the
-        # secant method on N on a fixed grid (fy depends on N only weakly: a
-        # few solves), then once more on the grid and pose of the load found
-        N = Fz / np.cos(delta0)
-        p, s, k = at(N, None)
-        for rebuild in (False, True):
-            if rebuild:
-                p, s, k = at(N, s.delta)
-            last = None
-            for _ in range(30):
-                r = (Fz - s.fy * p.t2[2]) / p.n[2] - N     # the fixed point's residual
-                if abs(r) <= 1e-7 * Fz:
-                    break
-                step = r if last is None or last[1] == r else -r * (N - last[0]) / (r - last[1])
-                last = (N, r)
-                N += step                                   # secant after the first step
-                s, k = solve(p, N)
-            else:
-                raise RollerRigError(f"{func}: the normal load for Fz = {Fz!r} N did not "
-                                     f"settle")
-    return RigExact(solution=s, patch=p, cx=k[0], cy=k[1], cphi=k[2], V=k[3], N=N,
-                    passes=count)
+        creep = (0, 0.0, 0.0, 0.0)
+        motion = _motion(geometry, y_ws, spin, roller_spin, vy, yaw_rate, vmin, table)
+        roller_spin_ = float(roller_spin)
+    point = tuple(float(getattr(cpt, k)[0]) for k in ("s_roller", "s_wheel", "delta", "A", "B"))
+    nan = float("nan")
+    out = _core.wheel_exact(
+        *geometry._arrays(), geometry._params(), 0 if side == "left" else 1, y_ws,
+        (z0, roll0), point, (N or 0.0, Fz or 0.0, E, nu, mu), creep, motion, roller_spin_,
+        float(vmin), (code, ref_s, ref_d, approach or 0.0, cover, int(n), dx or 0.0, dy or 0.0,
+                      combine),
+        (nan if z_given is None else z_given, nan if roll_given is None else roll_given,
+         int(bool(loaded)), int(passes)), (float(tol), int(maxit), spin_shift))
+    status, results, pn, px, py, sx, sy, state, h, pinfo, rinfo = out
+    if status < 0:
+        raise _wheel_error(func, status, pinfo, rinfo, geometry, side, y_ws, dx, dy,
+                           dict(mu=mu, G=G, nu=nu))
+    _warn_excluded(func, pinfo, y_ws, side, combine)
+    p = _patch(h, pinfo, side, y_ws, rinfo["z"], rinfo["roll"], rinfo["approach"],
+               rinfo["cover"], rinfo["lowered"])
+    grid = (pinfo["mx"], pinfo["my"], p.dx, p.dy, p.x0, p.y0)
+    args = dict(N=rinfo["N"], mu=mu, G=G, nu=nu, cx=rinfo["cx"], cy=rinfo["cy"],
+                cphi=rinfo["cphi"])
+    s = _solution(func, (status, None, grid, results, pn, px, py, sx, sy, state),
+                  {k: np.array(v) for k, v in args.items()}, None, edge_ok=True)
+    return RigExact(solution=s, patch=p, cx=rinfo["cx"], cy=rinfo["cy"], cphi=rinfo["cphi"],
+                    V=rinfo["V"], N=rinfo["N"], passes=rinfo["passes"], builds=rinfo["builds"])
+
+
+def _wheel_error(func, status, pinfo, rinfo, geometry, side, y_ws, dx, dy, material):
+    """The RollerRigError of a failed rr_wheel_exact: its reason in words."""
+    why = rinfo["why"]
+    if why == _core.WHEEL_EXACT_GAP or why == _core.WHEEL_EXACT_HERTZ:
+        load = f"N = {rinfo['fail_N']!r} N"
+        if why == _core.WHEEL_EXACT_HERTZ:
+            msg = f"undeformed_distance: N = {rinfo['fail_N']!r}: {status_message(status)}"
+        else:
+            msg = str(_gap_error("undeformed_distance", status, pinfo, geometry, side, y_ws,
+                                 load, rinfo["z"], rinfo["roll"]))
+        if rinfo["fail_pass"] and (dx is not None or dy is not None):
+            return RollerRigError(f"{func}: the first pass, on elements twice dx, dy: {msg}")
+        return RollerRigError(msg)
+    if why == _core.WHEEL_EXACT_EDGE:
+        return RollerRigError(f"{func}: at y_ws = {y_ws!r} m the contact keeps reaching the "
+                              f"grid's edge")
+    if why == _core.WHEEL_EXACT_SETTLE:
+        return RollerRigError(f"{func}: the normal load for Fz did not settle")
+    if why == _core.WHEEL_EXACT_SOLVE:
+        args = dict(N=rinfo["fail_N"], **material, cx=rinfo["cx"], cy=rinfo["cy"],
+                    cphi=rinfo["cphi"])
+        try:
+            check_status(func, np.array(status, dtype=np.int8),
+                         {k: np.array(v) for k, v in args.items()}, "raise")
+        except RollerRigError as e:
+            return e
+    return RollerRigError(f"{func}: {status_message(status)}")

@@ -1,0 +1,916 @@
+/*
+ * rr_gap.c - the undeformed distance of one wheel on its roller (rr_gap.h).
+ *
+ * The construction is rollerrig/geometry/patch.py's, step for step, so that
+ * h agrees with it to rounding: the profiles sampled on numpy's linspace,
+ * each cross-section the run of samples around the reference along which
+ * its lateral coordinate in the plane is strictly monotonic, numpy.interp's
+ * formula between samples.  What is computed differs only where the
+ * answer cannot: a cross-section at x != 0 is walked from the reference
+ * outward only as far as the grid's rows need (the run is the same as far
+ * as it goes), and a column at -x is the one at x (the cross-sections
+ * depend on x^2 alone).
+ */
+#include <math.h>
+#include <string.h>
+#include "util/rr_common.h"
+#include "geometry/rr_gap.h"
+
+/* Iterations of the weighted reference's angle and of the grid's growth
+ * (patch.py's). */
+#define WEIGHT_ITER 50
+#define GROW_ITER 1000
+
+void rr_gap_opts_default(rr_gap_opts *o)
+{
+    if (!o)
+        return;
+    o->reference = RR_GAP_WEIGHTED;
+    o->s_roller = 0.0;
+    o->delta = 0.0;
+    o->approach = 0.0;
+    o->cover = 1.5;
+    o->n = 40;
+    o->dx = 0.0;
+    o->dy = 0.0;
+    o->combine = 4e-3;
+}
+
+/* The samples' spacing (patch.py's step): RR_GAP_SAMPLE, or a tenth of the
+ * smallest element given, at least RR_GAP_SAMPLE_MIN; 0 for sizes that are
+ * not finite and >= 0. */
+static double sample_step(const rr_gap_opts *o)
+{
+    double m = 1.0;
+    if (!isfinite(o->dx) || !isfinite(o->dy) || !(o->dx >= 0.0) || !(o->dy >= 0.0))
+        return 0.0;
+    if (o->dx > 0.0 && o->dx < m)
+        m = o->dx;
+    if (o->dy > 0.0 && o->dy < m)
+        m = o->dy;
+    return fmax(fmin(RR_GAP_SAMPLE, 0.1 * m), RR_GAP_SAMPLE_MIN);
+}
+
+/* Samples a window holds at most (its linspace count, one for rounding). */
+static size_t window_samples(double step)
+{
+    return (size_t)ceil(2.0 * RR_GAP_WINDOW / step) + 3;
+}
+
+/* The workspace, arrays of a window's samples: four of samples, four of
+ * sections, four of the weighted reference and its mask (the lateral scan
+ * reuses these: carve_work). */
+#define NARRAYS 13
+
+size_t rr_gap_workspace_len(const rr_gap_opts *o)
+{
+    double step;
+    if (!o || !((step = sample_step(o)) > 0.0))
+        return 0;
+    return NARRAYS * window_samples(step);
+}
+
+/* ---- profile samples ------------------------------------------------------- */
+
+typedef struct {
+    double *s, *z;   /* positions and heights (up) */
+    int k;           /* count */
+    int k0;          /* the sample nearest the centre */
+} samples;
+
+/* numpy.linspace over the profile within RR_GAP_WINDOW of centre, heights
+ * by the spline (NaN where a rounded position leaves it), and the nearest
+ * sample (numpy.argmin: the first of equals). */
+static int take_samples(const rr_spline *sp, double centre, double step, size_t kmax,
+                        samples *q, rr_gap_patch *out, int body)
+{
+    const double y0 = sp->s[0], y1 = sp->s[sp->n - 1];
+    const double lo = fmax(y0, centre - RR_GAP_WINDOW), hi = fmin(y1, centre + RR_GAP_WINDOW);
+    double cnt, d, best;
+    int i, hint = -1, c;
+    if (!(hi > lo)) {
+        out->why = RR_GAP_OFF_PROFILE;
+        out->off_body = body;
+        out->off_s = centre;
+        out->off_lo = y0;
+        out->off_hi = y1;
+        return RR_ERR_GEOMETRY;
+    }
+    cnt = ceil((hi - lo) / step) + 1.0;
+    if (!(cnt <= (double)kmax))
+        return RR_ERR_WORKSPACE;        /* not reached: kmax bounds any window */
+    q->k = (int)cnt;
+    d = (hi - lo) / (double)(q->k - 1);
+    for (i = 0; i < q->k; i++) {
+        q->s[i] = i < q->k - 1 ? (double)i * d + lo : hi;
+        if (rr_spline_eval_at(sp, q->s[i], &hint, &q->z[i], NULL, NULL) != RR_OK)
+            q->z[i] = NAN;
+    }
+    /* |s - centre| falls then rises along the samples: the least is within
+     * one of the rounded position (the window holds at least two) */
+    c = (int)fmin(fmax(floor((centre - lo) / d + 0.5), 1.0), (double)(q->k - 1));
+    q->k0 = c - 1;
+    best = fabs(q->s[c - 1] - centre);
+    for (i = c; i <= c + 1 && i < q->k; i++)
+        if (fabs(q->s[i] - centre) < best) {
+            best = fabs(q->s[i] - centre);
+            q->k0 = i;
+        }
+    return RR_OK;
+}
+
+/* ---- the plane and the cross-sections -------------------------------------- */
+
+typedef struct {
+    const rr_wheel_roller *p;
+    double sigma;            /* +1 left, -1 right */
+    double y_ws, z;          /* the wheelset's pose */
+    double cr, sr;           /* cos, sin of its roll */
+    double P0, P1;           /* the reference point, rig (Y, Z) */
+    double t2y, t2z, ny, nz; /* t2 and n in the rig's (Y, Z) */
+} plane;
+
+/* radius - sqrt(radius^2 - x^2) without cancellation (patch.py's _drop:
+ * numpy.maximum keeps a NaN) */
+static double drop(double radius, double x)
+{
+    const double x2 = x * x;
+    double v = radius * radius - x2;
+    v = v < 0.0 ? 0.0 : v;
+    return x2 / (radius + sqrt(v));
+}
+
+static void plane_set(plane *f, double P0, double P1, double delta)
+{
+    const double c = cos(delta), s = sin(delta);
+    f->P0 = P0;
+    f->P1 = P1;
+    f->t2y = c;
+    f->t2z = f->sigma * s;
+    f->ny = -f->sigma * s;
+    f->nz = c;
+}
+
+/* A body's cross-section at x in the plane: sample i at (yc[i], ze[i]); the
+ * run [a, b] of samples around k0 along which yc is strictly monotonic
+ * (dir +1 increasing with the index, -1 decreasing), known to end at a
+ * (a_end) or b (b_end), or computed only as far as a caller needed. */
+typedef struct {
+    const samples *q;
+    int body;                /* 0 roller, 1 wheel */
+    int k0;                  /* the sample the run holds */
+    double *yc, *ze;
+    int a, b, dir, a_end, b_end;
+    int hint;                /* the last interpolation's interval */
+} section;
+
+static void sec_point(const plane *f, section *c, int i, double x)
+{
+    const rr_wheel_roller *p = f->p;
+    const double zi = c->q->z[i];
+    double Y, Z, dY, dZ;
+    if (c->body == 0) {
+        Y = f->sigma * (p->roller_y + c->q->s[i]);
+        Z = zi - drop(p->R0 + zi, x);
+    } else {
+        const double yl = f->sigma * (p->wheel_y + c->q->s[i]);
+        const double zl = -p->r0 + zi + drop(p->r0 - zi, x);
+        Y = f->y_ws + yl * f->cr - zl * f->sr;
+        Z = f->z + yl * f->sr + zl * f->cr;
+    }
+    dY = Y - f->P0;
+    dZ = Z - f->P1;
+    c->yc[i] = dY * f->t2y + dZ * f->t2z;
+    c->ze[i] = dY * f->ny + dZ * f->nz;
+}
+
+/* 1 where the step from sample i to j (= i +- 1) continues the run */
+static int sec_good(const section *c, int i, int j)
+{
+    const double d = j > i ? c->yc[j] - c->yc[i] : c->yc[i] - c->yc[j];
+    return isfinite(d) && isfinite(c->ze[j]) && (c->dir > 0 ? d > 0.0 : d < 0.0);
+}
+
+/* The run around the reference sample at x (patch.py's _single_valued),
+ * computed outward until it covers [need_lo, need_hi] or ends (full: to
+ * its ends).  RR_ERR_GEOMETRY (why FOLD) where it does not start. */
+static int sec_walk(const plane *f, section *c, double x, double need_lo, double need_hi,
+                    int full, rr_gap_patch *out)
+{
+    const int k = c->q->k;
+    const int k0 = c->k0 < 0 ? 0 : c->k0 > k - 2 ? k - 2 : c->k0;
+    double d;
+    sec_point(f, c, k0, x);
+    sec_point(f, c, k0 + 1, x);
+    d = c->yc[k0 + 1] - c->yc[k0];
+    if (!(isfinite(d) && d != 0.0 && isfinite(c->ze[k0]) && isfinite(c->ze[k0 + 1]))) {
+        out->why = RR_GAP_FOLD;
+        return RR_ERR_GEOMETRY;
+    }
+    c->dir = d > 0.0 ? 1 : -1;
+    c->a = k0;
+    c->b = k0 + 1;
+    c->a_end = c->b_end = 0;
+    c->hint = 0;
+    for (;;) {                              /* up the samples */
+        const int b = c->b;
+        if (b + 1 >= k) {
+            c->b_end = 1;
+            break;
+        }
+        if (!full && (c->dir > 0 ? c->yc[b] > need_hi : c->yc[b] < need_lo))
+            break;
+        sec_point(f, c, b + 1, x);
+        if (!sec_good(c, b, b + 1)) {
+            c->b_end = 1;
+            break;
+        }
+        c->b = b + 1;
+    }
+    for (;;) {                              /* down */
+        const int a = c->a;
+        if (a == 0) {
+            c->a_end = 1;
+            break;
+        }
+        if (!full && (c->dir > 0 ? c->yc[a] < need_lo : c->yc[a] > need_hi))
+            break;
+        sec_point(f, c, a - 1, x);
+        if (!sec_good(c, a, a - 1)) {
+            c->a_end = 1;
+            break;
+        }
+        c->a = a - 1;
+    }
+    return RR_OK;
+}
+
+/* The run's j-th sample in increasing yc. */
+static int sec_index(const section *c, int j)
+{
+    return c->dir > 0 ? c->a + j : c->b - j;
+}
+
+static double sec_first(const section *c)
+{
+    return c->yc[sec_index(c, 0)];
+}
+
+static double sec_last(const section *c)
+{
+    return c->yc[sec_index(c, c->b - c->a)];
+}
+
+/* numpy.interp(y, yc of the run, v of the run) (v: ze, or the samples'
+ * positions), its formula and special cases; c->hint keeps the interval of
+ * the last call: queries in order (a scan, a column's rows) step on from
+ * it, others bisect. */
+static double sec_interp(section *c, double y, const double *v)
+{
+    const int n = c->b - c->a + 1, s = c->dir;
+    const double *x = c->yc + (s > 0 ? c->a : c->b);   /* x[s j]: j-th in increasing yc */
+    const double *f = v + (s > 0 ? c->a : c->b);
+    int j, step;
+    double xj, xj1, fj, fj1, slope, r;
+    if (isnan(y))
+        return y;
+    if (y > x[s * (n - 1)])
+        return f[s * (n - 1)];
+    if (y < x[0])
+        return f[0];
+    j = c->hint < 0 ? 0 : c->hint > n - 1 ? n - 1 : c->hint;
+    for (step = 0; step < 4 && j < n - 1 && x[s * (j + 1)] <= y; step++)
+        j++;
+    if (!(x[s * j] <= y && (j == n - 1 || y < x[s * (j + 1)]))) {
+        int lo = 0, hi = n - 1;              /* bisect: x[lo] <= y < x[hi] */
+        if (y >= x[s * hi]) {
+            lo = hi;
+        } else {
+            while (hi - lo > 1) {
+                const int mid = lo + (hi - lo) / 2;
+                if (x[s * mid] <= y)
+                    lo = mid;
+                else
+                    hi = mid;
+            }
+        }
+        j = lo;
+    }
+    c->hint = j;
+    xj = x[s * j];
+    fj = f[s * j];
+    if (j == n - 1 || xj == y)
+        return fj;
+    xj1 = x[s * (j + 1)];
+    fj1 = f[s * (j + 1)];
+    slope = (fj1 - fj) / (xj1 - xj);
+    r = slope * (y - xj) + fj;
+    if (isnan(r)) {
+        r = slope * (y - xj1) + fj1;
+        if (isnan(r) && fj == fj1)
+            r = fj;
+    }
+    return r;
+}
+
+/* h along n at lateral y (patch.py's _Sections.gap): NaN outside both runs. */
+static double gap_at(section *r, section *w, double y)
+{
+    const double lo = fmax(sec_first(r), sec_first(w)), hi = fmin(sec_last(r), sec_last(w));
+    const double g = sec_interp(w, y, w->ze) - sec_interp(r, y, r->ze);
+    return y < lo || y > hi ? NAN : g;
+}
+
+/* Both runs at x = 0 in full and where they overlap; RR_ERR_GEOMETRY (why
+ * FOLD, APART). */
+static int sections0(const plane *f, section *r, section *w, double *lo, double *hi,
+                     rr_gap_patch *out)
+{
+    int st;
+    if ((st = sec_walk(f, r, 0.0, 0.0, 0.0, 1, out)) != RR_OK
+        || (st = sec_walk(f, w, 0.0, 0.0, 0.0, 1, out)) != RR_OK)
+        return st;
+    *lo = fmax(sec_first(r), sec_first(w));
+    *hi = fmin(sec_last(r), sec_last(w));
+    if (!(*hi > *lo)) {
+        out->why = RR_GAP_APART;
+        return RR_ERR_GEOMETRY;
+    }
+    return RR_OK;
+}
+
+/* ---- the region's intervals ------------------------------------------------- */
+
+typedef struct {
+    int n;
+    int a[RR_GAP_MAX_RUNS], b[RR_GAP_MAX_RUNS];   /* index runs [a, b) */
+    double lo[RR_GAP_MAX_RUNS], hi[RR_GAP_MAX_RUNS];  /* as y intervals */
+    int kept[RR_GAP_MAX_RUNS];
+} runs;
+
+/* The runs of mask over [0, n) and their y intervals (patch.py's _runs and
+ * _group's tuples); RR_ERR_RANGE (why RUNS) beyond RR_GAP_MAX_RUNS. */
+static int find_runs(const unsigned char *mask, const double *y, int n, runs *R,
+                     rr_gap_patch *out)
+{
+    int i = 0;
+    R->n = 0;
+    while (i < n) {
+        int j;
+        if (!mask[i]) {
+            i++;
+            continue;
+        }
+        for (j = i; j < n && mask[j]; j++)
+            ;
+        if (R->n == RR_GAP_MAX_RUNS) {
+            out->why = RR_GAP_RUNS;
+            return RR_ERR_RANGE;
+        }
+        R->a[R->n] = i;
+        R->b[R->n] = j;
+        R->lo[R->n] = fmin(y[i], y[j - 1]);
+        R->hi[R->n] = fmax(y[i], y[j - 1]);
+        R->n++;
+        i = j;
+    }
+    return RR_OK;
+}
+
+/* patch.py's _group: the run holding y_deep, and every run within combine
+ * of the growing hull, to the fixed point (the order of the passes does
+ * not change it); the hull in *lo, *hi. */
+static void group_runs(runs *R, double y_deep, double combine, double *lo, double *hi)
+{
+    int i, grown = 1;
+    for (i = 0; i < R->n; i++)
+        R->kept[i] = 0;
+    for (i = 0; i < R->n; i++)
+        if (R->lo[i] <= y_deep && y_deep <= R->hi[i])
+            break;
+    if (i == R->n)
+        i = 0;                      /* not reached: the deepest sample is in a run */
+    *lo = R->lo[i];
+    *hi = R->hi[i];
+    while (grown) {
+        grown = 0;
+        for (i = 0; i < R->n; i++)
+            if (!R->kept[i] && R->lo[i] - *hi <= combine && *lo - R->hi[i] <= combine) {
+                *lo = fmin(*lo, R->lo[i]);
+                *hi = fmax(*hi, R->hi[i]);
+                R->kept[i] = 1;
+                grown = 1;
+            }
+    }
+}
+
+/* ---- the weighted reference ------------------------------------------------- */
+
+/* Per roller sample: its rig Y, the vertical gap g, and a, alpha (filled
+ * where a weight needs them, NaN until then). */
+typedef struct {
+    double *Y, *g, *a, *alpha;
+    unsigned char *mask;
+} weights;
+
+/* CONTACT's reference of a patch (patch.py's _weighted_reference, its
+ * locate_interpen_1d and set_cpatch_reference): at the pose's vertical gap
+ * g(Y) (shifted to least 0), the centre of pen = approach / cos(delta) - g
+ * and the roller's mean inclination, each lateral strip weighted by the
+ * integral over x of its squared interpenetration, pen^2.5 / sqrt(a),
+ * a = (1/r + 1/R)/2, over the runs of pen > 0 grouped as the region's;
+ * delta iterated.  rs, ws: the samples around the rigid contact point;
+ * wsec: the wheel's section (scratch).  Returns the reference's roller
+ * coordinate in *sr_out and its angle in *delta. */
+static int weighted_reference(const plane *f, const samples *rs, section *wsec, double sr_P,
+                              double approach, double combine, weights *W, double *sr_out,
+                              double *delta, rr_gap_patch *out)
+{
+    const rr_wheel_roller *p = f->p;
+    const double target = f->sigma * (p->roller_y + sr_P);
+    plane id = *f;
+    section run;
+    double best = INFINITY, gmin = INFINITY, sw = 0.0, swa = 0.0, swy = 0.0;
+    int i, i0 = rs->k, i1 = -1, n, deep = 0, it, st;
+
+    /* the wheel's cross-section in the rig's (Y, Z) at x = 0 (an identity
+     * plane), its run around the sample nearest P's Y */
+    id.P0 = id.P1 = 0.0;
+    id.t2y = id.nz = 1.0;
+    id.t2z = id.ny = 0.0;
+    wsec->k0 = 0;
+    for (i = 0; i < wsec->q->k; i++) {
+        double d;
+        sec_point(&id, wsec, i, 0.0);
+        d = fabs(wsec->yc[i] - target);
+        if (d < best) {
+            best = d;
+            wsec->k0 = i;
+        }
+    }
+    if ((st = sec_walk(&id, wsec, 0.0, 0.0, 0.0, 1, out)) != RR_OK)
+        return st;
+    /* the roller's samples below it (their Y is monotonic in the index) */
+    for (i = 0; i < rs->k; i++) {
+        W->Y[i] = f->sigma * (p->roller_y + rs->s[i]);
+        if (W->Y[i] >= sec_first(wsec) && W->Y[i] <= sec_last(wsec)) {
+            i0 = i < i0 ? i : i0;
+            i1 = i;
+        }
+    }
+    if (i1 < i0) {
+        out->why = RR_GAP_APART;
+        return RR_ERR_GEOMETRY;
+    }
+    n = i1 - i0 + 1;
+    for (i = i0; i <= i1; i++) {
+        W->g[i] = sec_interp(wsec, W->Y[i], wsec->ze) - rs->z[i];
+        W->a[i] = W->alpha[i] = NAN;
+        if (W->g[i] < gmin) {
+            gmin = W->g[i];
+            deep = i;
+        }
+    }
+    if (!isfinite(gmin)) {
+        out->why = RR_GAP_WEIGHTS;
+        return RR_ERR_RANGE;
+    }
+    for (i = i0; i <= i1; i++)
+        W->g[i] -= gmin;
+    for (it = 0; it < WEIGHT_ITER; it++) {
+        const double top = approach / cos(*delta);
+        double lo, hi, nd;
+        int r, done;
+        runs R;
+        for (i = 0; i < n; i++)
+            W->mask[i] = top - W->g[i0 + i] > 0.0;
+        if ((st = find_runs(W->mask, W->Y + i0, n, &R, out)) != RR_OK)
+            return st;
+        group_runs(&R, W->Y[deep], combine, &lo, &hi);
+        sw = swa = swy = 0.0;
+        for (r = 0; r < R.n; r++)
+            for (i = i0 + R.a[r]; R.kept[r] && i < i0 + R.b[r]; i++) {
+                const double pen = top - W->g[i];
+                double w;
+                if (isnan(W->a[i])) {
+                    /* r at the wheel's point above (its coordinate by the run),
+                     * R and the inclination at the roller's */
+                    const double s_w = sec_interp(wsec, W->Y[i], wsec->q->s);
+                    double zw, zr, dzr;
+                    int hw = -1, hr = -1;
+                    if (rr_spline_eval_at(&p->wheel, s_w, &hw, &zw, NULL, NULL) != RR_OK)
+                        zw = NAN;
+                    if (rr_spline_eval_at(&p->roller, rs->s[i], &hr, &zr, &dzr, NULL) != RR_OK)
+                        dzr = NAN;
+                    W->a[i] = 0.5 * (1.0 / (p->r0 - zw) + 1.0 / (p->R0 + rs->z[i]));
+                    W->alpha[i] = atan(dzr);
+                }
+                w = pen * pen * sqrt(pen) / sqrt(W->a[i]);
+                sw += w;
+                swa += w * W->alpha[i];
+                swy += w * W->Y[i];
+            }
+        if (!(sw > 0.0) || !isfinite(sw) || !isfinite(swa) || !isfinite(swy)) {
+            out->why = RR_GAP_WEIGHTS;
+            return RR_ERR_RANGE;
+        }
+        nd = swa / sw;
+        done = fabs(nd - *delta) < 1e-13;
+        *delta = nd;
+        if (done)
+            break;
+    }
+    /* the roller's coordinate at the centre: numpy.interp over the samples
+     * in increasing Y (a "section" of the roller in rig Y) */
+    run.yc = W->Y;
+    run.a = i0;
+    run.b = i1;
+    run.dir = n > 1 && W->Y[i1] < W->Y[i0] ? -1 : 1;
+    run.hint = 0;
+    *sr_out = sec_interp(&run, swy / sw, rs->s);
+    return RR_OK;
+}
+
+/* ---- the build -------------------------------------------------------------- */
+
+/* Every number of the frame NaN, counts 0: the state before a build. */
+static void patch_nan(rr_gap_patch *o)
+{
+    int k;
+    memset(o, 0, sizeof *o);
+    o->grid.dx = o->grid.dy = o->grid.x0 = o->grid.y0 = NAN;
+    for (k = 0; k < 3; k++)
+        o->point[k] = o->wheel_point[k] = o->t1[k] = o->t2[k] = o->n[k] = NAN;
+    o->delta = o->s_roller = o->s_wheel = o->r = o->R = o->pen = o->level = NAN;
+    o->lo = o->hi = o->plane_lo = o->plane_hi = o->x_t = o->half_length = NAN;
+    o->need_mx = o->need_my = o->step = o->off_s = o->off_lo = o->off_hi = NAN;
+}
+
+/* What a caller can get wrong: the site, the pair, the options. */
+static int check_inputs(const rr_gap_site *site, const rr_gap_opts *o)
+{
+    const rr_wheel_roller *p = site->pair;
+    const double v[] = {site->y_ws, site->z, site->roll, site->s_roller, site->s_wheel,
+                        site->delta, p->r0, p->R0, p->wheel_y, p->roller_y, o->approach,
+                        o->cover, o->dx, o->dy, o->combine};
+    int st;
+    if ((st = rr_spline_check(&p->wheel)) != RR_OK || (st = rr_spline_check(&p->roller)) != RR_OK)
+        return st;
+    if (!rr_all_finite(v, RR_COUNTOF(v)))
+        return RR_ERR_NONFINITE;
+    if (o->reference == RR_GAP_GIVEN && !(isfinite(o->s_roller) && isfinite(o->delta)))
+        return RR_ERR_NONFINITE;
+    if (!(p->r0 > 0.0) || !(p->R0 > 0.0) || (p->side != 1 && p->side != -1)
+        || (o->reference != RR_GAP_WEIGHTED && o->reference != RR_GAP_POINT
+            && o->reference != RR_GAP_GIVEN)
+        || (o->reference == RR_GAP_GIVEN && !(fabs(o->delta) < 0.5 * RR_PI))
+        || !(fabs(site->delta) < 0.5 * RR_PI)
+        || !(o->approach > 0.0) || !(o->cover >= 1.0) || o->n < 4 || o->n > RR_GAP_MAX_N
+        || !(o->dx >= 0.0) || !(o->dy >= 0.0) || !(o->combine >= 0.0))
+        return RR_ERR_PARAM;
+    return RR_OK;
+}
+
+/* The workspace's arrays (NARRAYS of kmax): the samples of both profiles,
+ * both sections, the weighted reference's four and its mask; the lateral
+ * scan reuses the reference's arrays after it (2 kmax positions, 2 kmax
+ * gaps, the mask's 8 kmax bytes). */
+typedef struct {
+    samples rs, ws;
+    double *ryc, *rze, *wyc, *wze;
+    weights W;
+    double *hy, *yf;
+    unsigned char *mask;
+    size_t kmax, nscan;
+} carve;
+
+static void carve_work(double *work, size_t kmax, carve *c)
+{
+    c->kmax = kmax;
+    c->rs.s = work;
+    c->rs.z = work + kmax;
+    c->ws.s = work + 2 * kmax;
+    c->ws.z = work + 3 * kmax;
+    c->ryc = work + 4 * kmax;
+    c->rze = work + 5 * kmax;
+    c->wyc = work + 6 * kmax;
+    c->wze = work + 7 * kmax;
+    c->W.Y = work + 8 * kmax;
+    c->W.g = work + 9 * kmax;
+    c->W.a = work + 10 * kmax;
+    c->W.alpha = work + 11 * kmax;
+    c->W.mask = (unsigned char *)(work + 12 * kmax);
+    c->hy = work + 8 * kmax;
+    c->yf = work + 10 * kmax;
+    c->mask = c->W.mask;
+    c->nscan = 2 * kmax;
+}
+
+/* The columns i_lo..i_hi of h (x = i dx), rows j_lo..j_hi (y = j dy), into
+ * h (row-major, mx columns); a column at -x is the one at x, one walk of
+ * both sections each.  RR_ERR_GEOMETRY (why FOLD) where a column's
+ * sections do not start at the reference (patch.py raises there too). */
+static int fill_h(const plane *f, section *r, section *w, double dx, double dy, int i_lo,
+                  int i_hi, int j_lo, int j_hi, double *h, rr_gap_patch *out)
+{
+    const int mx = i_hi - i_lo + 1;
+    const double y_lo = dy * (double)j_lo, y_hi = dy * (double)j_hi;
+    int i, j, st;
+    for (i = i_lo; i <= i_hi; i++) {
+        const int m = -i;
+        const int twin = m >= i_lo && m <= i_hi && m != i;
+        if (i < 0 && twin)
+            continue;                        /* done with its mirror */
+        if ((st = sec_walk(f, r, dx * (double)i, y_lo, y_hi, 0, out)) != RR_OK
+            || (st = sec_walk(f, w, dx * (double)i, y_lo, y_hi, 0, out)) != RR_OK)
+            return st;
+        for (j = j_lo; j <= j_hi; j++) {
+            const double v = gap_at(r, w, dy * (double)j);
+            h[(size_t)(j - j_lo) * mx + (i - i_lo)] = v;
+            if (twin)
+                h[(size_t)(j - j_lo) * mx + (m - i_lo)] = v;
+        }
+    }
+    return RR_OK;
+}
+
+/* The grid's element counts for index bounds given as doubles (bounds far
+ * beyond an int's are counted before any is converted): RR_ERR_GRID (why
+ * TOO_MANY) beyond RR_EXACT_MAX_GRID a side. */
+static int bounded(double fi_lo, double fi_hi, double fj_lo, double fj_hi, rr_gap_patch *out)
+{
+    out->need_mx = fi_hi - fi_lo + 1.0;
+    out->need_my = fj_hi - fj_lo + 1.0;
+    if (!(out->need_mx <= RR_EXACT_MAX_GRID) || !(out->need_my <= RR_EXACT_MAX_GRID)) {
+        out->why = RR_GAP_TOO_MANY;
+        return RR_ERR_GRID;
+    }
+    return RR_OK;
+}
+
+/* The frame: P, t1, t2, n and the reference's numbers into out. */
+static void frame_out(const plane *f, double delta, double sr_P, double sw_P, rr_gap_patch *out)
+{
+    out->delta = delta;
+    out->s_roller = sr_P;
+    out->s_wheel = sw_P;
+    out->point[0] = 0.0;
+    out->point[1] = f->P0;
+    out->point[2] = f->P1;
+    out->t1[0] = 1.0;
+    out->t1[1] = out->t1[2] = 0.0;
+    out->t2[0] = 0.0;
+    out->t2[1] = f->t2y;
+    out->t2[2] = f->t2z;
+    out->n[0] = 0.0;
+    out->n[1] = f->ny;
+    out->n[2] = f->nz;
+}
+
+/* The plane through the reference (sr_P, delta) and where its normal meets
+ * the wheel (patch.py's sections(), wheel_at(0), sections() again): the
+ * roller's samples around sr_P, the wheel's around that point, both
+ * sections at x = 0 in full, where they overlap in *lo, *hi. */
+static int place_plane(plane *f, carve *c, section *rsec, section *wsec, double step,
+                       double sr_P, double delta, double *sw_P, double *lo, double *hi,
+                       rr_gap_patch *out)
+{
+    const rr_wheel_roller *p = f->p;
+    double zP;
+    int st;
+    if (!(sr_P >= p->roller.s[0] && sr_P <= p->roller.s[p->roller.n - 1])) {
+        out->why = RR_GAP_OFF_PROFILE;       /* P lies on the roller's profile */
+        out->off_body = 0;
+        out->off_s = sr_P;
+        out->off_lo = p->roller.s[0];
+        out->off_hi = p->roller.s[p->roller.n - 1];
+        return RR_ERR_GEOMETRY;
+    }
+    if ((st = take_samples(&p->roller, sr_P, step, c->kmax, &c->rs, out, 0)) != RR_OK)
+        return st;
+    rr_spline_eval(&p->roller, sr_P, &zP, NULL, NULL);
+    plane_set(f, f->sigma * (p->roller_y + sr_P), zP, delta);
+    rsec->k0 = c->rs.k0;
+    wsec->k0 = c->ws.k0;
+    if ((st = sections0(f, rsec, wsec, lo, hi, out)) != RR_OK)
+        return st;
+    *sw_P = sec_interp(wsec, 0.0, c->ws.s);
+    if ((st = take_samples(&p->wheel, *sw_P, step, c->kmax, &c->ws, out, 1)) != RR_OK)
+        return st;
+    wsec->k0 = c->ws.k0;
+    return sections0(f, rsec, wsec, lo, hi, out);
+}
+
+int rr_gap_build(const rr_gap_site *site, const rr_gap_opts *o, double *work, size_t work_len,
+                 double *h, size_t h_len, rr_gap_patch *out)
+{
+    const rr_wheel_roller *p;
+    double step, sr_P, sw_P, delta, plo, phi, lo, hi, level, hmin, df, r_P, R_P, x_t, xh;
+    double dx, dy, fi_lo, fi_hi, fj_lo, fj_hi, hmin_grid;
+    plane f;
+    carve c;
+    section rsec, wsec;
+    runs R;
+    int st, nf, i, j, k, deep = 0, it, i_lo, i_hi, j_lo, j_hi, mx, my;
+
+    if (!out)
+        return RR_ERR_NULL;
+    patch_nan(out);
+    if (!site || !site->pair || !o)
+        return RR_ERR_NULL;
+    if ((st = check_inputs(site, o)) != RR_OK)
+        return st;
+    step = sample_step(o);
+    if (!work || work_len < rr_gap_workspace_len(o))
+        return RR_ERR_WORKSPACE;
+    out->step = step;
+    p = site->pair;
+    carve_work(work, window_samples(step), &c);
+    f.p = p;
+    f.sigma = p->side;
+    f.y_ws = site->y_ws;
+    f.z = site->z;
+    f.cr = cos(site->roll);
+    f.sr = sin(site->roll);
+    rsec.q = &c.rs;
+    rsec.body = 0;
+    rsec.yc = c.ryc;
+    rsec.ze = c.rze;
+    wsec.q = &c.ws;
+    wsec.body = 1;
+    wsec.yc = c.wyc;
+    wsec.ze = c.wze;
+
+    /* the reference point and angle, the plane, where its normal meets the wheel */
+    sr_P = o->reference == RR_GAP_GIVEN ? o->s_roller : site->s_roller;
+    delta = o->reference == RR_GAP_GIVEN ? o->delta : site->delta;
+    sw_P = site->s_wheel;
+    if ((st = take_samples(&p->wheel, sw_P, step, c.kmax, &c.ws, out, 1)) != RR_OK)
+        return st;
+    if (o->reference == RR_GAP_WEIGHTED) {
+        if ((st = take_samples(&p->roller, sr_P, step, c.kmax, &c.rs, out, 0)) != RR_OK
+            || (st = weighted_reference(&f, &c.rs, &wsec, sr_P, o->approach, o->combine, &c.W,
+                                        &sr_P, &delta, out)) != RR_OK)
+            return st;
+    }
+    if ((st = place_plane(&f, &c, &rsec, &wsec, step, sr_P, delta, &sw_P, &plo, &phi, out))
+        != RR_OK)
+        return st;
+    frame_out(&f, delta, sr_P, sw_P, out);
+    out->plane_lo = plo;
+    out->plane_hi = phi;
+    {
+        double zw, zr;
+        rr_spline_eval(&p->wheel, sw_P, &zw, NULL, NULL);
+        rr_spline_eval(&p->roller, sr_P, &zr, NULL, NULL);
+        out->r = r_P = p->r0 - zw;
+        out->R = R_P = p->R0 + zr;
+    }
+
+    /* the region to cover, at x = 0: the lateral scan and its intervals */
+    level = out->level = o->cover * o->approach;
+    {
+        const double cnt = ceil((phi - plo) / step) + 1.0;
+        if (!(cnt <= (double)c.nscan)) {
+            out->why = RR_GAP_SCAN;
+            return RR_ERR_RANGE;
+        }
+        nf = (int)cnt;
+    }
+    df = (phi - plo) / (double)(nf - 1);
+    hmin = INFINITY;
+    for (i = 0; i < nf; i++) {
+        c.yf[i] = i < nf - 1 ? (double)i * df + plo : phi;     /* numpy.linspace */
+        c.hy[i] = gap_at(&rsec, &wsec, c.yf[i]);
+        if (c.hy[i] < hmin) {
+            hmin = c.hy[i];
+            deep = i;
+        }
+    }
+    for (i = 0; i < nf; i++)
+        c.mask[i] = c.hy[i] - hmin <= level;
+    if ((st = find_runs(c.mask, c.yf, nf, &R, out)) != RR_OK)
+        return st;
+    if (R.n == 0) {                          /* hmin not finite: the plane's scan failed */
+        out->why = RR_GAP_PATCH_NONFINITE;
+        return RR_ERR_GEOMETRY;
+    }
+    group_runs(&R, c.yf[deep], o->combine, &lo, &hi);
+    for (k = 0; k < R.n; k++) {
+        double *iv = R.kept[k] ? out->regions[out->nregions++] : out->excluded[out->nexcluded++];
+        iv[0] = R.lo[k];
+        iv[1] = R.hi[k];
+    }
+    out->lo = lo;
+    out->hi = hi;
+    if (lo <= plo || hi >= phi) {
+        out->why = RR_GAP_REGION_ENDS;
+        return RR_ERR_RANGE;
+    }
+
+    /* the half-length: where h reaches the level along x, at the widest strip */
+    x_t = out->x_t = sqrt(2.0 * level / (cos(delta) * (1.0 / r_P + 1.0 / R_P)));
+    if (!(x_t < 0.5 * fmin(r_P, R_P))) {
+        out->why = RR_GAP_REGION_LONG;
+        return RR_ERR_RANGE;
+    }
+    if ((st = sec_walk(&f, &rsec, x_t, lo, hi, 0, out)) != RR_OK
+        || (st = sec_walk(&f, &wsec, x_t, lo, hi, 0, out)) != RR_OK)
+        return st;
+    xh = -INFINITY;
+    for (i = 0; i < nf; i++) {
+        double rise, v;
+        if (!(c.yf[i] >= lo && c.yf[i] <= hi && c.mask[i]))
+            continue;
+        rise = gap_at(&rsec, &wsec, c.yf[i]) - c.hy[i];
+        rise = (rise < 1e-3 * level ? 1e-3 * level : rise) / (x_t * x_t);
+        v = sqrt((level - (c.hy[i] - hmin)) / rise);
+        xh = isnan(v) || isnan(xh) ? NAN : fmax(xh, v);
+    }
+    out->half_length = xh;
+    if (!isfinite(xh)) {
+        out->why = RR_GAP_REGION_BEYOND;
+        return RR_ERR_RANGE;
+    }
+
+    /* the grid: elements from n unless given, one exterior element around */
+    dx = o->dx;
+    dy = o->dy;
+    if (!(dx > 0.0) || !(dy > 0.0)) {
+        const double d = fmax(2.0 * xh, hi - lo) / o->n;
+        dx = dx > 0.0 ? dx : d;
+        dy = dy > 0.0 ? dy : d;
+    }
+    out->grid.dx = dx;
+    out->grid.dy = dy;
+    fi_lo = floor(-xh / dx) - 1.0;
+    fi_hi = ceil(xh / dx) + 1.0;
+    fj_lo = floor(lo / dy) - 1.0;
+    fj_hi = ceil(hi / dy) + 1.0;
+    if ((st = bounded(fi_lo, fi_hi, fj_lo, fj_hi, out)) != RR_OK)
+        return st;
+    if (!(fmax(fabs(fj_lo), fabs(fj_hi)) <= RR_GAP_MAX_INDEX)) {
+        out->why = RR_GAP_FAR;               /* elements far smaller than the region's */
+        return RR_ERR_RANGE;                 /* distance from P: indices beyond an int */
+    }
+    i_lo = (int)fi_lo;
+    i_hi = (int)fi_hi;
+    j_lo = (int)fj_lo;
+    j_hi = (int)fj_hi;
+    /* grow the grid until the region has an exterior element on every side */
+    for (it = 0; it < GROW_ITER; it++) {
+        int g0, g1, g2, g3;
+        mx = i_hi - i_lo + 1;
+        my = j_hi - j_lo + 1;
+        out->grid.mx = mx;
+        out->grid.my = my;
+        out->grid.x0 = dx * (double)i_lo;
+        out->grid.y0 = dy * (double)j_lo;
+        if (dy * (double)j_lo < plo || dy * (double)j_hi > phi) {
+            out->why = RR_GAP_PATCH_REACHES;
+            return RR_ERR_GEOMETRY;
+        }
+        if (!h || h_len < (size_t)mx * (size_t)my) {
+            out->why = RR_GAP_H_BUFFER;
+            return RR_ERR_WORKSPACE;
+        }
+        if ((st = fill_h(&f, &rsec, &wsec, dx, dy, i_lo, i_hi, j_lo, j_hi, h, out)) != RR_OK)
+            return st;
+        g0 = g1 = g2 = g3 = 0;
+        for (j = 0; j < my; j++) {
+            const double y = dy * (double)(j_lo + j);
+            if (y < lo - 0.5 * dy || y > hi + 0.5 * dy)
+                continue;                    /* rows of the intervals left out */
+            g0 |= h[(size_t)j * mx] - hmin <= level;
+            g1 |= h[(size_t)j * mx + mx - 1] - hmin <= level;
+            for (i = 0; i < mx && (j == 0 || j == my - 1); i++) {
+                if (j == 0)
+                    g2 |= h[i] - hmin <= level;
+                if (j == my - 1)
+                    g3 |= h[(size_t)j * mx + i] - hmin <= level;
+            }
+        }
+        if (!(g0 || g1 || g2 || g3))
+            break;
+        i_lo -= g0;
+        i_hi += g1;
+        j_lo -= g2;
+        j_hi += g3;
+        if ((st = bounded(i_lo, i_hi, j_lo, j_hi, out)) != RR_OK)
+            return st;
+    }
+    hmin_grid = INFINITY;
+    for (k = 0; k < mx * my; k++) {
+        if (!isfinite(h[k])) {
+            out->why = RR_GAP_PATCH_NONFINITE;
+            return RR_ERR_GEOMETRY;
+        }
+        hmin_grid = h[k] < hmin_grid ? h[k] : hmin_grid;
+    }
+    for (k = 0; k < mx * my; k++)
+        h[k] -= hmin_grid;
+    out->pen = fmax(0.0, -hmin_grid);
+    for (k = 0; k < 3; k++)
+        out->wheel_point[k] = out->point[k] - out->pen * out->n[k];
+    return RR_OK;
+}

@@ -1,0 +1,418 @@
+/*
+ * rr_wheel_exact.c - one wheel of the rig by the exact theory on its own
+ * patch (rr_wheel_exact.h): rollerrig/rig/exact.py's rig_exact, its steps
+ * in the same order, each patch built by rr_gap_build and solved by
+ * rr_exact_solve on one workspace (the kernel spectra of a grid are built
+ * once for every solve on it).
+ */
+#include <math.h>
+#include <string.h>
+#include "util/rr_common.h"
+#include "contact/rr_hertz.h"
+#include "geometry/rr_wheel_exact.h"
+
+/* The balance of the vertical load: its tolerance and iterations, the
+ * grid's rebuilds when the contact reaches its edge (rig_exact's). */
+#define FZ_TOL 1e-7
+#define FZ_ITER 30
+#define EDGE_REBUILDS 4
+
+void rr_wheel_exact_default(rr_wheel_exact_problem *pb)
+{
+    if (!pb)
+        return;
+    memset(pb, 0, sizeof *pb);
+    pb->E = 2.1e11;
+    pb->nu = 0.28;
+    pb->creep_given = 1;
+    pb->vmin = 1e-3;
+    rr_gap_opts_default(&pb->gap);
+    pb->z = pb->roll = NAN;
+    pb->loaded = 1;
+    pb->passes = 2;
+    pb->tol = 1e-6;
+    pb->maxit = 5000;
+    pb->spin_shift = 1.0 / 6.0;
+}
+
+/* Doubles of the contact-state scratch for cells elements (bytes). */
+static size_t state_len(size_t cells)
+{
+    return cells / sizeof(double) + 1;
+}
+
+size_t rr_wheel_exact_workspace_len(const rr_wheel_exact_problem *pb, int mx, int my)
+{
+    size_t ex, gw;
+    if (!pb || !(ex = rr_exact_workspace_len(mx, my)) || !(gw = rr_gap_workspace_len(&pb->gap)))
+        return 0;
+    return ex + state_len((size_t)mx * (size_t)my) + gw;
+}
+
+/* The call's state: the problem, its buffers carved from the caller's, the
+ * result being filled. */
+typedef struct {
+    const rr_wheel_exact_problem *pb;
+    double *exact, *gap;          /* the solver's workspace (at the start), the gap's */
+    size_t exact_len, gap_len;
+    signed char *state;           /* the contact's state, for the grid's edge */
+    double *h;
+    size_t cells;                 /* capacity of h, the state and the caller's fields */
+    const rr_exact_field *field;
+    double estar, G, z0, roll0, delta0;
+    rr_wheel_exact_result *res;
+} call;
+
+/* The patch for load N: n elements across (coarse: elements twice dx, dy),
+ * approach a (0: Hertz's at the contact point for N), cover cov, the
+ * reference ref, at the loaded pose (lower) or the zero-gap one. */
+static int build(call *c, double N, int n, double a, double cov, int ref, int lower,
+                 int coarse, rr_gap_patch *p)
+{
+    const rr_wheel_exact_problem *pb = c->pb;
+    rr_gap_site site;
+    rr_gap_opts o = pb->gap;
+    int st;
+    if (!(a > 0.0)) {
+        rr_hertz_result hz;
+        if ((st = rr_hertz(pb->point.A, pb->point.B, N, c->estar, &hz)) != RR_OK) {
+            c->res->why = RR_WHEEL_EXACT_HERTZ;
+            c->res->fail_pass = coarse;
+            c->res->fail_N = N;
+            return st;
+        }
+        a = hz.delta;
+    }
+    site.pair = pb->pair;
+    site.y_ws = pb->y_ws;
+    site.z = isnan(pb->z) ? (lower ? c->z0 - a / cos(c->delta0) : c->z0) : pb->z;
+    site.roll = isnan(pb->roll) ? c->roll0 : pb->roll;
+    site.s_roller = pb->point.s_roller;
+    site.s_wheel = pb->point.s_wheel;
+    site.delta = pb->point.delta;
+    o.n = n;
+    o.approach = a;
+    o.cover = cov;
+    o.reference = ref;
+    if (coarse) {
+        o.dx *= 2.0;
+        o.dy *= 2.0;
+    }
+    c->res->builds++;
+    st = rr_gap_build(&site, &o, c->gap, c->gap_len, c->h, c->cells, p);
+    if (st < 0) {
+        c->res->why = RR_WHEEL_EXACT_GAP;
+        c->res->fail_pass = coarse;
+        c->res->fail_N = N;
+        if (st == RR_ERR_WORKSPACE && p->why == RR_GAP_H_BUFFER)
+            c->res->need = rr_wheel_exact_workspace_len(pb, p->grid.mx, p->grid.my);
+        return st;
+    }
+    c->res->z = site.z;
+    c->res->roll = site.roll;
+    c->res->lowered = c->z0 - site.z;
+    c->res->approach = a;
+    c->res->cover = cov;
+    return RR_OK;
+}
+
+static double dot3(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void cross3(const double *a, const double *b, double *out)
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* Kalker's creepages of patch p (rig_exact's _creepages): the slip of the
+ * wheel's material point at p->wheel_point (the wheelset's centre lowered
+ * with the pose) relative to the roller's at P, over the rolling speed. */
+static int creepages(const call *c, const rr_gap_patch *p, double k[4])
+{
+    const rr_wheel_exact_problem *pb = c->pb;
+    const rr_motion *m = &pb->wheelset;
+    const double wr[3] = {0.0, -pb->roller_spin, 0.0};
+    double r[3], vw[3], vr[3], s[3], sum[3], dw[3];
+    int i;
+    for (i = 0; i < 3; i++)
+        r[i] = p->wheel_point[i] - (i == 2 ? m->c[2] - c->res->lowered : m->c[i]);
+    cross3(m->w, r, vw);
+    for (i = 0; i < 3; i++) {
+        vw[i] += m->v[i];
+        r[i] = p->point[i] - (i == 2 ? -pb->pair->R0 : 0.0);
+    }
+    cross3(wr, r, vr);
+    for (i = 0; i < 3; i++) {
+        sum[i] = vw[i] + vr[i];
+        s[i] = vw[i] - vr[i];
+        dw[i] = m->w[i] - wr[i];
+    }
+    k[3] = fmax(fabs(dot3(sum, p->t1)) / 2.0, pb->vmin);
+    k[0] = dot3(s, p->t1) / k[3];
+    k[1] = dot3(s, p->t2) / k[3];
+    k[2] = dot3(dw, p->n) / k[3];
+    if (!rr_all_finite(k, 4)) {
+        c->res->why = RR_WHEEL_EXACT_CREEP;
+        return RR_ERR_RANGE;
+    }
+    return RR_OK;
+}
+
+/* 1 where the contact (state >= 0) reaches the grid's border. */
+static int at_edge(const signed char *state, int mx, int my)
+{
+    int i;
+    for (i = 0; i < mx; i++)
+        if (state[i] >= 0 || state[(size_t)(my - 1) * mx + i] >= 0)
+            return 1;
+    for (i = 0; i < my; i++)
+        if (state[(size_t)i * mx] >= 0 || state[(size_t)i * mx + mx - 1] >= 0)
+            return 1;
+    return 0;
+}
+
+/* Patch p solved for load N: its creepages, the solver; *edge where the
+ * contact reaches the grid's border (taken: it sizes the next grid).
+ * normal_only: the creepages zero (the first pass, whose approach alone is
+ * used: the normal problem does not depend on them, and with none the
+ * tangential one is p = 0 at once). */
+static int solve(call *c, const rr_gap_patch *p, double N, int normal_only, int *edge)
+{
+    const rr_wheel_exact_problem *pb = c->pb;
+    rr_wheel_exact_result *res = c->res;
+    rr_exact_problem ep;
+    rr_exact_field f;
+    double k[4] = {pb->cx, pb->cy, pb->cphi, 0.0};
+    int st;
+    if (normal_only)
+        k[0] = k[1] = k[2] = 0.0;
+    else if (!pb->creep_given && (st = creepages(c, p, k)) != RR_OK)
+        return st;
+    memset(&ep, 0, sizeof ep);
+    ep.grid = p->grid;
+    ep.h = c->h;
+    ep.N = N;
+    ep.G = c->G;
+    ep.nu = pb->nu;
+    ep.mu = pb->mu;
+    ep.cx = k[0];
+    ep.cy = k[1];
+    ep.cphi = k[2];
+    ep.spin_shift = pb->spin_shift;
+    ep.tol = pb->tol;
+    ep.maxit = pb->maxit;
+    ep.interrupt = pb->interrupt;
+    res->cx = k[0];
+    res->cy = k[1];
+    res->cphi = k[2];
+    res->V = k[3];
+    res->N = N;
+    res->passes++;
+    if (rr_exact_workspace_len(p->grid.mx, p->grid.my) > c->exact_len) {
+        res->need = rr_wheel_exact_workspace_len(pb, p->grid.mx, p->grid.my);
+        res->why = RR_WHEEL_EXACT_SOLVE;
+        return RR_ERR_WORKSPACE;
+    }
+    memset(&f, 0, sizeof f);
+    if (c->field)
+        f = *c->field;
+    f.state = c->state;
+    st = rr_exact_solve(&ep, c->exact, c->exact_len, &res->sol, &f);
+    if (st < 0) {
+        res->why = RR_WHEEL_EXACT_SOLVE;
+        res->fail_N = N;
+        return st;
+    }
+    *edge = at_edge(c->state, p->grid.mx, p->grid.my);
+    return st;
+}
+
+/* The worse of two statuses (errors before warnings). */
+static int worse(int a, int b)
+{
+    return a < 0 || b < 0 ? (a < b ? a : b) : (a > b ? a : b);
+}
+
+/* Patch, solution and creepages for the normal load N (rig_exact's at());
+ * a: an estimate of the approach (0: find it). */
+static int at(call *c, double N, double a, rr_gap_patch *p, int *warn)
+{
+    const rr_wheel_exact_problem *pb = c->pb;
+    const int n = pb->gap.n;
+    const int first_ref = pb->gap.reference == RR_GAP_WEIGHTED ? RR_GAP_POINT : pb->gap.reference;
+    double cov = 1.1;
+    int st, edge, k;
+    if (!(a > 0.0)) {
+        if (pb->passes == 2) {
+            if ((st = build(c, N, n / 2 > 4 ? n / 2 : 4, pb->gap.approach, pb->gap.cover,
+                            first_ref, 0, 1, p)) < 0
+                || (st = solve(c, p, N, 1, &edge)) < 0)
+                return st;
+            *warn = worse(*warn, st);
+            a = c->res->sol.delta;
+        } else {
+            a = pb->gap.approach;            /* 0: Hertz's, in build */
+            cov = pb->gap.cover;
+        }
+    }
+    if ((st = build(c, N, n, a, cov, pb->gap.reference, pb->loaded, 0, p)) < 0
+        || (st = solve(c, p, N, 0, &edge)) < 0)
+        return st;
+    *warn = worse(*warn, st);
+    /* the contact lies where h <= the approach found: a grid that covers
+     * less, or a contact that reaches the grid's edge, is solved again */
+    for (k = 0; k < EDGE_REBUILDS; k++) {
+        if (!(edge || c->res->sol.delta > c->res->approach * c->res->cover))
+            return RR_OK;
+        if ((st = build(c, N, n, c->res->sol.delta, 1.3, pb->gap.reference, pb->loaded, 0, p))
+            < 0 || (st = solve(c, p, N, 0, &edge)) < 0)
+            return st;
+        *warn = worse(*warn, st);
+    }
+    if (!(edge || c->res->sol.delta > c->res->approach * c->res->cover))
+        return RR_OK;
+    c->res->why = RR_WHEEL_EXACT_EDGE;
+    return RR_ERR_RANGE;
+}
+
+/* What a caller can get wrong in the problem (the gap's options are
+ * rr_gap_build's to judge, at the first build). */
+static int check_problem(const rr_wheel_exact_problem *pb)
+{
+    const rr_contact_point *q = &pb->point;
+    const double v[] = {pb->y_ws, pb->pose0.z, pb->pose0.roll, pb->N, pb->Fz, pb->E, pb->nu,
+                        pb->mu, pb->vmin, q->s_roller, q->s_wheel, q->delta, q->A, q->B,
+                        pb->tol, pb->spin_shift};
+    const double creep[] = {pb->cx, pb->cy, pb->cphi};
+    const double motion[] = {pb->wheelset.c[0], pb->wheelset.c[1], pb->wheelset.c[2],
+                             pb->wheelset.v[0], pb->wheelset.v[1], pb->wheelset.v[2],
+                             pb->wheelset.w[0], pb->wheelset.w[1], pb->wheelset.w[2],
+                             pb->roller_spin};
+    if (!rr_all_finite(v, RR_COUNTOF(v))
+        || (pb->creep_given ? !rr_all_finite(creep, 3) : !rr_all_finite(motion, 10))
+        || (!isnan(pb->z) && !isfinite(pb->z)) || (!isnan(pb->roll) && !isfinite(pb->roll)))
+        return RR_ERR_NONFINITE;
+    if ((pb->N > 0.0) == (pb->Fz > 0.0) || pb->N < 0.0 || pb->Fz < 0.0)
+        return RR_ERR_LOAD;
+    if (!(pb->E > 0.0) || !(pb->nu >= 0.0 && pb->nu <= 0.5) || !isfinite(rr_estar(pb->E, pb->nu,
+                                                                                  pb->E, pb->nu)))
+        return RR_ERR_MATERIAL;
+    if (!(pb->mu > 0.0))
+        return RR_ERR_FRICTION;
+    if (!(pb->vmin > 0.0))
+        return RR_ERR_SPEED;
+    if ((pb->passes != 1 && pb->passes != 2) || (pb->loaded != 0 && pb->loaded != 1)
+        || (pb->creep_given != 0 && pb->creep_given != 1) || !(fabs(q->delta) < 0.5 * RR_PI)
+        || !(pb->gap.approach >= 0.0))
+        return RR_ERR_PARAM;
+    return RR_OK;
+}
+
+static void result_init(rr_wheel_exact_result *res)
+{
+    memset(res, 0, sizeof *res);
+    res->sol.fx = res->sol.fy = res->sol.mz = res->sol.fn = res->sol.delta = NAN;
+    res->sol.area = res->sol.pmax = res->sol.normal_residual = res->sol.tang_residual = NAN;
+    res->cx = res->cy = res->cphi = res->V = res->N = res->fail_N = NAN;
+    res->force[0] = res->force[1] = res->force[2] = NAN;
+    res->z = res->roll = res->lowered = res->approach = res->cover = NAN;
+    res->patch.grid.dx = res->patch.grid.dy = NAN;
+}
+
+/* The failed call's numbers NaN (the why, the grid and the need kept). */
+static int failed(rr_wheel_exact_result *res, int st)
+{
+    res->sol.fx = res->sol.fy = res->sol.mz = res->sol.fn = NAN;
+    res->force[0] = res->force[1] = res->force[2] = NAN;
+    return st;
+}
+
+int rr_wheel_exact(const rr_wheel_exact_problem *pb, double *work, size_t work_len, double *h,
+                   size_t h_len, const rr_exact_field *field, size_t field_len,
+                   rr_wheel_exact_result *res)
+{
+    rr_gap_patch *p;
+    call c;
+    int st, warn = RR_OK, k, it;
+    double N;
+
+    if (!res)
+        return RR_ERR_NULL;
+    result_init(res);
+    if (!pb || !pb->pair || !work || !h)
+        return RR_ERR_NULL;
+    if ((st = check_problem(pb)) != RR_OK)
+        return st;
+    memset(&c, 0, sizeof c);
+    c.pb = pb;
+    c.res = res;
+    c.field = field;
+    c.h = h;
+    c.cells = h_len < field_len || !field ? h_len : field_len;
+    c.estar = rr_estar(pb->E, pb->nu, pb->E, pb->nu);
+    c.G = pb->E / (2.0 * (1.0 + pb->nu));
+    c.z0 = pb->pose0.z;
+    c.roll0 = pb->pose0.roll;
+    c.delta0 = pb->point.delta;
+    /* the workspace: the solver's at its start (where it keeps its spectra
+     * from call to call), the contact state, the gap's at the end */
+    c.gap_len = rr_gap_workspace_len(&pb->gap);
+    if (!c.gap_len) {
+        res->why = RR_WHEEL_EXACT_GAP;
+        return RR_ERR_PARAM;
+    }
+    if (work_len < c.gap_len + state_len(c.cells) + 1) {
+        res->need = rr_wheel_exact_workspace_len(pb, 1, 1);
+        return RR_ERR_WORKSPACE;
+    }
+    c.gap = work + (work_len - c.gap_len);
+    c.state = (signed char *)(c.gap - state_len(c.cells));
+    c.exact = work;
+    c.exact_len = work_len - c.gap_len - state_len(c.cells);
+    p = &res->patch;
+
+    if (pb->N > 0.0) {
+        N = pb->N;
+        st = at(&c, N, 0.0, p, &warn);
+    } else {
+        /* vertical balance: Fz = N n_z + fy t2_z (t1 is horizontal), by the
+         * secant method on N on a fixed grid, then once more on the grid
+         * and pose of the load found */
+        N = pb->Fz / cos(c.delta0);
+        st = at(&c, N, 0.0, p, &warn);
+        for (k = 0; k < 2 && st >= 0; k++) {
+            double lastN = NAN, lastr = NAN;
+            int edge;
+            if (k == 1 && (st = at(&c, N, res->sol.delta, p, &warn)) < 0)
+                break;
+            for (it = 0; it < FZ_ITER; it++) {
+                const double r = (pb->Fz - res->sol.fy * p->t2[2]) / p->n[2] - N;
+                double step;
+                if (fabs(r) <= FZ_TOL * pb->Fz)
+                    break;
+                step = isnan(lastN) || lastr == r ? r : -r * (N - lastN) / (r - lastr);
+                lastN = N;
+                lastr = r;
+                N += step;
+                if ((st = solve(&c, p, N, 0, &edge)) < 0)
+                    break;
+                warn = worse(warn, st);
+            }
+            if (st >= 0 && it == FZ_ITER) {
+                res->why = RR_WHEEL_EXACT_SETTLE;
+                st = RR_ERR_RANGE;
+            }
+        }
+    }
+    if (st < 0)
+        return failed(res, st);
+    if (field && field->state)
+        memcpy(field->state, c.state, (size_t)p->grid.mx * (size_t)p->grid.my);
+    for (k = 0; k < 3; k++)
+        res->force[k] = res->sol.fx * p->t1[k] + res->sol.fy * p->t2[k] + res->sol.fn * p->n[k];
+    return warn;
+}
