@@ -5,6 +5,13 @@
  *
  * Conventions (rr_contact.h): forces on the wheel, fx = -G a b C11 cx for
  * small creepage; rigid slip (cx - cphi y, cy + cphi x).
+ *
+ * Over 800 lines on purpose: the methods share the helpers above and the
+ * dispatcher's checks (test_dispatch, test_extremes, test_bad_options) run
+ * every method through the same cases; each check is a function of its own,
+ * listed by main and read by its name, so the file is held a check at a
+ * time.  A method's checks move to a program of its own when they outgrow
+ * the shared helpers (as test_exact.c and test_exact_table.c did).
  */
 #include <math.h>
 #include <stdio.h>

@@ -1,0 +1,285 @@
+/*
+ * rr_gap_section.h - the profiles' samples and their cross-sections in the
+ * contact plane, for rr_gap.c alone (not a header of the library: static
+ * functions, included once, so that the per-element interpolation of the
+ * grid's fill stays inlined).  A cross-section is the run of a body's
+ * samples along which its lateral coordinate in the plane is strictly
+ * monotonic (patch.py's _single_valued), interpolated as numpy.interp.
+ */
+#ifndef RR_GAP_SECTION_H
+#define RR_GAP_SECTION_H
+
+#include <math.h>
+#include "util/rr_common.h"
+#include "geometry/rr_gap.h"
+
+/* ---- profile samples ------------------------------------------------------- */
+
+typedef struct {
+    double *s, *z;   /* positions and heights (up) */
+    int k;           /* count */
+    int k0;          /* the sample nearest the centre */
+} samples;
+
+/* numpy.linspace over the profile within RR_GAP_WINDOW of centre, heights
+ * by the spline (NaN where a rounded position leaves it), and the nearest
+ * sample (numpy.argmin: the first of equals). */
+static int take_samples(const rr_spline *sp, double centre, double step, size_t kmax,
+                        samples *q, rr_gap_patch *out, int body)
+{
+    const double y0 = sp->s[0], y1 = sp->s[sp->n - 1];
+    const double lo = fmax(y0, centre - RR_GAP_WINDOW), hi = fmin(y1, centre + RR_GAP_WINDOW);
+    double cnt, d, best;
+    int i, hint = -1, c;
+    if (!(hi > lo)) {
+        out->why = RR_GAP_OFF_PROFILE;
+        out->off_body = body;
+        out->off_s = centre;
+        out->off_lo = y0;
+        out->off_hi = y1;
+        return RR_ERR_GEOMETRY;
+    }
+    cnt = ceil((hi - lo) / step) + 1.0;
+    if (!(cnt <= (double)kmax))
+        return RR_ERR_WORKSPACE;        /* not reached: kmax bounds any window */
+    q->k = (int)cnt;
+    d = (hi - lo) / (double)(q->k - 1);
+    for (i = 0; i < q->k; i++) {
+        q->s[i] = i < q->k - 1 ? (double)i * d + lo : hi;
+        if (rr_spline_eval_at(sp, q->s[i], &hint, &q->z[i], NULL, NULL) != RR_OK)
+            q->z[i] = NAN;
+    }
+    /* |s - centre| falls then rises along the samples: the least is within
+     * one of the rounded position (the window holds at least two) */
+    c = (int)fmin(fmax(floor((centre - lo) / d + 0.5), 1.0), (double)(q->k - 1));
+    q->k0 = c - 1;
+    best = fabs(q->s[c - 1] - centre);
+    for (i = c; i <= c + 1 && i < q->k; i++)
+        if (fabs(q->s[i] - centre) < best) {
+            best = fabs(q->s[i] - centre);
+            q->k0 = i;
+        }
+    return RR_OK;
+}
+
+/* ---- the plane and the cross-sections -------------------------------------- */
+
+typedef struct {
+    const rr_wheel_roller *p;
+    double sigma;            /* +1 left, -1 right */
+    double y_ws, z;          /* the wheelset's pose */
+    double cr, sr;           /* cos, sin of its roll */
+    double P0, P1;           /* the reference point, rig (Y, Z) */
+    double t2y, t2z, ny, nz; /* t2 and n in the rig's (Y, Z) */
+} plane;
+
+/* radius - sqrt(radius^2 - x^2) without cancellation (patch.py's _drop:
+ * numpy.maximum keeps a NaN) */
+static double drop(double radius, double x)
+{
+    const double x2 = x * x;
+    double v = radius * radius - x2;
+    v = v < 0.0 ? 0.0 : v;
+    return x2 / (radius + sqrt(v));
+}
+
+static void plane_set(plane *f, double P0, double P1, double delta)
+{
+    const double c = cos(delta), s = sin(delta);
+    f->P0 = P0;
+    f->P1 = P1;
+    f->t2y = c;
+    f->t2z = f->sigma * s;
+    f->ny = -f->sigma * s;
+    f->nz = c;
+}
+
+/* A body's cross-section at x in the plane: sample i at (yc[i], ze[i]); the
+ * run [a, b] of samples around k0 along which yc is strictly monotonic
+ * (dir +1 increasing with the index, -1 decreasing), known to end at a
+ * (a_end) or b (b_end), or computed only as far as a caller needed. */
+typedef struct {
+    const samples *q;
+    int body;                /* 0 roller, 1 wheel */
+    int k0;                  /* the sample the run holds */
+    double *yc, *ze;
+    int a, b, dir, a_end, b_end;
+    int hint;                /* the last interpolation's interval */
+} section;
+
+static void sec_point(const plane *f, section *c, int i, double x)
+{
+    const rr_wheel_roller *p = f->p;
+    const double zi = c->q->z[i];
+    double Y, Z, dY, dZ;
+    if (c->body == 0) {
+        Y = f->sigma * (p->roller_y + c->q->s[i]);
+        Z = zi - drop(p->R0 + zi, x);
+    } else {
+        const double yl = f->sigma * (p->wheel_y + c->q->s[i]);
+        const double zl = -p->r0 + zi + drop(p->r0 - zi, x);
+        Y = f->y_ws + yl * f->cr - zl * f->sr;
+        Z = f->z + yl * f->sr + zl * f->cr;
+    }
+    dY = Y - f->P0;
+    dZ = Z - f->P1;
+    c->yc[i] = dY * f->t2y + dZ * f->t2z;
+    c->ze[i] = dY * f->ny + dZ * f->nz;
+}
+
+/* 1 where the step from sample i to j (= i +- 1) continues the run */
+static int sec_good(const section *c, int i, int j)
+{
+    const double d = j > i ? c->yc[j] - c->yc[i] : c->yc[i] - c->yc[j];
+    return isfinite(d) && isfinite(c->ze[j]) && (c->dir > 0 ? d > 0.0 : d < 0.0);
+}
+
+/* The run around the reference sample at x (patch.py's _single_valued),
+ * computed outward until it covers [need_lo, need_hi] or ends (full: to
+ * its ends).  RR_ERR_GEOMETRY (why FOLD) where it does not start. */
+static int sec_walk(const plane *f, section *c, double x, double need_lo, double need_hi,
+                    int full, rr_gap_patch *out)
+{
+    const int k = c->q->k;
+    const int k0 = c->k0 < 0 ? 0 : c->k0 > k - 2 ? k - 2 : c->k0;
+    double d;
+    sec_point(f, c, k0, x);
+    sec_point(f, c, k0 + 1, x);
+    d = c->yc[k0 + 1] - c->yc[k0];
+    if (!(isfinite(d) && d != 0.0 && isfinite(c->ze[k0]) && isfinite(c->ze[k0 + 1]))) {
+        out->why = RR_GAP_FOLD;
+        return RR_ERR_GEOMETRY;
+    }
+    c->dir = d > 0.0 ? 1 : -1;
+    c->a = k0;
+    c->b = k0 + 1;
+    c->a_end = c->b_end = 0;
+    c->hint = 0;
+    for (;;) {                              /* up the samples */
+        const int b = c->b;
+        if (b + 1 >= k) {
+            c->b_end = 1;
+            break;
+        }
+        if (!full && (c->dir > 0 ? c->yc[b] > need_hi : c->yc[b] < need_lo))
+            break;
+        sec_point(f, c, b + 1, x);
+        if (!sec_good(c, b, b + 1)) {
+            c->b_end = 1;
+            break;
+        }
+        c->b = b + 1;
+    }
+    for (;;) {                              /* down */
+        const int a = c->a;
+        if (a == 0) {
+            c->a_end = 1;
+            break;
+        }
+        if (!full && (c->dir > 0 ? c->yc[a] < need_lo : c->yc[a] > need_hi))
+            break;
+        sec_point(f, c, a - 1, x);
+        if (!sec_good(c, a, a - 1)) {
+            c->a_end = 1;
+            break;
+        }
+        c->a = a - 1;
+    }
+    return RR_OK;
+}
+
+/* The run's j-th sample in increasing yc. */
+static int sec_index(const section *c, int j)
+{
+    return c->dir > 0 ? c->a + j : c->b - j;
+}
+
+static double sec_first(const section *c)
+{
+    return c->yc[sec_index(c, 0)];
+}
+
+static double sec_last(const section *c)
+{
+    return c->yc[sec_index(c, c->b - c->a)];
+}
+
+/* numpy.interp(y, yc of the run, v of the run) (v: ze, or the samples'
+ * positions), its formula and special cases; c->hint keeps the interval of
+ * the last call: queries in order (a scan, a column's rows) step on from
+ * it, others bisect. */
+static double sec_interp(section *c, double y, const double *v)
+{
+    const int n = c->b - c->a + 1, s = c->dir;
+    const double *x = c->yc + (s > 0 ? c->a : c->b);   /* x[s j]: j-th in increasing yc */
+    const double *f = v + (s > 0 ? c->a : c->b);
+    int j, step;
+    double xj, xj1, fj, fj1, slope, r;
+    if (isnan(y))
+        return y;
+    if (y > x[s * (n - 1)])
+        return f[s * (n - 1)];
+    if (y < x[0])
+        return f[0];
+    j = c->hint < 0 ? 0 : c->hint > n - 1 ? n - 1 : c->hint;
+    for (step = 0; step < 4 && j < n - 1 && x[s * (j + 1)] <= y; step++)
+        j++;
+    if (!(x[s * j] <= y && (j == n - 1 || y < x[s * (j + 1)]))) {
+        int lo = 0, hi = n - 1;              /* bisect: x[lo] <= y < x[hi] */
+        if (y >= x[s * hi]) {
+            lo = hi;
+        } else {
+            while (hi - lo > 1) {
+                const int mid = lo + (hi - lo) / 2;
+                if (x[s * mid] <= y)
+                    lo = mid;
+                else
+                    hi = mid;
+            }
+        }
+        j = lo;
+    }
+    c->hint = j;
+    xj = x[s * j];
+    fj = f[s * j];
+    if (j == n - 1 || xj == y)
+        return fj;
+    xj1 = x[s * (j + 1)];
+    fj1 = f[s * (j + 1)];
+    slope = (fj1 - fj) / (xj1 - xj);
+    r = slope * (y - xj) + fj;
+    if (isnan(r)) {
+        r = slope * (y - xj1) + fj1;
+        if (isnan(r) && fj == fj1)
+            r = fj;
+    }
+    return r;
+}
+
+/* h along n at lateral y (patch.py's _Sections.gap): NaN outside both runs. */
+static double gap_at(section *r, section *w, double y)
+{
+    const double lo = fmax(sec_first(r), sec_first(w)), hi = fmin(sec_last(r), sec_last(w));
+    const double g = sec_interp(w, y, w->ze) - sec_interp(r, y, r->ze);
+    return y < lo || y > hi ? NAN : g;
+}
+
+/* Both runs at x = 0 in full and where they overlap; RR_ERR_GEOMETRY (why
+ * FOLD, APART). */
+static int sections0(const plane *f, section *r, section *w, double *lo, double *hi,
+                     rr_gap_patch *out)
+{
+    int st;
+    if ((st = sec_walk(f, r, 0.0, 0.0, 0.0, 1, out)) != RR_OK
+        || (st = sec_walk(f, w, 0.0, 0.0, 0.0, 1, out)) != RR_OK)
+        return st;
+    *lo = fmax(sec_first(r), sec_first(w));
+    *hi = fmin(sec_last(r), sec_last(w));
+    if (!(*hi > *lo)) {
+        out->why = RR_GAP_APART;
+        return RR_ERR_GEOMETRY;
+    }
+    return RR_OK;
+}
+
+#endif
