@@ -24,49 +24,11 @@
  * balance (Fz given) to the solver's load tolerance.
  */
 #include "fuzz.h"
+#include "fuzz_profile.h"
 
-#define MAX_POINTS 80
 #define MAX_CELLS 4096
 
-typedef struct {
-    int n;
-    double s[MAX_POINTS], z[MAX_POINTS], m[MAX_POINTS];
-} profile;
-
-/* 0 and the spline in p, or rr_spline_init's status. */
-static int decode_profile(fz_in *in, profile *p, int roller)
-{
-    const int mode = fz_choice(in, 4);
-    const int n = fz_range(in, 4, MAX_POINTS);
-    double work[MAX_POINTS];
-    int i;
-    p->n = n;
-    if (mode <= 1) {
-        const double shape = roller ? fz_log(in, 0.01, 1.0) : fz_lin(in, -0.1, 0.3);
-        const double half = (roller ? 0.9 * shape : 0.05) * fz_lin(in, 0.05, 1.0);
-        const double amp = mode == 1 ? fz_log(in, 1e-12, 1e-3) : 0.0;
-        for (i = 0; i < n; i++) {
-            const double s = -half + 2.0 * half * i / (n - 1);
-            p->s[i] = s;
-            p->z[i] = roller ? sqrt(shape * shape - s * s) - shape : s * tan(shape);
-            if (mode == 1)
-                p->z[i] += amp * fz_lin(in, -1.0, 1.0);
-        }
-    } else {
-        in->edges = mode == 2;
-        p->s[0] = fz_lin(in, -0.05, 0.0);
-        p->z[0] = fz_lin(in, -0.005, 0.005);
-        for (i = 1; i < n; i++) {
-            p->s[i] = p->s[i - 1] + fz_log(in, 1e-4, 5e-3);
-            p->z[i] = fz_lin(in, -0.005, 0.005);
-        }
-        in->edges = 1;
-    }
-    fz_note("%s mode %d, %d points; ", roller ? "roller" : "wheel", mode, n);
-    return rr_spline_init(n, p->s, p->z, p->m, work);
-}
-
-static void set_pair(fz_in *in, const profile *w, const profile *r, rr_wheel_roller *p)
+static void set_pair(fz_in *in, const fz_profile *w, const fz_profile *r, rr_wheel_roller *p)
 {
     p->wheel.n = w->n;
     p->wheel.s = w->s;
@@ -316,11 +278,11 @@ static void check_wheel(fz_in *in, rr_wheel_roller *p)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fz_in in = fz_start(data, size);
-    profile w, r;
+    fz_profile w, r;
     rr_wheel_roller p;
     const int which = fz_choice(&in, 4);
     in.edges = 0;
-    if (decode_profile(&in, &w, 0) != RR_OK || decode_profile(&in, &r, 1) != RR_OK)
+    if (fz_decode_profile(&in, &w, 0, 4, 0) != RR_OK || fz_decode_profile(&in, &r, 1, 4, 0) != RR_OK)
         return 0;
     in.edges = 1;
     set_pair(&in, &w, &r, &p);

@@ -8,10 +8,8 @@
  * it can check.  (n larger than the buffer it cannot check: the struct has
  * no length, so n never exceeds the rows allocated here.)
  *
- * Profiles: each of the wheel and the roller is either its base shape (a
- * cone of slope tan(alpha), a circular crown of radius rho) on 3 .. 80
- * points over a width from the input, that shape with a perturbation of
- * each point, or a free point list (increments and heights).  The pair:
+ * Profiles: the wheel's and the roller's from fuzz_profile.h (3 .. 80
+ * points; base shape, perturbed, or a free point list).  The pair:
  * r0, R0 (20 .. 500 mm), the profiles' lateral places, side +-1 (or any
  * int).  Search options: nsamples 3 .. 2000 (400 for the Newton solves
  * and tables) or an edge, the two-point tolerances.  Tables: 2 .. 6 rows.
@@ -23,53 +21,11 @@
  * success means finite outputs.
  */
 #include "fuzz.h"
+#include "fuzz_profile.h"
 
-#define MAX_POINTS 80
 #define MAX_ROWS 6
 
-typedef struct {
-    int n;
-    double s[MAX_POINTS], z[MAX_POINTS], m[MAX_POINTS];
-} profile;
-
-/* 0 and the spline in p, or the (nonzero) status of rr_spline_init. */
-static int decode_profile(fz_in *in, profile *p, int roller)
-{
-    const int mode = fz_choice(in, 4);
-    const int n = fz_range(in, 3, MAX_POINTS);
-    double work[MAX_POINTS];
-    int i;
-
-    p->n = n;
-    if (mode <= 1) {
-        const double shape = roller ? fz_log(in, 0.01, 1.0) : fz_lin(in, -0.1, 0.3);
-        const double half = (roller ? 0.9 * shape : 0.05) * fz_lin(in, 0.05, 1.0);
-        const double amp = mode == 1 ? fz_log(in, 1e-12, 1e-3) : 0.0;
-        for (i = 0; i < n; i++) {
-            const double s = -half + 2.0 * half * i / (n - 1);
-            p->s[i] = s;
-            p->z[i] = roller ? sqrt(shape * shape - s * s) - shape : s * tan(shape);
-            if (mode == 1)
-                p->z[i] += amp * fz_lin(in, -1.0, 1.0);
-        }
-    } else {
-        in->edges = mode == 2;
-        p->s[0] = fz_lin(in, -0.05, 0.0);
-        p->z[0] = fz_lin(in, -0.005, 0.005);
-        for (i = 1; i < n; i++) {
-            p->s[i] = p->s[i - 1] + fz_log(in, 1e-4, 5e-3);
-            p->z[i] = fz_lin(in, -0.005, 0.005);
-        }
-        in->edges = 1;
-    }
-    fz_note("%s profile mode %d, %d points:", roller ? "roller" : "wheel", mode, n);
-    for (i = 0; i < n; i++)
-        fz_note(" (%.17g, %.17g)", p->s[i], p->z[i]);
-    fz_note("; ");
-    return rr_spline_init(n, p->s, p->z, p->m, work);
-}
-
-static void set_spline(rr_spline *sp, const profile *p)
+static void set_spline(rr_spline *sp, const fz_profile *p)
 {
     sp->n = p->n;
     sp->s = p->s;
@@ -77,7 +33,7 @@ static void set_spline(rr_spline *sp, const profile *p)
     sp->m = p->m;
 }
 
-static void decode_pair(fz_in *in, const profile *w, const profile *r, rr_wheel_roller *p)
+static void decode_pair(fz_in *in, const fz_profile *w, const fz_profile *r, rr_wheel_roller *p)
 {
     set_spline(&p->wheel, w);
     set_spline(&p->roller, r);
@@ -346,14 +302,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fz_in in = fz_start(data, size);
     const int op = fz_choice(&in, 4);
-    profile w, r;
+    fz_profile w, r;
     rr_wheel_roller left, right;
 
     if (op == 3) {
         check_raw_table(&in);
         return 0;
     }
-    if (decode_profile(&in, &w, 0) != RR_OK || decode_profile(&in, &r, 1) != RR_OK)
+    if (fz_decode_profile(&in, &w, 0, 3, 1) != RR_OK || fz_decode_profile(&in, &r, 1, 3, 1) != RR_OK)
         return 0;                    /* invalid point lists: fuzz_spline's business */
     decode_pair(&in, &w, &r, &left);
     right = left;
