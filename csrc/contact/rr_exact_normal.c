@@ -259,8 +259,22 @@ int rr_exact_solve_normal(solver *S, rr_exact_result *res)
             }
         }
         if (rz == 0.0) {
-            converged = 1;
-            break;
+            /* no residual on C (a set of one element has none): converged
+             * unless exterior elements that the surfaces penetrate join C
+             * (a start of too few elements, the caller's) */
+            int joined = 0;
+            for (k = 0; k < n; k++)
+                if (in[k] == OUTSIDE && g[k] < delta) {
+                    in[k] = ADHESION;
+                    joined = 1;
+                }
+            if (!joined) {
+                converged = 1;
+                break;
+            }
+            restart = 1;
+            have_delta = 0;
+            continue;
         }
         /* Polak-Ribiere, reset to steepest descent after a change of C; a
          * restart never reads d (what the workspace holds from another
