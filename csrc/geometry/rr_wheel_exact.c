@@ -206,6 +206,7 @@ static int map_last(call *c, const rr_gap_patch *p)
             const double x = g->x0 + i * g->dx, y = g->y0 + j * g->dy;
             double r[3], u, v, fu, fv, w[4], acc[3] = {0.0, 0.0, 0.0};
             long iu, iv;
+            int near = 0;
             const size_t e = (size_t)j * g->mx + i;
             for (k = 0; k < 3; k++)
                 r[k] = p->point[k] + x * p->t1[k] + y * p->t2[k] - q->point[k];
@@ -230,16 +231,16 @@ static int map_last(call *c, const rr_gap_patch *p)
                     acc[1] += w[k] * l[m + n0];
                     acc[2] += w[k] * l[m + 2 * n0];
                 }
+                /* in contact where the nearest last element was: an
+                 * element brought in by the interpolation's reach alone
+                 * would leave the contact set again, each a restart of the
+                 * normal solver */
+                iu += fu >= 0.5;
+                iv += fv >= 0.5;
+                near = iu >= 0 && iv >= 0 && iu < o->mx && iv < o->my
+                       && l[(size_t)iv * o->mx + (size_t)iu] > 0.0;
             }
-            /* in contact where the nearest last element was: an element
-             * brought in by the interpolation's reach alone would leave the
-             * contact set again, each a restart of the normal solver */
-            {
-                const long a = (long)floor(u + 0.5), b = (long)floor(v + 0.5);
-                const int near = a >= 0 && b >= 0 && a < o->mx && b < o->my
-                                 && l[(size_t)b * o->mx + (size_t)a] > 0.0;
-                pn[e] = near && acc[0] > 0.0 ? acc[0] : 0.0;
-            }
+            pn[e] = near && acc[0] > 0.0 ? acc[0] : 0.0;
             px[e] = acc[1];
             py[e] = acc[2];
             positive += pn[e] > 0.0;
