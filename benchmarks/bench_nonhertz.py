@@ -27,6 +27,13 @@ rr_wheel_exact.h):
 Times are medians of R repeats (default 1) per case, then the median and
 the largest over the cases; the machine is shared, so they move by 10-30 %
 from run to run.
+
+    python benchmarks/bench_nonhertz.py --chain [--repeat R]
+
+times the full chain alone, with whichever rollerrig the interpreter
+imports: run it with another checkout's environment for its "before" (the
+warm starts of issue 24: main's build, then this one's, one after the
+other), one row per grid with the solves per case.
 """
 import argparse
 import csv
@@ -63,14 +70,41 @@ def timed(f, c, repeat):
     return float(np.median(t)), out
 
 
+def chain_only(geo, tables, cs, repeat):
+    """The full chain of the rollerrig imported, on both grids: ms per case
+    (median, max over the cases of each case's median of R repeats), and the
+    solves per case (median, max)."""
+    print(f"rollerrig from {os.path.dirname(rr.__file__)}")
+    print("| full chain | ms per case, median | max | solves per case, median | max |")
+    print("|---|---|---|---|---|")
+    for name, grid in (("0.4 mm", True), ("n = 40", False)):
+        def chain(c):
+            kw = dict(dx=c["dx"], dy=c["ds"]) if grid else {}
+            return rr.rig_exact(geo[c["pair"]], c["y_ws"], Fz=c["FZ"], mu=c["mu"],
+                                spin=c["spin"], roller_spin=c["roller_spin"],
+                                E=2 * c["G"] * (1 + c["nu"]), nu=c["nu"],
+                                table=tables[c["pair"]], **kw)
+        chain(cs[0])                                     # warm up
+        res = [timed(chain, c, repeat) for c in cs]
+        t = 1e3 * np.array([r[0] for r in res])
+        p = np.array([r[1].passes for r in res])
+        print(f"| {name} | {np.median(t):.2f} | {t.max():.2f} | {np.median(p):g} | {p.max()} |")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=1)
-    repeat = ap.parse_args().repeat
+    ap.add_argument("--chain", action="store_true",
+                    help="the full chain alone, of the rollerrig imported")
+    args = ap.parse_args()
+    repeat = args.repeat
     geo = {"miniprof": rr.RigGeometry.measured_pair(),
            "s1002_uic60": rr.RigGeometry.standard(roller_radius=0.8001)}
     tables = {k: rr.contact_table(g, -0.0065, 0.0065, 261) for k, g in geo.items()}
     cs = cases()
+    if args.chain:
+        chain_only(geo, tables, cs, repeat)
+        return
 
     def mk(m):
         def patch(c):

@@ -51,10 +51,10 @@ def _case(i):
     return {k: v[i] for k, v in C.items()}
 
 
-def _same_grid(a, b):
+def _same_grid(a, b, rel=1e-12):
     assert a.h.shape == b.h.shape
     for k in ("dx", "dy", "x0", "y0"):
-        assert abs(getattr(a, k) - getattr(b, k)) <= 1e-12 * abs(getattr(b, k)) + 1e-18, k
+        assert abs(getattr(a, k) - getattr(b, k)) <= rel * abs(getattr(b, k)) + 1e-18, k
 
 
 def _patches(kw):
@@ -97,9 +97,15 @@ def test_patch_is_the_python_construction(inputs):
 
 def test_rig_exact_is_the_python_construction():
     # every sixth case, on CONTACT's 0.4 mm grid and on the default one: the
-    # same solves, the load and the forces to rounding (measured 2e-14 in N,
-    # 1e-12 in fy), but where a window's sample count flips (above: fy
-    # 7.4e-6 relative, 6.4e-7 mu N)
+    # same steps, the load and the forces to the solver's tolerance (tol
+    # 1e-6): the core starts each solve after the first from the last
+    # solution (rr_exact_solve_from), the Python construction each from the
+    # solver's own start, and both stop anywhere within the tolerance
+    # (measured: fx, fy 2.9e-6 mu N at most, median 7.8e-8; N 6.2e-8
+    # relative, the secant stopping anywhere within 1e-7 of Fz; cx 1.3e-9,
+    # the pose lowered by an approach solved to 1e-6).  Before the warm
+    # starts the same solves gave the load to rounding (2e-14), forces to
+    # 1e-12 but where a window's sample count flips (above: 6.4e-7 mu N).
     dF = []
     for i in range(0, C["key"].size, 6):
         c = _case(i)
@@ -108,33 +114,49 @@ def test_rig_exact_is_the_python_construction():
                       E=2 * c["G"] * (1 + c["nu"]), nu=c["nu"], table=table(c["pair"]), **grid)
             a = rr.rig_exact(geometry(c["pair"]), c["y_ws"], **kw)
             b = py.rig_exact(geometry(c["pair"]), c["y_ws"], **kw)
-            assert a.passes == b.passes
-            _same_grid(a.patch, b.patch)
-            assert abs(a.N / b.N - 1) < 1e-12
+            # the secant may take one step more or fewer where its residual
+            # lands at its tolerance
+            assert abs(a.passes - b.passes) <= 1
+            # the default grid's elements are sized from the approach found,
+            # solved to the tolerance (measured 4e-7 relative)
+            _same_grid(a.patch, b.patch, rel=2e-6)
+            assert abs(a.N / b.N - 1) < 3e-7
             # the creepages at the wheel's point P - pen n: pen is h's least
-            # value, 6e-10 m apart where the samples flip (cx 3.4e-10)
-            assert abs(a.cx - b.cx) < 1e-9 and abs(a.cy - b.cy) < 1e-9
-            assert abs(a.cphi - b.cphi) < 1e-9 * abs(b.cphi) + 1e-12
+            # value, 6e-10 m apart where the samples flip (cx 3.4e-10), and
+            # the pose is lowered by the approach solved to the tolerance
+            assert abs(a.cx - b.cx) < 1e-8 and abs(a.cy - b.cy) < 1e-8
+            assert abs(a.cphi - b.cphi) < 1e-8 * abs(b.cphi) + 1e-12
             assert np.allclose(a.force, b.force, rtol=0, atol=1e-5 * c["mu"] * b.N)
             dF.append(np.hypot(a.solution.fx - b.solution.fx, a.solution.fy - b.solution.fy)
                       / (c["mu"] * b.N))
     dF = np.array(dF)
-    assert dF.max() < 1e-5 and np.mean(dF < 1e-10) > 0.85, (dF.max(), np.mean(dF < 1e-10))
+    assert dF.max() < 1e-5 and np.median(dF) < 1e-6, (dF.max(), np.median(dF))
 
 
 def test_rig_exact_fields_are_its_patch_solved():
     # the solution handed back is exact_solve's on the patch handed back,
-    # with the creepages and the load it reports
+    # with the creepages and the load it reports, to the solver's tolerance
+    # (tol 1e-6): rig_exact's last solve starts from the one before it
+    # (rr_exact_solve_from), exact_solve from its own start, and each stops
+    # within the tolerance (measured here: forces 4.6e-9 mu N, pressure
+    # 1.3e-7 of its peak, tractions 3.4e-7 of mu pmax; on other shifts and
+    # grids up to 4.3e-7 mu N, 1.3e-6 and 2.7e-6)
     g = geometry("s1002_uic60")
-    e = rr.rig_exact(g, 0.0045, Fz=6e4, mu=0.4, spin=12.4, roller_spin=5.587, n=24)
+    mu = 0.4
+    e = rr.rig_exact(g, 0.0045, Fz=6e4, mu=mu, spin=12.4, roller_spin=5.587, n=24)
     p = e.patch
-    s = rr.exact_solve(p.h, dx=p.dx, dy=p.dy, x0=p.x0, y0=p.y0, N=e.N, mu=0.4,
+    s = rr.exact_solve(p.h, dx=p.dx, dy=p.dy, x0=p.x0, y0=p.y0, N=e.N, mu=mu,
                        G=2.1e11 / 2.56, nu=0.28, cx=e.cx, cy=e.cy, cphi=e.cphi)
-    for k in ("fx", "fy", "mz", "fn", "delta", "contact_area", "pmax"):
-        assert getattr(s, k) == getattr(e.solution, k), k
-    for k in ("pn", "px", "py", "sx", "sy", "contact", "slip", "x", "y"):
-        assert np.array_equal(getattr(s, k), getattr(e.solution, k)), k
-    assert np.allclose(e.force, s.fx * p.t1 + s.fy * p.t2 + s.fn * p.n, rtol=0, atol=1e-9)
+    q, muN = e.solution, mu * e.N
+    assert np.hypot(s.fx - q.fx, s.fy - q.fy) < 1e-6 * muN
+    assert abs(s.mz - q.mz) < 1e-6 * muN * p.dx
+    assert abs(s.fn / q.fn - 1) < 1e-12 and abs(s.delta / q.delta - 1) < 1e-7
+    assert s.contact_area == q.contact_area and abs(s.pmax / q.pmax - 1) < 1e-5
+    assert np.abs(s.pn - q.pn).max() < 1e-5 * s.pmax
+    assert max(np.abs(s.px - q.px).max(), np.abs(s.py - q.py).max()) < 1e-5 * mu * s.pmax
+    for k in ("contact", "slip", "x", "y"):
+        assert np.array_equal(getattr(s, k), getattr(q, k)), k
+    assert np.allclose(e.force, q.fx * p.t1 + q.fy * p.t2 + q.fn * p.n, rtol=0, atol=1e-9)
     assert abs(e.force[2] - 6e4) <= 1e-7 * 6e4
 
 

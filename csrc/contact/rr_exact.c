@@ -2,10 +2,10 @@
  * rr_exact.c - Kalker's exact theory of steady rolling (rr_exact.h): the
  * driver of one case (its checks, the workspace, the spectra of its grid
  * built or kept, the normal solution of the previous case reused, then the
- * normal and the tangential problem), the workspace's length and the
- * Hertzian grid.  The operators are rr_exact_ops.c, the problems
- * rr_exact_normal.c and rr_exact_tangential.c (rr_exact_solver.h between
- * them).
+ * normal and the tangential problem), from the solver's own starts or the
+ * caller's (rr_exact_solve_from), the workspace's length and the Hertzian
+ * grid.  The operators are rr_exact_ops.c, the problems rr_exact_normal.c
+ * and rr_exact_tangential.c (rr_exact_solver.h between them).
  */
 #include <math.h>
 #include <string.h>
@@ -168,8 +168,35 @@ static int check_problem(const rr_exact_problem *pb, size_t work_len)
     return RR_OK;
 }
 
+/* What a caller can get wrong in a start (rr_exact_start), for the grid
+ * of pb (already checked). */
+static int check_start(const rr_exact_problem *pb, const rr_exact_start *s)
+{
+    const int n = pb->grid.mx * pb->grid.my;
+    int k, positive = 0;
+    if (s->mx != pb->grid.mx || s->my != pb->grid.my)
+        return RR_ERR_GRID;
+    if (!s->pn || (!s->px) != (!s->py))
+        return RR_ERR_NULL;
+    if (!rr_all_finite(s->pn, n) || (s->px && (!rr_all_finite(s->px, n)
+                                               || !rr_all_finite(s->py, n))))
+        return RR_ERR_NONFINITE;
+    for (k = 0; k < n; k++) {
+        if (s->pn[k] < 0.0)
+            return RR_ERR_PARAM;
+        positive |= s->pn[k] > 0.0;
+    }
+    return positive ? RR_OK : RR_ERR_PARAM;
+}
+
 int rr_exact_solve(const rr_exact_problem *pb, double *work, size_t work_len,
                    rr_exact_result *res, rr_exact_field *field)
+{
+    return rr_exact_solve_from(pb, NULL, work, work_len, res, field);
+}
+
+int rr_exact_solve_from(const rr_exact_problem *pb, const rr_exact_start *start, double *work,
+                        size_t work_len, rr_exact_result *res, rr_exact_field *field)
 {
     layout L;
     rr_conv2d cv;
@@ -185,6 +212,8 @@ int rr_exact_solve(const rr_exact_problem *pb, double *work, size_t work_len,
         return RR_ERR_NULL;
     }
     st = check_problem(pb, work_len);
+    if (st == RR_OK && start)
+        st = check_start(pb, start);
     if (st < 0) {
         result_nan(res);
         field_nan(pb, field);
@@ -218,11 +247,15 @@ int rr_exact_solve(const rr_exact_problem *pb, double *work, size_t work_len,
         return RR_ERR_RANGE;
     }
     S.pb = pb;
+    S.start = start;
     S.L = &L;
     S.cv = &cv;
     S.products = 0;
-    st = normal_cached(pb, &L, res);
-    if (st == 2) {
+    if (start) {
+        /* a warm solve: the cache (a cold solve's doubles) neither read nor
+         * replaced */
+        st = rr_exact_solve_normal(&S, res);
+    } else if ((st = normal_cached(pb, &L, res)) == 2) {
         /* a new normal problem: solved, and kept for the next case */
         L.nkey[0] = 0.0;
         memcpy(L.h_cache, L.h, (size_t)n * sizeof(double));

@@ -91,6 +91,22 @@ typedef struct {
     signed char *state;  /* -1 outside the contact, 0 adhesion, 1 slip */
 } rr_exact_field;
 
+/* A warm start for rr_exact_solve_from: the solution of a nearby problem
+ * (another load, creepages or gap; e.g. the field rr_exact_solve gave) on
+ * a grid of the same size, which starts the iterations within a few
+ * products of the answer where they would start from Hertz and FASTSIM.
+ * The arrays are read before anything is written to the field, so they
+ * may be the field's own (not the workspace). */
+typedef struct {
+    int mx, my;          /* the start's grid size: must be the problem's */
+    const double *pn;    /* pressure [Pa], mx * my values, finite and >= 0, some > 0:
+                            its positive elements are the first contact set, its
+                            shape the first pressure (scaled to the load N) */
+    const double *px, *py;  /* tangential traction on body 1 [Pa], mx * my finite values
+                            each (clipped to the new bound mu pn), or both NULL: the
+                            solver's own start (FASTSIM's) */
+} rr_exact_start;
+
 /* The options of the registry's method "exact" (rr_exact_method.c), by index. */
 enum {
     RR_EXACT_NX = 0,          /* elements across 2a */
@@ -120,6 +136,22 @@ size_t rr_exact_workspace_len(int mx, int my);
  */
 int rr_exact_solve(const rr_exact_problem *pb, double *work, size_t work_len,
                    rr_exact_result *res, rr_exact_field *field);
+
+/*
+ * rr_exact_solve_from - rr_exact_solve from the caller's start (NULL:
+ * rr_exact_solve itself, the same doubles).  The solution is the problem's
+ * to the tolerance whatever the start (the converged iterates of a cold and
+ * a warm start differ by the tolerance's order, not bit for bit); the
+ * workspace's cached normal solution is neither used nor replaced by a
+ * warm solve, so that a cold solve after it gives a fresh solve's doubles.
+ *   status: rr_exact_solve's; a bad start is refused before any work, as
+ *   rr_exact_solve's errors (outputs NaN): RR_ERR_GRID (start->mx, my not
+ *   the problem's), RR_ERR_NULL (start->pn NULL, or one of px, py),
+ *   RR_ERR_NONFINITE (a value NaN or infinite), RR_ERR_PARAM (a pressure
+ *   negative, or none positive).
+ */
+int rr_exact_solve_from(const rr_exact_problem *pb, const rr_exact_start *start, double *work,
+                        size_t work_len, rr_exact_result *res, rr_exact_field *field);
 
 /*
  * rr_exact_hertz_grid - the grid of a Hertzian ellipse with semi-axes a

@@ -1,8 +1,8 @@
 /*
  * rr_exact_normal.c - the exact solver's normal problem (rr_exact.h):
  * NormCG (Kalker's, as CONTACT's) on the contact set with the inverse
- * stencil as preconditioner, from the Hertzian or the caller's start, the
- * products by FFT.
+ * stencil as preconditioner, from the Hertzian start, one from h or the
+ * caller's (rr_exact_solve_from), the products by FFT.
  */
 #include <math.h>
 #include <string.h>
@@ -145,6 +145,28 @@ static int start_from_h(const rr_exact_problem *pb, layout *L, const double *h, 
     return start_from_q(pb, L, p);
 }
 
+/* The caller's start (rr_exact_start, checked: finite, >= 0, some > 0):
+ * its positive elements the first contact set, its shape scaled to the
+ * load N (through its largest value, so that no sum overflows).  Returns
+ * the elements in contact. */
+static int start_from_caller(const rr_exact_problem *pb, layout *L, const double *pn, double *p)
+{
+    const int n = L->n;
+    double pmax = 0.0, psum = 0.0;
+    int k, cnt = 0;
+    for (k = 0; k < n; k++)
+        pmax = pn[k] > pmax ? pn[k] : pmax;
+    for (k = 0; k < n; k++) {
+        L->state[k] = pn[k] > 0.0 ? ADHESION : OUTSIDE;
+        p[k] = pn[k] / pmax;
+        psum += p[k];
+        cnt += pn[k] > 0.0;
+    }
+    for (k = 0; k < n; k++)
+        p[k] *= pb->N / (pb->grid.dx * pb->grid.dy * psum);
+    return cnt;
+}
+
 /* NormCG: min 1/2 p.Ap + h.p over p >= 0 with dA sum p = N; the approach is
  * the multiplier, eliminated by keeping every search direction mean-free on
  * the contact set C.  Preconditioned, as Vollebregt's NormCG, by an
@@ -178,11 +200,13 @@ int rr_exact_solve_normal(solver *S, rr_exact_result *res)
     hmax -= hmin;
     h0 = hmin;
     hmin = 0.0;
-    /* start: Hertz's pressure where h is Hertzian (the discrete solution
-     * differs by about 1 % rms: a few CG steps), else the lowest tenth of h
-     * under a uniform pressure */
+    /* start: the caller's; else Hertz's pressure where h is Hertzian (the
+     * discrete solution differs by about 1 % rms: a few CG steps), else the
+     * lowest tenth of h under a uniform pressure */
     cnt = 0;
-    if (!pb->h && rr_hertz(pb->A, pb->B, pb->N, pb->G / (1.0 - pb->nu), &hz) == RR_OK) {
+    if (S->start)
+        cnt = start_from_caller(pb, L, S->start->pn, p);
+    else if (!pb->h && rr_hertz(pb->A, pb->B, pb->N, pb->G / (1.0 - pb->nu), &hz) == RR_OK) {
         for (k = 0; k < n; k++) {
             const double x = (pb->grid.x0 + (k % L->mx) * pb->grid.dx) / hz.a;
             const double y = (pb->grid.y0 + (k / L->mx) * pb->grid.dy) / hz.b;
@@ -235,8 +259,22 @@ int rr_exact_solve_normal(solver *S, rr_exact_result *res)
             }
         }
         if (rz == 0.0) {
-            converged = 1;
-            break;
+            /* no residual on C (a set of one element has none): converged
+             * unless exterior elements that the surfaces penetrate join C
+             * (a start of too few elements, the caller's) */
+            int joined = 0;
+            for (k = 0; k < n; k++)
+                if (in[k] == OUTSIDE && g[k] < delta) {
+                    in[k] = ADHESION;
+                    joined = 1;
+                }
+            if (!joined) {
+                converged = 1;
+                break;
+            }
+            restart = 1;
+            have_delta = 0;
+            continue;
         }
         /* Polak-Ribiere, reset to steepest descent after a change of C; a
          * restart never reads d (what the workspace holds from another

@@ -49,6 +49,7 @@ typedef struct {
  * products so far. */
 typedef struct {
     const rr_exact_problem *pb;
+    const rr_exact_start *start;   /* NULL: the solver's own starts */
     layout *L;
     rr_conv2d *cv;
     int products;

@@ -2,7 +2,7 @@
  * rr_exact_tangential.c - the exact solver's tangential problem
  * (rr_exact.h): steady rolling's slip equations by semismooth Newton with
  * GMRES, preconditioned by the steady operator's stencil, from a FASTSIM
- * start; the products by FFT.
+ * start or the caller's (rr_exact_solve_from); the products by FFT.
  */
 #include <math.h>
 #include <string.h>
@@ -473,6 +473,32 @@ static int start_fastsim(const rr_exact_problem *pb, layout *L, const double *w)
     return RR_ERR_RANGE;      /* no traction (no creepage): the zero start needs no product */
 }
 
+/* The caller's start (rr_exact_start, checked finite): its traction on
+ * the elements in contact, clipped to the bound mu pn of this pressure.
+ * RR_OK, or RR_ERR_RANGE where nothing is left (start from 0). */
+static int start_from_caller(const rr_exact_start *st, layout *L)
+{
+    const int n = L->n;
+    int k, any = 0;
+    for (k = 0; k < n; k++) {
+        double px = 0.0, py = 0.0;
+        if (L->state[k] != OUTSIDE) {
+            const double g = L->fac[k + n], t = norm2(st->px[k], st->py[k]);
+            px = st->px[k];
+            py = st->py[k];
+            if (t > g) {
+                /* t may be infinite (two finite values whose norm is not) */
+                px = isfinite(t) ? px * (g / t) : 0.0;
+                py = isfinite(t) ? py * (g / t) : 0.0;
+            }
+        }
+        L->p[k] = px;
+        L->p[k + n] = py;
+        any |= px != 0.0 || py != 0.0;
+    }
+    return any ? RR_OK : RR_ERR_RANGE;
+}
+
 int rr_exact_solve_tangential(solver *S, rr_exact_result *res)
 {
     const rr_exact_problem *pb = S->pb;
@@ -484,7 +510,7 @@ int rr_exact_solve_tangential(solver *S, rr_exact_result *res)
     double *p = L->p, *s = L->s, *w = L->w, *F = L->f, *dl = L->dlt, *md = L->mdl, *pt = L->t1,
            *stt = L->t2;
     double g2 = 0.0, nF, nFold = 0.0, eta = 0.3, goal = 0.0;
-    int k, st = RR_OK, newton = 0, converged = 0;
+    int k, st = RR_OK, newton = 0, converged = 0, warm;
     S->products = 0;
     for (k = 0; k < n; k++) {
         const double x = pb->grid.x0 + (k % mx) * pb->grid.dx;
@@ -500,7 +526,10 @@ int rr_exact_solve_tangential(solver *S, rr_exact_result *res)
         s[k + n] = w[k + n];
     }
     g2 = sqrt(g2);
-    if (start_fastsim(pb, L, w) == RR_OK) {
+    /* no creepage: no traction, from the zero start at once (a start's
+     * traction would have to be iterated away) */
+    warm = S->start && S->start->px && (pb->cx != 0.0 || pb->cy != 0.0 || pb->cphi != 0.0);
+    if (warm ? start_from_caller(S->start, L) == RR_OK : start_fastsim(pb, L, w) == RR_OK) {
         if ((st = tang_product_g(S, p, s)) < 0)
             return st;
         for (k = 0; k < n2; k++)

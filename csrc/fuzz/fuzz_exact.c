@@ -30,7 +30,10 @@
  * grid (one double short refused) gives rr_exact_solve's status and doubles
  * where the problem is valid, an error with NaN forces where it is not, and
  * rr_creep_blame a member at fault; every method of the ellipse only
- * refuses it (RR_ERR_PATCH, NaN forces).
+ * refuses it (RR_ERR_PATCH, NaN forces).  The warm start
+ * (rr_exact_solve_from, warm_start below): starts from the solution
+ * perturbed, from any values or bad ones, refused with their status or
+ * solved with the oracles above, a cold solve after it unchanged.
  */
 #include "fuzz.h"
 
@@ -225,6 +228,131 @@ static void grid_problem(const rr_exact_problem *pb, int st, const rr_exact_resu
     }
 }
 
+/* 1 where the start s is one rr_exact_solve_from refuses for pb's grid
+ * (n elements), with the status it must give in *want. */
+static int start_invalid(const rr_exact_problem *pb, const rr_exact_start *s, int n, int *want)
+{
+    int k, positive = 0;
+    *want = RR_OK;
+    if (s->mx != pb->grid.mx || s->my != pb->grid.my)
+        *want = RR_ERR_GRID;
+    else if (!s->pn || (!s->px) != (!s->py))
+        *want = RR_ERR_NULL;
+    else {
+        for (k = 0; k < n && *want == RR_OK; k++)
+            if (!isfinite(s->pn[k]) || (s->px && (!isfinite(s->px[k]) || !isfinite(s->py[k]))))
+                *want = RR_ERR_NONFINITE;
+        for (k = 0; k < n && *want == RR_OK; k++) {
+            if (s->pn[k] < 0.0)
+                *want = RR_ERR_PARAM;
+            positive |= s->pn[k] > 0.0;
+        }
+        if (*want == RR_OK && !positive)
+            *want = RR_ERR_PARAM;
+    }
+    return *want != RR_OK;
+}
+
+/* The warm start (rr_exact_solve_from) on the valid workspace work of wl
+ * doubles after the cold solve st, r of pb: a start from the cold
+ * solution's field perturbed (f, where wanted), from any values, or a bad
+ * one (a value NaN or infinite, a pressure negative or none positive, a
+ * grid of another size, a pointer NULL).  Oracles: a bad start refused
+ * with its status and NaN out where the cold solve succeeded (else the
+ * problem's own error may come first); on success rr_exact_solve's oracles, and where both
+ * converged to a tolerance of at most 1e-8 the cold forces to 1e-3 mu N
+ * (a start changes only where the iterations stop; the bound is loose for
+ * the fuzzer's ill-conditioned gaps); a cold solve after it gives the
+ * first solve's doubles (nothing of the warm solve reaches it). */
+static void warm_start(fz_in *in, const rr_exact_problem *pb, double *work, size_t wl,
+                       int st, const rr_exact_result *r, const rr_exact_field *f, int invalid)
+{
+    const int n = pb->grid.mx * pb->grid.my, kind = fz_choice(in, 4);
+    double *pn = fz_guarded((size_t)n * sizeof(double)), *px = fz_guarded((size_t)n * sizeof(double));
+    double *py = fz_guarded((size_t)n * sizeof(double));
+    rr_exact_start s;
+    rr_exact_result rw, r2;
+    rr_exact_field fw;
+    int k, sw, want, bad;
+    s.mx = pb->grid.mx;
+    s.my = pb->grid.my;
+    s.pn = pn;
+    s.px = px;
+    s.py = py;
+    for (k = 0; k < n; k++) {
+        if (kind == 0 && f && f->pn && st >= 0) {
+            /* the solution, each value scaled by up to 30 % either way */
+            pn[k] = f->pn[k] * fz_lin(in, 0.7, 1.3);
+            px[k] = f->px[k] * fz_lin(in, 0.7, 1.3);
+            py[k] = f->py[k] * fz_lin(in, 0.7, 1.3);
+        } else {
+            pn[k] = fz_choice(in, 3) == 0 ? 0.0 : fz_log(in, 1e-3, 1e12);
+            px[k] = fz_slog(in, 1e-3, 1e300);
+            py[k] = fz_slog(in, 1e-3, 1e300);
+        }
+    }
+    if (fz_choice(in, 4) == 0) {
+        s.px = s.py = NULL;                    /* the pressure alone */
+        fz_note("; start: pressure alone");
+    }
+    if (kind == 3) {
+        /* a bad start */
+        const int e = fz_range(in, 0, n - 1);
+        switch (fz_choice(in, 8)) {
+        case 0: pn[e] = NAN; break;
+        case 1: px[e] = fz_choice(in, 2) ? INFINITY : NAN; break;
+        case 2: pn[e] = -fz_log(in, 1e-300, 1e9); break;
+        case 3: for (k = 0; k < n; k++) pn[k] = 0.0; break;
+        case 4: s.mx += fz_choice(in, 2) ? 1 : -1; break;
+        case 5: s.my += fz_choice(in, 2) ? 1 : -1; break;
+        case 6: s.pn = NULL; break;
+        default: s.py = NULL; s.px = px; break;
+        }
+    }
+    bad = start_invalid(pb, &s, n, &want);
+    fz_note("; warm start kind %d, bad %d", kind, bad);
+    memset(&fw, 0, sizeof fw);
+    if (f && f->pn) {
+        /* the start may be the field it writes (read first): here a copy */
+        fw = *f;
+    }
+    sw = rr_exact_solve_from(pb, &s, work, wl, &rw, f && f->pn ? &fw : NULL);
+    fz_status("rr_exact_solve_from", sw);
+    fz_guard_ok("rr_exact_solve_from", work, wl * sizeof *work, "work");
+    fz_error("rr_exact_solve_from", sw, invalid || bad, "the problem or the start is invalid");
+    /* the problem's own errors come first: where its cold solve succeeded */
+    if (st >= 0 && bad && sw != want)
+        fz_fail("rr_exact_solve_from: a bad start gave status %d, not %d", sw, want);
+    if (sw < 0) {
+        if (!isnan(rw.fx) || !isnan(rw.fy) || !isnan(rw.mz) || !isnan(rw.fn))
+            fz_fail("rr_exact_solve_from: error %d but the results are not NaN", sw);
+    } else {
+        FZ_FINITE("rr_exact_solve_from", sw, rw.fx);
+        FZ_FINITE("rr_exact_solve_from", sw, rw.fy);
+        FZ_FINITE("rr_exact_solve_from", sw, rw.mz);
+        FZ_FINITE("rr_exact_solve_from", sw, rw.delta);
+        if (!(fabs(rw.fn - pb->N) <= 1e-6 * pb->N))
+            fz_fail("rr_exact_solve_from: fn %.17g, not N %.17g", rw.fn, pb->N);
+        if (!(hypot(rw.fx, rw.fy) <= pb->mu * rw.fn * (1.0 + 1e-9)))
+            fz_fail("rr_exact_solve_from: |F| %.17g above mu fn %.17g", hypot(rw.fx, rw.fy),
+                    pb->mu * rw.fn);
+        if (f && f->pn)
+            check_fields(pb, sw, &rw, &fw);
+        if (st == RR_OK && sw == RR_OK && pb->tol <= 1e-8
+            && !(hypot(rw.fx - r->fx, rw.fy - r->fy) <= 1e-3 * pb->mu * pb->N))
+            fz_fail("rr_exact_solve_from: (%.17g, %.17g), the cold solve (%.17g, %.17g)", rw.fx,
+                    rw.fy, r->fx, r->fy);
+    }
+    /* nothing of it reaches a cold solve */
+    if (st >= 0) {
+        sw = rr_exact_solve(pb, work, wl, &r2, NULL);
+        same_solve("a solve after a warm one", sw, &r2, st, r);
+    }
+    fz_guard_free(pn);
+    fz_guard_free(px);
+    fz_guard_free(py);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fz_in in = fz_start(data, size);
@@ -386,6 +514,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             st2 = rr_exact_solve(&pb, work, wgive, &r2, NULL);
             same_solve("a solve after an interrupted one", st2, &r2, st, &r);
         }
+        if (fz_choice(&in, 2))
+            warm_start(&in, &pb, work, wgive, st, &r, want_field ? &f : NULL, invalid);
     }
     free(h);
     fz_guard_free(work);

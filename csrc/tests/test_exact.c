@@ -7,7 +7,9 @@
  * workspace of NaN (as a failed case may leave it) giving them too, the
  * interrupt hook (polled, never changing a double, stopping at once), the
  * field's sums, the steady-rolling equations checked by direct sums (no
- * FFT), and every documented error.
+ * FFT), every documented error, and the warm start (rr_exact_solve_from:
+ * the cold solution to the tolerance on two grid shapes, fewer products,
+ * the default path untouched, bad starts refused; test_warm_start).
  */
 #include <stdlib.h>
 #include <string.h>
@@ -114,6 +116,203 @@ static double steady_equations_error(const rr_exact_problem *pb, double *w, size
     free(pn);
     free(state);
     return err;
+}
+
+/* A non-Hertzian gap on pb's grid: Hertz's plus a quartic along y that
+ * flattens the middle (a patch wider than the ellipse, its pressure with
+ * two shoulders), as the rig's worn profiles give. */
+static void flat_gap(const rr_exact_problem *pb, double *h)
+{
+    int k;
+    for (k = 0; k < pb->grid.mx * pb->grid.my; k++) {
+        const double x = pb->grid.x0 + (k % pb->grid.mx) * pb->grid.dx;
+        const double y = pb->grid.y0 + (k / pb->grid.mx) * pb->grid.dy;
+        h[k] = pb->A * x * x + 0.3 * pb->B * y * y + 2e4 * pb->B * y * y * y * y;
+    }
+}
+
+typedef struct {
+    double *pn, *px, *py;
+} fields;
+
+static fields fields_new(int n)
+{
+    fields f;
+    f.pn = calloc(n, sizeof(double));
+    f.px = calloc(n, sizeof(double));
+    f.py = calloc(n, sizeof(double));
+    return f;
+}
+
+static void fields_free(fields *f)
+{
+    free(f->pn);
+    free(f->px);
+    free(f->py);
+}
+
+/* rr_exact_solve_from against rr_exact_solve.  The warm start's solution is
+ * the cold one's to the solver's tolerance: both stop where the normal
+ * step and the tangential residual are below tol relative to the
+ * pressure and traction found, so each lies within a few tol of the
+ * discrete solution; here tol = 1e-9 and the forces agree to 1e-8 mu N,
+ * the pressure to 1e-8 of its peak (measured 1.2e-10 and 1e-10: the bound,
+ * ten times tol, leaves room for the conditioning of the partial-slip
+ * problem).  Checked on two grid shapes, with the start
+ * the solution of another load and creepage (N 1 % larger, cx 5 %, cphi
+ * 10 %: the rig's load iteration and a table's neighbour), which must save
+ * products; the default path and the cached normal solution untouched;
+ * every bad start refused before any work. */
+static void test_warm_start(void)
+{
+    const int shapes[2][2] = {{15, 15}, {21, 11}};
+    int q, k;
+    for (q = 0; q < 2; q++) {
+        rr_exact_problem pb = hertz_case(0.006, 0.004, 15), near;
+        size_t len;
+        int n;
+        double *w, *fresh, *h;
+        fields f0, f1, f2;
+        rr_exact_field o0, o1, o2;
+        rr_exact_result r0, r1, r2, r3;
+        rr_exact_start start;
+        rr_exact_hertz_grid(0.006, 0.004, shapes[q][0], shapes[q][1], &pb.grid);
+        n = pb.grid.mx * pb.grid.my;
+        len = rr_exact_workspace_len(pb.grid.mx, pb.grid.my);
+        w = calloc(len, sizeof *w);
+        fresh = calloc(len, sizeof *fresh);
+        h = malloc(n * sizeof *h);
+        flat_gap(&pb, h);
+        pb.h = h;
+        pb.cx = 4e-4;
+        pb.cy = -1e-4;
+        pb.cphi = 0.8;
+        f0 = fields_new(n);
+        f1 = fields_new(n);
+        f2 = fields_new(n);
+        memset(&o0, 0, sizeof o0);
+        o0.pn = f0.pn;
+        o0.px = f0.px;
+        o0.py = f0.py;
+        o1 = o0;
+        o1.pn = f1.pn;
+        o1.px = f1.px;
+        o1.py = f1.py;
+        o2 = o0;
+        o2.pn = f2.pn;
+        o2.px = f2.px;
+        o2.py = f2.py;
+        /* the start: a nearby problem's solution */
+        near = pb;
+        near.N = pb.N / 1.01;
+        near.cx = pb.cx / 1.05;
+        near.cphi = pb.cphi / 1.1;
+        CHECK_STATUS(rr_exact_solve(&near, w, len, &r0, &o0), RR_OK, "warm: the start's solve");
+        CHECK(r0.nslip > 0 && r0.nslip < r0.ncontact, "warm: a partial-slip start");
+        start.mx = pb.grid.mx;
+        start.my = pb.grid.my;
+        start.pn = f0.pn;
+        start.px = f0.px;
+        start.py = f0.py;
+        CHECK_STATUS(rr_exact_solve(&pb, fresh, len, &r1, &o1), RR_OK, "warm: cold solve");
+        CHECK_STATUS(rr_exact_solve_from(&pb, &start, w, len, &r2, &o2), RR_OK, "warm solve");
+        {
+            const double muN = pb.mu * pb.N;
+            double dp = 0.0;
+            CHECK_CLOSE(r2.fx, r1.fx, 1e-8 * muN, 0.0, "warm: fx the cold one's to the tolerance");
+            CHECK_CLOSE(r2.fy, r1.fy, 1e-8 * muN, 0.0, "warm: fy");
+            CHECK_CLOSE(r2.mz, r1.mz, 1e-8 * muN * pb.grid.dx, 0.0, "warm: mz");
+            CHECK_CLOSE(r2.delta, r1.delta, 0.0, 1e-8, "warm: the approach");
+            CHECK(r2.ncontact == r1.ncontact && r2.nslip == r1.nslip, "warm: the same areas");
+            for (k = 0; k < n; k++)
+                dp = fmax(dp, fabs(f2.pn[k] - f1.pn[k]) / r1.pmax);
+            CHECK(dp < 1e-8, "warm: the pressure the cold one's to the tolerance");
+            CHECK(r2.normal_products < r1.normal_products
+                  && r2.tang_products < r1.tang_products, "warm: fewer products, both problems");
+        }
+        /* the start as the field written (the same arrays): read before the
+         * field is written, the same doubles as from a copy */
+        CHECK_STATUS(rr_exact_solve_from(&near, NULL, w, len, &r0, &o0), RR_OK, "warm: again");
+        memcpy(f1.pn, f0.pn, n * sizeof(double));
+        memcpy(f1.px, f0.px, n * sizeof(double));
+        memcpy(f1.py, f0.py, n * sizeof(double));
+        CHECK_STATUS(rr_exact_solve_from(&pb, &start, w, len, &r3, &o0), RR_OK, "warm: aliased");
+        CHECK(memcmp(&r3.fx, &r2.fx, sizeof r2.fx) == 0 && memcmp(&r3.mz, &r2.mz, sizeof r2.mz) == 0
+              && memcmp(f0.px, f2.px, n * sizeof(double)) == 0,
+              "warm: the start may be the field");
+        /* start NULL is rr_exact_solve; a warm solve leaves the cached normal
+         * solution (a cold one's) in place: a cold solve after it gives a
+         * fresh workspace's doubles */
+        CHECK_STATUS(rr_exact_solve_from(&pb, NULL, w, len, &r3, NULL), RR_OK, "start NULL");
+        CHECK(memcmp(&r3.fx, &r1.fx, sizeof r1.fx) == 0 && memcmp(&r3.mz, &r1.mz, sizeof r1.mz) == 0
+              && r3.normal_products == r1.normal_products
+              && r3.tang_products == r1.tang_products,
+              "start NULL: rr_exact_solve's doubles after warm solves");
+        /* the pressure alone: the tangential problem from FASTSIM, as cold */
+        start.pn = f1.pn;
+        start.px = start.py = NULL;
+        CHECK_STATUS(rr_exact_solve_from(&pb, &start, w, len, &r3, NULL), RR_OK, "pressure alone");
+        CHECK_CLOSE(r3.fx, r1.fx, 1e-8 * pb.mu * pb.N, 0.0, "pressure alone: fx");
+        CHECK(r3.tang_products == r1.tang_products, "pressure alone: FASTSIM's start");
+        /* tractions far beyond the bound: clipped to it, the same solution */
+        for (k = 0; k < n; k++) {
+            f2.px[k] = 1e300;
+            f2.py[k] = -1e300;
+        }
+        start.px = f2.px;
+        start.py = f2.py;
+        CHECK_STATUS(rr_exact_solve_from(&pb, &start, w, len, &r3, NULL), RR_OK, "huge tractions");
+        CHECK_CLOSE(r3.fx, r1.fx, 1e-8 * pb.mu * pb.N, 0.0, "huge tractions: clipped, fx");
+        /* no creepage: no traction at all, whatever the start's */
+        near = pb;
+        near.cx = near.cy = near.cphi = 0.0;
+        CHECK_STATUS(rr_exact_solve_from(&near, &start, w, len, &r3, NULL), RR_OK, "no creepage");
+        CHECK(r3.fx == 0.0 && r3.fy == 0.0 && r3.tang_products == 0, "no creepage: no traction");
+        /* bad starts: refused before any work, outputs NaN */
+        start.px = f0.px;
+        start.py = f0.py;
+        start.mx = pb.grid.mx - 1;
+        CHECK_STATUS(rr_exact_solve_from(&pb, &start, w, len, &r3, &o2), RR_ERR_GRID,
+                     "a start on another grid");
+        CHECK(isnan(r3.fx) && isnan(f2.pn[0]), "another grid: NaN out");
+        start.mx = pb.grid.mx;
+        start.my = pb.grid.my + 1;
+        CHECK_STATUS(rr_exact_solve_from(&pb, &start, w, len, &r3, NULL), RR_ERR_GRID, "my");
+        start.my = pb.grid.my;
+        start.pn = NULL;
+        CHECK_STATUS(rr_exact_solve_from(&pb, &start, w, len, &r3, NULL), RR_ERR_NULL, "pn NULL");
+        start.pn = f0.pn;
+        start.py = NULL;
+        CHECK_STATUS(rr_exact_solve_from(&pb, &start, w, len, &r3, NULL), RR_ERR_NULL,
+                     "px without py");
+        start.py = f0.py;
+        f0.pn[n / 2] = NAN;
+        CHECK_STATUS(rr_exact_solve_from(&pb, &start, w, len, &r3, NULL), RR_ERR_NONFINITE,
+                     "NaN pressure");
+        f0.pn[n / 2] = 1e9;
+        f0.py[n - 1] = INFINITY;
+        CHECK_STATUS(rr_exact_solve_from(&pb, &start, w, len, &r3, NULL), RR_ERR_NONFINITE,
+                     "infinite traction");
+        f0.py[n - 1] = 0.0;
+        f0.pn[0] = -1.0;
+        CHECK_STATUS(rr_exact_solve_from(&pb, &start, w, len, &r3, NULL), RR_ERR_PARAM,
+                     "negative pressure");
+        for (k = 0; k < n; k++)
+            f0.pn[k] = 0.0;
+        CHECK_STATUS(rr_exact_solve_from(&pb, &start, w, len, &r3, NULL), RR_ERR_PARAM,
+                     "no positive pressure");
+        CHECK(isnan(r3.fn), "a bad start: NaN out");
+        /* a start of one element in contact: still the solution */
+        f0.pn[(pb.grid.my / 2) * pb.grid.mx + pb.grid.mx / 2] = 1.0;
+        CHECK_STATUS(rr_exact_solve_from(&pb, &start, w, len, &r3, NULL), RR_OK, "one element");
+        CHECK_CLOSE(r3.fx, r1.fx, 1e-8 * pb.mu * pb.N, 0.0, "one element: fx");
+        fields_free(&f0);
+        fields_free(&f1);
+        fields_free(&f2);
+        free(w);
+        free(fresh);
+        free(h);
+    }
 }
 
 int main(void)
@@ -333,6 +532,7 @@ int main(void)
         CHECK_STATUS(rr_exact_hertz_grid(1.0, 1.0, 0, 5, &g), RR_ERR_GRID, "nx 0");
         CHECK_STATUS(rr_exact_hertz_grid(1.0, 1.0, 5, 5, NULL), RR_ERR_NULL, "NULL grid");
     }
+    test_warm_start();
     free(w);
     free(px);
     free(pn);

@@ -1,0 +1,182 @@
+/* test_wheel_warm.c - rr_wheel_exact's warm starts (rr_wheel_exact.h): each
+ * solve after the first starts from the last solution (rr_exact_solve_from;
+ * onto a rebuilt grid, mapped).  cold_start = 1 gives the solves from the
+ * solver's own starts: its final solution is rr_exact_solve's on the final
+ * patch bit for bit (the results before warm starts).  The warm starts
+ * give the same to the solver's tolerance: tol 1e-9 here, the forces to
+ * 1e-7 mu N (measured 7e-11: each solve stops within a few tol of the
+ * discrete solution; the bound leaves room for the pose, lowered by an
+ * approach solved to the tolerance), the same elements in contact and in
+ * slip, the vertical balance to the load iteration's 1e-7, with fewer
+ * products in the final solve. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "rr_test.h"
+#include "rollerrig.h"
+
+#define NP RR_RIG_PROFILE_POINTS
+#define CELLS (48 * 48)
+static double wy[NP], wz[NP], ry[NP], rz[NP], wzu[NP], wmu[NP], rzu[NP], rmu[NP], pw[4 * NP];
+
+/* The rig's conical wheel on its crowned roller (test_gap.c's rig_pair:
+ * r0 = R0 = 92 mm, cone 1:20, crown 60 mm, +-15 mm, 0.15 m out). */
+static void rig_pair(int side, rr_wheel_roller *p)
+{
+    rr_profile_points w, r;
+    rr_profile_conical(atan(0.05), -0.015, 0.015, NP, wy, wz);
+    rr_profile_crowned(0.06, -0.015, 0.015, NP, ry, rz);
+    w.n = r.n = NP;
+    w.y = wy;
+    w.z = wz;
+    r.y = ry;
+    r.z = rz;
+    w.end = r.end = RR_SPLINE_NOT_A_KNOT;
+    rr_profile_surface(&w, wzu, wmu, pw);
+    rr_profile_surface(&r, rzu, rmu, pw);
+    p->wheel.n = NP;
+    p->wheel.s = wy;
+    p->wheel.z = wzu;
+    p->wheel.m = wmu;
+    p->roller.n = NP;
+    p->roller.s = ry;
+    p->roller.z = rzu;
+    p->roller.m = rmu;
+    p->r0 = p->R0 = 0.092;
+    p->wheel_y = p->roller_y = 0.15;
+    p->side = side;
+}
+
+typedef struct {
+    double h[CELLS], pn[CELLS], px[CELLS], py[CELLS];
+    signed char state[CELLS];
+} wheel_out;
+
+static int run(const rr_wheel_exact_problem *pb, double *w, size_t len, wheel_out *o,
+               rr_wheel_exact_result *r)
+{
+    rr_exact_field f;
+    memset(&f, 0, sizeof f);
+    f.pn = o->pn;
+    f.px = o->px;
+    f.py = o->py;
+    f.state = o->state;
+    memset(w, 0, len * sizeof *w);
+    return rr_wheel_exact(pb, w, len, o->h, CELLS, &f, CELLS, r);
+}
+
+/* rr_exact_solve of the final patch of r (h in o) with pb's settings */
+static int solve_patch(const rr_wheel_exact_problem *pb, const rr_wheel_exact_result *r,
+                       const wheel_out *o, rr_exact_result *s)
+{
+    rr_exact_problem ep;
+    size_t len = rr_exact_workspace_len(r->patch.grid.mx, r->patch.grid.my);
+    double *w = calloc(len, sizeof *w);
+    int st;
+    memset(&ep, 0, sizeof ep);
+    ep.grid = r->patch.grid;
+    ep.h = o->h;
+    ep.N = r->N;
+    ep.G = pb->E / (2.0 * (1.0 + pb->nu));
+    ep.nu = pb->nu;
+    ep.mu = pb->mu;
+    ep.cx = r->cx;
+    ep.cy = r->cy;
+    ep.cphi = r->cphi;
+    ep.spin_shift = pb->spin_shift;
+    ep.tol = pb->tol;
+    ep.maxit = pb->maxit;
+    st = rr_exact_solve(&ep, w, len, s, NULL);
+    free(w);
+    return st;
+}
+
+int main(void)
+{
+    rr_wheel_roller pair[2];
+    rr_search_opts so;
+    rr_wheel_exact_problem pb;
+    rr_wheel_exact_result rc, rw;
+    rr_contact_point cl, cr;
+    rr_exact_result s;
+    wheel_out *oc = malloc(sizeof *oc), *ow = malloc(sizeof *ow);
+    size_t len;
+    double *w, muN;
+    int k, n, same;
+
+    rig_pair(1, &pair[0]);
+    pair[1] = pair[0];
+    pair[1].side = -1;
+    rr_search_opts_default(&so);
+    rr_wheel_exact_default(&pb);
+    CHECK(pb.cold_start == 0, "warm starts by default");
+    pb.pair = &pair[0];
+    pb.y_ws = 0.001;
+    rr_wheelset_contact(&pair[0], &pair[1], pb.y_ws, &so, &pb.pose0, &cl, &cr);
+    pb.point = cl;
+    pb.Fz = 5000.0;
+    pb.mu = 0.3;
+    pb.cx = 1e-3;
+    pb.cphi = 0.5;
+    pb.gap.n = 30;
+    pb.tol = 1e-9;
+    len = rr_wheel_exact_workspace_len(&pb, 48, 48);
+    w = malloc(len * sizeof *w);
+
+    /* cold: the solves from the solver's own starts, the final one
+     * rr_exact_solve's on the final patch bit for bit */
+    pb.cold_start = 1;
+    CHECK_STATUS(run(&pb, w, len, oc, &rc), RR_OK, "cold starts");
+    CHECK(rc.passes >= 4, "coarse, loaded, the load's steps and the rebuild");
+    CHECK_STATUS(solve_patch(&pb, &rc, oc, &s), RR_OK, "cold: the final patch solved");
+    CHECK(memcmp(&s.fx, &rc.sol.fx, sizeof s.fx) == 0 && memcmp(&s.fy, &rc.sol.fy, sizeof s.fy) == 0
+          && memcmp(&s.mz, &rc.sol.mz, sizeof s.mz) == 0,
+          "cold: the final patch's rr_exact_solve, bit for bit");
+    CHECK(s.nslip > 0 && s.nslip < s.ncontact, "partial slip");
+
+    /* warm: the same to the tolerance */
+    pb.cold_start = 0;
+    CHECK_STATUS(run(&pb, w, len, ow, &rw), RR_OK, "warm starts");
+    muN = pb.mu * rc.N;
+    CHECK(abs(rw.passes - rc.passes) <= 1, "warm: the same steps, give or take the last");
+    CHECK(rw.patch.grid.mx == rc.patch.grid.mx && rw.patch.grid.my == rc.patch.grid.my,
+          "warm: the same final grid");
+    CHECK_CLOSE(rw.N, rc.N, 0.0, 1e-9, "warm: the load");
+    CHECK_CLOSE(rw.sol.fx, rc.sol.fx, 1e-7 * muN, 0.0, "warm: fx the cold one's");
+    CHECK_CLOSE(rw.sol.fy, rc.sol.fy, 1e-7 * muN, 0.0, "warm: fy the cold one's");
+    CHECK_CLOSE(rw.force[2], pb.Fz, 0.0, 1e-7, "warm: the vertical balance");
+    CHECK(rw.sol.ncontact == rc.sol.ncontact && rw.sol.nslip == rc.sol.nslip,
+          "warm: the same areas");
+    n = rw.patch.grid.mx * rw.patch.grid.my;
+    same = 1;
+    for (k = 0; k < n; k++)
+        same &= ow->state[k] == oc->state[k] && fabs(ow->pn[k] - oc->pn[k]) < 1e-6 * rc.sol.pmax
+                && fabs(ow->px[k] - oc->px[k]) < 1e-6 * pb.mu * rc.sol.pmax;
+    CHECK(same, "warm: the fields the cold ones' to the tolerance");
+    /* and its final solution is a cold solve of its own final patch */
+    CHECK_STATUS(solve_patch(&pb, &rw, ow, &s), RR_OK, "warm: the final patch solved");
+    CHECK_CLOSE(rw.sol.fx, s.fx, 1e-7 * muN, 0.0, "warm: its patch's cold solve");
+    CHECK(rw.sol.normal_products + rw.sol.tang_products
+          < rc.sol.normal_products + rc.sol.tang_products, "warm: fewer products");
+
+    /* with N given and a grid that covers: the coarse pass and one loaded
+     * solve, which starts cold (not from the coarse pressure): the doubles
+     * of cold_start */
+    pb.Fz = 0.0;
+    pb.N = 5000.0;
+    CHECK_STATUS(run(&pb, w, len, ow, &rw), RR_OK, "N given, warm");
+    pb.cold_start = 1;
+    CHECK_STATUS(run(&pb, w, len, oc, &rc), RR_OK, "N given, cold");
+    CHECK(rw.passes == 2 && memcmp(&rw.sol.fx, &rc.sol.fx, sizeof rc.sol.fx) == 0
+          && memcmp(&rw.sol.fy, &rc.sol.fy, sizeof rc.sol.fy) == 0,
+          "N given: the loaded solve cold either way");
+    /* the workspace the warm starts need is in rr_wheel_exact_workspace_len:
+     * one double short refused */
+    pb.cold_start = 0;
+    CHECK_STATUS(rr_wheel_exact(&pb, w, rr_wheel_exact_workspace_len(&pb, 1, 1) - 1, ow->h, 1,
+                                NULL, 0, &rw), RR_ERR_WORKSPACE, "workspace one double short");
+    free(w);
+    free(oc);
+    free(ow);
+    return rr_test_summary();
+}

@@ -1,0 +1,60 @@
+"""rig_exact's warm starts (issue 24, item 4): every solve after the first
+starts from the last solution (csrc/contact/rr_exact.h rr_exact_solve_from;
+csrc/geometry/rr_wheel_exact.c maps it onto a rebuilt grid), so the
+solution handed back is the one a cold exact_solve gives on the patch
+handed back, with the load and creepages reported, to the solver's
+tolerance rather than bit for bit.
+
+The tolerance, and why: tol = 1e-6 (rig_exact's default) bounds the normal
+step and the tangential residual relative to the pressure and traction
+found, so a warm and a cold solve each stop within a few tol of the
+discrete solution: forces to 1e-6 mu N (measured up to 4.3e-7 on these
+cases), the pressure to 1e-5 of its peak and the tractions to 1e-5 of
+mu pmax (measured 1.3e-6 and 2.7e-6), the contact and slip areas the same
+elements.  The C tests (csrc/tests/test_exact.c, run by test_c_core.py)
+hold rr_exact_solve_from itself to the cold solve at tol 1e-9, its bad
+starts refused.
+"""
+import functools
+
+import numpy as np
+import pytest
+
+import rollerrig as rr
+
+E, NU = 2.1e11, 0.28
+
+
+@functools.lru_cache(maxsize=None)
+def geometry(pair):
+    if pair == "miniprof":
+        return rr.RigGeometry.measured_pair()
+    return rr.RigGeometry.standard(roller_radius=0.8001)
+
+
+CASES = [  # pair, y_ws [m], mu, grid: the tread, a two-point zone, the flange root
+    ("s1002_uic60", -0.002, 0.3, dict(n=40)),
+    ("s1002_uic60", 0.0045, 0.4, dict(n=24)),
+    ("s1002_uic60", 0.0055, 0.3, dict(dx=4e-4, dy=4e-4)),
+    ("miniprof", 0.0035, 0.5, dict(n=40)),
+    ("miniprof", -0.0025, 0.3, dict(dx=4e-4, dy=4e-4)),
+]
+
+
+@pytest.mark.parametrize("pair, y_ws, mu, grid", CASES)
+def test_rig_exact_is_a_cold_solve_on_its_patch_to_the_tolerance(pair, y_ws, mu, grid):
+    e = rr.rig_exact(geometry(pair), y_ws, Fz=6e4, mu=mu, spin=12.4, roller_spin=5.587,
+                     **grid)
+    assert e.passes >= 4                     # coarse, loaded, the load's steps, rebuild
+    p, q = e.patch, e.solution
+    s = rr.exact_solve(p.h, dx=p.dx, dy=p.dy, x0=p.x0, y0=p.y0, N=e.N, mu=mu,
+                       G=E / (2 * (1 + NU)), nu=NU, cx=e.cx, cy=e.cy, cphi=e.cphi)
+    muN = mu * e.N
+    assert np.hypot(s.fx - q.fx, s.fy - q.fy) < 1e-6 * muN
+    assert abs(s.mz - q.mz) < 1e-6 * muN * p.dx
+    assert abs(s.fn / q.fn - 1) < 1e-12 and abs(s.delta / q.delta - 1) < 1e-7
+    assert np.abs(s.pn - q.pn).max() < 1e-5 * s.pmax
+    assert max(np.abs(s.px - q.px).max(), np.abs(s.py - q.py).max()) < 1e-5 * mu * s.pmax
+    assert np.array_equal(s.contact, q.contact) and np.array_equal(s.slip, q.slip)
+    # and the load it was solved for balances the vertical one (the secant's 1e-7)
+    assert abs(e.force[2] - 6e4) <= 1e-7 * 6e4
