@@ -9,6 +9,7 @@ import numpy as np
 
 from .. import _core
 from . import control as _control
+from . import real_profiles as _real_profiles
 from .._errors import RollerRigError, status_message
 from .._binding import METHODS, _as_float, check_creep_options, core, loop_method, rig_method
 from ..geometry.profiles import Profile
@@ -40,21 +41,54 @@ GEOMETRY_KEYS = ("wheelset.wheel_radius_m", "roller.radius_m", "wheelset.profile
                  "integration.table_half_range_m", "integration.table_rows")
 
 
+#: the parameters that place and scale real profiles (rollerrig.rig.real_profiles)
+PROFILE_KEYS = ("wheelset.profile", "wheelset.profile_right", "wheelset.profile_scale",
+                "roller.profile", "roller.profile_right", "roller.profile_scale",
+                "roller.gauge_m", "integration.profile_smoothing_m")
+
+
 def _geometry(P):
-    """The conical wheel on the crowned roller (the paper's first stage) and
-    its table; a geometry that yields none is the parameters' fault, and the
-    message says which ones made it."""
+    """The rig's profiles and their table: the conical wheel on the crowned
+    roller (the paper's first stage), or the real profiles the profile rows
+    name (rollerrig.rig.real_profiles); a geometry that yields none is the
+    parameters' fault, and the message says which ones made it."""
     W, R, I = P["wheelset"], P["roller"], P["integration"]
+    numbers = (float(W["wheel_radius_m"]), float(R["radius_m"]),
+               float(W["profile_half_width_m"]), math.atan(float(W["conicity"])),
+               float(R["crown_radius_m"]), float(W["contact_half_spacing_m"]),
+               float(I["table_half_range_m"]), int(I["table_rows"]))
+    real = _real_profiles.profile_points(P) is not None
+    keys = GEOMETRY_KEYS + (PROFILE_KEYS if real else ())
     try:
-        return _rig_table(float(W["wheel_radius_m"]), float(R["radius_m"]),
-                          float(W["profile_half_width_m"]), math.atan(float(W["conicity"])),
-                          float(R["crown_radius_m"]), float(W["contact_half_spacing_m"]),
-                          float(I["table_half_range_m"]), int(I["table_rows"]))
+        if not real:
+            return _rig_table(*numbers)
+        values = (W["profile"], R["profile"], W["profile_right"], R["profile_right"])
+        return _rig_profile_table(numbers, (float(W["profile_scale"]), float(R["profile_scale"]),
+                                            float(R["gauge_m"])), values,
+                                  *_real_profiles._stamps(P))
     except RollerRigError as e:
-        values = ", ".join(f"{k} = {P[k.split('.')[0]][k.split('.')[1]]!r}"
-                           for k in GEOMETRY_KEYS)
+        values = ", ".join(f"{k} = {P[k.split('.')[0]][k.split('.')[1]]!r}" for k in keys)
         raise RollerRigError(f"params: the rig's geometry ({values}) gives no contact "
                              f"table: {e}") from None
+
+
+@functools.lru_cache(maxsize=8)
+def _rig_profile_table(numbers, scales, values, smoothing, stamps):
+    """The table on real profiles (rr_rig_table_build_profiles, in C from
+    the points, as the FMU and a C program build it); its geometry the
+    RigGeometry of the same points, scaled and placed (for lookups and
+    plots: the table is the C core's)."""
+    r0, R0, hw, alpha, crown, span, reach, rows = numbers
+    if not (math.isfinite(reach) and reach > 0):
+        raise RollerRigError(f"rig_table: the table's half range must be > 0 [m], got {reach!r}")
+    if not 2 <= rows <= MAX_ROWS:
+        raise RollerRigError(f"rig_table: the table's rows must be from 2 to {MAX_ROWS}, "
+                             f"got {rows!r}")
+    points = _real_profiles._points(*values, smoothing, stamps)
+    data, y0, dy = _real_profiles.rig_profile_table(numbers, scales, points)
+    data.setflags(write=False)
+    return ContactTable(_real_profiles.rig_geometry(numbers, scales, points), y0, dy, rows,
+                        data)
 
 
 # The table is a pure function of these numbers and read-only, so runs on the
