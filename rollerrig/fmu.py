@@ -203,6 +203,8 @@ def check_scenario(scenario, *, source, method=None):
             params = rig_params._read_parameter_file(scenario)
         except rig_params._Problems as p:
             raise rig_params._error(source, p.problems) from None
+        from .rig import real_profiles
+        real_profiles.relative_to(params, os.path.dirname(os.path.abspath(scenario)))
         what = f"the scenario {Path(scenario).name}"
     else:
         params, what = scenario, "the scenario given"
