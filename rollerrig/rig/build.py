@@ -85,7 +85,7 @@ def _rig_profile_table(numbers, scales, values, smoothing, stamps):
         raise RollerRigError(f"rig_table: the table's rows must be from 2 to {MAX_ROWS}, "
                              f"got {rows!r}")
     points = _real_profiles._points(*values, smoothing, stamps)
-    data, y0, dy = _real_profiles.rig_profile_table(numbers, scales, points)
+    data, y0, dy = _real_profiles.rig_profile_table(numbers, scales, points, values)
     data.setflags(write=False)
     return ContactTable(_real_profiles.rig_geometry(numbers, scales, points), y0, dy, rows,
                         data)

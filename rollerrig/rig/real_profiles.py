@@ -47,6 +47,9 @@ BUILTIN = {"s1002": ("wheelset", Profile.s1002), "uic60": ("roller", Profile.uic
 #: gives none (EN 13715) [m]; the gauge point's depth below the top (EN 13848-1) [m]
 TAPING_LINE, GAUGE_DEPTH = 0.070, 0.014
 MM = 1e-3
+#: most lateral distance between neighbouring points (csrc/geometry/rr_tables.h,
+#: RR_PROFILE_MAX_GAP) [m]
+MAX_GAP = 5e-3
 #: the C rig's value for a profile whose points the caller gives
 POINTS = "points"
 
@@ -227,20 +230,32 @@ SLOT_KEYS = ("wheelset.profile", "roller.profile", "wheelset.profile_right",
              "roller.profile_right")
 
 
-def rig_profile_table(geometry, scales, points):
+def rig_profile_table(geometry, scales, points, values):
     """The C table (data, y0, dy) on real profiles, or RollerRigError naming
-    the profile and point at fault (rr_rig_profiles_check) or the shift
-    where the profiles do not touch."""
+    the profile row, its value (the file) and the point at fault
+    (rr_rig_profiles_check) or the shift where the profiles do not touch."""
     from .._errors import status_message
     data, y0, dy, status, bad_y, which, point = _core.rig_profile_table(geometry, scales, points)
-    if status < 0:
-        if which >= 0:
-            at = f" at point {point} (y = {points[which][0][point]!r} m)" if point >= 0 else ""
-            raise RollerRigError(f"{SLOT_KEYS[which]}: its points{at}: "
-                                 f"{status_message(status)}")
+    if status >= 0:
+        return data, y0, dy
+    if which < 0:
         where = f"at y_ws = {bad_y!r} m: " if np.isfinite(bad_y) else ""
         raise RollerRigError(f"{where}{status_message(status)}")
-    return data, y0, dy
+    head = f"{SLOT_KEYS[which]} = {values[which]!r}"
+    if point < 0:
+        raise RollerRigError(f"{head}: its points (as referenced, full size): "
+                             f"{status_message(status)}")
+    y, z = points[which][0], points[which][1]
+    at = f"point {point} of {len(y)} (y = {y[point] * 1e3:.6g} mm, z = {z[point] * 1e3:.6g} mm)"
+    if point > 0 and not y[point] > y[point - 1]:
+        why = "y does not increase there: a vertical or overhanging segment"
+    elif point > 0 and y[point] - y[point - 1] > MAX_GAP:
+        why = (f"{(y[point] - y[point - 1]) * 1e3:.4g} mm from the point before: a gap (at "
+               f"most {MAX_GAP * 1e3:g} mm between points, or the spline invents the surface "
+               f"under a contact patch)")
+    else:
+        why = status_message(status)
+    raise RollerRigError(f"{head}: {at}: {why}")
 
 
 def rig_geometry(numbers, scales, points):
