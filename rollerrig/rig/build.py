@@ -63,6 +63,7 @@ def _geometry(P):
         if not real:
             return _rig_table(*numbers)
         values = (W["profile"], R["profile"], W["profile_right"], R["profile_right"])
+        _real_profiles.warn_notes(P, stacklevel=5)
         return _rig_profile_table(numbers, (float(W["profile_scale"]), float(R["profile_scale"]),
                                             float(R["gauge_m"])), values,
                                   *_real_profiles._stamps(P))
@@ -84,7 +85,7 @@ def _rig_profile_table(numbers, scales, values, smoothing, stamps):
     if not 2 <= rows <= MAX_ROWS:
         raise RollerRigError(f"rig_table: the table's rows must be from 2 to {MAX_ROWS}, "
                              f"got {rows!r}")
-    points = _real_profiles._points(*values, smoothing, stamps)
+    points = _real_profiles._points(*values, smoothing, stamps)[0]
     data, y0, dy = _real_profiles.rig_profile_table(numbers, scales, points, values)
     data.setflags(write=False)
     return ContactTable(_real_profiles.rig_geometry(numbers, scales, points), y0, dy, rows,

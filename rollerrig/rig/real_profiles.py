@@ -106,8 +106,9 @@ def problems(P):
 _FOLD = re.compile(r"z (-?[0-9.e+-]+) \.\. (-?[0-9.e+-]+) mm")
 
 
-def _read(name, value, kind, smoothing):
-    """A profile row's profile: built-in, or read (folds as the module says)."""
+def _read(name, value, kind, smoothing, notes):
+    """A profile row's profile: built-in, or read (folds as the module says;
+    a fold trimmed appends its warning's text to notes)."""
     if value in BUILTIN:
         return BUILTIN[value][1]()
     path = resolve(value)
@@ -126,7 +127,8 @@ def _read(name, value, kind, smoothing):
                 raise RollerRigError(f"{path}: {str(w.message).split(': ', 1)[-1]}, within "
                                      f"{depth * 1e3:g} mm of the top, where a wheel can touch: "
                                      f"give a single-valued profile")
-            warnings.warn(f"{name}: {w.message}", RollerRigWarning, stacklevel=4)
+            notes.append(f"{name}: {w.message} (below the gauge point, out of the wheels' "
+                         f"reach)")
         return p
     except RollerRigError as e:
         raise RollerRigError(f"{name}: {e}") from None
@@ -155,10 +157,11 @@ def _roller_points(p):
 
 @functools.lru_cache(maxsize=16)
 def _points(wheel, roller, wheel_right, roller_right, smoothing, stamps):
-    """The four slots of rr_rig_profiles: None or (y, z, end) each (end 0
-    not-a-knot, 1 natural: the profile's own), read and re-referenced.
-    stamps: the files' modification times (a changed file is read again)."""
-    out, radii = [], {}
+    """(the four slots of rr_rig_profiles: None or (y, z, end) each (end 0
+    not-a-knot, 1 natural: the profile's own), read and re-referenced; the
+    readers' warnings, which every use repeats: warn_notes).  stamps: the
+    files' modification times (a changed file is read again)."""
+    out, radii, notes = [], {}, []
     for slot, (section, value) in enumerate((("wheelset", wheel), ("roller", roller),
                                              ("wheelset", wheel_right),
                                              ("roller", roller_right))):
@@ -167,7 +170,7 @@ def _points(wheel, roller, wheel_right, roller_right, smoothing, stamps):
             out.append(None)
             continue
         kind = "wheel" if section == "wheelset" else "rail"
-        p = _read(f"{key} = {value!r}", value, kind, smoothing)
+        p = _read(f"{key} = {value!r}", value, kind, smoothing, notes)
         try:
             if kind == "wheel":
                 y, z, radii[slot] = _wheel_points(p)
@@ -184,7 +187,7 @@ def _points(wheel, roller, wheel_right, roller_right, smoothing, stamps):
         if s is not None:
             for a in s[:2]:
                 a.setflags(write=False)
-    return tuple(None if s is None else tuple(s) for s in out)
+    return tuple(None if s is None else tuple(s) for s in out), tuple(notes)
 
 
 def profile_points(P):
@@ -196,7 +199,17 @@ def profile_points(P):
     sections = ("wheelset", "roller", "wheelset", "roller")
     if not any(is_real(s, v) for s, v in zip(sections, values)):
         return None
-    return _points(*values, *_stamps(P))
+    return _points(*values, *_stamps(P))[0]
+
+
+def warn_notes(P, stacklevel=3):
+    """Repeat the readers' warnings of P's profiles (trimmed folds), which a
+    cached read would otherwise say only once."""
+    W, R = P["wheelset"], P["roller"]
+    values = (W["profile"], R["profile"], W["profile_right"], R["profile_right"])
+    if any(is_real(s, v) for s, v in zip(("wheelset", "roller") * 2, values)):
+        for note in _points(*values, *_stamps(P))[1]:
+            warnings.warn(note, RollerRigWarning, stacklevel=stacklevel)
 
 
 def _stamps(P):
