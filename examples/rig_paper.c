@@ -8,7 +8,7 @@
  *
  * On real profiles: give the profiles' points as files (two numbers a line,
  * y and z in metres, full size, referenced as rollerrig.rig.real_profiles
- * reads them: rollerrig.rig.real_profiles.write_points writes them; a line
+ * reads them: rollerrig.rig.build.write_points writes them; a line
  * "# end natural" for a smoothed profile's end condition), and the values
  * that differ from the defaults:
  *

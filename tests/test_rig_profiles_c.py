@@ -1,5 +1,5 @@
 """examples/rig_paper.c on real profiles (issue 24 item 2): the C program
-given the points rollerrig.rig.real_profiles.write_points writes, and the
+given the points rollerrig.rig.build.write_points writes, and the
 scenario's values (-s section.key=value), runs the paper's scenario with
 the table of rr_rig_table_build_profiles: the records of rr.simulate() on
 the same scenario, bit for bit."""
@@ -13,7 +13,8 @@ import pytest
 import rollerrig as rr
 from rollerrig import _core, rig
 from rollerrig.rig import params as rig_params
-from rollerrig.rig.real_profiles import PROFILE_ROWS, write_points
+from rollerrig.rig.build import write_points
+from rollerrig.rig.real_profiles import PROFILE_ROWS
 
 from test_c_core import CSRC, _make, _require_toolchain
 

@@ -305,11 +305,20 @@ static const rr_rig_param params[] = {
     CHOICE("adhesion.patch_rollers", patch_sides, 0, patch_rollers,
            "choice: the patch on both rollers (\"left\" or \"right\": one, which yaws the "
            "wheelset)"),
+    /* [disturbance] */
+    LIST0("disturbance.lateral_force_times_s", "s", NONNEG, lateral_t,
+          "choice: no lateral force; with points, the force of lateral_force_N linear "
+          "between them, held before the first and after the last, two points at one time a "
+          "step; taken at each sample's start"),
+    LIST0("disturbance.lateral_force_N", "N", ANY, lateral_f,
+          "choice: the lateral force on the wheelset's centre (+ to the left, +Y) at each "
+          "time of lateral_force_times_s: pushes a real profile's wheelset to flange contact "
+          "(a flange excursion; with the default suspension.ky about 2 kN per mm)"),
 };
 #define NPARAMS RR_COUNTOF(params)
 /* a report holds a problem per row and per rule (rr_rig_config.c's
- * rr_rig_config_report: ten at most) */
-RR_STATIC_ASSERT(NPARAMS + 10 <= RR_RIG_MAX_PROBLEMS, a_report_holds_every_problem);
+ * rr_rig_config_report: twelve at most) */
+RR_STATIC_ASSERT(NPARAMS + 12 <= RR_RIG_MAX_PROBLEMS, a_report_holds_every_problem);
 
 static const rr_rig_section sections[] = {
     {"scenario", ""},
@@ -335,6 +344,8 @@ static const rr_rig_section sections[] = {
                  "(csrc/rig/rr_rig.h, rr_rig_adhesion): a schedule in time and a contaminated "
                  "patch on the roller circumference; under contact.friction_law = \"coulomb\" "
                  "A and B are 1 and 0 there too"},
+    {"disturbance", "a lateral force on the wheelset in time (csrc/rig/rr_rig.h, "
+                    "rr_rig_lateral): flange excursions on real profiles"},
 };
 
 static const rr_rig_retired retired[] = {
@@ -571,7 +582,7 @@ static void adhesion_from(const rr_rig_config *c, rr_friction base, rr_rig_adhes
 
 int rr_rig_params_from(const rr_rig_config *c, const rr_contact_table *t, rr_rig_params *p)
 {
-    int st;
+    int st, i;
     if (!p)
         return RR_ERR_NULL;
     memset(p, 0, sizeof *p);
@@ -605,6 +616,11 @@ int rr_rig_params_from(const rr_rig_config *c, const rr_contact_table *t, rr_rig
     creep_default(&p->contact.creep);
     p->contact.vmin = c->vmin;
     adhesion_from(c, p->contact.friction, &p->adhesion);
+    p->lateral.n = c->lateral_t.n;
+    for (i = 0; i < c->lateral_t.n; i++) {
+        p->lateral.t[i] = c->lateral_t.v[i];
+        p->lateral.f[i] = c->lateral_f.v[i];
+    }
     p->nsub = c->substeps;
     p->method = ode_values[c->ode_method];
     p->newton_iters = c->newton_iterations;

@@ -118,6 +118,8 @@ typedef struct {
     rr_rig_list schedule_t, schedule_mu0, schedule_A, schedule_B;
     double patch_start, patch_length, patch_mu0, patch_A, patch_B, patch_edge;
     int patch_rollers;          /* index: both, left, right */
+    /* disturbance: a lateral force in time */
+    rr_rig_list lateral_t, lateral_f;
 } rr_rig_config;
 
 typedef struct {

@@ -2,6 +2,7 @@
 method and options, the drives' sampled speed loops, Rig (the C rig stepped
 by hand) and build_rig."""
 import functools
+import os
 import math
 import numbers
 
@@ -399,3 +400,25 @@ def build_rig(params=None, *, dt=None, method=None, substeps=None, ode=None, nx=
     rig, table, *_ = _build("build_rig", P, dt=dt, method=method, substeps=substeps, ode=ode,
                             nx=nx, ny=ny, roller_speed=roller_speed, start=start, creep=creep)
     return rig, P, table
+
+
+def write_points(params, folder):
+    """The points the rig's table is built from (full size, referenced as
+    this module says), one text file per real profile of `params` (a nested
+    dict or a scenario file's path, checked): folder/wheel.txt, roller.txt,
+    wheel_right.txt, roller_right.txt, two numbers a line (y z [m], every
+    digit: %.17g), "# end natural" where the profile's spline is natural.
+    For a C program (examples/rig_paper.c).  Returns {slot: path}."""
+    P = _parameters("write_points", params)
+    points = _real_profiles.profile_points(P)
+    out = {}
+    for name, s in zip(("wheel", "roller", "wheel_right", "roller_right"),
+                       points or (None,) * 4):
+        if s is None:
+            continue
+        path = os.path.join(os.fspath(folder), f"{name}.txt")
+        with open(path, "w") as fh:
+            fh.write(f"# {name}: y z [m], full size ({'end natural' if s[2] else 'not-a-knot'})\n")
+            fh.writelines(f"{y:.17g} {z:.17g}\n" for y, z in zip(s[0], s[1]))
+        out[name] = path
+    return out

@@ -315,7 +315,8 @@ _SAMPLE_TIME = "scenario.control_sample_time_s"
 _RUN_RULES = ("loop", "sample")
 #: a count rule's request, by the list the row must match
 _ONE_PER = {"scenario.targets": "one start time per target",
-            "adhesion.schedule_times_s": "one per time"}
+            "adhesion.schedule_times_s": "one per time",
+            "disturbance.lateral_force_times_s": "one per time"}
 
 
 def _c_values(P):

@@ -294,25 +294,3 @@ def rig_geometry(numbers, scales, points):
                        roller_right=profile(3, "rail"), wheel_radius=r0, roller_radius=R0,
                        wheel_y=span, roller_y=0.5 * gauge if real_roller else span)
 
-
-def write_points(params, folder):
-    """The points the rig's table is built from (full size, referenced as
-    this module says), one text file per real profile of `params` (a nested
-    dict or a scenario file's path, checked): folder/wheel.txt, roller.txt,
-    wheel_right.txt, roller_right.txt, two numbers a line (y z [m], every
-    digit: %.17g), "# end natural" where the profile's spline is natural.
-    For a C program (examples/rig_paper.c).  Returns {slot: path}."""
-    from .params import _parameters
-    P = _parameters("write_points", params)
-    points = profile_points(P)
-    out = {}
-    for name, s in zip(("wheel", "roller", "wheel_right", "roller_right"),
-                       points or (None,) * 4):
-        if s is None:
-            continue
-        path = os.path.join(os.fspath(folder), f"{name}.txt")
-        with open(path, "w") as fh:
-            fh.write(f"# {name}: y z [m], full size ({'end natural' if s[2] else 'not-a-knot'})\n")
-            fh.writelines(f"{y:.17g} {z:.17g}\n" for y, z in zip(s[0], s[1]))
-        out[name] = path
-    return out
