@@ -81,8 +81,8 @@ def test_vertical_and_overhanging_segments(tmp_path):
 
 
 def test_a_roller_that_folds_where_a_wheel_touches(tmp_path):
-    """A roller may fold below its gauge point (trimmed, with a warning: the
-    measured rollers do); within it, the fold is an error naming the file."""
+    """A roller may fold below its gauge point (trimmed: the measured rollers
+    do); within it, the fold is an error naming the file."""
     p = rr.Profile.uic60()
     y, z = p.y * 1e3, p.z * 1e3
     i = int(np.argmin(np.abs(y + 20)))              # 20 mm inward of the top, z ~ 1 mm
@@ -92,9 +92,9 @@ def test_a_roller_that_folds_where_a_wheel_touches(tmp_path):
     with pytest.raises(rr.RollerRigError, match=rf"roller.profile = '{re.escape(str(path))}'"
                                                 r".*within 14 mm of the top"):
         run("s1002", str(path))
-    with pytest.warns(rr.RollerRigWarning, match="roller.profile.*folds back"):
-        rr.build_rig(os.path.join(os.path.dirname(rr.__file__), "data",
-                                  "rig_measured_pair.toml"))
+    # the measured rollers fold 17 to 52 mm below their top: trimmed, no warning
+    # (the test run turns every RollerRigWarning into an error)
+    rr.build_rig(os.path.join(os.path.dirname(rr.__file__), "data", "rig_measured_pair.toml"))
 
 
 def test_wrong_units(tmp_path):

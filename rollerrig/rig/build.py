@@ -64,7 +64,6 @@ def _geometry(P):
         if not real:
             return _rig_table(*numbers)
         values = (W["profile"], R["profile"], W["profile_right"], R["profile_right"])
-        _real_profiles.warn_notes(P, stacklevel=5)
         return _rig_profile_table(numbers, (float(W["profile_scale"]), float(R["profile_scale"]),
                                             float(R["gauge_m"])), values,
                                   *_real_profiles._stamps(P))

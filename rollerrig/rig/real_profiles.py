@@ -23,8 +23,8 @@ back to back 1360 mm) at 1/5: wheelset.contact_half_spacing_m = (1360/2 +
 size; the built-in S1002 and UIC60 are not).  A fold (a segment where y
 steps back: a vertical or overhanging face) is an error naming the file and
 line, except on a roller below its gauge point, out of any wheel's reach,
-where it is trimmed with a RollerRigWarning (the shipped measured rollers
-fold 17-52 mm below their top).
+where it is trimmed (the shipped measured rollers fold 17-52 mm below their
+top, on their gauge faces; as RigGeometry.measured_pair() trims them).
 """
 import functools
 import os
@@ -107,8 +107,10 @@ _FOLD = re.compile(r"z (-?[0-9.e+-]+) \.\. (-?[0-9.e+-]+) mm")
 
 
 def _read(name, value, kind, smoothing, notes):
-    """A profile row's profile: built-in, or read (folds as the module says;
-    a fold trimmed appends its warning's text to notes)."""
+    """A profile row's profile: built-in, or read (folds as the module says:
+    a roller's below its gauge point trimmed, with no warning, as
+    RigGeometry.measured_pair() trims the measured rollers'; notes gets the
+    reader's words for it)."""
     if value in BUILTIN:
         return BUILTIN[value][1]()
     path = resolve(value)
@@ -120,15 +122,17 @@ def _read(name, value, kind, smoothing, notes):
             warnings.simplefilter("always", RollerRigWarning)
             p = read_profile(path, kind, smoothing=sm)
         for w in caught:
-            m = _FOLD.search(str(w.message))
+            m = _FOLD.search(str(w.message)) if "folds back" in str(w.message) else None
+            if m is None:                      # not a fold: the reader's word stands
+                warnings.warn(f"{name}: {w.message}", RollerRigWarning, stacklevel=4)
+                continue
             depth = GAUGE_DEPTH if "RailGaugePoint" not in p.meta \
                 else float(p.meta["RailGaugePoint"]) * MM
             if m and float(m.group(1)) * MM - float(p.z.min()) <= depth:
                 raise RollerRigError(f"{path}: {str(w.message).split(': ', 1)[-1]}, within "
                                      f"{depth * 1e3:g} mm of the top, where a wheel can touch: "
                                      f"give a single-valued profile")
-            notes.append(f"{name}: {w.message} (below the gauge point, out of the wheels' "
-                         f"reach)")
+            notes.append(f"{name}: {w.message}")
         return p
     except RollerRigError as e:
         raise RollerRigError(f"{name}: {e}") from None
@@ -159,7 +163,7 @@ def _roller_points(p):
 def _points(wheel, roller, wheel_right, roller_right, smoothing, stamps):
     """(the four slots of rr_rig_profiles: None or (y, z, end) each (end 0
     not-a-knot, 1 natural: the profile's own), read and re-referenced; the
-    readers' warnings, which every use repeats: warn_notes).  stamps: the
+    readers' words for the folds trimmed).  stamps: the
     files' modification times (a changed file is read again)."""
     out, radii, notes = [], {}, []
     for slot, (section, value) in enumerate((("wheelset", wheel), ("roller", roller),
@@ -190,6 +194,11 @@ def _points(wheel, roller, wheel_right, roller_right, smoothing, stamps):
     return tuple(None if s is None else tuple(s) for s in out), tuple(notes)
 
 
+#: the shipped scenarios on real profiles
+SCENARIOS = {name: os.path.join(os.path.dirname(DATA_DIR), f"rig_{name}.toml")
+             for name in ("s1002_uic60", "measured_pair", "flange_excursion")}
+
+
 def profile_points(P):
     """The four slots (rr_rig_profiles: wheel, roller, wheel_right,
     roller_right) of the merged parameters P, or None where all are
@@ -200,16 +209,6 @@ def profile_points(P):
     if not any(is_real(s, v) for s, v in zip(sections, values)):
         return None
     return _points(*values, *_stamps(P))[0]
-
-
-def warn_notes(P, stacklevel=3):
-    """Repeat the readers' warnings of P's profiles (trimmed folds), which a
-    cached read would otherwise say only once."""
-    W, R = P["wheelset"], P["roller"]
-    values = (W["profile"], R["profile"], W["profile_right"], R["profile_right"])
-    if any(is_real(s, v) for s, v in zip(("wheelset", "roller") * 2, values)):
-        for note in _points(*values, *_stamps(P))[1]:
-            warnings.warn(note, RollerRigWarning, stacklevel=stacklevel)
 
 
 def _stamps(P):
