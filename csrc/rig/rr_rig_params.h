@@ -31,7 +31,17 @@
  * rr_rig_params_set_table(&p, &t).
  *
  * or, to change a value first, rr_rig_config_default, rr_rig_config_set*,
- * rr_rig_params_from.  The scenario (roller speed, targets and their start
+ * rr_rig_params_from.  On real profiles (wheelset.profile, roller.profile
+ * and their _right rows set to "points"), the caller gives the points:
+ *
+ *     rr_rig_config_set_choice(&c, "wheelset.profile", "points");  (and the roller's)
+ *     rr_rig_geometry_from(&c, &g);
+ *     rr_rig_profiles_from(&c, &pr);              (scales, gauge; the slots to give)
+ *     pr.wheel = wheel_points;  pr.roller = roller_points;        (rr_tables.h)
+ *     rr_rig_table_build_profiles(&g, &pr, data, ..., work,
+ *                                 rr_rig_profiles_work_len(&pr), &t, NULL);
+ *
+ * and goes on as above (examples/rig_paper.c takes them as files).  The scenario (roller speed, targets and their start
  * times, duration, sample time) is part of rr_rig_config: rr_rig_samples
  * and rr_rig_schedule give the paper's run sample by sample.
  *
