@@ -212,13 +212,15 @@ def profile_points(P):
 
 
 def _stamps(P):
-    """(smoothing, the files' modification times): what, besides the rows'
-    values, makes the points (a file changed is read again)."""
+    """(smoothing, each file's path and modification time): what, besides the
+    rows' values, makes the points (a file changed or moved is read again)."""
     W, R = P["wheelset"], P["roller"]
     values = (W["profile"], R["profile"], W["profile_right"], R["profile_right"])
     sections = ("wheelset", "roller", "wheelset", "roller")
-    stamps = tuple(os.stat(resolve(v)).st_mtime_ns if is_real(s, v) and v not in BUILTIN
-                   else 0 for s, v in zip(sections, values))
+    # the file each names (a relative name is the working folder's) and its time
+    stamps = tuple((resolve(v), os.stat(resolve(v)).st_mtime_ns)
+                   if is_real(s, v) and v not in BUILTIN else None
+                   for s, v in zip(sections, values))
     return float(P["integration"]["profile_smoothing_m"]), stamps
 
 
