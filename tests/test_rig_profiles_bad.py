@@ -20,7 +20,8 @@ def s1002_text(tmp_path, name="w.txt", edit=None, units="mm"):
     if edit:
         y, z = edit(y.copy(), z.copy())
     path = tmp_path / name
-    path.write_text("# kind = wheel\n" + "".join(f"{float(a)!r} {float(b)!r}\n" for a, b in zip(y, z)))
+    path.write_text("# kind = wheel\n" + "".join(f"{float(a)!r} {float(b)!r}\n"
+                                                 for a, b in zip(y, z)))
     return str(path)
 
 
@@ -88,7 +89,8 @@ def test_a_roller_that_folds_where_a_wheel_touches(tmp_path):
     i = int(np.argmin(np.abs(y + 20)))              # 20 mm inward of the top, z ~ 1 mm
     y[i] = y[i - 1] - 0.2
     path = tmp_path / "r.txt"
-    path.write_text("# kind = rail\n" + "".join(f"{float(a)!r} {float(b)!r}\n" for a, b in zip(y, z)))
+    path.write_text("# kind = rail\n" + "".join(f"{float(a)!r} {float(b)!r}\n"
+                                                for a, b in zip(y, z)))
     with pytest.raises(rr.RollerRigError, match=rf"roller.profile = '{re.escape(str(path))}'"
                                                 r".*within 14 mm of the top"):
         run("s1002", str(path))
