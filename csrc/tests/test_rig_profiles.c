@@ -7,6 +7,8 @@
 #include "rr_test.h"
 #include "geometry/rr_tables.h"
 #include "rig/rr_rig_params.h"
+#include "fmu/rr_fmu.h"
+#include <stdlib.h>
 
 enum { N = RR_RIG_PROFILE_POINTS, ROWS = 161 };
 static double data[RR_CONTACT_TABLE_ROW * ROWS], data2[RR_CONTACT_TABLE_ROW * ROWS];
@@ -206,9 +208,63 @@ static void test_bad_profiles(void)
 #undef BUILD
 }
 
+static void *test_alloc(void *ctx, size_t n)
+{
+    (void)ctx;
+    return malloc(n);
+}
+
+static void test_free(void *ctx, void *p)
+{
+    (void)ctx;
+    free(p);
+}
+
+/* the FMU unit on profiles given as points (rr_fmu_set_profiles): none held
+ * fails its initialisation; the cone as points at scale 1 gives
+ * rr_rig_table_build's table, bit for bit */
+static void test_fmu_profiles(void)
+{
+    static rr_fmu m;
+    rr_fmu_config f;
+    rr_rig_profiles pr;
+    const rr_rig_geometry g = geometry();
+    const long len = rr_rig_table_data_len(&g);
+    rr_contact_table t;
+
+    rr_fmu_config_default(&f);
+    CHECK_STATUS(rr_fmu_config_set_choice(&f, "wheelset.profile", "points"), RR_OK, "points");
+    CHECK_STATUS(rr_fmu_config_set(&f, "wheelset.profile_scale", 1.0), RR_OK, "scale 1");
+    CHECK_STATUS(rr_fmu_init(&m, &f, test_alloc, test_free, NULL, NULL), RR_OK, "init");
+    CHECK_STATUS(rr_fmu_enter_init(&m, 0.0), RR_OK, "enter");
+    CHECK_STATUS(rr_fmu_exit_init(&m), RR_ERR_NULL, "no points held: refused");
+    CHECK(strstr(rr_fmu_message(&m), "wheelset.profile = \"points\": this FMU carries no "
+                                     "points") != NULL, "the message says which row");
+    CHECK_STATUS(rr_fmu_set_profiles(&m, &pr), RR_ERR_SEQUENCE, "set after enter: refused");
+    rr_fmu_release(&m);
+
+    rr_profile_conical(g.cone_angle, -g.profile_half_width, g.profile_half_width, N, wy, wz);
+    memset(&pr, 0, sizeof pr);
+    pr.wheel = points(N, wy, wz);
+    wy[5] = NAN;
+    CHECK_STATUS(rr_fmu_init(&m, &f, test_alloc, test_free, NULL, NULL), RR_OK, "init");
+    CHECK_STATUS(rr_fmu_set_profiles(&m, &pr), RR_ERR_NONFINITE, "a NaN point: refused");
+    CHECK_STATUS(rr_fmu_set_profiles(NULL, &pr), RR_ERR_NULL, "NULL unit");
+    rr_profile_conical(g.cone_angle, -g.profile_half_width, g.profile_half_width, N, wy, wz);
+    CHECK_STATUS(rr_fmu_set_profiles(&m, &pr), RR_OK, "the cone's points");
+    CHECK_STATUS(rr_fmu_enter_init(&m, 0.0), RR_OK, "enter");
+    CHECK_STATUS(rr_fmu_exit_init(&m), RR_OK, "exit: the table from the points");
+    CHECK_STATUS(rr_rig_table_build(&g, data, len, work, RR_RIG_TABLE_WORK_LEN, &t, NULL), RR_OK,
+                 "the cone's table");
+    CHECK(m.table.n == t.n && memcmp(m.table.data, data, (size_t)len * sizeof *data) == 0,
+          "the unit's table is rr_rig_table_build's, bitwise");
+    rr_fmu_release(&m);
+}
+
 int main(void)
 {
     test_same_table();
     test_bad_profiles();
+    test_fmu_profiles();
     return rr_test_summary();
 }
