@@ -188,3 +188,24 @@ def test_scenario_files_and_the_command_line(tmp_path):
                           str(tmp_path / "s.toml"), "--out", str(tmp_path / "run")],
                          capture_output=True, text=True, cwd=tmp_path)
     assert out.returncode == 0, out.stdout + out.stderr
+
+
+@pytest.mark.parametrize("pair", ["s1002_uic60", "measured"])
+def test_the_tables_geometry_is_its_profiles(pair):
+    """ContactTable.geometry (for plots and lookups by hand) holds the points
+    the C table was built from, scaled and placed: a direct search on it
+    gives the table's rows (the same C search on the same splines: measured equal;
+    1e-12 m allowed)."""
+    params = S1002_UIC60 if pair == "s1002_uic60" else MEASURED
+    tab = quiet_build(params)[2]
+    y = tab.y_ws[::20]
+    with warnings.catch_warnings():
+        # the measured pair: one of these shifts ends its pose iteration with a warning
+        # (RR_WARN_NOT_CONVERGED), in the table's build as here
+        warnings.simplefilter("ignore", rr.RollerRigWarning)
+        a = rr.wheelset_contact(tab.geometry, y)
+    b = tab.lookup(y)
+    for f in ("y", "r", "R", "s_wheel", "s_roller"):
+        for side in ("left", "right"):
+            assert np.max(np.abs(getattr(getattr(a, side), f) - getattr(getattr(b, side), f))) \
+                < 1e-12, (side, f)
