@@ -107,7 +107,9 @@ static const rr_rig_param params[] = {
     REAL("wheelset.axlebox_half_spacing_m", "m", 0.20, POS, axlebox_half_spacing,
          "scaled: 1.0 m / 5 (lateral position of the axle-box springs)"),
     CHOICE("wheelset.profile", wheel_profiles, 0, wheel_profile,
-           "paper sections 3 and 4.1: conical wheel in the prototype"),
+           "paper sections 3 and 4.1: conical wheel in the prototype; a real profile: "
+           "\"points\" (the caller's, rr_rig_profiles; in rollerrig \"s1002\" or a "
+           "SIMPACK, MiniProf or two-column file)"),
     CHOICE("wheelset.profile_right", right_profiles, 0, wheel_profile_right,
            "choice: the right wheel is the left's mirror image; \"points\" (in rollerrig: "
            "a built-in name or a file) where it differs, as the measured pair's"),
@@ -128,7 +130,8 @@ static const rr_rig_param params[] = {
          "scaled: 0.8001 m / 5 (full-scale roller of the CONTACT roller-rig case); R/r0 = 1.74"),
     CHOICE("roller.profile", roller_profiles, 0, roller_profile,
            "choice: a conical wheel on a flat cylinder is a line contact; a crown gives the "
-           "Hertz ellipse of paper section 4.2"),
+           "Hertz ellipse of paper section 4.2; a real profile: \"points\" (in rollerrig "
+           "\"uic60\" or a file)"),
     CHOICE("roller.profile_right", right_profiles, 0, roller_profile_right,
            "choice: the right roller is the left's mirror image; \"points\" where it "
            "differs"),
@@ -313,7 +316,7 @@ static const rr_rig_param params[] = {
     LIST0("disturbance.lateral_force_N", "N", ANY, lateral_f,
           "choice: the lateral force on the wheelset's centre (+ to the left, +Y) at each "
           "time of lateral_force_times_s: pushes a real profile's wheelset to flange contact "
-          "(a flange excursion; with the default suspension.ky about 2 kN per mm)"),
+          "(a flange excursion; against both axle boxes' suspension.ky, 1.55 kN per mm)"),
 };
 #define NPARAMS RR_COUNTOF(params)
 /* a report holds a problem per row and per rule (rr_rig_config.c's
