@@ -20,7 +20,7 @@ from rollerrig.rig import real_profiles
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from _bench_common import (best_time, bench_args, command_text, compiler_version,  # noqa: E402
-                           log,
+                           load_average, log,
                            machine_info, machine_line, publish)
 
 DATA = os.path.join(os.path.dirname(rr.__file__), "data")
@@ -50,6 +50,7 @@ def main(argv=None):
     repeats = 1 if args.quick else args.repeats
     duration = 2.0 if args.quick else 20.0
     rows = []
+    load = load_average()
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", rr.RollerRigWarning)      # the rollers' folds
         for label, scenario in PAIRS:
@@ -79,6 +80,8 @@ def main(argv=None):
         L += ["**Quick smoke run (--quick): a 2 s scenario, one repeat.**", ""]
     L += [f"- date: {datetime.datetime.now().isoformat(timespec='seconds')}",
           f"- command: `{args.command}`", machine_line(info),
+          f"- load average at the start {load}, at the end {load_average()} (other work on "
+          f"the machine slows every row alike: compare the rows, not the runs)",
           f"- the paper's scenario ({duration:g} s, 4 ms samples, FASTSIM 20x20, TR-BDF2); "
           f"best of {repeats}; the table built once before the timed runs (its build "
           f"timed apart: the C build from the points, the points read and referenced once)",
