@@ -9,6 +9,7 @@ import warnings
 
 import numpy as np
 import pytest
+from hypothesis import given, settings, strategies as st
 
 import rollerrig as rr
 from rollerrig.geometry.profiles import DATA_DIR
@@ -209,3 +210,32 @@ def test_the_tables_geometry_is_its_profiles(pair):
         for side in ("left", "right"):
             assert np.max(np.abs(getattr(getattr(a, side), f) - getattr(getattr(b, side), f))) \
                 < 1e-12, (side, f)
+
+
+def test_one_profile_for_both_sides_is_symmetric():
+    """profile_right "" mirrors the left: the table at -y is the one at y with
+    the sides swapped (lateral positions negated), to the search's 1e-9 m."""
+    tab = rr.build_rig(S1002_UIC60)[2]
+    y = tab.y_ws
+    a, b = tab.lookup(y), tab.lookup(-y[::-1])
+    b_right = [getattr(b.right, f)[::-1] for f in ("y", "r", "R", "delta")]
+    for f, mirrored in zip(("y", "r", "R", "delta"), b_right):
+        want = -mirrored if f == "y" else mirrored
+        assert np.max(np.abs(getattr(a.left, f) - want)) < (1e-6 if f == "delta" else 1e-9), f
+    assert np.max(np.abs(a.z - b.z[::-1])) < 1e-9
+
+
+@settings(max_examples=8, deadline=None)
+@given(scale=st.floats(0.05, 0.5), gauge=st.floats(0.2, 0.4), spacing=st.floats(0.1, 0.2))
+def test_any_scale_and_placement_gives_a_table_or_names_the_keys(scale, gauge, spacing):
+    """Any profile scale, gauge and spacing: a table whose rows are finite,
+    or a RollerRigError naming the geometry's keys; never a crash."""
+    params = {"wheelset": {"profile": "s1002", "profile_scale": scale,
+                           "contact_half_spacing_m": spacing},
+              "roller": {"profile": "uic60", "profile_scale": scale, "gauge_m": gauge}}
+    try:
+        tab = rr.build_rig(params)[2]
+    except rr.RollerRigError as e:
+        assert "roller.gauge_m" in str(e) and "wheelset.profile_scale" in str(e), str(e)
+        return
+    assert np.all(np.isfinite(tab.data))
