@@ -146,12 +146,15 @@ def _start_config_c(P, source):
     """sources/fmu_start.c: the default configuration overridden by every
     value of the checked parameters P that differs from its default, exact
     (hexadecimal floating constants)."""
-    from .rig import params
+    from .rig import params, real_profiles
     D = params.default_parameters()
     calls, arrays = [], []
+    C = params._c_values(P)                 # a profile row: "points" for a real one
     for p in params.PARAMETERS:
         section, key = p.name.split(".")
         v, d = P[section][key], D[section][key]
+        if not p.creep:
+            v = C[p.name]
         if v == d and type(v) is type(d):
             continue
         name = _c_string(p.name)
@@ -183,7 +186,30 @@ def _start_config_c(P, source):
     for call in calls:
         lines.append(f"    if (st == 0)\n        st = {call};")
     lines += ["    return st;", "}", ""]
+    lines += _start_profiles_c(real_profiles.profile_points(P))
     return "\n".join(lines)
+
+
+def _start_profiles_c(points):
+    """rr_fmu_start_profiles of fmu_start.c: the real profiles' points as
+    rollerrig.rig.real_profiles gives them to the C table build (so the FMU
+    builds simulate()'s table, bit for bit), exact hexadecimal constants."""
+    slots = ("wheel", "roller", "wheel_right", "roller_right")
+    lines, sets = [], ["    memset(pr, 0, sizeof *pr);"]
+    for k, name in enumerate(slots):
+        s = None if points is None else points[k]
+        if s is None:
+            continue
+        y, z, end = s
+        for axis, a in (("y", y), ("z", z)):
+            body = ",\n    ".join(", ".join(float(x).hex() for x in a[i:i + 4])
+                                  for i in range(0, len(a), 4))
+            lines.append(f"static const double {name}_{axis}[{len(a)}] = {{\n    {body}}};")
+        sets += [f"    pr->{name}.n = {len(y)};", f"    pr->{name}.y = {name}_y;",
+                 f"    pr->{name}.z = {name}_z;",
+                 f"    pr->{name}.end = {'RR_SPLINE_NATURAL' if end else 'RR_SPLINE_NOT_A_KNOT'};"]
+    return (["#include <string.h>", ""] + lines
+            + ["", "void rr_fmu_start_profiles(rr_rig_profiles *pr)", "{"] + sets + ["}", ""])
 
 
 def check_scenario(scenario, *, source, method=None):
@@ -203,6 +229,8 @@ def check_scenario(scenario, *, source, method=None):
             params = rig_params._read_parameter_file(scenario)
         except rig_params._Problems as p:
             raise rig_params._error(source, p.problems) from None
+        from .rig import real_profiles
+        real_profiles.relative_to(params, os.path.dirname(os.path.abspath(scenario)))
         what = f"the scenario {Path(scenario).name}"
     else:
         params, what = scenario, "the scenario given"

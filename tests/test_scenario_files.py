@@ -109,7 +109,8 @@ def test_unknown_keys_suggest_the_nearest():
     ("scenario", "duration_s", 0, r"scenario.duration_s must be a finite number in \(0, "),
     ("integration", "linear_first_stage", 1, "integration.linear_first_stage must be true "
                                              "or false, got 1"),
-    ("wheelset", "profile", "s1002", "wheelset.profile must be 'conical', got 's1002'"),
+    ("wheelset", "profile", "uic60", "wheelset.profile must be 'conical', 's1002' or a profile "
+                                     "file's path, got 'uic60'"),
     ("scenario", "mu0", "x" * 500, r"got 'xxxx.*\.\.\.$"),     # long values shortened
 ])
 def test_value_rules(section, key, value, message):

@@ -198,6 +198,11 @@ typedef struct {
     double *table_data;
     long table_cap;                 /* doubles allocated */
     double table_work[RR_RIG_TABLE_WORK_LEN];
+    /* real profiles: the points the unit was given (rr_fmu_set_profiles; the
+     * caller's arrays), those of the table held, their build's workspace */
+    rr_rig_profiles points, table_pr;
+    double *profile_work;
+    long profile_work_cap;              /* doubles allocated */
     /* the rig's workspace for its creep method (rr_rig_workspace_len) */
     double *rig_work;
     size_t rig_work_cap;            /* doubles allocated */
@@ -279,6 +284,19 @@ int rr_fmu_var_start(const rr_fmu_config *start, const rr_fmu_var *v, double *x)
 int rr_fmu_init(rr_fmu *m, const rr_fmu_config *start, rr_fmu_alloc alloc, rr_fmu_free release,
                 void *ctx, const char *const *type_names);
 void rr_fmu_release(rr_fmu *m);
+
+/*
+ * rr_fmu_set_profiles - the points of the real profiles the configuration's
+ * profile rows may say "points" for (wheelset.profile, roller.profile and
+ * their _right rows; rr_tables.h's rr_rig_profiles): each slot with n > 0
+ * is kept (by pointer: the arrays must outlive the unit, as the generated
+ * data of an FMU does), the others hold none.  A row that says "points"
+ * where the unit holds none fails the initialisation.  Call it after
+ * rr_fmu_init (which holds none), before the initialisation.  Status:
+ * RR_ERR_NULL; rr_rig_profiles_check's for the slots given (the unit then
+ * holds none); RR_ERR_SEQUENCE after rr_fmu_enter_init.
+ */
+int rr_fmu_set_profiles(rr_fmu *m, const rr_rig_profiles *pr);
 
 /* The message of the last error or warning ("" after success). */
 const char *rr_fmu_message(const rr_fmu *m);

@@ -121,6 +121,10 @@ void rr_fmu_release(rr_fmu *m)
         m->release(m->mem_ctx, m->table_data);
     m->table_data = NULL;
     m->table_cap = 0;
+    if (m->profile_work)
+        m->release(m->mem_ctx, m->profile_work);
+    m->profile_work = NULL;
+    m->profile_work_cap = 0;
     if (m->rig_work)
         m->release(m->mem_ctx, m->rig_work);
     m->rig_work = NULL;
@@ -163,16 +167,108 @@ static int wrong_mode(rr_fmu *m, const char *what, const char *need)
                 mode_name(m->s.mode), need);
 }
 
+int rr_fmu_set_profiles(rr_fmu *m, const rr_rig_profiles *pr)
+{
+    rr_rig_profiles keep;
+    int st;
+    if (!m || !pr)
+        return RR_ERR_NULL;
+    if (m->s.mode != RR_FMU_INSTANTIATED)
+        return wrong_mode(m, "rr_fmu_set_profiles", "instantiated");
+    memset(&keep, 0, sizeof keep);
+    keep.wheel_scale = keep.roller_scale = keep.gauge = 1.0;   /* the points alone checked */
+    if (pr->wheel.n > 0)
+        keep.wheel = pr->wheel;
+    if (pr->roller.n > 0)
+        keep.roller = pr->roller;
+    if (pr->wheel_right.n > 0)
+        keep.wheel_right = pr->wheel_right;
+    if (pr->roller_right.n > 0)
+        keep.roller_right = pr->roller_right;
+    memset(&m->points, 0, sizeof m->points);
+    if ((st = rr_rig_profiles_check(&keep, NULL, NULL)) != RR_OK)
+        return fail(m, st, "rr_fmu_set_profiles: the points: %s", rr_status_message(st));
+    m->points = keep;
+    m->table_ok = 0;
+    return RR_OK;
+}
+
+/* The profiles of configuration c: its scales and gauge, and for each row
+ * that says "points" the unit's points (n = -1 where it holds none). */
+static void profiles_for(const rr_fmu *m, const rr_rig_config *c, rr_rig_profiles *pr)
+{
+    rr_rig_profiles_from(c, pr);
+    if (pr->wheel.n < 0 && m->points.wheel.n > 0)
+        pr->wheel = m->points.wheel;
+    if (pr->roller.n < 0 && m->points.roller.n > 0)
+        pr->roller = m->points.roller;
+    if (pr->wheel_right.n < 0 && m->points.wheel_right.n > 0)
+        pr->wheel_right = m->points.wheel_right;
+    if (pr->roller_right.n < 0 && m->points.roller_right.n > 0)
+        pr->roller_right = m->points.roller_right;
+}
+
+static int same_points(const rr_profile_points *a, const rr_profile_points *b)
+{
+    return a->n == b->n && a->y == b->y && a->z == b->z && a->end == b->end;
+}
+
+static int same_profiles(const rr_rig_profiles *a, const rr_rig_profiles *b)
+{
+    return same_points(&a->wheel, &b->wheel) && same_points(&a->roller, &b->roller)
+        && same_points(&a->wheel_right, &b->wheel_right)
+        && same_points(&a->roller_right, &b->roller_right) && a->wheel_scale == b->wheel_scale
+        && a->roller_scale == b->roller_scale && a->gauge == b->gauge;
+}
+
+static const char *const slot_rows[] = {"wheelset.profile", "roller.profile",
+                                        "wheelset.profile_right", "roller.profile_right"};
+
+/* The table on real profiles into m->table (workspace allocated as needed). */
+static int profile_table(rr_fmu *m, const rr_rig_geometry *g, const rr_rig_profiles *pr,
+                         double *bad_y)
+{
+    int which = -1, point = -1, st;
+    long need;
+    if ((st = rr_rig_profiles_check(pr, &which, &point)) != RR_OK) {
+        if (which < 0)
+            return fail(m, st, "the real profiles' scales (wheelset.profile_scale, "
+                        "roller.profile_scale) or roller.gauge_m: %s", rr_status_message(st));
+        return fail(m, st, "%s = \"points\": %s%s", slot_rows[which],
+                    st == RR_ERR_NULL ? "this FMU carries no points for it (build it from a "
+                                        "scenario that names the profile)"
+                                      : "its points: ", st == RR_ERR_NULL ? ""
+                                      : rr_status_message(st));
+    }
+    need = rr_rig_profiles_work_len(pr);
+    if (need > m->profile_work_cap) {
+        double *work = m->alloc(m->mem_ctx, (size_t)need * sizeof *work);
+        if (!work)
+            return fail(m, RR_ERR_WORKSPACE, "the contact table: out of memory (%ld doubles)",
+                        need);
+        if (m->profile_work)
+            m->release(m->mem_ctx, m->profile_work);
+        m->profile_work = work;
+        m->profile_work_cap = need;
+    }
+    return rr_rig_table_build_profiles(g, pr, m->table_data, m->table_cap, m->profile_work,
+                                       m->profile_work_cap, &m->table, bad_y);
+}
+
 /* The contact table of the configuration's geometry, built if it is not
  * the one held (allocating its rows). */
 static int table_for(rr_fmu *m, const rr_rig_config *c)
 {
     rr_rig_geometry g;
+    rr_rig_profiles pr;
     long len;
     double bad_y = NAN;
-    int st;
+    int st, real;
     rr_rig_geometry_from(c, &g);
-    if (m->table_ok && memcmp(&g, &m->g, sizeof g) == 0)
+    profiles_for(m, c, &pr);
+    real = pr.wheel.n != 0 || pr.roller.n != 0 || pr.wheel_right.n != 0
+        || pr.roller_right.n != 0;
+    if (m->table_ok && memcmp(&g, &m->g, sizeof g) == 0 && same_profiles(&pr, &m->table_pr))
         return RR_OK;
     m->table_ok = 0;
     len = rr_rig_table_data_len(&g);
@@ -189,8 +285,11 @@ static int table_for(rr_fmu *m, const rr_rig_config *c)
         m->table_data = data;
         m->table_cap = len;
     }
-    st = rr_rig_table_build(&g, m->table_data, m->table_cap, m->table_work,
-                            RR_RIG_TABLE_WORK_LEN, &m->table, &bad_y);
+    if (real && (st = profile_table(m, &g, &pr, &bad_y)) < 0 && isnan(bad_y))
+        return st;                                     /* the profiles' own fault: said */
+    if (!real)
+        st = rr_rig_table_build(&g, m->table_data, m->table_cap, m->table_work,
+                                RR_RIG_TABLE_WORK_LEN, &m->table, &bad_y);
     if (st < 0) {
         char y[32];
         rr_fmu_format_number(bad_y, y, sizeof y);
@@ -202,6 +301,7 @@ static int table_for(rr_fmu *m, const rr_rig_config *c)
                     rr_status_message(st));
     }
     m->g = g;
+    m->table_pr = pr;
     m->table_ok = 1;
     return RR_OK;
 }
@@ -220,6 +320,10 @@ static int rig_work_for(rr_fmu *m, size_t need)
                     (unsigned long)need);
     for (i = 0; i < need; i++)
         work[i] = 0.0;
+    if (m->profile_work)
+        m->release(m->mem_ctx, m->profile_work);
+    m->profile_work = NULL;
+    m->profile_work_cap = 0;
     if (m->rig_work)
         m->release(m->mem_ctx, m->rig_work);
     m->rig_work = work;

@@ -131,6 +131,12 @@ static int predict_check(const rr_rig_config *c, const char **bad)
     for (k = 1; !*bad && k < c->schedule_t.n; k++)
         if (c->schedule_t.v[k] < c->schedule_t.v[k - 1])
             *bad = "adhesion.schedule_times_s";
+    /* the lateral force: one per time, the times in order */
+    if (!*bad && c->lateral_f.n != c->lateral_t.n)
+        *bad = "disturbance.lateral_force_N";
+    for (k = 1; !*bad && k < c->lateral_t.n; k++)
+        if (c->lateral_t.v[k] < c->lateral_t.v[k - 1])
+            *bad = "disturbance.lateral_force_times_s";
     if (!*bad && c->patch_length > 2.0 * RR_PI * c->roller_radius)
         *bad = "adhesion.patch_length_m";
     if (!*bad) {
@@ -583,6 +589,19 @@ static int predict_report(const rr_rig_config *c, rr_rig_problem *out, int cap)
         if (k < st->n)
             problem(&out[n++], "adhesion.schedule_times_s", NULL, RR_ERR_PARAM,
                     RR_RIG_RULE_NONDECREASING, k, st->v[k], NAN, NAN);
+    }
+    if (!row_bad(c, "disturbance.lateral_force_times_s")
+        && !row_bad(c, "disturbance.lateral_force_N")) {
+        const rr_rig_list *lt = &c->lateral_t;
+        if (c->lateral_f.n != lt->n)
+            problem(&out[n++], "disturbance.lateral_force_N", "disturbance.lateral_force_times_s",
+                    RR_ERR_PARAM, RR_RIG_RULE_COUNT, -1, c->lateral_f.n, NAN, lt->n);
+        for (k = 1; k < lt->n; k++)
+            if (!(lt->v[k] >= lt->v[k - 1]))
+                break;
+        if (k < lt->n)
+            problem(&out[n++], "disturbance.lateral_force_times_s", NULL, RR_ERR_PARAM,
+                    RR_RIG_RULE_NONDECREASING, k, lt->v[k], NAN, NAN);
     }
     if (!row_bad(c, "adhesion.patch_length_m") && !row_bad(c, "roller.radius_m")
         && !(c->patch_length <= 2.0 * RR_PI * c->roller_radius))

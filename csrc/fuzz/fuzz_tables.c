@@ -2,7 +2,12 @@
  * fuzz_tables.c - contact tables from points (rr_tables.h): the analytic
  * profiles rr_profile_conical and rr_profile_crowned, rr_profile_surface,
  * rr_profile_table_work_len and rr_profile_table_build(_rows), and the
- * rig's table rr_rig_table_data_len and rr_rig_table_build(_rows).
+ * rig's table rr_rig_table_data_len and rr_rig_table_build(_rows), and on
+ * profiles given as points rr_rig_profiles_check, rr_rig_profiles_work_len,
+ * rr_rig_table_build_profiles_rows (oracles: the check against an
+ * independent one of the documented rules, the build's status the check's,
+ * a short workspace refused, rows finite, with no profile given
+ * rr_rig_table_build's rows bit for bit).
  *
  * Input: one byte choosing the entry point, then its arguments: the cone
  * angle or crown radius, the range and n (4 .. 48 or an edge), NULLs; for
@@ -401,6 +406,162 @@ static void run_rig_table(fz_in *in)
     fz_guard_free(work);
 }
 
+/* The independent oracle of rr_rig_profiles_check for one given slot's
+ * points: the first problem's status and point (-1: the whole profile). */
+static int slot_oracle(const rr_profile_points *p, int *point)
+{
+    int i;
+    *point = -1;
+    if (p->n < 0)
+        return RR_ERR_NULL;
+    if (p->n < RR_SPLINE_MIN_POINTS || p->n > RR_SPLINE_MAX_POINTS
+        || (p->end != RR_SPLINE_NOT_A_KNOT && p->end != RR_SPLINE_NATURAL))
+        return RR_ERR_PARAM;
+    if (!p->y || !p->z)
+        return RR_ERR_NULL;
+    for (i = 0; i < p->n; i++) {
+        *point = i;
+        if (!isfinite(p->y[i]) || !isfinite(p->z[i]))
+            return RR_ERR_NONFINITE;
+        if (fabs(p->y[i]) > RR_PROFILE_MAX_COORD || fabs(p->z[i]) > RR_PROFILE_MAX_COORD)
+            return RR_ERR_PARAM;
+        if (i > 0 && (!(p->y[i] > p->y[i - 1]) || p->y[i] - p->y[i - 1] > RR_PROFILE_MAX_GAP))
+            return RR_ERR_GEOMETRY;
+    }
+    *point = -1;
+    return p->y[p->n - 1] - p->y[0] >= RR_PROFILE_MIN_WIDTH ? RR_OK : RR_ERR_PARAM;
+}
+
+/* rr_rig_table_build_profiles(_rows) on the rig's geometry and up to four
+ * given profiles (each not given, "to be given" (n = -1) or decode_points'
+ * at full size, now and then spoilt: a NaN, a step back, a gap, x 1000). */
+static void run_rig_profiles(fz_in *in)
+{
+    const char *fn = "rr_rig_table_build_profiles";
+    static double py[4][MAX_TPTS + 1], pz[4][MAX_TPTS + 1];
+    rr_rig_config c;
+    rr_rig_geometry g;
+    rr_rig_profiles pr;
+    rr_contact_table t, t2;
+    rr_profile_points *slot[4];
+    double bad = 0.0, *data, *data2, *work;
+    long need_w, need_d, work_len, data_len;
+    int k, st, st_check, want, which, point, i0, i1, wshort, all_empty = 1;
+
+    rr_rig_config_default(&c);
+    rr_rig_geometry_from(&c, &g);
+    rr_rig_profiles_from(&c, &pr);
+    g.table_rows = fz_range(in, 2, 3);
+    g.table_half_range = fz_log(in, 1e-4, 4e-3);
+    slot[0] = &pr.wheel;
+    slot[1] = &pr.roller;
+    slot[2] = &pr.wheel_right;
+    slot[3] = &pr.roller_right;
+    for (k = 0; k < 4; k++) {
+        const int mode = fz_choice(in, 8);
+        if (mode <= 2 || (k >= 2 && mode <= 4))
+            continue;                                    /* not given */
+        if (mode == 3) {
+            slot[k]->n = -1;                            /* said given, and not */
+            all_empty = 0;
+            continue;
+        }
+        decode_points(in, k & 1, MAX_TPTS, py[k], pz[k], slot[k]);
+        all_empty = 0;
+        {   /* full size: x 5, and the wheel's taping line over the crown */
+            const int n = slot[k]->n >= 1 && slot[k]->n <= MAX_TPTS + 1 ? slot[k]->n : 0;
+            const int spoil = fz_choice(in, 6), at = n > 1 ? fz_range(in, 1, n - 1) : 0;
+            int i;
+            for (i = 0; i < n; i++) {
+                py[k][i] *= 5.0;
+                pz[k][i] *= 5.0;
+            }
+            if (n > 1 && spoil == 0)
+                pz[k][at] = NAN;
+            else if (n > 1 && spoil == 1)
+                py[k][at] = py[k][at - 1] - fz_log(in, 1e-9, 1e-3);
+            else if (n > 1 && spoil == 2)
+                for (i = at; i < n; i++)
+                    py[k][i] += fz_log(in, 1e-3, 2e-2);
+            else if (spoil == 3)
+                for (i = 0; i < n; i++) {
+                    py[k][i] *= 1000.0;
+                    pz[k][i] *= 1000.0;
+                }
+        }
+        if (fz_choice(in, 32) == 0)
+            slot[k]->z = NULL;
+    }
+    pr.wheel_scale = fz_near(in, 0.2, 4.0);
+    pr.roller_scale = fz_near(in, 0.2, 4.0);
+    pr.gauge = fz_near(in, 0.30, 1.2);
+
+    /* the check against the oracle: scales and gauge, then the slots in order */
+    {
+        const int roller_given = pr.roller.n != 0 || pr.roller_right.n != 0;
+        int opoint = -1, owhich = -1;
+        if (!isfinite(pr.wheel_scale) || !isfinite(pr.roller_scale)
+            || (roller_given && !isfinite(pr.gauge)))
+            want = RR_ERR_NONFINITE;
+        else if (!(pr.wheel_scale > 0.0) || !(pr.roller_scale > 0.0)
+                 || (roller_given && !(pr.gauge > 0.0)))
+            want = RR_ERR_PARAM;
+        else
+            for (want = RR_OK, k = 0; k < 4 && want == RR_OK; k++)
+                if (slot[k]->n != 0 && (want = slot_oracle(slot[k], &opoint)) != RR_OK)
+                    owhich = k;
+        st_check = rr_rig_profiles_check(&pr, &which, &point);
+        fz_note("rig profiles: n %d %d %d %d scales %.17g %.17g gauge %.17g rows %d half "
+                "%.17g: check %d (%d, %d), oracle %d (%d, %d)", pr.wheel.n, pr.roller.n,
+                pr.wheel_right.n, pr.roller_right.n, pr.wheel_scale, pr.roller_scale, pr.gauge,
+                g.table_rows, g.table_half_range, st_check, which, point, want, owhich, opoint);
+        if (st_check != want || (want != RR_OK && (which != owhich || point != opoint)))
+            fz_fail("rr_rig_profiles_check: %d at (%d, %d), the oracle %d at (%d, %d)",
+                    st_check, which, point, want, owhich, opoint);
+    }
+    need_w = rr_rig_profiles_work_len(&pr);
+    need_d = rr_rig_table_data_len(&g);
+    wshort = fz_choice(in, 16) == 0;
+    work_len = need_w > 0 ? need_w - wshort : 0;
+    data_len = need_d;
+    work = fz_guarded((size_t)work_len * sizeof(double));
+    data = fz_guarded((size_t)data_len * sizeof(double));
+    data2 = fz_guarded((size_t)data_len * sizeof(double));
+    i0 = fz_range(in, 0, g.table_rows);
+    i1 = fz_choice(in, 2) == 0 ? fz_range(in, i0, g.table_rows) : g.table_rows;
+    st = rr_rig_table_build_profiles_rows(&g, &pr, data, data_len, work, work_len, i0, i1, &t,
+                                          &bad);
+    fz_status(fn, st);
+    fz_guard_ok(fn, data, (size_t)data_len * sizeof(double), "data");
+    fz_guard_ok(fn, work, (size_t)work_len * sizeof(double), "work");
+    if (st_check != RR_OK && st != st_check)
+        fz_fail("%s: %d, but the profiles' check says %d", fn, st, st_check);
+    if (wshort && (st >= 0 || (st_check == RR_OK && isfinite(g.table_half_range)
+                               && g.table_half_range > 0.0 && st != RR_ERR_WORKSPACE)))
+        fz_fail("%s: work one double short, status %d", fn, st);
+    if (st < 0 && !isnan(bad)) {
+        int i, row = 0;
+        for (i = i0; i < i1; i++)
+            row |= bad == t.y0 + i * t.dy;
+        if (!row)
+            fz_fail("%s: *bad_y = %.17g, not a row's shift", fn, bad);
+    }
+    if (st == RR_OK)
+        fz_finite_n(fn, st, "row", data + (long)i0 * RR_CONTACT_TABLE_ROW,
+                    (i1 - i0) * RR_CONTACT_TABLE_ROW);
+    if (st == RR_OK && all_empty) {
+        /* no profile given: rr_rig_table_build's rows, bit for bit */
+        static double w2[RR_RIG_TABLE_WORK_LEN];
+        if (rr_rig_table_build_rows(&g, data2, data_len, w2, RR_RIG_TABLE_WORK_LEN, i0, i1, &t2,
+                                    NULL) != RR_OK)
+            fz_fail("%s: OK with no profile, rr_rig_table_build not", fn);
+        check_rows(fn, data, data2, i0, i1, "differ from rr_rig_table_build's");
+    }
+    fz_guard_free(work);
+    fz_guard_free(data);
+    fz_guard_free(data2);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fz_in in = fz_start(data, size);
@@ -409,7 +570,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     case 1: run_analytic(&in, 1); break;
     case 2: case 3: run_surface(&in); break;
     case 4: case 5: run_profile_table(&in); break;
-    default: run_rig_table(&in); break;
+    case 6: run_rig_table(&in); break;
+    default: run_rig_profiles(&in); break;
     }
     return 0;
 }

@@ -1,5 +1,6 @@
 /* rr_tables.c - contact tables from profile points; the rig's default table. */
 #include <math.h>
+#include <stddef.h>
 #include "util/rr_common.h"
 #include "geometry/rr_tables.h"
 
@@ -268,4 +269,208 @@ int rr_rig_table_build_rows(const rr_rig_geometry *g, double *data, long data_le
     t->data = data;
     return rr_profile_table_build_rows(&wheel, &roller, &place, &o, t, data_len, rz + N,
                                        work_len - 4L * N, i0, i1, bad_y);
+}
+
+/* ---------------------------------------------------------------- the rig's profiles as points */
+
+static const rr_profile_points *slot_of(const rr_rig_profiles *pr, int k)
+{
+    return k == RR_RIG_WHEEL ? &pr->wheel : k == RR_RIG_ROLLER ? &pr->roller
+         : k == RR_RIG_WHEEL_RIGHT ? &pr->wheel_right : &pr->roller_right;
+}
+
+static int fault(int st, int k, int i, int *which, int *point)
+{
+    if (which)
+        *which = k;
+    if (point)
+        *point = i;
+    return st;
+}
+
+/* One given profile's points: what rr_rig_profiles_check says of them. */
+static int points_check(const rr_profile_points *p, int k, int *which, int *point)
+{
+    double lo, hi;
+    int i;
+    if (!count_ok(p->n) || (p->end != RR_SPLINE_NOT_A_KNOT && p->end != RR_SPLINE_NATURAL))
+        return fault(RR_ERR_PARAM, k, -1, which, point);
+    if (!p->y || !p->z)
+        return fault(RR_ERR_NULL, k, -1, which, point);
+    for (i = 0; i < p->n; i++) {
+        if (!isfinite(p->y[i]) || !isfinite(p->z[i]))
+            return fault(RR_ERR_NONFINITE, k, i, which, point);
+        if (fabs(p->y[i]) > RR_PROFILE_MAX_COORD || fabs(p->z[i]) > RR_PROFILE_MAX_COORD)
+            return fault(RR_ERR_PARAM, k, i, which, point);
+        if (i > 0 && !(p->y[i] > p->y[i - 1]))        /* vertical or overhanging */
+            return fault(RR_ERR_GEOMETRY, k, i, which, point);
+        if (i > 0 && p->y[i] - p->y[i - 1] > RR_PROFILE_MAX_GAP)
+            return fault(RR_ERR_GEOMETRY, k, i, which, point);
+    }
+    lo = p->y[0];
+    hi = p->y[p->n - 1];
+    if (!(hi - lo >= RR_PROFILE_MIN_WIDTH))
+        return fault(RR_ERR_PARAM, k, -1, which, point);
+    return fault(RR_OK, -1, -1, which, point);
+}
+
+int rr_rig_profiles_check(const rr_rig_profiles *pr, int *which, int *point)
+{
+    const double v[3] = {pr ? pr->wheel_scale : 0.0, pr ? pr->roller_scale : 0.0,
+                         pr ? pr->gauge : 0.0};
+    const int roller_given = pr && (pr->roller.n != 0 || pr->roller_right.n != 0);
+    int k, st;
+    if (!pr)
+        return fault(RR_ERR_NULL, -1, -1, which, point);
+    if (!rr_all_finite(v, roller_given ? 3 : 2))
+        return fault(RR_ERR_NONFINITE, -1, -1, which, point);
+    if (!(pr->wheel_scale > 0.0) || !(pr->roller_scale > 0.0)
+        || (roller_given && !(pr->gauge > 0.0)))
+        return fault(RR_ERR_PARAM, -1, -1, which, point);
+    for (k = 0; k < 4; k++) {
+        const rr_profile_points *p = slot_of(pr, k);
+        if (p->n < 0)                         /* said to be given, and not */
+            return fault(RR_ERR_NULL, k, -1, which, point);
+        if (p->n != 0 && (st = points_check(p, k, which, point)) != RR_OK)
+            return st;
+    }
+    return fault(RR_OK, -1, -1, which, point);
+}
+
+/* The points a slot's table side uses: its own (given), the analytic
+ * profile (a left slot not given) or the left's (a right slot not given). */
+static int slot_points(const rr_rig_profiles *pr, int k)
+{
+    const rr_profile_points *p = slot_of(pr, k);
+    return p->n != 0 ? p->n : k < 2 ? RR_RIG_PROFILE_POINTS : 0;
+}
+
+long rr_rig_profiles_work_len(const rr_rig_profiles *pr)
+{
+    long len = 0, most = 0;
+    int k;
+    if (!pr)
+        return 0;
+    for (k = 0; k < 4; k++) {
+        const int n = slot_points(pr, k);
+        if (n != 0 && !count_ok(n))
+            return 0;
+        len += 4L * n;                       /* y, z (scaled or analytic), zup, m */
+        most = n > most ? n : most;
+    }
+    return len + 4L * most;                  /* rr_profile_surface's scratch */
+}
+
+int rr_rig_table_build_profiles(const rr_rig_geometry *g, const rr_rig_profiles *pr,
+                                double *data, long data_len, double *work, long work_len,
+                                rr_contact_table *t, double *bad_y)
+{
+    return rr_rig_table_build_profiles_rows(g, pr, data, data_len, work, work_len, 0,
+                                            g ? g->table_rows : 0, t, bad_y);
+}
+
+/* A side's surface: the slot's points (scaled into y, z) or the analytic
+ * profile, then rr_profile_surface; s the surface as the geometry reads it. */
+static int side_surface(const rr_rig_geometry *g, const rr_profile_points *given, double scale,
+                        int roller, double *y, double *z, double *zup, double *m,
+                        double *scratch, rr_spline *s)
+{
+    rr_profile_points p;
+    int i, st;
+    if (given->n != 0) {
+        for (i = 0; i < given->n; i++) {
+            y[i] = scale * given->y[i];
+            z[i] = scale * given->z[i];
+        }
+        p.n = given->n;
+        p.end = given->end;
+    } else {
+        const double hw = g->profile_half_width;
+        st = roller ? rr_profile_crowned(g->crown_radius, -hw, hw, RR_RIG_PROFILE_POINTS, y, z)
+                    : rr_profile_conical(g->cone_angle, -hw, hw, RR_RIG_PROFILE_POINTS, y, z);
+        if (st != RR_OK)
+            return st;
+        p.n = RR_RIG_PROFILE_POINTS;
+        p.end = RR_SPLINE_NOT_A_KNOT;
+    }
+    p.y = y;
+    p.z = z;
+    if ((st = rr_profile_surface(&p, zup, m, scratch)) != RR_OK)
+        return st;
+    s->n = p.n;
+    s->s = y;
+    s->z = zup;
+    s->m = m;
+    return RR_OK;
+}
+
+int rr_rig_table_build_profiles_rows(const rr_rig_geometry *g, const rr_rig_profiles *pr,
+                                     double *data, long data_len, double *work, long work_len,
+                                     int i0, int i1, rr_contact_table *t, double *bad_y)
+{
+    const double v[7] = {g ? g->wheel_radius : 0.0, g ? g->roller_radius : 0.0,
+                         g ? g->profile_half_width : 0.0, g ? g->cone_angle : 0.0,
+                         g ? g->crown_radius : 0.0, g ? g->contact_half_spacing : 0.0,
+                         g ? g->table_half_range : 0.0};
+    rr_spline surf[4];
+    rr_wheel_roller pair[2];
+    rr_search_opts o;
+    double *at, *scratch;
+    long need;
+    int k, st;
+
+    if (bad_y)
+        *bad_y = NAN;
+    if (!g || !t || !pr)
+        return RR_ERR_NULL;
+    if ((st = rr_rig_profiles_check(pr, NULL, NULL)) != RR_OK)
+        return st;
+    if (!rr_all_finite(v, 7))
+        return RR_ERR_NONFINITE;
+    if (!(g->table_rows >= 2 && g->table_rows <= RR_RIG_TABLE_MAX_ROWS)
+        || !(g->wheel_radius > 0.0) || !(g->roller_radius > 0.0)
+        || !(g->profile_half_width > 0.0) || !(g->table_half_range > 0.0))
+        return RR_ERR_PARAM;
+    need = rr_rig_profiles_work_len(pr);
+    if (!data || !work || data_len < rr_rig_table_data_len(g) || work_len < need)
+        return RR_ERR_WORKSPACE;
+    /* work: per slot built, y, z, zup, m of its points; then the scratch */
+    at = work;
+    {
+        long most = 0;
+        for (k = 0; k < 4; k++)
+            most = slot_points(pr, k) > most ? slot_points(pr, k) : most;
+        scratch = work + (need - 4L * most);
+    }
+    for (k = 0; k < 4; k++) {
+        const int n = slot_points(pr, k);
+        const int roller = k == RR_RIG_ROLLER || k == RR_RIG_ROLLER_RIGHT;
+        if (n == 0) {
+            surf[k] = surf[k - 2];            /* a right slot: the left's */
+            continue;
+        }
+        st = side_surface(g, slot_of(pr, k), roller ? pr->roller_scale : pr->wheel_scale,
+                          roller, at, at + n, at + 2L * n, at + 3L * n, scratch, &surf[k]);
+        if (st != RR_OK)
+            return st;
+        at += 4L * n;
+    }
+    for (k = 0; k < 2; k++) {
+        const int roller_given = slot_of(pr, k ? RR_RIG_ROLLER_RIGHT : RR_RIG_ROLLER)->n != 0
+                              || pr->roller.n != 0;
+        pair[k].wheel = surf[k ? RR_RIG_WHEEL_RIGHT : RR_RIG_WHEEL];
+        pair[k].roller = surf[k ? RR_RIG_ROLLER_RIGHT : RR_RIG_ROLLER];
+        pair[k].r0 = g->wheel_radius;
+        pair[k].R0 = g->roller_radius;
+        pair[k].wheel_y = g->contact_half_spacing;
+        /* a real roller's gauge point at half the gauge; the crown under the contact */
+        pair[k].roller_y = roller_given ? 0.5 * pr->gauge : g->contact_half_spacing;
+        pair[k].side = k == 0 ? 1 : -1;
+    }
+    rr_search_opts_default(&o);
+    t->y0 = -g->table_half_range;
+    t->dy = (g->table_half_range - -g->table_half_range) / (double)(g->table_rows - 1);
+    t->n = g->table_rows;
+    t->data = data;
+    return rr_contact_table_build_rows(&pair[0], &pair[1], &o, t, i0, i1, bad_y);
 }

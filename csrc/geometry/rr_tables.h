@@ -165,4 +165,90 @@ int rr_rig_table_build_rows(const rr_rig_geometry *g, double *data, long data_le
                             double *work, long work_len, int i0, int i1, rr_contact_table *t,
                             double *bad_y);
 
+/*
+ * The rig's profiles as points: real profiles (S1002, UIC60, measured
+ * ones) where the rig's parameters say "points" (wheelset.profile,
+ * roller.profile and their _right rows, rr_rig_params.h).  The points are
+ * the caller's (not copied, not owned), at full scale in
+ * rollerrig.profiles' convention (y to the field side, z down) and
+ * referenced to the rig's nominal geometry:
+ *   wheel:  y = 0, z = 0 at the taping line (the nominal rolling circle),
+ *           which sits at the geometry's contact half spacing with radius
+ *           wheel_radius;
+ *   roller: y = 0 at its gauge point, z = 0 at its top, which has radius
+ *           roller_radius; the gauge points sit at +-gauge/2.
+ * The build scales each by its scale (rig size / full size: 0.2 on the 1/5
+ * rig).  A slot with n = 0 is not given: the left wheel is then the
+ * geometry's cone, the left roller its crowned cylinder (placed as
+ * rr_rig_table_build places them), and a right slot the left's (mirrored
+ * in the rig, as every right side).
+ */
+typedef struct {
+    rr_profile_points wheel, roller;              /* the left side's */
+    rr_profile_points wheel_right, roller_right;  /* the right side's, in its own
+                                                     coordinates (field side +y) */
+    double wheel_scale, roller_scale;             /* rig / full size, > 0 */
+    double gauge;                                 /* between the rollers' gauge points [m]
+                                                     (rig size; read with a roller given) */
+} rr_rig_profiles;
+
+/* Which profile of an rr_rig_profiles (rr_rig_profiles_check's *which). */
+enum rr_rig_profile_slot {
+    RR_RIG_WHEEL = 0, RR_RIG_ROLLER, RR_RIG_WHEEL_RIGHT, RR_RIG_ROLLER_RIGHT
+};
+
+/* Most lateral distance between neighbouring points of a given profile, as
+ * given (full size): wider, the spline would invent the surface under a
+ * contact patch (a measured or standard profile has points 0.1-0.7 mm
+ * apart; a patch is about 10 mm wide). */
+#define RR_PROFILE_MAX_GAP 5e-3   /* [m] */
+
+/*
+ * rr_rig_profiles_check - the given profiles' points as the build needs
+ * them: counts in [RR_SPLINE_MIN_POINTS, RR_SPLINE_MAX_POINTS] (or 0), end
+ * conditions, arrays not NULL, numbers finite, y strictly increasing (a
+ * vertical or overhanging segment is not), neighbours at most
+ * RR_PROFILE_MAX_GAP apart, coordinates within RR_PROFILE_MAX_COORD and a
+ * lateral span of at least RR_PROFILE_MIN_WIDTH (millimetres given as
+ * metres, or metres as millimetres), scales and a given roller's gauge
+ * finite and positive.
+ *   returns: *which (enum rr_rig_profile_slot, -1 for the scales or the
+ *            gauge) and *point (the first point at fault, -1 for the whole
+ *            profile) of the first problem; each may be NULL
+ *   status:  0 OK; RR_ERR_NULL (pr NULL, an array of a given profile NULL,
+ *            a count of -1: said to be given by rr_rig_profiles_from, and not),
+ *            RR_ERR_PARAM (a count, an end condition, a scale, the gauge,
+ *            a coordinate or a span out of range), RR_ERR_NONFINITE,
+ *            RR_ERR_GEOMETRY (y not increasing, or a gap)
+ */
+int rr_rig_profiles_check(const rr_rig_profiles *pr, int *which, int *point);
+
+/* Doubles of workspace rr_rig_table_build_profiles needs for pr (4 per point
+ * of each profile it builds, the analytic ones RR_RIG_PROFILE_POINTS each,
+ * and 4 per point of the longest); 0 if pr is NULL or a count is out of
+ * range. */
+long rr_rig_profiles_work_len(const rr_rig_profiles *pr);
+
+/*
+ * rr_rig_table_build_profiles - the rig's contact table on the profiles pr
+ * (rr_rig_table_build where every slot of pr has n = 0, bit for bit): the
+ * given ones scaled and placed as above, the others as rr_rig_table_build
+ * makes them; rows as rr_rig_table_build's.
+ *   given:   g, pr (checked by rr_rig_profiles_check); data of data_len >=
+ *            rr_rig_table_data_len(g) doubles; work of work_len >=
+ *            rr_rig_profiles_work_len(pr) doubles
+ *   status:  as rr_rig_table_build, and rr_rig_profiles_check's; a shift
+ *            where the profiles do not touch (a wheel off its roller, or
+ *            conformal: no Hertz ellipse) is RR_ERR_GEOMETRY with the
+ *            shift in *bad_y
+ */
+int rr_rig_table_build_profiles(const rr_rig_geometry *g, const rr_rig_profiles *pr,
+                                double *data, long data_len, double *work, long work_len,
+                                rr_contact_table *t, double *bad_y);
+
+/* rr_rig_table_build_profiles_rows - the same, rows i0 <= i < i1 only. */
+int rr_rig_table_build_profiles_rows(const rr_rig_geometry *g, const rr_rig_profiles *pr,
+                                     double *data, long data_len, double *work, long work_len,
+                                     int i0, int i1, rr_contact_table *t, double *bad_y);
+
 #endif

@@ -46,6 +46,21 @@ static int adhesion_check(const rr_rig_adhesion *a, double R0)
     return a->patch_length > 0.0 ? rr_friction_check(&a->patch) : RR_OK;
 }
 
+/* 0 if the lateral force's points are usable. */
+static int lateral_check(const rr_rig_lateral *l)
+{
+    int i;
+    if (l->n < 0 || l->n > RR_RIG_MAX_SCHEDULE)
+        return RR_ERR_PARAM;
+    for (i = 0; i < l->n; i++) {
+        if (!isfinite(l->t[i]) || !isfinite(l->f[i]))
+            return RR_ERR_NONFINITE;
+        if (i > 0 && !(l->t[i] >= l->t[i - 1]))
+            return RR_ERR_PARAM;
+    }
+    return RR_OK;
+}
+
 int rr_rig_check(const rr_rig_params *p)
 {
     int st;
@@ -82,7 +97,8 @@ int rr_rig_check(const rr_rig_params *p)
         || p->wheelset_enc.T != p->T)
         return RR_ERR_PARAM;
     if ((st = rr_rig_method_check(&p->contact.creep)) != RR_OK
-        || (st = adhesion_check(&p->adhesion, p->contact.R0)) != RR_OK)
+        || (st = adhesion_check(&p->adhesion, p->contact.R0)) != RR_OK
+        || (st = lateral_check(&p->lateral)) != RR_OK)
         return st;
     {
         /* the drives' loops stable at T: gains, inertias, lags and sample

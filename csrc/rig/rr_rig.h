@@ -108,6 +108,21 @@ typedef struct {
     int patch_rollers;                       /* 1 left, 2 right, 3 both */
 } rr_rig_adhesion;
 
+/*
+ * A lateral force on the wheelset's centre in time (a disturbance that
+ * pushes it towards flange contact): F(t) linear between the points, held
+ * before the first and after the last, taken at each sample's start (as the
+ * adhesion's schedule); n = 0: none.
+ */
+typedef struct {
+    int n;                                   /* 0 to RR_RIG_MAX_SCHEDULE */
+    double t[RR_RIG_MAX_SCHEDULE];           /* times, non-decreasing [s] */
+    double f[RR_RIG_MAX_SCHEDULE];           /* the force along Y there [N] */
+} rr_rig_lateral;
+
+/* rr_rig_lateral_force - the force of l at time t (0 where l->n is 0). */
+double rr_rig_lateral_force(const rr_rig_lateral *l, double t);
+
 typedef struct {
     /* wheelset */
     double mass;             /* [kg] */
@@ -123,6 +138,7 @@ typedef struct {
     /* contact: table, R0, material, friction, creep method, vmin */
     rr_rig_contact_model contact;
     rr_rig_adhesion adhesion;                 /* changes of contact.friction */
+    rr_rig_lateral lateral;                   /* a lateral force on the wheelset */
     /* drives and control */
     double T;                /* sample time of controllers and encoders [s] */
     int nsub;                /* plant steps per sample, >= 1 */

@@ -243,6 +243,8 @@ static const char *const sample_rows[] = {DURATION, SAMPLE_TIME, NULL};
 static const char *const schedule_rows[] = {TIMES, "adhesion.schedule_mu0",
                                             "adhesion.schedule_polach_A",
                                             "adhesion.schedule_polach_B_s_per_m", NULL};
+static const char *const lateral_rows[] = {"disturbance.lateral_force_times_s",
+                                           "disturbance.lateral_force_N", NULL};
 static const char *const patch_rows[] = {"adhesion.patch_length_m", "roller.radius_m", NULL};
 static const char *const inertia_rows[] = {SPIN_INERTIA, DRIVE_INERTIA, NULL};
 /* drives_from's rows that rr_rig_speed_loops reads (the PI's Tmax too: its check) */
@@ -307,6 +309,17 @@ static int report(const rr_rig_config *c, rr_rig_problem *out, int cap, int scan
         if (k < c->schedule_t.n)
             add(&s, TIMES, NULL, RR_ERR_PARAM, RR_RIG_RULE_NONDECREASING, k, c->schedule_t.v[k],
                 NAN, NAN);
+    }
+    /* the lateral force: one per time, the times in order */
+    if (rows_ok(c, lateral_rows)) {
+        if (c->lateral_f.n != c->lateral_t.n)
+            add(&s, "disturbance.lateral_force_N", "disturbance.lateral_force_times_s",
+                RR_ERR_PARAM, RR_RIG_RULE_COUNT, -1, c->lateral_f.n, NAN, c->lateral_t.n);
+        for (k = 1; k < c->lateral_t.n && c->lateral_t.v[k] >= c->lateral_t.v[k - 1]; k++)
+            ;
+        if (k < c->lateral_t.n)
+            add(&s, "disturbance.lateral_force_times_s", NULL, RR_ERR_PARAM,
+                RR_RIG_RULE_NONDECREASING, k, c->lateral_t.v[k], NAN, NAN);
     }
     if (rows_ok(c, patch_rows) && !(c->patch_length <= 2.0 * RR_PI * c->roller_radius))
         add(&s, "adhesion.patch_length_m", "roller.radius_m", RR_ERR_PARAM,

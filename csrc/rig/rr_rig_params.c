@@ -49,8 +49,12 @@
 
 static const char *const drive_modes[] = {"braking", "traction", NULL};
 static const int drive_senses[] = {RR_CREEPCTL_BRAKING, RR_CREEPCTL_TRACTION};
-static const char *const wheel_profiles[] = {"conical", NULL};
-static const char *const roller_profiles[] = {"crowned cylinder", NULL};
+/* "points": a real profile whose points the caller gives (rr_rig_profiles,
+ * rr_tables.h); rollerrig reads a built-in name or a file into them */
+static const char *const wheel_profiles[] = {"conical", "points", NULL};
+static const char *const roller_profiles[] = {"crowned cylinder", "points", NULL};
+/* a right side of its own ("points"), or "" the left's mirrored */
+static const char *const right_profiles[] = {"", "points", NULL};
 static const char *const friction_laws[] = {"polach_falling", "coulomb", NULL};
 static const char *const ode_methods[] = {"trbdf2", "ros2", "lineuler", NULL};
 static const char *const patch_sides[] = {"both", "left", "right", NULL};
@@ -103,7 +107,17 @@ static const rr_rig_param params[] = {
     REAL("wheelset.axlebox_half_spacing_m", "m", 0.20, POS, axlebox_half_spacing,
          "scaled: 1.0 m / 5 (lateral position of the axle-box springs)"),
     CHOICE("wheelset.profile", wheel_profiles, 0, wheel_profile,
-           "paper sections 3 and 4.1: conical wheel in the prototype"),
+           "paper sections 3 and 4.1: conical wheel in the prototype; a real profile: "
+           "\"points\" (the caller's, rr_rig_profiles; in rollerrig \"s1002\" or a "
+           "SIMPACK, MiniProf or two-column file)"),
+    CHOICE("wheelset.profile_right", right_profiles, 0, wheel_profile_right,
+           "choice: the right wheel is the left's mirror image; \"points\" (in rollerrig: "
+           "a built-in name or a file) where it differs, as the measured pair's"),
+    REAL("wheelset.profile_scale", "-", 0.2, POS, wheel_scale,
+         "scaled: a real wheel profile (full size, referenced to its taping line: y = 0, z "
+         "= 0 there, at contact_half_spacing_m with radius wheel_radius_m) times 1/5, the "
+         "rig's length factor; not applied to the cone, which conicity and "
+         "profile_half_width_m give at the rig's size"),
     REAL("wheelset.conicity", "-", 0.05, NONNEG, conicity,
          "choice 1:20 (tan alpha; alpha = atan(conicity) is the contact angle of paper eq. "
          "1, 2 and 9): the classic conical tread for 1:20 rail inclination (the Italian RFI "
@@ -116,7 +130,20 @@ static const rr_rig_param params[] = {
          "scaled: 0.8001 m / 5 (full-scale roller of the CONTACT roller-rig case); R/r0 = 1.74"),
     CHOICE("roller.profile", roller_profiles, 0, roller_profile,
            "choice: a conical wheel on a flat cylinder is a line contact; a crown gives the "
-           "Hertz ellipse of paper section 4.2"),
+           "Hertz ellipse of paper section 4.2; a real profile: \"points\" (in rollerrig "
+           "\"uic60\" or a file)"),
+    CHOICE("roller.profile_right", right_profiles, 0, roller_profile_right,
+           "choice: the right roller is the left's mirror image; \"points\" where it "
+           "differs"),
+    REAL("roller.profile_scale", "-", 0.2, POS, roller_scale,
+         "scaled: a real roller profile (full size, referenced to its top, z = 0 there at "
+         "radius_m, and its gauge point, y = 0) times 1/5; not applied to the crowned "
+         "cylinder"),
+    REAL("roller.gauge_m", "m", 0.287, POS, gauge,
+         "scaled: standard gauge 1435 mm / 5 between the real rollers' gauge points (14 mm "
+         "below the top at full size, EN 13848-1); with a wheel's taping line at "
+         "wheelset.contact_half_spacing_m = (1360 / 2 + 70) mm / 5 the S1002 wheelset sits "
+         "on UIC60 heads as on standard track; not used by the crowned cylinder"),
     REAL("roller.crown_radius_m", "m", 0.060, POS, crown_radius,
          "scaled: UIC60 rail-head crown R300 mm / 5 (gives a/b ~ 1 with the 1:20 cone)"),
     REAL("roller.inertia_kg_m2", "kg m^2", 1.5, POS, roller_inertia,
@@ -240,6 +267,12 @@ static const rr_rig_param params[] = {
         "choice: 0.1 mm spacing; the cone on its crowned roller is smooth (linear "
         "interpolation within 1e-9 m of the direct search, tests/test_geometry.py style), "
         "and the build costs 0.1 s"),
+    REAL("integration.profile_smoothing_m", "m", 0.002, NONNEG, profile_smoothing,
+         "choice: profiles read from files are smoothed over this wavelength at full size "
+         "(rollerrig.Profile smoothing; 0: interpolated): the measured MiniProf pair read raw "
+         "has curvature jitter that makes the contact search reject shifts (B <= 0), "
+         "RigGeometry.measured_pair's 2 mm; the built-in S1002 and UIC60 are not smoothed; "
+         "read by the file readers (rollerrig), whose points the C rig takes"),
     /* [adhesion] */
     LIST0("adhesion.schedule_times_s", "s", NONNEG, schedule_t,
           "choice: no schedule, the contact section's law (scenario.mu0, contact.polach_A, "
@@ -275,11 +308,20 @@ static const rr_rig_param params[] = {
     CHOICE("adhesion.patch_rollers", patch_sides, 0, patch_rollers,
            "choice: the patch on both rollers (\"left\" or \"right\": one, which yaws the "
            "wheelset)"),
+    /* [disturbance] */
+    LIST0("disturbance.lateral_force_times_s", "s", NONNEG, lateral_t,
+          "choice: no lateral force; with points, the force of lateral_force_N linear "
+          "between them, held before the first and after the last, two points at one time a "
+          "step; taken at each sample's start"),
+    LIST0("disturbance.lateral_force_N", "N", ANY, lateral_f,
+          "choice: the lateral force on the wheelset's centre (+ to the left, +Y) at each "
+          "time of lateral_force_times_s: pushes a real profile's wheelset to flange contact "
+          "(a flange excursion; against both axle boxes' suspension.ky, 1.55 kN per mm)"),
 };
 #define NPARAMS RR_COUNTOF(params)
 /* a report holds a problem per row and per rule (rr_rig_config.c's
- * rr_rig_config_report: ten at most) */
-RR_STATIC_ASSERT(NPARAMS + 10 <= RR_RIG_MAX_PROBLEMS, a_report_holds_every_problem);
+ * rr_rig_config_report: twelve at most) */
+RR_STATIC_ASSERT(NPARAMS + 12 <= RR_RIG_MAX_PROBLEMS, a_report_holds_every_problem);
 
 static const rr_rig_section sections[] = {
     {"scenario", ""},
@@ -305,6 +347,8 @@ static const rr_rig_section sections[] = {
                  "(csrc/rig/rr_rig.h, rr_rig_adhesion): a schedule in time and a contaminated "
                  "patch on the roller circumference; under contact.friction_law = \"coulomb\" "
                  "A and B are 1 and 0 there too"},
+    {"disturbance", "a lateral force on the wheelset in time (csrc/rig/rr_rig.h, "
+                    "rr_rig_lateral): flange excursions on real profiles"},
 };
 
 static const rr_rig_retired retired[] = {
@@ -541,7 +585,7 @@ static void adhesion_from(const rr_rig_config *c, rr_friction base, rr_rig_adhes
 
 int rr_rig_params_from(const rr_rig_config *c, const rr_contact_table *t, rr_rig_params *p)
 {
-    int st;
+    int st, i;
     if (!p)
         return RR_ERR_NULL;
     memset(p, 0, sizeof *p);
@@ -575,6 +619,11 @@ int rr_rig_params_from(const rr_rig_config *c, const rr_contact_table *t, rr_rig
     creep_default(&p->contact.creep);
     p->contact.vmin = c->vmin;
     adhesion_from(c, p->contact.friction, &p->adhesion);
+    p->lateral.n = c->lateral_t.n;
+    for (i = 0; i < c->lateral_t.n; i++) {
+        p->lateral.t[i] = c->lateral_t.v[i];
+        p->lateral.f[i] = c->lateral_f.v[i];
+    }
     p->nsub = c->substeps;
     p->method = ode_values[c->ode_method];
     p->newton_iters = c->newton_iterations;
@@ -612,6 +661,21 @@ int rr_rig_geometry_from(const rr_rig_config *c, rr_rig_geometry *g)
     g->contact_half_spacing = c->contact_half_spacing;
     g->table_half_range = c->table_half_range;
     g->table_rows = c->table_rows;
+    return RR_OK;
+}
+
+int rr_rig_profiles_from(const rr_rig_config *c, rr_rig_profiles *pr)
+{
+    if (!c || !pr)
+        return RR_ERR_NULL;
+    memset(pr, 0, sizeof *pr);
+    pr->wheel.n = c->wheel_profile == 1 ? -1 : 0;
+    pr->roller.n = c->roller_profile == 1 ? -1 : 0;
+    pr->wheel_right.n = c->wheel_profile_right == 1 ? -1 : 0;
+    pr->roller_right.n = c->roller_profile_right == 1 ? -1 : 0;
+    pr->wheel_scale = c->wheel_scale;
+    pr->roller_scale = c->roller_scale;
+    pr->gauge = c->gauge;
     return RR_OK;
 }
 

@@ -31,7 +31,17 @@
  * rr_rig_params_set_table(&p, &t).
  *
  * or, to change a value first, rr_rig_config_default, rr_rig_config_set*,
- * rr_rig_params_from.  The scenario (roller speed, targets and their start
+ * rr_rig_params_from.  On real profiles (wheelset.profile, roller.profile
+ * and their _right rows set to "points"), the caller gives the points:
+ *
+ *     rr_rig_config_set_choice(&c, "wheelset.profile", "points");  (and the roller's)
+ *     rr_rig_geometry_from(&c, &g);
+ *     rr_rig_profiles_from(&c, &pr);              (scales, gauge; the slots to give)
+ *     pr.wheel = wheel_points;  pr.roller = roller_points;        (rr_tables.h)
+ *     rr_rig_table_build_profiles(&g, &pr, data, ..., work,
+ *                                 rr_rig_profiles_work_len(&pr), &t, NULL);
+ *
+ * and goes on as above (examples/rig_paper.c takes them as files).  The scenario (roller speed, targets and their start
  * times, duration, sample time) is part of rr_rig_config: rr_rig_samples
  * and rr_rig_schedule give the paper's run sample by sample.
  *
@@ -86,12 +96,14 @@ typedef struct {
     /* wheelset */
     double mass, spin_inertia, yaw_inertia, wheel_radius, contact_half_spacing,
         axlebox_half_spacing;
-    int wheel_profile;          /* index: conical */
-    double conicity, profile_half_width;
+    int wheel_profile;          /* index: conical, points */
+    int wheel_profile_right;    /* index: "" (the left's), points */
+    double wheel_scale, conicity, profile_half_width;
     /* roller */
     double roller_radius;
-    int roller_profile;         /* index: crowned cylinder */
-    double crown_radius, roller_inertia;
+    int roller_profile;         /* index: crowned cylinder, points */
+    int roller_profile_right;   /* index: "" (the left's), points */
+    double roller_scale, gauge, crown_radius, roller_inertia;
     /* suspension, per axle box; preload of both boxes */
     double kx, ky, kz, cx, cy, cz, preload;
     /* contact */
@@ -111,10 +123,13 @@ typedef struct {
     int newton_iterations, linear_first_stage, newton_model, substeps;
     double table_half_range;
     int table_rows;
+    double profile_smoothing;   /* read by the file readers (rollerrig), not by the C rig */
     /* adhesion: the schedule's lists (A, B empty: the contact's), the patch */
     rr_rig_list schedule_t, schedule_mu0, schedule_A, schedule_B;
     double patch_start, patch_length, patch_mu0, patch_A, patch_B, patch_edge;
     int patch_rollers;          /* index: both, left, right */
+    /* disturbance: a lateral force in time */
+    rr_rig_list lateral_t, lateral_f;
 } rr_rig_config;
 
 typedef struct {
@@ -329,6 +344,17 @@ int rr_rig_params_default(rr_rig_params *p);
  * rows.  Status: RR_ERR_NULL.
  */
 int rr_rig_geometry_from(const rr_rig_config *c, rr_rig_geometry *g);
+
+/*
+ * rr_rig_profiles_from - the real profiles' settings of c for
+ * rr_rig_table_build_profiles (rr_tables.h): the scales
+ * (wheelset.profile_scale, roller.profile_scale) and the gauge
+ * (roller.gauge_m); each slot n = 0 where its row names the analytic
+ * profile (or, for a _right row, ""), n = -1 where it says "points": the
+ * caller then sets the slot's points (until then rr_rig_profiles_check
+ * answers RR_ERR_NULL for it).  No checks of c.  Status: RR_ERR_NULL.
+ */
+int rr_rig_profiles_from(const rr_rig_config *c, rr_rig_profiles *pr);
 
 /* rr_rig_samples - samples of the scenario: round(duration / T), at least 1; 0 for NULL. */
 long rr_rig_samples(const rr_rig_config *c);

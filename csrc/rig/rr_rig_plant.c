@@ -32,6 +32,20 @@ static rr_friction blend(const rr_friction *a, const rr_friction *b, double f)
     return r;
 }
 
+double rr_rig_lateral_force(const rr_rig_lateral *l, double t)
+{
+    int i = 0;
+    if (!l || l->n <= 0 || l->n > RR_RIG_MAX_SCHEDULE)
+        return 0.0;
+    if (!(t >= l->t[0]))
+        return l->f[0];
+    while (i + 1 < l->n && l->t[i + 1] <= t)
+        i++;
+    if (i + 1 == l->n)
+        return l->f[i];
+    return l->f[i] + (t - l->t[i]) / (l->t[i + 1] - l->t[i]) * (l->f[i + 1] - l->f[i]);
+}
+
 rr_friction rr_rig_schedule_law(const rr_rig_params *p, double t)
 {
     const rr_rig_adhesion *a = &p->adhesion;
@@ -239,6 +253,9 @@ int rr_rig_rhs(rr_rig *rig, double t, const double *y, double *dydt)
         dydt[RR_RIG_CHI] = y[RR_RIG_SPIN];
         dydt[RR_RIG_THETA_R] = y[RR_RIG_ROLLER_SPIN];
         dydt[RR_RIG_VX] = (F[0] - 2.0 * (p->kx * y[RR_RIG_X] + p->cx * y[RR_RIG_VX])) / p->mass;
+        /* the disturbance, at the sample's start (none: the sum untouched) */
+        if (p->lateral.n > 0)
+            F[1] += rr_rig_lateral_force(&p->lateral, rig->t);
         dydt[RR_RIG_VY] = (F[1] - 2.0 * (p->ky * y[RR_RIG_Y] + p->cy * y[RR_RIG_VY])) / p->mass;
         dydt[RR_RIG_YAW_RATE] = (M[2] - 2.0 * b2 * (p->kx * y[RR_RIG_YAW]
                                                     + p->cx * y[RR_RIG_YAW_RATE])) / p->Izz;

@@ -20,6 +20,12 @@ int rr_fmu_start_config(rr_fmu_config *f)
     return rr_fmu_config_default(f);
 }
 
+/* no real profiles: the cone on its crowned roller */
+void rr_fmu_start_profiles(rr_rig_profiles *pr)
+{
+    memset(pr, 0, sizeof *pr);
+}
+
 /* the value reference of a parameter row */
 static fmi2ValueReference vr_param(const char *name)
 {

@@ -234,6 +234,7 @@ CORE_PRIVATE extern PyTypeObject RigType;
 
 CORE_PRIVATE PyObject *py_rig_schedule(PyObject *self, PyObject *args);
 CORE_PRIVATE PyObject *py_rig_speed_loops(PyObject *self, PyObject *arg);
+CORE_PRIVATE PyObject *py_rig_profile_table(PyObject *self, PyObject *args);
 /* rig_config.c */
 CORE_PRIVATE PyObject *py_rig_config_report(PyObject *self, PyObject *arg);
 

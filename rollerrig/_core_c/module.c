@@ -113,6 +113,7 @@ static PyMethodDef core_methods[] = {
     {"rig_table", py_rig_table, METH_VARARGS,
      "rig_table(r0, R0, half_width, alpha, crown, half_spacing, half_range, rows)"
      " -> (data, y0, dy, status, bad_y)"},
+    {"rig_profile_table", py_rig_profile_table, METH_VARARGS, "rig_profile_table(geometry, (wheel_scale, roller_scale, gauge), profiles) -> (data, y0, dy, status, bad_y, which, point)"},
     {"rig_speed_loops", py_rig_speed_loops, METH_O,
      "rig_speed_loops({\"section.key\": value}) -> ((stable, rho, lo, hi) of the roller's "
      "and the wheelset's sampled speed loops)"},

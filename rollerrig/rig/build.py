@@ -2,6 +2,7 @@
 method and options, the drives' sampled speed loops, Rig (the C rig stepped
 by hand) and build_rig."""
 import functools
+import os
 import math
 import numbers
 
@@ -9,6 +10,7 @@ import numpy as np
 
 from .. import _core
 from . import control as _control
+from . import real_profiles as _real_profiles
 from .._errors import RollerRigError, status_message
 from .._binding import METHODS, _as_float, check_creep_options, core, loop_method, rig_method
 from ..geometry.profiles import Profile
@@ -40,21 +42,54 @@ GEOMETRY_KEYS = ("wheelset.wheel_radius_m", "roller.radius_m", "wheelset.profile
                  "integration.table_half_range_m", "integration.table_rows")
 
 
+#: the parameters that place and scale real profiles (rollerrig.rig.real_profiles)
+PROFILE_KEYS = ("wheelset.profile", "wheelset.profile_right", "wheelset.profile_scale",
+                "roller.profile", "roller.profile_right", "roller.profile_scale",
+                "roller.gauge_m", "integration.profile_smoothing_m")
+
+
 def _geometry(P):
-    """The conical wheel on the crowned roller (the paper's first stage) and
-    its table; a geometry that yields none is the parameters' fault, and the
-    message says which ones made it."""
+    """The rig's profiles and their table: the conical wheel on the crowned
+    roller (the paper's first stage), or the real profiles the profile rows
+    name (rollerrig.rig.real_profiles); a geometry that yields none is the
+    parameters' fault, and the message says which ones made it."""
     W, R, I = P["wheelset"], P["roller"], P["integration"]
+    numbers = (float(W["wheel_radius_m"]), float(R["radius_m"]),
+               float(W["profile_half_width_m"]), math.atan(float(W["conicity"])),
+               float(R["crown_radius_m"]), float(W["contact_half_spacing_m"]),
+               float(I["table_half_range_m"]), int(I["table_rows"]))
+    real = _real_profiles.profile_points(P) is not None
+    keys = GEOMETRY_KEYS + (PROFILE_KEYS if real else ())
     try:
-        return _rig_table(float(W["wheel_radius_m"]), float(R["radius_m"]),
-                          float(W["profile_half_width_m"]), math.atan(float(W["conicity"])),
-                          float(R["crown_radius_m"]), float(W["contact_half_spacing_m"]),
-                          float(I["table_half_range_m"]), int(I["table_rows"]))
+        if not real:
+            return _rig_table(*numbers)
+        values = (W["profile"], R["profile"], W["profile_right"], R["profile_right"])
+        return _rig_profile_table(numbers, (float(W["profile_scale"]), float(R["profile_scale"]),
+                                            float(R["gauge_m"])), values,
+                                  *_real_profiles._stamps(P))
     except RollerRigError as e:
-        values = ", ".join(f"{k} = {P[k.split('.')[0]][k.split('.')[1]]!r}"
-                           for k in GEOMETRY_KEYS)
+        values = ", ".join(f"{k} = {P[k.split('.')[0]][k.split('.')[1]]!r}" for k in keys)
         raise RollerRigError(f"params: the rig's geometry ({values}) gives no contact "
                              f"table: {e}") from None
+
+
+@functools.lru_cache(maxsize=8)
+def _rig_profile_table(numbers, scales, values, smoothing, stamps):
+    """The table on real profiles (rr_rig_table_build_profiles, in C from
+    the points, as the FMU and a C program build it); its geometry the
+    RigGeometry of the same points, scaled and placed (for lookups and
+    plots: the table is the C core's)."""
+    r0, R0, hw, alpha, crown, span, reach, rows = numbers
+    if not (math.isfinite(reach) and reach > 0):
+        raise RollerRigError(f"rig_table: the table's half range must be > 0 [m], got {reach!r}")
+    if not 2 <= rows <= MAX_ROWS:
+        raise RollerRigError(f"rig_table: the table's rows must be from 2 to {MAX_ROWS}, "
+                             f"got {rows!r}")
+    points = _real_profiles._points(*values, smoothing, stamps)[0]
+    data, y0, dy = _real_profiles.rig_profile_table(numbers, scales, points, values)
+    data.setflags(write=False)
+    return ContactTable(_real_profiles.rig_geometry(numbers, scales, points), y0, dy, rows,
+                        data)
 
 
 # The table is a pure function of these numbers and read-only, so runs on the
@@ -364,3 +399,25 @@ def build_rig(params=None, *, dt=None, method=None, substeps=None, ode=None, nx=
     rig, table, *_ = _build("build_rig", P, dt=dt, method=method, substeps=substeps, ode=ode,
                             nx=nx, ny=ny, roller_speed=roller_speed, start=start, creep=creep)
     return rig, P, table
+
+
+def write_points(params, folder):
+    """The points the rig's table is built from (full size, referenced as
+    this module says), one text file per real profile of `params` (a nested
+    dict or a scenario file's path, checked): folder/wheel.txt, roller.txt,
+    wheel_right.txt, roller_right.txt, two numbers a line (y z [m], every
+    digit: %.17g), "# end natural" where the profile's spline is natural.
+    For a C program (examples/rig_paper.c).  Returns {slot: path}."""
+    P = _parameters("write_points", params)
+    points = _real_profiles.profile_points(P)
+    out = {}
+    for name, s in zip(("wheel", "roller", "wheel_right", "roller_right"),
+                       points or (None,) * 4):
+        if s is None:
+            continue
+        path = os.path.join(os.fspath(folder), f"{name}.txt")
+        with open(path, "w") as fh:
+            fh.write(f"# {name}: y z [m], full size ({'end natural' if s[2] else 'not-a-knot'})\n")
+            fh.writelines(f"{y:.17g} {z:.17g}\n" for y, z in zip(s[0], s[1]))
+        out[name] = path
+    return out

@@ -25,6 +25,7 @@ from typing import NamedTuple
 from .. import _core
 from .._errors import RollerRigError, RollerRigWarning
 from .._binding import METHODS, creep_options
+from . import real_profiles as _real_profiles
 
 try:
     import tomllib
@@ -314,14 +315,20 @@ _SAMPLE_TIME = "scenario.control_sample_time_s"
 _RUN_RULES = ("loop", "sample")
 #: a count rule's request, by the list the row must match
 _ONE_PER = {"scenario.targets": "one start time per target",
-            "adhesion.schedule_times_s": "one per time"}
+            "adhesion.schedule_times_s": "one per time",
+            "disturbance.lateral_force_times_s": "one per time"}
 
 
 def _c_values(P):
     """{"section.key": value} of the merged parameters' rig rows (not the
     creep rows): the C configuration (rr_rig_config) they make."""
-    return {p.name: P[p.name.split(".")[0]][p.name.split(".")[1]] for p in PARAMETERS
-            if not p.creep}
+    out = {p.name: P[p.name.split(".")[0]][p.name.split(".")[1]] for p in PARAMETERS
+           if not p.creep}
+    for section, keys in _real_profiles.PROFILE_ROWS.items():
+        for key in keys:
+            name = f"{section}.{key}"
+            out[name] = _real_profiles.c_value(section, key, out[name])
+    return out
 
 
 def _loop_sentence(name, values, drive, rho, lo, hi):
@@ -476,7 +483,13 @@ def _check_values(P):
     rule, then for the rules between keys: the rig rows by the C report
     (but for the rules a run judges at its dt), the creep rows by the
     registry."""
-    return _report_problems(_c_values(P), skip=_RUN_RULES) + _creep_problems(P["contact"])
+    profiles = _real_profiles.problems(P)
+    values = _c_values(P)
+    if profiles:                       # the C rows of a bad one judged at their default
+        for section, keys in _real_profiles.PROFILE_ROWS.items():
+            for key in keys:
+                values[f"{section}.{key}"] = _defaults()[section][key]
+    return profiles + _report_problems(values, skip=_RUN_RULES) + _creep_problems(P["contact"])
 
 
 def check_parameters(params=None, *, source="check_parameters: params"):
@@ -558,10 +571,13 @@ def _parameters(func, params):
         return default_parameters()
     if isinstance(params, (str, os.PathLike)):
         source = f"{func}: params {os.fspath(params)}"
+        params_path = os.fspath(params)
         try:
             params = _read_parameter_file(params)
         except _Problems as p:
             raise _error(source, p.problems) from None
+        # profile files named relative to the scenario file
+        _real_profiles.relative_to(params, os.path.dirname(os.path.abspath(params_path)))
         return check_parameters(params, source=source)
     if not isinstance(params, dict):
         raise RollerRigError(f"{func}: params must be a nested dict or the path of a TOML "

@@ -188,6 +188,11 @@ fmi3Instance fmi3InstantiateCoSimulation(
     for (k = 0; k < RR_FMI_NLOG; k++)
         in->category_on[k] = 1;
     rr_fmu_init(&in->m, &start, rr_fmi_alloc, rr_fmi_free, NULL, type_names);
+    {   /* the real profiles' points the build generated (none for the cone) */
+        rr_rig_profiles points;
+        rr_fmu_start_profiles(&points);
+        rr_fmu_set_profiles(&in->m, &points);
+    }
     log_msg(in, fmi3OK, RR_FMI_LOG_EVENTS, "fmi3InstantiateCoSimulation", "instantiated");
     return in;
 }
