@@ -118,6 +118,15 @@ def test_bad_durations(duration):
         rr.simulate(duration=duration)
 
 
+def test_a_scenario_duration_too_short_for_the_scaled_start_times_names_it():
+    # the property suite's find: the default start times scaled to 5e-324 s
+    # round to four equal zeros; they are then not scaled, and the refusal
+    # names the duration that made them so (not only target_start_s)
+    with pytest.raises(rr.RollerRigError, match=r"scenario\.target_start_s must fall inside "
+                                                r"scenario\.duration_s = 4\.94066e-324 s"):
+        rr.simulate(params={"scenario": {"duration_s": 5e-324}})
+
+
 def test_numpy_scalars_are_numbers():
     res = rr.simulate(duration=np.float64(0.4), dt=np.float32(0.004), targets=[0.02],
                       roller_speed=np.int64(5))

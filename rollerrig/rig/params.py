@@ -527,17 +527,25 @@ def _parameter_problems(params):
     return P, problems + _check_values(P)
 
 
-def _starts_not_given(params, P):
-    """True where params set scenario.duration_s (valid) but not
-    scenario.target_start_s, and the default start times do not all fall
-    inside that duration."""
+def _default_starts_scaled(params, P):
+    """The default start times scaled to scenario.duration_s where params
+    set that duration (valid) but not scenario.target_start_s, and the
+    defaults do not all fall inside it; else None.  Also None where the
+    scaled times would no longer increase (a duration so short that they
+    round to equal times): the defaults are then kept, and the check that
+    start times fall inside the duration names scenario.duration_s."""
     S = params.get("scenario") if isinstance(params, dict) else None
     if not (isinstance(S, dict) and "duration_s" in S and "target_start_s" not in S):
-        return False
+        return None
     duration = P["scenario"]["duration_s"]
     if not _in_range("scenario.duration_s", duration):
-        return False
-    return _defaults()["scenario"]["target_start_s"][-1] >= duration
+        return None
+    D = _defaults()["scenario"]
+    if D["target_start_s"][-1] < duration:
+        return None
+    scale = duration / D["duration_s"]
+    scaled = [x * scale for x in D["target_start_s"]]
+    return scaled if all(b > a for a, b in zip(scaled, scaled[1:])) else None
 
 
 def _scale_starts(params, P):
@@ -547,15 +555,14 @@ def _scale_starts(params, P):
     are scaled to the duration, as simulate(duration=...) scales the
     scenario's (_target_schedule); start times given with a duration they do
     not fit are refused (_check_values)."""
-    if _starts_not_given(params, P):
-        D = _defaults()["scenario"]
-        scale = P["scenario"]["duration_s"] / D["duration_s"]
-        P["scenario"]["target_start_s"] = [x * scale for x in D["target_start_s"]]
+    scaled = _default_starts_scaled(params, P)
+    if scaled is not None:
+        P["scenario"]["target_start_s"] = scaled
 
 
 def _scaled_starts(params, P):
     """The warning's text where _scale_starts scaled the start times, else ""."""
-    if not _starts_not_given(params, P):
+    if _default_starts_scaled(params, P) is None:
         return ""
     D = _defaults()["scenario"]
     return (f"the default target start times {D['target_start_s']} s (for the default "
