@@ -63,9 +63,10 @@ class NonHertzSide:
     def check(self):
         st, bad = _core.nonhertz_check(self.rows, self.head)
         if st < 0:
-            where = "the header" if bad < 0 else f"row {bad} (y = {self.rows[bad, 0]!r} m)"
-            raise RollerRigError(f"NonHertzTable: {where} is not a valid table row: "
-                                 f"{status_message(st)}")
+            where = ("the header" if bad < 0
+                     else f"row {bad} (y = {float(self.rows[bad, 0])!r} m)")
+            raise RollerRigError(f"NonHertzTable: {where} is not a valid table row (a value "
+                                 f"not finite or out of its range, rr_nonhertz.h)")
         return self
 
 
