@@ -162,16 +162,20 @@ def test_an_elliptic_gap_gives_hertz(creep):
 # --------------------------------------------------------------- continuity
 
 @pytest.mark.slow
-def test_force_is_continuous_through_a_two_point_zone():
-    # MiniProf's left wheel: the rigid contact point jumps at +3.93 mm; rows
-    # 0.2 mm apart, 0.05 mm near the jump (nonhertz_table's refinement); the
-    # exact solution's own largest step there is 0.0012 mu N per 0.01 mm
-    # (NONHERTZ_STUDY.md)
-    g, ct = geometry("miniprof"), ctable("miniprof")
-    tab = rr.nonhertz_table(g, 3.5e-3, 4.3e-3, Fz=61163.0, sides=("left",))
+@pytest.mark.parametrize("pair, jump", [("miniprof", 3.93e-3), ("s1002_uic60", 0.20e-3)])
+def test_force_is_continuous_through_a_two_point_zone(pair, jump):
+    # the left wheel's rigid contact point jumps at MiniProf's +3.93 mm and
+    # S1002's +0.20 mm; rows 0.2 mm apart, 0.05 mm near the jump
+    # (nonhertz_table's refinement); the exact solution's own largest steps
+    # per 0.01 mm there are 0.0012 and 0.004 mu N (NONHERTZ_STUDY.md), so
+    # 0.01 mu N between neighbours is the issue's criterion where the
+    # reference is continuous (S1002's +4.84 and +6.25 mm are not: the
+    # exact solution itself moves faster there or jumps)
+    g, ct = geometry(pair), ctable(pair)
+    tab = rr.nonhertz_table(g, jump - 4e-4, jump + 4e-4, Fz=61163.0, sides=("left",))
     tab = rr.NonHertzTable(tab.left, tab.left, tab.Fz)
     assert np.any(np.isclose(np.diff(tab.left.y), 5e-5))        # refined near the jump
-    ys = np.arange(3.6e-3, 4.2e-3 + 1e-9, 1e-5)
+    ys = np.arange(jump - 3e-4, jump + 3e-4 + 1e-9, 1e-5)
     kw = dict(spin=12.43673961, roller_spin=5.587302, mu=0.52, Fz_left=61163.0,
               Fz_right=61163.0)
     F = np.array([rr.rig_contact(ct, y=y, patch="nonhertz", nonhertz=tab, **kw).left.force
@@ -180,8 +184,9 @@ def test_force_is_continuous_through_a_two_point_zone():
     muN = 0.52 * 61163.0
     step = np.linalg.norm(np.diff(F, axis=0), axis=1) / muN
     assert step.max() <= 0.01, (step.max(), ys[np.argmax(step)])
-    # today's single ellipse jumps there
-    assert (np.linalg.norm(np.diff(H, axis=0), axis=1) / muN).max() > 0.05
+    # today's single ellipse fails the same criterion there (measured on
+    # MiniProf 0.016 mu N)
+    assert (np.linalg.norm(np.diff(H, axis=0), axis=1) / muN).max() > 0.01
 
 
 # ------------------------------------------------------------ the table
