@@ -3,6 +3,9 @@
     python benchmarks/bench_nonhertz.py build [--pair miniprof|s1002] [--dy 2e-4]
         the full sweep's table, -8 to +8 mm, both sides: rows, wall time
         (2 threads), saved to benchmarks/out/nonhertz/table_<pair>.npz
+    python benchmarks/bench_nonhertz.py sweep [--pair miniprof]
+        accuracy on the saved table against rig_exact (n = 80), both sides,
+        -7.9 to +7.9 mm every 0.5 mm (half-way between rows), four creepages
     python benchmarks/bench_nonhertz.py speed [--pair miniprof] [--states 2000]
         per wheel in C: rr_nonhertz_wheel against Hertz + FASTSIM 20 x 20 on the
         same random states (bench_nonhertz_speed.c), on the saved table
@@ -89,15 +92,59 @@ def speed(pair, n_states, repeats=9, seed=1):
     print(json.dumps(r))
 
 
+def sweep(pair, y_lo=-7.9e-3, y_hi=7.9e-3, step=5e-4, n_ref=80):
+    """Both sides from y_lo to y_hi every step (offset 0.1 mm from the 0.2 mm
+    rows: half-way between two), creepage targets cx 0.0005, 0.002, 0.006 at
+    the rigid contact point and one with lateral slip (vy 0.01 m/s), Fz
+    61.163 kN, mu 0.52: |dF| / (mu N) of nonhertz and of Hertz (FASTSIM 20 x
+    20) against rig_exact (n = n_ref)."""
+    g = geometry(pair)
+    tab = rr.NonHertzTable.load(OUT / f"table_{pair}.npz")
+    ct = rr.contact_table(g, -0.0085, 0.0085, 341)
+    rs, Fz, mu = 5.587302, 61163.0, 0.52
+    out = []
+    for y in np.arange(y_lo, y_hi + 1e-9, step):
+        w = rr.wheelset_contact(g, y)
+        for side in ("left", "right"):
+            p = getattr(w, side)
+            for target, vy in ((5e-4, 0.0), (2e-3, 0.0), (6e-3, 0.0), (1e-3, 0.01)):
+                spin = rs * float(p.R[0]) / float(p.r[0]) * (1 - target)
+                kw = dict(y=y, vy=vy, spin=spin, roller_spin=rs, mu=mu, Fz_left=Fz,
+                          Fz_right=Fz)
+                try:
+                    ref = rr.rig_exact(g, y, side=side, Fz=Fz, mu=mu, spin=spin,
+                                       roller_spin=rs, vy=vy, table=ct, n=n_ref)
+                except rr.RollerRigError as e:
+                    print(f"# reference failed at y = {y:.4f} {side}: {e}", file=sys.stderr)
+                    continue
+                nh = getattr(rr.rig_contact(ct, patch="nonhertz", nonhertz=tab, **kw), side)
+                hz = getattr(rr.rig_contact(ct, **kw), side)
+                muN = mu * ref.N
+                out.append((y, side == "left", np.linalg.norm(nh.force - ref.force) / muN,
+                            np.linalg.norm(hz.force - ref.force) / muN))
+    a = np.array(out)
+    np.save(OUT / f"sweep_{pair}.npy", a)
+    res = dict(pair=pair, cases=len(a))
+    for name, col in (("nonhertz", 2), ("hertz_fastsim", 3)):
+        res[name] = (round(float(np.percentile(a[:, col], 95)), 4),
+                     round(float(a[:, col].max()), 4))
+    worst = a[np.argmax(a[:, 2])]
+    res["worst_nonhertz_at_y_mm"] = round(float(worst[0]) * 1e3, 2)
+    res["worst_side"] = "left" if worst[1] else "right"
+    print(json.dumps(res))
+
+
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("what", choices=("build", "speed"))
+    ap.add_argument("what", choices=("build", "speed", "sweep"))
     ap.add_argument("--pair", default="miniprof", choices=("miniprof", "s1002"))
     ap.add_argument("--dy", type=float, default=2e-4)
     ap.add_argument("--states", type=int, default=2000)
     a = ap.parse_args()
     if a.what == "build":
         build(a.pair, a.dy)
+    elif a.what == "sweep":
+        sweep(a.pair)
     else:
         speed(a.pair, a.states)
 

@@ -373,7 +373,7 @@ static int eval_row(const rr_nh_table *tb, const double *row, const rr_motion *w
 {
     const int np = (int)row[1];
     const double *p0 = row + RR_NH_PATCH(0);
-    double Tz = 0.0, dz, t, a0, a1, vert, total;
+    double Tz = 0.0, T0 = 0.0, r0 = 0.0, r, step, dz, t, a0, a1, vert, total;
     int j, k, st, pass;
     /* a start: the shallowest-gap patch's nodes, N cos(delta) = Fz */
     for (j = 1; j < np; j++)
@@ -411,11 +411,21 @@ static int eval_row(const rr_nh_table *tb, const double *row, const rr_motion *w
         }
         /* the creep forces' vertical share: the total's less the normal loads' */
         Tn = total - vertical_normal(row, dz);
-        if (fabs(Tn - Tz) < TZ_TOL * s->Fz) {
+        r = Tn - Tz;
+        if (fabs(r) < TZ_TOL * s->Fz) {
             *dz_out = dz;
             return RR_OK;
         }
-        Tz = Tn;
+        /* a secant on the fixed point's residual (at the flange the share
+         * is a large part of Fz and the plain iteration slow), kept below Fz */
+        step = Tn;
+        if (pass > 0 && r != r0)
+            step = Tz - r * (Tz - T0) / (r - r0);
+        if (!(step < s->Fz) || !isfinite(step))
+            step = 0.5 * (Tz + (Tn < s->Fz ? Tn : Tz));
+        T0 = Tz;
+        r0 = r;
+        Tz = step;
     }
     return RR_ERR_RANGE;
 }
