@@ -78,6 +78,7 @@ typedef struct {
                                            start), the fine grids' solver, rr_gap_build's */
     size_t wex_len, coarse_len, fine_len, gap_len;
     double *h, *pn, *hf, *hc, *hcf;     /* side^2, side^2, 4 side^2, side^2, 4 side^2 */
+    signed char *state;                 /* side^2 bytes */
     size_t cells;
 } bufs;
 
@@ -92,7 +93,7 @@ static size_t lens(const rr_nh_row_problem *pb, int side, size_t part[4])
     part[0] = rr_wheel_exact_workspace_len(&we, side, side);
     part[1] = rr_exact_workspace_len(2 * side, 2 * side);
     part[2] = rr_gap_workspace_len(&o);
-    part[3] = (size_t)side * (size_t)side * 11;
+    part[3] = (size_t)side * (size_t)side * 12;
     if (!part[0] || !part[1] || !part[2])
         return 0;
     return part[0] + part[1] + part[2] + part[3];
@@ -110,7 +111,21 @@ typedef struct {
     bufs b;
     rr_nh_row_info *info;
     double G;
+    rr_wheel_exact_result scratch;      /* the largest load's solution */
 } call;
+
+/* 1 where the contact (state >= 0) reaches the grid's border. */
+static int at_edge(const signed char *state, int mx, int my)
+{
+    int i;
+    for (i = 0; i < mx; i++)
+        if (state[i] >= 0 || state[(size_t)(my - 1) * mx + i] >= 0)
+            return 1;
+    for (i = 0; i < my; i++)
+        if (state[(size_t)i * mx] >= 0 || state[(size_t)i * mx + mx - 1] >= 0)
+            return 1;
+    return 0;
+}
 
 /* A grid of elements dx (n across when dx = 0) on the node's plane and pose
  * (patch p of result r) into h (hlen doubles). */
@@ -243,39 +258,143 @@ static int calibrated(const call *c, const node_data *d, double *a, double *b, d
     return RR_OK;
 }
 
-/* One node: rr_wheel_exact at Fz, then the coefficients on its grid. */
-static int solve_node(call *c, int k, double Fz, double *p, node_data *d, int *warn)
+/* The lowering of the largest load: rr_wheel_exact at Fz_max (the nodes'
+ * scale; zero creepage). */
+static int largest_lowering(call *c, double *e_max)
+{
+    const rr_nh_row_problem *pb = c->pb;
+    rr_wheel_exact_problem we;
+    rr_wheel_exact_result *r = &c->scratch;
+    int st;
+    node_problem(pb, pb->Fz_max, &we);
+    st = rr_wheel_exact(&we, c->b.wex, c->b.wex_len, c->b.h, c->b.cells, NULL, 0, r);
+    c->info->solves += r->passes;
+    if (st < 0) {
+        c->info->why = RR_NH_ROW_NODE;
+        c->info->wheel_why = r->why;
+        if (r->why == RR_WHEEL_EXACT_GAP)
+            c->info->gap_why = r->patch.why;
+        if (st == RR_ERR_WORKSPACE)
+            c->info->need = (size_t)(r->patch.grid.mx > r->patch.grid.my ? r->patch.grid.mx
+                                                                         : r->patch.grid.my);
+        return st;
+    }
+    c->info->excluded = r->patch.nexcluded;
+    *e_max = r->lowered;
+    return RR_OK;
+}
+
+/* The patch at lowering e (CONTACT's weighted plane at its own approach,
+ * cover cov) and the load whose approach is the pose's interpenetration
+ * (the exact normal solution at that pose): d->r's patch, sol, N. */
+static int normal_at(call *c, double e, double N, double cov, node_data *d, int *edge, int *warn)
 {
     const rr_nh_row_problem *pb = c->pb;
     const bufs *b = &c->b;
-    rr_wheel_exact_problem we;
+    rr_wheel_exact_result *r = &d->r;
+    rr_gap_site site;
+    rr_gap_opts o;
+    rr_exact_problem ep;
     rr_exact_field field;
-    rr_gap_patch gf;
-    const rr_gap_patch *g = &d->r.patch;
-    double sw = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, syy = 0.0, vx, vy, Nt;
-    double cr[3][3] = {{EPS_C, 0.0, 0.0}, {0.0, EPS_C, 0.0}, {0.0, 0.0, EPS_PHI}}, F[3][3];
-    int i, j, st;
-    node_problem(pb, Fz, &we);
+    double a = e * cos(pb->point.delta);
+    int it, st;
+    memset(r, 0, sizeof *r);
+    site.pair = pb->pair;
+    site.y_ws = pb->y_ws;
+    site.z = pb->pose0.z - e;
+    site.roll = pb->pose0.roll;
+    site.s_roller = pb->point.s_roller;
+    site.s_wheel = pb->point.s_wheel;
+    site.delta = pb->point.delta;
+    rr_gap_opts_default(&o);
+    o.n = pb->n;
+    o.cover = cov;
+    o.combine = pb->combine;
+    /* the plane at the pose's own interpenetration */
+    for (it = 0; it < 4; it++) {
+        o.approach = a;
+        st = rr_gap_build(&site, &o, b->gap, b->gap_len, b->h, b->cells, &r->patch);
+        if (st < 0) {
+            c->info->why = RR_NH_ROW_GRID;
+            c->info->gap_why = r->patch.why;
+            if (st == RR_ERR_WORKSPACE)
+                c->info->need = (size_t)(r->patch.grid.mx > r->patch.grid.my ? r->patch.grid.mx
+                                                                             : r->patch.grid.my);
+            return st;
+        }
+        if (!(r->patch.pen > 0.0)) {
+            c->info->why = RR_NH_ROW_GRID;
+            return RR_ERR_GEOMETRY;
+        }
+        if (fabs(r->patch.pen / a - 1.0) < 1e-3)
+            break;
+        a = r->patch.pen;
+    }
+    /* the load: N ~ approach^1.5, iterated until the approach is pen */
+    memset(&ep, 0, sizeof ep);
+    ep.grid = r->patch.grid;
+    ep.h = b->h;
+    ep.G = c->G;
+    ep.nu = pb->nu;
+    ep.mu = pb->mu;
+    ep.spin_shift = 1.0 / 6.0;
+    ep.tol = pb->tol;
+    ep.maxit = pb->maxit;
+    ep.interrupt = pb->interrupt;
     memset(&field, 0, sizeof field);
     field.pn = b->pn;
-    st = rr_wheel_exact(&we, b->wex, b->wex_len, b->h, b->cells, &field, b->cells, &d->r);
-    c->info->solves += d->r.passes;
-    if (st < 0) {
-        c->info->why = RR_NH_ROW_NODE;
-        c->info->wheel_why = d->r.why;
-        if (d->r.why == RR_WHEEL_EXACT_GAP)
-            c->info->gap_why = d->r.patch.why;
-        if (st == RR_ERR_WORKSPACE)
-            c->info->need = (size_t)(g->grid.mx > g->grid.my ? g->grid.mx : g->grid.my);
-        return st;
+    field.state = b->state;
+    for (it = 0; it < 40; it++) {
+        ep.N = N;
+        c->info->solves++;
+        st = rr_exact_solve(&ep, b->wex, b->coarse_len, &r->sol, &field);
+        if (st < 0) {
+            c->info->why = RR_NH_ROW_SOLVE;
+            return st;
+        }
+        *warn = worse(*warn, st);
+        if (fabs(r->sol.delta / r->patch.pen - 1.0) < 1e-7)
+            break;
+        N *= pow(r->patch.pen / r->sol.delta, 1.5);
     }
-    *warn = worse(*warn, st);
-    if (k == RR_NH_NODES - 1)
-        c->info->excluded = g->nexcluded;
+    if (it == 40) {
+        c->info->why = RR_NH_ROW_SOLVE;
+        return RR_ERR_RANGE;
+    }
+    *edge = at_edge(b->state, r->patch.grid.mx, r->patch.grid.my);
+    r->N = N;
+    r->z = site.z;
+    r->roll = site.roll;
+    r->lowered = e;
+    r->approach = a;
+    r->cover = cov;
+    return RR_OK;
+}
+
+/* One node at lowering e: its normal solution, then the coefficients on
+ * its grid (and a finer one). */
+static int solve_node(call *c, int k, double e, double Nguess, double *p, node_data *d,
+                      int *warn)
+{
+    const rr_nh_row_problem *pb = c->pb;
+    const bufs *b = &c->b;
+    rr_gap_patch gf;
+    const rr_gap_patch *g = &d->r.patch;
+    double sw = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, syy = 0.0, vx, vy, Nt, cov = 1.3;
+    double cr[3][3] = {{EPS_C, 0.0, 0.0}, {0.0, EPS_C, 0.0}, {0.0, 0.0, EPS_PHI}}, F[3][3];
+    int i, j, st, edge = 1, grow;
+    for (grow = 0; grow < 4 && edge; grow++, cov *= 1.4)
+        if ((st = normal_at(c, e, Nguess, cov, d, &edge, warn)) < 0)
+            return st;
+    if (edge) {
+        c->info->why = RR_NH_ROW_NODE;
+        c->info->wheel_why = RR_WHEEL_EXACT_EDGE;
+        return RR_ERR_RANGE;
+    }
+    (void)k;
     d->N = d->r.N;
-    /* the lowering whose interpenetration is the approach found */
-    d->pen = d->r.sol.delta;
-    d->e = d->r.lowered + (d->r.sol.delta - g->pen) / cos(g->delta);
+    d->e = e;
+    d->pen = g->pen;
     for (j = 0; j < g->grid.my; j++)
         for (i = 0; i < g->grid.mx; i++) {
             const double w = b->pn[(size_t)j * g->grid.mx + i];
@@ -407,6 +526,7 @@ int rr_nonhertz_row(const rr_nh_row_problem *pb, double *work, size_t work_len, 
     size_t part[4], total;
     double *p;
     int k, st, warn = RR_OK, ci;
+    double e_max;
     node_data d;
 
     if (!info)
@@ -454,6 +574,7 @@ int rr_nonhertz_row(const rr_nh_row_problem *pb, double *work, size_t work_len, 
     c.b.hf = c.b.pn + c.b.cells;
     c.b.hc = c.b.hf + 4 * c.b.cells;
     c.b.hcf = c.b.hc + c.b.cells;
+    c.b.state = (signed char *)(c.b.hcf + 4 * c.b.cells);
 
     row[0] = pb->y_ws;
     row[1] = 1.0;
@@ -463,10 +584,17 @@ int rr_nonhertz_row(const rr_nh_row_problem *pb, double *work, size_t work_len, 
     p[0] = 0.0;            /* the patch of the rigid contact point: no gap */
     for (k = RR_NH_PATCH(1); k < RR_NH_ROW_LEN; k++)
         row[k] = 0.0;      /* the second patch's place: unused */
+    info->node = RR_NH_NODES - 1;
+    if ((st = largest_lowering(&c, &e_max)) < 0) {
+        for (k = 0; k < RR_NH_ROW_LEN; k++)
+            row[k] = NAN;
+        return st;
+    }
     ci = 0;
     for (k = 0; k < RR_NH_NODES; k++) {
         info->node = k;
-        st = solve_node(&c, k, pb->Fz_max * pow(node_f[k], 1.5), p, &d, &warn);
+        st = solve_node(&c, k, node_f[k] * e_max,
+                        pb->Fz_max * pow(node_f[k], 1.5) / cos(pb->point.delta), p, &d, &warn);
         if (st >= 0 && ci < RR_NH_CORR && k == corr_node[ci]) {
             st = correct_node(&c, &d, p + RR_NH_CORR_AT(ci), &warn);
             ci++;
@@ -475,12 +603,6 @@ int rr_nonhertz_row(const rr_nh_row_problem *pb, double *work, size_t work_len, 
             for (k = 0; k < RR_NH_ROW_LEN; k++)
                 row[k] = NAN;
             return st;
-        }
-        if (k > 0 && !(p[RR_NH_NODE(RR_NH_E, k)] > p[RR_NH_NODE(RR_NH_E, k - 1)])) {
-            info->why = RR_NH_ROW_NODE;
-            for (k = 0; k < RR_NH_ROW_LEN; k++)
-                row[k] = NAN;
-            return RR_ERR_RANGE;
         }
     }
     info->node = -1;

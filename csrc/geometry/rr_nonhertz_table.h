@@ -1,17 +1,19 @@
 /*
  * rr_nonhertz_table.h - one row of the non-Hertzian contact's table
  * (rr_nonhertz.h's layout) built by the exact theory: the wheel at lateral
- * shift y_ws solved by rr_wheel_exact at RR_NH_NODES vertical loads
- * Fz_max f_k^1.5, f = (0.03, 0.1, 0.2, 0.33, 0.46, 0.6, 0.75, 0.88, 1)
- * (the lowerings about f_k of the largest; zero creepage), each node's
- * plane CONTACT's weighted one at its own approach (rr_wheel_exact's
- * rebuild at the load found); per node the pressure's centroid and
- * moments, area and peak, and the exact linear creep coefficients about
- * the centroid (three tiny creepages, Richardson from elements half as
- * large where asked); at nodes RR_NH_CORR_NODE0, 1 the exact forces
- * (Richardson, n_corr elements across) less the calibrated ellipse's at
- * RR_NH_U x RR_NH_TH normalised creepages and at zero, all at the row's
- * free-rolling spin (the wheelset's motion given).
+ * shift y_ws lowered from its zero-gap pose by RR_NH_NODES lowerings e_k =
+ * f_k e_max, f = (0.03, 0.1, 0.2, 0.33, 0.46, 0.6, 0.75, 0.88, 1), e_max
+ * the lowering rr_wheel_exact finds for the vertical load Fz_max; at each
+ * the patch on CONTACT's weighted plane at the pose's own interpenetration
+ * and the exact normal solution whose approach is that interpenetration
+ * (the load the pose carries: N(e) by definition, monotone where one plane
+ * holds the patch, NONHERTZ_STUDY.md's construction); per node the
+ * pressure's centroid and moments, area and peak, and the exact linear
+ * creep coefficients about the centroid (three tiny creepages, Richardson
+ * from elements half as large where asked); at nodes RR_NH_CORR_NODE0, 1
+ * the exact forces (Richardson, n_corr elements across) less the
+ * calibrated ellipse's at RR_NH_U x RR_NH_TH normalised creepages and at
+ * zero, all at the row's free-rolling spin (the wheelset's motion given).
  *
  * One patch per row: rr_gap's, every region within `combine` (CONTACT's
  * D_COMB, 4 mm) of the deepest in it; regions farther out are not
@@ -57,8 +59,9 @@ void rr_nonhertz_row_default(rr_nh_row_problem *pb);
 /* Where a build failed (rr_nh_row_info.why). */
 enum rr_nh_row_why {
     RR_NH_ROW_OK = 0,
-    RR_NH_ROW_NODE = 1,      /* a node's rr_wheel_exact (wheel_why says why) */
-    RR_NH_ROW_GRID = 2,      /* a fine or correction grid's rr_gap_build (gap_why) */
+    RR_NH_ROW_NODE = 1,      /* the largest load's rr_wheel_exact (wheel_why says why), or
+                                a node's contact keeps reaching its grid's edge */
+    RR_NH_ROW_GRID = 2,      /* a node's, a fine or a correction grid's rr_gap_build (gap_why) */
     RR_NH_ROW_SOLVE = 3,     /* a solve of the coefficients or the correction */
     RR_NH_ROW_COEFF = 4      /* a linear coefficient not positive: the patch too coarse */
 };
