@@ -106,31 +106,55 @@ int rr_nonhertz_locate(const rr_nh_table *t, double y, int *row, double *w)
 
 /* --------------------------------------------------------- creepages */
 
-int rr_nonhertz_creepages(const rr_motion *ws, double roller_spin, double R0, double sigma,
-                          double PY, double PZ, double delta, double pen, double dz,
-                          double vmin, double k[4])
+void rr_nonhertz_frame(double PY, double PZ, double delta, double theta, double sigma,
+                       double R0, rr_nh_frame *f)
 {
-    const double sd = sin(delta), cd = cos(delta);
-    const double n[3] = {0.0, -sigma * sd, cd}, t2[3] = {0.0, cd, sigma * sd};
-    double q[3], vw[3], vr[3], slip[3];
+    const double sd = sin(delta), cd = cos(delta), st = sin(theta), ct = cos(theta);
+    f->P[0] = (PZ + R0) * st;
+    f->P[1] = PY;
+    f->P[2] = theta == 0.0 ? PZ : (PZ + R0) * ct - R0;
+    f->t1[0] = ct, f->t1[1] = 0.0, f->t1[2] = -st;
+    f->n[0] = cd * st, f->n[1] = -sigma * sd, f->n[2] = cd * ct;
+    f->t2[0] = sigma * sd * st, f->t2[1] = cd, f->t2[2] = sigma * sd * ct;
+}
+
+static double dot3(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void cross3(const double *a, const double *b, double *out)
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+int rr_nonhertz_creepages(const rr_motion *ws, double roller_spin, double R0,
+                          const rr_nh_frame *f, double pen, double dz, double vmin, double k[4])
+{
+    const double wr[3] = {0.0, -roller_spin, 0.0};
+    double q[3], vw[3], vr[3], sum[3], slip[3], dw[3];
     int m;
-    /* the wheel's point P - pen n from the centre lowered by dz */
-    q[0] = -pen * n[0] - ws->c[0];
-    q[1] = PY - pen * n[1] - ws->c[1];
-    q[2] = PZ - pen * n[2] - (ws->c[2] - dz);
-    vw[0] = ws->v[0] + ws->w[1] * q[2] - ws->w[2] * q[1];
-    vw[1] = ws->v[1] + ws->w[2] * q[0] - ws->w[0] * q[2];
-    vw[2] = ws->v[2] + ws->w[0] * q[1] - ws->w[1] * q[0];
-    /* the roller's point P: (0, -roller_spin, 0) x (P - (0, 0, -R0)) */
-    vr[0] = -roller_spin * (PZ + R0);
-    vr[1] = 0.0;
-    vr[2] = 0.0;
+    /* the wheel's point P - pen n from the centre lowered by dz; the
+     * roller's point P from its axis (0, ., -R0) */
     for (m = 0; m < 3; m++)
+        q[m] = f->P[m] - pen * f->n[m] - (m == 2 ? ws->c[2] - dz : ws->c[m]);
+    cross3(ws->w, q, vw);
+    q[0] = f->P[0];
+    q[1] = f->P[1];
+    q[2] = f->P[2] + R0;
+    cross3(wr, q, vr);
+    for (m = 0; m < 3; m++) {
+        vw[m] += ws->v[m];
+        sum[m] = vw[m] + vr[m];
         slip[m] = vw[m] - vr[m];
-    k[3] = fmax(fabs(vw[0] + vr[0]) / 2.0, vmin);
-    k[0] = slip[0] / k[3];
-    k[1] = (slip[1] * t2[1] + slip[2] * t2[2]) / k[3];
-    k[2] = ((ws->w[1] + roller_spin) * n[1] + ws->w[2] * n[2]) / k[3];
+        dw[m] = ws->w[m] - wr[m];
+    }
+    k[3] = fmax(fabs(dot3(sum, f->t1)) / 2.0, vmin);
+    k[0] = dot3(slip, f->t1) / k[3];
+    k[1] = dot3(slip, f->t2) / k[3];
+    k[2] = dot3(dw, f->n) / k[3];
     return rr_all_finite(k, 4) ? RR_OK : RR_ERR_RANGE;
 }
 
@@ -245,8 +269,9 @@ static int patch_forces(const rr_nh_table *tb, const double *p, double dz, const
                         const rr_nh_state *s, rr_nh_patch *out, double *vert, int *calls)
 {
     const double e = dz - p[0], sig = tb->sigma;
-    double t, d, sd, cd, PY, PZ, xc, yc, ab, K11, K22, K23, N, n[3], t2[3], k[4];
+    double t, d, PY, PZ, xc, yc, ab, K11, K22, K23, N, k[4], theta = 0.0;
     double cxc, cyc, c2, cc, sy, sp, muN, corr[3];
+    rr_nh_frame fr;
     rr_kalker_coeffs kc;
     rr_contact_problem cp;
     rr_forces f;
@@ -258,8 +283,6 @@ static int patch_forces(const rr_nh_table *tb, const double *p, double dz, const
     kn = locate_node(p + RR_NH_NODE(RR_NH_E, 0), RR_NH_NODES, e, &t);
     N = e * sqrt(e) * node(p, RR_NH_Q, kn, t);
     d = node(p, RR_NH_DELTA, kn, t);
-    sd = sin(d);
-    cd = cos(d);
     PY = node(p, RR_NH_PY, kn, t);
     PZ = node(p, RR_NH_PZ, kn, t);
     xc = node(p, RR_NH_XC, kn, t);
@@ -269,10 +292,17 @@ static int patch_forces(const rr_nh_table *tb, const double *p, double dz, const
     K11 = node(p, RR_NH_K11, kn, t);
     K22 = node(p, RR_NH_K22, kn, t);
     K23 = node(p, RR_NH_K23, kn, t);
-    t2[0] = 0.0, t2[1] = cd, t2[2] = sig * sd;
-    n[0] = 0.0, n[1] = -sig * sd, n[2] = cd;
-    if ((st = rr_nonhertz_creepages(ws, s->roller_spin, tb->R0, sig, PY, PZ, d, e * cd, dz,
-                                    s->vmin, k)) < 0)
+    if (s->x != 0.0 || s->yaw != 0.0) {
+        /* the rig's law: the wheel's centre at x_j = x - a sin(yaw), the
+         * contact point led round it by sigma r tan(delta) yaw; the angle
+         * round the roller axis from both (r, R the patch's radii) */
+        const double r = ws->c[2] - dz - PZ, R = PZ + tb->R0;
+        const double xj = s->x - (PY - ws->c[1]) * sin(s->yaw);
+        theta = asin(xj / (r + R)) + sig * r * tan(d) * s->yaw / (r + R);
+    }
+    rr_nonhertz_frame(PY, PZ, d, theta, sig, tb->R0, &fr);
+    if ((st = rr_nonhertz_creepages(ws, s->roller_spin, tb->R0, &fr, e * cos(d), dz, s->vmin,
+                                    k)) < 0)
         return st;
     /* the creepages at the centroid; the calibrated ellipse there */
     cxc = k[0] - k[2] * yc;
@@ -309,10 +339,11 @@ static int patch_forces(const rr_nh_table *tb, const double *p, double dz, const
     out->cy = cyc;
     out->cphi = k[2];
     for (m = 0; m < 3; m++) {
-        const double t1m = m == 0 ? 1.0 : 0.0;
-        const double P = m == 0 ? 0.0 : m == 1 ? PY : PZ;
-        out->force[m] = out->fx * t1m + out->fy * t2[m] + N * n[m];
-        out->point[m] = P + xc * t1m + yc * t2[m];
+        out->force[m] = out->fx * fr.t1[m] + out->fy * fr.t2[m] + N * fr.n[m];
+        out->point[m] = fr.P[m] + xc * fr.t1[m] + yc * fr.t2[m];
+        out->t1[m] = fr.t1[m];
+        out->t2[m] = fr.t2[m];
+        out->n[m] = fr.n[m];
     }
     out->area = node(p, RR_NH_AREA, kn, t) * cbrt(N * N);
     out->pmax = node(p, RR_NH_PMAX, kn, t) * cbrt(N);
@@ -458,7 +489,18 @@ static void add_patch(rr_nh_patch *a, const rr_nh_patch *b, double w)
     for (m = 0; m < 3; m++) {
         a->force[m] += w * b->force[m];
         a->point[m] += w * b->point[m];
+        a->t1[m] += w * b->t1[m];
+        a->t2[m] += w * b->t2[m];
+        a->n[m] += w * b->n[m];
     }
+}
+
+static void normalise(double *v)
+{
+    const double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    v[0] /= l;
+    v[1] /= l;
+    v[2] /= l;
 }
 
 int rr_nonhertz_wheel(const rr_nh_table *t, const rr_nh_state *s, rr_nh_result *out)
@@ -473,7 +515,7 @@ int rr_nonhertz_wheel(const rr_nh_table *t, const rr_nh_state *s, rr_nh_result *
     if (!t || !t->rows || !s)
         return RR_ERR_NULL;
     {
-        const double v[] = {s->y, s->Fz, s->mu, s->roller_spin, s->vmin};
+        const double v[] = {s->y, s->Fz, s->mu, s->roller_spin, s->vmin, s->x, s->yaw};
         for (i = 0; i < 2; i++)
             if (!rr_all_finite(s->motion[i].c, 3) || !rr_all_finite(s->motion[i].v, 3)
                 || !rr_all_finite(s->motion[i].w, 3))
@@ -522,8 +564,7 @@ int rr_nonhertz_wheel(const rr_nh_table *t, const rr_nh_state *s, rr_nh_result *
             const rr_nh_patch *p = &rr[j].patch[k];
             const double *c = s->motion[j].c;
             const double r[3] = {p->point[0] - c[0], p->point[1] - c[1], p->point[2] - c[2]};
-            const double sd = sin(p->delta), cd = cos(p->delta);
-            const double n[3] = {0.0, -t->sigma * sd, cd};
+            const double *n = p->n;
             add_patch(&out->patch[k], p, wt[j]);
             out->moment[0] += wt[j] * (r[1] * p->force[2] - r[2] * p->force[1] + p->mz * n[0]);
             out->moment[1] += wt[j] * (r[2] * p->force[0] - r[0] * p->force[2] + p->mz * n[1]);
@@ -536,9 +577,16 @@ int rr_nonhertz_wheel(const rr_nh_table *t, const rr_nh_state *s, rr_nh_result *
         if (in0 != in1) {
             const rr_nh_patch *p = in0 ? &rr[0].patch[j] : &rr[1].patch[j];
             out->patch[j].delta = p->delta;
-            for (m = 0; m < 3; m++)
+            for (m = 0; m < 3; m++) {
                 out->patch[j].point[m] = p->point[m];
+                out->patch[j].t1[m] = p->t1[m];
+                out->patch[j].t2[m] = p->t2[m];
+                out->patch[j].n[m] = p->n[m];
+            }
         }
+        normalise(out->patch[j].t1);
+        normalise(out->patch[j].t2);
+        normalise(out->patch[j].n);
     }
     for (j = 0; j < out->npatch; j++) {
         const rr_nh_patch *p = &out->patch[j];

@@ -30,7 +30,9 @@
  *
  * Frame of a patch (rr_gap.h's): t1 = (1, 0, 0), t2 = (0, cos delta,
  * sigma sin delta), n = (0, -sigma sin delta, cos delta) into the wheel;
- * fx, fy on the wheel along t1, t2, mz about n at the centroid.
+ * fx, fy on the wheel along t1, t2, mz about n at the centroid; with a
+ * longitudinal shift or a yaw that frame turned about the roller's axis
+ * (rr_nonhertz_frame).
  */
 #ifndef RR_NONHERTZ_H
 #define RR_NONHERTZ_H
@@ -106,18 +108,28 @@ int rr_nonhertz_table_check(const rr_nh_table *t, int *bad_row);
  */
 int rr_nonhertz_locate(const rr_nh_table *t, double y, int *row, double *w);
 
+/* A patch's frame turned by theta about the roller's axis (the rig's law
+ * for a longitudinal shift and a yaw, rr_rig_contact.h): its reference
+ * point P = ((PZ + R0) sin theta, PY, (PZ + R0) cos theta - R0), t1 =
+ * (cos theta, 0, -sin theta), n = (cos delta sin theta, -sigma sin delta,
+ * cos delta cos theta), t2 = n x t1 (theta = 0: the frame above). */
+typedef struct {
+    double P[3], t1[3], t2[3], n[3];
+} rr_nh_frame;
+
+void rr_nonhertz_frame(double PY, double PZ, double delta, double theta, double sigma,
+                       double R0, rr_nh_frame *f);
+
 /*
- * rr_nonhertz_creepages - Kalker's creepages at a patch's reference point P
- * = (0, PY, PZ) with plane angle delta (the frame above): the slip of the
- * wheel's material point P - pen n, the wheelset's centre lowered by dz
- * from ws->c, relative to the roller's at P (angular velocity (0,
- * -roller_spin, 0) about its axis at Z = -R0), over the rolling speed
- * (at least vmin).  k = (cx, cy, cphi, V).  Status 0 or RR_ERR_RANGE (a
- * result not finite).
+ * rr_nonhertz_creepages - Kalker's creepages at a patch's reference point
+ * f->P in frame f: the slip of the wheel's material point P - pen n, the
+ * wheelset's centre lowered by dz from ws->c, relative to the roller's at P
+ * (angular velocity (0, -roller_spin, 0) about its axis at Z = -R0), over
+ * the rolling speed (at least vmin).  k = (cx, cy, cphi, V).  Status 0 or
+ * RR_ERR_RANGE (a result not finite).
  */
-int rr_nonhertz_creepages(const rr_motion *ws, double roller_spin, double R0, double sigma,
-                          double PY, double PZ, double delta, double pen, double dz,
-                          double vmin, double k[4]);
+int rr_nonhertz_creepages(const rr_motion *ws, double roller_spin, double R0,
+                          const rr_nh_frame *f, double pen, double dz, double vmin, double k[4]);
 
 /* One wheel's state (rr_nonhertz_wheel). */
 typedef struct {
@@ -126,8 +138,13 @@ typedef struct {
     double mu;            /* Coulomb friction, > 0 */
     double roller_spin;   /* the rollers' angular speed [rad/s] */
     double vmin;          /* least rolling speed for the creepages [m/s], > 0 */
+    double x, yaw;        /* the wheelset's longitudinal shift [m] and yaw [rad]: each
+                             patch's frame turned about the roller axis by the rig's
+                             first-order law (rr_rig_contact.h) with the patch's delta,
+                             r and R; 0, 0: the table's planes */
     rr_motion motion[2];  /* the wheelset's rigid motion at rows i and i + 1 of
-                             rr_nonhertz_locate (c its centre at the zero-gap pose) */
+                             rr_nonhertz_locate (rr_rig_contact's pose at x, y, yaw:
+                             c its centre, v, w) */
 } rr_nh_state;
 
 /* One patch of the result (row i's and row i + 1's blended; a patch only
@@ -137,6 +154,7 @@ typedef struct {
     double fx, fy, mz;    /* creep forces on the wheel along t1, t2 [N], spin moment about
                              n at the centroid [N m] */
     double force[3];      /* fx t1 + fy t2 + N n, rig frame [N] */
+    double t1[3], t2[3], n[3];  /* the patch's frame (the rows' blended, normalised) */
     double point[3];      /* the pressure's centroid, rig frame [m] */
     double delta;         /* the plane's angle [rad] */
     double cx, cy, cphi;  /* creepages at the centroid [-], [-], [rad/m] */

@@ -1,8 +1,9 @@
 /*
  * rr_nonhertz_table.c - one row of the non-Hertzian contact's table by the
  * exact theory (rr_nonhertz_table.h): benchmarks/nonhertz_fast.py's
- * build_row on the C solver (rr_wheel_exact for the nodes, rr_gap_build and
- * rr_exact_solve for the finer grids).
+ * build_row on the C solver (rr_wheel_exact for the largest load's
+ * lowering; rr_gap_build and rr_exact_solve for the nodes' poses, the load
+ * each carries and the finer grids).
  */
 #include <math.h>
 #include <string.h>
@@ -463,10 +464,12 @@ static int correct_node(call *c, const node_data *d, double *cb, int *warn)
     double kin[4], cr[1 + RR_NH_U * RR_NH_TH][3], cc[1 + RR_NH_U * RR_NH_TH][2];
     double F[1 + RR_NH_U * RR_NH_TH][3], a, bb, sy, sp, cphi;
     rr_gap_patch gc, gcf;
+    rr_nh_frame fr;
     int i, j, st;
-    if ((st = rr_nonhertz_creepages(&pb->wheelset, pb->roller_spin, pb->pair->R0,
-                                    (double)pb->pair->side, g->point[1], g->point[2], g->delta,
-                                    d->pen, d->e, pb->vmin, kin)) < 0)
+    rr_nonhertz_frame(g->point[1], g->point[2], g->delta, 0.0, (double)pb->pair->side,
+                      pb->pair->R0, &fr);
+    if ((st = rr_nonhertz_creepages(&pb->wheelset, pb->roller_spin, pb->pair->R0, &fr, d->pen,
+                                    d->e, pb->vmin, kin)) < 0)
         return st;
     cphi = kin[2];
     if ((st = calibrated(c, d, &a, &bb, &sy, &sp)) < 0)

@@ -144,11 +144,13 @@ PyObject *py_nonhertz_check(PyObject *self, PyObject *args)
 
 static PyObject *patch_tuple(const rr_nh_patch *p)
 {
-    return Py_BuildValue("{s:d,s:d,s:d,s:d,s:(ddd),s:(ddd),s:d,s:d,s:d,s:d,s:d,s:d}", "N", p->N,
-                         "fx", p->fx, "fy", p->fy, "mz", p->mz, "force", p->force[0],
-                         p->force[1], p->force[2], "point", p->point[0], p->point[1],
-                         p->point[2], "delta", p->delta, "cx", p->cx, "cy", p->cy, "cphi",
-                         p->cphi, "area", p->area, "pmax", p->pmax);
+    return Py_BuildValue("{s:d,s:d,s:d,s:d,s:(ddd),s:(ddd),s:(ddd),s:(ddd),s:(ddd),s:d,s:d,s:d,"
+                         "s:d,s:d,s:d}", "N", p->N, "fx", p->fx, "fy", p->fy, "mz", p->mz,
+                         "force", p->force[0], p->force[1], p->force[2], "point", p->point[0],
+                         p->point[1], p->point[2], "t1", p->t1[0], p->t1[1], p->t1[2], "t2",
+                         p->t2[0], p->t2[1], p->t2[2], "n", p->n[0], p->n[1], p->n[2], "delta",
+                         p->delta, "cx", p->cx, "cy", p->cy, "cphi", p->cphi, "area", p->area,
+                         "pmax", p->pmax);
 }
 
 /* nonhertz_wheel(rows, (sigma, R0, G, nu, mu_ref), (y, Fz, mu, roller_spin,
@@ -165,8 +167,9 @@ PyObject *py_nonhertz_wheel(PyObject *self, PyObject *args)
     (void)self;
     memset(&s, 0, sizeof s);
     memset(&r, 0, sizeof r);
-    if (!PyArg_ParseTuple(args, "OO(ddddd)((ddd)(ddd)(ddd))((ddd)(ddd)(ddd)):nonhertz_wheel",
-                          &rows, &head, &s.y, &s.Fz, &s.mu, &s.roller_spin, &s.vmin,
+    if (!PyArg_ParseTuple(args, "OO(ddddddd)((ddd)(ddd)(ddd))((ddd)(ddd)(ddd)):nonhertz_wheel",
+                          &rows, &head, &s.y, &s.Fz, &s.mu, &s.roller_spin, &s.vmin, &s.x,
+                          &s.yaw,
                           &s.motion[0].c[0], &s.motion[0].c[1], &s.motion[0].c[2],
                           &s.motion[0].v[0], &s.motion[0].v[1], &s.motion[0].v[2],
                           &s.motion[0].w[0], &s.motion[0].w[1], &s.motion[0].w[2],

@@ -235,13 +235,14 @@ def _row(geometry, side, y, Fz, E, nu, mu_ref, n, n_corr, richardson, combine, t
 _NODE_F = (0.03, 0.1, 0.2, 0.33, 0.46, 0.6, 0.75, 0.88, 1.0)
 
 
-def nonhertz_wheel(side_table, y, Fz, mu, roller_spin, motion0, motion1, vmin=1e-3):
+def nonhertz_wheel(side_table, y, Fz, mu, roller_spin, motion0, motion1, vmin=1e-3, x=0.0,
+                   yaw=0.0):
     """One wheel's contact from a side's table (rr_nonhertz_wheel): (status,
     result dict, patch dicts); motion0/1: ((c), (v), (w)) of the wheelset at
-    the rows around y (nonhertz_locate)."""
+    the rows around y (nonhertz_locate), at the longitudinal shift x and yaw."""
     return _core.nonhertz_wheel(side_table.rows, side_table.head,
                                 (float(y), float(Fz), float(mu), float(roller_spin),
-                                 float(vmin)), motion0, motion1)
+                                 float(vmin), float(x), float(yaw)), motion0, motion1)
 
 
 def nonhertz_locate(side_table, y):

@@ -140,7 +140,8 @@ def rig_contact(table, *, x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, s
     patch:     "hertz" (default): one Hertz ellipse at the rigid contact
                point; "nonhertz": the non-Hertzian, multi-patch contact from
                the tables of nonhertz (an rr.NonHertzTable built for this
-               pair, rr.nonhertz_table), Coulomb friction, zero x and yaw:
+               pair, rr.nonhertz_table), Coulomb friction, one state
+               (x and yaw turn each patch's frame by the rig's first-order law):
                returns RigContact(pose, left, right, status) with NonHertzWheel
                sides (each wheel's total force and moment, its patches)
     mu, friction: static friction coefficient; None (Coulomb) or a FallingFriction
@@ -215,6 +216,9 @@ class NonHertzPatch(NamedTuple):
     mz: float           #: spin moment [N m]
     force: np.ndarray   #: fx t1 + fy t2 + N n [N]
     point: np.ndarray   #: the pressure's centroid [m]
+    t1: np.ndarray      #: the patch's frame: rolling direction,
+    t2: np.ndarray      #: lateral in its plane,
+    n: np.ndarray       #: and its normal into the wheel
     delta: float        #: the plane's angle [rad]
     cx: float           #: creepages at the centroid [-], [-], [rad/m]
     cy: float
@@ -260,9 +264,6 @@ def _nonhertz_rig_contact(func, table, nonhertz, loads, *, x, y, yaw, vx, vy, ya
         vals[k] = float(a)
         if not np.isfinite(vals[k]):
             raise RollerRigError(f"{func}: {k} = {vals[k]!r}: {status_message(-1)}")
-    if vals["x"] != 0.0 or vals["yaw"] != 0.0:
-        raise RollerRigError(f"{func}: patch='nonhertz' takes zero x and yaw (its table's "
-                             f"planes), got x = {vals['x']!r}, yaw = {vals['yaw']!r}")
     G = E / (2.0 * (1.0 + nu))
     y = vals["y"]
     wheels, poses = {}, None
@@ -277,8 +278,9 @@ def _nonhertz_rig_contact(func, table, nonhertz, loads, *, x, y, yaw, vx, vy, ya
             raise RollerRigError(f"{func}: y = {y!r} m: beyond the nonhertz table's rows "
                                  f"({ys[0]:g} to {ys[-1]:g} m): {status_message(st)}")
         yr = t.rows[[i, i + 1], 0]
-        k = rig_contact(table, y=yr, vy=vals["vy"], yaw_rate=vals["yaw_rate"],
-                        spin=vals["spin"], roller_spin=vals["roller_spin"], vmin=vals["vmin"],
+        k = rig_contact(table, x=vals["x"], y=yr, yaw=vals["yaw"], vx=vals["vx"],
+                        vy=vals["vy"], yaw_rate=vals["yaw_rate"], spin=vals["spin"],
+                        roller_spin=vals["roller_spin"], vmin=vals["vmin"],
                         kinematics_only=True, errors="raise")
         motion = [tuple(tuple(float(v) for v in np.asarray(a)[:, j])
                         for a in (k.pose.c, k.pose.v, k.pose.w)) for j in range(2)]
@@ -288,7 +290,7 @@ def _nonhertz_rig_contact(func, table, nonhertz, loads, *, x, y, yaw, vx, vy, ya
 
         def run(Fz):
             st, res, pts = nonhertz_wheel(t, y, Fz, vals["mu"], vals["roller_spin"], *motion,
-                                          vmin=vals["vmin"])
+                                          vmin=vals["vmin"], x=vals["x"], yaw=vals["yaw"])
             if st < 0:
                 raise RollerRigError(f"{func}: the {side} wheel at y = {y!r} m, Fz = {Fz!r} N: "
                                      f"{status_message(st)}")
@@ -305,14 +307,16 @@ def _nonhertz_rig_contact(func, table, nonhertz, loads, *, x, y, yaw, vx, vy, ya
             else:
                 raise RollerRigError(f"{func}: the {side} wheel's vertical load for N = "
                                      f"{load!r} N did not settle")
-        patches = tuple(NonHertzPatch(**{f: (np.array(p[f]) if f in ("force", "point")
+        patches = tuple(NonHertzPatch(**{f: (np.array(p[f]) if f in ("force", "point", "t1",
+                                                                     "t2", "n")
                                              else p[f]) for f in NonHertzPatch._fields})
                         for p in pts)
         wheels[side] = NonHertzWheel(np.array(res["force"]), np.array(res["moment"]), res["N"],
                                      res["area"], res["pmax"], np.array(res["centre"]), patches,
                                      Fz, 0)
         poses = poses or k.pose
-    pose = rig_contact(table, y=y, vy=vals["vy"], yaw_rate=vals["yaw_rate"], spin=vals["spin"],
+    pose = rig_contact(table, x=vals["x"], y=y, yaw=vals["yaw"], vx=vals["vx"], vy=vals["vy"],
+                       yaw_rate=vals["yaw_rate"], spin=vals["spin"],
                        roller_spin=vals["roller_spin"], vmin=vals["vmin"],
                        kinematics_only=True, errors="raise").pose
     return RigContact(pose, wheels["left"], wheels["right"], 0)
