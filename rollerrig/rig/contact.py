@@ -291,6 +291,12 @@ def _nonhertz_rig_contact(func, table, nonhertz, loads, *, x, y, yaw, vx, vy, ya
         def run(Fz):
             st, res, pts = nonhertz_wheel(t, y, Fz, vals["mu"], vals["roller_spin"], *motion,
                                           vmin=vals["vmin"], x=vals["x"], yaw=vals["yaw"])
+            if st == -12:        # RR_ERR_RANGE: the vertical balance (rr_nonhertz.h)
+                raise RollerRigError(f"{func}: the {side} wheel at y = {y!r} m, Fz = {Fz!r} N: "
+                                     f"the vertical load has no balance on the table's "
+                                     f"patches (the creep forces' vertical share near or "
+                                     f"beyond Fz: the flange climbs) or a load far beyond "
+                                     f"its nodes: {status_message(st)}")
             if st < 0:
                 raise RollerRigError(f"{func}: the {side} wheel at y = {y!r} m, Fz = {Fz!r} N: "
                                      f"{status_message(st)}")
