@@ -118,8 +118,10 @@ def sweep(pair, y_lo=-7.9e-3, y_hi=7.9e-3, step=5e-4, n_ref=80):
                     print(f"# reference failed at y = {y:.4f} {side}: {e}", file=sys.stderr)
                     continue
                 try:
-                    nh = getattr(rr.rig_contact(ct, patch="nonhertz", nonhertz=tab, **kw),
-                                 side)
+                    nh = getattr(rr.rig_contact(ct, patch="nonhertz", nonhertz=tab,
+                                                errors="ignore", **kw), side)
+                    if nh.status < 0:
+                        raise rr.RollerRigError("the vertical balance has no solution")
                 except rr.RollerRigError as e:
                     print(f"# nonhertz failed at y = {y:.4f} {side} (the reference did not): "
                           f"{e}", file=sys.stderr)

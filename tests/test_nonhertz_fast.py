@@ -284,6 +284,23 @@ def test_bad_input_is_named(kwargs, match):
         rr.rig_contact(ct, **kw)
 
 
+def test_one_wheel_that_fails_leaves_the_other():
+    # a load beyond the table on the left (its nodes end near 1.85 x 5e4 N,
+    # extrapolated to 2.8 times that; this is 1e6 times): raised by default, or the
+    # left wheel NaN with its status and the right one kept
+    g, ct, tab = cone_on_crown()
+    kw = dict(y=0.0, spin=10.0, roller_spin=5.8, mu=0.4, Fz_left=5e10, Fz_right=5e4,
+              patch="nonhertz", nonhertz=tab)
+    with pytest.raises(rr.RollerRigError, match="the left wheel .* a load beyond the nonhertz "
+                                                "table's \\(built for Fz = 50000 N"):
+        rr.rig_contact(ct, **kw)
+    c = rr.rig_contact(ct, errors="ignore", **kw)
+    assert c.left.status < 0 and np.all(np.isnan(c.left.force)) and c.status < 0
+    assert c.right.status == 0 and np.all(np.isfinite(c.right.force))
+    with pytest.warns(rr.RollerRigWarning, match="the left wheel"):
+        rr.rig_contact(ct, errors="warn", **kw)
+
+
 @pytest.mark.parametrize("kwargs, match", [
     (dict(Fz=-5.0), r"Fz must be a finite number > 0"),
     (dict(Fz=np.nan), r"Fz must be"),

@@ -25,6 +25,10 @@ const double rr_nh_corr_u[RR_NH_U] = {0.2, 0.4, 0.6, 0.8};
 #define AB_LO (0.1 * (1.0 + 1e-9))
 #define AB_HI (10.0 * (1.0 - 1e-9))
 #define TWO_PI (2.0 * RR_PI)
+/* Loads are extrapolated by Hertz's law beyond the last node up to this
+ * multiple of its lowering (2^1.5 = 2.8 times its load); beyond, the table
+ * does not hold the load: RR_ERR_TABLE. */
+#define E_BEYOND 2.0
 
 /* ------------------------------------------------------------ the table */
 
@@ -432,6 +436,11 @@ static int eval_row(const rr_nh_table *tb, const double *row, const rr_motion *w
             return RR_ERR_RANGE;
         if ((st = solve_dz(row, s->Fz - Tz, &dz)) < 0)
             return st;
+        for (j = 0; j < np; j++) {
+            const double *p = row + RR_NH_PATCH(j);
+            if (dz - p[0] > E_BEYOND * p[RR_NH_NODE(RR_NH_E, RR_NH_NODES - 1)])
+                return RR_ERR_TABLE;
+        }
         total = 0.0;
         out->npatch = np;
         for (j = 0; j < np; j++) {

@@ -179,7 +179,10 @@ typedef struct {
  * rr_nonhertz_wheel - one wheel's contact from table t (above).
  *   status: 0 OK; RR_ERR_NULL, RR_ERR_NONFINITE (a state value), RR_ERR_LOAD
  *   (Fz <= 0), RR_ERR_FRICTION (mu <= 0), RR_ERR_SPEED (vmin <= 0),
- *   RR_ERR_TABLE (y beyond the table's rows; a row's patch count),
+ *   RR_ERR_TABLE (y beyond the table's rows; a row's patch count; a load
+ *   that lowers a patch beyond twice its last node's lowering: the nodes
+ *   are extrapolated by Hertz's law up to there, about 2.8 times the last
+ *   node's load),
  *   RR_ERR_RANGE (the vertical balance did not settle, or a result not
  *   finite: a load far beyond the table's nodes), the statuses of rr_kalker
  *   and rr_exact_table_forces.  On error *out is NaN.

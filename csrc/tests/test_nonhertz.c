@@ -191,6 +191,11 @@ static void test_bad_state_and_table(void)
     CHECK_STATUS(rr_nonhertz_wheel(&t, &s, &r), RR_ERR_NONFINITE, "a motion not finite");
     s = state(0.0, -1.0, 0.0, 0.0);
     CHECK_STATUS(rr_nonhertz_wheel(&t, &s, &r), RR_ERR_LOAD, "Fz < 0");
+    /* the last node carries 256 kN: 2^1.5 times that is the table's end */
+    s = state(0.0, 7.0e5, 0.0, 0.0);
+    CHECK_STATUS(rr_nonhertz_wheel(&t, &s, &r), RR_OK, "2.7 times the last node's load");
+    s = state(0.0, 7.5e5, 0.0, 0.0);
+    CHECK_STATUS(rr_nonhertz_wheel(&t, &s, &r), RR_ERR_TABLE, "a load beyond the table");
     s = state(0.0, 5e4, 0.0, 0.0);
     s.mu = 0.0;
     CHECK_STATUS(rr_nonhertz_wheel(&t, &s, &r), RR_ERR_FRICTION, "mu = 0");

@@ -27,12 +27,13 @@ roller (see csrc/rig/rr_rig_contact.h for the first-order law and its
 reference).  linear_creepages() gives the seed paper's linearised eq. 7-9
 for comparison.
 """
+import warnings
 from typing import NamedTuple
 
 import numpy as np
 
 from .. import _core
-from .._errors import RollerRigError, status_message
+from .._errors import RollerRigError, RollerRigWarning, status_message
 from .._binding import (_broadcast, _finish, _friction, check_creep_options, core, loop_method,
                         swap_blame)
 from ..geometry.wheelset import ContactTable
@@ -163,7 +164,7 @@ def rig_contact(table, *, x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, s
         return _nonhertz_rig_contact(func, table, nonhertz, loads, x=x, y=y, yaw=yaw, vx=vx, vy=vy,
                                     yaw_rate=yaw_rate, spin=spin, roller_spin=roller_spin,
                                     mu=mu, friction=friction, E=E, nu=nu, vmin=vmin,
-                                    method=method, options=options)
+                                    method=method, options=options, errors=errors)
     if loads[0] == "Fz":
         return _hertz_from_vertical(table, loads[1], loads[2], x=x, y=y, yaw=yaw, vx=vx, vy=vy,
                                     yaw_rate=yaw_rate, spin=spin, roller_spin=roller_spin,
@@ -241,9 +242,15 @@ class NonHertzWheel(NamedTuple):
 
 
 def _nonhertz_rig_contact(func, table, nonhertz, loads, *, x, y, yaw, vx, vy, yaw_rate, spin,
-                          roller_spin, mu, friction, E, nu, vmin, method, options):
-    """rig_contact's patch="nonhertz" for one state (scalars)."""
-    from ..geometry.nonhertz import NonHertzTable, nonhertz_locate, nonhertz_wheel
+                          roller_spin, mu, friction, E, nu, vmin, method, options, errors):
+    """rig_contact's patch="nonhertz" for one state (scalars).  errors None or
+    "raise": a wheel that fails raises; "warn", "ignore": its NonHertzWheel
+    has NaN numbers, no patches and its status (< 0), the other wheel is
+    kept (and "warn" warns)."""
+    if errors not in (None, "raise", "warn", "ignore"):
+        raise RollerRigError(f"{func}: errors must be 'raise', 'warn' or 'ignore', "
+                             f"got {errors!r}")
+    from ..geometry.nonhertz import LOAD_SPAN, NonHertzTable, nonhertz_locate, nonhertz_wheel
     if not isinstance(nonhertz, NonHertzTable):
         raise RollerRigError(f"{func}: patch='nonhertz' needs nonhertz=, an rr.NonHertzTable "
                              f"(rr.nonhertz_table), got {nonhertz!r:.60}")
@@ -297,22 +304,39 @@ def _nonhertz_rig_contact(func, table, nonhertz, loads, *, x, y, yaw, vx, vy, ya
                                      f"patches (the creep forces' vertical share near or "
                                      f"beyond Fz: the flange climbs) or a load far beyond "
                                      f"its nodes: {status_message(st)}")
+            if st == -14:        # RR_ERR_TABLE: y is inside, so the load is not
+                raise RollerRigError(f"{func}: the {side} wheel at y = {y!r} m, Fz = {Fz!r} N: "
+                                     f"a load beyond the nonhertz table's (built for Fz = "
+                                     f"{nonhertz.Fz:g} N, its nodes to {LOAD_SPAN:.3g} times "
+                                     f"that, extrapolated to 2.8 times more): "
+                                     f"{status_message(st)}")
             if st < 0:
                 raise RollerRigError(f"{func}: the {side} wheel at y = {y!r} m, Fz = {Fz!r} N: "
                                      f"{status_message(st)}")
             return res, pts
         Fz = load
-        res, pts = run(Fz)
-        if loads[0] == "N":
-            # the vertical load that gives the normal load asked for (N ~ Fz / n_z)
-            for _ in range(FZ_ITER):
-                Fz *= load / res["N"]
-                res, pts = run(Fz)
-                if abs(res["N"] - load) <= FZ_TOL * load:
-                    break
-            else:
-                raise RollerRigError(f"{func}: the {side} wheel's vertical load for N = "
-                                     f"{load!r} N did not settle")
+        try:
+            res, pts = run(Fz)
+            if loads[0] == "N":
+                # the vertical load that gives the normal load asked for (N ~ Fz / n_z)
+                for _ in range(FZ_ITER):
+                    Fz *= load / res["N"]
+                    res, pts = run(Fz)
+                    if abs(res["N"] - load) <= FZ_TOL * load:
+                        break
+                else:
+                    raise RollerRigError(f"{func}: the {side} wheel's vertical load for N = "
+                                         f"{load!r} N did not settle")
+        except RollerRigError as e:
+            if errors in (None, "raise"):
+                raise
+            if errors == "warn":
+                warnings.warn(str(e), RollerRigWarning, stacklevel=3)
+            nan3 = np.full(3, np.nan)
+            wheels[side] = NonHertzWheel(nan3, nan3.copy(), np.nan, np.nan, np.nan, nan3.copy(),
+                                         (), Fz, -12)
+            poses = poses or k.pose
+            continue
         patches = tuple(NonHertzPatch(**{f: (np.array(p[f]) if f in ("force", "point", "t1",
                                                                      "t2", "n")
                                              else p[f]) for f in NonHertzPatch._fields})
@@ -325,7 +349,8 @@ def _nonhertz_rig_contact(func, table, nonhertz, loads, *, x, y, yaw, vx, vy, ya
                        yaw_rate=vals["yaw_rate"], spin=vals["spin"],
                        roller_spin=vals["roller_spin"], vmin=vals["vmin"],
                        kinematics_only=True, errors="raise").pose
-    return RigContact(pose, wheels["left"], wheels["right"], 0)
+    return RigContact(pose, wheels["left"], wheels["right"],
+                      min(wheels["left"].status, wheels["right"].status))
 
 
 def _loads(func, N_left, N_right, Fz_left, Fz_right, kinematics_only):
