@@ -51,7 +51,7 @@ def build(pair, dy, y_lo=-8e-3, y_hi=8e-3, workers=2):
                           load_average=round(load, 2))))
 
 
-def speed(pair, n_states, repeats=9, seed=1):
+def speed(pair, n_states, repeats=31, seed=1):
     g = geometry(pair)
     tab = rr.NonHertzTable.load(OUT / f"table_{pair}.npz")
     side = tab.left
