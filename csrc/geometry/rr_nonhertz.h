@@ -108,15 +108,20 @@ int rr_nonhertz_table_check(const rr_nh_table *t, int *bad_row);
  */
 int rr_nonhertz_locate(const rr_nh_table *t, double y, int *row, double *w);
 
-/* A patch's frame turned by theta about the roller's axis (the rig's law
- * for a longitudinal shift and a yaw, rr_rig_contact.h): its reference
- * point P = ((PZ + R0) sin theta, PY, (PZ + R0) cos theta - R0), t1 =
- * (cos theta, 0, -sin theta), n = (cos delta sin theta, -sigma sin delta,
- * cos delta cos theta), t2 = n x t1 (theta = 0: the frame above). */
+/* A patch's reference point and frame in the rig frame. */
 typedef struct {
     double P[3], t1[3], t2[3], n[3];
 } rr_nh_frame;
 
+/*
+ * rr_nonhertz_frame - a patch's frame turned by theta about the roller's
+ * axis (the rig's law for a longitudinal shift and a yaw, rr_rig_contact.h):
+ *   returns: *f: P = ((PZ + R0) sin theta, PY, (PZ + R0) cos theta - R0),
+ *            t1 = (cos theta, 0, -sin theta), n = (cos delta sin theta,
+ *            -sigma sin delta, cos delta cos theta), t2 = n x t1 (theta = 0:
+ *            the frame above, P = (0, PY, PZ)).  No checks: the caller's
+ *            numbers (a NaN gives NaN).
+ */
 void rr_nonhertz_frame(double PY, double PZ, double delta, double theta, double sigma,
                        double R0, rr_nh_frame *f);
 
