@@ -317,6 +317,16 @@ def test_the_table_refuses_bad_input(kwargs, match):
         rr.nonhertz_table(g, kw.pop("y_min"), kw.pop("y_max"), **kw)
 
 
+def test_a_region_left_out_of_the_table_is_warned():
+    # S1002 at +4.5 mm: the flange root's region lies 2.4 mm from the tread's
+    # (tests/test_nonhertz.py); with combine 1 mm it is a separate patch, which
+    # the table (one patch per row) does not hold: a warning names the row
+    with pytest.warns(rr.RollerRigWarning, match=r"y = 0.0045 m: 1 region\(s\) of the gap "
+                                                 r"farther than combine = 0.001 m"):
+        rr.nonhertz_table(geometry("s1002_uic60"), None, None, y=[4.5e-3, 4.55e-3], Fz=61163.0,
+                          sides=("left",), combine=1e-3)
+
+
 def test_a_row_that_cannot_be_built_is_named():
     # a load far beyond the profiles' reach: the patch leaves the profiles
     g = cone_on_crown()[0]

@@ -363,6 +363,8 @@ static int normal_at(call *c, double e, double N, double cov, node_data *d, int 
         return RR_ERR_RANGE;
     }
     *edge = at_edge(b->state, r->patch.grid.mx, r->patch.grid.my);
+    if (r->patch.nexcluded > c->info->excluded)
+        c->info->excluded = r->patch.nexcluded;
     r->N = N;
     r->z = site.z;
     r->roll = site.roll;

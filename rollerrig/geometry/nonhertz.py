@@ -18,13 +18,14 @@ load, per patch the calibrated ellipse by the exact-theory table plus the
 tabulated correction (csrc/geometry/rr_nonhertz.h; the rows are built by
 rr_nonhertz_table.h, in threads).
 """
+import warnings
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
 import numpy as np
 
 from .. import _core
-from .._errors import RollerRigError, status_message
+from .._errors import RollerRigError, RollerRigWarning, status_message
 from .wheelset import RigGeometry, wheelset_contact
 
 __all__ = ["NonHertzSide", "NonHertzTable", "nonhertz_table"]
@@ -229,6 +230,13 @@ def _row(geometry, side, y, Fz, E, nu, mu_ref, n, n_corr, richardson, combine, t
                              f"{what.get(info['why'], 'the row')} failed: "
                              f"{status_message(st)} (why {info['wheel_why']}, "
                              f"gap {info['gap_why']})")
+    if info["excluded"] > 0:
+        # one patch per row (rr_nonhertz_table.h): a region beyond combine of
+        # the deepest is not in the table; say so rather than drop it silently
+        warnings.warn(f"nonhertz_table: the {side} side at y = {y!r} m: "
+                      f"{info['excluded']} region(s) of the gap farther than combine = "
+                      f"{combine!r} m from the deepest (at some of its loads) are not tabulated "
+                      f"(one patch per row)", RollerRigWarning, stacklevel=4)
     return row
 
 
