@@ -1,7 +1,7 @@
 /*
  * bench_nonhertz_speed.c - one wheel's non-Hertzian contact in C
  * (rr_nonhertz_wheel) against Hertz + FASTSIM 20 x 20 on the same states,
- * per wheel.  Built and run by benchmarks/bench_nonhertz.py:
+ * per wheel.  Built and run by benchmarks/bench_nonhertz_table.py:
  *
  *   cc -O2 -std=c99 -I csrc benchmarks/bench_nonhertz_speed.c \
  *      csrc/{util,contact,geometry,rig}/rr_*.c -lm -o bench_nonhertz_speed
