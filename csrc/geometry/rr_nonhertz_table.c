@@ -363,8 +363,15 @@ static int normal_at(call *c, double e, double N, double cov, node_data *d, int 
         return RR_ERR_RANGE;
     }
     *edge = at_edge(b->state, r->patch.grid.mx, r->patch.grid.my);
-    if (r->patch.nexcluded > c->info->excluded)
-        c->info->excluded = r->patch.nexcluded;
+    if (r->patch.nexcluded > 0) {
+        /* regions left out within the grid's cover need not touch: count
+         * those within the approach itself (cover 1), which would */
+        rr_gap_patch q;
+        o.cover = 1.0;
+        if (rr_gap_build(&site, &o, b->gap, b->gap_len, b->hc, b->cells, &q) >= 0
+            && q.nexcluded > c->info->excluded)
+            c->info->excluded = q.nexcluded;
+    }
     r->N = N;
     r->z = site.z;
     r->roll = site.roll;

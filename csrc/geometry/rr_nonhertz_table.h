@@ -72,7 +72,8 @@ typedef struct {
     int wheel_why, gap_why;  /* rr_wheel_exact_why, rr_gap_why */
     size_t need;             /* RR_ERR_WORKSPACE: the grid side the row needs */
     int solves;              /* exact solves spent */
-    int excluded;            /* regions left out (beyond combine), the most at any node */
+    int excluded;            /* regions in contact left out (beyond combine: where h is
+                                below the approach), the most at any node */
 } rr_nh_row_info;
 
 /* Doubles of workspace for grids up to side x side (the fine ones twice

@@ -195,8 +195,18 @@ def nonhertz_table(geometry, y_min, y_max, *, Fz, dy=2e-4, dy_jump=5e-5, mu_ref=
         if ys.size < 2 or not np.all(np.isfinite(ys)):
             raise RollerRigError(f"{func}: at least two finite rows are needed, got {ys!r:.80}")
         with ThreadPoolExecutor(max_workers=int(workers)) as ex:
-            rows = list(ex.map(lambda v: _row(geometry, side, float(v), Fz, E, nu, mu_ref, n,
-                                              n_corr, richardson, combine, tol, maxit), ys))
+            built = list(ex.map(lambda v: _row(geometry, side, float(v), Fz, E, nu, mu_ref, n,
+                                               n_corr, richardson, combine, tol, maxit), ys))
+        rows = [r for r, _ in built]
+        for v, (_, excluded) in zip(ys, built):
+            if excluded > 0:
+                # one patch per row (rr_nonhertz_table.h): a region beyond
+                # combine of the deepest that touches is not in the table;
+                # said here (the main thread), not dropped silently
+                warnings.warn(f"nonhertz_table: the {side} side at y = {float(v)!r} m: "
+                              f"{excluded} region(s) of the gap farther than combine = "
+                              f"{combine!r} m from the deepest (at some of its loads) are not "
+                              f"tabulated (one patch per row)", RollerRigWarning, stacklevel=2)
         out[side] = NonHertzSide(np.ascontiguousarray(np.array(rows)),
                                  1.0 if side == "left" else -1.0, float(geometry.roller_radius),
                                  G, nu, mu_ref).check()
@@ -230,14 +240,7 @@ def _row(geometry, side, y, Fz, E, nu, mu_ref, n, n_corr, richardson, combine, t
                              f"{what.get(info['why'], 'the row')} failed: "
                              f"{status_message(st)} (why {info['wheel_why']}, "
                              f"gap {info['gap_why']})")
-    if info["excluded"] > 0:
-        # one patch per row (rr_nonhertz_table.h): a region beyond combine of
-        # the deepest is not in the table; say so rather than drop it silently
-        warnings.warn(f"nonhertz_table: the {side} side at y = {y!r} m: "
-                      f"{info['excluded']} region(s) of the gap farther than combine = "
-                      f"{combine!r} m from the deepest (at some of its loads) are not tabulated "
-                      f"(one patch per row)", RollerRigWarning, stacklevel=4)
-    return row
+    return row, info["excluded"]
 
 
 _NODE_F = (0.03, 0.1, 0.2, 0.33, 0.46, 0.6, 0.75, 0.88, 1.0)
