@@ -60,6 +60,8 @@
 #include "geometry/rr_tables.h"
 #include "geometry/rr_gap.h"
 #include "geometry/rr_wheel_exact.h"
+#include "geometry/rr_nonhertz.h"
+#include "geometry/rr_nonhertz_table.h"
 #include "rig/rr_rig_contact.h"
 #include "rig/rr_control.h"
 #include "util/rr_ode.h"

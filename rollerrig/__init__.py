@@ -32,6 +32,7 @@ from .contact import (BOUNDS, METHODS, CreepForces, ExactSolution, FallingFricti
                       KalkerCoefficients, TractionField, creep_forces, exact_field,
                       exact_richardson, exact_solve, fastsim_field, hertz, kalker_coefficients)
 from .geometry import profiles
+from .geometry.nonhertz import NonHertzSide, NonHertzTable, nonhertz_table
 from .geometry import (ContactSide, ContactTable, Patch, PatchShape, Profile, RigGeometry,
                        WheelsetContact, contact_table, equivalent_conicity, patch_shape,
                        read_profile, rolling_radius_difference, undeformed_distance,
@@ -73,7 +74,7 @@ __all__ = [
     "__version__", "RollerRigError", "RollerRigWarning", "status_message", "STATUS", "METHODS",
     "BOUNDS", "FallingFriction", "HertzContact", "KalkerCoefficients", "CreepForces",
     "TractionField", "hertz", "kalker_coefficients", "creep_forces", "fastsim_field",
-    "profiles", "Profile", "read_profile", "RigGeometry", "ContactSide", "WheelsetContact",
+    "profiles", "NonHertzSide", "NonHertzTable", "nonhertz_table", "Profile", "read_profile", "RigGeometry", "ContactSide", "WheelsetContact",
     "wheelset_contact", "ContactTable", "contact_table", "RigPose", "WheelContact",
     "RigContact", "rig_contact", "LinearCreepages", "linear_creepages",
     "equivalent_conicity", "rolling_radius_difference", "simulate", "RigResult",

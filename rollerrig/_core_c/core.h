@@ -14,6 +14,8 @@
  *   geometry.c     contact search, contact tables, profile splines and tables
  *   gap.c          the undeformed distance of a wheel on its roller (rr_gap), and
  *                  one wheel solved by the exact theory on it (rr_wheel_exact)
+ *   nonhertz.c     the non-Hertzian contact's table rows and one wheel from them
+ *                  (rr_nonhertz_table, rr_nonhertz)
  *   rig_contact.c  the rig's contact model over arrays of states
  *   rig.c          the rig in time (the Rig type), its schedule and speed loops
  *   rig_config.c   every problem of the rig's parameters (rig_config_report)
@@ -225,6 +227,14 @@ CORE_PRIVATE PyObject *py_rig_table(PyObject *self, PyObject *args);
 
 CORE_PRIVATE PyObject *py_gap_build(PyObject *self, PyObject *args);
 CORE_PRIVATE PyObject *py_wheel_exact(PyObject *self, PyObject *args);
+
+/* ---------------------------------------------------------- nonhertz.c */
+
+CORE_PRIVATE PyObject *py_nonhertz_row(PyObject *self, PyObject *args);
+CORE_PRIVATE PyObject *py_nonhertz_check(PyObject *self, PyObject *args);
+CORE_PRIVATE PyObject *py_nonhertz_wheel(PyObject *self, PyObject *args);
+CORE_PRIVATE PyObject *py_nonhertz_locate(PyObject *self, PyObject *args);
+CORE_PRIVATE int add_nonhertz(PyObject *m);
 
 /* ------------------------------------------------ rig_contact.c, rig.c */
 

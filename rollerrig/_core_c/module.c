@@ -120,6 +120,17 @@ static PyMethodDef core_methods[] = {
     {"rig_config_report", py_rig_config_report, METH_O,
      "rig_config_report({\"section.key\": value}) -> [(key, status, rule, other, entry, "
      "value, lo, hi), ...]: every problem of the rig's parameters (rr_rig_config_report)"},
+    {"nonhertz_row", py_nonhertz_row, METH_VARARGS,
+     "nonhertz_row(pair, side, y_ws, (z0, roll0), point, (Fz_max, E, nu, mu), motion, "
+     "roller_spin, vmin, (n, n_corr, richardson, combine), (tol, maxit)) -> (status, row, "
+     "{info}): rr_nonhertz_row"},
+    {"nonhertz_check", py_nonhertz_check, METH_VARARGS,
+     "nonhertz_check(rows, head) -> (status, bad_row): rr_nonhertz_table_check"},
+    {"nonhertz_wheel", py_nonhertz_wheel, METH_VARARGS,
+     "nonhertz_wheel(rows, head, (y, Fz, mu, roller_spin, vmin), motion0, motion1) -> "
+     "(status, {result}, patches): rr_nonhertz_wheel"},
+    {"nonhertz_locate", py_nonhertz_locate, METH_VARARGS,
+     "nonhertz_locate(rows, head, y) -> (status, row, w): rr_nonhertz_locate"},
     {"status_message", py_status_message, METH_O, "status_message(code) -> str"},
     {NULL, NULL, 0, NULL}
 };
@@ -372,6 +383,7 @@ PyMODINIT_FUNC PyInit__core(void)
         || PyModule_AddIntConstant(m, "EXACT_MAX_GRID", RR_EXACT_MAX_GRID) < 0
         || PyModule_AddIntConstant(m, "EXACT_MARGIN", RR_EXACT_MARGIN) < 0
         || add_gap(m) < 0
+        || add_nonhertz(m) < 0
         || PyModule_AddIntConstant(m, "ERR_FRICTION_LIMIT", RR_ERR_FRICTION_LIMIT) < 0
         || PyModule_AddIntConstant(m, "ERR_UNTRUSTED", RR_ERR_UNTRUSTED) < 0
         || add_rows(m, "RIG_PARAMETERS", rr_rig_param_count(), param_tuple) < 0

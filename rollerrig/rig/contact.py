@@ -27,18 +27,19 @@ roller (see csrc/rig/rr_rig_contact.h for the first-order law and its
 reference).  linear_creepages() gives the seed paper's linearised eq. 7-9
 for comparison.
 """
+import warnings
 from typing import NamedTuple
 
 import numpy as np
 
 from .. import _core
-from .._errors import RollerRigError, status_message
+from .._errors import RollerRigError, RollerRigWarning, status_message
 from .._binding import (_broadcast, _finish, _friction, check_creep_options, core, loop_method,
                         swap_blame)
 from ..geometry.wheelset import ContactTable
 
 __all__ = ["RigPose", "WheelContact", "RigContact", "rig_contact", "LinearCreepages",
-           "linear_creepages"]
+           "linear_creepages", "NonHertzWheel", "NonHertzPatch"]
 
 
 class RigPose(NamedTuple):
@@ -124,8 +125,9 @@ _VALID_STATE = dict(x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spin=10
 
 
 def rig_contact(table, *, x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spin,
-                roller_spin, N_left, N_right, mu=0.4, friction=None, E=2.1e11, nu=0.28,
-                vmin=1e-3, method="fastsim", kinematics_only=False, errors=None, **options):
+                roller_spin, N_left=None, N_right=None, Fz_left=None, Fz_right=None, mu=0.4,
+                friction=None, E=2.1e11, nu=0.28, vmin=1e-3, method="fastsim",
+                kinematics_only=False, errors=None, patch="hertz", nonhertz=None, **options):
     """Contact of both wheels for wheelset states (numpy-broadcast arrays).
 
     table:     ContactTable of the rig's wheel/roller pair
@@ -133,7 +135,16 @@ def rig_contact(table, *, x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, s
     yaw:       [rad] about Z; vx, vy [m/s], yaw_rate [rad/s] their rates
     spin:      wheelset angular speed about its axle [rad/s]
     roller_spin: the rollers' angular speed [rad/s]
-    N_left, N_right: normal loads [N]
+    N_left, N_right: normal loads [N]; or
+    Fz_left, Fz_right: the wheels' vertical loads [N] (CONTACT's FZ): the
+               normal load found so that N n_z + fy t2_z = Fz (to 1e-9 Fz)
+    patch:     "hertz" (default): one Hertz ellipse at the rigid contact
+               point; "nonhertz": the non-Hertzian, multi-patch contact from
+               the tables of nonhertz (an rr.NonHertzTable built for this
+               pair, rr.nonhertz_table), Coulomb friction, one state
+               (x and yaw turn each patch's frame by the rig's first-order law):
+               returns RigContact(pose, left, right, status) with NonHertzWheel
+               sides (each wheel's total force and moment, its patches)
     mu, friction: static friction coefficient; None (Coulomb) or a FallingFriction
     E, nu:     Young's modulus [Pa] and Poisson ratio of wheel and roller steel
     vmin:      least rolling speed for the creepages [m/s] (standstill)
@@ -146,6 +157,20 @@ def rig_contact(table, *, x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, s
     """
     func = "rig_contact"
     _check_table(func, table)
+    if patch not in ("hertz", "nonhertz"):
+        raise RollerRigError(f"{func}: patch must be 'hertz' or 'nonhertz', got {patch!r:.60}")
+    loads = _loads(func, N_left, N_right, Fz_left, Fz_right, kinematics_only)
+    if patch == "nonhertz":
+        return _nonhertz_rig_contact(func, table, nonhertz, loads, x=x, y=y, yaw=yaw, vx=vx, vy=vy,
+                                    yaw_rate=yaw_rate, spin=spin, roller_spin=roller_spin,
+                                    mu=mu, friction=friction, E=E, nu=nu, vmin=vmin,
+                                    method=method, options=options, errors=errors)
+    if loads[0] == "Fz":
+        return _hertz_from_vertical(table, loads[1], loads[2], x=x, y=y, yaw=yaw, vx=vx, vy=vy,
+                                    yaw_rate=yaw_rate, spin=spin, roller_spin=roller_spin,
+                                    mu=mu, friction=friction, E=E, nu=nu, vmin=vmin,
+                                    method=method, errors=errors, **options)
+    N_left, N_right = loads[1], loads[2]
     # the rig's grid, 20 x 20, where the method has one (the registry's default is 30 x 30)
     grid = {k: 20 for k in ("nx", "ny") if k in loop_method(func, method).options}
     opts = check_creep_options(func, method, {**grid, **options})
@@ -181,6 +206,208 @@ def rig_contact(table, *, x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, s
     if scalar:
         res = _scalarise(res)
     return res
+
+
+class NonHertzPatch(NamedTuple):
+    """One patch of a wheel's non-Hertzian contact (rig frame; fx, fy along the
+    patch's t1, t2, mz about its normal at the pressure's centroid)."""
+    N: float            #: normal load [N]
+    fx: float           #: creep forces on the wheel [N]
+    fy: float
+    mz: float           #: spin moment [N m]
+    force: np.ndarray   #: fx t1 + fy t2 + N n [N]
+    point: np.ndarray   #: the pressure's centroid [m]
+    t1: np.ndarray      #: the patch's frame: rolling direction,
+    t2: np.ndarray      #: lateral in its plane,
+    n: np.ndarray       #: and its normal into the wheel
+    delta: float        #: the plane's angle [rad]
+    cx: float           #: creepages at the centroid [-], [-], [rad/m]
+    cy: float
+    cphi: float
+    area: float         #: contact area [m^2]
+    pmax: float         #: peak pressure [Pa]
+
+
+class NonHertzWheel(NamedTuple):
+    """One wheel's non-Hertzian contact (rig_contact(..., patch="nonhertz"))."""
+    force: np.ndarray   #: total contact force on the wheel, rig frame [N]
+    moment: np.ndarray  #: its moment about the wheelset centre [N m]
+    N: float            #: the patches' normal loads summed [N]
+    area: float         #: their areas summed [m^2]
+    pmax: float         #: the largest peak pressure [Pa]
+    centre: np.ndarray  #: the load-weighted force centre [m]
+    patches: tuple      #: NonHertzPatch per patch
+    Fz: float           #: the vertical load carried [N]
+    status: int
+
+
+def _nonhertz_rig_contact(func, table, nonhertz, loads, *, x, y, yaw, vx, vy, yaw_rate, spin,
+                          roller_spin, mu, friction, E, nu, vmin, method, options, errors):
+    """rig_contact's patch="nonhertz" for one state (scalars).  errors None or
+    "raise": a wheel that fails raises; "warn", "ignore": its NonHertzWheel
+    has NaN numbers, no patches and its status (< 0), the other wheel is
+    kept (and "warn" warns)."""
+    if errors not in (None, "raise", "warn", "ignore"):
+        raise RollerRigError(f"{func}: errors must be 'raise', 'warn' or 'ignore', "
+                             f"got {errors!r}")
+    from ..geometry.nonhertz import LOAD_SPAN, NonHertzTable, nonhertz_locate, nonhertz_wheel
+    if not isinstance(nonhertz, NonHertzTable):
+        raise RollerRigError(f"{func}: patch='nonhertz' needs nonhertz=, an rr.NonHertzTable "
+                             f"(rr.nonhertz_table), got {nonhertz!r:.60}")
+    if friction is not None:
+        raise RollerRigError(f"{func}: patch='nonhertz' takes Coulomb friction (friction=None)")
+    if options or method != "fastsim":
+        raise RollerRigError(f"{func}: patch='nonhertz' has its own creep method: no method or "
+                             f"options")
+    named = dict(x=x, y=y, yaw=yaw, vx=vx, vy=vy, yaw_rate=yaw_rate, spin=spin,
+                 roller_spin=roller_spin, mu=mu, vmin=vmin, E=E, nu=nu,
+                 load_left=loads[1], load_right=loads[2])
+    vals = {}
+    for k, v in named.items():
+        a = np.asarray(v)
+        if a.ndim != 0 or isinstance(v, bool) or a.dtype.kind not in "fiu":
+            raise RollerRigError(f"{func}: patch='nonhertz' takes one state: {k} must be a "
+                                 f"number, got {v!r:.60}")
+        vals[k] = float(a)
+        if not np.isfinite(vals[k]):
+            raise RollerRigError(f"{func}: {k} = {vals[k]!r}: {status_message(-1)}")
+    G = E / (2.0 * (1.0 + nu))
+    y = vals["y"]
+    wheels, poses = {}, None
+    for side in ("left", "right"):
+        t = nonhertz.side(side)
+        if abs(t.G / G - 1) > 1e-9 or abs(t.nu - nu) > 1e-12:
+            raise RollerRigError(f"{func}: E, nu give G = {G:g} Pa, nu = {nu:g}; the nonhertz "
+                                 f"table was built for G = {t.G:g} Pa, nu = {t.nu:g}")
+        st, i, w = nonhertz_locate(t, y)
+        if st < 0:
+            ys = t.rows[:, 0]
+            raise RollerRigError(f"{func}: y = {y!r} m: beyond the nonhertz table's rows "
+                                 f"({ys[0]:g} to {ys[-1]:g} m): {status_message(st)}")
+        yr = t.rows[[i, i + 1], 0]
+        k = rig_contact(table, x=vals["x"], y=yr, yaw=vals["yaw"], vx=vals["vx"],
+                        vy=vals["vy"], yaw_rate=vals["yaw_rate"], spin=vals["spin"],
+                        roller_spin=vals["roller_spin"], vmin=vals["vmin"],
+                        kinematics_only=True, errors="raise")
+        motion = [tuple(tuple(float(v) for v in np.asarray(a)[:, j])
+                        for a in (k.pose.c, k.pose.v, k.pose.w)) for j in range(2)]
+        load = vals[f"load_{side}"]
+        if not load > 0:
+            raise RollerRigError(f"{func}: the {side} wheel's load must be > 0, got {load!r}")
+
+        def run(Fz):
+            st, res, pts = nonhertz_wheel(t, y, Fz, vals["mu"], vals["roller_spin"], *motion,
+                                          vmin=vals["vmin"], x=vals["x"], yaw=vals["yaw"])
+            if st == -12:        # RR_ERR_RANGE: the vertical balance (rr_nonhertz.h)
+                raise RollerRigError(f"{func}: the {side} wheel at y = {y!r} m, Fz = {Fz!r} N: "
+                                     f"the vertical load has no balance on the table's "
+                                     f"patches (the creep forces' vertical share near or "
+                                     f"beyond Fz: the flange climbs) or a load far beyond "
+                                     f"its nodes: {status_message(st)}")
+            if st == -14:        # RR_ERR_TABLE: y is inside, so the load is not
+                raise RollerRigError(f"{func}: the {side} wheel at y = {y!r} m, Fz = {Fz!r} N: "
+                                     f"a load beyond the nonhertz table's (built for Fz = "
+                                     f"{nonhertz.Fz:g} N, its nodes to {LOAD_SPAN:.3g} times "
+                                     f"that, extrapolated to 2.8 times more): "
+                                     f"{status_message(st)}")
+            if st < 0:
+                raise RollerRigError(f"{func}: the {side} wheel at y = {y!r} m, Fz = {Fz!r} N: "
+                                     f"{status_message(st)}")
+            return res, pts
+        Fz = load
+        try:
+            res, pts = run(Fz)
+            if loads[0] == "N":
+                # the vertical load that gives the normal load asked for (N ~ Fz / n_z)
+                for _ in range(FZ_ITER):
+                    Fz *= load / res["N"]
+                    res, pts = run(Fz)
+                    if abs(res["N"] - load) <= FZ_TOL * load:
+                        break
+                else:
+                    raise RollerRigError(f"{func}: the {side} wheel's vertical load for N = "
+                                         f"{load!r} N did not settle")
+        except RollerRigError as e:
+            if errors in (None, "raise"):
+                raise
+            if errors == "warn":
+                warnings.warn(str(e), RollerRigWarning, stacklevel=3)
+            nan3 = np.full(3, np.nan)
+            wheels[side] = NonHertzWheel(nan3, nan3.copy(), np.nan, np.nan, np.nan, nan3.copy(),
+                                         (), Fz, -12)
+            poses = poses or k.pose
+            continue
+        patches = tuple(NonHertzPatch(**{f: (np.array(p[f]) if f in ("force", "point", "t1",
+                                                                     "t2", "n")
+                                             else p[f]) for f in NonHertzPatch._fields})
+                        for p in pts)
+        wheels[side] = NonHertzWheel(np.array(res["force"]), np.array(res["moment"]), res["N"],
+                                     res["area"], res["pmax"], np.array(res["centre"]), patches,
+                                     Fz, 0)
+        poses = poses or k.pose
+    pose = rig_contact(table, x=vals["x"], y=y, yaw=vals["yaw"], vx=vals["vx"], vy=vals["vy"],
+                       yaw_rate=vals["yaw_rate"], spin=vals["spin"],
+                       roller_spin=vals["roller_spin"], vmin=vals["vmin"],
+                       kinematics_only=True, errors="raise").pose
+    return RigContact(pose, wheels["left"], wheels["right"],
+                      min(wheels["left"].status, wheels["right"].status))
+
+
+def _loads(func, N_left, N_right, Fz_left, Fz_right, kinematics_only):
+    """("N" or "Fz", left, right): the normal or the vertical loads, not both."""
+    N_given = N_left is not None or N_right is not None
+    Fz_given = Fz_left is not None or Fz_right is not None
+    if N_given and Fz_given:
+        raise RollerRigError(f"{func}: give the normal loads N_left, N_right or the vertical "
+                             f"loads Fz_left, Fz_right, not both")
+    if Fz_given:
+        if Fz_left is None or Fz_right is None:
+            raise RollerRigError(f"{func}: give both Fz_left and Fz_right")
+        return ("Fz", Fz_left, Fz_right)
+    if N_left is None or N_right is None:
+        if kinematics_only:
+            return ("N", 1.0 if N_left is None else N_left, 1.0 if N_right is None else N_right)
+        raise RollerRigError(f"{func}: give the normal loads N_left, N_right or the vertical "
+                             f"loads Fz_left, Fz_right [N]")
+    return ("N", N_left, N_right)
+
+
+#: the vertical balance N n_z + fy t2_z = Fz of the Hertzian contact: its
+#: fixed point on N converges by the creep force's share (|fy t2_z| << N)
+FZ_TOL, FZ_ITER = 1e-9, 50
+
+
+def _hertz_from_vertical(table, Fz_left, Fz_right, **kw):
+    """rig_contact with the normal loads that carry the vertical loads."""
+    func = "rig_contact"
+    for name, v in (("Fz_left", Fz_left), ("Fz_right", Fz_right)):
+        a = np.asarray(v, dtype=float) if not isinstance(v, bool) else np.array(np.nan)
+        if a.dtype.kind != "f" or not np.all(np.isfinite(a)) or not np.all(a > 0):
+            raise RollerRigError(f"{func}: {name} must be finite and > 0 [N], got {v!r:.60}")
+    Fl, Fr = np.asarray(Fz_left, dtype=float), np.asarray(Fz_right, dtype=float)
+    N = [Fl.copy(), Fr.copy()]
+    prev = [None, None]           # (N, residual) of the last pass, for the secant
+    for _ in range(FZ_ITER):
+        c = rig_contact(table, N_left=N[0], N_right=N[1], **kw)
+        done = True
+        for k, (w, F) in enumerate(((c.left, Fl), (c.right, Fr))):
+            n_z, t2_z = np.asarray(w.n)[2], np.asarray(w.t2)[2]
+            r = (F - np.asarray(w.fy) * t2_z) / n_z - N[k]
+            done &= bool(np.all(np.abs(r) <= FZ_TOL * F))
+            # a secant on the fixed point's residual: at the flange the creep
+            # force's share is large and the plain iteration slow
+            step = r
+            if prev[k] is not None:
+                N0, r0 = prev[k]
+                with np.errstate(all="ignore"):
+                    sec = -r * (N[k] - N0) / (r - r0)
+                ok = np.isfinite(sec) & (r != r0) & (N[k] + sec > 0)
+                step = np.where(ok, sec, r)
+            prev[k] = (N[k], r)
+            N[k] = np.maximum(N[k] + step, 1e-3 * F)
+        if done:
+            return c
+    raise RollerRigError(f"{func}: the normal loads for Fz_left, Fz_right did not settle")
 
 
 def _scalarise(t):

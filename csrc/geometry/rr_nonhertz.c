@@ -1,0 +1,619 @@
+/*
+ * rr_nonhertz.c - one wheel's non-Hertzian contact from a table per lateral
+ * shift (rr_nonhertz.h): the run time of benchmarks/NONHERTZ_STUDY.md's
+ * recommended method, its C prototype (benchmarks/bench_nonhertz_runtime.c)
+ * written as library code.
+ */
+#include <math.h>
+#include <string.h>
+#include "util/rr_common.h"
+#include "contact/rr_contact.h"
+#include "contact/rr_kalker.h"
+#include "contact/rr_exact_table.h"
+#include "geometry/rr_nonhertz.h"
+
+const double rr_nh_corr_u[RR_NH_U] = {0.2, 0.4, 0.6, 0.8};
+
+/* The tangential forces' vertical share settles to this fraction of Fz
+ * (1e-4 Fz moves the forces by about 1e-4 mu N); passes at most. */
+#define TZ_TOL 1e-4
+#define TZ_PASSES 20
+/* The lowering's secant: relative tolerance on the load, iterations. */
+#define DZ_TOL 1e-10
+#define DZ_ITER 60
+/* a/b inside the exact table's range (rr_exact_table_builtin: 0.1 to 10). */
+#define AB_LO (0.1 * (1.0 + 1e-9))
+#define AB_HI (10.0 * (1.0 - 1e-9))
+#define TWO_PI (2.0 * RR_PI)
+/* Loads are extrapolated by Hertz's law beyond the last node up to this
+ * multiple of its lowering (2^1.5 = 2.8 times its load); beyond, the table
+ * does not hold the load: RR_ERR_TABLE. */
+#define E_BEYOND 2.0
+
+/* ------------------------------------------------------------ the table */
+
+static int patch_ok(const double *p)
+{
+    int k, c;
+    if (!rr_all_finite(p, RR_NH_PATCH_LEN) || !(p[0] >= 0.0))
+        return 0;
+    for (k = 0; k < RR_NH_NODES; k++) {
+        if (!(p[RR_NH_NODE(RR_NH_E, k)] > 0.0) || !(p[RR_NH_NODE(RR_NH_Q, k)] > 0.0)
+            || !(fabs(p[RR_NH_NODE(RR_NH_DELTA, k)]) < 0.5 * RR_PI)
+            || !(p[RR_NH_NODE(RR_NH_AREA, k)] > 0.0) || !(p[RR_NH_NODE(RR_NH_PMAX, k)] > 0.0)
+            || !(p[RR_NH_NODE(RR_NH_AB, k)] >= 0.1 && p[RR_NH_NODE(RR_NH_AB, k)] <= 10.0)
+            || !(p[RR_NH_NODE(RR_NH_K11, k)] > 0.0) || !(p[RR_NH_NODE(RR_NH_K22, k)] > 0.0))
+            return 0;
+        if (k > 0 && !(p[RR_NH_NODE(RR_NH_E, k)] > p[RR_NH_NODE(RR_NH_E, k - 1)]))
+            return 0;
+    }
+    for (c = 0; c < RR_NH_CORR; c++)
+        if (!(p[RR_NH_CORR_AT(c)] > 0.0)
+            || (c > 0 && !(p[RR_NH_CORR_AT(c)] > p[RR_NH_CORR_AT(c - 1)])))
+            return 0;
+    return 1;
+}
+
+int rr_nonhertz_table_check(const rr_nh_table *t, int *bad_row)
+{
+    int i, j;
+    if (bad_row)
+        *bad_row = -1;
+    if (!t || !t->rows)
+        return RR_ERR_NULL;
+    if (t->nrows < 2 || (t->sigma != 1.0 && t->sigma != -1.0) || !(t->R0 > 0.0)
+        || !isfinite(t->R0) || !(t->G > 0.0) || !isfinite(t->G) || !(t->nu >= 0.0)
+        || !(t->nu <= 0.5) || !(t->mu_ref > 0.0) || !isfinite(t->mu_ref))
+        return RR_ERR_TABLE;
+    for (i = 0; i < t->nrows; i++) {
+        const double *r = t->rows + (size_t)i * RR_NH_ROW_LEN;
+        const double np = r[1];
+        if (bad_row)
+            *bad_row = i;
+        if (!rr_all_finite(r, RR_NH_ROW_HEAD) || !(np >= 1.0 && np <= RR_NH_MAX_PATCHES)
+            || np != floor(np) || (i > 0 && !(r[0] > r[-RR_NH_ROW_LEN])))
+            return RR_ERR_TABLE;
+        for (j = 0; j < (int)np; j++)
+            if (!patch_ok(r + RR_NH_PATCH(j)))
+                return RR_ERR_TABLE;
+    }
+    if (bad_row)
+        *bad_row = -1;
+    return RR_OK;
+}
+
+int rr_nonhertz_locate(const rr_nh_table *t, double y, int *row, double *w)
+{
+    int lo, hi;
+    const double *r;
+    if (!t || !t->rows || !row || !w)
+        return RR_ERR_NULL;
+    if (!isfinite(y))
+        return RR_ERR_NONFINITE;
+    r = t->rows;
+    if (t->nrows < 2 || !(y >= r[0] && y <= r[(size_t)(t->nrows - 1) * RR_NH_ROW_LEN]))
+        return RR_ERR_TABLE;
+    lo = 0;
+    hi = t->nrows - 1;
+    while (hi - lo > 1) {
+        const int mid = (lo + hi) / 2;
+        if (r[(size_t)mid * RR_NH_ROW_LEN] <= y)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    *row = lo;
+    *w = (y - r[(size_t)lo * RR_NH_ROW_LEN])
+         / (r[(size_t)hi * RR_NH_ROW_LEN] - r[(size_t)lo * RR_NH_ROW_LEN]);
+    return RR_OK;
+}
+
+/* --------------------------------------------------------- creepages */
+
+void rr_nonhertz_frame(double PY, double PZ, double delta, double theta, double sigma,
+                       double R0, rr_nh_frame *f)
+{
+    const double sd = sin(delta), cd = cos(delta), st = sin(theta), ct = cos(theta);
+    f->P[0] = (PZ + R0) * st;
+    f->P[1] = PY;
+    f->P[2] = theta == 0.0 ? PZ : (PZ + R0) * ct - R0;
+    f->t1[0] = ct, f->t1[1] = 0.0, f->t1[2] = -st;
+    f->n[0] = cd * st, f->n[1] = -sigma * sd, f->n[2] = cd * ct;
+    f->t2[0] = sigma * sd * st, f->t2[1] = cd, f->t2[2] = sigma * sd * ct;
+}
+
+static double dot3(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void cross3(const double *a, const double *b, double *out)
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+int rr_nonhertz_creepages(const rr_motion *ws, double roller_spin, double R0,
+                          const rr_nh_frame *f, double pen, double dz, double vmin, double k[4])
+{
+    const double wr[3] = {0.0, -roller_spin, 0.0};
+    double q[3], vw[3], vr[3], sum[3], slip[3], dw[3];
+    int m;
+    /* the wheel's point P - pen n from the centre lowered by dz; the
+     * roller's point P from its axis (0, ., -R0) */
+    for (m = 0; m < 3; m++)
+        q[m] = f->P[m] - pen * f->n[m] - (m == 2 ? ws->c[2] - dz : ws->c[m]);
+    cross3(ws->w, q, vw);
+    q[0] = f->P[0];
+    q[1] = f->P[1];
+    q[2] = f->P[2] + R0;
+    cross3(wr, q, vr);
+    for (m = 0; m < 3; m++) {
+        vw[m] += ws->v[m];
+        sum[m] = vw[m] + vr[m];
+        slip[m] = vw[m] - vr[m];
+        dw[m] = ws->w[m] - wr[m];
+    }
+    k[3] = fmax(fabs(dot3(sum, f->t1)) / 2.0, vmin);
+    k[0] = dot3(slip, f->t1) / k[3];
+    k[1] = dot3(slip, f->t2) / k[3];
+    k[2] = dot3(dw, f->n) / k[3];
+    return rr_all_finite(k, 4) ? RR_OK : RR_ERR_RANGE;
+}
+
+/* ------------------------------------------------------------- a patch */
+
+/* Interval k of v on the nodes x[0..n-1] and weight *t (held at the ends). */
+static int locate_node(const double *x, int n, double v, double *t)
+{
+    int k = 0;
+    if (v <= x[0]) {
+        *t = 0.0;
+        return 0;
+    }
+    if (v >= x[n - 1]) {
+        *t = 1.0;
+        return n - 2;
+    }
+    while (k < n - 2 && v > x[k + 1])
+        k++;
+    *t = (v - x[k]) / (x[k + 1] - x[k]);
+    return k;
+}
+
+/* Quantity q of patch p at node interval k, weight t. */
+static double node(const double *p, int q, int k, double t)
+{
+    return (1.0 - t) * p[RR_NH_NODE(q, k)] + t * p[RR_NH_NODE(q, k + 1)];
+}
+
+/* A patch's normal load at lowering e beyond its gap, and its n_z. */
+static double load(const double *p, double e, double *nz)
+{
+    double t;
+    int k;
+    if (!(e > 0.0)) {
+        *nz = 1.0;
+        return 0.0;
+    }
+    k = locate_node(p + RR_NH_NODE(RR_NH_E, 0), RR_NH_NODES, e, &t);
+    *nz = cos(node(p, RR_NH_DELTA, k, t));
+    return e * sqrt(e) * node(p, RR_NH_Q, k, t);
+}
+
+/* Correction node c of patch p (over mu N) at normalised creepage (x, y):
+ * linear in u between 0 (R0), the nodes and 1 (none), periodic in theta. */
+static void residual(const double *p, int c, double x, double y, double r[3])
+{
+    const double *cb = p + RR_NH_CORR_AT(c);
+    const double rho = hypot(x, y), u = rho / (1.0 + rho);
+    double th = atan2(y, x), kk, tj, tu, lo[3], hi[3];
+    int j0, j1, i, m;
+#define RING(i, j, m) cb[4 + ((i) * RR_NH_TH + (j)) * 3 + (m)]
+    if (th < 0.0)
+        th += TWO_PI;
+    kk = th / (TWO_PI / RR_NH_TH);
+    j0 = (int)floor(kk);
+    tj = kk - j0;
+    j0 %= RR_NH_TH;
+    j1 = (j0 + 1) % RR_NH_TH;
+    if (u <= rr_nh_corr_u[0]) {
+        tu = u / rr_nh_corr_u[0];
+        for (m = 0; m < 3; m++) {
+            lo[m] = cb[1 + m];
+            hi[m] = (1 - tj) * RING(0, j0, m) + tj * RING(0, j1, m);
+        }
+    } else if (u >= rr_nh_corr_u[RR_NH_U - 1]) {
+        tu = (u - rr_nh_corr_u[RR_NH_U - 1]) / (1.0 - rr_nh_corr_u[RR_NH_U - 1]);
+        for (m = 0; m < 3; m++) {
+            lo[m] = (1 - tj) * RING(RR_NH_U - 1, j0, m) + tj * RING(RR_NH_U - 1, j1, m);
+            hi[m] = 0.0;
+        }
+    } else {
+        i = 0;
+        while (u > rr_nh_corr_u[i + 1])
+            i++;
+        tu = (u - rr_nh_corr_u[i]) / (rr_nh_corr_u[i + 1] - rr_nh_corr_u[i]);
+        for (m = 0; m < 3; m++) {
+            lo[m] = (1 - tj) * RING(i, j0, m) + tj * RING(i, j1, m);
+            hi[m] = (1 - tj) * RING(i + 1, j0, m) + tj * RING(i + 1, j1, m);
+        }
+    }
+#undef RING
+    for (m = 0; m < 3; m++)
+        r[m] = (1 - tu) * lo[m] + tu * hi[m];
+}
+
+/* The correction at lowering e: linear in e between its two nodes, held
+ * outside them. */
+static void correction(const double *p, double e, double x, double y, double r[3])
+{
+    const double e0 = p[RR_NH_CORR_AT(0)], e1 = p[RR_NH_CORR_AT(1)];
+    double r1[3], t;
+    int m;
+    if (e <= e0) {
+        residual(p, 0, x, y, r);
+        return;
+    }
+    if (e >= e1) {
+        residual(p, 1, x, y, r);
+        return;
+    }
+    t = (e - e0) / (e1 - e0);
+    residual(p, 0, x, y, r);
+    residual(p, 1, x, y, r1);
+    for (m = 0; m < 3; m++)
+        r[m] = (1 - t) * r[m] + t * r1[m];
+}
+
+/* Patch p of a row at the row's lowering dz: *out, and *vert the vertical
+ * component of its force. */
+static int patch_forces(const rr_nh_table *tb, const double *p, double dz, const rr_motion *ws,
+                        const rr_nh_state *s, rr_nh_patch *out, double *vert, int *calls)
+{
+    const double e = dz - p[0], sig = tb->sigma;
+    double t, d, PY, PZ, xc, yc, ab, K11, K22, K23, N, k[4], theta = 0.0;
+    double cxc, cyc, c2, cc, sy, sp, muN, corr[3];
+    rr_nh_frame fr;
+    rr_kalker_coeffs kc;
+    rr_contact_problem cp;
+    rr_forces f;
+    int kn, st, m;
+    memset(out, 0, sizeof *out);
+    *vert = 0.0;
+    if (!(e > 0.0))
+        return RR_OK;
+    kn = locate_node(p + RR_NH_NODE(RR_NH_E, 0), RR_NH_NODES, e, &t);
+    N = e * sqrt(e) * node(p, RR_NH_Q, kn, t);
+    d = node(p, RR_NH_DELTA, kn, t);
+    PY = node(p, RR_NH_PY, kn, t);
+    PZ = node(p, RR_NH_PZ, kn, t);
+    xc = node(p, RR_NH_XC, kn, t);
+    yc = node(p, RR_NH_YC, kn, t);
+    ab = node(p, RR_NH_AB, kn, t);
+    ab = ab < AB_LO ? AB_LO : ab > AB_HI ? AB_HI : ab;
+    K11 = node(p, RR_NH_K11, kn, t);
+    K22 = node(p, RR_NH_K22, kn, t);
+    K23 = node(p, RR_NH_K23, kn, t);
+    if (s->x != 0.0 || s->yaw != 0.0) {
+        /* the rig's law: the wheel's centre at x_j = x - a sin(yaw), the
+         * contact point led round it by sigma r tan(delta) yaw; the angle
+         * round the roller axis from both (r, R the patch's radii) */
+        const double r = ws->c[2] - dz - PZ, R = PZ + tb->R0;
+        const double xj = s->x - (PY - ws->c[1]) * sin(s->yaw);
+        theta = asin(xj / (r + R)) + sig * r * tan(d) * s->yaw / (r + R);
+    }
+    rr_nonhertz_frame(PY, PZ, d, theta, sig, tb->R0, &fr);
+    if ((st = rr_nonhertz_creepages(ws, s->roller_spin, tb->R0, &fr, e * cos(d), dz, s->vmin,
+                                    k)) < 0)
+        return st;
+    /* the creepages at the centroid; the calibrated ellipse there */
+    cxc = k[0] - k[2] * yc;
+    cyc = k[1] + k[2] * xc;
+    if ((st = rr_kalker(ab, tb->nu, &kc)) < 0)
+        return st;
+    c2 = K11 / (tb->G * kc.c11);
+    cc = sqrt(c2);
+    sy = K22 / (tb->G * c2 * kc.c22);
+    sp = K23 / (tb->G * c2 * cc * kc.c23);
+    memset(&cp, 0, sizeof cp);          /* a zeroed problem is an ellipse, Coulomb */
+    cp.a = cc * sqrt(ab);
+    cp.b = cc / sqrt(ab);
+    cp.N = N;
+    cp.G = tb->G;
+    cp.nu = tb->nu;
+    cp.cx = cxc;
+    cp.cy = sy * cyc;
+    cp.cphi = sp * k[2];
+    cp.friction.mu0 = s->mu;
+    cp.friction.A = 1.0;
+    (*calls)++;
+    if ((st = rr_exact_table_forces(&rr_exact_table_builtin, &cp, &f)) < 0)
+        return st;
+    /* plus the tabulated exact departure (normalised by this friction) */
+    muN = s->mu * N;
+    correction(p, e, K11 * cxc / muN, K22 * cyc / muN, corr);
+    out->N = N;
+    out->fx = f.fx + muN * corr[0];
+    out->fy = f.fy + muN * corr[1];
+    out->mz = f.mz + muN * corr[2];
+    out->delta = d;
+    out->cx = cxc;
+    out->cy = cyc;
+    out->cphi = k[2];
+    for (m = 0; m < 3; m++) {
+        out->force[m] = out->fx * fr.t1[m] + out->fy * fr.t2[m] + N * fr.n[m];
+        out->point[m] = fr.P[m] + xc * fr.t1[m] + yc * fr.t2[m];
+        out->t1[m] = fr.t1[m];
+        out->t2[m] = fr.t2[m];
+        out->n[m] = fr.n[m];
+    }
+    out->area = node(p, RR_NH_AREA, kn, t) * cbrt(N * N);
+    out->pmax = node(p, RR_NH_PMAX, kn, t) * cbrt(N);
+    *vert = out->force[2];
+    return RR_OK;
+}
+
+/* --------------------------------------------------------------- a row */
+
+/* The patches' normal loads' vertical parts at lowering dz. */
+static double vertical_normal(const double *row, double dz)
+{
+    double sum = 0.0, nz;
+    int j;
+    for (j = 0; j < (int)row[1]; j++) {
+        const double *p = row + RR_NH_PATCH(j);
+        const double N = load(p, dz - p[0], &nz);
+        sum += N * nz;
+    }
+    return sum;
+}
+
+/* dz with vertical_normal(dz) = target: a secant on S^(2/3) (nearly
+ * linear in dz), bisection once bracketed and the secant leaves the
+ * bracket.  RR_ERR_RANGE if it does not settle. */
+static int solve_dz(const double *row, double target, double *dz_io)
+{
+    const double tt = cbrt(target) * cbrt(target);
+    double dz = *dz_io, d0 = 0.0, f0 = 0.0, lo = 0.0, hi = 0.0, S, f, step;
+    int it, have = 0, hlo = 0, hhi = 0;
+    for (it = 0; it < DZ_ITER; it++) {
+        S = vertical_normal(row, dz);
+        if (fabs(S - target) <= DZ_TOL * target) {
+            *dz_io = dz;
+            return RR_OK;
+        }
+        if (S < target && (!hlo || dz > lo))
+            lo = dz, hlo = 1;
+        if (S > target && (!hhi || dz < hi))
+            hi = dz, hhi = 1;
+        f = cbrt(S) * cbrt(S) - tt;
+        step = dz * pow(target / (S > 1e-3 * target ? S : 1e-3 * target), 2.0 / 3.0);
+        if (have && f != f0 && dz != d0)
+            step = dz - f * (dz - d0) / (f - f0);
+        if (hlo && hhi && !(lo < step && step < hi))
+            step = 0.5 * (lo + hi);
+        else if (!(isfinite(step) && step > 0.0))
+            step = hhi ? 0.5 * dz : 2.0 * dz;
+        d0 = dz, f0 = f, have = 1;
+        dz = step;
+    }
+    return RR_ERR_RANGE;
+}
+
+/* One row at vertical load Fz: its patches (out->patch, npatch) and sums. */
+static int eval_row(const rr_nh_table *tb, const double *row, const rr_motion *ws,
+                    const rr_nh_state *s, rr_nh_result *out, double *dz_out)
+{
+    const int np = (int)row[1];
+    const double *p0 = row + RR_NH_PATCH(0);
+    double Tz = 0.0, T0 = 0.0, r0 = 0.0, r, step, dz, t, a0, a1, vert, total;
+    int j, k, st, pass;
+    /* a start: the shallowest-gap patch's nodes, N cos(delta) = Fz */
+    for (j = 1; j < np; j++)
+        if (row[RR_NH_PATCH(j)] < p0[0])
+            p0 = row + RR_NH_PATCH(j);
+    for (k = 0; k < RR_NH_NODES - 2; k++) {
+        const double e = p0[RR_NH_NODE(RR_NH_E, k + 1)];
+        if (e * sqrt(e) * p0[RR_NH_NODE(RR_NH_Q, k + 1)] * cos(p0[RR_NH_NODE(RR_NH_DELTA, k + 1)])
+            >= s->Fz)
+            break;
+    }
+    {
+        const double e0 = p0[RR_NH_NODE(RR_NH_E, k)], e1 = p0[RR_NH_NODE(RR_NH_E, k + 1)];
+        a0 = e0 * sqrt(e0) * p0[RR_NH_NODE(RR_NH_Q, k)] * cos(p0[RR_NH_NODE(RR_NH_DELTA, k)]);
+        a1 = e1 * sqrt(e1) * p0[RR_NH_NODE(RR_NH_Q, k + 1)]
+             * cos(p0[RR_NH_NODE(RR_NH_DELTA, k + 1)]);
+        t = (s->Fz - a0) / (a1 - a0);
+        dz = p0[0] + e0 + t * (e1 - e0);
+        if (!(dz > p0[0]))
+            dz = p0[0] + e0;
+    }
+    for (pass = 0; pass < TZ_PASSES; pass++) {
+        double Tn;
+        if (!(s->Fz - Tz > 0.0))
+            return RR_ERR_RANGE;
+        if ((st = solve_dz(row, s->Fz - Tz, &dz)) < 0)
+            return st;
+        for (j = 0; j < np; j++) {
+            const double *p = row + RR_NH_PATCH(j);
+            if (dz - p[0] > E_BEYOND * p[RR_NH_NODE(RR_NH_E, RR_NH_NODES - 1)])
+                return RR_ERR_TABLE;
+        }
+        total = 0.0;
+        out->npatch = np;
+        for (j = 0; j < np; j++) {
+            if ((st = patch_forces(tb, row + RR_NH_PATCH(j), dz, ws, s, &out->patch[j], &vert,
+                                   &out->table_calls)) < 0)
+                return st;
+            total += vert;
+        }
+        /* the creep forces' vertical share: the total's less the normal loads' */
+        Tn = total - vertical_normal(row, dz);
+        r = Tn - Tz;
+        if (fabs(r) < TZ_TOL * s->Fz) {
+            *dz_out = dz;
+            return RR_OK;
+        }
+        /* a secant on the fixed point's residual (at the flange the share
+         * is a large part of Fz and the plain iteration slow), kept below Fz */
+        step = Tn;
+        if (pass > 0 && r != r0)
+            step = Tz - r * (Tz - T0) / (r - r0);
+        if (!(step < s->Fz) || !isfinite(step))
+            step = 0.5 * (Tz + (Tn < s->Fz ? Tn : Tz));
+        T0 = Tz;
+        r0 = r;
+        Tz = step;
+    }
+    return RR_ERR_RANGE;
+}
+
+/* ----------------------------------------------------------- the wheel */
+
+static void nan_result(rr_nh_result *out)
+{
+    int m;
+    memset(out, 0, sizeof *out);
+    for (m = 0; m < 3; m++)
+        out->force[m] = out->moment[m] = out->centre[m] = NAN;
+    out->N = out->area = out->pmax = out->w = out->dz[0] = out->dz[1] = NAN;
+}
+
+/* a += w b for the blended fields of a patch. */
+static void add_patch(rr_nh_patch *a, const rr_nh_patch *b, double w)
+{
+    int m;
+    a->N += w * b->N;
+    a->fx += w * b->fx;
+    a->fy += w * b->fy;
+    a->mz += w * b->mz;
+    a->delta += w * b->delta;
+    a->cx += w * b->cx;
+    a->cy += w * b->cy;
+    a->cphi += w * b->cphi;
+    a->area += w * b->area;
+    a->pmax += w * b->pmax;
+    for (m = 0; m < 3; m++) {
+        a->force[m] += w * b->force[m];
+        a->point[m] += w * b->point[m];
+        a->t1[m] += w * b->t1[m];
+        a->t2[m] += w * b->t2[m];
+        a->n[m] += w * b->n[m];
+    }
+}
+
+static void normalise(double *v)
+{
+    const double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    v[0] /= l;
+    v[1] /= l;
+    v[2] /= l;
+}
+
+int rr_nonhertz_wheel(const rr_nh_table *t, const rr_nh_state *s, rr_nh_result *out)
+{
+    rr_nh_result rr[2];
+    const double *row[2];
+    double w, wt[2];
+    int i, j, m, st, calls;
+    if (!out)
+        return RR_ERR_NULL;
+    nan_result(out);
+    if (!t || !t->rows || !s)
+        return RR_ERR_NULL;
+    {
+        const double v[] = {s->y, s->Fz, s->mu, s->roller_spin, s->vmin, s->x, s->yaw};
+        for (i = 0; i < 2; i++)
+            if (!rr_all_finite(s->motion[i].c, 3) || !rr_all_finite(s->motion[i].v, 3)
+                || !rr_all_finite(s->motion[i].w, 3))
+                return RR_ERR_NONFINITE;
+        if (!rr_all_finite(v, RR_COUNTOF(v)))
+            return RR_ERR_NONFINITE;
+    }
+    if (!(s->Fz > 0.0))
+        return RR_ERR_LOAD;
+    if (!(s->mu > 0.0))
+        return RR_ERR_FRICTION;
+    if (!(s->vmin > 0.0))
+        return RR_ERR_SPEED;
+    if ((st = rr_nonhertz_locate(t, s->y, &i, &w)) < 0)
+        return st;
+    wt[0] = 1.0 - w;
+    wt[1] = w;
+    calls = 0;
+    for (j = 0; j < 2; j++) {
+        const double np = (row[j] = t->rows + (size_t)(i + j) * RR_NH_ROW_LEN)[1];
+        if (!(np >= 1.0 && np <= RR_NH_MAX_PATCHES))
+            return RR_ERR_TABLE;
+        memset(&rr[j], 0, sizeof rr[j]);
+        /* a row of zero weight is not needed (y on a row) */
+        if (wt[j] == 0.0)
+            continue;
+        if ((st = eval_row(t, row[j], &s->motion[j], s, &rr[j], &rr[j].dz[0])) < 0) {
+            nan_result(out);
+            return st;
+        }
+        calls += rr[j].table_calls;
+    }
+    /* the blend: totals, moments about each row's centre, patches by index */
+    memset(out, 0, sizeof *out);
+    out->row = i;
+    out->w = w;
+    out->table_calls = calls;
+    for (j = 0; j < 2; j++) {
+        int k;
+        out->dz[j] = wt[j] == 0.0 ? NAN : rr[j].dz[0];
+        if (wt[j] == 0.0)
+            continue;
+        if (rr[j].npatch > out->npatch)
+            out->npatch = rr[j].npatch;
+        for (k = 0; k < rr[j].npatch; k++) {
+            const rr_nh_patch *p = &rr[j].patch[k];
+            const double *c = s->motion[j].c;
+            const double r[3] = {p->point[0] - c[0], p->point[1] - c[1], p->point[2] - c[2]};
+            const double *n = p->n;
+            add_patch(&out->patch[k], p, wt[j]);
+            out->moment[0] += wt[j] * (r[1] * p->force[2] - r[2] * p->force[1] + p->mz * n[0]);
+            out->moment[1] += wt[j] * (r[2] * p->force[0] - r[0] * p->force[2] + p->mz * n[1]);
+            out->moment[2] += wt[j] * (r[0] * p->force[1] - r[1] * p->force[0] + p->mz * n[2]);
+        }
+    }
+    /* a patch only one row has keeps that row's place and angle */
+    for (j = 0; j < out->npatch; j++) {
+        const int in0 = wt[0] != 0.0 && j < rr[0].npatch, in1 = wt[1] != 0.0 && j < rr[1].npatch;
+        if (in0 != in1) {
+            const rr_nh_patch *p = in0 ? &rr[0].patch[j] : &rr[1].patch[j];
+            out->patch[j].delta = p->delta;
+            for (m = 0; m < 3; m++) {
+                out->patch[j].point[m] = p->point[m];
+                out->patch[j].t1[m] = p->t1[m];
+                out->patch[j].t2[m] = p->t2[m];
+                out->patch[j].n[m] = p->n[m];
+            }
+        }
+        normalise(out->patch[j].t1);
+        normalise(out->patch[j].t2);
+        normalise(out->patch[j].n);
+    }
+    for (j = 0; j < out->npatch; j++) {
+        const rr_nh_patch *p = &out->patch[j];
+        out->N += p->N;
+        out->area += p->area;
+        out->pmax = p->pmax > out->pmax ? p->pmax : out->pmax;
+        for (m = 0; m < 3; m++) {
+            out->force[m] += p->force[m];
+            out->centre[m] += p->N * p->point[m];
+        }
+    }
+    for (m = 0; m < 3; m++)
+        out->centre[m] = out->N > 0.0 ? out->centre[m] / out->N : NAN;
+    if (!rr_all_finite(out->force, 3) || !rr_all_finite(out->moment, 3)
+        || !rr_all_finite(out->centre, 3) || !isfinite(out->N) || !isfinite(out->area)
+        || !isfinite(out->pmax)) {
+        nan_result(out);
+        return RR_ERR_RANGE;
+    }
+    return RR_OK;
+}

@@ -1,0 +1,95 @@
+/*
+ * rr_nonhertz_table.h - one row of the non-Hertzian contact's table
+ * (rr_nonhertz.h's layout) built by the exact theory: the wheel at lateral
+ * shift y_ws lowered from its zero-gap pose by RR_NH_NODES lowerings e_k =
+ * f_k e_max, f = (0.03, 0.1, 0.2, 0.33, 0.46, 0.6, 0.75, 0.88, 1), e_max
+ * the lowering rr_wheel_exact finds for the vertical load Fz_max; at each
+ * the patch on CONTACT's weighted plane at the pose's own interpenetration
+ * and the exact normal solution whose approach is that interpenetration
+ * (the load the pose carries: N(e) by definition, monotone where one plane
+ * holds the patch, NONHERTZ_STUDY.md's construction); per node the
+ * pressure's centroid and moments, area and peak, and the exact linear
+ * creep coefficients about the centroid (three tiny creepages, Richardson
+ * from elements half as large where asked); at nodes RR_NH_CORR_NODE0, 1
+ * the exact forces (Richardson, n_corr elements across) less the
+ * calibrated ellipse's at RR_NH_U x RR_NH_TH normalised creepages and at
+ * zero, all at the row's free-rolling spin (the wheelset's motion given).
+ *
+ * One patch per row: rr_gap's, every region within `combine` (CONTACT's
+ * D_COMB, 4 mm) of the deepest in it; regions farther out are not
+ * tabulated (info->excluded counts them; none reach the pairs' flanges
+ * within the rig's loads, NONHERTZ_STUDY.md).  No allocation: the
+ * caller's workspace (rr_nonhertz_row_workspace_len for grids up to side x
+ * side, zero-filled before its first use).  One workspace per thread: rows
+ * are independent.
+ */
+#ifndef RR_NONHERTZ_TABLE_H
+#define RR_NONHERTZ_TABLE_H
+
+#include <stddef.h>
+#include "geometry/rr_geometry.h"
+#include "geometry/rr_creepage.h"
+#include "geometry/rr_nonhertz.h"
+
+typedef struct {
+    const rr_wheel_roller *pair;   /* the side's profiles and placement */
+    double y_ws;                   /* the row's lateral shift [m] */
+    rr_wheelset_pose pose0;        /* rr_wheelset_contact's zero-gap pose there */
+    rr_contact_point point;        /* and this side's contact point */
+    double Fz_max;                 /* the largest vertical load of the nodes [N], > 0 */
+    double E, nu;                  /* both bodies [Pa], [-] */
+    double mu;                     /* the correction's friction (the table's mu_ref) */
+    rr_motion wheelset;            /* the wheelset's motion at free rolling there (the
+                                      correction's spin) */
+    double roller_spin, vmin;      /* [rad/s], [m/s] > 0 */
+    int n;                         /* elements across the nodes' grids, 8..RR_GAP_MAX_N/2 */
+    int n_corr;                    /* and across the correction's, 8..n */
+    int richardson;                /* 1: coefficients and correction extrapolated from
+                                      elements half as large; 0: the grids' own */
+    double combine;                /* regions farther apart are left out [m], >= 0 */
+    double tol;                    /* the solver's tolerance and iterations */
+    int maxit;
+    const rr_interrupt *interrupt;
+} rr_nh_row_problem;
+
+/* n 40, n_corr 30, Richardson, E 2.1e11, nu 0.28, mu 0.52, vmin 1e-3,
+ * combine 4 mm, tol 1e-6, maxit 5000; the rest zero (the caller's). */
+void rr_nonhertz_row_default(rr_nh_row_problem *pb);
+
+/* Where a build failed (rr_nh_row_info.why). */
+enum rr_nh_row_why {
+    RR_NH_ROW_OK = 0,
+    RR_NH_ROW_NODE = 1,      /* the largest load's rr_wheel_exact (wheel_why says why), or
+                                a node's contact keeps reaching its grid's edge */
+    RR_NH_ROW_GRID = 2,      /* a node's, a fine or a correction grid's rr_gap_build (gap_why) */
+    RR_NH_ROW_SOLVE = 3,     /* a solve of the coefficients or the correction */
+    RR_NH_ROW_COEFF = 4      /* a linear coefficient not positive: the patch too coarse */
+};
+
+typedef struct {
+    int why;                 /* rr_nh_row_why */
+    int node;                /* the node at fault */
+    int wheel_why, gap_why;  /* rr_wheel_exact_why, rr_gap_why */
+    size_t need;             /* RR_ERR_WORKSPACE: the grid side the row needs */
+    int solves;              /* exact solves spent */
+    int excluded;            /* regions in contact left out (beyond combine: where h is
+                                below the approach), the most at any node */
+} rr_nh_row_info;
+
+/* Doubles of workspace for grids up to side x side (the fine ones twice
+ * that); 0 if pb is NULL or side outside [8, RR_EXACT_MAX_GRID / 2]. */
+size_t rr_nonhertz_row_workspace_len(const rr_nh_row_problem *pb, int side);
+
+/*
+ * rr_nonhertz_row - one row of the table (RR_NH_ROW_LEN doubles; one patch).
+ *   status: 0 OK, RR_WARN_NOT_CONVERGED (a solve hit maxit); errors (row
+ *   NaN; info says where): RR_ERR_NULL, RR_ERR_NONFINITE, RR_ERR_LOAD
+ *   (Fz_max), RR_ERR_PARAM (n, n_corr, richardson, combine), RR_ERR_WORKSPACE
+ *   (a grid beyond side: info->need the side it needs), the statuses of
+ *   rr_wheel_exact, rr_gap_build, rr_exact_solve, rr_kalker and
+ *   rr_exact_table_forces, RR_ERR_GEOMETRY (why COEFF).
+ */
+int rr_nonhertz_row(const rr_nh_row_problem *pb, double *work, size_t work_len, int side,
+                    double *row, rr_nh_row_info *info);
+
+#endif

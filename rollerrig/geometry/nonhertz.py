@@ -1,0 +1,261 @@
+"""A fast non-Hertzian contact of a wheel on its roller: tables per lateral
+shift built by the exact theory, evaluated in microseconds.
+
+    g = rr.RigGeometry.measured_pair()
+    t = rr.nonhertz_table(g, -0.004, 0.004, Fz=6e4)        # both sides, rows 0.2 mm apart
+    t.save("pair.npz"); t = rr.NonHertzTable.load("pair.npz")
+    c = rr.rig_contact(ct, y=0.002, spin=..., roller_spin=..., Fz_left=6e4, Fz_right=6e4,
+                       patch="nonhertz", nonhertz=t)
+
+The method (benchmarks/NONHERTZ_STUDY.md, "The recommended method, for C"):
+per row (a lateral shift of the wheelset) the exact normal solution of the
+wheel's patch at nine vertical loads up to 1.85 times the nominal one (load
+against lowering, plane, pressure centroid and moments, area, peak) and
+its exact linear creep coefficients, and at two loads the exact creep
+forces' departure from the calibrated ellipse on a grid of creepages; at
+run time the two rows around y, the shared lowering from the vertical
+load, per patch the calibrated ellipse by the exact-theory table plus the
+tabulated correction (csrc/geometry/rr_nonhertz.h; the rows are built by
+rr_nonhertz_table.h, in threads).
+"""
+import warnings
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import _core
+from .._errors import RollerRigError, RollerRigWarning, status_message
+from .wheelset import RigGeometry, wheelset_contact
+
+__all__ = ["NonHertzSide", "NonHertzTable", "nonhertz_table"]
+
+#: the rows' load nodes reach this multiple of the nominal vertical load
+#: (the study's 1.1^1.5 x 1.6: its lowering 1.1 times that of 1.6 Fz)
+LOAD_SPAN = 1.6 * 1.1 ** 1.5
+#: the rigid contact point's jumps: a lateral move of the contact point
+#: larger than this between rows 0.01 mm apart
+JUMP = 0.5e-3
+#: rows within this distance of a jump are refined
+JUMP_ZONE = 0.3e-3
+
+
+@dataclass(frozen=True, eq=False)
+class NonHertzSide:
+    """One side's table: rows (n, NH_ROW_LEN) and how they were built."""
+
+    rows: np.ndarray
+    sigma: float       #: +1 left, -1 right
+    R0: float          #: the roller's nominal radius [m]
+    G: float           #: shear modulus [Pa]
+    nu: float
+    mu_ref: float      #: the friction the correction was built at
+
+    @property
+    def y(self):
+        """The rows' lateral shifts [m]."""
+        return self.rows[:, 0].copy()
+
+    @property
+    def head(self):
+        return (float(self.sigma), float(self.R0), float(self.G), float(self.nu),
+                float(self.mu_ref))
+
+    def check(self):
+        st, bad = _core.nonhertz_check(self.rows, self.head)
+        if st < 0:
+            where = ("the header" if bad < 0
+                     else f"row {bad} (y = {float(self.rows[bad, 0])!r} m)")
+            raise RollerRigError(f"NonHertzTable: {where} is not a valid table row (a value "
+                                 f"not finite or out of its range, rr_nonhertz.h)")
+        return self
+
+
+@dataclass(frozen=True, eq=False)
+class NonHertzTable:
+    """A profile pair's tables, one per side (None where not built)."""
+
+    left: NonHertzSide
+    right: NonHertzSide
+    Fz: float                  #: the nominal vertical load the nodes were sized for [N]
+    build_seconds: float = float("nan")   #: wall time of the build
+
+    def side(self, name):
+        s = getattr(self, name)
+        if s is None:
+            raise RollerRigError(f"NonHertzTable: no table for the {name} side")
+        return s
+
+    def save(self, path):
+        """Save as .npz (numpy arrays only: np.load needs no pickle)."""
+        out = dict(Fz=self.Fz, build_seconds=self.build_seconds,
+                   layout=np.array([_core.NH_ROW_LEN, _core.NH_NODES, _core.NH_MAX_PATCHES]))
+        for name in ("left", "right"):
+            s = getattr(self, name)
+            if s is not None:
+                out[f"{name}_rows"] = s.rows
+                out[f"{name}_head"] = np.array(s.head)
+        np.savez(path, **out)
+
+    @classmethod
+    def load(cls, path):
+        """A table saved by save(); checked row by row."""
+        with np.load(path, allow_pickle=False) as f:
+            layout = tuple(int(v) for v in f["layout"])
+            if layout != (_core.NH_ROW_LEN, _core.NH_NODES, _core.NH_MAX_PATCHES):
+                raise RollerRigError(f"NonHertzTable.load: {path}: the layout {layout} is not "
+                                     f"this library's")
+            sides = {}
+            for name in ("left", "right"):
+                if f"{name}_rows" in f:
+                    h = f[f"{name}_head"]
+                    sides[name] = NonHertzSide(np.ascontiguousarray(f[f"{name}_rows"],
+                                                                    dtype=float),
+                                               *(float(v) for v in h)).check()
+                else:
+                    sides[name] = None
+            return cls(sides["left"], sides["right"], float(f["Fz"]),
+                       float(f["build_seconds"]))
+
+
+def _jumps(geometry, y_lo, y_hi, side):
+    """Lateral shifts where the side's rigid contact point jumps."""
+    y = np.arange(y_lo - JUMP_ZONE, y_hi + JUMP_ZONE + 5e-6, 1e-5)
+    c = getattr(wheelset_contact(geometry, y), side)
+    k = np.flatnonzero(np.abs(np.diff(c.y)) > JUMP)
+    return 0.5 * (y[k] + y[k + 1])
+
+
+def row_shifts(geometry, y_min, y_max, dy, side, dy_jump=None):
+    """The rows: every dy from y_min to y_max, every dy_jump within
+    JUMP_ZONE of the rigid contact point's jumps (none if dy_jump is None)."""
+    n = int(np.ceil((y_max - y_min) / dy - 1e-9))
+    y = list(np.linspace(y_min, y_min + n * dy, n + 1))
+    if dy_jump is not None:
+        for j in _jumps(geometry, y_min, y_max, side):
+            y += list(np.arange(j - JUMP_ZONE, j + JUMP_ZONE + 1e-9, dy_jump))
+    y = np.unique(np.round(np.array(y), 9))
+    return y[(y >= y_min - 1e-12) & (y <= y_min + n * dy + 1e-12)]
+
+
+def _number(func, name, v, positive=True):
+    ok = isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, bool)
+    if not ok or not np.isfinite(float(v)) or (positive and not float(v) > 0):
+        raise RollerRigError(f"{func}: {name} must be a finite number{' > 0' if positive else ''}"
+                             f", got {v!r}")
+    return float(v)
+
+
+def nonhertz_table(geometry, y_min, y_max, *, Fz, dy=2e-4, dy_jump=5e-5, mu_ref=0.52,
+                   E=2.1e11, nu=0.28, sides=("left", "right"), n=40, n_corr=30,
+                   richardson=True, combine=4e-3, tol=1e-6, maxit=5000, workers=2, y=None):
+    """The non-Hertzian contact's tables of a profile pair (NonHertzTable).
+
+    Rows from y_min to y_max [m] every dy, every dy_jump within 0.3 mm of a
+    jump of the rigid contact point (None: none; the rows must not straddle
+    a jump, NONHERTZ_STUDY.md), or at the shifts y given.  Fz [N]: the
+    nominal vertical wheel load (the nodes reach 1.85 Fz; beyond them the
+    loads are extrapolated by Hertz's law).  mu_ref: the friction of the
+    correction; E, nu: both bodies.  n, n_corr: elements across the nodes'
+    and the correction's grids; richardson: extrapolate the coefficients
+    and the correction from elements half as large.  workers: threads
+    building rows side by side.
+    """
+    import time
+    func = "nonhertz_table"
+    if not isinstance(geometry, RigGeometry):
+        raise RollerRigError(f"{func}: geometry must be a RigGeometry, got {geometry!r:.60}")
+    Fz = _number(func, "Fz", Fz)
+    mu_ref = _number(func, "mu_ref", mu_ref)
+    E = _number(func, "E", E)
+    nu = _number(func, "nu", nu, positive=False)
+    combine = _number(func, "combine", combine, positive=False)
+    for name, v in (("n", n), ("n_corr", n_corr), ("workers", workers)):
+        if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < 1:
+            raise RollerRigError(f"{func}: {name} must be a positive integer, got {v!r}")
+    if not set(sides) <= {"left", "right"} or not sides:
+        raise RollerRigError(f"{func}: sides must name 'left' and/or 'right', got {sides!r}")
+    if y is None:
+        y_min = _number(func, "y_min", y_min, positive=False)
+        y_max = _number(func, "y_max", y_max, positive=False)
+        dy = _number(func, "dy", dy)
+        if not y_max > y_min:
+            raise RollerRigError(f"{func}: y_max must exceed y_min, got {y_min!r}, {y_max!r}")
+        if dy_jump is not None:
+            dy_jump = _number(func, "dy_jump", dy_jump)
+    G = E / (2.0 * (1.0 + nu))
+    t0 = time.perf_counter()
+    out = {}
+    for side in ("left", "right"):
+        if side not in sides:
+            out[side] = None
+            continue
+        ys = (np.unique(np.asarray(y, dtype=float)) if y is not None
+              else row_shifts(geometry, y_min, y_max, dy, side, dy_jump))
+        if ys.size < 2 or not np.all(np.isfinite(ys)):
+            raise RollerRigError(f"{func}: at least two finite rows are needed, got {ys!r:.80}")
+        with ThreadPoolExecutor(max_workers=int(workers)) as ex:
+            built = list(ex.map(lambda v: _row(geometry, side, float(v), Fz, E, nu, mu_ref, n,
+                                               n_corr, richardson, combine, tol, maxit), ys))
+        rows = [r for r, _ in built]
+        for v, (_, excluded) in zip(ys, built):
+            if excluded > 0:
+                # one patch per row (rr_nonhertz_table.h): a region beyond
+                # combine of the deepest that touches is not in the table;
+                # said here (the main thread), not dropped silently
+                warnings.warn(f"nonhertz_table: the {side} side at y = {float(v)!r} m: "
+                              f"{excluded} region(s) of the gap farther than combine = "
+                              f"{combine!r} m from the deepest (at some of its loads) are not "
+                              f"tabulated (one patch per row)", RollerRigWarning, stacklevel=2)
+        out[side] = NonHertzSide(np.ascontiguousarray(np.array(rows)),
+                                 1.0 if side == "left" else -1.0, float(geometry.roller_radius),
+                                 G, nu, mu_ref).check()
+    return NonHertzTable(out["left"], out["right"], Fz, time.perf_counter() - t0)
+
+
+def _row(geometry, side, y, Fz, E, nu, mu_ref, n, n_corr, richardson, combine, tol, maxit):
+    """One row by the core (rr_nonhertz_row), the GIL released."""
+    c = wheelset_contact(geometry, y)
+    z0, roll0, p = float(c.z[0]), float(c.roll[0]), getattr(c, side)
+    point = tuple(float(getattr(p, k)[0]) for k in ("s_roller", "s_wheel", "delta", "A", "B"))
+    # the wheelset's motion at free rolling (rig_contact's at zero yaw and
+    # lateral speed: centre (0, y, z0), spin about the rolled axle); the
+    # correction's spin creepage depends on the speeds' ratio only
+    roller_spin = 10.0
+    spin = roller_spin * float(p.R[0]) / float(p.r[0])
+    motion = ((0.0, y, z0), (0.0, 0.0, 0.0),
+              (0.0, spin * np.cos(roll0), spin * np.sin(roll0)))
+    st, row, info = _core.nonhertz_row(
+        *geometry._arrays(), geometry._params(), 0 if side == "left" else 1, y, (z0, roll0),
+        point, (LOAD_SPAN * Fz, E, nu, mu_ref), motion, roller_spin, 1e-3,
+        (int(n), int(n_corr), int(bool(richardson)), combine), (float(tol), int(maxit)))
+    if st < 0:
+        what = {_core.NH_ROW_NODE: "the exact solution of a load node",
+                _core.NH_ROW_GRID: "a finer grid of a node",
+                _core.NH_ROW_SOLVE: "a creep solution of a node",
+                _core.NH_ROW_COEFF: "a node's linear creep coefficient (not positive)"}
+        raise RollerRigError(f"nonhertz_table: the {side} side at y = {y!r} m, node "
+                             f"{info['node']} (vertical load "
+                             f"{LOAD_SPAN * Fz * _NODE_F[max(info['node'], 0)] ** 1.5:.6g} N): "
+                             f"{what.get(info['why'], 'the row')} failed: "
+                             f"{status_message(st)} (why {info['wheel_why']}, "
+                             f"gap {info['gap_why']})")
+    return row, info["excluded"]
+
+
+_NODE_F = (0.03, 0.1, 0.2, 0.33, 0.46, 0.6, 0.75, 0.88, 1.0)
+
+
+def nonhertz_wheel(side_table, y, Fz, mu, roller_spin, motion0, motion1, vmin=1e-3, x=0.0,
+                   yaw=0.0):
+    """One wheel's contact from a side's table (rr_nonhertz_wheel): (status,
+    result dict, patch dicts); motion0/1: ((c), (v), (w)) of the wheelset at
+    the rows around y (nonhertz_locate), at the longitudinal shift x and yaw."""
+    return _core.nonhertz_wheel(side_table.rows, side_table.head,
+                                (float(y), float(Fz), float(mu), float(roller_spin),
+                                 float(vmin), float(x), float(yaw)), motion0, motion1)
+
+
+def nonhertz_locate(side_table, y):
+    """(status, row, w): the rows around y."""
+    return _core.nonhertz_locate(side_table.rows, side_table.head, float(y))
