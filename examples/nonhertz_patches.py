@@ -155,6 +155,7 @@ def figure(results, path):
 
 
 def main(out="."):
+    """Compute, print the errors, draw: (the results as compute(), the figure's path)."""
     results, seconds = compute()
     for label, cases in results:
         for y, ref, fast, err, abs_ in cases:
@@ -163,7 +164,9 @@ def main(out="."):
                   f", peak {fast.pmax / ref.solution.pmax - 1:+.3f} (relative to the exact)")
     print(f"computed in {seconds:.1f} s")
     os.makedirs(out, exist_ok=True)
-    print("wrote", figure(results, os.path.join(out, "nonhertz_patches.png")))
+    path = figure(results, os.path.join(out, "nonhertz_patches.png"))
+    print("wrote", path)
+    return results, path
 
 
 if __name__ == "__main__":
