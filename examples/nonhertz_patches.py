@@ -10,7 +10,7 @@ and S1002 on a UIC60-headed roller (rr.RigGeometry.standard(roller_radius=
 writes nonhertz_patches.png.  Each panel: the exact solution's pressure
 (rr.rig_exact, 80 elements across, the reference of tests/test_nonhertz_fast.py)
 element by element in its contact plane, its contours at 300, 600, 900
-and 1200 MPa (white); and in red what rig_contact(..., patch="nonhertz")
+and 1200 MPa and its centroid x (white); and in red what rig_contact(..., patch="nonhertz")
 computes for each patch: its pressure centroid (+) and an ellipse of the
 patch's contact area with the a/b of the table's pressure moments (at the
 patch's load, the two rows' values blended as the method blends them),
@@ -104,6 +104,8 @@ def _panel(ax, label, y, ref, fast, err, abs_):
     lv = [v for v in LEVELS if v < s.pmax]
     if lv:
         ax.contour(X, Y, s.pn, levels=lv, colors="w", linewidths=0.7)
+    w = s.pn / s.pn.sum()
+    ax.plot((w * X).sum(), (w * Y).sum(), "wx", ms=8, mew=1.6)     # the exact centroid
     th = np.linspace(0.0, 2.0 * np.pi, 181)
     for p, ab in zip(fast.patches, abs_):
         d = p.point - P.point
@@ -116,9 +118,9 @@ def _panel(ax, label, y, ref, fast, err, abs_):
             if lev < p.pmax:
                 k = np.sqrt(1.0 - (lev / p.pmax) ** 2)        # Hertz: p = pmax sqrt(1 - r^2)
                 ax.plot(u + k * a * np.cos(th), v + k * b * np.sin(th), "r--", lw=0.7)
-    w = ref.shape
-    ax.set_title(f"{label}, y = {y * 1e3:+.1f} mm ({w.regions} region"
-                 f"{'s' if w.regions > 1 else ''})\n|dF|/(mu N) = {err:.4f}; peak "
+    regions = ref.shape.regions
+    ax.set_title(f"{label}, y = {y * 1e3:+.1f} mm ({regions} region"
+                 f"{'s' if regions > 1 else ''})\n|dF|/(mu N) = {err:.4f}; peak "
                  f"{s.pmax / 1e6:.0f} exact, {fast.pmax / 1e6:.0f} MPa fast", fontsize=8.5)
     ax.tick_params(labelsize=7)
     ax.xaxis.label.set_size(8)
@@ -136,7 +138,8 @@ def figure(results, path):
     for r, (label, cases) in enumerate(results):
         for c, item in enumerate(cases):
             _panel(axes[r, c], label, *item)
-    handles = [Line2D([], [], color="w", lw=0.7, label="exact: pressure contours"),
+    handles = [Line2D([], [], color="w", lw=0.7, marker="x", mew=1.6,
+                      label="exact: pressure contours, x its centroid"),
                Line2D([], [], color="r", lw=1.4, label="fast: ellipse of the patch's area, "
                                                        "table's a/b; + its centroid"),
                Line2D([], [], color="r", ls="--", lw=0.7, label="fast: Hertzian pressure of "
