@@ -12,7 +12,7 @@ import pytest
 import rollerrig as rr
 
 DATA = os.path.join(os.path.dirname(rr.__file__), "data")
-EXAMPLES = os.path.join(os.path.dirname(os.path.dirname(rr.__file__)), "examples")
+EXAMPLES = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "examples")
 
 
 def _example():
