@@ -316,3 +316,17 @@ int rr_exact_solve_from(const rr_exact_problem *pb, const rr_exact_start *start,
     }
     return st != RR_OK ? st : st2;
 }
+
+int rr_exact_at_edge(const signed char *state, int mx, int my)
+{
+    int i;
+    if (!state || mx < 1 || my < 1)
+        return 0;
+    for (i = 0; i < mx; i++)
+        if (state[i] >= 0 || state[(size_t)(my - 1) * mx + i] >= 0)
+            return 1;
+    for (i = 0; i < my; i++)
+        if (state[(size_t)i * mx] >= 0 || state[(size_t)i * mx + mx - 1] >= 0)
+            return 1;
+    return 0;
+}

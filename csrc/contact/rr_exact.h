@@ -154,6 +154,14 @@ int rr_exact_solve_from(const rr_exact_problem *pb, const rr_exact_start *start,
                         size_t work_len, rr_exact_result *res, rr_exact_field *field);
 
 /*
+ * rr_exact_at_edge - 1 where a solution's contact (state >= 0, the field's
+ * element states, my rows of mx) reaches the border of its grid, so that
+ * the grid cut the contact area off; else 0 (also for state NULL or an
+ * empty grid).
+ */
+int rr_exact_at_edge(const signed char *state, int mx, int my);
+
+/*
  * rr_exact_hertz_grid - the grid of a Hertzian ellipse with semi-axes a
  * (along x) and b: nx x ny elements across 2a x 2b, RR_EXACT_MARGIN more
  * on each side, centred on the ellipse (whose edges on the axes are

@@ -224,6 +224,24 @@ static int same_profiles(const rr_rig_profiles *a, const rr_rig_profiles *b)
 static const char *const slot_rows[] = {"wheelset.profile", "roller.profile",
                                         "wheelset.profile_right", "roller.profile_right"};
 
+/* *buf holding at least need doubles (its *cap), the old one released
+ * once the new one is had: RR_OK, or RR_ERR_WORKSPACE said. */
+static int grow(rr_fmu *m, double **buf, long *cap, long need)
+{
+    double *data;
+    if (need <= *cap)
+        return RR_OK;
+    data = m->alloc(m->mem_ctx, (size_t)need * sizeof *data);
+    if (!data)
+        return fail(m, RR_ERR_WORKSPACE, "the contact table: out of memory (%ld doubles)",
+                    need);
+    if (*buf)
+        m->release(m->mem_ctx, *buf);
+    *buf = data;
+    *cap = need;
+    return RR_OK;
+}
+
 /* The table on real profiles into m->table (workspace allocated as needed). */
 static int profile_table(rr_fmu *m, const rr_rig_geometry *g, const rr_rig_profiles *pr,
                          double *bad_y)
@@ -241,16 +259,8 @@ static int profile_table(rr_fmu *m, const rr_rig_geometry *g, const rr_rig_profi
                                       : rr_status_message(st));
     }
     need = rr_rig_profiles_work_len(pr);
-    if (need > m->profile_work_cap) {
-        double *work = m->alloc(m->mem_ctx, (size_t)need * sizeof *work);
-        if (!work)
-            return fail(m, RR_ERR_WORKSPACE, "the contact table: out of memory (%ld doubles)",
-                        need);
-        if (m->profile_work)
-            m->release(m->mem_ctx, m->profile_work);
-        m->profile_work = work;
-        m->profile_work_cap = need;
-    }
+    if ((st = grow(m, &m->profile_work, &m->profile_work_cap, need)) != RR_OK)
+        return st;
     return rr_rig_table_build_profiles(g, pr, m->table_data, m->table_cap, m->profile_work,
                                        m->profile_work_cap, &m->table, bad_y);
 }
@@ -275,16 +285,8 @@ static int table_for(rr_fmu *m, const rr_rig_config *c)
     if (len <= 0)
         return fail(m, RR_ERR_PARAM, "the contact table: integration.table_rows = %d is out "
                     "of range", g.table_rows);
-    if (len > m->table_cap) {
-        double *data = m->alloc(m->mem_ctx, (size_t)len * sizeof *data);
-        if (!data)
-            return fail(m, RR_ERR_WORKSPACE, "the contact table: out of memory (%ld doubles)",
-                        len);
-        if (m->table_data)
-            m->release(m->mem_ctx, m->table_data);
-        m->table_data = data;
-        m->table_cap = len;
-    }
+    if ((st = grow(m, &m->table_data, &m->table_cap, len)) != RR_OK)
+        return st;
     if (real && (st = profile_table(m, &g, &pr, &bad_y)) < 0 && isnan(bad_y))
         return st;                                     /* the profiles' own fault: said */
     if (!real)

@@ -122,18 +122,6 @@ void rr_nonhertz_frame(double PY, double PZ, double delta, double theta, double 
     f->t2[0] = sigma * sd * st, f->t2[1] = cd, f->t2[2] = sigma * sd * ct;
 }
 
-static double dot3(const double *a, const double *b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void cross3(const double *a, const double *b, double *out)
-{
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 int rr_nonhertz_creepages(const rr_motion *ws, double roller_spin, double R0,
                           const rr_nh_frame *f, double pen, double dz, double vmin, double k[4])
 {
@@ -144,21 +132,21 @@ int rr_nonhertz_creepages(const rr_motion *ws, double roller_spin, double R0,
      * roller's point P from its axis (0, ., -R0) */
     for (m = 0; m < 3; m++)
         q[m] = f->P[m] - pen * f->n[m] - (m == 2 ? ws->c[2] - dz : ws->c[m]);
-    cross3(ws->w, q, vw);
+    rr_cross3(ws->w, q, vw);
     q[0] = f->P[0];
     q[1] = f->P[1];
     q[2] = f->P[2] + R0;
-    cross3(wr, q, vr);
+    rr_cross3(wr, q, vr);
     for (m = 0; m < 3; m++) {
         vw[m] += ws->v[m];
         sum[m] = vw[m] + vr[m];
         slip[m] = vw[m] - vr[m];
         dw[m] = ws->w[m] - wr[m];
     }
-    k[3] = fmax(fabs(dot3(sum, f->t1)) / 2.0, vmin);
-    k[0] = dot3(slip, f->t1) / k[3];
-    k[1] = dot3(slip, f->t2) / k[3];
-    k[2] = dot3(dw, f->n) / k[3];
+    k[3] = fmax(fabs(rr_dot3(sum, f->t1)) / 2.0, vmin);
+    k[0] = rr_dot3(slip, f->t1) / k[3];
+    k[1] = rr_dot3(slip, f->t2) / k[3];
+    k[2] = rr_dot3(dw, f->n) / k[3];
     return rr_all_finite(k, 4) ? RR_OK : RR_ERR_RANGE;
 }
 

@@ -115,19 +115,6 @@ typedef struct {
     rr_wheel_exact_result scratch;      /* the largest load's solution */
 } call;
 
-/* 1 where the contact (state >= 0) reaches the grid's border. */
-static int at_edge(const signed char *state, int mx, int my)
-{
-    int i;
-    for (i = 0; i < mx; i++)
-        if (state[i] >= 0 || state[(size_t)(my - 1) * mx + i] >= 0)
-            return 1;
-    for (i = 0; i < my; i++)
-        if (state[(size_t)i * mx] >= 0 || state[(size_t)i * mx + mx - 1] >= 0)
-            return 1;
-    return 0;
-}
-
 /* A grid of elements dx (n across when dx = 0) on the node's plane and pose
  * (patch p of result r) into h (hlen doubles). */
 static int grid_at(call *c, const rr_wheel_exact_result *r, int n, double dx, double *h,
@@ -362,7 +349,7 @@ static int normal_at(call *c, double e, double N, double cov, node_data *d, int 
         c->info->why = RR_NH_ROW_SOLVE;
         return RR_ERR_RANGE;
     }
-    *edge = at_edge(b->state, r->patch.grid.mx, r->patch.grid.my);
+    *edge = rr_exact_at_edge(b->state, r->patch.grid.mx, r->patch.grid.my);
     if (r->patch.nexcluded > 0) {
         /* regions left out within the grid's cover need not touch: count
          * those within the approach itself (cover 1), which would */

@@ -216,15 +216,27 @@ int rr_rig_table_build(const rr_rig_geometry *g, double *data, long data_len, do
                                    t, bad_y);
 }
 
+/* The rig geometry's own values (both table builders): RR_ERR_NONFINITE,
+ * RR_ERR_PARAM or RR_OK. */
+static int check_geometry(const rr_rig_geometry *g)
+{
+    const double v[7] = {g->wheel_radius, g->roller_radius, g->profile_half_width,
+                         g->cone_angle, g->crown_radius, g->contact_half_spacing,
+                         g->table_half_range};
+    if (!rr_all_finite(v, 7))
+        return RR_ERR_NONFINITE;
+    if (!(g->table_rows >= 2 && g->table_rows <= RR_RIG_TABLE_MAX_ROWS)
+        || !(g->wheel_radius > 0.0) || !(g->roller_radius > 0.0)
+        || !(g->profile_half_width > 0.0) || !(g->table_half_range > 0.0))
+        return RR_ERR_PARAM;
+    return RR_OK;
+}
+
 int rr_rig_table_build_rows(const rr_rig_geometry *g, double *data, long data_len,
                             double *work, long work_len, int i0, int i1, rr_contact_table *t,
                             double *bad_y)
 {
     enum { N = RR_RIG_PROFILE_POINTS };
-    const double v[7] = {g ? g->wheel_radius : 0.0, g ? g->roller_radius : 0.0,
-                         g ? g->profile_half_width : 0.0, g ? g->cone_angle : 0.0,
-                         g ? g->crown_radius : 0.0, g ? g->contact_half_spacing : 0.0,
-                         g ? g->table_half_range : 0.0};
     rr_profile_points wheel, roller;
     rr_profile_placement place;
     rr_search_opts o;
@@ -235,12 +247,8 @@ int rr_rig_table_build_rows(const rr_rig_geometry *g, double *data, long data_le
         *bad_y = NAN;
     if (!g || !t)
         return RR_ERR_NULL;
-    if (!rr_all_finite(v, 7))
-        return RR_ERR_NONFINITE;
-    if (!(g->table_rows >= 2 && g->table_rows <= RR_RIG_TABLE_MAX_ROWS)
-        || !(g->wheel_radius > 0.0) || !(g->roller_radius > 0.0)
-        || !(g->profile_half_width > 0.0) || !(g->table_half_range > 0.0))
-        return RR_ERR_PARAM;
+    if ((st = check_geometry(g)) != RR_OK)
+        return st;
     if (!data || !work || data_len < rr_rig_table_data_len(g) || work_len < RR_RIG_TABLE_WORK_LEN)
         return RR_ERR_WORKSPACE;
     hw = g->profile_half_width;
@@ -408,10 +416,6 @@ int rr_rig_table_build_profiles_rows(const rr_rig_geometry *g, const rr_rig_prof
                                      double *data, long data_len, double *work, long work_len,
                                      int i0, int i1, rr_contact_table *t, double *bad_y)
 {
-    const double v[7] = {g ? g->wheel_radius : 0.0, g ? g->roller_radius : 0.0,
-                         g ? g->profile_half_width : 0.0, g ? g->cone_angle : 0.0,
-                         g ? g->crown_radius : 0.0, g ? g->contact_half_spacing : 0.0,
-                         g ? g->table_half_range : 0.0};
     rr_spline surf[4];
     rr_wheel_roller pair[2];
     rr_search_opts o;
@@ -425,12 +429,8 @@ int rr_rig_table_build_profiles_rows(const rr_rig_geometry *g, const rr_rig_prof
         return RR_ERR_NULL;
     if ((st = rr_rig_profiles_check(pr, NULL, NULL)) != RR_OK)
         return st;
-    if (!rr_all_finite(v, 7))
-        return RR_ERR_NONFINITE;
-    if (!(g->table_rows >= 2 && g->table_rows <= RR_RIG_TABLE_MAX_ROWS)
-        || !(g->wheel_radius > 0.0) || !(g->roller_radius > 0.0)
-        || !(g->profile_half_width > 0.0) || !(g->table_half_range > 0.0))
-        return RR_ERR_PARAM;
+    if ((st = check_geometry(g)) != RR_OK)
+        return st;
     need = rr_rig_profiles_work_len(pr);
     if (!data || !work || data_len < rr_rig_table_data_len(g) || work_len < need)
         return RR_ERR_WORKSPACE;

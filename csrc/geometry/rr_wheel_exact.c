@@ -128,18 +128,6 @@ static int build(call *c, double N, int n, double a, double cov, int ref, int lo
     return RR_OK;
 }
 
-static double dot3(const double *a, const double *b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-static void cross3(const double *a, const double *b, double *out)
-{
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 /* Kalker's creepages of patch p (rig_exact's _creepages): the slip of the
  * wheel's material point at p->wheel_point (the wheelset's centre lowered
  * with the pose) relative to the roller's at P, over the rolling speed. */
@@ -152,39 +140,26 @@ static int creepages(const call *c, const rr_gap_patch *p, double k[4])
     int i;
     for (i = 0; i < 3; i++)
         r[i] = p->wheel_point[i] - (i == 2 ? m->c[2] - c->res->lowered : m->c[i]);
-    cross3(m->w, r, vw);
+    rr_cross3(m->w, r, vw);
     for (i = 0; i < 3; i++) {
         vw[i] += m->v[i];
         r[i] = p->point[i] - (i == 2 ? -pb->pair->R0 : 0.0);
     }
-    cross3(wr, r, vr);
+    rr_cross3(wr, r, vr);
     for (i = 0; i < 3; i++) {
         sum[i] = vw[i] + vr[i];
         s[i] = vw[i] - vr[i];
         dw[i] = m->w[i] - wr[i];
     }
-    k[3] = fmax(fabs(dot3(sum, p->t1)) / 2.0, pb->vmin);
-    k[0] = dot3(s, p->t1) / k[3];
-    k[1] = dot3(s, p->t2) / k[3];
-    k[2] = dot3(dw, p->n) / k[3];
+    k[3] = fmax(fabs(rr_dot3(sum, p->t1)) / 2.0, pb->vmin);
+    k[0] = rr_dot3(s, p->t1) / k[3];
+    k[1] = rr_dot3(s, p->t2) / k[3];
+    k[2] = rr_dot3(dw, p->n) / k[3];
     if (!rr_all_finite(k, 4)) {
         c->res->why = RR_WHEEL_EXACT_CREEP;
         return RR_ERR_RANGE;
     }
     return RR_OK;
-}
-
-/* 1 where the contact (state >= 0) reaches the grid's border. */
-static int at_edge(const signed char *state, int mx, int my)
-{
-    int i;
-    for (i = 0; i < mx; i++)
-        if (state[i] >= 0 || state[(size_t)(my - 1) * mx + i] >= 0)
-            return 1;
-    for (i = 0; i < my; i++)
-        if (state[(size_t)i * mx] >= 0 || state[(size_t)i * mx + mx - 1] >= 0)
-            return 1;
-    return 0;
 }
 
 /* The last solution at the element centres of patch p, which may lie on
@@ -210,8 +185,8 @@ static int map_last(call *c, const rr_gap_patch *p)
             const size_t e = (size_t)j * g->mx + i;
             for (k = 0; k < 3; k++)
                 r[k] = p->point[k] + x * p->t1[k] + y * p->t2[k] - q->point[k];
-            u = (dot3(r, q->t1) - o->x0) / o->dx;
-            v = (dot3(r, q->t2) - o->y0) / o->dy;
+            u = (rr_dot3(r, q->t1) - o->x0) / o->dx;
+            v = (rr_dot3(r, q->t2) - o->y0) / o->dy;
             if (u > -1.0 && v > -1.0 && u < o->mx && v < o->my) {
                 iu = (long)floor(u);
                 iv = (long)floor(v);
@@ -341,7 +316,7 @@ static int solve(call *c, const rr_gap_patch *p, double N, int normal_only, int 
     c->have_last = 1;
     c->last_normal = normal_only;
     c->last_patch = *p;
-    *edge = at_edge(c->state, p->grid.mx, p->grid.my);
+    *edge = rr_exact_at_edge(c->state, p->grid.mx, p->grid.my);
     return st;
 }
 

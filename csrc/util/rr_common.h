@@ -94,4 +94,18 @@ static inline int rr_all_finite(const double *v, int n)
     return acc == 0.0;
 }
 
+/* a . b of 3-vectors */
+static inline double rr_dot3(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/* out = a x b of 3-vectors (out not a or b) */
+static inline void rr_cross3(const double *a, const double *b, double *out)
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
 #endif
