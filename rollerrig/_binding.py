@@ -14,20 +14,22 @@ from ._errors import RollerRigError, check_status
 
 
 class OptionInfo(NamedTuple):
-    """One option of a creep-force method, from its C descriptor."""
-    name: str
+    """One option of a creep-force method, from its C descriptor
+    (``rollerrig.METHODS[method].options[name]``)."""
+
+    name: str          #: the option's keyword
     type: str          #: "int", "real" or "choice"
-    unit: str
+    unit: str          #: its unit ("" for a count, a choice or a dimensionless number)
     default: object    #: int, float, or a choice's name
-    lo: object         #: valid range (None for a choice)
-    hi: object
+    lo: object         #: lower end of the valid range (None for a choice)
+    hi: object         #: upper end of the valid range (None for a choice)
     lo_open: bool      #: True: lo itself excluded
-    hi_open: bool
+    hi_open: bool      #: True: hi itself excluded
     choices: tuple     #: a choice's names
-    doc: str
+    doc: str           #: what the option does
 
     def describe(self):
-        """The option's valid values, as the binding's messages give them."""
+        """The option's valid values as text, as the binding's messages give them."""
         if self.type == "choice":
             return "one of " + ", ".join(repr(c) for c in self.choices)
         kind = "an integer" if self.type == "int" else "a real number"
@@ -36,28 +38,26 @@ class OptionInfo(NamedTuple):
 
 
 class MethodInfo(NamedTuple):
-    """A creep-force method of the registry: its doc, options (name ->
-    OptionInfo, in the descriptor's order), whether it has a traction field
-    (fastsim_field), whether it saturates (|F| <= mu N), whether it is a
-    time-loop method (a case of bounded work, not solved iteratively to a
-    tolerance: the rig's contact model, rig_contact, takes it), whether it
-    takes Coulomb friction only, whether the rig steps with it (in_rig: a
-    time-loop method that saturates; csrc/rig/rr_rig.h,
-    rr_rig_method_check), and whether it takes a contact problem on a grid
-    (an undeformed distance, as exact_solve's; the others the Hertz ellipse
-    only)."""
-    name: str
-    doc: str
-    options: MappingProxyType
-    has_field: bool
-    saturates: bool
+    """A creep-force method of the registry (``rollerrig.METHODS[name]``)."""
+
+    name: str                   #: the method's name, creep_forces' ``method=``
+    doc: str                    #: what the method is
+    options: MappingProxyType   #: option name -> OptionInfo, in the descriptor's order
+    has_field: bool             #: it has a traction field (fastsim_field)
+    saturates: bool             #: it keeps ``|F| <= mu N``
+    #: a time-loop method: a case of bounded work, not solved iteratively to a
+    #: tolerance (the rig's contact model, rig_contact, takes it)
     in_loop: bool
-    coulomb_only: bool
+    coulomb_only: bool          #: it takes Coulomb friction only (no FallingFriction)
+    #: the rig steps with it: a time-loop method that saturates (csrc/rig/rr_rig.h,
+    #: rr_rig_method_check)
     in_rig: bool
+    #: it takes a contact problem on a grid (an undeformed distance, as
+    #: exact_solve's); the others the Hertz ellipse only
     takes_grid: bool
 
     def defaults(self):
-        """Option name -> default value."""
+        """The options' defaults, as a dict option name -> default value."""
         return {n: o.default for n, o in self.options.items()}
 
 
@@ -68,15 +68,28 @@ METHODS = MappingProxyType({
     for name, doc, opts, field, sat, loop, coulomb, rig, grid in _core.METHODS})
 
 
+def _rst_text(text):
+    """Text of the C registry as reStructuredText: its |x| (a norm) and *
+    taken as characters, not markup."""
+    return text.replace("\\", "\\\\").replace("|", "\\|").replace("*", "\\*").replace("`", "\\`")
+
+
 def methods_doc():
-    """The methods and their options, one block each (for docstrings)."""
+    """The methods and their options as a reStructuredText definition list
+    (for creep_forces' docstring): a method's name, its doc and a bullet
+    per option (name=default [unit]: doc; valid values)."""
     lines = []
     for m in METHODS.values():
-        lines.append(f"    {m.name!r}: {m.doc}")
-        for o in m.options.values():
-            unit = f" [{o.unit}]" if o.unit else ""
-            lines.append(f"        {o.name}={o.default!r}{unit}: {o.doc}; {o.describe()}")
-    return "\n".join(lines)
+        lines.append(f"``{m.name!r}``")
+        lines.append(f"    {_rst_text(m.doc)}.")
+        if m.options:
+            lines.append("")
+            for o in m.options.values():
+                unit = f" [{o.unit}]" if o.unit else ""
+                lines.append(f"    - ``{o.name}={o.default!r}``{unit}: {_rst_text(o.doc)}; "
+                             f"{o.describe()}")
+        lines.append("")
+    return "\n".join(lines).rstrip("\n")
 
 
 def method_info(func, method):
@@ -202,19 +215,56 @@ def used_numbers(method, options):
 
 @dataclass(frozen=True)
 class FallingFriction:
-    """Polach's falling friction mu(w) = mu [(1 - A) exp(-B w) + A].
+    """Polach's falling friction law mu(w) = mu [(1 - A) exp(-B w) + A].
 
-    mu is the static coefficient given to creep_forces; w the slip speed
-    [m/s]; A the ratio of the friction at infinite slip to mu (0 < A <= 1); B the
-    decay rate [s/m].  Polach (Wear 258, 2005) fits dry rail with about
-    A = 0.4, B = 0.6 s/m.  Falling friction needs the rolling speed.
+    mu is the static coefficient given to :func:`creep_forces` and w the
+    slip speed [m/s].  Falling friction needs the rolling speed (``speed``
+    > 0 in creep_forces).
+
+    Parameters
+    ----------
+    A : float, optional
+        Ratio of the friction at infinite slip to mu [-], 0 < A <= 1.
+    B : float, optional
+        Decay rate [s/m], >= 0.
+
+    See Also
+    --------
+    creep_forces : takes it as ``friction=``.
+
+    Notes
+    -----
+    Polach (Wear 258, 2005) fits dry rail with about A = 0.4, B = 0.6 s/m
+    (the defaults).  A = 1 or B = 0 is Coulomb friction.  The values are
+    checked where the law is used (creep_forces: status -5 for A, B out of
+    range).
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> law = rr.FallingFriction(A=0.4, B=0.6)
+    >>> law.mu(0.3, [0.0, 1.0]).round(4)
+    array([0.3   , 0.2188])
     """
 
-    A: float = 0.4
-    B: float = 0.6
+    A: float = 0.4  #: friction at infinite slip over the static mu [-], 0 < A <= 1
+    B: float = 0.6  #: decay rate of the friction with the slip speed [s/m], >= 0
 
     def mu(self, mu0, w):
-        """The friction coefficient at slip speed w for static value mu0."""
+        """The friction coefficient [-] at slip speed `w` [m/s] for static value `mu0`.
+
+        Parameters
+        ----------
+        mu0 : float or array_like
+            Static friction coefficient [-].
+        w : float or array_like
+            Slip speed [m/s].
+
+        Returns
+        -------
+        ndarray or float
+            mu0 [(1 - A) exp(-B w) + A], broadcast over mu0 and w.
+        """
         return mu0 * ((1.0 - self.A) * np.exp(-self.B * np.asarray(w, dtype=float)) + self.A)
 
 

@@ -8,15 +8,55 @@ from . import _core
 
 
 class RollerRigError(ValueError):
-    """Invalid input or a failed computation; a ValueError."""
+    """Invalid input or a failed computation; a ValueError.
+
+    The message names the function, the argument and its value (and, for
+    an element of an array call, its index and the status message).
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> try:
+    ...     rr.hertz(1.0, 1.0, -5.0)
+    ... except rr.RollerRigError as e:
+    ...     print(e)
+    hertz: N = -5.0: normal load not positive
+    """
 
 
 class RollerRigWarning(UserWarning):
-    """A result was computed but is less certain, or some batch elements failed."""
+    """A result was computed but is less certain, or some batch elements failed.
+
+    Given once per call (errors="warn", the default for array calls), naming
+    the first bad element and how many failed; the failed elements are NaN
+    with a negative status.
+    """
 
 
 def status_message(code):
-    """The C core's message for a status code."""
+    """The C core's message for a status code.
+
+    Parameters
+    ----------
+    code : int
+        A status: 0 ok, > 0 a warning (the result usable), < 0 an error
+        (the result NaN).
+
+    Returns
+    -------
+    str
+        The message ("unknown status" for a code the core does not have).
+
+    See Also
+    --------
+    rollerrig.STATUS : every code with its message.
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> rr.status_message(-2)
+    'normal load not positive'
+    """
     return _core.status_message(int(code))
 
 

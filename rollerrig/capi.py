@@ -47,43 +47,125 @@ def _folder(what, candidates):
 
 
 def get_include():
-    """The folder holding rollerrig.h and its layer folders: compile with
-    ``-I`` it and ``#include "rollerrig.h"``."""
+    """The folder holding rollerrig.h and its layer folders.
+
+    Compile with ``-I`` it and ``#include "rollerrig.h"``.
+
+    Returns
+    -------
+    str
+        The folder: rollerrig/_c/include in an installed wheel, csrc/ in an
+        editable checkout.
+
+    Raises
+    ------
+    FileNotFoundError
+        Naming the paths looked at, when the installation has no headers.
+
+    See Also
+    --------
+    get_library_dir, get_source_dir, get_pkgconfig_dir
+
+    Examples
+    --------
+    >>> import os
+    >>> import rollerrig as rr
+    >>> os.path.isfile(os.path.join(rr.get_include(), "rollerrig.h"))
+    True
+    """
     return _folder("C headers", [(_C / "include", "rollerrig.h"),
                                  (_CHECKOUT_CSRC, "rollerrig.h")])
 
 
 def get_library_dir():
-    """The folder holding librollerrig.a, the core as compiled for the
-    extension (position-independent): link with ``-L`` it ``-lrollerrig -lm``."""
+    """The folder holding librollerrig.a, the core as compiled for the extension.
+
+    The library is position-independent: link with ``-L`` it
+    ``-lrollerrig -lm``.
+
+    Returns
+    -------
+    str
+        The folder (rollerrig/_c/lib).
+
+    Raises
+    ------
+    FileNotFoundError
+        Naming the path looked at, when the library was not built or
+        shipped.
+
+    See Also
+    --------
+    get_include
+    """
     return _folder("C library", [(_C / "lib", "librollerrig.a")])
 
 
 def get_source_dir():
-    """The folder holding the core's sources and headers in their layer
-    folders (util/, contact/, geometry/, rig/: every ``*/rr_*.c``), to
-    compile with ``-I`` it (a source may include another:
-    rr_fft_avx2.c includes util/rr_fft.c)."""
+    """The folder holding the core's sources and headers in their layer folders.
+
+    The layer folders are util/, contact/, geometry/, rig/ (every
+    ``*/rr_*.c``); compile with ``-I`` it (a source may include another:
+    rr_fft_avx2.c includes util/rr_fft.c).
+
+    Returns
+    -------
+    str
+        The folder: rollerrig/_c/src in a wheel, csrc/ in a checkout.
+
+    Raises
+    ------
+    FileNotFoundError
+        Naming the paths looked at, when the installation has no sources.
+    """
     return _folder("C sources", [(_C / "src", "rig/rr_rig.c"),
                                  (_CHECKOUT_CSRC, "rig/rr_rig.c")])
 
 
 def get_pkgconfig_dir():
-    """The folder holding rollerrig.pc, for PKG_CONFIG_PATH; the file names
-    its folders relative to itself (${pcfiledir})."""
+    """The folder holding rollerrig.pc, for PKG_CONFIG_PATH.
+
+    The file names its folders relative to itself (``${pcfiledir}``).
+
+    Returns
+    -------
+    str
+        The folder (rollerrig/_c/lib/pkgconfig).
+
+    Raises
+    ------
+    FileNotFoundError
+        Naming the path looked at, when the file was not built or shipped.
+    """
     return _folder("pkg-config file", [(_C / "lib" / "pkgconfig", "rollerrig.pc")])
 
 
 def cflags():
+    """The compiler flags for the headers, ``-I<get_include()>``."""
     return f"-I{get_include()}"
 
 
 def libs():
+    """The linker flags for the library, ``-L<get_library_dir()> -lrollerrig -lm``."""
     return f"-L{get_library_dir()} -lrollerrig -lm"
 
 
 def main(argv=None):
-    """``rollerrig-config``: print the asked flags or folders, on one line."""
+    """The ``rollerrig-config`` command: print the asked flags or folders on one line.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The command's arguments (default: ``sys.argv[1:]``): any of
+        --cflags, --libs, --includedir, --libdir, --srcdir, --pkgconfigdir,
+        --version.
+
+    Returns
+    -------
+    int
+        The exit status: 0 printed, 1 a folder missing (the message on
+        stderr), 2 nothing asked (the help printed).
+    """
     parser = argparse.ArgumentParser(
         prog="rollerrig-config",
         description="Flags and folders to build a C program against the installed "

@@ -25,6 +25,7 @@ result would not be a finite double.  rollerrig.STATUS maps every code to
 its message.
 """
 from dataclasses import dataclass
+import inspect
 from typing import NamedTuple
 
 import numpy as np
@@ -46,22 +47,42 @@ BOUNDS = next(m.options["bound"].choices for m in METHODS.values() if "bound" in
 
 
 class HertzContact(NamedTuple):
+    """The Hertzian contact ellipse, as :func:`hertz` returns it.
+
+    Each field is a float for a call on scalars, else an array of the
+    broadcast shape (``status`` an int / int8 array).
+    """
+
     a: np.ndarray       #: semi-axis along the rolling direction [m]
     b: np.ndarray       #: lateral semi-axis [m]
     p0: np.ndarray      #: peak pressure [Pa]
     delta: np.ndarray   #: approach of the two bodies [m]
-    status: np.ndarray  #: C status per element (0 OK)
+    status: np.ndarray  #: C status per element (0 OK; rollerrig.STATUS)
 
 
 class KalkerCoefficients(NamedTuple):
-    c11: np.ndarray
-    c22: np.ndarray
-    c23: np.ndarray
-    c33: np.ndarray     #: spin coefficient (Mz = G c^3 C23 cy - G c^4 C33 cphi)
-    status: np.ndarray
+    """Kalker's creep and spin coefficients, as :func:`kalker_coefficients`
+    returns them (dimensionless).
+
+    With c = sqrt(a b): Fx = -G c^2 C11 cx, Fy = -G c^2 C22 cy - G c^3 C23
+    cphi, Mz = G c^3 C23 cy - G c^4 C33 cphi.
+    """
+
+    c11: np.ndarray     #: longitudinal creep coefficient [-]
+    c22: np.ndarray     #: lateral creep coefficient [-]
+    c23: np.ndarray     #: lateral-spin coupling coefficient [-]
+    c33: np.ndarray     #: spin coefficient [-] (Mz = G c^3 C23 cy - G c^4 C33 cphi)
+    status: np.ndarray  #: C status per element (0 OK; rollerrig.STATUS)
 
 
 class CreepForces(NamedTuple):
+    """Creep forces and spin moment on the wheel, as :func:`creep_forces`
+    returns them.
+
+    Each field is a float for a call on scalars, else an array of the
+    broadcast shape (``status`` an int / int8 array).
+    """
+
     fx: np.ndarray      #: longitudinal force on the wheel [N]
     fy: np.ndarray      #: lateral force on the wheel [N]
     mz: np.ndarray      #: spin moment on the wheel [N m]
@@ -70,21 +91,25 @@ class CreepForces(NamedTuple):
 
 @dataclass(frozen=True)
 class TractionField:
-    """The FASTSIM traction field of one case; arrays of shape (ny, nx), rows
-    at increasing y, columns along increasing x (the leading edge is the
-    last column); elements outside the ellipse have zero pressure."""
+    """The FASTSIM traction field of one case, as :func:`fastsim_field`
+    returns it.
+
+    The arrays have shape (ny, nx), rows at increasing y, columns along
+    increasing x (the leading edge is the last column); elements outside
+    the ellipse have zero pressure.
+    """
 
     x: np.ndarray      #: element centre, rolling direction [m]
     y: np.ndarray      #: element centre, lateral [m]
     pn: np.ndarray     #: pressure [Pa]
-    px: np.ndarray     #: tangential traction on the wheel [Pa]
-    py: np.ndarray
+    px: np.ndarray     #: longitudinal tangential traction on the wheel [Pa]
+    py: np.ndarray     #: lateral tangential traction on the wheel [Pa]
     slip: np.ndarray   #: True where the element slips, False where it adheres
     area: np.ndarray   #: element area [m^2]
-    fx: float
-    fy: float
-    mz: float
-    status: int
+    fx: float          #: total longitudinal force on the wheel [N]
+    fy: float          #: total lateral force on the wheel [N]
+    mz: float          #: total spin moment on the wheel [N m]
+    status: int        #: C status (0 OK, 1 a warning; rollerrig.STATUS)
 
 
 # The scalar path: a call on plain numbers skips numpy (arrays, broadcasting,
@@ -193,18 +218,74 @@ def _case_blame(func, kwargs, code):
 def hertz(A, B, N, E=2.1e11, nu=0.28, E2=None, nu2=None, *, errors=None):
     """Hertzian contact ellipse of two elastic bodies.
 
-    A, B:  curvature sums [1/m] in the rolling and lateral direction: the
-           gap is h = A x^2 + B y^2, so A = (1/R1x + 1/R2x)/2 (on a roller,
-           1/r_wheel + 1/R_roller enters A); the long axis lies along the
-           smaller sum.
-    N:     normal load [N].
-    E, nu: Young's modulus [Pa] and Poisson ratio of the wheel; E2, nu2 of
-           the roller (default: the same material).
-    errors: "raise", "warn" or "ignore" (module docstring).
-    Returns HertzContact(a [m], b [m], p0 [Pa], delta [m], status); a along
-    the rolling direction.  Elliptic integrals to machine precision
-    (Carlson), the ellipticity solved to full double precision (Johnson
-    1985, 4.2).
+    Elliptic integrals to machine precision (Carlson), the ellipticity
+    solved to full double precision (Johnson 1985, 4.2).
+
+    Parameters
+    ----------
+    A, B : float or array_like
+        Curvature sums [1/m] in the rolling and lateral direction: the gap
+        is h = A x^2 + B y^2, so A = (1/R1x + 1/R2x)/2 (on a roller,
+        1/r_wheel + 1/R_roller enters A); the long axis lies along the
+        smaller sum.  > 0.
+    N : float or array_like
+        Normal load [N], > 0.
+    E : float or array_like, optional
+        Young's modulus of the wheel [Pa].
+    nu : float or array_like, optional
+        Poisson ratio of the wheel [-], 0 <= nu <= 0.5.
+    E2, nu2 : float or array_like, optional
+        Young's modulus [Pa] and Poisson ratio [-] of the roller; None
+        (default): the wheel's (the same material).
+    errors : {None, "raise", "warn", "ignore"}, optional
+        What a bad element does (Notes); None: "raise" for a call on
+        scalars, "warn" for arrays.
+
+    Returns
+    -------
+    HertzContact
+        ``(a, b, p0, delta, status)``: the semi-axes a (along the rolling
+        direction) and b [m], the peak pressure p0 [Pa], the approach delta
+        [m] and the status per element (:class:`HertzContact`).  Floats and
+        an int for scalar inputs, else arrays of the broadcast shape.
+
+    Raises
+    ------
+    RollerRigError
+        With errors="raise" (the default for scalars), naming the argument
+        and its value: NaN or infinite input (status -1), a load not
+        positive (-2), a curvature sum not positive (-3), a modulus or
+        Poisson ratio out of range (-4); also for inputs that are not real
+        numbers, are empty or do not broadcast, and for a bad `errors`.
+
+    See Also
+    --------
+    kalker_coefficients : the creep coefficients of the ellipse's a / b.
+    creep_forces : the forces of a contact of semi-axes a, b.
+
+    Notes
+    -----
+    The arguments broadcast against each other (numpy rules).  A call on
+    arrays computes the good elements and gives NaN with a negative status
+    for each bad one; errors="warn" (the default for arrays) gives one
+    RollerRigWarning naming the first, "ignore" none, "raise" raises
+    RollerRigError.  ``rollerrig.STATUS`` maps every status to its message.
+
+    Examples
+    --------
+    A wheel of radius 0.45 m on a roller of radius 0.2 m, both with a
+    lateral radius of curvature of 0.3 m in sum, under 10 kN:
+
+    >>> import rollerrig as rr
+    >>> h = rr.hertz(A=1/0.45 + 1/0.2, B=1/0.3, N=1e4)
+    >>> print(f"a = {h.a * 1e3:.3f} mm, b = {h.b * 1e3:.3f} mm, p0 = {h.p0 / 1e9:.3f} GPa")
+    a = 1.447 mm, b = 2.419 mm, p0 = 1.364 GPa
+
+    On arrays a bad element is NaN with a negative status:
+
+    >>> h = rr.hertz([1/0.45 + 1/0.2, -1.0], 1/0.3, 1e4, errors="ignore")
+    >>> h.status
+    array([ 0, -3], dtype=int8)
     """
     E2 = E if E2 is None else E2
     nu2 = nu if nu2 is None else nu2
@@ -224,16 +305,52 @@ def hertz(A, B, N, E=2.1e11, nu=0.28, E2=None, nu2=None, *, errors=None):
 
 
 def kalker_coefficients(a_over_b, nu=0.28, *, errors=None):
-    """Kalker's creep and spin coefficients C11, C22, C23, C33 (Kalker 1990,
-    Table E.3).
+    """Kalker's creep and spin coefficients C11, C22, C23, C33.
 
-    Exact at the table's nodes; linear in g = min(a/b, b/a) between them, a
-    parabola through 1/C in nu; Kalker's asymptotes below g = 0.1 (for C33,
-    which has none in CONTACT, the continuation csrc/contact/rr_kalker.h
-    describes).
-    a_over_b: semi-axis along the rolling direction over the lateral one
-    (> 0); nu: Poisson ratio, 0 <= nu <= 0.5.  errors: as for hertz.
-    Returns KalkerCoefficients(c11, c22, c23, c33, status), dimensionless.
+    From Kalker 1990, Table E.3: exact at the table's nodes; linear in
+    g = min(a/b, b/a) between them, a parabola through 1/C in nu; Kalker's
+    asymptotes below g = 0.1 (for C33, which has none in CONTACT, the
+    continuation csrc/contact/rr_kalker.h describes).
+
+    Parameters
+    ----------
+    a_over_b : float or array_like
+        Semi-axis along the rolling direction over the lateral one [-], > 0.
+    nu : float or array_like, optional
+        Poisson ratio [-], 0 <= nu <= 0.5.
+    errors : {None, "raise", "warn", "ignore"}, optional
+        As for :func:`hertz`: None is "raise" for scalars, "warn" for
+        arrays.
+
+    Returns
+    -------
+    KalkerCoefficients
+        ``(c11, c22, c23, c33, status)``, dimensionless
+        (:class:`KalkerCoefficients`); floats and an int for scalar inputs,
+        else arrays of the broadcast shape.
+
+    Raises
+    ------
+    RollerRigError
+        With errors="raise", naming the argument and its value: NaN or
+        infinite (status -1), a/b not positive (-3), nu out of range (-4).
+
+    See Also
+    --------
+    hertz : the semi-axes a, b.
+    creep_forces : method="linear" is Kalker's linear theory with these.
+
+    Notes
+    -----
+    A call on arrays gives NaN and a negative status for each bad element
+    (errors="warn": one RollerRigWarning; "ignore": none).
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> k = rr.kalker_coefficients(0.8, nu=0.28)
+    >>> print(f"{k.c11:.4f} {k.c22:.4f} {k.c23:.4f} {k.c33:.4f}")
+    4.0189 3.4377 1.2662 1.3749
     """
     shape, scalar, full, flat = _broadcast("kalker_coefficients",
                                            dict(a_over_b=a_over_b, nu=nu))
@@ -256,23 +373,108 @@ def creep_forces(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, method
                  speed=0.0, friction=None, errors=None, **options):
     """Creep forces and spin moment on the wheel of a Hertzian contact.
 
-    cx, cy:  longitudinal and lateral creepage [-]; cphi: spin [rad/m]
-    a, b:    semi-axes [m] (a along the rolling direction); N: load [N]
-    mu:      (static) friction coefficient; G [Pa], nu: combined material
-    method:  a name of rollerrig.METHODS (below)
-    speed:   rolling speed [m/s]; falling friction needs it > 0
-    friction: None (Coulomb) or FallingFriction(A, B)
-    errors:  "raise" (default for scalar inputs), "warn" (default for
-             arrays) or "ignore" (module docstring)
-    **options: the method's options (rollerrig.METHODS[method].options; an
-             option the method does not have is refused; None: its default):
-{methods}
-    Returns CreepForces(fx [N], fy [N], mz [N m], status): forces on the
-    wheel, status per element (0 ok, 1 the falling-friction iteration hit
-    its cap somewhere, < 0 an error with NaN forces; rollerrig.STATUS).
-    Every method that saturates (all but "linear") keeps |(fx, fy)| <= mu N
-    (the static mu).  The Polach method has no spin moment (mz = 0); the
-    linear theory's spin moment uses Kalker's C33 (kalker_coefficients).
+    Parameters
+    ----------
+    cx, cy : float or array_like
+        Longitudinal and lateral creepage [-] (slip over rolling speed;
+        module conventions).
+    cphi : float or array_like
+        Spin creepage [rad/m].
+    a, b : float or array_like
+        Semi-axes [m], a along the rolling direction; > 0.
+    N : float or array_like
+        Normal load [N], > 0.
+    mu : float or array_like
+        (Static) friction coefficient [-], > 0.
+    G : float or array_like, optional
+        Combined shear modulus [Pa], > 0.
+    nu : float or array_like, optional
+        Combined Poisson ratio [-], 0 <= nu <= 0.5.
+    method : str, optional
+        A name of ``rollerrig.METHODS`` (listed under Notes).
+    speed : float or array_like, optional
+        Rolling speed [m/s]; falling friction needs it > 0.
+    friction : None or FallingFriction, optional
+        None (or "coulomb"): Coulomb friction; a :class:`FallingFriction`
+        (A, B): Polach's falling friction (not for the Coulomb-only
+        methods, ``METHODS[method].coulomb_only``).
+    errors : {None, "raise", "warn", "ignore"}, optional
+        None: "raise" for a call on scalars, "warn" for arrays (Notes).
+    **options
+        The method's options (``rollerrig.METHODS[method].options``, listed
+        under Notes); an option the method does not have is refused; None:
+        its default.
+
+    Returns
+    -------
+    CreepForces
+        ``(fx, fy, mz, status)``: the forces on the wheel fx, fy [N], the
+        spin moment mz [N m] and the status per element: 0 ok, 1 the
+        falling-friction iteration hit its cap somewhere, < 0 an error with
+        NaN forces (:class:`CreepForces`, ``rollerrig.STATUS``).  Floats and
+        an int for scalar inputs, else arrays of the broadcast shape.
+
+    Raises
+    ------
+    RollerRigError
+        With errors="raise" (the default for scalars), naming the argument
+        and its value, for a bad element: NaN or infinite input (status
+        -1), a load not positive (-2), a semi-axis not positive (-3), a
+        modulus or Poisson ratio out of range (-4), a friction coefficient
+        or law out of range (-5), falling friction without a positive
+        speed (-7), inputs so extreme that the result would not be a finite
+        double (-12), a case outside the built-in table of method
+        "exact_table" (-14).  Whatever `errors`: an unknown
+        method, an option the method lacks or out of its range (naming the
+        option, range and value), a falling law for a Coulomb-only method,
+        inputs that are not real numbers, are empty or do not broadcast.
+
+    See Also
+    --------
+    hertz : the semi-axes a, b and the load's ellipse.
+    fastsim_field : the traction field of one case.
+    exact_field : the exact theory's solution of one case.
+    sweep : this function over a grid of its arguments.
+
+    Notes
+    -----
+    Every method that saturates (all but "linear") keeps ``|(fx, fy)| <= mu
+    N`` (the static mu).  The Polach method has no spin moment (mz = 0); the
+    linear theory's spin moment uses Kalker's C33
+    (:func:`kalker_coefficients`).
+
+    The arguments broadcast against each other (numpy rules).  A call on
+    arrays computes the good elements and gives NaN with a negative status
+    for each bad one; errors="warn" gives one RollerRigWarning for the call,
+    "ignore" none, "raise" raises RollerRigError naming the first.  A
+    status of 1 (a warning) leaves a usable result.
+
+    The methods and their options (name=default [unit]: meaning; valid
+    values):
+
+    {methods}
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import rollerrig as rr
+    >>> f = rr.creep_forces(2e-4, a=6e-3, b=4e-3, N=1e4, mu=0.3)
+    >>> print(f"fx = {f.fx:.1f} N, status {f.status}")
+    fx = -1534.8 N, status 0
+
+    Arrays broadcast; a bad element is NaN with a negative status:
+
+    >>> f = rr.creep_forces([1e-4, 2e-4, np.nan], a=6e-3, b=4e-3, N=1e4, mu=0.3,
+    ...                     method="polach", errors="ignore")
+    >>> f.status
+    array([ 0,  0, -1], dtype=int8)
+
+    Falling friction needs the rolling speed:
+
+    >>> f = rr.creep_forces(2e-3, a=6e-3, b=4e-3, N=1e4, mu=0.3, speed=10.0,
+    ...                     friction=rr.FallingFriction(A=0.4, B=0.6))
+    >>> print(f"{-f.fx / (0.3 * 1e4):.3f}")
+    0.993
     """
     func = "creep_forces"
     if errors is None:
@@ -293,11 +495,45 @@ def fastsim_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, metho
                   speed=0.0, friction=None, **options):
     """The traction field of one case, for plots and checks.
 
-    Arguments as creep_forces (scalars only; a method with a traction
-    field: rollerrig.METHODS[method].has_field, the FASTSIM variants).
-    Returns a TractionField with the element centres [m], pressure and
-    tractions [Pa], the adhesion/slip map, element areas [m^2] and the
-    total forces [N] and moment [N m]; an invalid case raises RollerRigError.
+    Parameters
+    ----------
+    cx, cy, cphi, a, b, N, mu, G, nu, speed, friction
+        As for :func:`creep_forces` [-, -, rad/m, m, m, N, -, Pa, -, m/s],
+        scalars only.
+    method : str, optional
+        A method with a traction field (``rollerrig.METHODS[method].has_field``:
+        the FASTSIM variants).
+    **options
+        The method's options, as for :func:`creep_forces`.
+
+    Returns
+    -------
+    TractionField
+        The element centres x, y [m], pressure pn and tractions px, py [Pa],
+        the adhesion/slip map, element areas [m^2], the total forces fx, fy
+        [N] and moment mz [N m] and the status (:class:`TractionField`).
+
+    Raises
+    ------
+    RollerRigError
+        For an invalid case (naming the argument and its value, as
+        creep_forces with errors="raise"), a method without a traction
+        field, or array inputs (one case at a time).
+
+    See Also
+    --------
+    creep_forces : the forces alone, vectorised.
+    exact_field : the exact theory's field.
+    rollerrig.plot.traction_field : draws it.
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> t = rr.fastsim_field(2e-4, a=6e-3, b=4e-3, N=1e4, mu=0.3, nx=10, ny=10)
+    >>> t.pn.shape, int(t.slip.sum())
+    ((10, 10), 22)
+    >>> print(f"{t.fx:.1f}")
+    -1640.8
     """
     func = "fastsim_field"
     opts = creep_options(func, method, options)
@@ -315,4 +551,7 @@ def fastsim_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, metho
                          fx=fx, fy=fy, mz=mz, status=status)
 
 
-creep_forces.__doc__ = creep_forces.__doc__.format(methods=methods_doc())
+# the methods from the registry; cleandoc first, so that the list (at column 0) sits in the
+# Notes whatever the interpreter's docstring indentation
+creep_forces.__doc__ = inspect.cleandoc(creep_forces.__doc__).replace("{methods}",
+                                                                      methods_doc())

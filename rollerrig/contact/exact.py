@@ -30,21 +30,25 @@ __all__ = ["ExactSolution", "exact_field", "exact_solve", "exact_richardson"]
 
 @dataclass(frozen=True)
 class ExactSolution(TractionField):
-    """One case solved by the exact theory: a TractionField (x, y, pn, px,
-    py, slip, area; fx, fy, mz on the wheel [N], [N m] about the reference
-    point; status), arrays of shape (my, mx), rows at increasing y, columns
-    along increasing x (the leading edge, where the material enters, is the
-    last column), and what the exact theory adds:"""
+    """One case solved by the exact theory, as :func:`exact_field` and
+    :func:`exact_solve` return it.
 
-    sx: np.ndarray      #: slip velocity over the rolling speed [-], 0 in adhesion
-    sy: np.ndarray
+    A :class:`TractionField` (x, y, pn, px, py, slip, area; fx, fy [N], mz
+    [N m] on the wheel about the reference point; status) with arrays of
+    shape (my, mx), rows at increasing y, columns along increasing x (the
+    leading edge, where the material enters, is the last column), and the
+    fields below that the exact theory adds.
+    """
+
+    sx: np.ndarray      #: longitudinal slip velocity over the rolling speed [-], 0 in adhesion
+    sy: np.ndarray      #: lateral slip velocity over the rolling speed [-], 0 in adhesion
     contact: np.ndarray  #: True where the element carries pressure
     fn: float           #: normal force found [N]
     delta: float        #: approach [m]
     contact_area: float  #: area of the elements in contact [m^2]
     pmax: float         #: peak pressure [Pa]
     products: tuple     #: FFT products (normal, tangential)
-    newton_steps: int
+    newton_steps: int   #: Newton steps of the tangential problem
     residuals: tuple    #: final relative residuals (normal, tangential)
 
 
@@ -86,11 +90,45 @@ def exact_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, nx=None
                 tol=None, maxit=None, spin_shift=None):
     """The exact solution of one Hertzian case, with its fields.
 
-    Arguments as rollerrig.creep_forces (scalars; Coulomb friction), and the
-    options of method "exact": nx, ny elements across the ellipse's 2a and
-    2b (the grid adds 2 on each side), tol, maxit, spin_shift
-    (rollerrig.METHODS["exact"].options).  Returns an ExactSolution; an
-    invalid case raises RollerRigError.
+    Parameters
+    ----------
+    cx, cy, cphi, a, b, N, mu, G, nu
+        As for :func:`creep_forces` [-, -, rad/m, m, m, N, -, Pa, -]:
+        scalars; Coulomb friction.
+    nx, ny : int, optional
+        Elements across the ellipse's 2a and 2b (the grid adds 2 on each
+        side); None: the option's default.
+    tol, maxit, spin_shift : optional
+        The other options of method "exact"
+        (``rollerrig.METHODS["exact"].options``); None: their defaults.
+
+    Returns
+    -------
+    ExactSolution
+        The fields (pressure, tractions, slip velocities, adhesion and slip
+        areas) and totals of the case (:class:`ExactSolution`).
+
+    Raises
+    ------
+    RollerRigError
+        For an invalid case, naming the argument and its value (as
+        creep_forces with errors="raise"), an option out of range, or array
+        inputs (one case at a time).
+
+    See Also
+    --------
+    exact_solve : the same for any undeformed distance on a grid.
+    creep_forces : method="exact" gives the forces of many cases.
+    exact_richardson : the forces extrapolated to the continuum.
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> s = rr.exact_field(2e-4, a=6e-3, b=4e-3, N=1e4, mu=0.3, nx=15, ny=15)
+    >>> s.pn.shape
+    (19, 19)
+    >>> print(f"fx = {s.fx:.1f} N, fn = {s.fn:.1f} N")
+    fx = -1580.1 N, fn = 10000.0 N
     """
     func = "exact_field"
     options = {k: v for k, v in dict(nx=nx, ny=ny, tol=tol, maxit=maxit,
@@ -107,19 +145,68 @@ def exact_solve(h, *, dx, dy, N, mu, G=8.2e10, nu=0.28, cx=0.0, cy=0.0, cphi=0.0
                 y0=None, tol=None, maxit=None, spin_shift=None):
     """The exact solution for any undeformed distance h on a grid.
 
-    h:       array (my, mx): the gap between the undeformed surfaces at the
-             element centres [m] (any constant offset; the approach is
-             solved for); its lowest region must lie inside, with at least
-             one element of margin on every side of the contact area
-    dx, dy:  element size [m]; x0, y0: the centre of element (0, 0) relative
-             to the reference point (the spin's centre and Mz's origin;
-             default: the grid's centre)
-    N:       normal load [N]; mu: Coulomb friction; G [Pa], nu: material
-    cx, cy, cphi: creepages [-], [-], [rad/m]
-    tol, maxit, spin_shift: as the options of method "exact" (None: their
-             defaults; rollerrig.METHODS["exact"].options)
-    Returns an ExactSolution.  A contact that reaches the grid's edge is
-    refused (RollerRigError): the grid would have cut it off.
+    Parameters
+    ----------
+    h : array_like, shape (my, mx)
+        The gap between the undeformed surfaces at the element centres [m]
+        (any constant offset; the approach is solved for); its lowest
+        region must lie inside, with at least one element of margin on
+        every side of the contact area.  At most 1024 elements a side (the
+        solver's limit).
+    dx, dy : float
+        Element size [m], > 0 (the area dx dy a normal double, the ratio
+        within 1e6).
+    N : float
+        Normal load [N].
+    mu : float
+        Coulomb friction coefficient [-].
+    G : float, optional
+        Combined shear modulus [Pa].
+    nu : float, optional
+        Combined Poisson ratio [-].
+    cx, cy : float, optional
+        Creepages [-].
+    cphi : float, optional
+        Spin [rad/m].
+    x0, y0 : float, optional
+        The centre of element (0, 0) relative to the reference point (the
+        spin's centre and Mz's origin) [m]; default: the grid's centre.
+    tol, maxit, spin_shift : optional
+        As the options of method "exact"
+        (``rollerrig.METHODS["exact"].options``); None: their defaults.
+
+    Returns
+    -------
+    ExactSolution
+        The solution on the grid of h (:class:`ExactSolution`).
+
+    Raises
+    ------
+    RollerRigError
+        Naming the argument and its value: h not a 2-D array of real
+        numbers or too large, dx, dy not valid element sizes, a number not
+        a scalar, an option out of range, an invalid case (as creep_forces);
+        and a contact that reaches the grid's edge (the grid would have cut
+        it off).
+
+    See Also
+    --------
+    rollerrig.undeformed_distance : h of a wheel on its roller.
+    exact_field : the Hertzian case, its grid built for it.
+
+    Examples
+    --------
+    A Hertzian gap (A = 2.5 /m, B = 1/0.6 /m) on a 25 x 25 grid:
+
+    >>> import numpy as np
+    >>> import rollerrig as rr
+    >>> x = np.linspace(-2e-3, 2e-3, 25)
+    >>> y = np.linspace(-2.4e-3, 2.4e-3, 25)
+    >>> X, Y = np.meshgrid(x, y)
+    >>> s = rr.exact_solve(2.5 * X**2 + Y**2 / 0.6, dx=x[1] - x[0], dy=y[1] - y[0],
+    ...                    N=5e3, mu=0.3, cx=5e-4)
+    >>> print(f"fx = {s.fx:.1f} N, pmax = {s.pmax / 1e6:.0f} MPa")
+    fx = -590.3 N, pmax = 596 MPa
     """
     return _exact_solve("exact_solve", h, dict(dx=dx, dy=dy, N=N, mu=mu, G=G, nu=nu, cx=cx,
                                                cy=cy, cphi=cphi, x0=x0, y0=y0),
@@ -186,15 +273,52 @@ def exact_richardson(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, nx
                      ny=None, **options):
     """The continuum estimate of the exact forces from two grids.
 
+    Parameters
+    ----------
+    cx, cy, cphi, a, b, N, mu, G, nu
+        As for :func:`creep_forces` [-, -, rad/m, m, m, N, -, Pa, -]; arrays
+        broadcast.
+    nx : int, optional
+        Elements across the ellipse's 2a on the coarse grid, at most half
+        the method's largest (the fine grid has 2 nx).
+    ny : int, optional
+        Elements across 2b on the coarse grid; None: nx.
+    **options
+        The other options of method "exact" (and ``errors``), as for
+        creep_forces; checked with nx, ny before either grid is solved.
+
+    Returns
+    -------
+    forces : CreepForces
+        The continuum estimate 2 F2 - F1 (fx, fy [N], mz [N m], status: the
+        lower of the two grids').
+    error : CreepForces
+        The error estimate ``|F2 - F1|`` in the same fields.
+
+    Raises
+    ------
+    RollerRigError
+        For a ``method`` argument, nx or ny beyond half the method's
+        largest, a bad option, and as creep_forces for the cases.
+
+    See Also
+    --------
+    creep_forces : method="exact" on one grid.
+
+    Notes
+    -----
     The discretisation error of the forces is of first order in the element
     size (the upwind difference of steady rolling), so with F1 on nx x ny
     and F2 on 2nx x 2ny elements across the ellipse the continuum value is
-    about 2 F2 - F1, with the error estimate |F2 - F1| (the size of the
+    about 2 F2 - F1, with the error estimate ``|F2 - F1|`` (the size of the
     correction itself: an upper bound where the convergence is monotone).
-    Arguments as creep_forces (arrays broadcast) with method "exact"; nx,
-    ny up to half the method's largest (the fine grid's), checked with the
-    options before either grid is solved.
-    Returns (forces, error): two CreepForces-like tuples (fx, fy, mz, status).
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> f, err = rr.exact_richardson(2e-4, a=6e-3, b=4e-3, N=1e4, mu=0.3, nx=9)
+    >>> print(f"fx = {f.fx:.0f} N +- {err.fx:.0f} N")
+    fx = -1491 N +- 82 N
     """
     from .creep import CreepForces, creep_forces
     func = "exact_richardson"

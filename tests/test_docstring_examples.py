@@ -1,0 +1,56 @@
+"""The Examples sections of the public docstrings run as written (doctest).
+
+The API reference (docs/api, numpydoc) shows these examples; each is a
+doctest whose printed output is compared with what the call gives now, so an
+example that stops working, or a number that changes, fails here.  Every
+module whose docstrings were converted to numpydoc is listed; a module
+listed must hold at least one example (a test that cannot silently check
+nothing).  The examples are small cases (milliseconds each).
+"""
+import doctest
+import importlib
+import warnings
+
+import numpy as np
+import pytest
+
+MODULES = [
+    "rollerrig.contact.creep",
+    "rollerrig.contact.exact",
+    "rollerrig._binding",
+    "rollerrig._errors",
+    "rollerrig.capi",
+]
+
+# the output as a reader sees it: spacing of numpy's reprs free, "..." for the
+# parts an example leaves out
+FLAGS = doctest.NORMALIZE_WHITESPACE | doctest.ELLIPSIS
+PRINT_DEFAULTS = dict(precision=8, threshold=1000, edgeitems=3, linewidth=75, suppress=False,
+                      nanstr="nan", infstr="inf", sign="-", floatmode="maxprec", legacy=False)
+
+
+def _examples(name):
+    module = importlib.import_module(name)
+    finder = doctest.DocTestFinder(exclude_empty=True)
+    # the module's own objects only (a name re-exported from another module
+    # is tested there)
+    return [t for t in finder.find(module, name) if t.examples]
+
+
+@pytest.mark.parametrize("name", MODULES)
+def test_docstring_examples(name, tmp_path, monkeypatch):
+    tests = _examples(name)
+    assert tests, f"{name}: no docstring example found"
+    monkeypatch.chdir(tmp_path)                  # an example that writes a file writes here
+    monkeypatch.setenv("MPLBACKEND", "Agg")
+    runner = doctest.DocTestRunner(optionflags=FLAGS)
+    failures = []
+    # numpy's default printing (another test may have changed it in this process)
+    with warnings.catch_warnings(), np.printoptions(**PRINT_DEFAULTS):
+        # an example shows the warning-free call; one that warns fails
+        warnings.simplefilter("error")
+        for test in tests:
+            runner.run(test, out=lambda text: failures.append(text))
+    summary = runner.summarize(verbose=False)
+    assert summary.attempted > 0
+    assert summary.failed == 0, "".join(failures)
