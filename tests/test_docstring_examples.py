@@ -20,6 +20,10 @@ MODULES = [
     "rollerrig._binding",
     "rollerrig._errors",
     "rollerrig.capi",
+    "rollerrig.analysis.fit",
+    "rollerrig.analysis.sweep",
+    "rollerrig.analysis.exact_table",
+    "rollerrig.analysis.reference",
 ]
 
 # the output as a reader sees it: spacing of numpy's reprs free, "..." for the

@@ -37,9 +37,11 @@ import math
 
 import numpy as np
 
-#: the shipped table's nodes along (log a/b, alpha, theta, u) and its r0
+#: the shipped table's nodes along (log a/b, alpha, theta, u)
 DEFAULT_SHAPE = (21, 13, 23, 21)
+#: the shipped table's r0, the scale of the compacted magnitude u = R / (R + r0)
 R0 = 1.0
+#: the range of a/b the tables cover (their first axis is log a/b)
 AOB_RANGE = (0.1, 10.0)
 #: the case every node is solved on (the normalised forces do not depend on it)
 _C, _N, _MU, _G = 6e-3, 5e4, 0.3, 8.2e10
@@ -49,27 +51,39 @@ _C, _N, _MU, _G = 6e-3, 5e4, 0.3, 8.2e10
 class ExactTable:
     """A table of normalised exact forces on four uniform axes.
 
-    lo, hi: the axes' ends (log a/b, alpha, theta, u); values: float32 of
-    shape (n0, n1, n2, n3, 3) holding fx / (mu N), fy / (mu N), mz / (mu N c)
-    at the folded point; nu, r0, nx: what it was built for and with.
+    The axes are (log a/b, alpha, theta, u) (the module docstring defines
+    them); the values are the forces at the folded point.
+
+    See Also
+    --------
+    build_exact_table : builds one.
+    creep_forces : method "exact_table" interpolates the built-in one.
     """
-    lo: tuple
-    hi: tuple
+
+    lo: tuple           #: the axes' lower ends (log a/b, alpha [rad], theta [rad], u)
+    hi: tuple           #: the axes' upper ends, as lo
+    #: float32 of shape (n0, n1, n2, n3, 3) holding fx / (mu N), fy / (mu N),
+    #: mz / (mu N c) at the folded point (c = sqrt(ab))
     values: np.ndarray
-    nu: float
-    r0: float
-    nx: int
+    nu: float           #: the Poisson ratio [-] it was built for
+    r0: float           #: the scale of u = R / (R + r0) it was built with
+    nx: int             #: the coarse grid of the exact theory at each node (and 2 nx)
 
     @property
     def shape(self):
+        """The nodes along each of the four axes, (n0, n1, n2, n3)."""
         return self.values.shape[:4]
 
     def axes(self):
+        """The four axes' node values, a list of 1-D arrays (log a/b, alpha, theta, u)."""
         return [np.linspace(lo, hi, n) for lo, hi, n in zip(self.lo, self.hi, self.shape)]
 
     def save(self, path):
-        """The table as .npz at `path` (its name ends in .npz; a new path or
-        a regular file, replaced whole: rollerrig._files.write_file)."""
+        """Write the table as .npz at `path` and return `path`.
+
+        The name ends in .npz; a new path or a regular file, replaced whole
+        (rollerrig._files.write_file).  :meth:`load` reads it back.
+        """
         from .._files import write_file
         write_file(path, lambda fh: np.savez_compressed(
             fh, lo=np.array(self.lo), hi=np.array(self.hi), values=self.values, nu=self.nu,
@@ -78,15 +92,18 @@ class ExactTable:
 
     @classmethod
     def load(cls, path):
+        """Read a table written by :meth:`save` (a .npz file at `path`)."""
         with np.load(path) as z:
             return cls(tuple(float(v) for v in z["lo"]), tuple(float(v) for v in z["hi"]),
                        z["values"].astype(np.float32), float(z["nu"]), float(z["r0"]),
                        int(z["nx"]))
 
     def write_c(self, path):
-        """The table as C source, the core's built-in table, at `path` (its
-        name ends in .c; a new path or a regular file, replaced whole:
-        rollerrig._files.write_file)."""
+        """Write the table as C source, the core's built-in table, at `path`; return `path`.
+
+        The name ends in .c; a new path or a regular file, replaced whole
+        (rollerrig._files.write_file).
+        """
         from .._files import write_file
         n = self.shape
         flat = self.values.astype(np.float32).ravel()
@@ -129,7 +146,20 @@ class ExactTable:
 
 
 def builtin_table():
-    """The table compiled into the C core (the one method "exact_table" uses)."""
+    """The table compiled into the C core (the one method "exact_table" uses).
+
+    Returns
+    -------
+    ExactTable
+        Its values read-only.
+
+    Examples
+    --------
+    >>> from rollerrig.analysis.exact_table import builtin_table
+    >>> table = builtin_table()
+    >>> table.shape, table.nu, table.nx
+    ((21, 13, 23, 21), 0.28, 27)
+    """
     from .. import _core
     shape, lo, hi, nu, r0, nx, raw = _core.exact_table_builtin()
     values = np.frombuffer(raw, dtype=np.float32).reshape(tuple(shape) + (3,)).copy()
@@ -152,11 +182,40 @@ def _node_case(log_aob, alpha, theta, u, nu, r0):
 
 
 def full_sliding(log_aob, alpha, theta, nu, *, nr=160, nb=320):
-    """The full-sliding limit (u = 1) of the normalised forces: -mu p w/|w|
-    integrated over Hertz's pressure, w the rigid slip (cx - cphi y, cy +
-    cphi x) in the direction (alpha, theta).  Gauss-Legendre in the radius
-    of the unit disc (nr), the midpoint rule in the angle (nb); the slip's
-    direction jumps only at the spin centre, a point: about 1e-5."""
+    """The full-sliding limit (u = 1) of the normalised forces.
+
+    -mu p w/``|w|`` integrated over Hertz's pressure, w the rigid slip
+    (cx - cphi y, cy + cphi x) in the direction (alpha, theta).
+
+    Parameters
+    ----------
+    log_aob, alpha, theta : float or array_like
+        The point: log(a/b), alpha [rad], theta [rad]; broadcast.
+    nu : float
+        Poisson ratio [-].
+    nr, nb : int, optional
+        Gauss-Legendre points in the radius of the unit disc, midpoint-rule
+        points in the angle.
+
+    Returns
+    -------
+    ndarray
+        Shape (..., 3): fx / (mu N), fy / (mu N), mz / (mu N c).
+
+    Notes
+    -----
+    The slip's direction jumps only at the spin centre, a point: the
+    quadrature is accurate to about 1e-5.
+
+    Examples
+    --------
+    Pure longitudinal sliding on a circle: fx = -mu N.
+
+    >>> import numpy as np
+    >>> from rollerrig.analysis.exact_table import full_sliding
+    >>> full_sliding(0.0, np.pi / 2, 0.0, 0.28).round(4) + 0.0
+    array([-1.,  0.,  0.])
+    """
     from ..contact.creep import kalker_coefficients
     log_aob, alpha, theta = np.broadcast_arrays(*(np.asarray(v, float)
                                                   for v in (log_aob, alpha, theta)))
@@ -186,7 +245,27 @@ def full_sliding(log_aob, alpha, theta, nu, *, nr=160, nb=320):
 
 
 def node_values(log_aob, alpha, theta, u, *, nu, nx, r0=R0):
-    """The table's values at nodes (1-D arrays): a dict fx, fy, mz (normalised)."""
+    """The table's values at nodes.
+
+    Parameters
+    ----------
+    log_aob, alpha, theta, u : array_like
+        The nodes' coordinates (1-D arrays of one length; alpha, theta
+        [rad]).
+    nu : float
+        Poisson ratio [-].
+    nx : int
+        The exact theory's coarse grid (rr.exact_richardson from nx and 2
+        nx); u = 0 gives 0, u = 1 the full-sliding limit.
+    r0 : float, optional
+        The scale of u = R / (R + r0).
+
+    Returns
+    -------
+    dict
+        {"fx", "fy", "mz"}: 1-D arrays of fx / (mu N), fy / (mu N),
+        mz / (mu N c).
+    """
     from ..contact.exact import exact_richardson
     log_aob, alpha, theta, u = (np.asarray(v, float) for v in (log_aob, alpha, theta, u))
     out = np.zeros(u.shape + (3,))
@@ -206,8 +285,50 @@ def node_values(log_aob, alpha, theta, u, *, nu, nx, r0=R0):
 
 def build_exact_table(shape=DEFAULT_SHAPE, *, nu=0.28, nx=27, r0=R0, backend="threads",
                       workers=None, client=None, progress=True):
-    """Build an ExactTable: the exact theory at every node (rr.sweep: on
-    threads, or on a Dask cluster with client=, as the sweeps)."""
+    """Build an ExactTable: the exact theory at every node.
+
+    The nodes run through :func:`sweep` (on threads, or on a Dask cluster
+    with client=, as the sweeps).
+
+    Parameters
+    ----------
+    shape : tuple of 4 int, optional
+        Nodes along (log a/b, alpha, theta, u), each >= 4 (odd theta for
+        the symmetric middle node); default the shipped table's.
+    nu : float, optional
+        Poisson ratio [-], in [0, 0.5].
+    nx : int, optional
+        Elements across the ellipse of the coarse grid at each node (the
+        fine grid has 2 nx; rr.exact_richardson).
+    r0 : float, optional
+        The scale of u = R / (R + r0).
+    backend, workers, client, progress
+        As for :func:`sweep`.
+
+    Returns
+    -------
+    ExactTable
+        The table (:class:`ExactTable`), symmetry zeros set exactly.
+
+    Raises
+    ------
+    RollerRigError
+        For a shape that is not four axes of >= 4 nodes, nu outside [0,
+        0.5], and as sweep and exact_richardson.
+
+    Notes
+    -----
+    The shipped table (about 130 000 nodes) takes some 40 CPU minutes.
+
+    Examples
+    --------
+    A small table (a second or so):
+
+    >>> import rollerrig as rr
+    >>> table = rr.build_exact_table((4, 4, 5, 4), nx=5, progress=False)
+    >>> table.shape, table.values.dtype
+    ((4, 4, 5, 4), dtype('float32'))
+    """
     from .sweep import sweep
     from .._errors import RollerRigError
     shape = tuple(int(v) for v in shape)
@@ -229,12 +350,24 @@ def build_exact_table(shape=DEFAULT_SHAPE, *, nu=0.28, nx=27, r0=R0, backend="th
 
 
 def symmetry_zeros(values):
-    """The forces that the symmetries make vanish, set to zero at the nodes
-    (the solver leaves its round-off there, some 1e-7): fx where x = 0
-    (pure spin, alpha = 0, and theta = +-pi/2: reversed and mirrored, such a
-    point maps onto itself with fx reversed); fy and mz where y = z = 0
+    """The forces that the symmetries make vanish, set to zero at the nodes.
+
+    The solver leaves its round-off there, some 1e-7: fx where x = 0 (pure
+    spin, alpha = 0, and theta = +-pi/2: reversed and mirrored, such a point
+    maps onto itself with fx reversed); fy and mz where y = z = 0
     (alpha = pi/2, theta = 0: mirrored onto itself).  Needs odd theta nodes
-    for the middle one."""
+    for the middle one.
+
+    Parameters
+    ----------
+    values : array_like, shape (n0, n1, n2, n3, 3)
+        A table's values.
+
+    Returns
+    -------
+    ndarray
+        A float64 copy with those values zero.
+    """
     v = np.array(values, dtype=float)
     v[:, 0, :, :, 0] = 0.0
     v[:, :, 0, :, 0] = v[:, :, -1, :, 0] = 0.0

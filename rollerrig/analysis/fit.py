@@ -95,9 +95,12 @@ def _method_parameters(method, **start):
                for n, v in start.items()}}
 
 
-# Polach 2005, dry rail: A = 0.4, B = 0.6 s/m, kA = 1, kS = 0.4.
+#: fit_polach's parameters: name -> (start, lower, upper, lower bound open,
+#: upper bound open); start None: the data's peak |force| / N.  Polach 2005,
+#: dry rail: A = 0.4, B = 0.6 s/m, kA = 1, kS = 0.4
 POLACH_PARAMETERS = _method_parameters("polach", kA=1.0, kS=0.4)
-# Spiryagin, Polach and Cole 2013 as in CONTACT's example: k0 0.54, alpha_inf 0.02, beta 0.62
+#: fit_modified_fastsim's parameters, as POLACH_PARAMETERS: Spiryagin, Polach
+#: and Cole 2013 as in CONTACT's example: k0 0.54, alpha_inf 0.02, beta 0.62
 MODIFIED_FASTSIM_PARAMETERS = _method_parameters("modified_fastsim", k0=0.54, alpha_inf=0.02,
                                                  beta=0.62)
 #: units of the fitted parameters ("-": dimensionless); A, B are the falling
@@ -107,50 +110,68 @@ PARAMETER_UNITS = {"mu0": "-", "A": "-", "B": "s/m",
                       (("polach", POLACH_PARAMETERS),
                        ("modified_fastsim", MODIFIED_FASTSIM_PARAMETERS))
                       for n in P if n not in _FRICTION_PARAMETERS}}
+#: the robust losses of scipy.optimize.least_squares the fits take
 LOSSES = ("linear", "soft_l1", "huber", "cauchy", "arctan")
 _RATIO = "kS/kA"
 
 
 @dataclass
 class FitResult:
-    """The result of fit_polach or fit_modified_fastsim.
+    """The result of :func:`fit_polach` or :func:`fit_modified_fastsim`.
 
-    params:    every parameter of the model, fitted or held {name: value}
-    stderr:    standard error of each fitted parameter (NaN where the
-               Jacobian is singular or there are no more points than
-               parameters)
-    fitted:    the names fitted
-    residuals: model - data [N], in the data's sign; a list of arrays if
-               the data were a list of curves
-    rms:       root mean square of the residuals [N]
-    cost:      least_squares' cost, 0.5 sum loss(r^2), r = weights (model -
-               data) / F_ref
-    success, message, nfev: from least_squares (message also says when the
-               data's sign was flipped)
-    sign:      +1, or -1 if the data were negated for the fit
-    at_bound:  the fitted parameters that ended on a bound (kS: kS = kA);
-               their standard errors mean little
+    See Also
+    --------
+    rollerrig.plot.fit : draws the data and the fitted model.
     """
 
-    model: str
+    model: str          #: "polach" or "modified_fastsim"
+    #: every parameter of the model, fitted or held, {name: value} (units:
+    #: rollerrig.analysis.fit.PARAMETER_UNITS)
     params: dict
+    #: standard error of each fitted parameter, {name: value} (NaN where the
+    #: Jacobian is singular or there are no more points than parameters)
     stderr: dict
-    fitted: tuple
+    fitted: tuple       #: the names fitted, in the model's order
+    #: model - data [N], in the data's sign; a list of arrays if the data were
+    #: a list of curves
     residuals: object
-    rms: float
+    rms: float          #: root mean square of the residuals [N]
+    #: least_squares' cost, 0.5 sum loss(r^2), r = weights (model - data) / F_ref
     cost: float
-    success: bool
-    message: str
-    nfev: int
-    sign: int
+    success: bool       #: least_squares' success flag
+    message: str        #: least_squares' message (also says when the data's sign was flipped)
+    nfev: int           #: least_squares' number of function evaluations
+    sign: int           #: +1, or -1 if the data were negated for the fit
+    #: the fitted parameters that ended on a bound (kS: kS = kA); their
+    #: standard errors mean little
     at_bound: tuple = ()
+    #: the fit's fixed settings (contact, speeds, held creepages, grid), for predict
     settings: dict = field(repr=False, default_factory=dict)
 
     def predict(self, cx, speed=None, *, cy=None, cphi=None):
-        """The fitted model's force at creepage cx [N], in the data's sign.
+        """The fitted model's force fx [N] at creepage cx, in the data's sign.
 
-        speed defaults to the fit's speed if it had one; cy, cphi to the
-        fit's.  Arguments broadcast as in creep_forces."""
+        Parameters
+        ----------
+        cx : float or array_like
+            Longitudinal creepage [-].
+        speed : float or array_like, optional
+            Rolling speed [m/s]; default the fit's speed (if it had one).
+        cy : float or array_like, optional
+            Lateral creepage [-]; default the fit's.
+        cphi : float or array_like, optional
+            Spin [rad/m]; default the fit's.
+
+        Returns
+        -------
+        float or ndarray
+            fx [N], the arguments broadcast as in creep_forces.
+
+        Raises
+        ------
+        RollerRigError
+            If the fit had several speeds and `speed` is not given.
+        """
         s = self.settings
         if speed is None:
             if len(s["speeds"]) != 1:
@@ -554,24 +575,122 @@ def fit_polach(cx, force, *, a, b, N, G=8.2e10, nu=0.28, speed, cy=0.0, cphi=0.0
                f_scale=None, weights=None):
     """Fit Polach's method (creep_forces(method="polach")) to creep curves.
 
-    cx, force: longitudinal creepage [-] and force fx [N]: 1-D arrays (one
-               curve) or lists of them (one per speed); see the module notes
-               on the sign
-    a, b, N, G, nu: the contact (scalars, shared by the curves)
-    speed:     rolling speed [m/s], a scalar or one per curve
-    cy, cphi:  lateral creepage and spin, held (scalars)
-    fit:       the parameters fitted, of mu0, A, B, kA, kS; the others are
-               held at x0
-    x0:        {name: start or held value}; defaults mu0 = the data's peak
-               |force| / N, A = 0.4, B = 0.6 s/m, kA = 1, kS = 0.4 (Polach
-               2005, dry rail)
-    bounds:    {name: (lo, hi)} narrowing the physical bounds; the ratio
-               kS/kA is bounded as "kS/kA"
-    loss, f_scale: least_squares' robust loss and its scale, a fraction of
-               the data's peak |force| (default 0.05)
-    weights:   per-point weights, shaped as cx
-    A and B need data in the falling branch, B preferably at several speeds
-    (module notes).  Returns a FitResult.
+    Parameters
+    ----------
+    cx : array_like or list of array_like
+        Longitudinal creepage [-]: a 1-D array (one curve) or a list of them
+        (one per speed); finite.
+    force : array_like or list of array_like
+        The longitudinal force fx [N] at each cx, shaped as cx (sign:
+        Notes).
+    a, b : float
+        Semi-axes [m] of the contact, shared by the curves.
+    N : float
+        Normal load [N].
+    G : float, optional
+        Combined shear modulus [Pa].
+    nu : float, optional
+        Combined Poisson ratio [-].
+    speed : float or array_like
+        Rolling speed [m/s], > 0: a scalar or one per curve.
+    cy : float, optional
+        Lateral creepage [-], held.
+    cphi : float, optional
+        Spin [rad/m], held.
+    fit : str or sequence of str, optional
+        The parameters fitted, of mu0, A, B, kA, kS; the others are held at
+        `x0`.
+    x0 : dict, optional
+        {name: start or held value}; defaults mu0 = the data's peak
+        ``|force|`` / N, A = 0.4, B = 0.6 s/m, kA = 1, kS = 0.4 (Polach 2005,
+        dry rail).
+    bounds : dict, optional
+        {name: (lo, hi)} narrowing the physical bounds (Notes); the ratio
+        kS/kA is bounded as "kS/kA".
+    loss : str, optional
+        least_squares' robust loss: "linear", "soft_l1", "huber", "cauchy"
+        or "arctan".
+    f_scale : float, optional
+        The loss's scale, a fraction of the data's peak ``|force|``
+        (default 0.05).
+    weights : array_like or list of array_like, optional
+        Per-point weights >= 0 (not all 0), shaped as cx.
+
+    Returns
+    -------
+    FitResult
+        The parameters (fitted and held), their standard errors, the
+        residuals [N] and the solver's report (:class:`FitResult`).
+
+    Raises
+    ------
+    RollerRigError
+        Naming the argument: data not finite, not 1-D, empty or of
+        mismatched lengths; speed not > 0 or not one per curve; a, b, N, G,
+        nu, cy, cphi not finite numbers (a, b, N, G > 0); an unknown or
+        repeated parameter in fit, x0 or bounds; a start outside its
+        bounds (kS above kA); bounds that leave no room; force zero
+        everywhere, cx zero everywhere, or force above 10 times N; a model that
+        gives no finite force.
+    ImportError
+        Without scipy (the extra "fit": ``pip install 'rollerrig[fit]'``).
+
+    See Also
+    --------
+    fit_modified_fastsim : the same for modified FASTSIM.
+    creep_forces : the model, method="polach".
+    rollerrig.plot.fit : draws a fit over its data.
+
+    Notes
+    -----
+    **Sign.**  The library's forces act on the wheel and oppose the
+    creepage (Kalker's sign: fx < 0 for cx > 0).  The fit uses the data's
+    sign as given.  If the data point the other way (sum of force *
+    sign(cx) > 0: forces on the roller, or magnitudes), they are negated for
+    the fit, FitResult.sign is -1, the message says so, and predict() and
+    the residuals are in the data's sign.
+
+    **What the data determine.**  mu0, kA and kS come from the shape of one
+    curve: the initial slope fixes kA + kS, the curvature of the rise their
+    split, the peak mu0.  The falling friction mu(w) = mu0 [(1 - A)
+    exp(-B w) + A] depends on the slip speed w = speed * ``|creepage|``, so A
+    and B are only identifiable where the data reach well past the peak
+    into the falling branch, and B (the speed scale of the fall) only
+    robustly with several speeds: at one speed B trades off against kA, kS
+    and mu0.  A parameter the data cannot fix shows as a large standard
+    error (NaN where the Jacobian is singular); hold it with `fit` and `x0`
+    instead.
+
+    **The fit.**  scipy.optimize.least_squares ('trf', bounds) on the
+    residuals r = weights * (model - force) / F_ref, F_ref the data's peak
+    ``|force|``, with a robust loss whose f_scale is the residual beyond
+    which a point counts as an outlier.  Several starts (x0, then the
+    friction law moved, then Polach's kA + kS from the data's initial
+    slope); the best fit is kept, and the first that fits to 1e-4 of the
+    peak ends the search.  Bounds: mu0 > 0, 0 < A <= 1, B >= 0,
+    0 < kS <= kA <= 1 (kS is fitted as the ratio kS/kA in (0, 1], so the
+    order holds).  Standard errors: cov = (J^T J)^-1 s^2 from the Jacobian
+    J of the unweighted-loss residuals at the solution (central
+    differences), s^2 = sum r^2 / (m - p), m points, p fitted parameters;
+    kS's from the ratio's by the delta method.  They assume independent
+    errors of equal variance (after weighting) and a model that fits
+    (rollerrig.analysis.fit's module docstring has the details).
+
+    Examples
+    --------
+    A curve made by the model itself, fitted back:
+
+    >>> import numpy as np
+    >>> import rollerrig as rr
+    >>> cx = np.linspace(1e-4, 0.02, 25)
+    >>> contact = dict(a=6.3e-3, b=12.6e-3, N=106.7e3)
+    >>> fx = rr.creep_forces(cx, mu=0.35, speed=10.0, friction=rr.FallingFriction(0.4, 0.6),
+    ...                      method="polach", kA=0.8, kS=0.3, **contact).fx
+    >>> res = rr.fit_polach(cx, fx, speed=10.0, fit=("mu0", "kA", "kS"), **contact)
+    >>> print({k: round(v, 4) for k, v in res.params.items()})
+    {'mu0': 0.35, 'A': 0.4, 'B': 0.6, 'kA': 0.8, 'kS': 0.3}
+    >>> print(f"{res.predict(0.01):.0f} N")
+    -28281 N
     """
     return _fit("fit_polach", "polach", POLACH_PARAMETERS, cx, force, a, b, N, G, nu,
                 speed, cy, cphi, fit, x0, bounds, loss, f_scale, weights, {})
@@ -583,16 +702,60 @@ def fit_modified_fastsim(cx, force, *, a, b, N, G=8.2e10, nu=0.28, speed, cy=0.0
                          grid="rect", bound="parabolic", slip_speed=None):
     """Fit modified FASTSIM (Spiryagin, Polach and Cole 2013) to creep curves.
 
-    As fit_polach, with the parameters mu0, A, B (falling friction) and
-    k0, alpha_inf, beta (the slope reduction k = k0 (alpha_inf + (1 -
-    alpha_inf) / (1 + beta eps))).  By default only k0, alpha_inf, beta are
-    fitted and the friction law is held at x0 (mu0 = the data's peak
-    |force| / N, A = 0.4, B = 0.6 s/m): give the measured friction law in x0,
-    or add "mu0", "A", "B" to fit.  Defaults of the others: k0 = 0.54,
-    alpha_inf = 0.02, beta = 0.62 (CONTACT's example).  nx, ny, grid, bound,
-    slip_speed go to creep_forces (slip_speed None: the method's default,
-    the rigid slip speed).  Each evaluation runs FASTSIM on every point, so
-    a fit takes a few hundred calls on the data.
+    Parameters
+    ----------
+    cx, force, a, b, N, G, nu, speed, cy, cphi, x0, bounds, loss, f_scale, weights
+        As for :func:`fit_polach` (cx [-], force [N], a, b [m], N [N], G
+        [Pa], speed [m/s], cphi [rad/m]).
+    fit : str or sequence of str, optional
+        The parameters fitted, of mu0, A, B (falling friction) and k0,
+        alpha_inf, beta (the slope reduction k = k0 (alpha_inf + (1 -
+        alpha_inf) / (1 + beta eps))).  By default only k0, alpha_inf, beta:
+        the friction law is held at x0 (mu0 = the data's peak ``|force|`` /
+        N, A = 0.4, B = 0.6 s/m); give the measured friction law in x0, or
+        add "mu0", "A", "B" to fit.  Defaults of the others: k0 = 0.54,
+        alpha_inf = 0.02, beta = 0.62 (CONTACT's example).
+    nx, ny : int, optional
+        FASTSIM's grid, passed to creep_forces.
+    grid, bound : str, optional
+        Passed to creep_forces.
+    slip_speed : str, optional
+        Passed to creep_forces; None: the method's default, the rigid slip
+        speed.
+
+    Returns
+    -------
+    FitResult
+        As for fit_polach (:class:`FitResult`).
+
+    Raises
+    ------
+    RollerRigError
+        As for fit_polach, and for a FASTSIM option out of range.
+    ImportError
+        Without scipy (the extra "fit").
+
+    See Also
+    --------
+    fit_polach : the method's notes on the sign, the data and the fit.
+
+    Notes
+    -----
+    Each evaluation runs FASTSIM on every point, so a fit takes a few
+    hundred calls on the data.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import rollerrig as rr
+    >>> cx = np.linspace(1e-4, 0.02, 25)
+    >>> contact = dict(a=6.3e-3, b=12.6e-3, N=106.7e3)
+    >>> fx = rr.creep_forces(cx, mu=0.35, speed=10.0, friction=rr.FallingFriction(0.4, 0.6),
+    ...                      method="modified_fastsim", k0=0.6, alpha_inf=0.1, beta=1.0,
+    ...                      nx=20, ny=20, **contact).fx
+    >>> res = rr.fit_modified_fastsim(cx, fx, speed=10.0, x0={"mu0": 0.35}, **contact)
+    >>> print({k: round(res.params[k], 4) for k in res.fitted})
+    {'k0': 0.6, 'alpha_inf': 0.1, 'beta': 1.0}
     """
     extra = dict(nx=nx, ny=ny, grid=grid, bound=bound, slip_speed=slip_speed)
     return _fit("fit_modified_fastsim", "modified_fastsim", MODIFIED_FASTSIM_PARAMETERS, cx,

@@ -42,9 +42,12 @@ __all__ = ["ExactCases", "ScoreResult", "CreepCurve", "CurveScore", "exact_cases
            "random_cases", "own_exact_cases", "score", "table", "creep_curves", "score_curves",
            "DATA_DIR", "TABLE_FILE", "CURVES_FILE"]
 
+#: the folder of the shipped reference data (rollerrig/data/reference)
 DATA_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "data",
                         "reference")
+#: CONTACT's test table of 3220 exact cases (exact_cases), in DATA_DIR
 TABLE_FILE = "contact_test_table_mx11.csv"
+#: CONTACT's creep-curve example (creep_curves), in DATA_DIR
 CURVES_FILE = "creep_curves_exact_vs_fastsim.csv"
 
 MM = 1e-3          # m per mm
@@ -52,7 +55,13 @@ N_PER_MM2 = 1e6    # Pa per N/mm^2
 
 
 def read_csv(name, folder=DATA_DIR):
-    """(the # source line without '#', list of row dicts) of a reference CSV."""
+    """Read a reference CSV: (the # source line without '#', list of row dicts).
+
+    Raises
+    ------
+    RollerRigError
+        If the first line is not a # source comment.
+    """
     path = os.path.join(folder, name)
     with open(path, newline="") as f:
         comment = f.readline()
@@ -80,9 +89,11 @@ def _frozen(arr):
 # --------------------------------------------------------------------------
 
 class ExactCases(NamedTuple):
-    """Exact reference cases in SI, one array element per case: CONTACT's
-    test table (exact_cases(), 3220; N, mu, G, nu one number each) or the
-    library's own (own_exact_cases(); N and mu per case)."""
+    """Exact reference cases in SI, one array element per case.
+
+    CONTACT's test table (:func:`exact_cases`, 3220; N, mu, G, nu one number
+    each) or the library's own (:func:`own_exact_cases`; N and mu per case).
+    """
 
     cx: np.ndarray          #: longitudinal creepage [-]
     cy: np.ndarray          #: lateral creepage [-]
@@ -117,13 +128,31 @@ def _table_header_params(comment):
 
 @functools.lru_cache(maxsize=None)
 def exact_cases():
-    """The 3220 exact cases decoded as the CSV's header line says, in SI (cached;
-    the arrays are read-only).
+    """The 3220 exact cases of CONTACT's test table, in SI.
 
+    Returns
+    -------
+    ExactCases
+        Decoded as the CSV's header line says (cached; the arrays are
+        read-only).
+
+    See Also
+    --------
+    score : a method's errors on these cases.
+
+    Notes
+    -----
     cx = m mu cos(ang) cp/rho, cy = m mu sin(ang) cp/rho, cphi = mu s / rho,
     with m the magnitude, ang the direction, s the spin level and rho, cp
     (mm) per a/b from the header; a = aa, b = aa / (a/b); G = 82000 N/mm^2,
     N = 82000 N, mu = 0.3, nu = 0.28 (test_table.f90's settings).
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> cases = rr.reference.exact_cases()
+    >>> cases.cx.shape, cases.N, cases.mu
+    ((3220,), 82000.0, 0.3)
     """
     comment, rows = read_csv(TABLE_FILE)
     name = TABLE_FILE
@@ -161,8 +190,23 @@ _AOB_LABELS = (0.2, 0.5, 1.0, 2.0, 5.0)
 
 def random_cases(n=3000, seed=20261202):
     """Seeded random Hertzian cases, drawn as CONTACT's 300 of
-    tests/data/contact_exact_cases.csv were (wider a/b): a dict of arrays.
+    tests/data/contact_exact_cases.csv were (wider a/b).
 
+    Parameters
+    ----------
+    n : int, optional
+        The number of cases.
+    seed : int, optional
+        The seed of numpy.random.default_rng.
+
+    Returns
+    -------
+    dict
+        Arrays of n: a_over_b [-], a, b, c [m], N [N], mu [-], cx, cy [-],
+        cphi [rad/m], psi [-], m [-]; and G [Pa], nu [-] (numbers).
+
+    Notes
+    -----
     From numpy.random.default_rng(seed), in this order, each of size n:
     a/b log-uniform in [0.1, 10]; c = sqrt(ab) uniform 3-9 mm; N uniform
     5-120 kN; mu uniform 0.1-0.5; m uniform in [0, 3]; theta uniform in
@@ -190,12 +234,37 @@ def random_cases(n=3000, seed=20261202):
 
 
 def own_exact_cases(n=3000, seed=20261202, nx=27):
-    """random_cases(n, seed) with the library's own exact theory as the
-    reference: method "exact" extrapolated to the continuum from nx and 2 nx
-    elements across (rr.exact_richardson).  An ExactCases for score(...,
-    cases=): forces over mu N, Mz over mu N c (cp = c = sqrt(ab)); a_over_b
-    and spin are the split classes (a/b bins labelled 0.2 ... 5; |psi| 0, up
-    to 0.5, up to 1 as 0, 0.5, 1).  About 20 ms a case at nx = 27."""
+    """random_cases(n, seed) with the library's own exact theory as the reference.
+
+    The reference is method "exact" extrapolated to the continuum from nx
+    and 2 nx elements across (:func:`rollerrig.exact_richardson`).
+
+    Parameters
+    ----------
+    n, seed
+        As for :func:`random_cases`.
+    nx : int, optional
+        The coarse grid of the extrapolation.
+
+    Returns
+    -------
+    ExactCases
+        For score(..., cases=): forces over mu N, Mz over mu N c (cp = c =
+        sqrt(ab)); a_over_b and spin are the split classes (a/b bins
+        labelled 0.2 ... 5; ``|psi|`` 0, up to 0.5, up to 1 as 0, 0.5, 1).
+
+    Notes
+    -----
+    About 20 ms a case at nx = 27.
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> cases = rr.reference.own_exact_cases(n=6, nx=7)
+    >>> r = rr.reference.score("fastsim", cases=cases, nx=10, ny=10)
+    >>> r.overall["n"]
+    6
+    """
     from ..contact.exact import exact_richardson
     d = random_cases(n, seed)
     est, _ = exact_richardson(d["cx"], d["cy"], d["cphi"], a=d["a"], b=d["b"], N=d["N"],
@@ -253,32 +322,33 @@ def _stats(err):
 
 
 class ScoreResult(NamedTuple):
-    """A method's errors on the 3220 exact cases.
+    """A method's errors on the exact cases, as :func:`score` returns them.
 
     Statistics are dicts {"median", "p95", "max", "n", "n_failed"} of the
-    force error |(dFx, dFy)| / (mu N) over the cases that did not fail;
-    mz_* the same of |dMz| / (mu N cp) (the Polach method has no spin
-    moment, so its Mz error is the exact |Mz|)."""
+    force error ``|(dFx, dFy)| / (mu N)`` over the cases that did not fail;
+    mz_* the same of ``|dMz| / (mu N cp)`` (the Polach method has no spin
+    moment, so its Mz error is the exact ``|Mz|``).
+    """
 
-    method: str
+    method: str             #: the method scored
     options: dict           #: the creep_forces options given
-    cases: ExactCases
+    cases: ExactCases       #: the reference cases
     fx: np.ndarray          #: the method's FX / (mu N) per case
-    fy: np.ndarray
+    fy: np.ndarray          #: the method's FY / (mu N) per case
     mz: np.ndarray          #: the method's MZ / (mu N cp)
     status: np.ndarray      #: creep_forces status per case
     error: np.ndarray       #: |(dFx, dFy)| / (mu N) per case (NaN where the method failed)
     mz_error: np.ndarray    #: |dMz| / (mu N cp) per case
-    overall: dict
+    overall: dict           #: statistics of the force error over all cases
     by_spin: dict           #: {spin level: statistics}
     by_ellipticity: dict    #: {a/b: statistics}
-    mz_overall: dict
-    mz_by_spin: dict
-    mz_by_ellipticity: dict
+    mz_overall: dict        #: statistics of the Mz error over all cases
+    mz_by_spin: dict        #: {spin level: statistics of the Mz error}
+    mz_by_ellipticity: dict  #: {a/b: statistics of the Mz error}
 
     @property
     def label(self):
-        """The method and its options, e.g. "fastsim (nx=20, ny=20)"."""
+        """The method and its options as text, e.g. "fastsim (nx=20, ny=20)"."""
         shown = {k: v for k, v in self.options.items() if k != "errors"}
         if not shown:
             return self.method
@@ -292,11 +362,39 @@ class ScoreResult(NamedTuple):
 def score(method="fastsim", *, cases=None, **creep_options):
     """Score a creep-force method against the 3220 exact cases.
 
-    method: a name of rollerrig.METHODS; creep_options: any other keyword
-    of creep_forces (nx, ny, grid, bound, k0, kA, friction, ...; errors
-    defaults to "raise", "warn" or "ignore" keeps the failed cases as NaN,
-    counted in n_failed).  cases: an ExactCases (default exact_cases()).
-    Returns a ScoreResult.  Unknown methods or options raise RollerRigError.
+    Parameters
+    ----------
+    method : str, optional
+        A name of ``rollerrig.METHODS``.
+    cases : ExactCases, optional
+        The reference (default :func:`exact_cases`).
+    **creep_options
+        Any other keyword of creep_forces (nx, ny, grid, bound, k0, kA,
+        friction, ...); errors defaults to "raise", "warn" or "ignore" keeps
+        the failed cases as NaN, counted in n_failed.
+
+    Returns
+    -------
+    ScoreResult
+        The errors per case and their statistics (:class:`ScoreResult`).
+
+    Raises
+    ------
+    RollerRigError
+        For an unknown method or option, an argument the cases set (cx,
+        ..., nu), and (errors="raise") a failed case.
+
+    See Also
+    --------
+    table : the statistics of several results as text.
+    rollerrig.plot.error_map : the errors over the creepage plane.
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> r = rr.reference.score("fastsim", nx=10, ny=10)
+    >>> r.label, r.overall["n"], round(r.overall["median"], 4)
+    ('fastsim (nx=10, ny=10)', 3220, 0.0206)
     """
     func = "score"
     _check_options(func, creep_options, _CASE_ARGS)
@@ -322,10 +420,21 @@ def score(method="fastsim", *, cases=None, **creep_options):
 
 
 def table(results, split=True):
-    """A text table of one or more ScoreResults (a result, a list, or a dict
-    of them): per method the overall row, then (split=True) a row per spin
-    level and per a/b.  Columns: median, p95, max of |dF|/(mu N), the number
-    of cases, and median, p95 of |dMz|/(mu N cp)."""
+    """A text table of one or more ScoreResults.
+
+    Parameters
+    ----------
+    results : ScoreResult, list or dict of ScoreResult
+        The results, one block each.
+    split : bool, optional
+        After each method's overall row, a row per spin level and per a/b.
+
+    Returns
+    -------
+    str
+        Columns: median, p95, max of ``|dF|/(mu N)``, the number of cases
+        (n+k!: k cases failed), and median, p95 of ``|dMz|/(mu N cp)``.
+    """
     if isinstance(results, ScoreResult):
         results = [results]
     elif isinstance(results, dict):
@@ -358,23 +467,22 @@ def table(results, split=True):
 # --------------------------------------------------------------------------
 
 class CreepCurve(NamedTuple):
-    """One series of creep_curves_exact_vs_fastsim.csv in SI.
+    """One series of creep_curves_exact_vs_fastsim.csv in SI (:func:`creep_curves`)."""
 
-    case: the creep_forces arguments of the physical case (a, b, N, mu, G,
-    nu, speed, friction: CONTACT's static coefficient and its falling
-    friction law as FallingFriction(A = FKIN/mu, B = ln 2/SABSH1));
-    method, options: the rollerrig method and options that reproduce how
-    CONTACT computed the series (method None for the exact theory, whose
-    options are only the grid); options hold the series' grid nx, ny, read
-    from the header."""
-
-    series: int
-    description: str
+    series: int             #: the series number (1 to 4)
+    description: str        #: the series' description in the file
     cx: np.ndarray          #: longitudinal creepage [-] (cy = cphi = 0)
     fx: np.ndarray          #: FX [N] on the wheel
     fx_n: np.ndarray        #: FX / (mu N), mu the series' static coefficient
+    #: the creep_forces arguments of the physical case (a, b, N, mu, G, nu,
+    #: speed, friction: CONTACT's static coefficient and its falling friction
+    #: law as FallingFriction(A = FKIN/mu, B = ln 2/SABSH1))
     case: dict
+    #: the rollerrig method that reproduces how CONTACT computed the series
+    #: (None for the exact theory)
     method: Optional[str]
+    #: the method's options; they hold the series' grid nx, ny, read from the
+    #: header (the exact theory's options are only the grid)
     options: dict
     note: str               #: what rollerrig does not model of the series, if anything
 
@@ -437,36 +545,82 @@ def _creep_curves():
 
 
 def creep_curves():
-    """{series number: CreepCurve} of CONTACT's creep-curve example: 1 exact
-    theory, Coulomb mu = 0.33; 2 exact theory with falling friction and an
-    interfacial layer (mu0 = 0.33); 3 CONTACT's FASTSIM (parabolic bound,
-    three flexibilities), mu = 0.33; 4 CONTACT's modified FASTSIM (k0, alpha_inf,
-    beta) with falling friction, mu0 = 0.36.  a = 6.304 mm, b = 12.61 mm,
-    N = 106.7 kN, G = 82 GPa, nu = 0.28, V = 10 m/s; all read from the header."""
+    """The series of CONTACT's creep-curve example.
+
+    Returns
+    -------
+    dict
+        {series number: CreepCurve}: 1 exact theory, Coulomb mu = 0.33; 2
+        exact theory with falling friction and an interfacial layer (mu0 =
+        0.33); 3 CONTACT's FASTSIM (parabolic bound, three flexibilities),
+        mu = 0.33; 4 CONTACT's modified FASTSIM (k0, alpha_inf, beta) with
+        falling friction, mu0 = 0.36.  a = 6.304 mm, b = 12.61 mm, N = 106.7
+        kN, G = 82 GPa, nu = 0.28, V = 10 m/s; all read from the header.
+
+    See Also
+    --------
+    score_curves : a method against each series.
+    rollerrig.plot.creep_curves : draws a series as the reference.
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> curves = rr.reference.creep_curves()
+    >>> sorted(curves), curves[3].method, curves[3].options["nx"]
+    ([1, 2, 3, 4], 'fastsim', 48)
+    """
     return dict(_creep_curves())
 
 
 class CurveScore(NamedTuple):
-    series: int
-    description: str
-    cx: np.ndarray
+    """A method against one creep-curve series, as :func:`score_curves` gives it."""
+
+    series: int             #: the series number
+    description: str        #: the series' description
+    cx: np.ndarray          #: the series' longitudinal creepage [-]
     reference: np.ndarray   #: CONTACT's FX / (mu N)
     model: np.ndarray       #: the method's FX / (mu N)
     error: np.ndarray       #: |dFx| / (mu N) per point
-    rms: float
-    max: float
+    rms: float              #: root mean square of error [-]
+    max: float              #: largest error [-]
 
 
 def score_curves(method="fastsim", series=None, **opts):
     """Compare a method with each creep-curve series.
 
     Each series is computed with its physical case (CreepCurve.case: load,
-    ellipse, static friction, falling friction law, speed) and the method's
-    options opts (creep_forces keywords; defaults are creep_forces', not
-    the series' grid: pass nx, ny from CreepCurve.options for that).
-    series: a series number or a list (default all).  Returns {series:
-    CurveScore} with the RMS and max of |dFx| / (mu N) over the series'
-    points, mu the series' static coefficient.
+    ellipse, static friction, falling friction law, speed).
+
+    Parameters
+    ----------
+    method : str, optional
+        A name of ``rollerrig.METHODS``.
+    series : int or list of int, optional
+        A series number or a list (default all).
+    **opts
+        The method's options (creep_forces keywords; defaults are
+        creep_forces', not the series' grid: pass nx, ny from
+        CreepCurve.options for that).
+
+    Returns
+    -------
+    dict
+        {series: CurveScore} with the RMS and max of ``|dFx| / (mu N)`` over
+        the series' points, mu the series' static coefficient.
+
+    Raises
+    ------
+    RollerRigError
+        For a series not in the file, an argument the series set, a bad
+        option, and (errors="raise", the default) a failed point.
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> grid = rr.reference.creep_curves()[3].options
+    >>> s = rr.reference.score_curves("fastsim", series=3, nx=grid["nx"], ny=grid["ny"])
+    >>> print(f"{s[3].rms:.5f} {s[3].max:.5f}")
+    0.00040 0.00139
     """
     func = "score_curves"
     _check_options(func, opts, ("cx", "cy", "cphi", "a", "b", "N", "mu", "G", "nu"))

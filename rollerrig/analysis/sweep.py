@@ -379,34 +379,91 @@ def sweep(func, grid, *, chunk=None, backend="threads", workers=None, client=Non
           progress=True, output="xarray", **fixed):
     """Evaluate a vectorised function over the Cartesian grid of named axes.
 
-    func:    "creep_forces", "hertz", "kalker_coefficients", or a callable
-             taking keyword arrays (one value per case) and returning a
-             NamedTuple (or dict) of arrays, as rr.creep_forces does
-    grid:    dict name -> 1-D array: the axes, in the order of the dimensions;
-             for creep_forces also "friction.A" [-] and "friction.B" [s/m],
-             fields of the FallingFriction law (the others from the fixed
-             friction=FallingFriction(...), or its defaults without one)
-    chunk:   cases per chunk (default: 100 000, fewer when that keeps a worker idle)
-    backend: "threads" (a ThreadPoolExecutor of `workers` threads, default
-             os.cpu_count()), "serial", or "dask" (the client given or the
-             running one); giving `client` selects Dask
-    progress: a tqdm progress bar (when tqdm is installed: extra "sweep";
-             without it no bar, silently)
-    output:  "xarray" (default; needs xarray, extra "sweep": without it an
-             ImportError naming the extra, raised before the sweep runs) or
-             "dict" (plain numpy, whatever is installed)
-    fixed:   every other keyword argument, passed unchanged to each call
-             (e.g. a=..., b=..., N=..., mu=..., method="fastsim", nx=20)
-    Returns an xarray.Dataset with the axes as coordinates and one variable
-    per output field (status as int8), units in attrs, the fixed arguments
-    in the Dataset's attrs; with output="dict" the dict {"coords": {name:
-    axis}, "data": {field: array shaped like the grid}, "dims": {field:
-    dimension names}, "units": {name: unit}, "attrs": the Dataset's attrs,
-    "coord_attrs": {name: attrs}}.
+    Parameters
+    ----------
+    func : str or callable
+        "creep_forces", "hertz", "kalker_coefficients" (``FUNCTIONS``), or a
+        callable taking keyword arrays (one value per case) and returning a
+        NamedTuple (or dict) of arrays, as rr.creep_forces does.
+    grid : dict
+        name -> 1-D array: the axes, in the order of the dimensions, named
+        after the function's arguments; for creep_forces also "friction.A"
+        [-] and "friction.B" [s/m], fields of the FallingFriction law (the
+        others from the fixed friction=FallingFriction(...), or its defaults
+        without one).
+    chunk : int, optional
+        Cases per chunk (default: 100 000, fewer when that keeps a worker
+        idle).
+    backend : {"threads", "serial", "dask"}, optional
+        "threads": a ThreadPoolExecutor of `workers` threads (the C loops
+        release the GIL); "serial"; "dask": the client given or the running
+        one.  Giving `client` selects Dask.
+    workers : int, optional
+        Threads of the "threads" backend; default os.cpu_count().
+    client : dask.distributed.Client, optional
+        The Dask client to run on.
+    progress : bool, optional
+        A tqdm progress bar (when tqdm is installed: extra "sweep"; without
+        it no bar, silently).
+    output : {"xarray", "dict"}, optional
+        "xarray" (default; needs xarray, extra "sweep") or "dict" (plain
+        numpy, whatever is installed).
+    **fixed
+        Every other keyword argument, passed unchanged to each call (e.g.
+        a=..., b=..., N=..., mu=..., method="fastsim", nx=20; errors=).
+
+    Returns
+    -------
+    xarray.Dataset or dict
+        A Dataset with the axes as coordinates and one variable per output
+        field (status as int8), units in each variable's attrs (``UNITS``,
+        ``FUNCTION_UNITS``), the fixed arguments in the Dataset's attrs.
+        With output="dict" the dict {"coords": {name: axis}, "data": {field:
+        array shaped like the grid}, "dims": {field: dimension names},
+        "units": {name: unit}, "attrs": the Dataset's attrs, "coord_attrs":
+        {name: attrs}}.
+
+    Raises
+    ------
+    RollerRigError
+        For a bad axis (not 1-D, empty, not numbers for the library's
+        functions), a name given both as an axis and as a fixed argument,
+        a bad backend, workers, client, chunk or output; with
+        errors="raise", for a failed case; an exception in a chunk raises
+        RollerRigError naming the chunk's index range, the original as its
+        cause.
+    ImportError
+        For output="xarray" without xarray (naming the extra "sweep"),
+        raised before the sweep runs.
+
+    See Also
+    --------
+    sweep_rig : the rig's simulation over a grid of parameters.
+    creep_forces, hertz, kalker_coefficients : the functions swept by name.
+
+    Notes
+    -----
     For the library's functions, failed cases are NaN with a negative
     status and one RollerRigWarning is given for the whole grid (or pass
-    errors="raise" / "ignore").  An exception in a chunk raises
-    RollerRigError naming the chunk's index range, the original as its cause.
+    errors="raise" / "ignore").  The flattened grid is cut into chunks; every
+    case's result is independent of the chunking, so all backends give
+    bitwise the same numbers.
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> ds = rr.sweep("creep_forces", {"cx": [1e-4, 2e-4, 4e-4], "mu": [0.2, 0.3]},
+    ...               a=6e-3, b=4e-3, N=1e4, nx=20, ny=20, progress=False)
+    >>> ds.fx.dims, ds.fx.attrs["units"]
+    (('cx', 'mu'), 'N')
+    >>> ds.fx.sel(mu=0.3).values.round(1)
+    array([ -883.7, -1562.7, -2444.9])
+
+    Plain numpy:
+
+    >>> d = rr.sweep("hertz", {"N": [1e3, 1e4]}, A=7.2, B=3.3, output="dict", progress=False)
+    >>> d["data"]["a"].round(6), d["units"]["a"]
+    (array([0.000671, 0.001446]), 'm')
     """
     name, fn, known = _resolve(func)
     where = f"sweep({name})"
@@ -586,28 +643,63 @@ def sweep_rig(grid, *, backend="threads", workers=None, client=None, progress=Tr
               output="xarray", **simulate_kwargs):
     """Run rr.simulate at every point of a Cartesian grid of rig parameters.
 
-    grid:    dict name -> 1-D array; a name is a dotted parameter path of the
-             parameter file ("scenario.mu0", "wheelset.mass_kg") or one of
-             simulate's own arguments ("dt", "method", "roller_speed", "nx",
-             "ode", "k0", ...)
-    backend, workers, client, progress, output: as for sweep; one run per
-             task (the C time stepping releases the GIL, so threads scale)
-    simulate_kwargs: passed to every run (duration, targets, params as the
-             base that the grid's paths override: a dict or a TOML file, ...)
-    Every value of every parameter axis is checked (check_parameters) before
-    any run: a bad one raises RollerRigError naming the axis and the value.
-    Returns an xarray.Dataset with dims (grid axes..., "target") and the
-    variables reached, settling_s, adhesion, peak_force_over_muN (as
-    RigResult.summary(), units and long_name in attrs), plus per point the
-    run status (int8) and message.  A parameter path's dimension is its
-    last part (ds.reached.sel(mu0=0.4) for "scenario.mu0"), or the path with
-    "." -> "_" where two axes share a last part; the coordinate's
-    attrs["parameter"] holds the path; simulate's "method" is the dimension
-    "creep_method" (.sel(method=...) is xarray's own keyword), with
-    attrs["argument"] = "method".  With output="dict" the plain dict
-    as for sweep.  A run that stops (status < 0) gives NaN for the targets
-    it did not reach; a run that raises (e.g. dt out of range) raises
-    RollerRigError naming the point.
+    Parameters
+    ----------
+    grid : dict
+        name -> 1-D array; a name is a dotted parameter path of the
+        parameter file ("scenario.mu0", "wheelset.mass_kg") or one of
+        simulate's own arguments ("dt", "method", "roller_speed", "nx",
+        "ode", "k0", ...).
+    backend, workers, client, progress, output
+        As for :func:`sweep`; one run per task (the C time stepping releases
+        the GIL, so threads scale).
+    **simulate_kwargs
+        Passed to every run (duration [s], targets, params as the base that
+        the grid's paths override: a dict or a TOML file, ...).
+
+    Returns
+    -------
+    xarray.Dataset or dict
+        A Dataset with dims (grid axes..., "target") and the variables
+        reached [-], settling_s [s], adhesion [-], peak_force_over_muN [-]
+        (as RigResult.summary(), units and long_name in attrs), plus per
+        point the run status (int8) and message.  With output="dict" the
+        plain dict as for sweep.
+
+    Raises
+    ------
+    RollerRigError
+        Every value of every parameter axis is checked (check_parameters)
+        before any run: a bad one raises, naming the axis and the value; a
+        run that raises (e.g. dt out of range) raises naming the point;
+        params neither a dict nor a TOML path.
+    ImportError
+        For output="xarray" without xarray (the extra "sweep").
+
+    See Also
+    --------
+    simulate : one run.
+    sweep : a vectorised function over a grid.
+
+    Notes
+    -----
+    A parameter path's dimension is its last part (ds.reached.sel(mu0=0.4)
+    for "scenario.mu0"), or the path with "." -> "_" where two axes share a
+    last part; the coordinate's attrs["parameter"] holds the path;
+    simulate's "method" is the dimension "creep_method" (.sel(method=...) is
+    xarray's own keyword), with attrs["argument"] = "method".  A run that
+    stops (status < 0) gives NaN for the targets it did not reach.
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> ds = rr.sweep_rig({"scenario.mu0": [0.3, 0.4]}, duration=1.0, targets=[0.02],
+    ...                   target_times=[0.0], progress=False)
+    >>> ds.adhesion.dims, ds.mu0.attrs["parameter"]
+    (('mu0', 'target'), 'scenario.mu0')
+    >>> ds.adhesion.values.round(3)
+    array([[0.292],
+           [0.389]])
     """
     names, axes = _axes("sweep_rig", grid, numeric=False)
     backend, slots, client = _check_options("sweep_rig", backend, workers, client, progress)
