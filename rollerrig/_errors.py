@@ -83,16 +83,23 @@ def _culprits(args, index, blamed=None):
 def check_status(func, status, args, errors, blame=None):
     """Raise, warn or stay silent for the statuses of a call.
 
-    func:   the public function's name, for the message
-    status: int8 array of C statuses, shaped like the result
-    args:   {name: float64 array} of the broadcast inputs, to name culprits
-    errors: "raise" (any error raises RollerRigError), "warn" (errors and
-            warnings become one RollerRigWarning; bad elements are NaN) or
-            "ignore".
-    blame:  None, or blame(flat index, status) -> the names of the
-            arguments the C core blames for that element's status (its
-            check's report mapped to the call's arguments, or the arguments
-            whose own values give it: _binding.swap_blame), or None
+    Parameters
+    ----------
+    func : str
+        The public function's name, for the message.
+    status : ndarray of int8
+        C statuses, shaped like the result.
+    args : dict
+        {name: float64 array} of the broadcast inputs, to name culprits.
+    errors : {"raise", "warn", "ignore"}
+        "raise": any error raises RollerRigError; "warn": errors and
+        warnings become one RollerRigWarning (bad elements are NaN);
+        "ignore": nothing.
+    blame : callable, optional
+        blame(flat index, status) -> the names of the arguments the C core
+        blames for that element's status (its check's report mapped to the
+        call's arguments, or the arguments whose own values give it:
+        _binding.swap_blame), or None.
     """
     if errors == "ignore":
         return

@@ -9,6 +9,7 @@ nothing).  The examples are small cases (milliseconds each).
 """
 import doctest
 import importlib
+import inspect
 import warnings
 
 import numpy as np
@@ -24,6 +25,11 @@ MODULES = [
     "rollerrig.analysis.sweep",
     "rollerrig.analysis.exact_table",
     "rollerrig.analysis.reference",
+    "rollerrig.geometry.profiles",
+    "rollerrig.geometry.profiles._profile",
+    "rollerrig.geometry.wheelset",
+    "rollerrig.geometry.patch",
+    "rollerrig.geometry.conicity",
 ]
 
 # the output as a reader sees it: spacing of numpy's reprs free, "..." for the
@@ -34,11 +40,25 @@ PRINT_DEFAULTS = dict(precision=8, threshold=1000, edgeitems=3, linewidth=75, su
 
 
 def _examples(name):
+    """The doctests of the module's own objects, their methods included (a
+    re-exported name is tested in its own module).  doctest's own search
+    skips the methods of a class whose __module__ names the package that
+    re-exports it (Profile), so each class and function is searched too."""
     module = importlib.import_module(name)
     finder = doctest.DocTestFinder(exclude_empty=True)
-    # the module's own objects only (a name re-exported from another module
-    # is tested there)
-    return [t for t in finder.find(module, name) if t.examples]
+    tests = {t.name: t for t in finder.find(module, name)}
+    for attr, obj in vars(module).items():
+        if attr.startswith("_") or not (inspect.isclass(obj) or callable(obj)):
+            continue
+        try:
+            source = inspect.getsourcefile(obj)
+        except TypeError:
+            continue
+        if getattr(obj, "__module__", None) != name and source != module.__file__:
+            continue
+        for test in finder.find(obj, f"{name}.{attr}", module=False, globs={}):
+            tests.setdefault(test.name, test)
+    return [t for t in tests.values() if t.examples]
 
 
 @pytest.mark.parametrize("name", MODULES)

@@ -77,6 +77,7 @@ from .wheelset import RigGeometry, wheelset_contact
 
 __all__ = ["CONICITY_METHODS", "equivalent_conicity", "rolling_radius_difference"]
 
+#: the definitions equivalent_conicity offers (module docstring)
 CONICITY_METHODS = ("harmonic", "klingel", "simple")
 
 _FUNC = "equivalent_conicity"
@@ -84,9 +85,35 @@ _MAX_AMPLITUDE = 0.05   #: [m] a larger amplitude is taken for millimetres given
 
 
 def rolling_radius_difference(geometry, y_ws, **search):
-    """Delta r = r_left - r_right [m] at the lateral shifts y_ws [m] (array
-    or scalar), from ``wheelset_contact``; NaN where a wheel has no contact.
-    Positive y_ws moves the wheelset to the left, so Delta r rises with y_ws."""
+    """Delta r = r_left - r_right [m] at the lateral shifts y_ws [m].
+
+    Parameters
+    ----------
+    geometry : RigGeometry
+        The profiles and their placement.
+    y_ws : float or array_like
+        Lateral shifts [m], a number or a 1-D array.  Positive y_ws moves
+        the wheelset to the left, so Delta r rises with y_ws.
+    **search
+        Options of wheelset_contact (nsamples, two_point_tol, two_point_sep).
+
+    Returns
+    -------
+    float or ndarray
+        Delta r [m] from ``wheelset_contact``; NaN where a wheel has no
+        contact.
+
+    See Also
+    --------
+    equivalent_conicity : the conicity from Delta r.
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> g = rr.RigGeometry.standard()
+    >>> rr.rolling_radius_difference(g, [0.0, 0.003]).round(6)
+    array([0.      , 0.000994])
+    """
     c = wheelset_contact(geometry, y_ws, errors="ignore", **search)
     dr = np.where(c.status >= 0, c.left.r - c.right.r, np.nan)
     return dr if np.ndim(y_ws) else float(dr[0])
@@ -210,27 +237,82 @@ def equivalent_conicity(geometry, amplitude=0.003, method="harmonic", *, centre=
                         dy=None, y_span=None, n=2048, **search):
     """Equivalent conicity tan(gamma_e) at the amplitude(s) y^ [m].
 
-    geometry:  a RigGeometry (Delta r is computed with wheelset_contact on a
-               grid of step dy), or a pair (y, delta_r) of 1-D arrays [m]: a
-               tabulated Delta r = r_left - r_right, y strictly increasing,
-               used as it is (linear between the points).
-    amplitude: y^ [m], a number or an array of them, each > 0 (and < 50 mm).
-    method:    "harmonic", "klingel" or "simple" (module docstring).
-    centre:    "balance" (the kinematic centre of the motion; 0 for a
-               symmetric pair) or, for "harmonic" and "simple", a lateral
-               position [m].
-    dy:        grid step for Delta r from a RigGeometry [m], 0 < dy <= 1e-4
-               (EN 15302 asks for 0.1 mm or finer); default 2e-5.
-    y_span:    the grid from a RigGeometry spans -y_span .. +y_span [m];
-               default 2 max(y^) + 4 mm, room for the centre of an
-               asymmetric pair to move off y = 0.
-    n:         quadrature points over the cycle (integer from 64 to 1e6).
-    search:    options of wheelset_contact (nsamples, two_point_tol, ...).
+    Parameters
+    ----------
+    geometry : RigGeometry or tuple of array_like
+        A RigGeometry (Delta r is computed with wheelset_contact on a grid
+        of step dy), or a pair (y, delta_r) of 1-D arrays [m]: a tabulated
+        Delta r = r_left - r_right, y strictly increasing, used as it is
+        (linear between the points).
+    amplitude : float or array_like, optional
+        y^ [m], a number or an array of them, each > 0 (and < 50 mm).
+    method : {"harmonic", "klingel", "simple"}, optional
+        The definition (Notes; the module docstring has the details).
+    centre : "balance" or float, optional
+        "balance" (the kinematic centre of the motion; 0 for a symmetric
+        pair) or, for "harmonic" and "simple", a lateral position [m].
+    dy : float, optional
+        Grid step for Delta r from a RigGeometry [m], 0 < dy <= 1e-4 (EN
+        15302 asks for 0.1 mm or finer); default 2e-5.
+    y_span : float, optional
+        The grid from a RigGeometry spans -y_span .. +y_span [m]; default 2
+        max(y^) + 4 mm, room for the centre of an asymmetric pair to move
+        off y = 0.
+    n : int, optional
+        Quadrature points over the cycle (integer from 64 to 1e6).
+    **search
+        Options of wheelset_contact (nsamples, two_point_tol, ...).
 
-    Returns a float for a scalar amplitude, else an array of its shape.
-    Raises RollerRigError for bad arguments and where Delta r is unknown
-    over a stroke (a wheel off its roller).  "klingel" returns NaN with a
-    RollerRigWarning at an amplitude that no kinematic oscillation reaches.
+    Returns
+    -------
+    float or ndarray
+        tan(gamma_e) [-]: a float for a scalar amplitude, else an array of
+        its shape.
+
+    Raises
+    ------
+    RollerRigError
+        For bad arguments (naming them) and where Delta r is unknown over a
+        stroke (a wheel off its roller).
+
+    Warns
+    -----
+    RollerRigWarning
+        "klingel" returns NaN with a warning at an amplitude that no
+        kinematic oscillation reaches.
+
+    See Also
+    --------
+    rolling_radius_difference : Delta r at given shifts.
+
+    Notes
+    -----
+    For y = c + y^ sin t: "harmonic" is the harmonic linearisation,
+    tan(gamma_e) = b1 / (2 y^) with b1 the first Fourier sine coefficient
+    of Delta r (a least-squares fit of Delta r over the stroke weighted by
+    the time spent at each y); "klingel" puts the kinematic wavelength L of
+    the nonlinear wheelset equation y'' = -Delta r(y) / (2 e0 r0) into
+    Klingel's formula tan(gamma_e) = e0 r0 (2 pi / L)^2 (described by
+    secondary sources as EN 15302 Annex B); "simple" is the secant (Delta
+    r(c + y^) - Delta r(c - y^)) / (4 y^), for comparison only.  All three
+    give tan(gamma) exactly for a conical wheelset.
+
+    Examples
+    --------
+    A conical pair (Delta r = 2 tan(gamma) y) gives its cone, a nonlinear
+    one three different values:
+
+    >>> import numpy as np
+    >>> import rollerrig as rr
+    >>> y = np.linspace(-0.01, 0.01, 201)
+    >>> round(rr.equivalent_conicity((y, 2 * 0.05 * y), 0.003), 6)
+    0.05
+    >>> dr = 2 * 0.05 * y + 2e-4 * np.sign(y) + 40 * y**3
+    >>> for m in ("harmonic", "klingel", "simple"):
+    ...     print(m, rr.equivalent_conicity((y, dr), [0.002, 0.004], method=m).round(4))
+    harmonic [0.1137 0.0821]
+    klingel [0.1125 0.0817]
+    simple [0.1001 0.0753]
     """
     if not isinstance(method, str) or method not in CONICITY_METHODS:
         raise RollerRigError(f"{_FUNC}: method must be one of {CONICITY_METHODS}, "

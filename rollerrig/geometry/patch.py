@@ -84,23 +84,26 @@ _WINDOW = 0.04
 
 @dataclass(frozen=True, eq=False)
 class Patch:
-    """The undeformed distance of one wheel-roller contact on a grid, and its
-    frame.  h has shape (my, mx): rows along y, columns along x, element
-    (i, j) centred at (x0 + j dx, y0 + i dy) from the reference point, as
-    rollerrig.exact_solve takes it."""
+    """The undeformed distance of one wheel-roller contact on a grid, and its frame.
+
+    As :func:`undeformed_distance` returns it.  h has shape (my, mx): rows
+    along y, columns along x, element (i, j) centred at (x0 + j dx, y0 + i
+    dy) from the reference point, as :func:`rollerrig.exact_solve` takes it.
+    """
 
     h: np.ndarray        #: undeformed distance [m], least value 0
     dx: float            #: element size along x (t1) [m]
     dy: float            #: element size along y (t2) [m]
-    x0: float            #: centre of element (0, 0) from the reference point [m]
-    y0: float
+    x0: float            #: x of the centre of element (0, 0) from the reference point [m]
+    y0: float            #: y of the centre of element (0, 0) from the reference point [m]
     point: np.ndarray    #: reference point P in the rig frame (on the roller) [m], (3,)
-    wheel_point: np.ndarray  #: P moved into the roller by the pose's interpenetration
-                             #: (the least h before the shift), where the wheel's
-                             #: velocity is taken (CONTACT's point Q) [m], (3,)
+    #: P moved into the roller by the pose's interpenetration (the least h
+    #: before the shift), where the wheel's velocity is taken (CONTACT's point
+    #: Q) [m], (3,)
+    wheel_point: np.ndarray
     t1: np.ndarray       #: rolling direction (+X), rig frame, (3,)
-    t2: np.ndarray       #: lateral direction in the plane, toward +Y
-    n: np.ndarray        #: normal into the wheel
+    t2: np.ndarray       #: lateral direction in the plane, toward +Y, rig frame, (3,)
+    n: np.ndarray        #: normal into the wheel, rig frame, (3,)
     delta: float         #: contact angle of the plane [rad], > 0 toward the flange
     s_roller: float      #: roller profile coordinate of P [m]
     s_wheel: float       #: wheel profile coordinate where P's normal meets the wheel [m]
@@ -113,12 +116,14 @@ class Patch:
     roll: float          #: roll angle [rad]
     approach: float      #: the approach the grid was sized for [m]
     cover: float         #: the grid covers where h <= cover * approach
-    regions: tuple       #: lateral intervals (y_lo, y_hi) [m] where h <= cover * approach,
-                         #: in the plane's y: those on the grid
+    #: lateral intervals (y_lo, y_hi) [m] where h <= cover * approach, in the
+    #: plane's y: those on the grid
+    regions: tuple
     excluded: tuple      #: intervals left out: farther than `combine` (a separate patch)
 
     @property
     def shape(self):
+        """The grid's shape (my, mx), h's."""
         return self.h.shape
 
     @property
@@ -279,33 +284,88 @@ def undeformed_distance(geometry, y_ws, *, side="left", N=None, approach=None, n
                         combine=4e-3, z=None, roll=None):
     """The undeformed distance h(x, y) of one wheel on its roller, on a grid.
 
-    geometry: RigGeometry; y_ws: the wheelset's lateral shift [m]; side:
-    "left" or "right".  The pose: wheelset_contact's axle height and roll
-    at y_ws (both surfaces just touching), or z [m], roll [rad] given: a
-    loaded pose (the wheelset lowered by its approach over cos(delta), as
-    CONTACT builds h and rig_exact does by default), CONTACT's prescribed
-    roll.
-    reference: the tangent plane's point P and angle: "weighted" (default;
-    CONTACT's: the centre of the vertical interpenetration at `approach`,
-    each lateral strip weighted by the integral over x of its squared
-    interpenetration, and the roller's inclination averaged with the same
-    weights), "point" (rollerrig's contact point, the least vertical gap,
-    and its contact angle: the frame of rig_contact) or (s_roller, delta):
-    P on the roller at that profile coordinate [m], the angle [rad] given.
-    approach [m]: the expected approach; None: Hertz's at the rollerrig
-    contact point for the normal load N [N] (E [Pa], nu of both bodies).
-    The grid covers the region where h <= cover * approach (cover >= 1:
-    the contact lies where h <= the approach found), plus one element on
-    every side, with about n elements across its longer side and square
-    elements, unless dx, dy [m] are given (a grid of more than the exact
-    solver's 1024 elements a side is refused before it is built).  A load
-    or approach whose region reaches past the profiles in the plane, or a
-    pose whose cross-sections do not overlap, is refused, naming it.
-    combine [m] (>= 0): lateral intervals of that region at most this far
-    from the deepest one are on the grid, the rest are a separate patch
-    (Patch.excluded, a warning).
-    Returns a Patch (h with least value 0, its grid and frame), built by
-    the C core (csrc/geometry/rr_gap.h).
+    Parameters
+    ----------
+    geometry : RigGeometry
+        The profiles and their placement.
+    y_ws : float
+        The wheelset's lateral shift [m].
+    side : {"left", "right"}, optional
+        The wheel.
+    N : float, optional
+        Normal load [N], for Hertz's approach when `approach` is None.
+    approach : float, optional
+        The expected approach [m]; None: Hertz's at the rollerrig contact
+        point for the normal load N (E, nu of both bodies).
+    n : int, optional
+        About n elements across the longer side of the region, square
+        elements (unless dx, dy are given).
+    E : float, optional
+        Young's modulus of both bodies [Pa].
+    nu : float, optional
+        Poisson ratio of both bodies [-].
+    cover : float, optional
+        The grid covers the region where h <= cover * approach (cover >= 1:
+        the contact lies where h <= the approach found), plus one element
+        on every side.
+    dx, dy : float, optional
+        The element size [m] (a grid of more than the exact solver's 1024
+        elements a side is refused before it is built).
+    reference : str or tuple, optional
+        The tangent plane's point P and angle: "weighted" (default;
+        CONTACT's: the centre of the vertical interpenetration at
+        `approach`, each lateral strip weighted by the integral over x of
+        its squared interpenetration, and the roller's inclination averaged
+        with the same weights), "point" (rollerrig's contact point, the
+        least vertical gap, and its contact angle: the frame of rig_contact)
+        or (s_roller, delta): P on the roller at that profile coordinate
+        [m], the angle [rad] given.
+    combine : float, optional
+        [m], >= 0: lateral intervals of that region at most this far from
+        the deepest one are on the grid, the rest are a separate patch
+        (Patch.excluded, a warning).
+    z, roll : float, optional
+        The pose: by default wheelset_contact's axle height and roll at
+        y_ws (both surfaces just touching); given, z [m] and roll [rad]: a
+        loaded pose (the wheelset lowered by its approach over cos(delta),
+        as CONTACT builds h and rig_exact does by default), CONTACT's
+        prescribed roll.
+
+    Returns
+    -------
+    Patch
+        h with least value 0, its grid and frame (:class:`Patch`), built by
+        the C core (csrc/geometry/rr_gap.h).
+
+    Raises
+    ------
+    RollerRigError
+        Naming the argument: bad numbers, side or reference; a load or
+        approach whose region reaches past the profiles in the plane, or a
+        pose whose cross-sections do not overlap; a grid too large.
+
+    Warns
+    -----
+    RollerRigWarning
+        When intervals farther than `combine` are left out.
+
+    See Also
+    --------
+    rollerrig.exact_solve : solves the contact on h.
+    patch_shape : the extent of the solution's contact area.
+    rig_exact : one wheel of the rig solved this way.
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> g = rr.RigGeometry.standard()
+    >>> p = rr.undeformed_distance(g, 0.0, N=1e4)
+    >>> p.shape, round(p.delta, 4)
+    ((44, 19), 0.0303)
+    >>> s = rr.exact_solve(p.h, dx=p.dx, dy=p.dy, x0=p.x0, y0=p.y0, N=1e4, mu=0.3, cx=2e-4)
+    >>> shape = rr.patch_shape(s.contact, p.dx, p.dy)
+    >>> print(f"{shape.length * 1e3:.2f} x {shape.width * 1e3:.2f} mm, {shape.regions} region")
+    3.53 x 16.64 mm, 1 region
     """
     func = "undeformed_distance"
     z_ws, roll_ws, cpt = _pose_and_point(func, geometry, y_ws, side)
@@ -345,6 +405,8 @@ def undeformed_distance(geometry, y_ws, *, side="left", N=None, approach=None, n
 # ---------------------------------------------------------------- the patch's shape
 
 class PatchShape(NamedTuple):
+    """The extent of a contact area in CONTACT's terms, as :func:`patch_shape` gives it."""
+
     length: float      #: along x: (last - first column holding contact + 1) dx [m]
     width: float       #: along y: (last - first row holding contact + 1) dy [m]
     length_cols: float  #: columns holding contact times dx [m]
@@ -354,10 +416,23 @@ class PatchShape(NamedTuple):
 
 
 def patch_shape(contact, dx, dy):
-    """The extent of a contact area (a boolean (my, mx) array, e.g.
-    ExactSolution.contact), in CONTACT's terms: its length and width as the
-    bounding extent of the elements in contact, the columns and rows that
-    hold contact, and the number of separate regions."""
+    """The extent of a contact area, in CONTACT's terms.
+
+    Parameters
+    ----------
+    contact : array_like of bool, shape (my, mx)
+        The elements in contact, e.g. ExactSolution.contact.
+    dx, dy : float
+        The element size [m].
+
+    Returns
+    -------
+    PatchShape
+        Its length and width as the bounding extent of the elements in
+        contact [m], the columns and rows that hold contact [m], and the
+        number of separate regions (:class:`PatchShape`); all 0 without
+        contact.
+    """
     c = np.asarray(contact, dtype=bool)
     cols = np.flatnonzero(c.any(axis=0))
     rows = np.flatnonzero(c.any(axis=1))

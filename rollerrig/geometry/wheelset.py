@@ -37,36 +37,72 @@ __all__ = ["RigGeometry", "ContactSide", "WheelsetContact", "wheelset_contact",
 class RigGeometry:
     """Profiles and placement of the wheel-roller pairs.
 
-    wheel, roller: profiles of the left side (y to the field side, z down);
-    the right side uses the same profiles mirrored unless wheel_right,
-    roller_right are given.  wheel_radius: the wheel's radius where its
-    profile has z = 0 at y = 0 [m]; roller_radius likewise for the roller.
-    wheel_y: lateral distance of the wheel profile's origin from the
-    wheelset's centre [m]; roller_y: of the roller profile's origin from the
-    rig's centre line [m].
+    The right side uses the left side's profiles mirrored unless
+    wheel_right, roller_right are given.  The values are checked where the
+    geometry is used (RollerRigError naming the field).
+
+    See Also
+    --------
+    wheelset_contact : the contact search on it.
+    contact_table : its contact table.
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> g = rr.RigGeometry.standard()        # S1002 on UIC60, as on track
+    >>> g.wheel_y, round(g.roller_y, 5)
+    (0.75, 0.76053)
     """
 
-    wheel: Profile
-    roller: Profile
+    wheel: Profile          #: the left wheel's profile (y to the field side, z down)
+    roller: Profile         #: the left roller's profile (kind "rail")
+    #: the wheel's radius where its profile has z = 0 at y = 0 [m]
     wheel_radius: float
+    #: the roller's radius where its profile has z = 0 at y = 0 [m]
     roller_radius: float
+    #: lateral distance of the wheel profile's origin from the wheelset's centre [m]
     wheel_y: float
+    #: lateral distance of the roller profile's origin from the rig's centre line [m]
     roller_y: float
-    wheel_right: Optional[Profile] = None
-    roller_right: Optional[Profile] = None
+    wheel_right: Optional[Profile] = None   #: the right wheel's own profile (None: mirrored)
+    roller_right: Optional[Profile] = None  #: the right roller's own profile (None: mirrored)
 
     @classmethod
     def standard(cls, wheel=None, roller=None, *, wheel_radius=0.46, roller_radius=0.46,
                  gauge=1.435, back_to_back=1.360, flange_back=-0.070, gauge_depth=0.014,
                  inclination=0.0):
-        """A wheelset on rollers placed as on track by gauge and back-to-back
-        distance [m].  wheel, roller: profiles (default S1002 and the UIC60
-        head, which is already canted 1:40); flange_back: the wheel profile's
-        y of the flange back (S1002: the taping line, its origin, lies 70 mm
-        from it); the gauge is measured gauge_depth below the roller's top
-        (EN 13848-1: 14 mm); inclination: a cant applied to the roller
-        profile (Profile.canted) before placing it.  The Manchester
-        benchmark's placement is RigGeometry.standard()."""
+        """A wheelset on rollers placed as on track by gauge and back-to-back distance.
+
+        Parameters
+        ----------
+        wheel, roller : Profile, optional
+            Profiles (default S1002 and the UIC60 head, which is already
+            canted 1:40).
+        wheel_radius, roller_radius : float, optional
+            Radii at the profiles' origins [m].
+        gauge, back_to_back : float, optional
+            Track gauge and the wheels' back-to-back distance [m], > 0.
+        flange_back : float, optional
+            The wheel profile's y of the flange back [m] (S1002: the taping
+            line, its origin, lies 70 mm from it).
+        gauge_depth : float, optional
+            The gauge is measured this far below the roller's top [m], > 0
+            (EN 13848-1: 14 mm).
+        inclination : float, optional
+            A cant applied to the roller profile (Profile.canted) before
+            placing it [-].
+
+        Returns
+        -------
+        RigGeometry
+            The Manchester benchmark's placement is RigGeometry.standard().
+
+        Raises
+        ------
+        RollerRigError
+            For a value not finite or not > 0, naming it, and as
+            Profile.gauge_point and Profile.canted.
+        """
         func = "RigGeometry.standard"
         wheel = Profile.s1002() if wheel is None else wheel
         roller = Profile.uic60() if roller is None else roller
@@ -87,9 +123,10 @@ class RigGeometry:
 
     @classmethod
     def measured_pair(cls, *, roller_radius=0.80010, back_to_back=1.347, smoothing=2e-3):
-        """The measured wheels on the measured rollers shipped in
-        rollerrig/data/profiles (MiniProf .whl/.ban of a full-scale
-        single-wheelset roller rig), left and right each their own.
+        """The measured wheels on the measured rollers shipped in rollerrig/data/profiles.
+
+        MiniProf .whl/.ban of a full-scale single-wheelset roller rig, left
+        and right each their own.
 
         Gauge: the mean of the two .ban headers (1436.91 and 1437.52 mm, at
         RailGaugePoint = 14 mm below the top); each roller's gauge face at half
@@ -153,26 +190,33 @@ class RigGeometry:
 
 
 class ContactSide(NamedTuple):
+    """One side's contact point and its Hertz geometry, per shift (arrays)."""
+
     y: np.ndarray          #: lateral position of the contact point in the rig [m]
     z: np.ndarray          #: its height above the nominal roller top [m]
     s_wheel: np.ndarray    #: lateral profile coordinate on the wheel [m]
-    s_roller: np.ndarray   #: on the roller [m]
+    s_roller: np.ndarray   #: lateral profile coordinate on the roller [m]
     r: np.ndarray          #: wheel rolling radius [m]
     R: np.ndarray          #: roller radius at the contact [m]
     delta: np.ndarray      #: contact angle [rad], > 0 toward the flange
-    A: np.ndarray          #: Hertz curvature sums [1/m], rolling direction
-    B: np.ndarray          #: lateral
+    A: np.ndarray          #: Hertz curvature sum [1/m], rolling direction
+    B: np.ndarray          #: Hertz curvature sum [1/m], lateral
     gap: np.ndarray        #: remaining gap [m] (0 after the pose solve)
     two_point: np.ndarray  #: True where a second contact point was found
 
 
 class WheelsetContact(NamedTuple):
+    """The wheelset's pose and both contacts, per lateral shift (1-D arrays).
+
+    As :func:`wheelset_contact` and :meth:`ContactTable.lookup` return it.
+    """
+
     y_ws: np.ndarray       #: lateral shift of the wheelset [m]
     z: np.ndarray          #: axle height [m]
     roll: np.ndarray       #: roll angle [rad], positive lifting the left wheel
-    left: ContactSide
-    right: ContactSide
-    status: np.ndarray
+    left: ContactSide      #: the left wheel's contact
+    right: ContactSide     #: the right wheel's contact
+    status: np.ndarray     #: C status per shift (0 OK, < 0: a wheel off its roller, NaN)
 
 
 def _side(block):
@@ -206,19 +250,64 @@ def _search(func, nsamples=400, two_point_tol=1e-4, two_point_sep=2e-3):
 
 def wheelset_contact(geometry, y_ws, *, nsamples=400, two_point_tol=1e-4,
                      two_point_sep=2e-3, errors=None):
-    """Direct contact search at the lateral shifts y_ws [m] (array or scalar).
+    """Direct contact search at the lateral shifts y_ws.
 
-    nsamples: wheel samples of the coarse search (3 to SEARCH_MAX_SAMPLES,
-    100 000; the cost grows with it).  Each sampled minimum of the gap is
-    refined between its neighbours, so samples farther apart than two
-    regions of the profiles that can touch (about two_point_sep) may settle
-    in the wrong one: the default is 0.33 mm apart on S1002, 65 samples the
-    coarsest at 2 mm.  two_point_tol [m]: a second gap minimum
-    this close to the first counts as a second contact point, if more than
-    two_point_sep [m] away.  Returns WheelsetContact (lengths in m, angles in
-    rad); shifts where a wheel leaves its roller get NaN and a negative
-    status.  errors: "raise" (default for a scalar y_ws), "warn" (default
-    for arrays: one RollerRigWarning for the bad elements) or "ignore".
+    Parameters
+    ----------
+    geometry : RigGeometry
+        The profiles and their placement.
+    y_ws : float or array_like
+        Lateral shifts of the wheelset [m], a number or a 1-D array
+        (positive: the wheelset to the left).
+    nsamples : int, optional
+        Wheel samples of the coarse search (3 to SEARCH_MAX_SAMPLES,
+        100 000; the cost grows with it).  Each sampled minimum of the gap
+        is refined between its neighbours, so samples farther apart than
+        two regions of the profiles that can touch (about two_point_sep)
+        may settle in the wrong one: the default is 0.33 mm apart on S1002,
+        65 samples the coarsest at 2 mm.
+    two_point_tol : float, optional
+        A second gap minimum this close to the first [m] counts as a second
+        contact point, if more than two_point_sep away.
+    two_point_sep : float, optional
+        [m], >= 0.
+    errors : {None, "raise", "warn", "ignore"}, optional
+        "raise" (default for a scalar y_ws), "warn" (default for arrays: one
+        RollerRigWarning for the bad elements) or "ignore".
+
+    Returns
+    -------
+    WheelsetContact
+        The pose (z [m], roll [rad]) and each side's contact point, radii,
+        contact angle and curvature sums (lengths in m, angles in rad;
+        :class:`WheelsetContact`, :class:`ContactSide`), as 1-D arrays (one
+        element for a scalar y_ws).
+
+    Raises
+    ------
+    RollerRigError
+        For y_ws not a number or 1-D array of real numbers, bad search
+        options, a geometry field not finite (radii > 0), and with
+        errors="raise" a shift where a wheel leaves its roller (status -3).
+
+    See Also
+    --------
+    contact_table : the search tabulated, looked up in O(1).
+    rolling_radius_difference : Delta r from it.
+
+    Notes
+    -----
+    Shifts where a wheel leaves its roller get NaN and a negative status.
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> g = rr.RigGeometry.standard()
+    >>> c = rr.wheelset_contact(g, [0.0, 0.003])
+    >>> (c.left.r - c.right.r).round(6), c.status
+    (array([0.      , 0.000994]), array([0, 0], dtype=int8))
+    >>> c.left.delta.round(4)
+    array([0.0243, 0.0922])
     """
     func = "wheelset_contact"
     y = _shifts(func, y_ws)
@@ -233,15 +322,18 @@ def wheelset_contact(geometry, y_ws, *, nsamples=400, two_point_tol=1e-4,
 
 @dataclass(frozen=True, eq=False)
 class ContactTable:
-    """The C core's contact table (csrc/geometry/rr_geometry.h): wheelset_contact at n
-    equally spaced shifts y0 + i dy, interpolated linearly in O(1).  Build
-    it with contact_table(); rig_contact() and the rig model read it."""
+    """The C core's contact table (csrc/geometry/rr_geometry.h).
 
-    geometry: RigGeometry
-    y0: float
-    dy: float
-    n: int
-    data: np.ndarray   #: the rows, as the core stores them (read-only)
+    wheelset_contact at n equally spaced shifts y0 + i dy, interpolated
+    linearly in O(1).  Build it with :func:`contact_table`; rig_contact()
+    and the rig model read it.
+    """
+
+    geometry: RigGeometry   #: the geometry it was built for
+    y0: float               #: the first row's shift [m]
+    dy: float               #: the rows' spacing [m]
+    n: int                  #: the number of rows
+    data: np.ndarray        #: the rows, as the core stores them (read-only)
 
     @property
     def y_ws(self):
@@ -250,12 +342,26 @@ class ContactTable:
 
     @property
     def y_range(self):
+        """The first and last rows' shifts (y_min, y_max) [m]."""
         return self.y0, self.y0 + self.dy * (self.n - 1)
 
     def lookup(self, y_ws, *, errors=None):
-        """The geometry at y_ws [m], interpolated between rows (the two-point
-        flag: the nearer row's; gap: 0).  Outside the table: NaN with
-        status RR_ERR_GEOMETRY (the wheel off its roller)."""
+        """The geometry at y_ws [m], interpolated between rows.
+
+        Parameters
+        ----------
+        y_ws : float or array_like
+            Lateral shifts [m], a number or a 1-D array.
+        errors : {None, "raise", "warn", "ignore"}, optional
+            As for wheelset_contact.
+
+        Returns
+        -------
+        WheelsetContact
+            As wheelset_contact's (the two-point flag: the nearer row's;
+            gap: 0).  Outside the table: NaN with status RR_ERR_GEOMETRY
+            (-3, the wheel off its roller).
+        """
         func = "ContactTable.lookup"
         y = _shifts(func, y_ws)
         status, z, roll, _, _, left, right = _core.table_lookup(self.data, self.y0, self.dy, y)
@@ -265,8 +371,10 @@ class ContactTable:
         return WheelsetContact(y, z, roll, _side(left), _side(right), status)
 
     def slopes(self, y_ws):
-        """d z / d y_ws and d roll / d y_ws of the interpolant at y_ws: the
-        constraint's rates per unit lateral velocity."""
+        """The interpolant's slopes d z / d y_ws [-] and d roll / d y_ws [rad/m] at y_ws [m].
+
+        The constraint's rates per unit lateral velocity; two 1-D arrays.
+        """
         y = _shifts("ContactTable.slopes", y_ws)
         _, _, _, dz, droll, _, _ = _core.table_lookup(self.data, self.y0, self.dy, y)
         return dz, droll
@@ -277,11 +385,48 @@ MAX_ROWS = 1_000_000
 
 
 def contact_table(geometry, y_min, y_max, n=401, **search):
-    """Contact table over [y_min, y_max] [m] with n rows (2 to MAX_ROWS; a
-    direct search per row, in C with the GIL released, Ctrl-C noticed
-    between chunks of rows).  search: nsamples, two_point_tol,
-    two_point_sep as for wheelset_contact.  Raises RollerRigError naming the
-    first shift where a wheel leaves its roller."""
+    """Contact table over [y_min, y_max] [m] with n rows.
+
+    A direct search per row (:func:`wheelset_contact`), in C with the GIL
+    released, Ctrl-C noticed between chunks of rows.
+
+    Parameters
+    ----------
+    geometry : RigGeometry
+        The profiles and their placement.
+    y_min, y_max : float
+        The table's shifts [m], y_min < y_max.
+    n : int, optional
+        Rows, 2 to MAX_ROWS (1 000 000: about 6 minutes to build).
+    **search
+        nsamples, two_point_tol, two_point_sep as for wheelset_contact.
+
+    Returns
+    -------
+    ContactTable
+        The table (:class:`ContactTable`).
+
+    Raises
+    ------
+    RollerRigError
+        For bad bounds, n or search options, and naming the first shift
+        where a wheel leaves its roller.
+
+    See Also
+    --------
+    ContactTable.lookup : the geometry at any shift of the table.
+    rig_contact : the rig's contact from the table.
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> table = rr.contact_table(rr.RigGeometry.standard(), -0.005, 0.005, n=21)
+    >>> table.y_range
+    (-0.005, 0.005)
+    >>> c = table.lookup(0.003)
+    >>> (c.left.r - c.right.r).round(6)
+    array([0.000994])
+    """
     func = "contact_table"
     for name, v in (("y_min", y_min), ("y_max", y_max)):
         if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)) \

@@ -8,9 +8,9 @@ import numpy as np
 
 from ..._errors import RollerRigError, RollerRigWarning
 
-KINDS = ("wheel", "rail")
-BCS = ("not-a-knot", "natural")
-MIN_POINTS = 4
+KINDS = ("wheel", "rail")  #: a profile's kinds (a roller is a "rail")
+BCS = ("not-a-knot", "natural")  #: the spline's end conditions
+MIN_POINTS = 4  #: fewest points of a profile
 MIN_SPACING = 1e-12  #: [m] closer points are a mistake (measured profiles: 1e-9 at least)
 MAX_POINTS = 100_000   #: more points than any measured profile has (MiniProf: ~1000)
 MAX_COORD = 2.0     #: [m] larger coordinates are taken for a unit mistake

@@ -26,24 +26,62 @@ DATA_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.
 class Profile:
     """An immutable wheel or rail/roller profile z(y) with its cubic spline.
 
-    Profile(y, z, kind=..., name="", meta=None, bc=None, smoothing=None)
+    Parameters
+    ----------
+    y, z : array_like
+        1-D arrays [m]: y strictly increasing, towards the field side; z
+        downward (rollerrig.geometry.profiles docstring).  At least 4 finite
+        points, ``|y|``, ``|z|`` <= 2 m, at least 1 mm wide, points at least
+        1e-12 m apart, at most 100 000 points.
+    kind : {"wheel", "rail"}
+        A roller is "rail".
+    name : str, optional
+        A label.
+    meta : dict, optional
+        Header values, read-only afterwards.
+    bc : {"not-a-knot", "natural"}, optional
+        Spline end conditions; default "not-a-knot" ("natural" with
+        smoothing).
+    smoothing : float, optional
+        None (interpolate the points) or a wavelength L [m], up to 2 m: the
+        natural smoothing spline with lam = (L / 2 pi)^4 (module
+        docstring).  ``z`` then holds the smoothed values at the nodes and
+        ``z_input`` the points given.
 
-    y, z:      1-D arrays [m]: y strictly increasing, towards the field side;
-               z downward (rollerrig.geometry.profiles docstring).  At least 4 finite points,
-               |y|, |z| <= 2 m, at least 1 mm wide.
-    kind:      "wheel" or "rail" (a roller is "rail").
-    name:      a label; meta: a dict of header values, read-only afterwards.
-    bc:        spline end conditions, "not-a-knot" (default) or "natural".
-    smoothing: None (interpolate the points) or a wavelength L [m]: the
-               natural smoothing spline with lam = (L / 2 pi)^4 (module
-               docstring).  ``z`` then holds the smoothed values at the nodes
-               and ``z_input`` the points given.
+    Raises
+    ------
+    RollerRigError
+        Naming the index and values: points out of order, duplicate or too
+        close, non-finite, too few or too many, out of scale; a bad kind,
+        bc or smoothing; smoothing numerically singular on the points.
 
+    See Also
+    --------
+    read_profile : a Profile from a file.
+    RigGeometry : places the profiles on the rig.
+
+    Notes
+    -----
     The constructor is strict (it raises RollerRigError for points out of
     order); ``Profile.from_points`` and ``read_profile`` reorder points and
-    remove folds first.  Evaluation (``z_at``, ``slope``, ``second_derivative``,
-    ``curvature``, ``evaluate``) takes numbers or arrays, returns floats or
-    arrays of the same shape, and gives NaN outside [y_min, y_max].
+    remove folds first.  Evaluation (``z_at``, ``slope``,
+    ``second_derivative``, ``curvature``, ``evaluate``) takes numbers or
+    arrays, returns floats or arrays of the same shape, and gives NaN
+    outside [y_min, y_max].  A Profile is immutable: ``shifted``,
+    ``mirrored``, ``canted`` give new ones.
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> p = rr.Profile([0.0, 0.01, 0.02, 0.03], [0.0, 1e-4, 4e-4, 9e-4], kind="rail")
+    >>> p
+    Profile(kind='rail', name='', 4 points, y 0 .. 30 mm, bc='not-a-knot')
+    >>> z, dz, d2z = p.evaluate(0.015)
+    >>> print(f"{z:.6f} {dz:.4f} {d2z:.4f}")
+    0.000225 0.0300 2.0000
+    >>> w = rr.Profile.s1002()
+    >>> print(f"{w.slope(0.01):.4f}", w.z_at(1.0))
+    -0.0113 nan
     """
 
     __slots__ = ("_y", "_z", "_z_input", "_s", "_c2", "_c3", "_d2", "_kind", "_name",
@@ -153,10 +191,12 @@ class Profile:
 
     @property
     def kind(self):
+        """The profile's kind: "wheel" or "rail" (a roller is a "rail")."""
         return self._kind
 
     @property
     def name(self):
+        """The profile's label (a file's name without extension by default)."""
         return self._name
 
     @property
@@ -166,18 +206,22 @@ class Profile:
 
     @property
     def bc(self):
+        """The spline's end conditions, "not-a-knot" or "natural"."""
         return self._bc
 
     @property
     def smoothing(self):
+        """The smoothing wavelength [m], or None (the spline interpolates the points)."""
         return self._smoothing
 
     @property
     def y_min(self):
+        """The first node's y [m]: the profile's end on the flange / gauge side."""
         return float(self._y[0])
 
     @property
     def y_max(self):
+        """The last node's y [m]: the profile's end on the field side."""
         return float(self._y[-1])
 
     # -- evaluation
@@ -196,7 +240,22 @@ class Profile:
         return float(values) if arr.ndim == 0 else values
 
     def evaluate(self, y):
-        """(z, dz/dy, d2z/dy2) at y: three floats or arrays; NaN outside the profile."""
+        """The spline and its derivatives at y.
+
+        Parameters
+        ----------
+        y : float or array_like
+            Lateral positions [m].
+
+        Returns
+        -------
+        z : float or ndarray
+            z(y) [m].
+        dz : float or ndarray
+            dz/dy [-].
+        d2z : float or ndarray
+            d2z/dy2 [1/m].  All three NaN outside [y_min, y_max].
+        """
         return self._evaluate("evaluate", y)
 
     def _evaluate(self, func, y):
@@ -210,25 +269,31 @@ class Profile:
         return self._shape(arr, z), self._shape(arr, dz), self._shape(arr, d2z)
 
     def z_at(self, y):
-        """z(y) [m] (NaN outside [y_min, y_max])."""
+        """z(y) [m] at y [m] (float or array; NaN outside [y_min, y_max])."""
         arr, i, t, out = self._locate("z_at", y)
         z = self._z[i] + t * (self._s[i] + t * (self._c2[i] + t * self._c3[i]))
         z[out] = np.nan
         return self._shape(arr, z)
 
     def slope(self, y):
-        """dz/dy (z down, y to the field side: a wheel coned as usual has
-        slope -tan(cone angle) on its tread)."""
+        """dz/dy [-] at y [m] (NaN outside [y_min, y_max]).
+
+        z is down, y to the field side: a wheel coned as usual has slope
+        -tan(cone angle) on its tread.
+        """
         return self._evaluate("slope", y)[1]
 
     def second_derivative(self, y):
-        """d2z/dy2 [1/m]."""
+        """d2z/dy2 [1/m] at y [m] (NaN outside [y_min, y_max])."""
         return self._evaluate("second_derivative", y)[2]
 
     def curvature(self, y):
-        """Signed curvature z'' / (1 + z'^2)^1.5 [1/m]: positive where the
-        curve bends downward (+z): convex for a rail or roller, concave for a
-        wheel.  Hertz: B = (kappa_rail - kappa_wheel) / 2."""
+        """Signed curvature z'' / (1 + z'^2)^1.5 [1/m] at y [m].
+
+        Positive where the curve bends downward (+z): convex for a rail or
+        roller, concave for a wheel.  Hertz: B = (kappa_rail - kappa_wheel) /
+        2.  NaN outside [y_min, y_max].
+        """
         _, dz, d2z = self._evaluate("curvature", y)
         return d2z / (1.0 + np.square(dz)) ** 1.5
 
@@ -242,17 +307,27 @@ class Profile:
                            smoothing=self._smoothing)
 
     def shifted(self, dy=0.0, dz=0.0):
-        """The profile moved by dy laterally and dz downward [m]."""
+        """The profile moved by dy laterally and dz downward [m] (a new Profile)."""
         dy = _check_number("Profile.shifted", "dy", dy)
         dz = _check_number("Profile.shifted", "dz", dz)
         return self._derived("Profile.shifted", self._y + dy, self._z_input + dz, self._name,
                              f"shifted by dy = {dy!r} m, dz = {dz!r} m")
 
     def gauge_point(self, depth=0.014):
-        """Lateral position [m] of a rail's (or roller's) gauge face at `depth`
-        below z = 0, the top of the head in rail profiles (the gauge is
-        measured there: 14 mm, EN 13848-1), on the gauge side of the top;
-        bisection on the spline."""
+        """Lateral position [m] of a rail's (or roller's) gauge face at `depth` [m].
+
+        `depth` (> 0) is measured below z = 0, the top of the head in rail
+        profiles (the gauge is measured there: 14 mm, EN 13848-1); the point
+        is on the gauge side of the top, found by bisection on the spline.
+        RollerRigError if the profile does not reach that deep on the gauge
+        side.
+
+        Examples
+        --------
+        >>> import rollerrig as rr
+        >>> print(f"{rr.Profile.uic60().gauge_point() * 1e3:.3f} mm")
+        -43.033 mm
+        """
         func = "Profile.gauge_point"
         depth = _check_number(func, "depth", depth, positive=True)
         lo, hi = self.y_min, float(self._y[np.argmin(self._z)])
@@ -265,11 +340,13 @@ class Profile:
         return 0.5 * (lo + hi)
 
     def canted(self, inclination):
-        """The profile turned about its origin as a rail or roller head canted
-        inward by `inclination` (a slope, e.g. 1/40): the field side drops,
-        y' = y cos c - z sin c, z' = y sin c + z cos c, c = atan(inclination).
-        Points where the turn folds the curve back (a steep face) are an
-        error; keep |inclination| small (<= 0.1)."""
+        """The profile turned about its origin as a rail or roller head canted inward.
+
+        `inclination` is a slope, e.g. 1/40, within [-0.1, 0.1]: the field
+        side drops, y' = y cos c - z sin c, z' = y sin c + z cos c, c =
+        atan(inclination).  Points where the turn folds the curve back (a
+        steep face) are an error (RollerRigError).
+        """
         func = "Profile.canted"
         inc = _check_number(func, "inclination", inclination)
         if not abs(inc) <= 0.1:
@@ -283,16 +360,21 @@ class Profile:
         return self._derived(func, y, z, self._name, f"canted by {inc!r}")
 
     def mirrored(self):
-        """The mirror image y -> -y: the same profile for the other side of the
-        track (field side positive again there).  Smoothing commutes with it."""
+        """The mirror image y -> -y: the same profile for the other side of the track.
+
+        The field side is positive again there.  Smoothing commutes with it.
+        """
         return self._derived("Profile.mirrored", -self._y[::-1], self._z_input[::-1], self._name,
                              "mirrored y -> -y")
 
     def write_text(self, path, units="mm"):
-        """Write the nodes (y, z) as plain two-column text, readable by
-        read_profile: '#' header lines 'key = value' carry name, kind, units
-        and bc; 17 significant digits.  `path` is a new path or a regular
-        file, replaced whole (never a link, a device or a FIFO)."""
+        """Write the nodes (y, z) as plain two-column text, readable by read_profile.
+
+        '#' header lines 'key = value' carry name, kind, units and bc; 17
+        significant digits.  `path` is a new path or a regular file,
+        replaced whole (never a link, a device or a FIFO: RollerRigError);
+        `units` is "mm" (default), "cm" or "m".
+        """
         if units not in UNITS:
             raise RollerRigError(f"Profile.write_text: units must be one of {sorted(UNITS)}, "
                                  f"got {units!r}")
@@ -312,10 +394,19 @@ class Profile:
     @classmethod
     def from_points(cls, y, z, *, kind, name="", units="m", on_fold="trim", mirror_y=False,
                     mirror_z=False, bc=None, smoothing=None, meta=None):
-        """A profile from points in any order: converts units ("m", "cm",
-        "mm"), mirrors on request, reverses descending points, removes folds
+        """A profile from points in any order.
+
+        Converts units (`units`: "m", "cm", "mm"), mirrors on request
+        (`mirror_y`, `mirror_z`), reverses descending points, removes folds
         (with a RollerRigWarning; on_fold="raise" to refuse them) and checks
-        as read_profile does."""
+        as read_profile does; the other arguments as for Profile.
+
+        Examples
+        --------
+        >>> import rollerrig as rr
+        >>> rr.Profile.from_points([30, 20, 10, 0], [9, 4, 1, 0], kind="rail", units="mm")
+        Profile(kind='rail', name='', 4 points, y 0 .. 30 mm, bc='not-a-knot')
+        """
         func = "Profile.from_points"
         _check_kind(func, kind)
         if units not in UNITS:
@@ -335,24 +426,40 @@ class Profile:
 
     @classmethod
     def s1002(cls, smoothing=None):
-        """The S1002 wheel of the Manchester contact benchmark (MBench_S1002_v3.prw,
-        shipped in rollerrig/data/profiles): y = 0 at the taping line, flange at y < 0."""
+        """The S1002 wheel of the Manchester contact benchmark.
+
+        MBench_S1002_v3.prw, shipped in rollerrig/data/profiles: y = 0 at the
+        taping line, flange at y < 0.  `smoothing` as for Profile.
+        """
         return read_profile(os.path.join(DATA_DIR, "MBench_S1002_v3.prw"),
                             smoothing=smoothing)
 
     @classmethod
     def uic60(cls, smoothing=None):
-        """The UIC60 rail of the Manchester contact benchmark (MBench_UIC60_v3.prr),
-        already canted 1:40: top of head z = 0 near y = 0, gauge face at y < 0."""
+        """The UIC60 rail of the Manchester contact benchmark.
+
+        MBench_UIC60_v3.prr, already canted 1:40: top of head z = 0 near
+        y = 0, gauge face at y < 0.  `smoothing` as for Profile.
+        """
         return read_profile(os.path.join(DATA_DIR, "MBench_UIC60_v3.prr"),
                             smoothing=smoothing)
 
     @classmethod
     def conical(cls, alpha, y_range=(-0.02, 0.02), r0=None, n=41):
-        """The paper's conical wheel: z = -tan(alpha) y on y_range [m], so the
-        rolling radius r0 + z decreases towards the field side for alpha > 0
-        (slope -tan(alpha)).  r0, the radius at y = 0 [m], is kept in meta
-        for the contact geometry."""
+        """The paper's conical wheel: z = -tan(alpha) y on y_range [m].
+
+        The rolling radius r0 + z decreases towards the field side for
+        alpha > 0 (slope -tan(alpha)); alpha [rad] within (-pi/2, pi/2).  r0,
+        the radius at y = 0 [m], is kept in meta for the contact geometry;
+        n points (4 or more).
+
+        Examples
+        --------
+        >>> import rollerrig as rr
+        >>> w = rr.Profile.conical(0.025, r0=0.0625)
+        >>> print(f"{w.slope(0.0):.6f}", w.meta["r0"])
+        -0.025005 0.0625
+        """
         func = "Profile.conical"
         alpha = _check_number(func, "alpha", alpha)
         if not abs(alpha) < math.pi / 2:
@@ -368,9 +475,12 @@ class Profile:
 
     @classmethod
     def cylinder(cls, y_range=(-0.02, 0.02), crown_radius=None, n=81):
-        """A roller (kind "rail") with a flat lateral profile z = 0 (a
-        cylinder), or with a crown of the given radius [m] centred at y = 0:
-        z = R - sqrt(R^2 - y^2), curvature +1/R."""
+        """A roller (kind "rail"): a cylinder, or crowned with radius `crown_radius` [m].
+
+        Flat lateral profile z = 0 (a cylinder, crown_radius None), or a
+        crown centred at y = 0: z = R - sqrt(R^2 - y^2), curvature +1/R;
+        y_range [m] within the crown, n points.
+        """
         func = "Profile.cylinder"
         y0, y1, n = _range_points(func, y_range, n)
         R = _check_number(func, "crown_radius", crown_radius, positive=True, allow_none=True)
@@ -440,28 +550,66 @@ def read_profile(path, kind=None, *, units=None, on_fold="trim", mirror_y=False,
                  mirror_z=False, smoothing=None, bc=None, name=None):
     """Read a wheel or rail/roller profile file into a Profile.
 
-    path:      a SIMPACK .prw (wheel) / .prr (rail), MiniProf .whl (wheel) /
-               .ban (rail) or plain text .txt/.csv/.dat file: READERS by
-               extension (package docstring; each reader's rules in
-               _read_simpack, _read_miniprof, _read_text).
-    kind:      "wheel" or "rail"; by default from the SIMPACK header type,
-               else the extension, else a '# kind = ...' line of a text file
-               (a text file without one needs kind).  Given, it must agree
-               with a SIMPACK header.
-    units:     plain text only: "mm" (default), "cm" or "m"; SIMPACK files
-               declare theirs, MiniProf files are in mm.
-    on_fold:   "trim" (default: drop the points where the profile folds
-               back, with a RollerRigWarning) or "raise".
-    mirror_y, mirror_z: mirror the points after reading (y -> -y: a profile
-               of the other side; z -> -z: data with z upward).
-    smoothing, bc: as for Profile.
-    name:      default the file name without extension.
+    Parameters
+    ----------
+    path : str or path-like
+        A SIMPACK .prw (wheel) / .prr (rail), MiniProf .whl (wheel) / .ban
+        (rail) or plain text .txt/.csv/.dat file: READERS by extension
+        (package docstring; each reader's rules in _read_simpack,
+        _read_miniprof, _read_text).
+    kind : {"wheel", "rail"}, optional
+        By default from the SIMPACK header type, else the extension, else a
+        '# kind = ...' line of a text file (a text file without one needs
+        kind).  Given, it must agree with a SIMPACK header.
+    units : {"mm", "cm", "m"}, optional
+        Plain text only: default "mm"; SIMPACK files declare theirs,
+        MiniProf files are in mm.
+    on_fold : {"trim", "raise"}, optional
+        "trim" (default): drop the points where the profile folds back, with
+        a RollerRigWarning; "raise": refuse them.
+    mirror_y, mirror_z : bool, optional
+        Mirror the points after reading (y -> -y: a profile of the other
+        side; z -> -z: data with z upward).
+    smoothing, bc : optional
+        As for :class:`Profile` (smoothing a wavelength [m]).
+    name : str, optional
+        Default the file name without extension.
 
-    Checks (RollerRigError naming the file and line): numbers, NaN/inf,
-    at least 4 points, no duplicate y, a single-valued profile (on_fold),
-    |y|, |z| <= 2 m and width >= 1 mm after the unit conversion, MiniProf's
-    XYPoints and ColumnDef.  A wheel whose flange (max z) lies at the
-    field-side half gets a warning: it is probably the other side's profile.
+    Returns
+    -------
+    Profile
+        Its meta holds the format, the path, the header values, the units
+        and the reading notes.
+
+    Raises
+    ------
+    RollerRigError
+        Naming the file and line: no such file, an unknown extension, units
+        for a format that fixes its own, numbers, NaN/inf, at least 4
+        points, no duplicate y, a single-valued profile (on_fold),
+        ``|y|``, ``|z|`` <= 2 m and width >= 1 mm after the unit conversion,
+        MiniProf's XYPoints and ColumnDef, a kind unknown or disagreeing.
+
+    Warns
+    -----
+    RollerRigWarning
+        For a wheel whose flange (max z) lies at the field-side half: it is
+        probably the other side's profile; for folds trimmed.
+
+    See Also
+    --------
+    Profile.write_text : writes a file this reads.
+    Profile.from_points : the same checks on points in memory.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> import rollerrig as rr
+    >>> path = os.path.join(tempfile.mkdtemp(), "wheel.txt")
+    >>> rr.Profile.conical(0.025).write_text(path)
+    >>> p = rr.read_profile(path)
+    >>> p.kind, p.meta["units"], len(p)
+    ('wheel', 'mm', 41)
     """
     func = "read_profile"
     path = os.fspath(path)

@@ -23,6 +23,7 @@ from ._checks import BCS, KINDS, UNITS
 
 class RawProfile(NamedTuple):
     """What a reader returns: the points as the file gives them."""
+
     y: np.ndarray          #: lateral [m], the file's order
     z: np.ndarray          #: vertical [m], downward
     lines: np.ndarray      #: the line of each point (for messages)
@@ -380,13 +381,13 @@ def _not_number(field):
 
 
 class Format(NamedTuple):
-    """A file format: its name (meta["format"]), its reader, the kind its
-    extension implies (None: the file or the caller must say), and whether
-    read_profile's units apply (other formats fix their own)."""
-    name: str
-    read: Callable[..., RawProfile]
+    """A file format of READERS, read_profile's table by extension."""
+
+    name: str               #: the format's name (meta["format"])
+    read: Callable[..., RawProfile]  #: its reader: (path, where, kind, units) -> RawProfile
+    #: the kind its extension implies (None: the file or the caller must say)
     kind: Optional[str]
-    takes_units: bool
+    takes_units: bool       #: whether read_profile's units apply (other formats fix their own)
 
 
 #: the formats by file extension (lower case): read_profile dispatches on it
