@@ -181,7 +181,7 @@ def swap_blame(status_of, flat, names, reference):
     replaced by its value in a valid case (reference: name -> value), one at
     a time; where no single one clears the status (two bad values), all of
     them in turn, then each put back where the status stays cleared without
-    it.  status_of(*values) -> the status of one case (names' order)."""
+    it.  ``status_of(*values)`` -> the status of one case (names' order)."""
     def blame(i, code):
         values = [float(np.reshape(a, -1)[i if np.size(a) > 1 else 0]) for a in flat]
         swapped = [k for k, n in enumerate(names)

@@ -1,4 +1,4 @@
-"""Pictures (matplotlib, imported on use, never at ``import rollerrig``).
+"""Pictures (matplotlib, imported on use, never at ``import rollerrig``)::
 
     import rollerrig.plot as rp
     rp.creep_curves(cx, {"fastsim": f1, "polach": f2}, mu=0.33, N=106.7e3,

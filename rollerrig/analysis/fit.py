@@ -1,4 +1,4 @@
-"""Fit Polach's method or modified FASTSIM to measured creep-force curves.
+"""Fit Polach's method or modified FASTSIM to measured creep-force curves::
 
     import rollerrig as rr
     from rollerrig.analysis.fit import fit_polach

@@ -1,4 +1,4 @@
-"""Parameter sweeps: a vectorised function or the rig over a Cartesian grid.
+"""Parameter sweeps: a vectorised function or the rig over a Cartesian grid::
 
     import numpy as np, rollerrig as rr
     ds = rr.sweep("creep_forces", {"cx": np.linspace(0, 0.01, 200),

@@ -59,6 +59,8 @@ contact geometry, Vehicle System Dynamics 48 (suppl.), 19-36.
 Gelb, A., Vander Velde, W.E. (1968), Multiple-input describing functions and
 nonlinear system design, McGraw-Hill (harmonic linearisation).
 
+Example::
+
     import rollerrig as rr
     from rollerrig.geometry.conicity import equivalent_conicity
     g = rr.RigGeometry(wheel=rr.Profile.s1002(), roller=rr.Profile.uic60(),

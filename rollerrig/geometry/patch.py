@@ -4,7 +4,7 @@ Kalker's exact theory (rollerrig.contact.exact) takes any undeformed
 distance h(x, y) on a grid; this module builds it from the rig's profiles,
 so that a patch that is not an ellipse (near the flange root, two regions
 close together, a measured profile's uneven curvature) comes out as what it
-is (rollerrig.rig.exact solves one wheel of the rig on it, rig_exact):
+is (rollerrig.rig.exact solves one wheel of the rig on it, rig_exact)::
 
     g = rr.RigGeometry.measured_pair()
     p = rr.undeformed_distance(g, 0.0035, N=6e4)            # the left wheel

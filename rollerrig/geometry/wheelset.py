@@ -5,7 +5,7 @@ field side, z down) per side, the wheel's radius r0 and the roller's R0 at
 the profiles' origins (y = 0), and where those origins sit laterally: the
 C core (csrc/geometry/rr_geometry.h) finds on each side the point of least vertical
 gap between the surfaces, and the wheelset's height and roll that make both
-gaps zero, for any lateral shift of the wheelset.
+gaps zero, for any lateral shift of the wheelset::
 
     g = rr.RigGeometry(wheel=rr.Profile.s1002(), roller=rr.Profile.uic60(),
                        wheel_radius=0.46, roller_radius=0.46,
@@ -41,6 +41,25 @@ class RigGeometry:
     wheel_right, roller_right are given.  The values are checked where the
     geometry is used (RollerRigError naming the field).
 
+    Attributes
+    ----------
+    wheel : Profile
+        The left wheel's profile (y to the field side, z down).
+    roller : Profile
+        The left roller's profile (kind "rail").
+    wheel_radius : float
+        The wheel's radius where its profile has z = 0 at y = 0 [m].
+    roller_radius : float
+        The roller's radius where its profile has z = 0 at y = 0 [m].
+    wheel_y : float
+        Lateral distance of the wheel profile's origin from the wheelset's
+        centre [m].
+    roller_y : float
+        Lateral distance of the roller profile's origin from the rig's
+        centre line [m].
+    wheel_right, roller_right : Profile or None
+        The right side's own profiles (None: the left's mirrored).
+
     See Also
     --------
     wheelset_contact : the contact search on it.
@@ -54,18 +73,17 @@ class RigGeometry:
     (0.75, 0.76053)
     """
 
-    wheel: Profile          #: the left wheel's profile (y to the field side, z down)
-    roller: Profile         #: the left roller's profile (kind "rail")
-    #: the wheel's radius where its profile has z = 0 at y = 0 [m]
+    # the fields are documented in the class docstring (Attributes): a #:
+    # comment would document them twice, and numpydoc checks a default's
+    # docstring (None has none)
+    wheel: Profile
+    roller: Profile
     wheel_radius: float
-    #: the roller's radius where its profile has z = 0 at y = 0 [m]
     roller_radius: float
-    #: lateral distance of the wheel profile's origin from the wheelset's centre [m]
     wheel_y: float
-    #: lateral distance of the roller profile's origin from the rig's centre line [m]
     roller_y: float
-    wheel_right: Optional[Profile] = None   #: the right wheel's own profile (None: mirrored)
-    roller_right: Optional[Profile] = None  #: the right roller's own profile (None: mirrored)
+    wheel_right: Optional[Profile] = None
+    roller_right: Optional[Profile] = None
 
     @classmethod
     def standard(cls, wheel=None, roller=None, *, wheel_radius=0.46, roller_radius=0.46,

@@ -41,7 +41,7 @@ class Profile:
         Header values, read-only afterwards.
     bc : {"not-a-knot", "natural"}, optional
         Spline end conditions; default "not-a-knot" ("natural" with
-        smoothing).
+        smoothing, which takes no other).
     smoothing : float, optional
         None (interpolate the points) or a wavelength L [m], up to 2 m: the
         natural smoothing spline with lam = (L / 2 pi)^4 (module
