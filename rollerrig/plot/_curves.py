@@ -1,0 +1,258 @@
+"""rollerrig.plot's creep curves and traction fields."""
+import numpy as np
+
+from .._errors import RollerRigError
+from ._base import (MM, TRACTION_QUANTITIES, _one_axes, _real_1d, _scale, _sign, _xscale,
+                    _ylabel)
+
+
+# ------------------------------------------------------------------ creep curves
+
+_COMPONENTS = ("fx", "fy", "|f|")
+
+
+def _force_values(func, force, component, n):
+    from ..contact.creep import CreepForces
+    if component not in _COMPONENTS:
+        raise RollerRigError(f"{func}: component must be one of {_COMPONENTS}, "
+                             f"got {component!r}")
+    if isinstance(force, CreepForces):
+        fx, fy = np.asarray(force.fx, dtype=float), np.asarray(force.fy, dtype=float)
+        vals = {"fx": fx, "fy": fy, "|f|": np.hypot(fx, fy)}[component]
+    elif isinstance(force, (str, bytes, dict)) or force is None:
+        raise RollerRigError(f"{func}: a force must be an array [N] or a CreepForces, got "
+                             f"{type(force).__name__}")
+    else:
+        vals = _real_1d(func, "force", force)
+    vals = np.ravel(vals)
+    if vals.size != n:
+        raise RollerRigError(f"{func}: force has {vals.size} values for {n} creepages")
+    return vals
+
+
+def creep_curve(cx, force, *, ax=None, label=None, mu=None, N=None, sign=-1,
+                component="fx", xscale=None, **line_kw):
+    """One creep curve: sign * force / (mu N) against the creepage cx.
+
+    force: an array [N] (one per cx) or a CreepForces (its `component`:
+    "fx", "fy" or "|f|").  mu, N: normalise by mu N (N alone: by N; neither:
+    the force in N).  sign: -1 (default) draws -fx, the adhesion on the
+    wheel.  xscale: "log", "linear" or None (log when every cx > 0).
+    line_kw go to Axes.plot.  On axes that already hold lines, the scale and
+    the axis labels are left as they are.  Returns the axes."""
+    func = "creep_curve"
+    cx = _real_1d(func, "cx", cx)
+    sign = _sign(func, sign)
+    vals = _force_values(func, force, component, cx.size)
+    div, norm = _scale(func, mu, N)
+    _, ax, _ = _one_axes(func, ax, (6, 4))
+    fresh = not ax.get_lines()       # keep the scale and labels of axes drawn on before
+    ax.plot(cx, sign * vals / div, label=label, **line_kw)
+    if fresh:
+        ax.set_xscale(_xscale(cx, xscale))
+        ax.set_xlabel("longitudinal creepage cx" if component == "fx" else "creepage")
+        ax.set_ylabel(_ylabel(component, sign, norm))
+    if label is not None:
+        ax.legend(fontsize=8)
+    return ax
+
+
+def _reference_points(func, reference):
+    """(cx, fx [N], label, mu, N) of a reference curve."""
+    from ..analysis.reference import CreepCurve
+    if isinstance(reference, CreepCurve):
+        what = "exact theory (CONTACT)" if reference.method is None \
+            else f"CONTACT's {reference.method}"
+        return (np.asarray(reference.cx, float), np.asarray(reference.fx, float),
+                f"{what}, series {reference.series}", reference.case["mu"],
+                reference.case["N"])
+    if isinstance(reference, tuple) and len(reference) in (2, 3):
+        cx = _real_1d(func, "reference cx", reference[0])
+        fx = _real_1d(func, "reference force", reference[1])
+        if cx.size != fx.size:
+            raise RollerRigError(f"{func}: reference has {cx.size} creepages and "
+                                 f"{fx.size} forces")
+        label = str(reference[2]) if len(reference) == 3 else "reference"
+        return cx, fx, label, None, None
+    raise RollerRigError(f"{func}: reference must be a rollerrig.analysis.reference.CreepCurve or a "
+                         f"tuple (cx, force[, label]), got {type(reference).__name__}")
+
+
+_STYLES = ("-", "--", "-.", ":")
+
+
+def creep_curves(cx, curves, *, mu=None, N=None, reference=None, ax=None, sign=-1,
+                 component="fx", xscale=None, title=None):
+    """Several creep curves on one axes, optionally over reference points.
+
+    curves: {label: force} (arrays [N] or CreepForces, one value per cx) or
+    a single force.  reference: a rollerrig.analysis.reference.CreepCurve (e.g.
+    rr.reference.creep_curves()[1], CONTACT's exact theory) or a tuple
+    (cx, force[, label]), drawn as black markers; a CreepCurve also supplies
+    mu and N when they are not given.  Normalisation, sign, component and
+    xscale as for creep_curve.  Returns the axes: one line per curve (in
+    order), then one for the reference; a legend when there are labels."""
+    func = "creep_curves"
+    cx = _real_1d(func, "cx", cx)
+    if not isinstance(curves, dict):
+        curves = {None: curves}
+    if not curves:
+        raise RollerRigError(f"{func}: curves is empty")
+    ref = _reference_points(func, reference) if reference is not None else None
+    if ref is not None and mu is None and N is None and ref[3] is not None:
+        mu, N = ref[3], ref[4]
+    sign = _sign(func, sign)
+    div, norm = _scale(func, mu, N)
+    values = {label: _force_values(func, f, component, cx.size) for label, f in curves.items()}
+    _, ax, _ = _one_axes(func, ax, (6.4, 4.2))
+    for k, (label, vals) in enumerate(values.items()):
+        ax.plot(cx, sign * vals / div, _STYLES[k % len(_STYLES)], lw=1.4,
+                label=None if label is None else str(label))
+    if ref is not None:
+        ax.plot(ref[0], sign * ref[1] / div, "ko", ms=4, label=ref[2], zorder=3)
+    ax.set_xscale(_xscale(cx, xscale))
+    ax.set_xlabel("longitudinal creepage cx" if component == "fx" else "creepage")
+    ax.set_ylabel(_ylabel(component, sign, norm))
+    if norm == "(mu N)":             # |F| <= mu N: clip the linear theory's straight line
+        shown = sign * np.concatenate(list(values.values())) / div
+        lo, hi = float(np.nanmin(shown)), float(np.nanmax(shown))
+        ax.set_ylim(min(0.0, 1.08 * lo) if lo > -1.2 else -1.2,
+                    max(0.0, 1.08 * hi) if hi < 1.2 else 1.2)
+    ax.grid(alpha=0.3, which="both", lw=0.5)
+    if title:
+        ax.set_title(title, fontsize=10)
+    if any(line.get_label() and not line.get_label().startswith("_")
+           for line in ax.get_lines()):
+        ax.legend(fontsize=8, loc="best")
+    return ax
+
+
+# ------------------------------------------------------------------ traction field
+
+def _cell_sizes(t):
+    """(dx per element, dy) of the field's elements [m]."""
+    ny, nx = t.x.shape
+    if ny > 1:
+        dy = float(np.abs(t.y[1, 0] - t.y[0, 0]))
+        dx = t.area / dy
+    elif nx > 1:
+        dx = np.abs(np.diff(t.x, axis=1)[:, :1]) * np.ones_like(t.x)
+        dy = float(t.area.flat[0] / dx.flat[0])
+    else:
+        dx = np.sqrt(t.area)
+        dy = float(dx.flat[0])
+    return dx, dy
+
+
+def traction_field(t, ax=None, *, quantity="|p_t|", show_slip=True, arrows=True,
+                   colorbar=None, cmap="viridis", title=True):
+    """A traction field element by element: FASTSIM's (rr.fastsim_field) or
+    the exact theory's (rr.exact_field, rr.exact_solve).
+
+    quantity: one of TRACTION_QUANTITIES, the elements' colour ("slip": blue
+    adhesion, red slip); show_slip: hatch the elements that slip and outline
+    the adhesion/slip boundary; arrows: the tangential tractions (quiver,
+    at most ~16 per direction); colorbar: add one (default: when a figure is
+    made here); title: the forces in the title.  x, y in mm.  Returns the
+    axes, with the collections in this order: the elements (label
+    "elements"), then with show_slip the slip hatch ("slip area", when any
+    element slips) and the boundary ("adhesion/slip boundary"), then the
+    arrows ("tractions")."""
+    func = "traction_field"
+    from ..contact.creep import TractionField
+    if not isinstance(t, TractionField):
+        raise RollerRigError(f"{func}: t must be a TractionField (rr.fastsim_field, "
+                             f"rr.exact_field), got "
+                             f"{type(t).__name__}")
+    if quantity not in TRACTION_QUANTITIES:
+        raise RollerRigError(f"{func}: quantity must be one of {list(TRACTION_QUANTITIES)}, "
+                             f"got {quantity!r}")
+    fig, ax, made = _one_axes(func, ax, (5.8, 5.2))
+    from matplotlib.collections import LineCollection, PolyCollection
+    from matplotlib.colors import ListedColormap
+    from matplotlib.patches import Patch
+
+    inside = t.pn > 0
+    if not np.any(inside):
+        raise RollerRigError(f"{func}: no element carries pressure")
+    dx, dy = _cell_sizes(t)
+    X, Y = t.x / MM, t.y / MM
+    hx, hy = dx / MM / 2, dy / MM / 2
+
+    def boxes(mask):
+        xs, ys, wx = X[mask], Y[mask], hx[mask]
+        return np.stack([np.stack([xs - wx, ys - hy], -1), np.stack([xs + wx, ys - hy], -1),
+                         np.stack([xs + wx, ys + hy], -1), np.stack([xs - wx, ys + hy], -1)],
+                        axis=1)
+
+    pt = np.hypot(t.px, t.py)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        values = {"|p_t|": pt, "px": t.px, "py": t.py, "pn": t.pn,
+                  "|p_t|/pn": np.where(inside, pt / t.pn, np.nan),
+                  "slip": t.slip.astype(float)}[quantity]
+    name, scale, unit = TRACTION_QUANTITIES[quantity]
+    if quantity == "slip":
+        cmap_used, vmin, vmax = ListedColormap(["#9ecae1", "#fc9272"]), 0.0, 1.0
+    else:
+        cmap_used, vmin, vmax = cmap, None, None
+    if quantity in ("px", "py"):
+        top = float(np.nanmax(np.abs(values[inside]))) * scale or 1.0
+        cmap_used, vmin, vmax = ("RdBu_r" if cmap == "viridis" else cmap), -top, top
+    cells = PolyCollection(boxes(inside), array=values[inside] * scale, cmap=cmap_used,
+                           edgecolors="face", linewidths=0.2, label="elements")
+    cells.set_clim(vmin, vmax)
+    ax.add_collection(cells)
+
+    handles = []
+    if show_slip:
+        slip = inside & t.slip
+        if np.any(slip):
+            hatch = PolyCollection(boxes(slip), facecolors="none", edgecolors="0.15",
+                                   linewidths=0.0, hatch="////", label="slip area")
+            ax.add_collection(hatch)
+        # element edges with adhesion on one side and slip (or nothing) on the other
+        adh = inside & ~t.slip
+        segs = []
+        ny, nx = t.x.shape
+        for j in range(ny):
+            for i in range(nx):
+                if not adh[j, i]:
+                    continue
+                x0, x1 = X[j, i] - hx[j, i], X[j, i] + hx[j, i]
+                y0, y1 = Y[j, i] - hy, Y[j, i] + hy
+                if i + 1 < nx and slip[j, i + 1]:
+                    segs.append([(x1, y0), (x1, y1)])
+                if i > 0 and slip[j, i - 1]:
+                    segs.append([(x0, y0), (x0, y1)])
+                if j + 1 < ny and slip[j + 1, i]:
+                    segs.append([(max(x0, X[j + 1, i] - hx[j + 1, i]), y1),
+                                 (min(x1, X[j + 1, i] + hx[j + 1, i]), y1)])
+                if j > 0 and slip[j - 1, i]:
+                    segs.append([(max(x0, X[j - 1, i] - hx[j - 1, i]), y0),
+                                 (min(x1, X[j - 1, i] + hx[j - 1, i]), y0)])
+        ax.add_collection(LineCollection(segs, colors="k", linewidths=1.6,
+                                         label="adhesion/slip boundary"))
+        handles = [Patch(facecolor="white", edgecolor="0.3", label="adhesion"),
+                   Patch(facecolor="white", edgecolor="0.3", hatch="////", label="slip")]
+    if arrows:
+        ny, nx = t.x.shape
+        sj, si = max(1, -(-ny // 16)), max(1, -(-nx // 16))
+        sub = np.zeros_like(inside)
+        sub[sj // 2::sj, si // 2::si] = True
+        sub &= inside
+        ax.quiver(X[sub], Y[sub], t.px[sub], t.py[sub], color="k", width=0.004,
+                  pivot="mid", label="tractions")
+    ax.autoscale_view()
+    ax.set_aspect("equal")
+    ax.set_xlabel("x, rolling direction [mm]")
+    ax.set_ylabel("y, lateral [mm]")
+    if title:
+        pct = 100.0 * np.sum(t.area[inside & t.slip]) / np.sum(t.area[inside])
+        fx, fy, mz = (0.0 if abs(v) < 1e-9 else v for v in (t.fx, t.fy, t.mz))
+        ax.set_title(f"{name}: fx = {fx / 1e3:.3g} kN, fy = {fy / 1e3:.3g} kN, "
+                     f"mz = {mz:.3g} N m\nslip area {pct:.0f} %", fontsize=9)
+    if handles:
+        ax.legend(handles=handles, loc="upper right", fontsize=8, framealpha=0.85)
+    if quantity != "slip" and (colorbar or (colorbar is None and made)):
+        fig.colorbar(cells, ax=ax, label=f"{name} [{unit}]", shrink=0.85)
+    return ax
