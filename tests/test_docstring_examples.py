@@ -5,11 +5,13 @@ doctest whose printed output is compared with what the call gives now, so an
 example that stops working, or a number that changes, fails here.  Every
 module whose docstrings were converted to numpydoc is listed; a module
 listed must hold at least one example (a test that cannot silently check
-nothing).  The examples are small cases (milliseconds each).
+nothing).  The examples are small cases: about a second a module at most
+(the first xarray import, a 320-node table).
 """
 import doctest
 import importlib
 import inspect
+import sys
 import warnings
 
 import numpy as np
@@ -30,7 +32,14 @@ MODULES = [
     "rollerrig.geometry.wheelset",
     "rollerrig.geometry.patch",
     "rollerrig.geometry.conicity",
+    "rollerrig.plot._curves",
+    "rollerrig.plot._rig",
+    "rollerrig.plot._maps",
 ]
+
+# the optional packages (the extras "fit", "sweep": the test extra installs
+# them) a module's examples need
+NEEDS = {"rollerrig.analysis.fit": "scipy", "rollerrig.analysis.sweep": "xarray"}
 
 # the output as a reader sees it: spacing of numpy's reprs free, "..." for the
 # parts an example leaves out
@@ -63,10 +72,14 @@ def _examples(name):
 
 @pytest.mark.parametrize("name", MODULES)
 def test_docstring_examples(name, tmp_path, monkeypatch):
+    if name in NEEDS:
+        pytest.importorskip(NEEDS[name])
     tests = _examples(name)
     assert tests, f"{name}: no docstring example found"
     monkeypatch.chdir(tmp_path)                  # an example that writes a file writes here
     monkeypatch.setenv("MPLBACKEND", "Agg")
+    if "matplotlib.pyplot" in sys.modules:   # another test's figures: not counted here
+        sys.modules["matplotlib.pyplot"].close("all")
     runner = doctest.DocTestRunner(optionflags=FLAGS)
     failures = []
     # numpy's default printing (another test may have changed it in this process)
@@ -75,6 +88,9 @@ def test_docstring_examples(name, tmp_path, monkeypatch):
         warnings.simplefilter("error")
         for test in tests:
             runner.run(test, out=lambda text: failures.append(text))
+    pyplot = sys.modules.get("matplotlib.pyplot")
+    if pyplot is not None:
+        pyplot.close("all")                     # the figures the examples drew
     summary = runner.summarize(verbose=False)
     assert summary.attempted > 0
     assert summary.failed == 0, "".join(failures)

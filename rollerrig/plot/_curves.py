@@ -34,12 +34,49 @@ def creep_curve(cx, force, *, ax=None, label=None, mu=None, N=None, sign=-1,
                 component="fx", xscale=None, **line_kw):
     """One creep curve: sign * force / (mu N) against the creepage cx.
 
-    force: an array [N] (one per cx) or a CreepForces (its `component`:
-    "fx", "fy" or "|f|").  mu, N: normalise by mu N (N alone: by N; neither:
-    the force in N).  sign: -1 (default) draws -fx, the adhesion on the
-    wheel.  xscale: "log", "linear" or None (log when every cx > 0).
-    line_kw go to Axes.plot.  On axes that already hold lines, the scale and
-    the axis labels are left as they are.  Returns the axes."""
+    Parameters
+    ----------
+    cx : array_like
+        Creepages [-], one per force.
+    force : array_like or CreepForces
+        Forces [N], one per cx, or a CreepForces (its `component`).
+    ax : matplotlib.axes.Axes, optional
+        The axes to draw on; None: a new figure.
+    label : str, optional
+        The line's label.
+    mu, N : float, optional
+        Normalise by mu N (N alone: by N [N]; neither: the force in N).
+    sign : {-1, 1}, optional
+        -1 (default) draws -fx, the adhesion on the wheel.
+    component : {"fx", "fy", "|f|"}, optional
+        The component of a CreepForces.
+    xscale : {"log", "linear", None}, optional
+        None: log when every cx > 0.
+    **line_kw
+        Passed to Axes.plot.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        The axes, one line added.  On axes that already hold lines, the
+        scale and the axis labels are left as they are.
+
+    Raises
+    ------
+    RollerRigError
+        For bad input (naming the argument).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import rollerrig as rr
+    >>> import rollerrig.plot as rp
+    >>> cx = np.geomspace(1e-5, 1e-2, 30)
+    >>> f = rr.creep_forces(cx, a=6e-3, b=4e-3, N=1e4, mu=0.3, nx=10, ny=10)
+    >>> ax = rp.creep_curve(cx, f, mu=0.3, N=1e4, label="fastsim")
+    >>> ax.get_xscale(), ax.get_ylabel()
+    ('log', '-fx / (mu N)')
+    """
     func = "creep_curve"
     cx = _real_1d(func, "cx", cx)
     sign = _sign(func, sign)
@@ -85,13 +122,34 @@ def creep_curves(cx, curves, *, mu=None, N=None, reference=None, ax=None, sign=-
                  component="fx", xscale=None, title=None):
     """Several creep curves on one axes, optionally over reference points.
 
-    curves: {label: force} (arrays [N] or CreepForces, one value per cx) or
-    a single force.  reference: a rollerrig.analysis.reference.CreepCurve (e.g.
-    rr.reference.creep_curves()[1], CONTACT's exact theory) or a tuple
-    (cx, force[, label]), drawn as black markers; a CreepCurve also supplies
-    mu and N when they are not given.  Normalisation, sign, component and
-    xscale as for creep_curve.  Returns the axes: one line per curve (in
-    order), then one for the reference; a legend when there are labels."""
+    Parameters
+    ----------
+    cx : array_like
+        Creepages [-].
+    curves : dict or array_like or CreepForces
+        {label: force} (arrays [N] or CreepForces, one value per cx) or a
+        single force.
+    mu, N, sign, component, xscale, ax
+        As for :func:`creep_curve`.
+    reference : CreepCurve or tuple, optional
+        A rollerrig.analysis.reference.CreepCurve (e.g.
+        rr.reference.creep_curves()[1], CONTACT's exact theory) or a tuple
+        (cx, force[, label]), drawn as black markers; a CreepCurve also
+        supplies mu and N when they are not given.
+    title : str, optional
+        The axes' title.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        One line per curve (in order), then one for the reference; a
+        legend when there are labels.
+
+    Raises
+    ------
+    RollerRigError
+        For bad input (naming the argument).
+    """
     func = "creep_curves"
     cx = _real_1d(func, "cx", cx)
     if not isinstance(curves, dict):
@@ -146,18 +204,51 @@ def _cell_sizes(t):
 
 def traction_field(t, ax=None, *, quantity="|p_t|", show_slip=True, arrows=True,
                    colorbar=None, cmap="viridis", title=True):
-    """A traction field element by element: FASTSIM's (rr.fastsim_field) or
-    the exact theory's (rr.exact_field, rr.exact_solve).
+    """A traction field element by element.
 
-    quantity: one of TRACTION_QUANTITIES, the elements' colour ("slip": blue
-    adhesion, red slip); show_slip: hatch the elements that slip and outline
-    the adhesion/slip boundary; arrows: the tangential tractions (quiver,
-    at most ~16 per direction); colorbar: add one (default: when a figure is
-    made here); title: the forces in the title.  x, y in mm.  Returns the
-    axes, with the collections in this order: the elements (label
-    "elements"), then with show_slip the slip hatch ("slip area", when any
-    element slips) and the boundary ("adhesion/slip boundary"), then the
-    arrows ("tractions")."""
+    Parameters
+    ----------
+    t : TractionField or ExactSolution
+        FASTSIM's (rr.fastsim_field) or the exact theory's (rr.exact_field,
+        rr.exact_solve).
+    ax : matplotlib.axes.Axes, optional
+        None: a new figure.
+    quantity : str, optional
+        One of TRACTION_QUANTITIES, the elements' colour ("slip": blue
+        adhesion, red slip).
+    show_slip : bool, optional
+        Hatch the elements that slip and outline the adhesion/slip boundary.
+    arrows : bool, optional
+        The tangential tractions (quiver, at most ~16 per direction).
+    colorbar : bool, optional
+        Add one (default: when a figure is made here).
+    cmap : str, optional
+        The colour map.
+    title : bool, optional
+        The forces in the title.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        x, y in mm, with the collections in this order: the elements (label
+        "elements"), then with show_slip the slip hatch ("slip area", when
+        any element slips) and the boundary ("adhesion/slip boundary"), then
+        the arrows ("tractions").
+
+    Raises
+    ------
+    RollerRigError
+        For bad input (naming the argument).
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> import rollerrig.plot as rp
+    >>> t = rr.fastsim_field(2e-4, a=6e-3, b=4e-3, N=1e4, mu=0.3, nx=10, ny=10)
+    >>> ax = rp.traction_field(t)
+    >>> [c.get_label() for c in ax.collections]
+    ['elements', 'slip area', 'adhesion/slip boundary', 'tractions']
+    """
     func = "traction_field"
     from ..contact.creep import TractionField
     if not isinstance(t, TractionField):

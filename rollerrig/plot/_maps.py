@@ -42,18 +42,54 @@ def _error_stats(err):
 
 def error_map(result, ax=None, *, spin=None, quantity="force", reduce="max",
               ellipticity=None, vmax=None, cmap="viridis", colorbar=None, title=True):
-    """Draw a ScoreResult's error (rollerrig.analysis.reference.score) over the creepage
-    direction / magnitude plane.
+    """Draw a ScoreResult's error over the creepage direction / magnitude plane.
 
-    One panel per spin level (ax None: a new figure; or a sequence of as many
-    axes), or the one level `spin` on the axes `ax`.  x: the direction of
+    One panel per spin level, or the one level `spin`.  x: the direction of
     the creepage atan2(cy, cx) in degrees; y: its normalised magnitude (one
-    row per table value, not to scale).  Each cell shows the error of the
-    5 ellipticities reduced by `reduce` ("max", "median" or "mean"), or of
-    the one a/b `ellipticity`.  quantity: "force" (|dF|/(mu N)) or "mz"
-    (|dMz|/(mu N cp)).  vmax: top of the colour scale (default the largest
-    value drawn).  colorbar: add one (default: when a figure is made here).
-    Returns the axes (an array for several panels).
+    row per table value, not to scale).
+
+    Parameters
+    ----------
+    result : ScoreResult
+        From rollerrig.analysis.reference.score.
+    ax : matplotlib.axes.Axes or sequence of Axes, optional
+        None: a new figure; or a sequence of as many axes as panels; with
+        `spin`, the axes for that level.
+    spin : float, optional
+        The one spin level drawn.
+    quantity : {"force", "mz"}, optional
+        "force" (``|dF|/(mu N)``) or "mz" (``|dMz|/(mu N cp)``).
+    reduce : {"max", "median", "mean"}, optional
+        How each cell reduces the errors of the 5 ellipticities.
+    ellipticity : float, optional
+        The one a/b drawn instead.
+    vmax : float, optional
+        Top of the colour scale (default the largest value drawn).
+    cmap : str, optional
+        The colour map.
+    colorbar : bool, optional
+        Add one (default: when a figure is made here).
+    title : bool, optional
+        A title per panel (its statistics) and, on a figure made here, one
+        naming the method.
+
+    Returns
+    -------
+    matplotlib.axes.Axes or ndarray of Axes
+        The axes (an array for several panels).
+
+    Raises
+    ------
+    RollerRigError
+        For bad input (naming the argument).
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> import rollerrig.plot as rp
+    >>> axes = rp.error_map(rr.reference.score("fastsim", nx=10, ny=10))
+    >>> axes.shape                          # one panel per spin level
+    (4,)
     """
     func = "error_map"
     from ..analysis.reference import ScoreResult
@@ -126,13 +162,38 @@ def fit(result, cx, force, ax=None, *, mu=None, N=None, residuals=False, label=N
         xscale=None):
     """A FitResult of fit_polach / fit_modified_fastsim over its data.
 
-    cx, force: the data fitted (one curve, or lists of curves, one per
-    speed of the fit).  The data as markers, the fitted model as a line on a
-    fine grid over the data's range, drawn as adhesion (the sign that makes
-    it positive).  N: normalise by N (default the fit's N; mu too: by mu N).
-    residuals: add a second panel with model - data (then ax is None or two
-    axes, and two axes are returned).  Returns the axes: per curve one data
-    line and one model line."""
+    The data as markers, the fitted model as a line on a fine grid over the
+    data's range, drawn as adhesion (the sign that makes it positive).
+
+    Parameters
+    ----------
+    result : FitResult
+        The fit.
+    cx, force : array_like or list of array_like
+        The data fitted (one curve, or lists of curves, one per speed of the
+        fit): creepage [-], force [N].
+    ax : matplotlib.axes.Axes or sequence of 2 Axes, optional
+        None: a new figure; two axes with residuals=True.
+    mu, N : float, optional
+        N: normalise by N [N] (default the fit's N; mu too: by mu N).
+    residuals : bool, optional
+        Add a second panel with model - data.
+    label : str, optional
+        The model lines' label.
+    xscale : {"log", "linear", None}, optional
+        As for creep_curve.
+
+    Returns
+    -------
+    matplotlib.axes.Axes or ndarray of Axes
+        Per curve one data line and one model line; two axes with
+        residuals=True.
+
+    Raises
+    ------
+    RollerRigError
+        For bad input (naming the argument).
+    """
     func = "fit"
     from ..analysis.fit import PARAMETER_UNITS, FitResult
     if not isinstance(result, FitResult):

@@ -28,12 +28,42 @@ def _drive_sense(res):
 
 
 def rig_history(res, axes=None, *, title=True):
-    """The seed paper's Fig. 7: creepage (contact model, encoder estimate,
-    target) and the roller and wheel surface speeds against time, two panels
-    sharing the time axis.  The creepage is drawn in the drive's sense, as
-    the targets are: cx (Kalker's sign) when braking, -cx when driving.
-    axes: None or two axes.  Returns the two axes (creepage: 3 lines;
-    speeds: 2 lines)."""
+    """The seed paper's Fig. 7: creepage and surface speeds against time.
+
+    Two panels sharing the time axis: the creepage (contact model, encoder
+    estimate, target) and the roller and wheel surface speeds.  The
+    creepage is drawn in the drive's sense, as the targets are: cx (Kalker's
+    sign) when braking, -cx when driving.
+
+    Parameters
+    ----------
+    res : RigResult
+        A run of rr.simulate.
+    axes : sequence of 2 matplotlib.axes.Axes, optional
+        None: a new figure.
+    title : bool, optional
+        A figure title (the drive mode, mu0, dt) when the figure is made
+        here.
+
+    Returns
+    -------
+    ndarray of matplotlib.axes.Axes
+        The two axes (creepage: 3 lines; speeds: 2 lines).
+
+    Raises
+    ------
+    RollerRigError
+        For res not a RigResult, or axes not two Axes.
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> import rollerrig.plot as rp
+    >>> res = rr.simulate(duration=1.0, targets=[0.02], target_times=[0.0], progress=False)
+    >>> top, bottom = rp.rig_history(res)
+    >>> len(top.lines), len(bottom.lines)
+    (3, 2)
+    """
     func = "rig_history"
     _check_result(func, res)
     fig, (ax1, ax2), made = _many_axes(func, axes, 2, (8, 6.4), sharex=True)
@@ -65,12 +95,33 @@ def rig_history(res, axes=None, *, title=True):
 
 
 def rig_force(res, ax=None, *, title=True):
-    """The seed paper's Fig. 8: the longitudinal creep force of both wheels
-    against time, in the sense the drive works against (braking: -fx, since
-    fx on the wheel is < 0 when braking; driving: fx), with the friction
-    limit mu0 N (N both wheels' normal loads; each wheel's own mu0 where the
-    adhesion changes, which is then drawn against time on a second y axis,
-    ax.mu_axis).  Returns the axes (2 lines)."""
+    """The seed paper's Fig. 8: the longitudinal creep force of both wheels against time.
+
+    Drawn in the sense the drive works against (braking: -fx, since fx on
+    the wheel is < 0 when braking; driving: fx), with the friction limit mu0
+    N (N both wheels' normal loads; each wheel's own mu0 where the adhesion
+    changes, which is then drawn against time on a second y axis,
+    ax.mu_axis).
+
+    Parameters
+    ----------
+    res : RigResult
+        A run of rr.simulate.
+    ax : matplotlib.axes.Axes, optional
+        None: a new figure.
+    title : bool, optional
+        A title naming the force's sense and its limit.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        The axes (2 lines), forces in N.
+
+    Raises
+    ------
+    RollerRigError
+        For res not a RigResult.
+    """
     func = "rig_force"
     _check_result(func, res)
     fig, ax, made = _one_axes(func, ax, (8, 3.6))
@@ -115,11 +166,29 @@ def rig_force(res, ax=None, *, title=True):
 
 
 def plot_run(res, outdir, prefix="rig"):
-    """Write <prefix>_creepage.png (Fig. 7) and <prefix>_force.png (Fig. 8)
-    for RigResult `res` into outdir (created if needed); returns the paths.
-    Each goes to a new path or replaces a regular file (never a symbolic
-    link, a device or a FIFO: RollerRigError naming it, checked for both
-    before either is drawn)."""
+    """Write <prefix>_creepage.png (Fig. 7) and <prefix>_force.png (Fig. 8) of a run.
+
+    Parameters
+    ----------
+    res : RigResult
+        A run of rr.simulate.
+    outdir : str or path-like
+        The folder (created if needed).
+    prefix : str, optional
+        The files' prefix.
+
+    Returns
+    -------
+    list of str
+        The two paths.
+
+    Raises
+    ------
+    RollerRigError
+        Each file goes to a new path or replaces a regular file (never a
+        symbolic link, a device or a FIFO: RollerRigError naming it, checked
+        for both before either is drawn).
+    """
     plt = _pyplot()          # the backend is the caller's (rollerrig simulate: Agg)
     from .._files import check_output, make_folder, write_file
 
@@ -152,19 +221,53 @@ def _shifts(func, y_ws):
 
 def profiles(geometry, y_ws=(0.0, 0.002, 0.004, 0.006), ax=None, *, side="left",
              wheels=True, window=None, legend=True):
-    """Wheel and roller profiles of one side, the wheel placed by
-    rr.wheelset_contact at each lateral shift y_ws [m] (+: the wheelset to
-    the left), and its contact point marked.
+    """Wheel and roller profiles of one side, the wheel placed at each lateral shift.
 
-    Drawn in the plane of the axle: horizontal the roller's own profile
-    coordinate (rig Y measured outward from the roller profile's origin),
-    vertical the rig Z (up, 0 = the nominal roller top), in mm.  side:
-    "left" or "right"; wheels: draw the wheel at every shift (True), at
-    none (False), or at those listed; window: (x0, x1, z0, z1) in mm
-    (default: around the contact points).  Returns the axes: the roller
-    line (label "roller"), then per shift a wheel line (when drawn) and a
-    contact marker labelled with the shift and contact angle; shifts
-    without contact are marked "no contact" in the legend only."""
+    The wheel is placed by rr.wheelset_contact at each lateral shift y_ws
+    and its contact point marked.  Drawn in the plane of the axle:
+    horizontal the roller's own profile coordinate (rig Y measured outward
+    from the roller profile's origin), vertical the rig Z (up, 0 = the
+    nominal roller top), in mm.
+
+    Parameters
+    ----------
+    geometry : RigGeometry
+        The profiles and their placement.
+    y_ws : float or sequence of float, optional
+        Lateral shifts [m] (+: the wheelset to the left).
+    ax : matplotlib.axes.Axes, optional
+        None: a new figure.
+    side : {"left", "right"}, optional
+        The side drawn.
+    wheels : bool or sequence of float, optional
+        Draw the wheel at every shift (True), at none (False), or at those
+        listed.
+    window : tuple of 4 float, optional
+        (x0, x1, z0, z1) in mm (default: around the contact points).
+    legend : bool, optional
+        Add a legend.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        The roller line (label "roller"), then per shift a wheel line (when
+        drawn) and a contact marker labelled with the shift and contact
+        angle; shifts without contact are marked "no contact" in the legend
+        only.
+
+    Raises
+    ------
+    RollerRigError
+        For bad input (naming the argument).
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> import rollerrig.plot as rp
+    >>> ax = rp.profiles(rr.RigGeometry.standard(), y_ws=(0.0, 0.004))
+    >>> ax.lines[-1].get_label()
+    'y_ws = +4 mm: contact angle 6.2 deg'
+    """
     func = "profiles"
     from ..geometry.wheelset import RigGeometry, wheelset_contact
     if not isinstance(geometry, RigGeometry):
