@@ -18,6 +18,7 @@ RollerRigError.
 """
 import numbers
 import os
+import textwrap
 import warnings
 
 import numpy as np
@@ -437,16 +438,60 @@ def rig_history(res, axes=None, *, title=True):
     return np.array([ax1, ax2], dtype=object)
 
 
-def rig_force(res, ax=None, *, title=True):
+def friction_law_text(params):
+    """The friction law of a run's parameters in words, with its values (the
+    caption of the adhesion panel): Polach's falling law or Coulomb, and the
+    adhesion schedule or patch when the run has one."""
+    scen, contact = params.get("scenario", {}), params.get("contact", {})
+    adhesion = params.get("adhesion", {})
+    mu0 = scen.get("mu0")
+    if contact.get("friction_law", "polach_falling") == "coulomb":
+        text = f"Coulomb friction, mu0 = {mu0:g}"
+    else:
+        text = (f"Polach's falling friction mu(w) = mu0 ((1 - A) exp(-B w) + A), w the slip "
+                f"speed: mu0 = {mu0:g}, A = {contact.get('polach_A'):g}, "
+                f"B = {contact.get('polach_B_s_per_m'):g} s/m")
+    if adhesion.get("schedule_times_s"):
+        text += "; mu0 (and A, B) from the adhesion schedule"
+    return text
+
+
+def _adhesion_limits(t, mu):
+    """A y range that shows the adhesion's differences between targets:
+    the samples after the first tenth of the run (past the start-up), padded."""
+    keep = np.isfinite(mu) & (t >= t[0] + 0.1 * (t[-1] - t[0]))
+    if not np.any(keep):
+        return None
+    lo, hi = np.percentile(mu[keep], [1, 100])
+    pad = max(0.1 * (hi - lo), 0.002)
+    return lo - pad, hi + pad
+
+
+def rig_force(res, ax=None, *, title=True, adhesion=None):
     """The seed paper's Fig. 8: the longitudinal creep force of both wheels
     against time, in the sense the drive works against (braking: -fx, since
     fx on the wheel is < 0 when braking; driving: fx), with the friction
     limit mu0 N (N both wheels' normal loads; each wheel's own mu0 where the
     adhesion changes, which is then drawn against time on a second y axis,
-    ax.mu_axis).  Returns the axes (2 lines)."""
+    ax.mu_axis).  adhesion (default: True when ax is None): a second panel
+    below, ax.adhesion_axis, with the adhesion coefficient F / N (the force
+    over both normal loads) on a scale that shows the targets' differences,
+    titled with the friction law that sets them (friction_law_text).
+    Returns the force's axes (2 lines)."""
     func = "rig_force"
     _check_result(func, res)
-    fig, ax, made = _one_axes(func, ax, (8, 3.6))
+    if adhesion is None:
+        adhesion = ax is None
+    if adhesion and ax is None:
+        plt = _pyplot()
+        fig, (ax, ax_mu) = plt.subplots(2, 1, figsize=(8, 6.2), sharex=True,
+                                        gridspec_kw={"height_ratios": [3, 2]})
+        made = True
+    else:
+        fig, ax, made = _one_axes(func, ax, (8, 3.6))
+        ax_mu = None
+        if adhesion:
+            raise RollerRigError(f"{func}: adhesion=True draws its own two panels: pass ax=None")
     sense, mode = _drive_sense(res)
     fx = "-fx" if sense > 0 else "fx"
     t = res.time
@@ -467,16 +512,33 @@ def rig_force(res, ax=None, *, title=True):
         if np.any(res.mu_right != res.mu_left):
             ax.mu_axis.plot(t, res.mu_right, color="tab:olive", lw=0.8, alpha=0.7,
                             label="mu0 at the right contact")
-        ax.mu_axis.set_ylabel("friction coefficient mu0 [-]")
+        ax.mu_axis.set_ylabel("friction coefficient mu0 [1]")
         ax.mu_axis.set_ylim(0.0, 1.1 * np.max(mus))
         ax.mu_axis.legend(fontsize=8, loc="upper right")
-    ax.set_xlabel("time [s]")
+    if ax_mu is None:
+        ax.set_xlabel("time [s]")
     ax.set_ylabel(f"{mode} force {fx} [N]")
     shown = np.concatenate([force[np.isfinite(force)], limit[np.isfinite(limit)]])
     if shown.size and np.max(shown) > 0:         # the whole curve, also past the limit
         ax.set_ylim(min(0.0, 1.1 * np.min(shown)), 1.1 * np.max(shown))
     ax.legend(fontsize=8, loc="lower right")
     ax.grid(alpha=0.3)
+    if ax_mu is not None:
+        with np.errstate(divide="ignore", invalid="ignore"):
+            mu = force / res.normal_load
+        ax_mu.plot(t, mu, lw=0.8, color="tab:red", label=f"adhesion {fx} / N (N both normal loads)")
+        limits = _adhesion_limits(t, mu)
+        if limits is not None:
+            ax_mu.set_ylim(*limits)
+        for target, start in zip(res.targets, res.target_times):    # which target set it
+            ax_mu.annotate(f"target {target:g}", (start, 0.97), xycoords=("data", "axes fraction"),
+                           fontsize=7, va="top", color="0.3")
+        ax_mu.set_xlabel("time [s]")
+        ax_mu.set_ylabel("adhesion F / N [1]")
+        ax_mu.grid(alpha=0.3)
+        ax_mu.legend(fontsize=8, loc="lower right")
+        ax_mu.set_title(textwrap.fill(friction_law_text(res.params), 125), fontsize=8.5)
+        ax.adhesion_axis = ax_mu
     if title:
         sign = "fx < 0 on the wheel when braking" if sense > 0 else \
             "fx > 0 on the wheel when driving"
