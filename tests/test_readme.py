@@ -38,12 +38,11 @@ EXTRA_MODULES = {
     "scipy": {"fit"},
     "xarray": {"sweep"},
     "pandas": {"sweep"},
-    "tqdm": {"sweep"},
     "dask": {"distributed"},
     "distributed": {"distributed"},
 }
 EXTRA_DISTRIBUTIONS = {"scipy": "scipy", "xarray": "xarray", "pandas": "pandas",
-                       "tqdm": "tqdm", "dask": "dask[distributed]",
+                       "dask": "dask[distributed]",
                        "distributed": "dask[distributed]"}
 EXTRA_NOTE = re.compile(r'"\.\[([\w,]+)\]"')       # ".[sweep]", ".[fit,sweep]"
 
