@@ -122,7 +122,7 @@ def _simulate(args):
         try:
             res = simulate(duration=args.duration, dt=args.dt, params=params,
                            record_every=args.record_every,
-                           progress=not args.quiet and sys.stderr.isatty(), **kw)
+                           progress=None if not args.quiet and sys.stderr.isatty() else False, **kw)
         except RollerRigError as e:
             error = e
     if error is not None:                  # nothing was run: its warnings are moot
@@ -256,7 +256,7 @@ def _exact_table(args):
     try:
         table = build_exact_table(args.shape or DEFAULT_SHAPE, nu=args.nu, nx=args.nx,
                                   workers=args.workers, client=client,
-                                  progress=not args.quiet)
+                                  progress=None if not args.quiet else False)
     except RollerRigError as e:
         print(f"{name}: {_as_option(e, 'build_exact_table: ', {'nx': '--nx'})}",
               file=sys.stderr)

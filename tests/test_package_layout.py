@@ -18,6 +18,7 @@ PKG = pathlib.Path(__file__).resolve().parents[1] / "rollerrig"
 FLOORS = {
     "rollerrig._core": 0, "rollerrig._version": 0, "rollerrig._optional": 0,
     "rollerrig._errors": 0, "rollerrig._binding": 0, "rollerrig._files": 0,
+    "rollerrig._progress": 0,
     "rollerrig.contact": 1, "rollerrig.geometry": 2, "rollerrig.rig": 3, "rollerrig.analysis": 4,
     "rollerrig.capi": 5, "rollerrig.fmu": 5, "rollerrig.plot": 5, "rollerrig.cli": 5,
     # the pictures' package: its files are one room (rollerrig.plot)

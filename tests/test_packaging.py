@@ -50,6 +50,11 @@ BUILD_PRODUCTS = [
     "csrc/build/pic/librollerrig.so.0.1.0",
     "rollerrig/_c/lib/librollerrig.a",
     "rollerrig/_c/lib/pkgconfig/rollerrig.pc",
+    "docs/_build/html/index.html",
+    "docs/api/generated/rollerrig.hertz.rst",
+    "docs/gallery/index.md",
+    "docs/notebooks/rig_scenario.ipynb",
+    "docs/jupyter_execute/x.ipynb",
 ]
 
 

@@ -372,3 +372,31 @@ def test_only_rollerrig_plot_draws():
     assert others == {"cli.py"}
     assert "matplotlib" not in (package / "cli.py").read_text().replace(
         'require("matplotlib", "rollerrig simulate\'s figures", "plot").use("Agg")', "")
+
+
+def test_rig_force_shows_the_adhesion_and_names_the_friction_law(run):
+    """The adhesion panel: F / N on a scale that separates the targets'
+    adhesion (0.37-0.39 in the paper's scenario, a few pixels on the force's
+    0-450 N axis), titled with the law that sets them."""
+    ax = rp.rig_force(run)
+    low = ax.adhesion_axis
+    (line,) = low.get_lines()
+    with np.errstate(divide="ignore", invalid="ignore"):
+        np.testing.assert_allclose(line.get_ydata(), -run.fx / run.normal_load)
+    lo, hi = low.get_ylim()
+    late = run.time > 2.0
+    mu = -run.fx[late] / run.normal_load[late]
+    assert lo <= mu.min() and mu.max() <= hi and hi - lo < 0.1
+    title = low.get_title()
+    assert "Polach's falling friction" in title and "A = 0.4" in title and "B = 0.6 s/m" in title
+    assert [t.get_text() for t in low.texts] == [f"target {x:g}" for x in run.targets]
+    coulomb = dict(run.params, contact=dict(run.params["contact"], friction_law="coulomb"))
+    assert rp.friction_law_text(coulomb) == "Coulomb friction, mu0 = 0.4"
+
+
+def test_rig_force_on_a_given_axes_draws_no_adhesion_panel(run):
+    _, axs = plt.subplots(1, 2)
+    ax = rp.rig_force(run, ax=axs[0])
+    assert not hasattr(ax, "adhesion_axis")
+    with pytest.raises(rr.RollerRigError, match="adhesion=True draws its own two panels"):
+        rp.rig_force(run, ax=axs[1], adhesion=True)

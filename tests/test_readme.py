@@ -1,6 +1,9 @@
-"""README.md's code runs as written.
+"""README.md's code, and the documentation site's guide, run as written.
 
-Its ```python blocks run in order in one namespace, on the `.[test]` install
+The ```python blocks of each page run in order in one namespace (README.md;
+then docs/getting_started.md and the guide's pages, docs/guide/, in the
+guide's order, one namespace for them all: the guide continues from page to
+page), on the `.[test]` install
 the README tells the user to make, from a temporary working folder (nothing is
 written into the checkout), with matplotlib's non-interactive backend.  A block
 that fails names its README line.
@@ -26,6 +29,7 @@ matplotlib = pytest.importorskip("matplotlib")
 matplotlib.use("Agg")
 
 README = Path(ROOT) / "README.md"
+DOCS = Path(ROOT) / "docs"
 CI_SCRIPT = Path(ROOT) / ".ci" / "run"
 
 # Top-level modules that only an extra installs, and the extras that give them
@@ -34,20 +38,20 @@ EXTRA_MODULES = {
     "scipy": {"fit"},
     "xarray": {"sweep"},
     "pandas": {"sweep"},
-    "tqdm": {"sweep"},
     "dask": {"distributed"},
     "distributed": {"distributed"},
 }
 EXTRA_DISTRIBUTIONS = {"scipy": "scipy", "xarray": "xarray", "pandas": "pandas",
-                       "tqdm": "tqdm", "dask": "dask[distributed]",
+                       "dask": "dask[distributed]",
                        "distributed": "dask[distributed]"}
 EXTRA_NOTE = re.compile(r'"\.\[([\w,]+)\]"')       # ".[sweep]", ".[fit,sweep]"
 
 
 class Block:
-    def __init__(self, kind, first_line, lines, heading):
+    def __init__(self, path, kind, first_line, lines, heading):
+        self.path = path                # the page
         self.kind = kind                # the fence's language, e.g. "python"
-        self.first_line = first_line    # README line number of the block's first line
+        self.first_line = first_line    # the page's line number of the block's first line
         self.lines = lines
         self.heading = heading          # the section it sits in
 
@@ -56,17 +60,18 @@ class Block:
         return "\n".join(self.lines)
 
     def __repr__(self):
-        return f"README.md lines {self.first_line}-{self.first_line + len(self.lines) - 1}"
+        return (f"{self.path.relative_to(ROOT)} lines {self.first_line}-"
+                f"{self.first_line + len(self.lines) - 1}")
 
 
-def readme_blocks(kind):
+def page_blocks(path, kind):
     blocks, heading, fence = [], "", None
-    for number, line in enumerate(README.read_text(encoding="utf-8").splitlines(), 1):
+    for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
         if fence is None:
             if line.startswith("#"):
                 heading = line.lstrip("#").strip()
             elif line.startswith("```"):
-                fence = Block(line[3:].strip(), number + 1, [], heading)
+                fence = Block(path, line[3:].strip(), number + 1, [], heading)
         elif line.startswith("```"):
             blocks.append(fence)
             fence = None
@@ -75,42 +80,62 @@ def readme_blocks(kind):
     return [b for b in blocks if b.kind == kind]
 
 
-PYTHON_BLOCKS = readme_blocks("python")
+def readme_blocks(kind):
+    return page_blocks(README, kind)
+
+
+def guide_pages():
+    """docs/getting_started.md, then the guide's pages in its toctree's order."""
+    toc = (DOCS / "guide" / "index.md").read_text(encoding="utf-8")
+    body = toc.split("```{toctree}", 1)[1].split("```", 1)[0]
+    names = [line.strip() for line in body.splitlines()
+             if line.strip() and not line.strip().startswith(":")]
+    return [DOCS / "getting_started.md"] + [DOCS / "guide" / f"{n}.md" for n in names]
+
+
+#: the chains of blocks, each run in order in one namespace
+CHAINS = {"README": readme_blocks("python"),
+          "guide": [b for page in guide_pages() for b in page_blocks(page, "python")]}
+PYTHON_BLOCKS = [b for chain in CHAINS.values() for b in chain]
 
 
 def run_block(block, namespace):
-    """Execute a block in namespace; on failure, say which README line failed."""
-    # padded so that tracebacks count README lines
-    code = compile("\n" * (block.first_line - 1) + block.source, str(README), "exec")
+    """Execute a block in namespace; on failure, say which page line failed."""
+    # padded so that tracebacks count the page's lines
+    code = compile("\n" * (block.first_line - 1) + block.source, str(block.path), "exec")
     try:
         exec(code, namespace)
     except Exception as exc:
         lines = [f.lineno for f in traceback.extract_tb(exc.__traceback__)
-                 if f.filename == str(README)]
+                 if f.filename == str(block.path)]
         where = lines[-1] if lines else block.first_line
         text = block.lines[where - block.first_line].strip()
-        raise AssertionError(f"README.md line {where} ({block.heading!r} block, {block!r}): "
-                             f"{text}\n  {type(exc).__name__}: {exc}") from exc
+        raise AssertionError(f"{block.path.name} line {where} ({block.heading!r} block, "
+                             f"{block!r}): {text}\n  {type(exc).__name__}: {exc}") from exc
 
 
 @pytest.fixture(scope="module")
 def namespaces(tmp_path_factory):
-    """Run every block in order on the full install: the namespace before each."""
+    """Run every chain's blocks in order on the full install: the namespace
+    before each block (in PYTHON_BLOCKS' order)."""
     import matplotlib.pyplot as plt
 
-    workdir = tmp_path_factory.mktemp("readme")
-    before, namespace = [], {"__name__": "__readme__"}
-    with pytest.MonkeyPatch.context() as mp:
-        mp.chdir(workdir)
-        for block in PYTHON_BLOCKS:
-            before.append(dict(namespace))
-            run_block(block, namespace)
-    plt.close("all")
+    before = []
+    for name, chain in CHAINS.items():
+        workdir = tmp_path_factory.mktemp(name)
+        namespace = {"__name__": "__readme__"}
+        with pytest.MonkeyPatch.context() as mp:
+            mp.chdir(workdir)
+            for block in chain:
+                before.append(dict(namespace))
+                run_block(block, namespace)
+        plt.close("all")
     return before
 
 
 def test_readme_has_python_blocks():
-    assert len(PYTHON_BLOCKS) >= 5, PYTHON_BLOCKS
+    assert len(CHAINS["README"]) >= 2, CHAINS["README"]
+    assert len(CHAINS["guide"]) >= 10, CHAINS["guide"]
 
 
 def test_python_blocks_run_in_order(namespaces):
@@ -140,7 +165,7 @@ def setup_cfg():
     return cfg["options"]["install_requires"].split(), extras
 
 
-@pytest.mark.parametrize("index", [pytest.param(i, id=b.heading or f"block{i}")
+@pytest.mark.parametrize("index", [pytest.param(i, id=f"{b.path.stem}:{b.heading or i}")
                                    for i, b in enumerate(PYTHON_BLOCKS)])
 def test_block_names_the_extra_it_needs(index, namespaces, monkeypatch, tmp_path):
     import matplotlib.pyplot as plt
@@ -181,9 +206,9 @@ def test_extras_table_matches_setup_cfg():
 
 def test_shell_commands_are_the_ones_ci_runs():
     """The README's two commands, as written, are lines of .ci/run."""
-    (block,) = readme_blocks("sh")
-    commands = [line.split("#")[0].strip() for line in block.lines if line.strip()]
-    assert len(commands) == 2, commands
+    blocks = readme_blocks("sh")
+    commands = [[line.split("#")[0].strip() for line in b.lines if line.strip()] for b in blocks]
+    assert len(commands[0]) == 2, commands[0]      # the first block: the two set-up commands
     ci_lines = {line.strip() for line in CI_SCRIPT.read_text(encoding="utf-8").splitlines()}
-    for command in commands:
+    for command in (c for block in commands for c in block):   # the docs' command too
         assert command in ci_lines, f".ci/run does not run the README's `{command}`"

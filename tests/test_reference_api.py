@@ -216,3 +216,17 @@ def test_error_map_axes(fastsim):
     with pytest.raises(rr.RollerRigError, match="quantity"):
         rp.error_map(fastsim, ax=ax, spin=0.0, quantity="fz")
     plt.close(fig)
+
+
+def test_the_table_caption_names_the_cases_scored():
+    """The caption comes from the cases, not a fixed text: CONTACT's table
+    or the library's own exact cases."""
+    contact = ref.score("linear")
+    assert contact.table().splitlines()[-1].startswith(
+        "|dF|/(mu N) against CONTACT's exact theory (11 x 11 grid, 3220 cases);")
+    own = ref.score("linear", cases=ref.own_exact_cases(n=4, seed=3, nx=5))
+    last = own.table().splitlines()[-1]
+    assert last.startswith("|dF|/(mu N) against rollerrig's exact theory (Richardson 5/10 "
+                           "across, 4 cases);") and "CONTACT" not in last
+    both = ref.table([contact, own]).splitlines()[-1]
+    assert "CONTACT's" in both and "rollerrig's" in both

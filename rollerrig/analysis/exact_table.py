@@ -284,7 +284,7 @@ def node_values(log_aob, alpha, theta, u, *, nu, nx, r0=R0):
 
 
 def build_exact_table(shape=DEFAULT_SHAPE, *, nu=0.28, nx=27, r0=R0, backend="threads",
-                      workers=None, client=None, progress=True):
+                      workers=None, client=None, progress=None):
     """Build an ExactTable: the exact theory at every node.
 
     The nodes run through :func:`sweep` (on threads, or on a Dask cluster

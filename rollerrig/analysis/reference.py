@@ -114,6 +114,7 @@ class ExactCases(NamedTuple):
     G: float                #: shear modulus [Pa]
     nu: float               #: Poisson's ratio
     source: str             #: the CSV's source line
+    label: str = "exact reference cases"   #: what they are, short: the score tables' caption
 
 
 def _table_header_params(comment):
@@ -176,7 +177,8 @@ def exact_cases():
         Fx=_frozen(col["Fx"]), Fy=_frozen(col["Fy"]), Mz=_frozen(col["Mz"]),
         pct_slip=_frozen(col["pct_slip"]), a_over_b=_frozen(aob),
         spin=_frozen(col["spin_norm"]), angle=_frozen(ang), magnitude=_frozen(mgn),
-        N=N, mu=mu, G=G, nu=nu, source=comment)
+        N=N, mu=mu, G=G, nu=nu, source=comment,
+        label=f"CONTACT's exact theory (11 x 11 grid, {len(aob)} cases)")
 
 
 # --------------------------------------------------------------------------
@@ -282,7 +284,8 @@ def own_exact_cases(n=3000, seed=20261202, nx=27):
         spin=_frozen(spin_class), angle=_frozen(np.arctan2(d["cy"], d["cx"])),
         magnitude=_frozen(d["m"]), N=_frozen(d["N"]), mu=_frozen(d["mu"]), G=d["G"],
         nu=d["nu"], source=f"rollerrig's exact theory, Richardson {nx}/{2 * nx} across, "
-                           f"{n} random cases (seed {seed})")
+                           f"{n} random cases (seed {seed})",
+        label=f"rollerrig's exact theory (Richardson {nx}/{2 * nx} across, {n} cases)")
 
 
 # --------------------------------------------------------------------------
@@ -433,7 +436,8 @@ def table(results, split=True):
     -------
     str
         Columns: median, p95, max of ``|dF|/(mu N)``, the number of cases
-        (n+k!: k cases failed), and median, p95 of ``|dMz|/(mu N cp)``.
+        (n+k!: k cases failed), and median, p95 of ``|dMz|/(mu N cp)``; the
+        caption names the cases scored (ExactCases.label).
     """
     if isinstance(results, ScoreResult):
         results = [results]
@@ -455,7 +459,8 @@ def table(results, split=True):
             n = f"{s['n']}" + (f"+{s['n_failed']}!" if s["n_failed"] else "")
             lines.append(f"{label:<{width}}{name:<10}{s['median']:>9.4f}{s['p95']:>9.4f}"
                          f"{s['max']:>9.4f}{n:>10}{m['median']:>9.4f}{m['p95']:>9.4f}")
-    lines.append("|dF|/(mu N) against CONTACT's exact theory (11 x 11 grid); "
+    against = "; ".join(dict.fromkeys(r.cases.label for r in results))   # the cases' own
+    lines.append(f"|dF|/(mu N) against {against}; "
                  "Mz: |dMz|/(mu N cp)" + (""
                  if not any(r.overall["n_failed"] for r in results)
                  else "; n+k!: k cases failed (NaN), left out"))

@@ -35,8 +35,8 @@ The result is an xarray.Dataset (xarray: extra "sweep"), whichever packages
 are installed; without xarray the sweep raises an ImportError naming the
 extra before it runs.  output="dict" asks for plain numpy instead: the dict
 {"coords", "data", "dims", "units", "attrs", "coord_attrs"} of arrays shaped
-like the grid.  The progress bar needs tqdm (extra "sweep"); without it the
-sweep runs without one, silently.
+like the grid.  The progress bar is rollerrig's one mechanism
+(rollerrig._progress: tqdm, shown once the work passes about a second).
 """
 import copy
 import inspect
@@ -49,6 +49,7 @@ from functools import partial
 
 import numpy as np
 
+from .. import _progress
 from .._errors import RollerRigError, check_status
 from .._optional import require
 from ..contact import creep as contact
@@ -167,8 +168,7 @@ def _check_options(func, backend, workers, client, progress):
         if isinstance(workers, bool) or not isinstance(workers, numbers.Integral) \
                 or workers < 1:
             raise RollerRigError(f"{func}: workers must be an integer >= 1, got {workers!r}")
-    if not isinstance(progress, bool):
-        raise RollerRigError(f"{func}: progress must be True or False, got {progress!r}")
+    _progress.check(func, progress)
     if backend == "threads":
         slots = int(workers) if workers is not None else (os.cpu_count() or 1)
     elif backend == "dask":
@@ -178,26 +178,6 @@ def _check_options(func, backend, workers, client, progress):
     return backend, slots, client
 
 
-def _progress_bar(enabled, total, desc, unit):
-    """A tqdm bar when asked for and tqdm is installed, else a silent stand-in
-    (a missing tqdm only costs the bar, so it is not an error)."""
-    if enabled:
-        try:
-            from tqdm.auto import tqdm
-        except ImportError:
-            pass
-        else:
-            return tqdm(total=total, desc=desc, unit=unit, dynamic_ncols=True)
-
-    class _Silent:
-        def update(self, n):
-            pass
-
-        def close(self):
-            pass
-    return _Silent()
-
-
 def _execute(label, task, items, sizes, describe, store, common, *, backend, slots, client,
              progress, unit):
     """Run task(item, **common) for every item and store(k, result) in this
@@ -205,7 +185,7 @@ def _execute(label, task, items, sizes, describe, store, common, *, backend, slo
     describe(k); Ctrl-C cancels what has not started and raises
     KeyboardInterrupt."""
     n = len(items)
-    bar = _progress_bar(progress, int(sum(sizes)), label, unit)
+    bar = _progress.bar(progress, int(sum(sizes)), label, unit)
     done = 0
 
     def fail(k, exc):
@@ -376,7 +356,7 @@ def _check_output(func, output):
 
 
 def sweep(func, grid, *, chunk=None, backend="threads", workers=None, client=None,
-          progress=True, output="xarray", **fixed):
+          progress=None, output="xarray", **fixed):
     """Evaluate a vectorised function over the Cartesian grid of named axes.
 
     Parameters
@@ -402,9 +382,9 @@ def sweep(func, grid, *, chunk=None, backend="threads", workers=None, client=Non
         Threads of the "threads" backend; default os.cpu_count().
     client : dask.distributed.Client, optional
         The Dask client to run on.
-    progress : bool, optional
-        A tqdm progress bar (when tqdm is installed: extra "sweep"; without
-        it no bar, silently).
+    progress : bool or None, optional
+        None (default): a progress bar once the sweep passes about a
+        second; True: from the start; False: none.
     output : {"xarray", "dict"}, optional
         "xarray" (default; needs xarray, extra "sweep") or "dict" (plain
         numpy, whatever is installed).
@@ -428,7 +408,7 @@ def sweep(func, grid, *, chunk=None, backend="threads", workers=None, client=Non
     RollerRigError
         For a bad axis (not 1-D, empty, not numbers for the library's
         functions), a name given both as an axis and as a fixed argument,
-        a bad backend, workers, client, chunk or output; with
+        a bad backend, workers, client, chunk, progress or output; with
         errors="raise", for a failed case; an exception in a chunk raises
         RollerRigError naming the chunk's index range, the original as its
         cause.
@@ -639,7 +619,7 @@ def _dimension_names(names):
     return tuple(dims)
 
 
-def sweep_rig(grid, *, backend="threads", workers=None, client=None, progress=True,
+def sweep_rig(grid, *, backend="threads", workers=None, client=None, progress=None,
               output="xarray", **simulate_kwargs):
     """Run rr.simulate at every point of a Cartesian grid of rig parameters.
 

@@ -23,7 +23,7 @@ RollerRigError.
 from ._base import TRACTION_QUANTITIES
 from ._curves import creep_curve, creep_curves, traction_field
 from ._maps import error_map, fit
-from ._rig import plot_run, profiles, rig_force, rig_history
+from ._rig import friction_law_text, plot_run, profiles, rig_force, rig_history
 
 __all__ = ["creep_curve", "creep_curves", "traction_field", "rig_history", "rig_force",
            "profiles", "fit", "error_map", "plot_run", "TRACTION_QUANTITIES"]

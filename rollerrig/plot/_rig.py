@@ -1,6 +1,7 @@
 """rollerrig.plot's figures of a rig run (the seed paper's Fig. 7 and 8) and of
 the profiles in contact."""
 import os
+import textwrap
 
 import numpy as np
 
@@ -94,7 +95,56 @@ def rig_history(res, axes=None, *, title=True):
     return np.array([ax1, ax2], dtype=object)
 
 
-def rig_force(res, ax=None, *, title=True):
+def friction_law_text(params):
+    """The friction law of a run's parameters in words, with its values.
+
+    The caption of rig_force's adhesion panel: Polach's falling law or
+    Coulomb, and the adhesion schedule when the run has one.
+
+    Parameters
+    ----------
+    params : dict
+        A run's parameters (RigResult.params: "scenario", "contact",
+        "adhesion").
+
+    Returns
+    -------
+    str
+        E.g. "Coulomb friction, mu0 = 0.4".
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> import rollerrig.plot as rp
+    >>> rp.friction_law_text(rr.default_parameters())[:26]
+    "Polach's falling friction "
+    """
+    scen, contact = params.get("scenario", {}), params.get("contact", {})
+    adhesion = params.get("adhesion", {})
+    mu0 = scen.get("mu0")
+    if contact.get("friction_law", "polach_falling") == "coulomb":
+        text = f"Coulomb friction, mu0 = {mu0:g}"
+    else:
+        text = (f"Polach's falling friction mu(w) = mu0 ((1 - A) exp(-B w) + A), w the slip "
+                f"speed: mu0 = {mu0:g}, A = {contact.get('polach_A'):g}, "
+                f"B = {contact.get('polach_B_s_per_m'):g} s/m")
+    if adhesion.get("schedule_times_s"):
+        text += "; mu0 (and A, B) from the adhesion schedule"
+    return text
+
+
+def _adhesion_limits(t, mu):
+    """A y range that shows the adhesion's differences between targets:
+    the samples after the first tenth of the run (past the start-up), padded."""
+    keep = np.isfinite(mu) & (t >= t[0] + 0.1 * (t[-1] - t[0]))
+    if not np.any(keep):
+        return None
+    lo, hi = np.percentile(mu[keep], [1, 100])
+    pad = max(0.1 * (hi - lo), 0.002)
+    return lo - pad, hi + pad
+
+
+def rig_force(res, ax=None, *, title=True, adhesion=None):
     """The seed paper's Fig. 8: the longitudinal creep force of both wheels against time.
 
     Drawn in the sense the drive works against (braking: -fx, since fx on
@@ -111,20 +161,47 @@ def rig_force(res, ax=None, *, title=True):
         None: a new figure.
     title : bool, optional
         A title naming the force's sense and its limit.
+    adhesion : bool, optional
+        A second panel below, ax.adhesion_axis, with the adhesion
+        coefficient F / N [1] (the force over both normal loads) on a scale
+        that shows the targets' differences, titled with the friction law
+        that sets them (:func:`friction_law_text`).  Default: True when ax
+        is None.
 
     Returns
     -------
     matplotlib.axes.Axes
-        The axes (2 lines), forces in N.
+        The force's axes (2 lines), forces in N.
 
     Raises
     ------
     RollerRigError
-        For res not a RigResult.
+        For res not a RigResult, or adhesion=True with an ax given (the
+        panels are drawn on a figure of their own).
+
+    Examples
+    --------
+    >>> import rollerrig as rr
+    >>> import rollerrig.plot as rp
+    >>> res = rr.simulate(duration=1.0, targets=[0.02], target_times=[0.0], progress=False)
+    >>> ax = rp.rig_force(res)
+    >>> len(ax.lines), ax.adhesion_axis.get_ylabel()
+    (2, 'adhesion F / N [1]')
     """
     func = "rig_force"
     _check_result(func, res)
-    fig, ax, made = _one_axes(func, ax, (8, 3.6))
+    if adhesion is None:
+        adhesion = ax is None
+    if adhesion and ax is None:
+        plt = _pyplot()
+        fig, (ax, ax_mu) = plt.subplots(2, 1, figsize=(8, 6.2), sharex=True,
+                                        gridspec_kw={"height_ratios": [3, 2]})
+        made = True
+    else:
+        fig, ax, made = _one_axes(func, ax, (8, 3.6))
+        ax_mu = None
+        if adhesion:
+            raise RollerRigError(f"{func}: adhesion=True draws its own two panels: pass ax=None")
     sense, mode = _drive_sense(res)
     fx = "-fx" if sense > 0 else "fx"
     t = res.time
@@ -145,16 +222,33 @@ def rig_force(res, ax=None, *, title=True):
         if np.any(res.mu_right != res.mu_left):
             ax.mu_axis.plot(t, res.mu_right, color="tab:olive", lw=0.8, alpha=0.7,
                             label="mu0 at the right contact")
-        ax.mu_axis.set_ylabel("friction coefficient mu0 [-]")
+        ax.mu_axis.set_ylabel("friction coefficient mu0 [1]")
         ax.mu_axis.set_ylim(0.0, 1.1 * np.max(mus))
         ax.mu_axis.legend(fontsize=8, loc="upper right")
-    ax.set_xlabel("time [s]")
+    if ax_mu is None:
+        ax.set_xlabel("time [s]")
     ax.set_ylabel(f"{mode} force {fx} [N]")
     shown = np.concatenate([force[np.isfinite(force)], limit[np.isfinite(limit)]])
     if shown.size and np.max(shown) > 0:         # the whole curve, also past the limit
         ax.set_ylim(min(0.0, 1.1 * np.min(shown)), 1.1 * np.max(shown))
     ax.legend(fontsize=8, loc="lower right")
     ax.grid(alpha=0.3)
+    if ax_mu is not None:
+        with np.errstate(divide="ignore", invalid="ignore"):
+            mu = force / res.normal_load
+        ax_mu.plot(t, mu, lw=0.8, color="tab:red", label=f"adhesion {fx} / N (N both normal loads)")
+        limits = _adhesion_limits(t, mu)
+        if limits is not None:
+            ax_mu.set_ylim(*limits)
+        for target, start in zip(res.targets, res.target_times):    # which target set it
+            ax_mu.annotate(f"target {target:g}", (start, 0.97), xycoords=("data", "axes fraction"),
+                           fontsize=7, va="top", color="0.3")
+        ax_mu.set_xlabel("time [s]")
+        ax_mu.set_ylabel("adhesion F / N [1]")
+        ax_mu.grid(alpha=0.3)
+        ax_mu.legend(fontsize=8, loc="lower right")
+        ax_mu.set_title(textwrap.fill(friction_law_text(res.params), 125), fontsize=8.5)
+        ax.adhesion_axis = ax_mu
     if title:
         sign = "fx < 0 on the wheel when braking" if sense > 0 else \
             "fx > 0 on the wheel when driving"

@@ -27,13 +27,12 @@ caller's: rollerrig.rig.control), sample by sample through the C loop; replay
 feeds a run's kinematics through a contact model (the paper's Fig. 9).
 """
 import math
-import sys
 import time
 import warnings
 
 import numpy as np
 
-from .. import _core
+from .. import _core, _progress
 from . import control as _control
 from .._errors import RollerRigError, RollerRigWarning, status_message
 from .build import _build, _creep_options, _geometry
@@ -173,7 +172,7 @@ def _record_plan(n, dt, record_every, max_record_bytes):
 def simulate(duration=None, dt=None, method=None, params=None, targets=None,
              target_times=None, *, roller_speed=None, start="rolling", nx=None, ny=None,
              substeps=None, ode=None, record_every=1, max_record_bytes=RECORD_BYTES_CAP,
-             progress=False, controller=None, **creep):
+             progress=None, controller=None, **creep):
     """Run the rig: by default the seed paper's scenario on the default parameters.
 
     duration:  simulated time [s], at least one sample and at most 1e5 s
@@ -221,7 +220,8 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     max_record_bytes: cap on the records' memory (default RECORD_BYTES_CAP,
                1 GiB: 232 bytes per kept sample); a run over it is refused
                before it starts, with the record_every that would fit
-    progress:  print a progress bar on stderr
+    progress:  None (default): a progress bar on stderr once the run passes
+               about a second; True: from the start; False: none
     controller: None (the rig's own controllers), or a callable called at
                each control sample with what a real controller sees
                (rollerrig.rig.control.RigSignals: time, encoder counts, angles
@@ -248,6 +248,7 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     saying how many.
     """
     t0 = time.perf_counter()
+    _progress.check("simulate", progress)
     if controller is not None and not callable(controller):
         raise RollerRigError(f"simulate: controller must be a callable (signals -> dict of "
                              f"references), got {_short(controller)}")
@@ -296,8 +297,6 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     else:
         out, stepped, status, worst, warned = _run_builtin(
             rig, P, duration, dt, targets, target_times, V, n, record_every, out, progress)
-    if progress:
-        sys.stderr.write("\n")
     status = status if status < 0 else worst
     if status == 0:
         message = "ok"
@@ -315,18 +314,20 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     return result(out, status, message, stepped)
 
 
-def _progress(done):
-    sys.stderr.write(f"\rsimulate [{'#' * int(40 * done):<40}] {100 * done:5.1f} %")
-    sys.stderr.flush()
-
-
 def _run_builtin(rig, P, duration, dt, targets, target_times, V, n, record_every, out,
                  progress):
     """simulate's samples on the rig's own controllers, in chunks through
     the C loop.  Returns (records kept, samples stepped, the run's status,
     the worst sample status, samples warned)."""
     # about 50 steps of the progress bar; without one, as few calls as the bound allows
-    chunk = max(1, min(n // 50 if progress else n, _CHUNK_SAMPLES))
+    chunk = max(1, min(n // 50 if progress is not False else n, _CHUNK_SAMPLES))
+    with _progress.bar(progress, n, "simulate", "sample") as bar:
+        return _builtin_chunks(rig, P, duration, dt, targets, target_times, V, n,
+                               record_every, out, chunk, bar)
+
+
+def _builtin_chunks(rig, P, duration, dt, targets, target_times, V, n, record_every, out,
+                    chunk, bar):
     stepped, worst, warned, status = 0, 0, 0, 0
     for first in range(0, n, chunk):
         stop = min(n, first + chunk)
@@ -350,8 +351,7 @@ def _run_builtin(rig, P, duration, dt, targets, target_times, V, n, record_every
         if len(rec):
             worst = max(worst, status, int(np.max(rec[:, -1])))
             warned += int(np.count_nonzero(rec[:, -1] > 0))
-        if progress:
-            _progress(stop / n)
+        bar.update(stop - first)
         if status < 0:
             out = out[:stepped // record_every]
             break
@@ -388,7 +388,16 @@ def _run_controlled(rig, controller, P, duration, dt, targets, target_times, V, 
         except Exception as exc:
             fail(0, 0.0, f"its start(info) raised {type(exc).__name__}: "
                  f"{_control.safe_repr(exc, str)}", _core.ERR_CONTROLLER, exc)
-    chunk = max(1, min(n // 50 if progress else n, _CHUNK_SAMPLES))
+    chunk = max(1, min(n // 50 if progress is not False else n, _CHUNK_SAMPLES))
+    with _progress.bar(progress, n, "simulate", "sample") as bar:
+        return _controlled_chunks(rig, controller, P, duration, dt, targets, target_times, V,
+                                  n, record_every, out, chunk, bar, fail)
+
+
+def _controlled_chunks(rig, controller, P, duration, dt, targets, target_times, V, n,
+                       record_every, out, chunk, bar, fail):
+    core = rig._core
+    stepped, worst, warned, status = 0, 0, 0, 0
     for first in range(0, n, chunk):
         stop = min(n, first + chunk)
         roller_ref, xi_ref = schedule(P, duration, dt, targets, target_times, V, first, stop)
@@ -423,8 +432,7 @@ def _run_controlled(rig, controller, P, duration, dt, targets, target_times, V, 
             warned += status > 0
             if stepped % record_every == 0:
                 out[stepped // record_every - 1] = rec
-        if progress:
-            _progress(stop / n)
+        bar.update(stop - first)
         if status < 0:
             out = out[:stepped // record_every]
             break
