@@ -159,6 +159,18 @@ def test_same(rr_regression):
     run.stdout.fnmatch_lines(["*reference one is already checked in this test*"])
 
 
+def test_a_basename_with_a_folder_is_refused(pytester):
+    pytester.makepyfile(test_names="""
+import pytest
+@pytest.mark.parametrize("name", ["../up", "a/b", "", "..", 3])
+def test_name(rr_regression, name):
+    with pytest.raises(ValueError, match="basename must be a file name without a folder"):
+        rr_regression.check({"a": [1.0]}, name)
+""")
+    pytester.runpytest("-p", "no:cacheprovider").assert_outcomes(passed=5)
+    assert not (pytester.path / "test_names").exists() and not (pytester.path / "up.npz").exists()
+
+
 def test_the_plugin_loads_without_importing_rollerrig(pytester):
     """pytest loads the plugin before any conftest: it must not import
     rollerrig then (a checkout's rollerrig/ may lack the extension)."""

@@ -21,6 +21,7 @@ import re
 
 import pytest
 
+from .._errors import RollerRigError
 from . import _assert
 from ._compare import DEFAULT_ATOL, DEFAULT_RTOL
 from ._store import read_reference, write_reference
@@ -41,6 +42,10 @@ class Regression:
 
     def reference_path(self, basename=None):
         """The reference's path without its suffix (.npz, .csv)."""
+        if basename is not None and (not isinstance(basename, str) or not basename.strip(".")
+                                     or re.search(r"[/\\\0]", basename)):
+            raise RollerRigError(f"basename must be a file name without a folder (it names the "
+                             f"reference in {self.folder}), got {basename!r}")
         name = basename or re.sub(r"[^\w.-]+", "_", self._request.node.name).strip("_")
         return os.path.join(self.folder, name)
 
@@ -60,7 +65,7 @@ class Regression:
         _compare.field_tolerances(func, list(fields), rtol, atol, tolerances)
         base = self.reference_path(basename)
         if base in self._used:
-            raise ValueError(f"{func}: reference {os.path.basename(base)} is already checked "
+            raise RollerRigError(f"{func}: reference {os.path.basename(base)} is already checked "
                              f"in this test: give each check its own basename")
         self._used.add(base)
         rel = os.path.relpath(base, os.getcwd())
