@@ -125,9 +125,9 @@ class RigResult:
                 "scenario": scenario.get("path", "none: the default parameters")}
         if "sha256" in scenario:
             meta["scenario_sha256"] = scenario["sha256"]
+        changed = _changed(default_parameters(), self.params)
         meta["changed_from_defaults"] = "; ".join(
-            f"{k} = {json.dumps(v, default=str)}" for k, v in _changed(default_parameters(), self.params)
-        ) or "none"
+            f"{k} = {json.dumps(v, default=str)}" for k, v in changed) or "none"
         meta.update({"targets": json.dumps([float(x) for x in self.targets]),
                      "target_times_s": json.dumps([float(x) for x in self.target_times]),
                      "duration_s": repr(float(self.duration)),
@@ -163,7 +163,8 @@ class RigResult:
             return {"units": RECORD_UNITS[name], "long_name": _RECORD_MEANING[name]}
         meta = self.metadata()
         del meta["targets"], meta["target_times_s"]           # as arrays below
-        meta.update({"duration_s": float(self.duration), "dt": float(self.dt), "dt_units": "s", "record_every": int(self.record_every),
+        meta.update({"duration_s": float(self.duration), "dt": float(self.dt), "dt_units": "s",
+                     "record_every": int(self.record_every),
                      "status": int(self.status)})
         return xr.Dataset(
             {name: ("time", getattr(self, name), attrs(name)) for name in RECORD_FIELDS[1:]},

@@ -85,7 +85,8 @@ def creep_curve_fields(creepage, forces, creepage_name="creepage"):
                              f"array, got {type(forces).__name__}")
     fields = {creepage_name: np.asarray(creepage)}
     fields.update({str(k): np.asarray(v) for k, v in forces.items()})
-    units = {creepage_name: "1", **{k: CREEP_UNITS.get(k, "") for k in fields if k != creepage_name}}
+    units = {k: CREEP_UNITS.get(k, "") for k in fields}
+    units[creepage_name] = "1"
     return fields, units
 
 
