@@ -23,6 +23,35 @@ def pytest_addoption(parser):
                          "saying so)")
 
 
+# a check that writes a reference lets the test go on, so that all its
+# references are written in one run, and the test fails at its end.  That
+# needs pluggy's new-style wrappers (pluggy >= 1.1, any pytest >= 8); with an
+# older pluggy the hook is not defined and a check that writes fails at once
+_WRITTEN = "_rollerrig_written"          # rollerrig.testing._fixtures.WRITTEN_ATTR
+
+
+def _pluggy_version():
+    import pluggy
+    try:
+        return tuple(int(p) for p in pluggy.__version__.split(".")[:2])
+    except (AttributeError, ValueError):
+        return (0, 0)
+
+
+if _pluggy_version() >= (1, 1):
+    @pytest.hookimpl(wrapper=True)
+    def pytest_runtest_call(item):
+        setattr(item, _WRITTEN, [])
+        try:
+            result = yield               # the test's own failure comes first
+            written = getattr(item, _WRITTEN)
+            if written:
+                pytest.fail("\n".join(written), pytrace=False)
+            return result
+        finally:
+            delattr(item, _WRITTEN)
+
+
 def _make(kind, request, tmp_path):
     from rollerrig.testing import _fixtures
     return getattr(_fixtures, kind)(request, tmp_path, request.config.getoption("--rr-regen"))

@@ -151,9 +151,11 @@ def test_same(rr_regression):
     rr_regression.check({"a": [1.0]}, "one")
     rr_regression.check({"a": [1.0]}, "one")
 """)
-    for written in ("one", "two"):        # a first write fails: one reference a run
-        pytester.runpytest("-p", "no:cacheprovider", "-k", "test_two").stdout.fnmatch_lines(
-            [f"*no reference yet: wrote it (1 fields): test_checks/{written}.npz*"])
+    # the first run writes both references, then fails naming both
+    first = pytester.runpytest("-p", "no:cacheprovider", "-k", "test_two")
+    first.assert_outcomes(failed=1)
+    first.stdout.fnmatch_lines(["*no reference yet: wrote it (1 fields): test_checks/one.npz*",
+                                "*no reference yet: wrote it (1 fields): test_checks/two.npz*"])
     pytester.runpytest("-p", "no:cacheprovider", "-k", "test_two").assert_outcomes(passed=1)
     run = pytester.runpytest("-p", "no:cacheprovider", "-k", "test_same")
     run.stdout.fnmatch_lines(["*reference one is already checked in this test*"])
@@ -169,6 +171,18 @@ def test_name(rr_regression, name):
 """)
     pytester.runpytest("-p", "no:cacheprovider").assert_outcomes(passed=5)
     assert not (pytester.path / "test_names").exists() and not (pytester.path / "up.npz").exists()
+
+
+def test_a_test_that_fails_after_writing_shows_its_own_failure(pytester):
+    pytester.makepyfile(test_own="""
+def test_own(rr_regression):
+    rr_regression.check({"a": [1.0]})
+    assert 1 == 2, "the test's own assertion"
+""")
+    run = pytester.runpytest("-p", "no:cacheprovider")
+    run.assert_outcomes(failed=1)
+    run.stdout.fnmatch_lines(["*the test's own assertion*"])
+    assert (pytester.path / "test_own" / "test_own.npz").exists()
 
 
 def test_the_plugin_loads_without_importing_rollerrig(pytester):

@@ -5,7 +5,8 @@ a creep curve.
 A reference lives in a folder named as the test module, beside it (the
 convention of pytest-regressions' datadir): tests/test_rig.py's
 test_paper -> tests/test_rig/test_paper.npz and .csv.  check():
-  - no reference yet: writes it and FAILS, saying what it wrote.  A first
+  - no reference yet: writes it, and the test FAILS at its end (after its
+    other checks have written theirs), saying what it wrote.  A first
     run that passed would let a CI job whose reference was never committed
     pass on every fresh clone without checking anything; failing makes the
     writer look at the new file and commit it (pytest-regressions does the
@@ -13,8 +14,8 @@ test_paper -> tests/test_rig/test_paper.npz and .csv.  check():
   - a reference: compares; a failure names each differing field (first and
     worst deviation, values on both sides), and leaves this run's data and
     a comparison figure in the test's tmp_path, named in the message;
-  - --rr-regen: rewrites the reference and fails, saying so (so a run with
-    the flag never passes for a check).
+  - --rr-regen: rewrites the reference and the test fails at its end,
+    saying so (so a run with the flag never passes for a check).
 """
 import os
 import re
@@ -27,6 +28,8 @@ from ._compare import DEFAULT_ATOL, DEFAULT_RTOL
 from ._store import read_reference, write_reference
 
 REGEN_OPTION = "--rr-regen"
+#: the test item's list of references written in its run (the plugin's)
+WRITTEN_ATTR = "_rollerrig_written"
 
 
 class Regression:
@@ -76,9 +79,15 @@ class Regression:
                    "no reference yet: wrote it")
             then = ("run without the flag to compare against it" if self._regen else
                     "look at it, commit both files; the next run compares against them")
-            pytest.fail(f"{func}: {why} ({len(fields)} fields): {os.path.relpath(npz)} (for "
-                        f"the comparison), {os.path.relpath(csv_path)} (to read); {then}",
-                        pytrace=False)
+            message = (f"{func}: {why} ({len(fields)} fields): {os.path.relpath(npz)} (for "
+                       f"the comparison), {os.path.relpath(csv_path)} (to read); {then}")
+            # the test goes on (its other checks write theirs too) and fails
+            # at its end: the plugin's pytest_runtest_call (_rollerrig_pytest)
+            written = getattr(self._request.node, WRITTEN_ATTR, None)
+            if written is None:                    # the fixture used without the plugin
+                pytest.fail(message, pytrace=False)
+            written.append(message)
+            return
         ref, record = stored
         units = {**record.get("units", {}), **units}
         name = os.path.basename(base)
