@@ -125,6 +125,9 @@ def _simulate(args):
                            progress=None if not args.quiet and sys.stderr.isatty() else False, **kw)
         except RollerRigError as e:
             error = e
+        if res is not None and args.scenario is not None:
+            from .rig.result import scenario_record
+            res.scenario = scenario_record(args.scenario)  # for the CSV's header
     if error is not None:                  # nothing was run: its warnings are moot
         _unmake(args.out, made)
         print(f"{PROG}: {_as_option(error)}", file=sys.stderr)

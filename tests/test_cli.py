@@ -1,5 +1,6 @@
 """The command line: rollerrig simulate."""
 import csv
+import hashlib
 import os
 
 import pytest
@@ -21,8 +22,17 @@ def test_simulate_writes_table_csv_and_figures(tmp_path, capsys):
     for name in ("rig_history.csv", "rig_creepage.png", "rig_force.png"):
         assert os.path.getsize(out / name) > 1000
     with open(out / "rig_history.csv") as fh:
-        rows = list(csv.reader(fh))
+        lines = fh.readlines()
+    rows = list(csv.reader(line for line in lines if not line.startswith("#")))
     assert tuple(rows[0]) == rig.RECORD_FIELDS and len(rows) == 1 + 500
+    # the header's record of the run: the scenario file, its hash, what it changed
+    header = dict(line[2:].strip().split(": ", 1) for line in lines if line.startswith("#"))
+    assert header["scenario"] == str(scenario)
+    assert header["scenario_sha256"] == hashlib.sha256(scenario.read_bytes()).hexdigest()
+    assert header["changed_from_defaults"] == (
+        "scenario.duration_s = 2.0; scenario.mu0 = 0.35; scenario.target_start_s = [0.0]; "
+        "scenario.targets = [0.03]")
+    assert header["method"] == "fastsim" and header["units"].startswith("s,1,1,1,m/s,")
 
 
 def test_bad_scenario_gives_a_message_not_a_traceback(tmp_path, capsys):
@@ -116,7 +126,7 @@ def test_record_every_and_a_short_run(tmp_path, capsys):
     assert code == 0
     assert "one sample in 4 recorded" in out
     with open(tmp_path / "rig_history.csv") as fh:
-        assert len(list(csv.reader(fh))) == 1 + 25
+        assert len([line for line in fh if not line.startswith("#")]) == 1 + 25
     code, out, err = run_cli(capsys, "--duration", "0.001", "--out", str(tmp_path))
     assert code == 2 and "duration = 0.001 s is shorter than one sample (scenario.control_sample_time_s = 0.004 s)" in err
     assert cli.main(["simulate", "--record-every", "0"]) == 2

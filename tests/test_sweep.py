@@ -116,7 +116,7 @@ def test_dataset_has_named_dims_coords_and_units():
         assert np.array_equal(ds[name].values, axis)
     assert ds.fx.dims == ("cx", "N", "mu") and ds.status.dtype == np.int8
     units = {n: ds[n].attrs.get("units") for n in ("cx", "N", "mu", "fx", "fy", "mz")}
-    assert units == {"cx": "-", "N": "N", "mu": "-", "fx": "N", "fy": "N", "mz": "N m"}
+    assert units == {"cx": "1", "N": "N", "mu": "1", "fx": "N", "fy": "N", "mz": "N m"}
     assert ds.attrs["function"] == "creep_forces" and ds.attrs["a"] == 4e-3
     assert ds.attrs["method"] == "fastsim"
     # selection by value works: fx at cx = 0.01, N = 500, mu = 0.3 is that call's
@@ -138,7 +138,7 @@ def test_one_unit_per_name_friction_and_curvature():
     assert np.array_equal(out["data"]["fx"], one.fx)
     out = sweep("creep_forces", {"friction.A": [0.4, 1.0]}, output="dict", progress=False,
                 **fixed)
-    assert out["units"]["friction.A"] == "-"
+    assert out["units"]["friction.A"] == "1"
     assert np.array_equal(out["data"]["fx"], rr.creep_forces(
         **fixed, friction=rr.FallingFriction(A=np.array([0.4, 1.0]))).fx)
     out = sweep("hertz", {"A": [0.5, 0.8], "B": [0.2, 0.3]}, output="dict", progress=False,
@@ -153,7 +153,7 @@ def test_one_unit_per_name_friction_and_curvature():
     ds = sweep_rig({"contact.polach_A": [0.4], "contact.polach_B_s_per_m": [0.6]},
                    duration=0.1, targets=[0.02], backend="serial", progress=False,
                    output="dict")
-    assert ds["units"]["polach_A"] == "-" and ds["units"]["polach_B_s_per_m"] == "s/m"
+    assert ds["units"]["polach_A"] == "1" and ds["units"]["polach_B_s_per_m"] == "s/m"
     # the friction axes are creep_forces' and set a FallingFriction only
     with pytest.raises(rr.RollerRigError, match=r"\['friction.B'\] are creep_forces' "
                                                 r"friction law; hertz has none"):
@@ -223,7 +223,7 @@ def test_sweep_rig_over_mu0():
     # a dotted path's dimension is its last part, usable as a keyword
     for m in metrics:
         assert ds[m].dims == ("mu0", "target") and ds[m].attrs["long_name"]
-    assert ds.mu0.attrs == {"units": "-", "parameter": "scenario.mu0"}
+    assert ds.mu0.attrs == {"units": "1", "parameter": "scenario.mu0"}
     assert list(ds.target.values) == [0.01, 0.02]
     assert ds.status.dtype == np.int8 and list(ds.status.values) == [
         rr.simulate(duration=1.0, targets=[0.01, 0.02], params={"scenario": {"mu0": m}}).status

@@ -68,6 +68,7 @@ import numpy as np
 
 from .._errors import RollerRigError
 from .._optional import require
+from .._units import cf_unit
 from ..contact.creep import METHODS, FallingFriction, creep_forces
 
 __all__ = ["FitResult", "fit_polach", "fit_modified_fastsim", "POLACH_PARAMETERS",
@@ -103,10 +104,10 @@ POLACH_PARAMETERS = _method_parameters("polach", kA=1.0, kS=0.4)
 #: and Cole 2013 as in CONTACT's example: k0 0.54, alpha_inf 0.02, beta 0.62
 MODIFIED_FASTSIM_PARAMETERS = _method_parameters("modified_fastsim", k0=0.54, alpha_inf=0.02,
                                                  beta=0.62)
-#: units of the fitted parameters ("-": dimensionless); A, B are the falling
-#: friction law's (FallingFriction; creep_forces' friction.A, friction.B)
-PARAMETER_UNITS = {"mu0": "-", "A": "-", "B": "s/m",
-                   **{n: METHODS[m].options[n].unit or "-" for m, P in
+#: units of the fitted parameters (CF / UDUNITS, "1": dimensionless); A, B are
+#: the falling friction law's (FallingFriction; creep_forces' friction.A, friction.B)
+PARAMETER_UNITS = {"mu0": "1", "A": "1", "B": "s/m",
+                   **{n: cf_unit(METHODS[m].options[n].unit) or "1" for m, P in
                       (("polach", POLACH_PARAMETERS),
                        ("modified_fastsim", MODIFIED_FASTSIM_PARAMETERS))
                       for n in P if n not in _FRICTION_PARAMETERS}}

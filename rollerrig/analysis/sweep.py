@@ -52,6 +52,7 @@ import numpy as np
 from .. import _progress
 from .._errors import RollerRigError, check_status
 from .._optional import require
+from .._units import DIMENSIONLESS, cf_unit
 from ..contact import creep as contact
 from ..rig.build import CREEP_OPTIONS
 from ..rig.params import (PARAMETERS, _parameter_problems, _retired, check_parameters,
@@ -65,23 +66,23 @@ FUNCTIONS = {"creep_forces": contact.creep_forces, "hertz": contact.hertz,
              "kalker_coefficients": contact.kalker_coefficients}
 
 #: units of the names that mean one thing across the library (inputs and
-#: outputs), for the Dataset's attrs; "-" is dimensionless.  Polach's
-#: friction law is friction.A [-] and friction.B [s/m] (a sweep axis of
+#: outputs), for the Dataset's attrs; CF / UDUNITS, "1" is dimensionless.  Polach's
+#: friction law is friction.A [1] and friction.B [s/m] (a sweep axis of
 #: creep_forces, the names of its messages)
 UNITS = {
-    "cx": "-", "cy": "-", "cphi": "rad/m", "a": "m", "b": "m", "N": "N", "mu": "-",
-    "G": "Pa", "nu": "-", "speed": "m/s", "fx": "N", "fy": "N", "mz": "N m",
-    "friction.A": "-", "friction.B": "s/m",
-    "E": "Pa", "E2": "Pa", "nu2": "-", "p0": "Pa", "delta": "m",
-    "a_over_b": "-", "c11": "-", "c22": "-", "c23": "-", "c33": "-",
-    "k0": "-", "alpha_inf": "-", "beta": "-", "kA": "-", "kS": "-",
+    "cx": "1", "cy": "1", "cphi": "rad/m", "a": "m", "b": "m", "N": "N", "mu": "1",
+    "G": "Pa", "nu": "1", "speed": "m/s", "fx": "N", "fy": "N", "mz": "N m",
+    "friction.A": "1", "friction.B": "s/m",
+    "E": "Pa", "E2": "Pa", "nu2": "1", "p0": "Pa", "delta": "m",
+    "a_over_b": "1", "c11": "1", "c22": "1", "c23": "1", "c33": "1",
+    "k0": "1", "alpha_inf": "1", "beta": "1", "kA": "1", "kS": "1",
     # sweep_rig: simulate's arguments, the summary metrics (a parameter path's
     # unit is its declaration's, rollerrig.rig.PARAMETERS)
-    "duration": "s", "dt": "s", "roller_speed": "m/s", "nx": "-", "ny": "-",
-    "substeps": "-", "target": "-", "reached": "-", "settling_s": "s", "adhesion": "-",
-    "peak_force_over_muN": "-", "alpha": "-",
+    "duration": "s", "dt": "s", "roller_speed": "m/s", "nx": "1", "ny": "1",
+    "substeps": "1", "target": "1", "reached": "1", "settling_s": "s", "adhesion": "1",
+    "peak_force_over_muN": "1", "alpha": "1",
 }
-_PARAMETER_UNITS = {p.name: p.unit or "-" for p in PARAMETERS}
+_PARAMETER_UNITS = {p.name: cf_unit(p.unit) or DIMENSIONLESS for p in PARAMETERS}
 
 #: names whose meaning is the function's: hertz's A, B are its curvature sums
 FUNCTION_UNITS = {"hertz": {"A": "1/m", "B": "1/m"}}

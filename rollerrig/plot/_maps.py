@@ -220,7 +220,7 @@ def fit(result, cx, force, ax=None, *, mu=None, N=None, residuals=False, label=N
         fig, main, made = _one_axes(func, ax, (6.4, 4.2))
     xs = _xscale(allc, xscale)
     p = result.params
-    shown = ", ".join(f"{k} {p[k]:.3g}" + ("" if PARAMETER_UNITS[k] == "-" else
+    shown = ", ".join(f"{k} {p[k]:.3g}" + ("" if PARAMETER_UNITS[k] == "1" else
                                           f" {PARAMETER_UNITS[k]}") for k in result.fitted)
     for k, (c, f, v) in enumerate(zip(cxs, fs, speeds)):
         colour = f"C{k % 10}"

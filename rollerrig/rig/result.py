@@ -8,13 +8,14 @@ import numpy as np
 
 from .. import _core
 from .._optional import require
+from .._units import cf_unit
 
 
 #: the per-sample record of the C rig (csrc/rig/rr_rig_params.c, in the order of
 #: enum rr_rig_record_index): (name, unit, meaning); each sample is recorded at its end
-RECORD = tuple((name, unit, meaning) for name, _, unit, meaning in _core.RIG_RECORD)
+RECORD = tuple((name, cf_unit(unit), meaning) for name, _, unit, meaning in _core.RIG_RECORD)
 RECORD_FIELDS = tuple(name for name, _, _ in RECORD)
-#: the unit of each record field ("-": dimensionless)
+#: the unit of each record field, CF / UDUNITS ("1": dimensionless)
 RECORD_UNITS = {name: unit for name, unit, _ in RECORD}
 _RECORD_MEANING = {name: meaning for name, _, meaning in RECORD}
 
@@ -26,11 +27,11 @@ class RigResult:
     records:      float array (samples kept, len(RECORD_FIELDS)), one row
                   per kept control sample, recorded at the sample's end;
                   each column is also an attribute: res.time [s],
-                  res.creepage [-], res.fx [N], ... (RECORD_FIELDS, units in
+                  res.creepage [1], res.fx [N], ... (RECORD_FIELDS, units in
                   RECORD_UNITS; res.sample_status as int8), and
                   res.normal_load = left + right [N]
     params:       the merged parameters (nested dict of rig_default.toml)
-    targets:      the creepage targets [-] (magnitudes, in the drive's sense)
+    targets:      the creepage targets [1] (magnitudes, in the drive's sense)
     target_times: their start times [s]
     dt:           control sample time [s]
     status:       0 the run finished; > 0 it finished but some samples
@@ -55,6 +56,9 @@ class RigResult:
                   the kept samples are k record_every dt apart
     method:       the creep-force method of the run
     samples:      control samples stepped (default: len(records) * record_every)
+    scenario:     the scenario file the parameters were read from, if any:
+                  {"path": ..., "sha256": ...} (simulate(params=path) and
+                  `rollerrig simulate --scenario` set it); None otherwise
     """
 
     records: np.ndarray
@@ -68,6 +72,7 @@ class RigResult:
     record_every: int = 1
     method: str = None
     samples: int = None
+    scenario: dict = None
 
     def __getattr__(self, name):
         if name in RECORD_FIELDS:
@@ -104,54 +109,95 @@ class RigResult:
     def __len__(self):
         return self.records.shape[0]
 
+    def metadata(self):
+        """The run's record, as to_csv's header, to_xarray's and
+        to_dataframe's attrs carry it: "rollerrig" (the library's version),
+        "method", "scenario" (the file, or "none: the default parameters"),
+        "scenario_sha256" (if a file), "changed_from_defaults" (the
+        parameters that differ from rig_default.toml, "section.key = value;
+        ..."), "targets", "target_times_s", "duration_s", "dt" [s],
+        "record_every", "status", "message": all text."""
+        from .._version import __version__
+        from .params import default_parameters
+        method = self.method or self.params.get("contact", {}).get("creep_method")
+        scenario = self.scenario or {}
+        meta = {"rollerrig": __version__, "method": str(method),
+                "scenario": scenario.get("path", "none: the default parameters")}
+        if "sha256" in scenario:
+            meta["scenario_sha256"] = scenario["sha256"]
+        changed = _changed(default_parameters(), self.params)
+        meta["changed_from_defaults"] = "; ".join(
+            f"{k} = {json.dumps(v, default=str)}" for k, v in changed) or "none"
+        meta.update({"targets": json.dumps([float(x) for x in self.targets]),
+                     "target_times_s": json.dumps([float(x) for x in self.target_times]),
+                     "duration_s": repr(float(self.duration)),
+                     "dt": repr(float(self.dt)), "record_every": str(int(self.record_every)),
+                     "status": str(int(self.status)), "message": str(self.message)})
+        return meta
+
     def to_dataframe(self):
         """The records as a pandas DataFrame, one column per RECORD_FIELDS
-        entry (units in RECORD_UNITS).  Needs pandas (extra "sweep")."""
+        entry; DataFrame.attrs["units"] {column: unit} (CF / UDUNITS, "1"
+        dimensionless, as RECORD_UNITS), attrs["long_names"] their meanings
+        and the run's metadata() in the other attrs.  (pandas keeps attrs
+        through most operations, not all: copy them where it matters.)
+        Needs pandas (extra "sweep")."""
         pd = require("pandas", "RigResult.to_dataframe", "sweep")
-        return pd.DataFrame({name: getattr(self, name) for name in RECORD_FIELDS})
+        frame = pd.DataFrame({name: getattr(self, name) for name in RECORD_FIELDS})
+        frame.attrs.update(self.metadata())
+        frame.attrs["units"] = dict(RECORD_UNITS)
+        frame.attrs["long_names"] = dict(_RECORD_MEANING)
+        return frame
 
     def to_xarray(self):
         """The records as an xarray.Dataset: dimension "time" [s], one
-        variable per record field with its unit and meaning in attrs
-        ("units", "long_name"); the Dataset's attrs hold the targets, their
-        start times, dt, record_every, method, status, message and the
-        parameters (as JSON, key "params").  Needs xarray (extra "sweep")."""
+        variable per record field with its unit (CF / UDUNITS) and meaning
+        in attrs ("units", "long_name"); the Dataset's attrs hold the
+        targets, their start times, the run's metadata() (version, method,
+        scenario file and hash, parameters changed from the defaults, dt,
+        record_every, status, message) and the parameters (as JSON, key
+        "params").  Needs xarray (extra "sweep")."""
         xr = require("xarray", "RigResult.to_xarray", "sweep")
 
         def attrs(name):
             return {"units": RECORD_UNITS[name], "long_name": _RECORD_MEANING[name]}
-        method = self.method or self.params.get("contact", {}).get("creep_method")
+        meta = self.metadata()
+        del meta["targets"], meta["target_times_s"]           # as arrays below
+        meta.update({"duration_s": float(self.duration), "dt": float(self.dt), "dt_units": "s",
+                     "record_every": int(self.record_every),
+                     "status": int(self.status)})
         return xr.Dataset(
             {name: ("time", getattr(self, name), attrs(name)) for name in RECORD_FIELDS[1:]},
             coords={"time": ("time", self.time, attrs("time"))},
-            attrs={"targets": np.asarray(self.targets, dtype=float),
+            attrs={"targets": np.asarray(self.targets, dtype=float), "targets_units": "1",
                    "target_times": np.asarray(self.target_times, dtype=float),
-                   "target_times_units": "s", "dt": float(self.dt), "dt_units": "s",
-                   "record_every": int(self.record_every), "method": str(method),
-                   "status": int(self.status), "message": str(self.message),
-                   "params": json.dumps(self.params)})
+                   "target_times_units": "s", **meta, "params": json.dumps(self.params)})
 
     def to_csv(self, path):
-        """Write the records as CSV (a header of RECORD_FIELDS, one row per
-        kept sample) to `path`: a new path or a regular file, replaced
-        whole (never a symbolic link, a device or a FIFO: RollerRigError
-        naming the path).  Returns the path."""
-        import csv
+        """Write the records as CSV to `path`: the RECORD_FIELDS names, then
+        '#' lines (the units, one per column, CF / UDUNITS; the run's
+        metadata(): version, method, scenario file and sha256, parameters
+        changed from the defaults, ...), then one row per kept sample, each
+        value the shortest text that reads back as the same double.
+        `pandas.read_csv(path, comment="#")`, `numpy.genfromtxt(path,
+        delimiter=",", names=True)` read it; rollerrig._csv.read_table
+        gives the header too.  `path`: a new path or a regular file,
+        replaced whole (never a symbolic link, a device or a FIFO:
+        RollerRigError naming the path).  Returns the path."""
+        from .._csv import write_table
         from .._files import write_file
-
-        def write(fh):
-            w = csv.writer(fh)
-            w.writerow(RECORD_FIELDS)
-            w.writerows(self.records.tolist())
-        return write_file(path, write, what="RigResult.to_csv: path")
+        meta = list(self.metadata().items())
+        return write_file(path, lambda fh: write_table(fh, RECORD_FIELDS, self.records.tolist(),
+                                                        RECORD_UNITS, meta),
+                          what="RigResult.to_csv: path")
 
     def summary(self, tol=0.05, window=0.25):
         """Per target, a dict: "target"; "reached", the creepage held (mean
-        over the last 80 % of its interval) [-]; "settling_s", the settling
+        over the last 80 % of its interval) [1]; "settling_s", the settling
         time [s] (when the creepage's running mean over `window` seconds
         first comes within tol of the target; eq. 14's recovery steps then
         make a small sawtooth about it; NaN if it never does); "adhesion",
-        the adhesion coefficient held [-]; "peak_force_over_muN", the peak
+        the adhesion coefficient held [1]; "peak_force_over_muN", the peak
         |fx| / (mu0 N) over the interval.  The creepage is taken in the
         drive's sense (braking cx, traction -cx).  Windows are in seconds,
         so decimated records (record_every > 1) give the same rows to within
@@ -208,3 +254,30 @@ class RigResult:
                          f"{'  ' + why if why else ''}")
         return "\n".join(lines)
 
+
+def scenario_record(params):
+    """RigResult.scenario of a run whose parameters came from `params`: the
+    file's absolute path and sha256 when it is a path, else None."""
+    import hashlib
+    import os
+    if not isinstance(params, (str, os.PathLike)):
+        return None
+    path = os.path.abspath(os.fspath(params))
+    with open(path, "rb") as fh:
+        return {"path": path, "sha256": hashlib.sha256(fh.read()).hexdigest()}
+
+
+def _changed(defaults, params, prefix=""):
+    """[(section.key, value)] of `params` that differ from `defaults`
+    (nested dicts; a key the defaults lack counts as changed)."""
+    out = []
+    for key in sorted(params):
+        value, default = params[key], defaults.get(key, _MISSING)
+        if isinstance(value, dict) and isinstance(default, dict):
+            out += _changed(default, value, f"{prefix}{key}.")
+        elif value != default:
+            out.append((f"{prefix}{key}", value))
+    return out
+
+
+_MISSING = object()

@@ -37,7 +37,7 @@ from . import control as _control
 from .._errors import RollerRigError, RollerRigWarning, status_message
 from .build import _build, _creep_options, _geometry
 from .params import _SAMPLE_TIME, _check_run, _integer, _parameters, _real_arg, _short
-from .result import RECORD_FIELDS, RigResult
+from .result import RECORD_FIELDS, RigResult, scenario_record
 
 
 #: the default cap on the memory of a run's records [bytes]: 1 GiB, about
@@ -253,6 +253,7 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
         raise RollerRigError(f"simulate: controller must be a callable (signals -> dict of "
                              f"references), got {_short(controller)}")
     P = _parameters("simulate", params)
+    scenario = scenario_record(params)          # the file as read (path, sha256) or None
     S = P["scenario"]
     given_dt = dt is not None
     names = {k: arg for k, arg, v in ((_SAMPLE_TIME, "dt", dt), (_DURATION, "duration", duration))
@@ -289,7 +290,8 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     def result(out, status, message, stepped):
         wall = {"setup": t1 - t0, "run": time.perf_counter() - t1}
         return RigResult(out, P, targets, target_times, dt, int(status), message, wall,
-                         record_every=record_every, method=used, samples=stepped)
+                         record_every=record_every, method=used, samples=stepped,
+                         scenario=scenario)
     if controller is not None:
         out, stepped, status, worst, warned = _run_controlled(
             rig, controller, P, duration, dt, targets, target_times, V, n, record_every, out,
