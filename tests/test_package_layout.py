@@ -21,13 +21,13 @@ FLOORS = {
     "rollerrig._progress": 0,
     "rollerrig._units": 0, "rollerrig._csv": 0,
     # the regression helpers for users' tests, above the whole package
-    **{f"rollerrig.testing{m}": 5 for m in ("", "._compare", "._store", "._figure", "._assert",
+    **{f"rollerrig.testing{m}": 5 for m in ("", "._compare", "._store", "._assert",
                                              "._fixtures")},
     "rollerrig.contact": 1, "rollerrig.geometry": 2, "rollerrig.rig": 3, "rollerrig.analysis": 4,
     "rollerrig.capi": 5, "rollerrig.fmu": 5, "rollerrig.plot": 5, "rollerrig.cli": 5,
     # the pictures' package: its files are one room (rollerrig.plot)
     "rollerrig.plot._base": 5, "rollerrig.plot._curves": 5, "rollerrig.plot._maps": 5,
-    "rollerrig.plot._rig": 5,
+    "rollerrig.plot._rig": 5, "rollerrig.plot._regression": 5,
     "rollerrig.__main__": 5, "rollerrig": 5,
 }
 MAX_LINES = 800

@@ -13,7 +13,8 @@ import numpy as np
 import pytest
 
 import rollerrig as rr
-from rollerrig.testing import _figure, _fixtures  # noqa: F401
+from rollerrig.plot import _regression  # noqa: F401
+from rollerrig.testing import _fixtures  # noqa: F401
 from rollerrig import RollerRigError
 from rollerrig._csv import read_table
 from rollerrig.testing import (RegressionError, assert_creep_curve_close, assert_fields_close,

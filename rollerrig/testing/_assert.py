@@ -130,7 +130,7 @@ def assert_fields_close(actual, expected, *, rtol=DEFAULT_RTOL, atol=DEFAULT_ATO
     message = _compare.describe(deviations, len(tol), where, xs, x, units.get(x))
     path = note = None
     if figure is not None:
-        from ._figure import figure as draw
+        from ..plot._regression import figure as draw
         path, note = draw(os.fspath(figure), deviations, got, ref, xs, x, units.get(x),
                           title=f"{func}: this run against {where}")
         message += f"\ncomparison figure: {path}" if path else f"\n{note}"

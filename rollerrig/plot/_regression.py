@@ -1,4 +1,4 @@
-"""The comparison figure of a failed regression: per differing field (the
+"""The comparison figure of a failed regression (rollerrig.testing): per differing field (the
 first MAX_PANELS), the data over the reference, and below it the
 difference with the band the tolerance allows.  matplotlib is optional:
 without it figure() says why instead of drawing."""
