@@ -258,7 +258,8 @@ static void correction(const double *p, double e, double x, double y, double r[3
 /* Patch p of a row at the row's lowering dz: *out, and *vert the vertical
  * component of its force. */
 static int patch_forces(const rr_nh_table *tb, const double *p, double dz, const rr_motion *ws,
-                        const rr_nh_state *s, rr_nh_patch *out, double *vert, int *calls)
+                        const rr_nh_state *s, const double law[2], rr_nh_patch *out,
+                        double *vert, int *calls)
 {
     const double e = dz - p[0], sig = tb->sigma;
     double t, d, PY, PZ, xc, yc, ab, K11, K22, K23, N, k[4], theta = 0.0;
@@ -316,16 +317,30 @@ static int patch_forces(const rr_nh_table *tb, const double *p, double dz, const
     cp.cphi = sp * k[2];
     cp.friction.mu0 = s->mu;
     cp.friction.A = 1.0;
+    if (law[0] != 1.0 && law[1] != 0.0)
+        /* the falling law at the patch's rigid slip speed: one Coulomb mu */
+        cp.friction.mu0 = s->mu * ((1.0 - law[0]) * exp(-law[1] * k[3] * hypot(cxc, cyc))
+                                   + law[0]);
     (*calls)++;
     if ((st = rr_exact_table_forces(&rr_exact_table_builtin, &cp, &f)) < 0)
         return st;
     /* plus the tabulated exact departure (normalised by this friction) */
-    muN = s->mu * N;
+    muN = cp.friction.mu0 * N;
     correction(p, e, K11 * cxc / muN, K22 * cyc / muN, corr);
     out->N = N;
     out->fx = f.fx + muN * corr[0];
     out->fy = f.fy + muN * corr[1];
     out->mz = f.mz + muN * corr[2];
+    {
+        /* the exact theory's traction never passes mu N; the correction,
+         * interpolated between its nodes, can by ~1e-5 mu N near saturation
+         * (a rig checks the bound): held at it */
+        const double ft = hypot(out->fx, out->fy);
+        if (ft > muN) {
+            out->fx *= muN / ft;
+            out->fy *= muN / ft;
+        }
+    }
     out->delta = d;
     out->cx = cxc;
     out->cy = cyc;
@@ -337,6 +352,8 @@ static int patch_forces(const rr_nh_table *tb, const double *p, double dz, const
         out->t2[m] = fr.t2[m];
         out->n[m] = fr.n[m];
     }
+    out->a = cp.a;
+    out->b = cp.b;
     out->area = node(p, RR_NH_AREA, kn, t) * cbrt(N * N);
     out->pmax = node(p, RR_NH_PMAX, kn, t) * cbrt(N);
     *vert = out->force[2];
@@ -392,7 +409,8 @@ static int solve_dz(const double *row, double target, double *dz_io)
 
 /* One row at vertical load Fz: its patches (out->patch, npatch) and sums. */
 static int eval_row(const rr_nh_table *tb, const double *row, const rr_motion *ws,
-                    const rr_nh_state *s, rr_nh_result *out, double *dz_out)
+                    const rr_nh_state *s, const double law[2], rr_nh_result *out,
+                    double *dz_out)
 {
     const int np = (int)row[1];
     const double *p0 = row + RR_NH_PATCH(0);
@@ -432,8 +450,8 @@ static int eval_row(const rr_nh_table *tb, const double *row, const rr_motion *w
         total = 0.0;
         out->npatch = np;
         for (j = 0; j < np; j++) {
-            if ((st = patch_forces(tb, row + RR_NH_PATCH(j), dz, ws, s, &out->patch[j], &vert,
-                                   &out->table_calls)) < 0)
+            if ((st = patch_forces(tb, row + RR_NH_PATCH(j), dz, ws, s, law, &out->patch[j],
+                                   &vert, &out->table_calls)) < 0)
                 return st;
             total += vert;
         }
@@ -483,6 +501,8 @@ static void add_patch(rr_nh_patch *a, const rr_nh_patch *b, double w)
     a->cphi += w * b->cphi;
     a->area += w * b->area;
     a->pmax += w * b->pmax;
+    a->a += w * b->a;
+    a->b += w * b->b;
     for (m = 0; m < 3; m++) {
         a->force[m] += w * b->force[m];
         a->point[m] += w * b->point[m];
@@ -502,6 +522,13 @@ static void normalise(double *v)
 
 int rr_nonhertz_wheel(const rr_nh_table *t, const rr_nh_state *s, rr_nh_result *out)
 {
+    return rr_nonhertz_wheel_law(t, s, 1.0, 0.0, out);
+}
+
+int rr_nonhertz_wheel_law(const rr_nh_table *t, const rr_nh_state *s, double A, double B,
+                          rr_nh_result *out)
+{
+    const double law[2] = {A, B};
     rr_nh_result rr[2];
     const double *row[2];
     double w, wt[2];
@@ -522,7 +549,9 @@ int rr_nonhertz_wheel(const rr_nh_table *t, const rr_nh_state *s, rr_nh_result *
     }
     if (!(s->Fz > 0.0))
         return RR_ERR_LOAD;
-    if (!(s->mu > 0.0))
+    if (!isfinite(A) || !isfinite(B))
+        return RR_ERR_NONFINITE;
+    if (!(s->mu > 0.0) || !(A > 0.0 && A <= 1.0) || !(B >= 0.0))
         return RR_ERR_FRICTION;
     if (!(s->vmin > 0.0))
         return RR_ERR_SPEED;
@@ -539,7 +568,7 @@ int rr_nonhertz_wheel(const rr_nh_table *t, const rr_nh_state *s, rr_nh_result *
         /* a row of zero weight is not needed (y on a row) */
         if (wt[j] == 0.0)
             continue;
-        if ((st = eval_row(t, row[j], &s->motion[j], s, &rr[j], &rr[j].dz[0])) < 0) {
+        if ((st = eval_row(t, row[j], &s->motion[j], s, law, &rr[j], &rr[j].dz[0])) < 0) {
             nan_result(out);
             return st;
         }

@@ -86,6 +86,7 @@ PyObject *py_rig_contact(PyObject *self, PyObject *args, PyObject *kwargs)
     int k, kin_only = 0;
     (void)self;
 
+    memset(&m, 0, sizeof m);               /* Hertz: the patch's rows zero */
     if (!PyArg_ParseTuple(args, "Odd(dddddddd)OOOOOOOOOO:rig_contact", &dobj, &y0, &dy, &m.R0,
                           &m.estar, &m.G, &m.nu, &m.friction.mu0, &m.friction.A,
                           &m.friction.B, &m.vmin, &objs[0], &objs[1], &objs[2], &objs[3],

@@ -1,7 +1,8 @@
 """The rig in time (the wing of csrc/rig/): its parameters (params), the C
 rig built from them (build), a run and its record (run, result), the rig's
 contact model over arrays (contact), a controller of the caller's in the
-loop (control), one wheel solved by the exact theory (exact).  This face
+loop (control), one wheel solved by the exact theory (exact), the
+non-Hertzian contact's table of the rig's pair (nonhertz_rig).  This face
 hands on the public names of its rooms; a private name comes from its room
 (rollerrig.rig.params._report_problems, say)."""
 from .params import (DEFAULTS_PATH, MAX_DT, MAX_DURATION, MAX_PARAMETER_FILE_BYTES, MIN_DT,
@@ -14,6 +15,7 @@ from .contact import (LinearCreepages, RigContact, RigPose, WheelContact, linear
                       rig_contact)
 from .control import CreepageController, RigInfo, RigSignals
 from .exact import RigExact, rig_exact
+from .nonhertz_rig import rig_nonhertz_table
 
 __all__ = ["PARAMETERS", "default_parameters", "load_parameters", "check_parameters", "build_rig",
            "Rig", "simulate", "replay", "RigResult", "RECORD_FIELDS", "RECORD_UNITS",

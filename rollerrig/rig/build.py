@@ -11,6 +11,7 @@ import numpy as np
 from .. import _core
 from . import control as _control
 from . import real_profiles as _real_profiles
+from . import nonhertz_rig as _nonhertz_rig
 from .._errors import RollerRigError, status_message
 from .._binding import METHODS, _as_float, check_creep_options, core, loop_method, rig_method
 from ..geometry.profiles import Profile
@@ -305,18 +306,29 @@ def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, c
     def make(Q, run, table=None):
         table = _geometry(Q) if table is None else table
         cp = _c_params(Q, dt, substeps, ode, run)
+        # the non-Hertzian tables of P (built or read once, below); another
+        # set of values (_culprits' search) is tried on Hertz
+        nh = nh_tables if Q is P else None
+        if nh is None:
+            cp["contact.patch"] = "hertz"
         # the C side (rr_rig_params_set_table) takes eq. 15-16's radii at the
         # centred wheelset's rolling radii, as a rig is calibrated: the
         # profiles' nominal radii would bias the creepage by
         # (r - r0)/r0 + (R0 - R)/R0, about 0.2 % of creepage here
         return core(_core.Rig, table.data, table.y0, table.dy, cp, opts,
                     float(cp["scenario.roller_speed_m_s"]) / float(Q["roller"]["radius_m"])
-                    if start == "rolling" else 0.0)
+                    if start == "rolling" else 0.0, nh)
     try:
         table = _geometry(P)
     except RollerRigError as e:
         raise _cannot_start(func, e, _culprits(P, run, names, GEOMETRY_KEYS,
                                                lambda Q, run: _geometry(Q))) from None
+    nh_tables = None
+    if P["contact"]["patch"] == "nonhertz":
+        try:
+            nh_tables = _nonhertz_rig.c_tables(_nonhertz_rig.table_for(P, table))
+        except RollerRigError as e:
+            raise RollerRigError(f"{func}: contact.patch = 'nonhertz': {e}") from None
     try:
         rig = make(P, run, table)
     except (ValueError, RollerRigError) as e:
