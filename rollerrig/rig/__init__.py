@@ -9,13 +9,12 @@ from .params import (DEFAULTS_PATH, MAX_DT, MAX_DURATION, MAX_PARAMETER_FILE_BYT
                      ODE_METHODS, PARAMETERS, RETIRED, RigParameter, check_parameters,
                      default_parameters, defaults_toml, load_parameters, write_defaults)
 from .result import RECORD, RECORD_FIELDS, RECORD_UNITS, RigResult
-from .build import CREEP_OPTIONS, GEOMETRY_KEYS, RIG_METHODS, Rig, build_rig
+from .build import CREEP_OPTIONS, GEOMETRY_KEYS, RIG_METHODS, Rig, build_rig, rig_nonhertz_table
 from .run import RECORD_BYTES_CAP, UNTRUSTED_MIN, UNTRUSTED_SHARE, replay, schedule, simulate
 from .contact import (LinearCreepages, RigContact, RigPose, WheelContact, linear_creepages,
                       rig_contact)
 from .control import CreepageController, RigInfo, RigSignals
 from .exact import RigExact, rig_exact
-from .nonhertz_rig import rig_nonhertz_table
 
 __all__ = ["PARAMETERS", "default_parameters", "load_parameters", "check_parameters", "build_rig",
            "Rig", "simulate", "replay", "RigResult", "RECORD_FIELDS", "RECORD_UNITS",

@@ -433,3 +433,20 @@ def write_points(params, folder):
             fh.writelines(f"{y:.17g} {z:.17g}\n" for y, z in zip(s[0], s[1]))
         out[name] = path
     return out
+
+
+def rig_nonhertz_table(params=None, path=None):
+    """The non-Hertzian contact's table of the rig of `params` (None, a nested
+    dict or a scenario file, as simulate takes them; the contact section's
+    nonhertz_* rows set the build), built (or read: contact.nonhertz_table)
+    as simulate(..., contact.patch = "nonhertz") would; saved as .npz at
+    `path` if given (then give it as contact.nonhertz_table).  Returns the
+    rollerrig.NonHertzTable."""
+    P = _parameters("rig_nonhertz_table", params)
+    if path is not None:
+        from .._files import check_output
+        check_output(path, what="rig_nonhertz_table: path")
+    nh = _nonhertz_rig.table_for(P, _geometry(P))
+    if path is not None:
+        _nonhertz_rig.save(nh, P, os.fspath(path))
+    return nh

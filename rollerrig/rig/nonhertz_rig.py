@@ -11,7 +11,7 @@ static wheel load (its nodes reach 1.85 times it, extrapolated by Hertz's
 law up to 5 times), over y within contact.nonhertz_half_range_m every
 contact.nonhertz_row_spacing_m (a quarter of it near the rigid contact
 point's jumps), and kept in memory for the session.  A file's path: a table
-saved by rig_nonhertz_table(params, path), read and checked against the
+saved by rollerrig.rig_nonhertz_table(params, path) (rig.build), read and checked against the
 rig's pair (every quantity that differs is named) before the run.
 """
 import hashlib
@@ -27,8 +27,6 @@ from .._errors import RollerRigError, RollerRigWarning
 from ..geometry.nonhertz import LOAD_SPAN, NonHertzTable, nonhertz_table
 from ..geometry.wheelset import wheelset_contact
 from . import real_profiles as _real_profiles
-
-__all__ = ["rig_nonhertz_table"]
 
 #: the full-size table's choices (rollerrig.geometry.nonhertz), scaled to the
 #: rig by its profile scale: a jump of the rigid contact point is a lateral
@@ -200,22 +198,3 @@ def save(nh, P, path):
     from .._files import write_file
     write_file(path, lambda fh: np.savez(fh, **out), what="rig_nonhertz_table: path",
                binary=True)
-
-
-def rig_nonhertz_table(params=None, path=None):
-    """The non-Hertzian contact's table of the rig of `params` (None, a nested
-    dict or a scenario file, as simulate takes them; the contact section's
-    nonhertz_* rows set the build), built (or read: contact.nonhertz_table)
-    as simulate(..., contact.patch = "nonhertz") would; saved as .npz at
-    `path` if given (then give it as contact.nonhertz_table).  Returns the
-    rollerrig.NonHertzTable."""
-    from .build import _geometry
-    from .params import _parameters
-    P = _parameters("rig_nonhertz_table", params)
-    if path is not None:
-        from .._files import check_output
-        check_output(path, what="rig_nonhertz_table: path")
-    nh = table_for(P, _geometry(P))
-    if path is not None:
-        save(nh, P, os.fspath(path))
-    return nh
