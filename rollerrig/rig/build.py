@@ -418,8 +418,10 @@ def write_points(params, folder):
     this module says), one text file per real profile of `params` (a nested
     dict or a scenario file's path, checked): folder/wheel.txt, roller.txt,
     wheel_right.txt, roller_right.txt, two numbers a line (y z [m], every
-    digit: %.17g), "# end natural" where the profile's spline is natural.
-    For a C program (examples/rig_paper.c).  Returns {slot: path}."""
+    digit: %.17g), "# end natural" where the profile's spline is natural;
+    on contact.patch = "nonhertz" its tables too (nonhertz_left.txt,
+    nonhertz_right.txt).  For a C program (examples/rig_paper.c).  Returns
+    {slot: path}."""
     P = _parameters("write_points", params)
     points = _real_profiles.profile_points(P)
     out = {}
@@ -432,6 +434,19 @@ def write_points(params, folder):
             fh.write(f"# {name}: y z [m], full size ({'end natural' if s[2] else 'not-a-knot'})\n")
             fh.writelines(f"{y:.17g} {z:.17g}\n" for y, z in zip(s[0], s[1]))
         out[name] = path
+    if P["contact"]["patch"] == "nonhertz":
+        # the non-Hertzian tables the run takes (built or read), for
+        # examples/rig_paper.c's nonhertz_left=, nonhertz_right=
+        nh = _nonhertz_rig.table_for(P, _geometry(P))
+        for name, side in (("nonhertz_left", nh.left), ("nonhertz_right", nh.right)):
+            path = os.path.join(os.fspath(folder), f"{name}.txt")
+            with open(path, "w") as fh:
+                fh.write(f"# {name}: sigma R0 G nu mu_ref rows, then the rows "
+                         f"({side.rows.shape[1]} numbers each; csrc/geometry/rr_nonhertz.h)\n")
+                fh.write(" ".join(f"{v:.17g}" for v in side.head) + f" {side.rows.shape[0]}\n")
+                for r in side.rows:
+                    fh.write(" ".join(f"{v:.17g}" for v in r) + "\n")
+            out[name] = path
     return out
 
 

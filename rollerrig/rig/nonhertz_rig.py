@@ -24,7 +24,7 @@ import warnings
 import numpy as np
 
 from .._errors import RollerRigError, RollerRigWarning
-from ..geometry.nonhertz import LOAD_SPAN, NonHertzTable, nonhertz_table
+from ..geometry.nonhertz import LOAD_SPAN, NonHertzSide, NonHertzTable, nonhertz_table
 from ..geometry.wheelset import wheelset_contact
 from . import real_profiles as _real_profiles
 
@@ -101,6 +101,51 @@ def _settings(P):
             int(C["nonhertz_elements"]))
 
 
+#: rows built together (two threads)
+CHUNK = 8
+
+
+def _side_rows(g, side, ys, kw):
+    """One side's rows from the centre outwards, in chunks; a direction
+    ends at the first row the exact theory cannot build (deep flange
+    contact at the largest load node): (rows sorted by y, why it ended or
+    "")."""
+    ys = np.asarray(ys)
+    out, why = {}, ""
+    for direction in (ys[ys >= 0.0], ys[ys < 0.0][::-1]):
+        k = 0
+        while k < len(direction):
+            chunk = direction[k:k + CHUNK]
+            try:
+                got = _chunk(g, side, chunk, kw)
+            except RollerRigError:
+                got = []
+                for j in range(len(chunk)):     # one by one, to the first that fails
+                    try:
+                        got += _chunk(g, side, chunk[j:j + 1], kw)
+                    except RollerRigError as e:
+                        why = str(e)
+                        break
+                for r in got:
+                    out[float(r[0])] = r
+                break
+            for r in got:
+                out[float(r[0])] = r
+            k += CHUNK
+    return [out[y] for y in sorted(out)], why
+
+
+def _chunk(g, side, ys, kw):
+    """The rows at shifts ys (nonhertz_table needs two: a lone row is built
+    beside a twin 1 nm away, which is dropped)."""
+    ys = [float(y) for y in ys]
+    twin = len(ys) == 1
+    t = nonhertz_table(g, None, None, y=ys + [ys[0] + 1e-9] if twin else ys, sides=(side,),
+                       **kw).side(side)
+    rows = list(t.rows)
+    return rows[:1] if twin else rows
+
+
 def _build(P, table, key):
     """The table of the rig's pair (rollerrig.nonhertz_table per side)."""
     half, dy, n = _settings(P)
@@ -114,20 +159,31 @@ def _build(P, table, key):
           f"rows, about {0.25 * total * (n / 40) ** 2:.0f} s on 2 free cores; kept for this "
           f"session, or save it: rollerrig.rig_nonhertz_table(params, path))", file=sys.stderr)
     t0 = time.perf_counter()
-    sides, excluded = {}, []
+    kw = dict(Fz=Fz, mu_ref=float(P["scenario"]["mu0"]), E=E, nu=nu, n=n,
+              n_corr=max(8, (3 * n) // 4), richardson=False, combine=COMBINE * scale)
+    sides, ends = {}, []
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", RollerRigWarning)
         for side in ("left", "right"):
-            t = nonhertz_table(g, None, None, Fz=Fz, y=rows[side], sides=(side,),
-                               mu_ref=float(P["scenario"]["mu0"]), E=E, nu=nu, n=n,
-                               n_corr=max(8, (3 * n) // 4), richardson=False,
-                               combine=COMBINE * scale)
-            sides[side] = t.side(side)
+            built, end = _side_rows(g, side, rows[side], kw)
+            if len(built) < 2:
+                raise RollerRigError(f"the {side} wheel's non-Hertzian table: the exact "
+                                     f"theory's rows fail at the centre: {end}")
+            if end:
+                ends.append(f"the {side} wheel's from {built[0][0]:.6g} to {built[-1][0]:.6g} m "
+                            f"({end})")
+            sides[side] = NonHertzSide(np.ascontiguousarray(np.array(built)),
+                                       1.0 if side == "left" else -1.0, float(g.roller_radius),
+                                       E / (2.0 * (1.0 + nu)), nu, kw["mu_ref"]).check()
     excluded = [str(w.message) for w in caught if "not tabulated" in str(w.message)]
     if excluded:
         warnings.warn(f"the rig's nonhertz table: {len(excluded)} row(s) have a region of the "
                       f"gap beyond combine = {COMBINE * scale:g} m of the deepest, not "
                       f"tabulated (one patch per row; first: {excluded[0]})", RollerRigWarning,
+                      stacklevel=4)
+    if ends:
+        warnings.warn(f"the rig's nonhertz table ends where the exact theory's rows fail (a "
+                      f"wheel beyond stops the run): {'; '.join(ends)}", RollerRigWarning,
                       stacklevel=4)
     return NonHertzTable(sides["left"], sides["right"], Fz, time.perf_counter() - t0)
 
