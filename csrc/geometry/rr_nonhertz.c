@@ -407,14 +407,18 @@ static int solve_dz(const double *row, double target, double *dz_io)
     return RR_ERR_RANGE;
 }
 
-/* One row at vertical load Fz: its patches (out->patch, npatch) and sums. */
+/* One row at vertical load Fz: its patches (out->patch, npatch) and sums;
+ * *tz_io the creep forces' vertical share to start from (the other row's,
+ * 0 for the first: neighbouring rows share most of it, so the second row
+ * settles in one pass where it would take two), the row's on return. */
 static int eval_row(const rr_nh_table *tb, const double *row, const rr_motion *ws,
                     const rr_nh_state *s, const double law[2], rr_nh_result *out,
-                    double *dz_out)
+                    double *dz_out, double *tz_io)
 {
     const int np = (int)row[1];
     const double *p0 = row + RR_NH_PATCH(0);
-    double Tz = 0.0, T0 = 0.0, r0 = 0.0, r, step, dz, t, a0, a1, vert, total;
+    double Tz = *tz_io < 0.5 * s->Fz ? *tz_io : 0.0;   /* a seed near Fz: from 0 */
+    double T0 = 0.0, r0 = 0.0, r, step, dz, t, a0, a1, vert, total;
     int j, k, st, pass;
     /* a start: the shallowest-gap patch's nodes, N cos(delta) = Fz */
     for (j = 1; j < np; j++)
@@ -460,6 +464,7 @@ static int eval_row(const rr_nh_table *tb, const double *row, const rr_motion *w
         r = Tn - Tz;
         if (fabs(r) < TZ_TOL * s->Fz) {
             *dz_out = dz;
+            *tz_io = Tn;
             return RR_OK;
         }
         /* a secant on the fixed point's residual (at the flange the share
@@ -529,6 +534,7 @@ int rr_nonhertz_wheel_law(const rr_nh_table *t, const rr_nh_state *s, double A, 
                           rr_nh_result *out)
 {
     const double law[2] = {A, B};
+    double tz = 0.0;
     rr_nh_result rr[2];
     const double *row[2];
     double w, wt[2];
@@ -568,7 +574,7 @@ int rr_nonhertz_wheel_law(const rr_nh_table *t, const rr_nh_state *s, double A, 
         /* a row of zero weight is not needed (y on a row) */
         if (wt[j] == 0.0)
             continue;
-        if ((st = eval_row(t, row[j], &s->motion[j], s, law, &rr[j], &rr[j].dz[0])) < 0) {
+        if ((st = eval_row(t, row[j], &s->motion[j], s, law, &rr[j], &rr[j].dz[0], &tz)) < 0) {
             nan_result(out);
             return st;
         }
