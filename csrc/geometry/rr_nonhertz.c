@@ -527,14 +527,14 @@ static void normalise(double *v)
 
 int rr_nonhertz_wheel(const rr_nh_table *t, const rr_nh_state *s, rr_nh_result *out)
 {
-    return rr_nonhertz_wheel_law(t, s, 1.0, 0.0, out);
+    return rr_nonhertz_wheel_law(t, s, 1.0, 0.0, 0.0, out);
 }
 
 int rr_nonhertz_wheel_law(const rr_nh_table *t, const rr_nh_state *s, double A, double B,
-                          rr_nh_result *out)
+                          double tz_seed, rr_nh_result *out)
 {
     const double law[2] = {A, B};
-    double tz = 0.0;
+    double tz = isfinite(tz_seed) ? tz_seed : 0.0;
     rr_nh_result rr[2];
     const double *row[2];
     double w, wt[2];
@@ -582,6 +582,7 @@ int rr_nonhertz_wheel_law(const rr_nh_table *t, const rr_nh_state *s, double A, 
     }
     /* the blend: totals, moments about each row's centre, patches by index */
     memset(out, 0, sizeof *out);
+    out->tz = tz;
     out->row = i;
     out->w = w;
     out->table_calls = calls;

@@ -180,6 +180,8 @@ typedef struct {
     int row;                             /* row i */
     double w;                            /* the weight of row i + 1 */
     int table_calls;                     /* rr_exact_table_forces calls spent */
+    double tz;                           /* the creep forces' vertical share the last row
+                                            evaluated settled at [N] (a next call's seed) */
 } rr_nh_result;
 
 /*
@@ -201,11 +203,16 @@ int rr_nonhertz_wheel(const rr_nh_table *t, const rr_nh_state *s, rr_nh_result *
  * (rr_friction.h) mu(w) = s->mu ((1 - A) exp(-B w) + A), taken per patch
  * at its rigid slip speed w = |(cx, cy)| V at the centroid (one mu a
  * patch, as FASTSIM's slip_speed "rigid" takes one a contact); A = 1 or
- * B = 0: Coulomb, rr_nonhertz_wheel's doubles.
+ * B = 0: Coulomb.  tz_seed: the creep forces' vertical share [N] the
+ * vertical balance starts from (a previous evaluation's out->tz: a time
+ * step's next state settles in one pass where it would take two; 0, or
+ * not finite, or beyond Fz / 2: from 0); the result depends on it within
+ * the balance's tolerance (1e-4 Fz).  A = 1, B = 0, tz_seed 0:
+ * rr_nonhertz_wheel's doubles.
  *   status: rr_nonhertz_wheel's; RR_ERR_NONFINITE (A, B), RR_ERR_FRICTION
  *   (A outside (0, 1], B < 0).
  */
 int rr_nonhertz_wheel_law(const rr_nh_table *t, const rr_nh_state *s, double A, double B,
-                          rr_nh_result *out);
+                          double tz_seed, rr_nh_result *out);
 
 #endif

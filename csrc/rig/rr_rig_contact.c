@@ -347,8 +347,9 @@ static int nonhertz_wheel(const rr_rig_contact_model *m, int k, double N,
     ns.vmin = m->vmin;
     ns.x = s->x;
     ns.yaw = s->yaw;
-    if ((st = rr_nonhertz_wheel_law(t, &ns, c->friction.A, c->friction.B, &r)) < 0)
+    if ((st = rr_nonhertz_wheel_law(t, &ns, c->friction.A, c->friction.B, c->nh_tz, &r)) < 0)
         return st;
+    c->nh_tz = r.tz;
     c->f.fx = c->f.fy = c->f.mz = 0.0;
     for (j = 0; j < r.npatch; j++) {
         const rr_nh_patch *p = &r.patch[j];

@@ -118,6 +118,10 @@ typedef struct {
     rr_forces f;            /* creep forces on the wheel along t1, t2; spin moment about n */
     double force[3];        /* contact force on the wheelset, rig frame [N] */
     double moment[3];       /* its moment about the wheelset centre [N m] */
+    double nh_tz;           /* RR_RIG_PATCH_NONHERTZ: the creep forces' vertical share
+                               the wheel's balance settled at [N], and the seed the next
+                               rr_rig_contact_loads on this w starts from (0: none; the
+                               rig keeps it from step to step, rr_nonhertz_wheel_law) */
     int status;             /* this wheel's status */
 } rr_wheel_contact;
 

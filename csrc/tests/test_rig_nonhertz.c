@@ -139,6 +139,7 @@ int main(void)
     s.spin = 5.0 / r0 * 0.995;
     st = rr_rig_contact(&hz, &s, N, &ph, wh);
     CHECK_STATUS(st, RR_OK, "hertz: evaluation");
+    memset(wn, 0, sizeof wn);            /* no seed (rr_wheel_contact.nh_tz) */
     st = rr_rig_contact(&nh, &s, N, &pn, wn);
     CHECK_STATUS(st, RR_OK, "nonhertz: evaluation");
     for (k = 0; k < 2; k++) {
@@ -159,12 +160,21 @@ int main(void)
         rr_rig_contact_checked kc;
         rr_rig_pose p2;
         rr_wheel_contact w2[2];
+        memset(w2, 0, sizeof w2);
+        memset(wn, 0, sizeof wn);
+        CHECK_STATUS(rr_rig_contact(&nh, &s, N, &pn, wn), RR_OK, "nonhertz: again");
         CHECK_STATUS(rr_rig_contact_bind(&kc, &nh, NULL, 0), RR_OK, "nonhertz: bound");
         CHECK_STATUS(rr_rig_contact_eval_checked(&kc, &s, N, &p2, w2), RR_OK,
                      "nonhertz: checked");
         CHECK(memcmp(w2[0].force, wn[0].force, sizeof w2[0].force) == 0
                   && memcmp(w2[1].moment, wn[1].moment, sizeof w2[1].moment) == 0,
               "nonhertz: checked, bit for bit");
+        /* seeded by the evaluation before: one pass, the same state within the
+         * balance's tolerance (1e-4 Fz moves the forces by about 1e-4 mu N) */
+        CHECK_STATUS(rr_rig_contact_eval_checked(&kc, &s, N, &p2, w2), RR_OK,
+                     "nonhertz: seeded");
+        CHECK(fabs(w2[0].f.fx - wn[0].f.fx) < 1e-3 * 0.4 * N[0]
+                  && w2[0].nh_tz == w2[0].nh_tz, "nonhertz: seeded, the same forces");
     }
     /* beyond the rows: that wheel's RR_ERR_TABLE, NaN; a falling law passes */
     s.y = (NROWS / 2 + 1) * DY;
