@@ -154,3 +154,31 @@ def test_the_pair_key_names_profiles_and_scales():
     cone = nonhertz_rig.pair_key(rr.default_parameters())
     assert "wheelset.conicity" in cone and "wheelset.profile points" not in cone
     assert nonhertz_rig.static_load(P) == pytest.approx(521.6, abs=0.1)
+
+
+@pytest.mark.slow
+def test_the_command_line_takes_patch(tmp_path):
+    """rollerrig simulate --patch nonhertz on a scenario: the run is
+    simulate()'s on contact.patch = "nonhertz"; --patch foo is refused naming
+    the option."""
+    import subprocess
+    import sys
+    scenario = tmp_path / "s.toml"
+    scenario.write_text('[wheelset]\nprofile = "s1002"\n[roller]\nprofile = "uic60"\n'
+                        '[contact]\nnonhertz_half_range_m = 8e-5\nnonhertz_elements = 16\n'
+                        '[scenario]\nduration_s = 0.5\ntargets = [0.02]\ntarget_start_s = [0.0]\n')
+    out = subprocess.run([sys.executable, "-m", "rollerrig", "simulate", "--scenario",
+                          str(scenario), "--patch", "nonhertz", "--out", str(tmp_path / "run"),
+                          "--quiet"], capture_output=True, text=True, cwd=tmp_path)
+    assert out.returncode == 0, out.stdout + out.stderr
+    assert "building the non-Hertzian contact's table" in out.stderr
+    import csv
+    with open(tmp_path / "run" / "rig_history.csv") as fh:
+        rows = [r for r in csv.reader(fh) if r and not r[0].startswith("#")]
+    ref = quiet(rr.simulate, params=with_contact(rr.load_parameters(str(scenario)),
+                                                 patch="nonhertz"))
+    fx = rows[0].index("fx")
+    assert np.allclose([float(r[fx]) for r in rows[1:]], ref.fx, rtol=1e-12, atol=1e-9)
+    bad = subprocess.run([sys.executable, "-m", "rollerrig", "simulate", "--patch", "foo"],
+                         capture_output=True, text=True, cwd=tmp_path)
+    assert bad.returncode == 2 and "--patch" in bad.stderr
