@@ -136,7 +136,8 @@ def main(argv=None):
           "x real time, nonhertz | us a sample, Hertz | us a sample, nonhertz | status | "
           "targets reached (nonhertz) |", "|---|---|---|---|---|---|---|---|---|"]
     for label, n, b, rh, rn, uh, un, st, reached in rows:
-        L.append(f"| {label} | {n} | {b:.1f} | {rh:.0f} | {rn:.0f} | {uh:.1f} | {un:.1f} | "
+        built = f"{b:.1f}" if b == b else "(a saved file)"
+        L.append(f"| {label} | {n} | {built} | {rh:.0f} | {rn:.0f} | {uh:.1f} | {un:.1f} | "
                  f"{st} | {reached} |")
     L += ["", NOTES]
     return publish(args, "rig_nonhertz", L)
