@@ -207,7 +207,11 @@ int rr_rig_kinematics(const rr_rig_contact_model *m, const rr_rig_state *s, rr_r
  *            each wheel's own in w[k].status, so one bad wheel leaves the
  *            other's results valid.  rr_rig_kinematics, rr_hertz
  *            (RR_ERR_LOAD for N <= 0), rr_creep_forces_work, RR_ERR_RANGE (a load
- *            so extreme that the ellipse or a force overflows).
+ *            so extreme that the ellipse or a force overflows).  On
+ *            RR_RIG_PATCH_NONHERTZ instead of Hertz's and the method's: the
+ *            wheel's friction law's (rr_friction_check), RR_ERR_LOAD (N n_z
+ *            not positive), RR_ERR_TABLE (y beyond the wheel's table rows),
+ *            rr_nonhertz_wheel_law's, RR_ERR_RANGE.
  */
 int rr_rig_contact(const rr_rig_contact_model *m, const rr_rig_state *s, const double N[2],
                    rr_rig_pose *pose, rr_wheel_contact w[2]);
