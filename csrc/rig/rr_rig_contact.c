@@ -347,9 +347,18 @@ static int nonhertz_wheel(const rr_rig_contact_model *m, int k, double N,
     ns.vmin = m->vmin;
     ns.x = s->x;
     ns.yaw = s->yaw;
-    if ((st = rr_nonhertz_wheel_law(t, &ns, c->friction.A, c->friction.B, c->nh_tz, &r)) < 0)
-        return st;
-    c->nh_tz = r.tz;
+    {
+        /* the seed: the last evaluation's share, or, for that evaluation's own
+         * state and load again, the seed it started from (the same doubles) */
+        const double key[9] = {s->x, s->y, s->yaw, s->vx, s->vy, s->yaw_rate, s->spin,
+                               s->roller_spin, N};
+        const double seed = memcmp(key, c->nh_key, sizeof key) == 0 ? c->nh_seed : c->nh_tz;
+        if ((st = rr_nonhertz_wheel_law(t, &ns, c->friction.A, c->friction.B, seed, &r)) < 0)
+            return st;
+        c->nh_seed = seed;
+        c->nh_tz = r.tz;
+        memcpy(c->nh_key, key, sizeof key);
+    }
     c->f.fx = c->f.fy = c->f.mz = 0.0;
     for (j = 0; j < r.npatch; j++) {
         const rr_nh_patch *p = &r.patch[j];

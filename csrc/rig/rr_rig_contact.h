@@ -122,6 +122,11 @@ typedef struct {
                                the wheel's balance settled at [N], and the seed the next
                                rr_rig_contact_loads on this w starts from (0: none; the
                                rig keeps it from step to step, rr_nonhertz_wheel_law) */
+    double nh_seed;         /* the seed that evaluation started from */
+    double nh_key[9];       /* and its state and load (x, y, yaw, vx, vy, yaw_rate, spin,
+                               roller_spin, N): the same state and load again start from
+                               the same seed, the same doubles (a rig's re-evaluation after
+                               a rebind or a restored co-simulation state) */
     int status;             /* this wheel's status */
 } rr_wheel_contact;
 

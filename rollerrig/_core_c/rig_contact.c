@@ -44,7 +44,7 @@ static int rig_contact_kernel(void *ctx, npy_intp start, npy_intp stop)
         s.roller_spin = IN(b->in[7], i);
         N[0] = IN(b->in[8], i);
         N[1] = IN(b->in[9], i);
-        w[0].nh_tz = w[1].nh_tz = 0.0;         /* each state on its own: no seed */
+        memset(w, 0, sizeof w);                /* each state on its own: no seed */
         if (b->kin_only) {
             b->status[i] = (npy_int8)rr_rig_kinematics_checked(b->m, &s, &pose, w);
             for (k = 0; k < 2; k++) {
