@@ -109,7 +109,7 @@ def test_fmu_state_reproduces_a_nonhertz_run(tmp_path, cache, version):
     in the same and in a fresh instance: the run goes on bit for bit."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", rr.RollerRigWarning)
-        path = fmu.build_fmu(tmp_path / "rig.fmu", scenario=_scenario("s1002_uic60"),
+        path = fmu.build_fmu(tmp_path / "rig_state.fmu", scenario=_scenario("s1002_uic60"),
                              fmi_version=version, cache_dir=cache)
     unz = tmp_path / "u"
     with zipfile.ZipFile(path) as z:
@@ -118,8 +118,13 @@ def test_fmu_state_reproduces_a_nonhertz_run(tmp_path, cache, version):
     vr = {v.name: v.valueReference for v in md.modelVariables}
     outs = [vr[n] for n in ("fx", "fy", "creepage", "left.N", "left.force[2]")]
 
+    messages = []
+
+    def log(*args):                  # kept alive for the instances' whole life
+        messages.append(args[-1])
+
     def start():
-        f = instantiate_fmu(str(unz), md, "CoSimulation")
+        f = instantiate_fmu(str(unz), md, "CoSimulation", logger=log)
         if version == 2:
             f.setupExperiment(startTime=0.0)
             f.enterInitializationMode()
@@ -146,7 +151,7 @@ def test_fmu_state_reproduces_a_nonhertz_run(tmp_path, cache, version):
     f.setFMUState(state)
     again = run(f)
     f.freeFMUState(state)
-    g = instantiate_fmu(str(unz), md, "CoSimulation")
+    g = instantiate_fmu(str(unz), md, "CoSimulation", logger=log)
     restored = g.deserializeFMUState(blob)
     g.setFMUState(restored)
     g.freeFMUState(restored)
