@@ -19,6 +19,13 @@
  * table is rr_rig_table_build_profiles' (tests/test_rig_profiles_c.py: the
  * records of rollerrig.simulate() on the same scenario, bit for bit).
  *
+ * On the non-Hertzian contact (-s contact.patch=nonhertz) give its two
+ * tables as files (nonhertz_left=FILE nonhertz_right=FILE; write_points
+ * writes them from the table rollerrig builds or reads: a line of sigma,
+ * R0, G, nu, mu_ref and the row count, then the rows, RR_NH_ROW_LEN
+ * numbers each, every digit; '#' lines are comments):
+ * rr_rig_params_set_nonhertz, checked at rr_rig_init (tests/test_rig_nonhertz_c.py).
+ *
  *   make -C csrc paper            # builds csrc/build/rig_paper
  *   csrc/build/rig_paper > records.f64
  *
@@ -36,6 +43,7 @@
 static const char *const slot_names[] = {"wheel", "roller", "wheel_right", "roller_right"};
 static const char *const slot_rows[] = {"wheelset.profile", "roller.profile",
                                         "wheelset.profile_right", "roller.profile_right"};
+static const char *const nonhertz_names[] = {"nonhertz_left", "nonhertz_right"};
 
 /* A points file into p (arrays malloc'ed); 0, or -1 with a message. */
 static int read_points(const char *path, rr_profile_points *p)
@@ -76,8 +84,53 @@ fail:
     return -1;
 }
 
-/* The arguments into the configuration and the profiles; 0, or -1. */
-static int parse_args(int argc, char **argv, rr_rig_config *c, rr_rig_profiles *given)
+/* A non-Hertzian table file into t (its rows malloc'ed); 0, or -1 with a
+ * message (the table's own checks are rr_rig_init's). */
+static int read_nonhertz(const char *path, rr_nh_table *t)
+{
+    FILE *f = fopen(path, "r");
+    double nrows = 0.0, *rows = NULL;
+    long i, n;
+    int ch;
+    if (!f) {
+        fprintf(stderr, "rig_paper: %s: cannot open it\n", path);
+        return -1;
+    }
+    while ((ch = fgetc(f)) == '#')           /* comment lines */
+        while ((ch = fgetc(f)) != EOF && ch != '\n')
+            ;
+    if (ch != EOF)
+        ungetc(ch, f);
+    if (fscanf(f, "%lf %lf %lf %lf %lf %lf", &t->sigma, &t->R0, &t->G, &t->nu, &t->mu_ref,
+               &nrows) != 6 || !(nrows >= 2.0 && nrows <= 1e6) || nrows != (long)nrows) {
+        fprintf(stderr, "rig_paper: %s: expected 'sigma R0 G nu mu_ref rows' first\n", path);
+        fclose(f);
+        return -1;
+    }
+    n = (long)nrows * RR_NH_ROW_LEN;
+    if (!(rows = malloc((size_t)n * sizeof *rows))) {
+        fprintf(stderr, "rig_paper: %s: out of memory\n", path);
+        fclose(f);
+        return -1;
+    }
+    for (i = 0; i < n; i++)
+        if (fscanf(f, "%lf", &rows[i]) != 1) {
+            fprintf(stderr, "rig_paper: %s: row %ld: expected %d numbers a row\n", path,
+                    i / RR_NH_ROW_LEN, RR_NH_ROW_LEN);
+            free(rows);
+            fclose(f);
+            return -1;
+        }
+    fclose(f);
+    t->nrows = (int)nrows;
+    t->rows = rows;
+    return 0;
+}
+
+/* The arguments into the configuration, the profiles and the non-Hertzian
+ * tables; 0, or -1. */
+static int parse_args(int argc, char **argv, rr_rig_config *c, rr_rig_profiles *given,
+                      rr_nh_table nh[2])
 {
     int i, k;
     for (i = 1; i < argc; i++) {
@@ -101,6 +154,15 @@ static int parse_args(int argc, char **argv, rr_rig_config *c, rr_rig_profiles *
             }
             continue;
         }
+        for (k = 0; k < 2 && eq; k++)
+            if (strlen(nonhertz_names[k]) == (size_t)(eq - a)
+                && strncmp(a, nonhertz_names[k], (size_t)(eq - a)) == 0)
+                break;
+        if (eq && k < 2) {
+            if (nh[k].rows || read_nonhertz(eq + 1, &nh[k]) < 0)
+                return -1;
+            continue;
+        }
         for (k = 0; k < 4 && eq; k++)
             if (strlen(slot_names[k]) == (size_t)(eq - a)
                 && strncmp(a, slot_names[k], (size_t)(eq - a)) == 0)
@@ -117,8 +179,9 @@ static int parse_args(int argc, char **argv, rr_rig_config *c, rr_rig_profiles *
     return 0;
 }
 
-static void free_points(rr_rig_profiles *pr)
+static void free_points(rr_rig_profiles *pr, rr_nh_table nh[2])
 {
+    free((void *)nh[0].rows), free((void *)nh[1].rows);
     free((void *)pr->wheel.y), free((void *)pr->wheel.z);
     free((void *)pr->roller.y), free((void *)pr->roller.z);
     free((void *)pr->wheel_right.y), free((void *)pr->wheel_right.z);
@@ -131,6 +194,7 @@ int main(int argc, char **argv)
     rr_rig_config c;
     rr_rig_geometry g;
     rr_rig_profiles given, pr;
+    rr_nh_table nh[2];
     rr_contact_table t;
     rr_rig_params p;
     double rec[RR_REC_COUNT], *data = NULL, *work = NULL, *rig_work = NULL, roller_ref, xi_ref;
@@ -139,9 +203,10 @@ int main(int argc, char **argv)
     int st;
 
     memset(&given, 0, sizeof given);
+    memset(nh, 0, sizeof nh);
     rr_rig_config_default(&c);
-    if (parse_args(argc, argv, &c, &given) < 0) {
-        free_points(&given);
+    if (parse_args(argc, argv, &c, &given, nh) < 0) {
+        free_points(&given, nh);
         return 2;
     }
     rr_rig_geometry_from(&c, &g);
@@ -163,7 +228,8 @@ int main(int argc, char **argv)
     if (!data || !work)
         st = RR_ERR_WORKSPACE;
     else if ((st = rr_rig_table_build_profiles(&g, &pr, data, len, work, wlen, &t, NULL)) >= 0
-             && (st = rr_rig_params_from(&c, &t, &p)) >= 0) {
+             && (st = rr_rig_params_from(&c, &t, &p)) >= 0
+             && (!nh[0].rows || (st = rr_rig_params_set_nonhertz(&p, &nh[0], &nh[1])) >= 0)) {
         /* the creep method's workspace is the caller's, allocated before the
          * run (none for the methods the rig steps with today) */
         nwork = rr_rig_workspace_len(&p);
@@ -193,6 +259,6 @@ int main(int argc, char **argv)
     free(rig_work);
     free(work);
     free(data);
-    free_points(&given);
+    free_points(&given, nh);
     return n < 0 || st < 0 ? 1 : 0;
 }

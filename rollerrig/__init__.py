@@ -40,7 +40,8 @@ from .geometry import (ContactSide, ContactTable, Patch, PatchShape, Profile, Ri
 from .rig import control
 from .rig import (CreepageController, LinearCreepages, Rig, RigContact, RigExact, RigInfo,
                   RigPose, RigResult, RigSignals, WheelContact, build_rig, default_parameters,
-                  linear_creepages, load_parameters, replay, rig_contact, rig_exact, simulate)
+                  linear_creepages, load_parameters, replay, rig_contact, rig_exact,
+                  rig_nonhertz_table, simulate)
 from .analysis import exact_table, reference
 from .analysis.exact_table import ExactTable, build_exact_table
 from .analysis.fit import FitResult, fit_modified_fastsim, fit_polach
@@ -82,6 +83,7 @@ __all__ = [
     "fit_modified_fastsim", "FitResult", "sweep", "sweep_rig", "reference", "ExactSolution",
     "exact_field", "exact_solve", "exact_richardson", "Patch", "undeformed_distance",
     "PatchShape", "patch_shape", "RigExact", "rig_exact", "exact_table", "ExactTable",
+    "rig_nonhertz_table",
     "build_exact_table", "control", "RigSignals", "RigInfo", "CreepageController",
     "get_include", "get_library_dir", "get_source_dir", "get_pkgconfig_dir",
 ]

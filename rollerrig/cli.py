@@ -73,15 +73,16 @@ def _checked_output(path, what, suffix=None):
         raise _Refused(str(e)) from None
 
 
-def _load_scenario(path, method=None):
+def _load_scenario(path, method=None, patch=None):
     """The scenario file's parameters, checked as rollerrig.fmu.check_scenario
     does for both commands: every problem at once, then the rig built from
-    them (with --method if given)."""
+    them (with --method, --patch if given)."""
     from .fmu import check_scenario
-    if path is None:
+    if path is None and patch is None:
         return None
     try:
-        return check_scenario(path, source="--scenario", method=method)[0]
+        return check_scenario(path, source="--scenario" if path else "--patch", method=method,
+                              patch=patch)[0]
     except RollerRigError as e:
         raise _Refused(str(e)) from None
 
@@ -111,7 +112,7 @@ def _simulate(args):
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", RollerRigWarning)
         try:
-            params = _load_scenario(args.scenario, args.method)
+            params = _load_scenario(args.scenario, args.method, args.patch)
             made = _prepare_out(args.out)
             for path in paths:
                 _checked_output(path, "--out")
@@ -346,6 +347,10 @@ def build_parser():
     p.add_argument("--method", choices=rig_methods, metavar="METHOD",
                    help=f"creep-force method of the rig: {', '.join(rig_methods)} "
                    f"(default the scenario's contact.creep_method)")
+    p.add_argument("--patch", choices=("hertz", "nonhertz"), help="the contact's patch "
+                   "(contact.patch; default the scenario's, hertz): nonhertz builds the "
+                   "non-Hertzian contact's table of the rig's pair first (about a minute on 2 "
+                   "cores) unless contact.nonhertz_table names a saved one")
     p.add_argument("--record-every", type=_positive_int, default=1, metavar="K",
                    help="record every K-th sample only (long runs: the records are capped "
                    "at 1 GiB)")

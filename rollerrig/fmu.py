@@ -187,7 +187,34 @@ def _start_config_c(P, source):
         lines.append(f"    if (st == 0)\n        st = {call};")
     lines += ["    return st;", "}", ""]
     lines += _start_profiles_c(real_profiles.profile_points(P))
+    lines += _start_nonhertz_c(P)
     return "\n".join(lines)
+
+
+def _start_nonhertz_c(P):
+    """rr_fmu_start_nonhertz of fmu_start.c: on contact.patch = "nonhertz"
+    the tables simulate() runs on (rollerrig.rig.nonhertz_rig: built from
+    the rig's pair or read from contact.nonhertz_table), their rows exact
+    hexadecimal constants; else none."""
+    head = ["", "int rr_fmu_start_nonhertz(rr_nh_table t[2])", "{"]
+    if P["contact"]["patch"] != "nonhertz":
+        return head + ["    (void)t;", "    return 0;", "}", ""]
+    from .rig import build, nonhertz_rig
+    nh = nonhertz_rig.table_for(P, build._geometry(P))
+    lines = []
+    sets = head[:]
+    for k, side in enumerate((nh.left, nh.right)):
+        flat = side.rows.reshape(-1)
+        body = ",\n    ".join(", ".join(float(x).hex() for x in flat[i:i + 4])
+                              for i in range(0, flat.size, 4))
+        lines.append(f"static const double nonhertz_rows{k}[{flat.size}] = {{\n    {body}}};")
+        sigma, R0, G, nu, mu_ref = side.head
+        sets += [f"    t[{k}].nrows = {side.rows.shape[0]};",
+                 f"    t[{k}].rows = nonhertz_rows{k};",
+                 f"    t[{k}].sigma = {float(sigma).hex()};", f"    t[{k}].R0 = {float(R0).hex()};",
+                 f"    t[{k}].G = {float(G).hex()};", f"    t[{k}].nu = {float(nu).hex()};",
+                 f"    t[{k}].mu_ref = {float(mu_ref).hex()};"]
+    return [""] + lines + sets + ["    return 1;", "}", ""]
 
 
 def _start_profiles_c(points):
@@ -212,16 +239,17 @@ def _start_profiles_c(points):
             + ["", "void rr_fmu_start_profiles(rr_rig_profiles *pr)", "{"] + sets + ["}", ""])
 
 
-def check_scenario(scenario, *, source, method=None):
+def check_scenario(scenario, *, source, method=None, patch=None):
     """(checked parameters, what they come from) of a scenario: None (the
     defaults), a nested dict or the path of a TOML file, checked as simulate
     checks it: every value (one RollerRigError listing every problem), then
     the rig built from them with `method` (default their
     contact.creep_method), so that one it cannot start from (a value that
     overflows the C rig, a method that does not suit the friction law) is
-    refused before any work.  Messages begin with `source` and the path."""
+    refused before any work.  Messages begin with `source` and the path.
+    patch: contact.patch for the run (None: the scenario's)."""
     from .rig import build, params as rig_params
-    if scenario is None:
+    if scenario is None and patch is None:
         return rig_params.default_parameters(), "nothing (the defaults)"
     if isinstance(scenario, (str, os.PathLike)):
         source = f"{source} {os.fspath(scenario)}"
@@ -233,7 +261,10 @@ def check_scenario(scenario, *, source, method=None):
         real_profiles.relative_to(params, os.path.dirname(os.path.abspath(scenario)))
         what = f"the scenario {Path(scenario).name}"
     else:
-        params, what = scenario, "the scenario given"
+        params, what = scenario, "the scenario given" if scenario else "the defaults"
+    if patch is not None:
+        params = {k: dict(v) if isinstance(v, dict) else v for k, v in (params or {}).items()}
+        params["contact"] = {**params.get("contact", {}), "patch": patch}
     P = rig_params.check_parameters(params, source=source)
     build._build(source, P, dt=None, method=method, substeps=None, ode=None, nx=None,
                  ny=None, roller_speed=None, start="rolling", creep={})

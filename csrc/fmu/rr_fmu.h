@@ -203,6 +203,10 @@ typedef struct {
     rr_rig_profiles points, table_pr;
     double *profile_work;
     long profile_work_cap;              /* doubles allocated */
+    /* the non-Hertzian contact's tables the unit was given
+     * (rr_fmu_set_nonhertz; their rows the caller's), nonhertz_ok: both held */
+    rr_nh_table nonhertz[2];
+    int nonhertz_ok;
     /* the rig's workspace for its creep method (rr_rig_workspace_len) */
     double *rig_work;
     size_t rig_work_cap;            /* doubles allocated */
@@ -297,6 +301,19 @@ void rr_fmu_release(rr_fmu *m);
  * holds none); RR_ERR_SEQUENCE after rr_fmu_enter_init.
  */
 int rr_fmu_set_profiles(rr_fmu *m, const rr_rig_profiles *pr);
+
+/*
+ * rr_fmu_set_nonhertz - the non-Hertzian contact's tables (left, right) the
+ * configuration's contact.patch = "nonhertz" reads (rr_rig_params_set_nonhertz;
+ * the generated data of an FMU built from such a scenario): the headers
+ * copied, the rows kept by pointer (they must outlive the unit); left and
+ * right NULL: none (contact.patch = "nonhertz" then fails the
+ * initialisation).  Call it after rr_fmu_init, before the initialisation.
+ * Status: RR_ERR_NULL (one of the two NULL); RR_ERR_TABLE (a table not valid,
+ * rr_nonhertz_table_check; the unit then holds none); RR_ERR_SEQUENCE after
+ * rr_fmu_enter_init.
+ */
+int rr_fmu_set_nonhertz(rr_fmu *m, const rr_nh_table *left, const rr_nh_table *right);
 
 /* The message of the last error or warning ("" after success). */
 const char *rr_fmu_message(const rr_fmu *m);

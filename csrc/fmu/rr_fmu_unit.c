@@ -193,6 +193,29 @@ int rr_fmu_set_profiles(rr_fmu *m, const rr_rig_profiles *pr)
     return RR_OK;
 }
 
+int rr_fmu_set_nonhertz(rr_fmu *m, const rr_nh_table *left, const rr_nh_table *right)
+{
+    int k, st, bad;
+    if (!m)
+        return RR_ERR_NULL;
+    if (m->s.mode != RR_FMU_INSTANTIATED)
+        return wrong_mode(m, "rr_fmu_set_nonhertz", "instantiated");
+    m->nonhertz_ok = 0;
+    if (!left && !right)
+        return RR_OK;
+    if (!left || !right)
+        return fail(m, RR_ERR_NULL, "rr_fmu_set_nonhertz: give both sides' tables");
+    for (k = 0; k < 2; k++) {
+        const rr_nh_table *t = k == 0 ? left : right;
+        if ((st = rr_nonhertz_table_check(t, &bad)) != RR_OK)
+            return fail(m, st, "rr_fmu_set_nonhertz: the %s table, row %d: %s",
+                        k == 0 ? "left" : "right", bad, rr_status_message(st));
+        m->nonhertz[k] = *t;
+    }
+    m->nonhertz_ok = 1;
+    return RR_OK;
+}
+
 /* The profiles of configuration c: its scales and gauge, and for each row
  * that says "points" the unit's points (n = -1 where it holds none). */
 static void profiles_for(const rr_fmu *m, const rr_rig_config *c, rr_rig_profiles *pr)
@@ -382,6 +405,13 @@ static int derive(rr_fmu *m, const rr_fmu_config *f, rr_rig_params *p)
     if ((st = rr_rig_params_from(&f->c, &m->table, p)) < 0)
         return fail(m, st, "the rig's parameters: %s", rr_status_message(st));
     p->contact.creep = o;
+    if (p->contact.patch == RR_RIG_PATCH_NONHERTZ) {
+        if (!m->nonhertz_ok)
+            return fail(m, RR_ERR_NULL, "contact.patch = \"nonhertz\": this FMU carries no "
+                        "non-Hertzian table (build it from a scenario with contact.patch = "
+                        "\"nonhertz\")");
+        rr_rig_params_set_nonhertz(p, &m->nonhertz[0], &m->nonhertz[1]);
+    }
     if ((st = rr_rig_check(p)) < 0)
         return fail(m, st, "the rig's parameters: %s", rr_status_message(st));
     return RR_OK;
@@ -742,6 +772,9 @@ int rr_fmu_restore(rr_fmu *m, const rr_fmu_state *st)
     m->s = *st;
     if (m->s.ready) {
         m->s.p.contact.table = &m->table;
+        /* the state's tables are this unit's (its patch needs them: rebind checks) */
+        m->s.p.contact.nonhertz[0] = m->nonhertz_ok ? &m->nonhertz[0] : NULL;
+        m->s.p.contact.nonhertz[1] = m->nonhertz_ok ? &m->nonhertz[1] : NULL;
         m->s.rig.work = m->rig_work;
         m->s.rig.work_len = m->rig_work_cap;
         if ((status = rr_rig_rebind(&m->s.rig, &m->s.p)) < 0)
@@ -749,6 +782,7 @@ int rr_fmu_restore(rr_fmu *m, const rr_fmu_state *st)
                         rr_status_message(status));
     } else {
         m->s.p.contact.table = NULL;
+        m->s.p.contact.nonhertz[0] = m->s.p.contact.nonhertz[1] = NULL;
         m->s.rig.p = NULL;
         m->s.rig.ode.model = NULL;
     }

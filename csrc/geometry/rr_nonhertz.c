@@ -258,7 +258,8 @@ static void correction(const double *p, double e, double x, double y, double r[3
 /* Patch p of a row at the row's lowering dz: *out, and *vert the vertical
  * component of its force. */
 static int patch_forces(const rr_nh_table *tb, const double *p, double dz, const rr_motion *ws,
-                        const rr_nh_state *s, rr_nh_patch *out, double *vert, int *calls)
+                        const rr_nh_state *s, const double law[2], rr_nh_patch *out,
+                        double *vert, int *calls)
 {
     const double e = dz - p[0], sig = tb->sigma;
     double t, d, PY, PZ, xc, yc, ab, K11, K22, K23, N, k[4], theta = 0.0;
@@ -316,16 +317,30 @@ static int patch_forces(const rr_nh_table *tb, const double *p, double dz, const
     cp.cphi = sp * k[2];
     cp.friction.mu0 = s->mu;
     cp.friction.A = 1.0;
+    if (law[0] != 1.0 && law[1] != 0.0)
+        /* the falling law at the patch's rigid slip speed: one Coulomb mu */
+        cp.friction.mu0 = s->mu * ((1.0 - law[0]) * exp(-law[1] * k[3] * hypot(cxc, cyc))
+                                   + law[0]);
     (*calls)++;
     if ((st = rr_exact_table_forces(&rr_exact_table_builtin, &cp, &f)) < 0)
         return st;
     /* plus the tabulated exact departure (normalised by this friction) */
-    muN = s->mu * N;
+    muN = cp.friction.mu0 * N;
     correction(p, e, K11 * cxc / muN, K22 * cyc / muN, corr);
     out->N = N;
     out->fx = f.fx + muN * corr[0];
     out->fy = f.fy + muN * corr[1];
     out->mz = f.mz + muN * corr[2];
+    {
+        /* the exact theory's traction never passes mu N; the correction,
+         * interpolated between its nodes, can by ~1e-5 mu N near saturation
+         * (a rig checks the bound): held at it */
+        const double ft = hypot(out->fx, out->fy);
+        if (ft > muN) {
+            out->fx *= muN / ft;
+            out->fy *= muN / ft;
+        }
+    }
     out->delta = d;
     out->cx = cxc;
     out->cy = cyc;
@@ -337,6 +352,8 @@ static int patch_forces(const rr_nh_table *tb, const double *p, double dz, const
         out->t2[m] = fr.t2[m];
         out->n[m] = fr.n[m];
     }
+    out->a = cp.a;
+    out->b = cp.b;
     out->area = node(p, RR_NH_AREA, kn, t) * cbrt(N * N);
     out->pmax = node(p, RR_NH_PMAX, kn, t) * cbrt(N);
     *vert = out->force[2];
@@ -390,13 +407,18 @@ static int solve_dz(const double *row, double target, double *dz_io)
     return RR_ERR_RANGE;
 }
 
-/* One row at vertical load Fz: its patches (out->patch, npatch) and sums. */
+/* One row at vertical load Fz: its patches (out->patch, npatch) and sums;
+ * *tz_io the creep forces' vertical share to start from (the other row's,
+ * 0 for the first: neighbouring rows share most of it, so the second row
+ * settles in one pass where it would take two), the row's on return. */
 static int eval_row(const rr_nh_table *tb, const double *row, const rr_motion *ws,
-                    const rr_nh_state *s, rr_nh_result *out, double *dz_out)
+                    const rr_nh_state *s, const double law[2], rr_nh_result *out,
+                    double *dz_out, double *tz_io)
 {
     const int np = (int)row[1];
     const double *p0 = row + RR_NH_PATCH(0);
-    double Tz = 0.0, T0 = 0.0, r0 = 0.0, r, step, dz, t, a0, a1, vert, total;
+    double Tz = *tz_io < 0.5 * s->Fz ? *tz_io : 0.0;   /* a seed near Fz: from 0 */
+    double T0 = 0.0, r0 = 0.0, r, step, dz, t, a0, a1, vert, total;
     int j, k, st, pass;
     /* a start: the shallowest-gap patch's nodes, N cos(delta) = Fz */
     for (j = 1; j < np; j++)
@@ -432,8 +454,8 @@ static int eval_row(const rr_nh_table *tb, const double *row, const rr_motion *w
         total = 0.0;
         out->npatch = np;
         for (j = 0; j < np; j++) {
-            if ((st = patch_forces(tb, row + RR_NH_PATCH(j), dz, ws, s, &out->patch[j], &vert,
-                                   &out->table_calls)) < 0)
+            if ((st = patch_forces(tb, row + RR_NH_PATCH(j), dz, ws, s, law, &out->patch[j],
+                                   &vert, &out->table_calls)) < 0)
                 return st;
             total += vert;
         }
@@ -442,6 +464,7 @@ static int eval_row(const rr_nh_table *tb, const double *row, const rr_motion *w
         r = Tn - Tz;
         if (fabs(r) < TZ_TOL * s->Fz) {
             *dz_out = dz;
+            *tz_io = Tn;
             return RR_OK;
         }
         /* a secant on the fixed point's residual (at the flange the share
@@ -483,6 +506,8 @@ static void add_patch(rr_nh_patch *a, const rr_nh_patch *b, double w)
     a->cphi += w * b->cphi;
     a->area += w * b->area;
     a->pmax += w * b->pmax;
+    a->a += w * b->a;
+    a->b += w * b->b;
     for (m = 0; m < 3; m++) {
         a->force[m] += w * b->force[m];
         a->point[m] += w * b->point[m];
@@ -502,6 +527,14 @@ static void normalise(double *v)
 
 int rr_nonhertz_wheel(const rr_nh_table *t, const rr_nh_state *s, rr_nh_result *out)
 {
+    return rr_nonhertz_wheel_law(t, s, 1.0, 0.0, 0.0, out);
+}
+
+int rr_nonhertz_wheel_law(const rr_nh_table *t, const rr_nh_state *s, double A, double B,
+                          double tz_seed, rr_nh_result *out)
+{
+    const double law[2] = {A, B};
+    double tz = isfinite(tz_seed) ? tz_seed : 0.0;
     rr_nh_result rr[2];
     const double *row[2];
     double w, wt[2];
@@ -522,7 +555,9 @@ int rr_nonhertz_wheel(const rr_nh_table *t, const rr_nh_state *s, rr_nh_result *
     }
     if (!(s->Fz > 0.0))
         return RR_ERR_LOAD;
-    if (!(s->mu > 0.0))
+    if (!isfinite(A) || !isfinite(B))
+        return RR_ERR_NONFINITE;
+    if (!(s->mu > 0.0) || !(A > 0.0 && A <= 1.0) || !(B >= 0.0))
         return RR_ERR_FRICTION;
     if (!(s->vmin > 0.0))
         return RR_ERR_SPEED;
@@ -539,7 +574,7 @@ int rr_nonhertz_wheel(const rr_nh_table *t, const rr_nh_state *s, rr_nh_result *
         /* a row of zero weight is not needed (y on a row) */
         if (wt[j] == 0.0)
             continue;
-        if ((st = eval_row(t, row[j], &s->motion[j], s, &rr[j], &rr[j].dz[0])) < 0) {
+        if ((st = eval_row(t, row[j], &s->motion[j], s, law, &rr[j], &rr[j].dz[0], &tz)) < 0) {
             nan_result(out);
             return st;
         }
@@ -547,6 +582,7 @@ int rr_nonhertz_wheel(const rr_nh_table *t, const rr_nh_state *s, rr_nh_result *
     }
     /* the blend: totals, moments about each row's centre, patches by index */
     memset(out, 0, sizeof *out);
+    out->tz = tz;
     out->row = i;
     out->w = w;
     out->table_calls = calls;

@@ -164,6 +164,8 @@ typedef struct {
     double delta;         /* the plane's angle [rad] */
     double cx, cy, cphi;  /* creepages at the centroid [-], [-], [rad/m] */
     double area, pmax;    /* contact area [m^2], peak pressure [Pa] */
+    double a, b;          /* the calibrated ellipse's semi-axes [m] (its linear creep
+                             coefficients the patch's: G a b C11 = K11) */
 } rr_nh_patch;
 
 typedef struct {
@@ -178,6 +180,8 @@ typedef struct {
     int row;                             /* row i */
     double w;                            /* the weight of row i + 1 */
     int table_calls;                     /* rr_exact_table_forces calls spent */
+    double tz;                           /* the creep forces' vertical share the last row
+                                            evaluated settled at [N] (a next call's seed) */
 } rr_nh_result;
 
 /*
@@ -193,5 +197,22 @@ typedef struct {
  *   and rr_exact_table_forces.  On error *out is NaN.
  */
 int rr_nonhertz_wheel(const rr_nh_table *t, const rr_nh_state *s, rr_nh_result *out);
+
+/*
+ * rr_nonhertz_wheel_law - rr_nonhertz_wheel under Polach's falling law
+ * (rr_friction.h) mu(w) = s->mu ((1 - A) exp(-B w) + A), taken per patch
+ * at its rigid slip speed w = |(cx, cy)| V at the centroid (one mu a
+ * patch, as FASTSIM's slip_speed "rigid" takes one a contact); A = 1 or
+ * B = 0: Coulomb.  tz_seed: the creep forces' vertical share [N] the
+ * vertical balance starts from (a previous evaluation's out->tz: a time
+ * step's next state settles in one pass where it would take two; 0, or
+ * not finite, or beyond Fz / 2: from 0); the result depends on it within
+ * the balance's tolerance (1e-4 Fz).  A = 1, B = 0, tz_seed 0:
+ * rr_nonhertz_wheel's doubles.
+ *   status: rr_nonhertz_wheel's; RR_ERR_NONFINITE (A, B), RR_ERR_FRICTION
+ *   (A outside (0, 1], B < 0).
+ */
+int rr_nonhertz_wheel_law(const rr_nh_table *t, const rr_nh_state *s, double A, double B,
+                          double tz_seed, rr_nh_result *out);
 
 #endif

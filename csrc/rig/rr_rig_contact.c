@@ -1,7 +1,26 @@
 /* rr_rig_contact.c - contact evaluation of the wheelset on the rig's rollers. */
 #include <math.h>
+#include <string.h>
 #include "util/rr_common.h"
 #include "rig/rr_rig_contact.h"
+
+/* the model's nonhertz tables: one per side, valid, built for its roller
+ * and material (G as rr_rig_params_from and rollerrig compute it: the same
+ * doubles; a relative 1e-9 for a caller's own rounding) */
+static int nonhertz_check(const rr_rig_contact_model *m)
+{
+    int k;
+    for (k = 0; k < 2; k++) {
+        const rr_nh_table *t = m->nonhertz[k];
+        if (!t)
+            return RR_ERR_NULL;
+        if (rr_nonhertz_table_check(t, NULL) != RR_OK || t->sigma != (k == 0 ? 1.0 : -1.0)
+            || !(fabs(t->R0 - m->R0) <= 1e-12 * m->R0) || !(fabs(t->G - m->G) <= 1e-9 * m->G)
+            || !(fabs(t->nu - m->nu) <= 1e-12))
+            return RR_ERR_TABLE;
+    }
+    return RR_OK;
+}
 
 /* rr_rig_contact_check, its creep method checked into *creep */
 static int model_check(const rr_rig_contact_model *m, rr_creep_checked *creep)
@@ -23,6 +42,10 @@ static int model_check(const rr_rig_contact_model *m, rr_creep_checked *creep)
     if ((st = rr_friction_check(&m->friction)) != RR_OK)
         return st;
     if ((st = rr_creep_check(creep, &m->creep, NULL)) != RR_OK)
+        return st;
+    if (m->patch != RR_RIG_PATCH_HERTZ && m->patch != RR_RIG_PATCH_NONHERTZ)
+        return RR_ERR_PARAM;
+    if (m->patch == RR_RIG_PATCH_NONHERTZ && (st = nonhertz_check(m)) != RR_OK)
         return st;
     /* a case solved iteratively to a tolerance (the exact theory) has no
      * bound on its work a time step could plan on */
@@ -98,6 +121,8 @@ static void wheel_nan(rr_wheel_contact *w, int status)
 
 static void pose_nan(rr_rig_pose *p)
 {
+    p->state.x = p->state.y = p->state.yaw = p->state.vx = p->state.vy = NAN;
+    p->state.yaw_rate = p->state.spin = p->state.roller_spin = NAN;
     vec_nan(p->c, 3);
     vec_nan(p->v, 3);
     vec_nan(p->w, 3);
@@ -128,6 +153,48 @@ static void cross(const double a[3], const double b[3], double out[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+/* The wheelset's pose at state s whose lateral shift is y (the table's
+ * pose tp and slopes there): centre on its circle about the roller axis,
+ * constrained rates.  RR_ERR_GEOMETRY (|x| too large), RR_ERR_RANGE (rates
+ * that overflow), pose NaN then. */
+static int pose_of(const rr_rig_contact_model *m, const rr_rig_state *s, double y,
+                   const rr_wheelset_pose *tp, const rr_wheelset_pose *slope, rr_rig_pose *pose)
+{
+    const double D = m->R0 + tp->z;    /* axle to roller axis, in the plane of the axle */
+    double h, cy, sy, cr, sr, droll;
+    if (!(fabs(s->x) < 0.5 * D)) {
+        pose_nan(pose);
+        return RR_ERR_GEOMETRY;       /* rolled a quarter of the way round: not a rig */
+    }
+    h = sqrt(D * D - s->x * s->x);
+    pose->state = *s;
+    pose->state.y = y;
+    pose->beta = asin(s->x / D);
+    pose->roll = tp->roll;
+    pose->c[0] = s->x;
+    pose->c[1] = y;
+    pose->c[2] = h - m->R0;
+    pose->v[0] = s->vx;
+    pose->v[1] = s->vy;
+    pose->v[2] = (D * slope->z * s->vy - s->x * s->vx) / h;
+    droll = slope->roll * s->vy;
+    pose->roll_rate = droll;
+    cy = cos(s->yaw);
+    sy = sin(s->yaw);
+    cr = cos(tp->roll);
+    sr = sin(tp->roll);
+    /* spin about the axle R_z(yaw) R_x(roll) Y, roll about the yawed X, yaw about Z */
+    pose->w[0] = -s->spin * sy * cr + droll * cy;
+    pose->w[1] = s->spin * cy * cr + droll * sy;
+    pose->w[2] = s->spin * sr + s->yaw_rate;
+    if (!rr_all_finite(pose->v, 3) || !rr_all_finite(pose->w, 3)) {
+        /* rates beyond ~1e300: the constrained rates overflow */
+        pose_nan(pose);
+        return RR_ERR_RANGE;
+    }
+    return RR_OK;
+}
+
 /* rr_rig_kinematics with st the model's status (RR_OK: checked), pose and w
  * not NULL */
 static int kinematics(const rr_rig_contact_model *m, int st, const rr_rig_state *s,
@@ -135,7 +202,7 @@ static int kinematics(const rr_rig_contact_model *m, int st, const rr_rig_state 
 {
     rr_wheelset_pose tp, slope;
     rr_motion wheel, roller;
-    double D = NAN, h, cy, sy, cr, sr, droll;
+    double sy;
     int k;
 
     if (st == RR_OK && !(isfinite(s->x) && isfinite(s->y) && isfinite(s->yaw)
@@ -144,45 +211,15 @@ static int kinematics(const rr_rig_contact_model *m, int st, const rr_rig_state 
         st = RR_ERR_NONFINITE;
     if (st == RR_OK)
         st = rr_contact_table_lookup(m->table, s->y, &tp, &slope, &w[0].geo, &w[1].geo);
-    if (st == RR_OK) {
-        D = m->R0 + tp.z;          /* axle to roller axis, in the plane of the axle */
-        if (!(fabs(s->x) < 0.5 * D))
-            st = RR_ERR_GEOMETRY;  /* rolled a quarter of the way round: not a rig */
-    }
+    if (st == RR_OK)
+        st = pose_of(m, s, s->y, &tp, &slope, pose);
     if (st < 0) {
         pose_nan(pose);
         wheel_nan(&w[0], st);
         wheel_nan(&w[1], st);
         return st;
     }
-
-    /* the wheelset: centre on its circle about the roller axis, constrained rates */
-    h = sqrt(D * D - s->x * s->x);
-    pose->beta = asin(s->x / D);
-    pose->roll = tp.roll;
-    pose->c[0] = s->x;
-    pose->c[1] = s->y;
-    pose->c[2] = h - m->R0;
-    pose->v[0] = s->vx;
-    pose->v[1] = s->vy;
-    pose->v[2] = (D * slope.z * s->vy - s->x * s->vx) / h;
-    droll = slope.roll * s->vy;
-    pose->roll_rate = droll;
-    cy = cos(s->yaw);
     sy = sin(s->yaw);
-    cr = cos(tp.roll);
-    sr = sin(tp.roll);
-    /* spin about the axle R_z(yaw) R_x(roll) Y, roll about the yawed X, yaw about Z */
-    pose->w[0] = -s->spin * sy * cr + droll * cy;
-    pose->w[1] = s->spin * cy * cr + droll * sy;
-    pose->w[2] = s->spin * sr + s->yaw_rate;
-    if (!rr_all_finite(pose->v, 3) || !rr_all_finite(pose->w, 3)) {
-        /* rates beyond ~1e300: the constrained rates overflow */
-        pose_nan(pose);
-        wheel_nan(&w[0], RR_ERR_RANGE);
-        wheel_nan(&w[1], RR_ERR_RANGE);
-        return RR_ERR_RANGE;
-    }
 
     wheel.c[0] = pose->c[0];
     wheel.c[1] = pose->c[1];
@@ -271,6 +308,87 @@ int rr_rig_kinematics_checked(const rr_rig_contact_checked *k, const rr_rig_stat
     return kinematics(bound(k) ? &k->m : NULL, s && bound(k) ? RR_OK : RR_ERR_NULL, s, pose, w);
 }
 
+/* Wheel k (0 left, 1 right) of a finished kinematics by the non-Hertzian
+ * contact (rr_rig_contact.h, Patch) at the caller's normal load N; c->N,
+ * c->friction set, N > 0.  Its status, c filled or not touched on error. */
+static int nonhertz_wheel(const rr_rig_contact_model *m, int k, double N,
+                          const rr_rig_pose *pose, rr_wheel_contact *c)
+{
+    const rr_nh_table *t = m->nonhertz[k];
+    const rr_rig_state *s = &pose->state;
+    rr_nh_state ns;
+    rr_nh_result r;
+    double w, Nsum = 0.0, ab_sum = 0.0, Nmax = -1.0, ab = 1.0, scale;
+    int i, j, st;
+
+    if ((st = rr_friction_check(&c->friction)) != RR_OK)
+        return st;
+    ns.Fz = N * c->n[2];
+    if (!(ns.Fz > 0.0))
+        return RR_ERR_LOAD;                  /* the normal does not lift the wheel */
+    if ((st = rr_nonhertz_locate(t, s->y, &i, &w)) < 0)
+        return st;                           /* the wheelset beyond the table's rows */
+    for (j = 0; j < 2; j++) {
+        /* the wheelset's motion as if at row i + j's shift */
+        rr_wheelset_pose tp, slope;
+        rr_contact_point g[2];
+        rr_rig_pose pr;
+        const double yr = t->rows[(size_t)(i + j) * RR_NH_ROW_LEN];
+        if ((st = rr_contact_table_lookup(m->table, yr, &tp, &slope, &g[0], &g[1])) < 0
+            || (st = pose_of(m, s, yr, &tp, &slope, &pr)) < 0)
+            return st;
+        memcpy(ns.motion[j].c, pr.c, sizeof pr.c);
+        memcpy(ns.motion[j].v, pr.v, sizeof pr.v);
+        memcpy(ns.motion[j].w, pr.w, sizeof pr.w);
+    }
+    ns.y = s->y;
+    ns.mu = c->friction.mu0;
+    ns.roller_spin = s->roller_spin;
+    ns.vmin = m->vmin;
+    ns.x = s->x;
+    ns.yaw = s->yaw;
+    {
+        /* the seed: the last evaluation's share, or, for that evaluation's own
+         * state and load again, the seed it started from (the same doubles) */
+        const double key[9] = {s->x, s->y, s->yaw, s->vx, s->vy, s->yaw_rate, s->spin,
+                               s->roller_spin, N};
+        const double seed = memcmp(key, c->nh_key, sizeof key) == 0 ? c->nh_seed : c->nh_tz;
+        if ((st = rr_nonhertz_wheel_law(t, &ns, c->friction.A, c->friction.B, seed, &r)) < 0)
+            return st;
+        c->nh_seed = seed;
+        c->nh_tz = r.tz;
+        memcpy(c->nh_key, key, sizeof key);
+    }
+    c->f.fx = c->f.fy = c->f.mz = 0.0;
+    for (j = 0; j < r.npatch; j++) {
+        const rr_nh_patch *p = &r.patch[j];
+        Nsum += p->N;
+        c->f.fx += p->fx;
+        c->f.fy += p->fy;
+        c->f.mz += p->mz;
+        ab_sum += p->a * p->b;
+        if (p->N > Nmax) {
+            Nmax = p->N;
+            ab = p->a / p->b;
+        }
+    }
+    if (!(Nsum > 0.0))
+        return RR_ERR_RANGE;
+    scale = N / Nsum;
+    c->f.fx *= scale;
+    c->f.fy *= scale;
+    c->f.mz *= scale;
+    c->hertz.a = sqrt(ab_sum * ab);
+    c->hertz.b = sqrt(ab_sum / ab);
+    c->hertz.p0 = r.pmax;
+    c->hertz.delta = r.w == 0.0 ? r.dz[0] : r.w == 1.0 ? r.dz[1]
+                                        : (1.0 - r.w) * r.dz[0] + r.w * r.dz[1];
+    memcpy(c->force, r.force, sizeof r.force);
+    memcpy(c->moment, r.moment, sizeof r.moment);
+    memcpy(c->frame.p, r.centre, sizeof r.centre);
+    return RR_OK;
+}
+
 /* rr_rig_contact_loads with the model's creep method checked into creep
  * (cst its status) and its workspace, m, N, pose and w not NULL */
 static int loads(const rr_rig_contact_model *m, const rr_creep_checked *creep, int cst,
@@ -293,6 +411,15 @@ static int loads(const rr_rig_contact_model *m, const rr_creep_checked *creep, i
         }
         if (!(N[k] > 0.0)) {
             wheel_nan(c, RR_ERR_LOAD);
+            continue;
+        }
+        if (m->patch == RR_RIG_PATCH_NONHERTZ) {
+            sk = cst < 0 ? cst : nonhertz_wheel(m, k, N[k], pose, c);
+            if (sk < 0)
+                wheel_nan(c, sk);
+            else if (!rr_all_finite(c->force, 3) || !rr_all_finite(c->moment, 3)
+                     || !isnormal(c->hertz.a) || !isnormal(c->hertz.b))
+                wheel_nan(c, RR_ERR_RANGE);
             continue;
         }
         if (!(c->geo.ha > 0.0 && c->geo.hb > 0.0)) {

@@ -39,6 +39,25 @@
  * follow from vx, vy through the table's slopes dz/dy, droll/dy.
  *
  * Normal loads come from the caller (the rig model's normal contact).
+ *
+ * Patch (rr_rig_contact_model.patch).  RR_RIG_PATCH_HERTZ: one Hertz
+ * ellipse at the rigid contact point, its creep forces by the model's
+ * method.  RR_RIG_PATCH_NONHERTZ: each wheel by rr_nonhertz_wheel_law
+ * (geometry/rr_nonhertz.h) from the caller's table of its side, the
+ * wheel's vertical load N n_z (the load the caller gives along the rigid
+ * contact's normal n, the rig's balance as on Hertz), the wheelset's
+ * motion at the two rows around y (this file's pose at x, each row's
+ * shift, yaw and the state's rates) and the wheel's friction law (Polach's
+ * falling law per patch at its rigid slip speed); the model's creep
+ * method is not used.  The wheel's results then: force, moment the
+ * patches' totals; frame.p the load-weighted force centre (the point the
+ * rig's balance and roller moment take the force at); f the patches'
+ * creep forces and spin moments summed, times N / (their normal loads
+ * summed) (the wheel's traction per unit load at the caller's N: |f| <=
+ * mu N); hertz a, b the calibrated ellipse of the patch carrying the most
+ * load, scaled to the patches' summed a b (the integrator's model,
+ * rr_rig.h), p0 the largest peak pressure, delta the blended lowering;
+ * creep, geo, t1, t2, n those of the rigid contact point.
  */
 #ifndef RR_RIG_CONTACT_H
 #define RR_RIG_CONTACT_H
@@ -47,6 +66,10 @@
 #include "geometry/rr_creepage.h"
 #include "geometry/rr_geometry.h"
 #include "contact/rr_hertz.h"
+#include "geometry/rr_nonhertz.h"
+
+/* The contact patch model (rr_rig_contact_model.patch). */
+enum rr_rig_patch { RR_RIG_PATCH_HERTZ = 0, RR_RIG_PATCH_NONHERTZ = 1 };
 
 typedef struct {
     const rr_contact_table *table;  /* geometry against lateral shift */
@@ -56,6 +79,10 @@ typedef struct {
     rr_friction friction;
     rr_creep_opts creep;
     double vmin;        /* least rolling speed for the creepages [m/s] (rr_creepage.h) */
+    int patch;          /* enum rr_rig_patch: RR_RIG_PATCH_HERTZ (0, a zeroed model's) */
+    const rr_nh_table *nonhertz[2];  /* RR_RIG_PATCH_NONHERTZ: the left (sigma +1) and
+                                        right (sigma -1) wheels' tables, the caller's (they
+                                        must outlive the model); unused on Hertz */
 } rr_rig_contact_model;
 
 typedef struct {
@@ -68,6 +95,7 @@ typedef struct {
 } rr_rig_state;
 
 typedef struct {
+    rr_rig_state state; /* the state this is the pose of */
     double c[3];        /* wheelset centre in the rig [m] */
     double roll;        /* roll angle [rad], > 0 lifting the left wheel */
     double roll_rate;   /* its rate, from the constraint [rad/s] */
@@ -90,6 +118,15 @@ typedef struct {
     rr_forces f;            /* creep forces on the wheel along t1, t2; spin moment about n */
     double force[3];        /* contact force on the wheelset, rig frame [N] */
     double moment[3];       /* its moment about the wheelset centre [N m] */
+    double nh_tz;           /* RR_RIG_PATCH_NONHERTZ: the creep forces' vertical share
+                               the wheel's balance settled at [N], and the seed the next
+                               rr_rig_contact_loads on this w starts from (0: none; the
+                               rig keeps it from step to step, rr_nonhertz_wheel_law) */
+    double nh_seed;         /* the seed that evaluation started from */
+    double nh_key[9];       /* and its state and load (x, y, yaw, vx, vy, yaw_rate, spin,
+                               roller_spin, N): the same state and load again start from
+                               the same seed, the same doubles (a rig's re-evaluation after
+                               a rebind or a restored co-simulation state) */
     int status;             /* this wheel's status */
 } rr_wheel_contact;
 
@@ -100,7 +137,10 @@ typedef struct {
  * (vmin <= 0), rr_creep_opts_check, RR_ERR_METHOD (a method that solves
  * each case iteratively to a tolerance, the exact theory: milliseconds to
  * seconds a case, its work not known before a step: not a time-step
- * method; rr_creep_iterative), RR_ERR_NULL.
+ * method; rr_creep_iterative), RR_ERR_NULL; on RR_RIG_PATCH_NONHERTZ
+ * RR_ERR_NULL (a table missing), RR_ERR_TABLE (a table not valid,
+ * rr_nonhertz_table_check, or not the model's: its sigma, R0, G or nu),
+ * and RR_ERR_PARAM for a patch that is neither.
  */
 int rr_rig_contact_check(const rr_rig_contact_model *m);
 
@@ -172,7 +212,11 @@ int rr_rig_kinematics(const rr_rig_contact_model *m, const rr_rig_state *s, rr_r
  *            each wheel's own in w[k].status, so one bad wheel leaves the
  *            other's results valid.  rr_rig_kinematics, rr_hertz
  *            (RR_ERR_LOAD for N <= 0), rr_creep_forces_work, RR_ERR_RANGE (a load
- *            so extreme that the ellipse or a force overflows).
+ *            so extreme that the ellipse or a force overflows).  On
+ *            RR_RIG_PATCH_NONHERTZ instead of Hertz's and the method's: the
+ *            wheel's friction law's (rr_friction_check), RR_ERR_LOAD (N n_z
+ *            not positive), RR_ERR_TABLE (y beyond the wheel's table rows),
+ *            rr_nonhertz_wheel_law's, RR_ERR_RANGE.
  */
 int rr_rig_contact(const rr_rig_contact_model *m, const rr_rig_state *s, const double N[2],
                    rr_rig_pose *pose, rr_wheel_contact w[2]);

@@ -56,6 +56,9 @@ static const char *const roller_profiles[] = {"crowned cylinder", "points", NULL
 /* a right side of its own ("points"), or "" the left's mirrored */
 static const char *const right_profiles[] = {"", "points", NULL};
 static const char *const friction_laws[] = {"polach_falling", "coulomb", NULL};
+static const char *const contact_patches[] = {"hertz", "nonhertz", NULL};
+/* the non-Hertzian table: "" rollerrig builds it, "file" (in rollerrig: a path) */
+static const char *const nonhertz_sources[] = {"", "file", NULL};
 static const char *const ode_methods[] = {"trbdf2", "ros2", "lineuler", NULL};
 static const char *const patch_sides[] = {"both", "left", "right", NULL};
 static const int patch_bits[] = {3, 1, 2};
@@ -201,6 +204,25 @@ static const rr_rig_param params[] = {
     REAL("contact.min_rolling_speed_m_s", "m/s", 0.01, POS, vmin,
          "choice: creepage denominator max(|V|, 0.01 m/s) at standstill (paper section 4.4: "
          "\"special procedure\" for Vn = 0)"),
+    /* the contact's patch (issue 24) */
+    CHOICE("contact.patch", contact_patches, 0, contact_patch,
+           "paper section 4.2: one Hertz ellipse at the rigid contact point; \"nonhertz\": "
+           "the fast non-Hertzian, multi-patch contact from tables per lateral shift built "
+           "by the exact theory (csrc/geometry/rr_nonhertz.h; contact.creep_method unused)"),
+    CHOICE("contact.nonhertz_table", nonhertz_sources, 0, nonhertz_table,
+           "choice: rollerrig builds the table from the rig's profiles, scale, gauge and "
+           "material (about a minute on 2 cores; kept in memory); in rollerrig a file's path "
+           "(.npz of rollerrig.rig_nonhertz_table, checked against the rig's pair); read by "
+           "rollerrig, not by the C rig (rr_rig_params_set_nonhertz)"),
+    REAL("contact.nonhertz_half_range_m", "m", 0.0025, POS, nonhertz_half_range,
+         "choice: the built table's rows cover y within +-2.5 mm (the measured pair's flange "
+         "excursion reaches 2.05 mm); beyond, a wheel off its table stops the run"),
+    REAL("contact.nonhertz_row_spacing_m", "m", 4.0e-5, POS, nonhertz_row_spacing,
+         "scaled: 0.2 mm / 5, the full-size table's spacing (benchmarks/RESULTS.md, "
+         "nonhertz), a quarter of it within 0.06 mm of the rigid contact point's jumps"),
+    INT("contact.nonhertz_elements", 40, 8, 200, nonhertz_elements,
+        "choice: elements across the exact theory's grids of a row (the full-size table's "
+        "40; the linear coefficients from that grid, no Richardson step)"),
     /* [roller_drive] */
     REAL("roller_drive.kp_N_m_s_per_rad", "N m s/rad", 300.0, NONNEG, roller_kp,
          "paper section 6: Kp = 300 (roller); T_ref = Kp e + KI sum(e), eq. 10, e in rad/s, T "
@@ -618,6 +640,7 @@ int rr_rig_params_from(const rr_rig_config *c, const rr_contact_table *t, rr_rig
     }
     creep_default(&p->contact.creep);
     p->contact.vmin = c->vmin;
+    p->contact.patch = c->contact_patch == 1 ? RR_RIG_PATCH_NONHERTZ : RR_RIG_PATCH_HERTZ;
     adhesion_from(c, p->contact.friction, &p->adhesion);
     p->lateral.n = c->lateral_t.n;
     for (i = 0; i < c->lateral_t.n; i++) {
@@ -638,6 +661,16 @@ int rr_rig_params_from(const rr_rig_config *c, const rr_contact_table *t, rr_rig
         }
     }
     return t ? rr_rig_params_set_table(p, t) : RR_OK;
+}
+
+int rr_rig_params_set_nonhertz(rr_rig_params *p, const rr_nh_table *left,
+                               const rr_nh_table *right)
+{
+    if (!p || !left || !right)
+        return RR_ERR_NULL;
+    p->contact.nonhertz[0] = left;
+    p->contact.nonhertz[1] = right;
+    return RR_OK;
 }
 
 int rr_rig_params_default(rr_rig_params *p)

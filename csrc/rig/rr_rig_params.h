@@ -130,6 +130,13 @@ typedef struct {
     int patch_rollers;          /* index: both, left, right */
     /* disturbance: a lateral force in time */
     rr_rig_list lateral_t, lateral_f;
+    /* the contact's patch (issue 24): index hertz, nonhertz; the non-Hertzian
+     * table's source ("" built, "file") and build settings, read by rollerrig
+     * (a C caller gives the tables: rr_rig_params_set_nonhertz) */
+    int contact_patch;
+    int nonhertz_table;
+    double nonhertz_half_range, nonhertz_row_spacing;
+    int nonhertz_elements;
 } rr_rig_config;
 
 typedef struct {
@@ -325,6 +332,17 @@ int rr_rig_params_from(const rr_rig_config *c, const rr_contact_table *t, rr_rig
  * the table's row at y = 0.  Status of the lookup; RR_ERR_NULL.
  */
 int rr_rig_params_set_table(rr_rig_params *p, const rr_contact_table *t);
+
+/*
+ * rr_rig_params_set_nonhertz - the non-Hertzian contact's tables the rig
+ * reads on contact.patch = "nonhertz" (rr_rig_contact.h, Patch): left
+ * (sigma +1) and right (sigma -1), the caller's (they must outlive p; built
+ * for the rig's profiles, scale, roller radius and material: rollerrig's
+ * rig_nonhertz_table, or rr_nonhertz_row per row), checked at rr_rig_init.
+ * Status: RR_ERR_NULL.
+ */
+int rr_rig_params_set_nonhertz(rr_rig_params *p, const rr_nh_table *left,
+                               const rr_nh_table *right);
 
 /*
  * rr_rig_params_default - the paper's rig at the defaults (sample time

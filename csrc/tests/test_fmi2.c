@@ -26,6 +26,13 @@ void rr_fmu_start_profiles(rr_rig_profiles *pr)
     memset(pr, 0, sizeof *pr);
 }
 
+/* no non-Hertzian tables (contact.patch = "hertz") */
+int rr_fmu_start_nonhertz(rr_nh_table t[2])
+{
+    (void)t;
+    return 0;
+}
+
 /* the value reference of a parameter row */
 static fmi2ValueReference vr_param(const char *name)
 {

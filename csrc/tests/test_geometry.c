@@ -342,6 +342,7 @@ static void test_rig_contact(void)
     t.y0 = -0.005; t.dy = 1e-4; t.n = 101; t.data = data;
     CHECK_STATUS(rr_contact_table_build(&l, &r, &o, &t, 0), RR_OK, "rig: table");
     rr_contact_table_lookup(&t, 0.0, &tp, 0, &cl, &cr);
+    memset(&m, 0, sizeof m);           /* Hertz: the non-Hertzian members zero */
     m.table = &t;
     m.R0 = 0.2;
     m.estar = rr_estar(2.1e11, 0.28, 2.1e11, 0.28);

@@ -19,6 +19,8 @@ typedef struct {
     rr_rig_params p;
     rr_rig rig;
     double *work;              /* the rig's workspace (rr_rig_workspace_len), or NULL */
+    PyObject *nh_rows[2];      /* the non-Hertzian tables' rows (left, right), kept alive */
+    rr_nh_table nh[2];         /* and the tables over them (contact.patch = "nonhertz") */
     int ready;                 /* 1 after a successful __init__ */
     int busy;                  /* 1 while a method works on the rig */
 } RigObject;
@@ -112,15 +114,46 @@ static void rig_leave(RigObject *self)
 static void Rig_dealloc(RigObject *self)
 {
     PyMem_Free(self->work);
+    Py_XDECREF(self->nh_rows[0]);
+    Py_XDECREF(self->nh_rows[1]);
     Py_XDECREF(self->data);
     Py_TYPE(self)->tp_free((PyObject *)self);
 }
 
-/* Rig(data, y0, dy, params, creep, roller_speed): params {"section.key": value}
- * (rig_config_from), the rig's parameters derived by rr_rig_params_from */
+/* One side's non-Hertzian table from (rows, (sigma, R0, G, nu, mu_ref)): rows a
+ * C-contiguous float64 (n, RR_NH_ROW_LEN) array, kept by *keep (a new
+ * reference); the rig checks the table itself (rr_rig_init). */
+static int nh_side(PyObject *side, rr_nh_table *t, PyObject **keep)
+{
+    PyObject *rows, *head;
+    PyArrayObject *a;
+    if (!PyArg_ParseTuple(side, "OO", &rows, &head))
+        return -1;
+    a = (PyArrayObject *)rows;
+    if (!PyArray_Check(rows) || PyArray_TYPE(a) != NPY_DOUBLE || PyArray_NDIM(a) != 2
+        || PyArray_DIM(a, 1) != RR_NH_ROW_LEN || !PyArray_IS_C_CONTIGUOUS(a)
+        || PyArray_DIM(a, 0) > 100000000) {
+        PyErr_Format(PyExc_ValueError, "Rig: a nonhertz table's rows must be a C-contiguous "
+                     "float64 array of shape (n, %d)", RR_NH_ROW_LEN);
+        return -1;
+    }
+    memset(t, 0, sizeof *t);
+    t->nrows = (int)PyArray_DIM(a, 0);
+    t->rows = PyArray_DATA(a);
+    if (!PyArg_ParseTuple(head, "ddddd", &t->sigma, &t->R0, &t->G, &t->nu, &t->mu_ref))
+        return -1;
+    Py_INCREF(rows);
+    Py_XSETREF(*keep, rows);
+    return 0;
+}
+
+/* Rig(data, y0, dy, params, creep, roller_speed[, nonhertz]): params
+ * {"section.key": value} (rig_config_from), the rig's parameters derived by
+ * rr_rig_params_from; nonhertz None or ((left rows, head), (right rows,
+ * head)): the tables of contact.patch = "nonhertz" */
 static int Rig_init(RigObject *self, PyObject *args, PyObject *kwargs)
 {
-    PyObject *dobj, *params, *creep;
+    PyObject *dobj, *params, *creep, *nhobj = Py_None;
     double y0, dy, roller_speed;
     int st;
     (void)kwargs;
@@ -130,8 +163,8 @@ static int Rig_init(RigObject *self, PyObject *args, PyObject *kwargs)
     }
     /* from here on, until success, the rig is not usable */
     self->ready = 0;
-    if (!PyArg_ParseTuple(args, "OddO!O!d:Rig", &dobj, &y0, &dy, &PyDict_Type, &params,
-                          &PyDict_Type, &creep, &roller_speed))
+    if (!PyArg_ParseTuple(args, "OddO!O!d|O:Rig", &dobj, &y0, &dy, &PyDict_Type, &params,
+                          &PyDict_Type, &creep, &roller_speed, &nhobj))
         return -1;
     if (parse_table(dobj, y0, dy, "Rig", &self->table) < 0)
         return -1;
@@ -153,6 +186,13 @@ static int Rig_init(RigObject *self, PyObject *args, PyObject *kwargs)
         if (parse_opts(creep, "Rig", NULL, &k) < 0)
             return -1;
         self->p.contact.creep = k.o;
+    }
+    if (nhobj != Py_None) {
+        PyObject *l, *r;
+        if (!PyArg_ParseTuple(nhobj, "OO", &l, &r) || nh_side(l, &self->nh[0], &self->nh_rows[0]) < 0
+            || nh_side(r, &self->nh[1], &self->nh_rows[1]) < 0)
+            return -1;
+        rr_rig_params_set_nonhertz(&self->p, &self->nh[0], &self->nh[1]);
     }
     Py_INCREF(dobj);
     Py_XSETREF(self->data, dobj);

@@ -44,6 +44,7 @@ static int rig_contact_kernel(void *ctx, npy_intp start, npy_intp stop)
         s.roller_spin = IN(b->in[7], i);
         N[0] = IN(b->in[8], i);
         N[1] = IN(b->in[9], i);
+        memset(w, 0, sizeof w);                /* each state on its own: no seed */
         if (b->kin_only) {
             b->status[i] = (npy_int8)rr_rig_kinematics_checked(b->m, &s, &pose, w);
             for (k = 0; k < 2; k++) {
@@ -86,6 +87,7 @@ PyObject *py_rig_contact(PyObject *self, PyObject *args, PyObject *kwargs)
     int k, kin_only = 0;
     (void)self;
 
+    memset(&m, 0, sizeof m);               /* Hertz: the patch's rows zero */
     if (!PyArg_ParseTuple(args, "Odd(dddddddd)OOOOOOOOOO:rig_contact", &dobj, &y0, &dy, &m.R0,
                           &m.estar, &m.G, &m.nu, &m.friction.mu0, &m.friction.A,
                           &m.friction.B, &m.vmin, &objs[0], &objs[1], &objs[2], &objs[3],

@@ -1,14 +1,15 @@
 """The rig in time (the wing of csrc/rig/): its parameters (params), the C
 rig built from them (build), a run and its record (run, result), the rig's
 contact model over arrays (contact), a controller of the caller's in the
-loop (control), one wheel solved by the exact theory (exact).  This face
+loop (control), one wheel solved by the exact theory (exact), the
+non-Hertzian contact's table of the rig's pair (nonhertz_rig).  This face
 hands on the public names of its rooms; a private name comes from its room
 (rollerrig.rig.params._report_problems, say)."""
 from .params import (DEFAULTS_PATH, MAX_DT, MAX_DURATION, MAX_PARAMETER_FILE_BYTES, MIN_DT,
                      ODE_METHODS, PARAMETERS, RETIRED, RigParameter, check_parameters,
                      default_parameters, defaults_toml, load_parameters, write_defaults)
 from .result import RECORD, RECORD_FIELDS, RECORD_UNITS, RigResult
-from .build import CREEP_OPTIONS, GEOMETRY_KEYS, RIG_METHODS, Rig, build_rig
+from .build import CREEP_OPTIONS, GEOMETRY_KEYS, RIG_METHODS, Rig, build_rig, rig_nonhertz_table
 from .run import RECORD_BYTES_CAP, UNTRUSTED_MIN, UNTRUSTED_SHARE, replay, schedule, simulate
 from .contact import (LinearCreepages, RigContact, RigPose, WheelContact, linear_creepages,
                       rig_contact)

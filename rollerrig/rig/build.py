@@ -11,6 +11,7 @@ import numpy as np
 from .. import _core
 from . import control as _control
 from . import real_profiles as _real_profiles
+from . import nonhertz_rig as _nonhertz_rig
 from .._errors import RollerRigError, status_message
 from .._binding import METHODS, _as_float, check_creep_options, core, loop_method, rig_method
 from ..geometry.profiles import Profile
@@ -305,18 +306,29 @@ def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, c
     def make(Q, run, table=None):
         table = _geometry(Q) if table is None else table
         cp = _c_params(Q, dt, substeps, ode, run)
+        # the non-Hertzian tables of P (built or read once, below); another
+        # set of values (_culprits' search) is tried on Hertz
+        nh = nh_tables if Q is P else None
+        if nh is None:
+            cp["contact.patch"] = "hertz"
         # the C side (rr_rig_params_set_table) takes eq. 15-16's radii at the
         # centred wheelset's rolling radii, as a rig is calibrated: the
         # profiles' nominal radii would bias the creepage by
         # (r - r0)/r0 + (R0 - R)/R0, about 0.2 % of creepage here
         return core(_core.Rig, table.data, table.y0, table.dy, cp, opts,
                     float(cp["scenario.roller_speed_m_s"]) / float(Q["roller"]["radius_m"])
-                    if start == "rolling" else 0.0)
+                    if start == "rolling" else 0.0, nh)
     try:
         table = _geometry(P)
     except RollerRigError as e:
         raise _cannot_start(func, e, _culprits(P, run, names, GEOMETRY_KEYS,
                                                lambda Q, run: _geometry(Q))) from None
+    nh_tables = None
+    if P["contact"]["patch"] == "nonhertz":
+        try:
+            nh_tables = _nonhertz_rig.c_tables(_nonhertz_rig.table_for(P, table))
+        except RollerRigError as e:
+            raise RollerRigError(f"{func}: contact.patch = 'nonhertz': {e}") from None
     try:
         rig = make(P, run, table)
     except (ValueError, RollerRigError) as e:
@@ -406,8 +418,10 @@ def write_points(params, folder):
     this module says), one text file per real profile of `params` (a nested
     dict or a scenario file's path, checked): folder/wheel.txt, roller.txt,
     wheel_right.txt, roller_right.txt, two numbers a line (y z [m], every
-    digit: %.17g), "# end natural" where the profile's spline is natural.
-    For a C program (examples/rig_paper.c).  Returns {slot: path}."""
+    digit: %.17g), "# end natural" where the profile's spline is natural;
+    on contact.patch = "nonhertz" its tables too (nonhertz_left.txt,
+    nonhertz_right.txt).  For a C program (examples/rig_paper.c).  Returns
+    {slot: path}."""
     P = _parameters("write_points", params)
     points = _real_profiles.profile_points(P)
     out = {}
@@ -420,4 +434,34 @@ def write_points(params, folder):
             fh.write(f"# {name}: y z [m], full size ({'end natural' if s[2] else 'not-a-knot'})\n")
             fh.writelines(f"{y:.17g} {z:.17g}\n" for y, z in zip(s[0], s[1]))
         out[name] = path
+    if P["contact"]["patch"] == "nonhertz":
+        # the non-Hertzian tables the run takes (built or read), for
+        # examples/rig_paper.c's nonhertz_left=, nonhertz_right=
+        nh = _nonhertz_rig.table_for(P, _geometry(P))
+        for name, side in (("nonhertz_left", nh.left), ("nonhertz_right", nh.right)):
+            path = os.path.join(os.fspath(folder), f"{name}.txt")
+            with open(path, "w") as fh:
+                fh.write(f"# {name}: sigma R0 G nu mu_ref rows, then the rows "
+                         f"({side.rows.shape[1]} numbers each; csrc/geometry/rr_nonhertz.h)\n")
+                fh.write(" ".join(f"{v:.17g}" for v in side.head) + f" {side.rows.shape[0]}\n")
+                for r in side.rows:
+                    fh.write(" ".join(f"{v:.17g}" for v in r) + "\n")
+            out[name] = path
     return out
+
+
+def rig_nonhertz_table(params=None, path=None):
+    """The non-Hertzian contact's table of the rig of `params` (None, a nested
+    dict or a scenario file, as simulate takes them; the contact section's
+    nonhertz_* rows set the build), built (or read: contact.nonhertz_table)
+    as simulate(..., contact.patch = "nonhertz") would; saved as .npz at
+    `path` if given (then give it as contact.nonhertz_table).  Returns the
+    rollerrig.NonHertzTable."""
+    P = _parameters("rig_nonhertz_table", params)
+    if path is not None:
+        from .._files import check_output
+        check_output(path, what="rig_nonhertz_table: path")
+    nh = _nonhertz_rig.table_for(P, _geometry(P))
+    if path is not None:
+        _nonhertz_rig.save(nh, P, os.fspath(path))
+    return nh

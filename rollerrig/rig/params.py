@@ -328,7 +328,23 @@ def _c_values(P):
         for key in keys:
             name = f"{section}.{key}"
             out[name] = _real_profiles.c_value(section, key, out[name])
+    # a table file's path is the C rig's "file" (rollerrig reads it: nonhertz_rig)
+    v = out[_NH_TABLE]
+    if isinstance(v, str) and v:
+        out[_NH_TABLE] = "file"
     return out
+
+
+_NH_TABLE = "contact.nonhertz_table"
+
+
+def _nonhertz_problems(P):
+    """contact.nonhertz_table: "" (built) or a file's path (read at the run)."""
+    v = P["contact"]["nonhertz_table"]
+    if not isinstance(v, str):
+        return [f"{_NH_TABLE} must be '' (built from the rig's profiles) or a table file's "
+                f"path (rollerrig.rig_nonhertz_table), got {_short(v)}"]
+    return []
 
 
 def _loop_sentence(name, values, drive, rho, lo, hi):
@@ -483,12 +499,13 @@ def _check_values(P):
     rule, then for the rules between keys: the rig rows by the C report
     (but for the rules a run judges at its dt), the creep rows by the
     registry."""
-    profiles = _real_profiles.problems(P)
+    profiles = _real_profiles.problems(P) + _nonhertz_problems(P)
     values = _c_values(P)
     if profiles:                       # the C rows of a bad one judged at their default
         for section, keys in _real_profiles.PROFILE_ROWS.items():
             for key in keys:
                 values[f"{section}.{key}"] = _defaults()[section][key]
+        values[_NH_TABLE] = _defaults()["contact"]["nonhertz_table"]
     return profiles + _report_problems(values, skip=_RUN_RULES) + _creep_problems(P["contact"])
 
 

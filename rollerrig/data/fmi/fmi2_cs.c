@@ -152,8 +152,11 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     rr_fmu_init(&in->m, &start, rr_fmi_alloc, rr_fmi_free, NULL, type_names);
     {   /* the real profiles' points the build generated (none for the cone) */
         rr_rig_profiles points;
+        rr_nh_table nonhertz[2];
         rr_fmu_start_profiles(&points);
         rr_fmu_set_profiles(&in->m, &points);
+        if (rr_fmu_start_nonhertz(nonhertz))
+            rr_fmu_set_nonhertz(&in->m, &nonhertz[0], &nonhertz[1]);
     }
     log_msg(in, fmi2OK, RR_FMI_LOG_EVENTS, "fmi2Instantiate", "instantiated");
     return in;

@@ -22,5 +22,9 @@ int rr_fmu_start_config(rr_fmu_config *f);
  * rr_rig_profiles: full size, referenced as rollerrig.rig.real_profiles
  * reads them; n = 0 in a slot without), static data for rr_fmu_set_profiles. */
 void rr_fmu_start_profiles(rr_rig_profiles *pr);
+/* The non-Hertzian contact's tables the build generated (contact.patch =
+ * "nonhertz"; their rows static data, for rr_fmu_set_nonhertz): 1, or 0
+ * where the build carries none. */
+int rr_fmu_start_nonhertz(rr_nh_table t[2]);
 
 #endif
