@@ -678,10 +678,17 @@ def rig_exact(geometry, y_ws, *, mu, N=None, Fz=None, side="left", spin=None,
         # vertical balance: Fz = N n_z + fy t2_z (t1 is horizontal), by the
         # secant method on N on a fixed grid (fy depends on N only weakly: a
         # few solves), then once more on the grid and pose of the load found
+        # (elements of a given size: where the approach moved by over 1 %)
         N = Fz / np.cos(delta0)
         p, s, k = at(N, None)
+        sized = all(float(patch_options.get(d) or 0.0) > 0.0 for d in ("dx", "dy"))
         for rebuild in (False, True):
             if rebuild:
+                # rr_wheel_exact.c's REBUILD_TOL: elements of a given size on
+                # a grid built for an approach within 1 % of the one found
+                # are kept (elements from n follow the approach: rebuilt)
+                if sized and abs(s.delta / p.approach - 1.0) <= 0.01:
+                    break
                 p, s, k = at(N, s.delta)
             last = None
             for _ in range(30):

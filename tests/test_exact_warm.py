@@ -45,7 +45,9 @@ CASES = [  # pair, y_ws [m], mu, grid: the tread, a two-point zone, the flange r
 def test_rig_exact_is_a_cold_solve_on_its_patch_to_the_tolerance(pair, y_ws, mu, grid):
     e = rr.rig_exact(geometry(pair), y_ws, Fz=6e4, mu=mu, spin=12.4, roller_spin=5.587,
                      **grid)
-    assert e.passes >= 4                     # coarse, loaded, the load's steps, rebuild
+    # coarse, loaded, the load's steps, the rebuild (elements of a given size:
+    # only where the approach found moved by over 1 %)
+    assert e.passes >= (3 if "dx" in grid else 4)
     p, q = e.patch, e.solution
     s = rr.exact_solve(p.h, dx=p.dx, dy=p.dy, x0=p.x0, y0=p.y0, N=e.N, mu=mu,
                        G=E / (2 * (1 + NU)), nu=NU, cx=e.cx, cy=e.cy, cphi=e.cphi)

@@ -180,11 +180,13 @@ def chain():
 def test_full_chain_frame_and_creepages():
     r = chain()
     # CONTACT's reference: the same weighting on the same profiles, at the
-    # approach of the first, coarse pass; measured 3.5 um and 1.5e-5 rad,
-    # far below an element (0.4 mm)
+    # approach the loaded grid was built for (within 1 % of the one found:
+    # rr_wheel_exact keeps the grid there); measured 7.3 um and 6.2e-5 rad
+    # (3.5 um and 1.5e-5 rad when every grid was rebuilt at the approach
+    # found), far below an element (0.4 mm)
     ds = np.array([e.patch.s_roller for e in r]) - C["s_roller"]
     dd = np.array([e.patch.delta for e in r]) - C["delta"]
-    assert np.abs(ds).max() < 1e-5 and np.abs(dd).max() < 5e-5
+    assert np.abs(ds).max() < 1.5e-5 and np.abs(dd).max() < 1e-4
     # the creepages at that point from our kinematics: measured 1.4e-6 in cx
     # (the point's offset times the spin creepage) and 2.2e-4 relative in
     # spin (the angle's offset over delta, 0.04 to 0.34 rad)

@@ -575,8 +575,16 @@ int rr_exact_solve_tangential(solver *S, rr_exact_result *res)
                 break;
             t *= 0.5;
         }
-        memcpy(p, pt, (size_t)n2 * sizeof *p);
-        memcpy(s, stt, (size_t)n2 * sizeof *s);
+        /* the trial iterate becomes the iterate: the arrays trade places
+         * (in the layout too: gmres takes its scratch from t1, t2) */
+        L->p = pt;
+        L->t1 = p;
+        p = pt;
+        pt = L->t1;
+        L->s = stt;
+        L->t2 = s;
+        s = stt;
+        stt = L->t2;
         if (ls == 30) {
             nF = nFt;
             break;               /* no descent: stalled */

@@ -21,6 +21,31 @@ typedef struct {
     int k0;          /* the sample nearest the centre */
 } samples;
 
+/* rr_spline_eval_at's value at s (NaN off the knots), for positions that
+ * increase from call to call: its interval (the last knot at or below s,
+ * at most the last but one) stepped on from the last call's *k, its
+ * formula as written there (the same doubles at half the instructions: the
+ * samples below are the build's largest loop over a spline). */
+static double spline_at_increasing(const rr_spline *sp, double s, int *k)
+{
+    const double *x = sp->s;
+    int lo = *k, hi;
+    double h, a, b;
+    if (!(s >= x[0] && s <= x[sp->n - 1]))
+        return NAN;
+    if (lo < 0 || lo > sp->n - 2 || x[lo] > s)
+        lo = 0;                              /* not increasing: from the start */
+    while (lo < sp->n - 2 && x[lo + 1] <= s)
+        lo++;
+    *k = lo;
+    hi = lo + 1;
+    h = x[hi] - x[lo];
+    a = (x[hi] - s) / h;
+    b = 1.0 - a;
+    return a * sp->z[lo] + b * sp->z[hi]
+           + ((a * a * a - a) * sp->m[lo] + (b * b * b - b) * sp->m[hi]) * h * h / 6.0;
+}
+
 /* numpy.linspace over the profile within RR_GAP_WINDOW of centre, heights
  * by the spline (NaN where a rounded position leaves it), and the nearest
  * sample (numpy.argmin: the first of equals). */
@@ -30,7 +55,7 @@ static int take_samples(const rr_spline *sp, double centre, double step, size_t 
     const double y0 = sp->s[0], y1 = sp->s[sp->n - 1];
     const double lo = fmax(y0, centre - RR_GAP_WINDOW), hi = fmin(y1, centre + RR_GAP_WINDOW);
     double cnt, d, best;
-    int i, hint = -1, c;
+    int i, hint = 0, c;
     if (!(hi > lo)) {
         out->why = RR_GAP_OFF_PROFILE;
         out->off_body = body;
@@ -46,8 +71,7 @@ static int take_samples(const rr_spline *sp, double centre, double step, size_t 
     d = (hi - lo) / (double)(q->k - 1);
     for (i = 0; i < q->k; i++) {
         q->s[i] = i < q->k - 1 ? (double)i * d + lo : hi;
-        if (rr_spline_eval_at(sp, q->s[i], &hint, &q->z[i], NULL, NULL) != RR_OK)
-            q->z[i] = NAN;
+        q->z[i] = spline_at_increasing(sp, q->s[i], &hint);
     }
     /* |s - centre| falls then rises along the samples: the least is within
      * one of the rounded position (the window holds at least two) */
@@ -127,11 +151,14 @@ static void sec_point(const plane *f, section *c, int i, double x)
     c->ze[i] = dY * f->ny + dZ * f->nz;
 }
 
-/* 1 where the step from sample i to j (= i +- 1) continues the run */
+/* 1 where the step from sample i to j (= i +- 1) continues the run: the
+ * step along yc finite and of the run's sign, ze finite (the comparisons
+ * are false for NaN: isfinite's tests in fewer instructions) */
 static int sec_good(const section *c, int i, int j)
 {
     const double d = j > i ? c->yc[j] - c->yc[i] : c->yc[i] - c->yc[j];
-    return isfinite(d) && isfinite(c->ze[j]) && (c->dir > 0 ? d > 0.0 : d < 0.0);
+    const double sd = c->dir > 0 ? d : -d;
+    return sd > 0.0 && sd < INFINITY && fabs(c->ze[j]) < INFINITY;
 }
 
 /* The run around the reference sample at x (patch.py's _single_valued),
