@@ -8,6 +8,7 @@
 #include <math.h>
 #include <string.h>
 #include "util/rr_common.h"
+#include "util/rr_spline.h"
 #include "contact/rr_contact.h"
 #include "contact/rr_exact.h"
 #include "contact/rr_exact_table.h"
@@ -106,6 +107,13 @@ size_t rr_nonhertz_row_workspace_len(const rr_nh_row_problem *pb, int side)
     return lens(pb, side, part);
 }
 
+/* A patch of the row: the band of rig Y whose gap it holds (rr_gap's keep:
+ * the bands part the lateral axis between the separate regions), its
+ * vertical gap at the zero-gap pose and where its plane's search starts. */
+typedef struct {
+    double lo, hi, g, s_roller, s_wheel, delta;
+} band;
+
 /* The row's call state. */
 typedef struct {
     const rr_nh_row_problem *pb;
@@ -113,7 +121,37 @@ typedef struct {
     rr_nh_row_info *info;
     double G;
     rr_wheel_exact_result scratch;      /* the largest load's solution */
+    const band *bd;                     /* the patch being built */
 } call;
+
+/* Rows of a grid outside the patch's band (rr_gap's exterior element
+ * beyond the band's edge can reach into the next patch's interpenetration)
+ * lifted out of reach, then h shifted back to least 0 and pen with it: the
+ * patch holds its band's gap alone. */
+static void clip_band(const band *bd, rr_gap_patch *g, double *h)
+{
+    const size_t mx = (size_t)g->grid.mx, my = (size_t)g->grid.my;
+    double top = -INFINITY, m = INFINITY;
+    size_t i, j;
+    for (i = 0; i < mx * my; i++)
+        top = h[i] > top ? h[i] : top;
+    top += 10.0 * g->level;
+    for (j = 0; j < my; j++) {
+        const double Y = g->point[1] + (g->grid.y0 + (double)j * g->grid.dy) * g->t2[1];
+        for (i = 0; i < mx; i++) {
+            if (!(Y >= bd->lo && Y <= bd->hi))
+                h[j * mx + i] = top;
+            m = h[j * mx + i] < m ? h[j * mx + i] : m;
+        }
+    }
+    if (!(m > 0.0))
+        return;
+    for (i = 0; i < mx * my; i++)
+        h[i] -= m;
+    g->pen = g->pen > m ? g->pen - m : 0.0;
+    for (i = 0; i < 3; i++)
+        g->wheel_point[i] = g->point[i] - g->pen * g->n[i];
+}
 
 /* A grid of elements dx (n across when dx = 0) on the node's plane and pose
  * (patch p of result r) into h (hlen doubles). */
@@ -132,7 +170,9 @@ static int grid_at(call *c, const rr_wheel_exact_result *r, int n, double dx, do
     o.cover = r->cover;
     o.n = n;
     o.dx = o.dy = dx;
-    o.combine = pb->combine;
+    o.keep = 1;
+    o.keep_lo = c->bd->lo;
+    o.keep_hi = c->bd->hi;
     if (rr_gap_workspace_len(&o) > c->b.gap_len) {
         c->info->why = RR_NH_ROW_GRID;
         return RR_ERR_WORKSPACE;
@@ -141,16 +181,18 @@ static int grid_at(call *c, const rr_wheel_exact_result *r, int n, double dx, do
     site.y_ws = pb->y_ws;
     site.z = r->z;
     site.roll = r->roll;
-    site.s_roller = pb->point.s_roller;
-    site.s_wheel = pb->point.s_wheel;
-    site.delta = pb->point.delta;
+    site.s_roller = c->bd->s_roller;
+    site.s_wheel = c->bd->s_wheel;
+    site.delta = c->bd->delta;
     st = rr_gap_build(&site, &o, c->b.gap, c->b.gap_len, h, hlen, out);
     if (st < 0) {
         c->info->why = RR_NH_ROW_GRID;
         c->info->gap_why = out->why;
         if (st == RR_ERR_WORKSPACE)
             c->info->need = (size_t)(out->grid.mx > out->grid.my ? out->grid.mx : out->grid.my);
+        return st;
     }
+    clip_band(c->bd, out, h);
     return st;
 }
 
@@ -267,7 +309,6 @@ static int largest_lowering(call *c, double *e_max)
                                                                          : r->patch.grid.my);
         return st;
     }
-    c->info->excluded = r->patch.nexcluded;
     *e_max = r->lowered;
     return RR_OK;
 }
@@ -279,25 +320,28 @@ static int normal_at(call *c, double e, double N, double cov, node_data *d, int 
 {
     const rr_nh_row_problem *pb = c->pb;
     const bufs *b = &c->b;
+    const band *bd = c->bd;
     rr_wheel_exact_result *r = &d->r;
     rr_gap_site site;
     rr_gap_opts o;
     rr_exact_problem ep;
     rr_exact_field field;
-    double a = e * cos(pb->point.delta);
+    double a = e * cos(bd->delta);
     int it, st;
     memset(r, 0, sizeof *r);
     site.pair = pb->pair;
     site.y_ws = pb->y_ws;
-    site.z = pb->pose0.z - e;
+    site.z = pb->pose0.z - (bd->g + e);
     site.roll = pb->pose0.roll;
-    site.s_roller = pb->point.s_roller;
-    site.s_wheel = pb->point.s_wheel;
-    site.delta = pb->point.delta;
+    site.s_roller = bd->s_roller;
+    site.s_wheel = bd->s_wheel;
+    site.delta = bd->delta;
     rr_gap_opts_default(&o);
     o.n = pb->n;
     o.cover = cov;
-    o.combine = pb->combine;
+    o.keep = 1;
+    o.keep_lo = bd->lo;
+    o.keep_hi = bd->hi;
     /* the plane at the pose's own interpenetration */
     for (it = 0; it < 4; it++) {
         o.approach = a;
@@ -310,6 +354,7 @@ static int normal_at(call *c, double e, double N, double cov, node_data *d, int 
                                                                              : r->patch.grid.my);
             return st;
         }
+        clip_band(bd, &r->patch, b->h);
         if (!(r->patch.pen > 0.0)) {
             c->info->why = RR_NH_ROW_GRID;
             return RR_ERR_GEOMETRY;
@@ -350,21 +395,201 @@ static int normal_at(call *c, double e, double N, double cov, node_data *d, int 
         return RR_ERR_RANGE;
     }
     *edge = rr_exact_at_edge(b->state, r->patch.grid.mx, r->patch.grid.my);
-    if (r->patch.nexcluded > 0) {
-        /* regions left out within the grid's cover need not touch: count
-         * those within the approach itself (cover 1), which would */
-        rr_gap_patch q;
-        o.cover = 1.0;
-        if (rr_gap_build(&site, &o, b->gap, b->gap_len, b->hc, b->cells, &q) >= 0
-            && q.nexcluded > c->info->excluded)
-            c->info->excluded = q.nexcluded;
-    }
     r->N = N;
     r->z = site.z;
     r->roll = site.roll;
-    r->lowered = e;
+    r->lowered = bd->g + e;
     r->approach = a;
     r->cover = cov;
+    return RR_OK;
+}
+
+/* ---- the row's patches ------------------------------------------------ */
+
+#define MAX_IV (2 * RR_GAP_MAX_RUNS)
+
+/* The gap's interpenetration at lowering L from the zero-gap pose (cover
+ * 1: where h is below the approach), the plane at its own approach: in
+ * band bd's keep (bd NULL: CONTACT's grouping round the rigid contact
+ * point's region, every interval listed) into *q, h in the node buffer. */
+static int probe(call *c, double L, const band *bd, rr_gap_patch *q)
+{
+    const rr_nh_row_problem *pb = c->pb;
+    rr_gap_site site;
+    rr_gap_opts o;
+    double a;
+    int it, st;
+    site.pair = pb->pair;
+    site.y_ws = pb->y_ws;
+    site.z = pb->pose0.z - L;
+    site.roll = pb->pose0.roll;
+    site.s_roller = bd ? bd->s_roller : pb->point.s_roller;
+    site.s_wheel = bd ? bd->s_wheel : pb->point.s_wheel;
+    site.delta = bd ? bd->delta : pb->point.delta;
+    rr_gap_opts_default(&o);
+    o.n = pb->n;
+    o.cover = 1.0;
+    o.combine = pb->combine;
+    if (bd) {
+        o.keep = 1;
+        o.keep_lo = bd->lo;
+        o.keep_hi = bd->hi;
+    }
+    a = (L - (bd ? bd->g : 0.0)) * cos(site.delta);
+    for (it = 0; it < 4; it++) {
+        o.approach = a > 1e-3 * L ? a : 1e-3 * L;
+        if ((st = rr_gap_build(&site, &o, c->b.gap, c->b.gap_len, c->b.h, c->b.cells, q)) < 0) {
+            c->info->why = RR_NH_ROW_GRID;
+            c->info->gap_why = q->why;
+            return st;
+        }
+        if (bd)
+            clip_band(bd, q, c->b.h);
+        if (!(q->pen > 0.0) || fabs(q->pen / o.approach - 1.0) < 1e-3)
+            break;
+        a = q->pen;
+    }
+    return RR_OK;
+}
+
+/* The intervals of a probe in rig Y (the plane's y from P along t2),
+ * increasing; their count. */
+static int intervals(const rr_gap_patch *q, double (*iv)[2])
+{
+    int n = 0, k, m;
+    for (k = 0; k < q->nregions + q->nexcluded; k++) {
+        const double *r = k < q->nregions ? q->regions[k] : q->excluded[k - q->nregions];
+        const double lo = q->point[1] + r[0] * q->t2[1], hi = q->point[1] + r[1] * q->t2[1];
+        for (m = n; m > 0 && iv[m - 1][0] > lo; m--) {
+            iv[m][0] = iv[m - 1][0];
+            iv[m][1] = iv[m - 1][1];
+        }
+        iv[m][0] = lo;
+        iv[m][1] = hi;
+        n++;
+    }
+    return n;
+}
+
+/*
+ * The row's patches: the gap's separate regions (intervals farther apart
+ * than combine, CONTACT's D_COMB) at the lowering of the regions' load
+ * Fz_regions (the table's nominal one), at most RR_NH_MAX_PATCHES of them
+ * (the rigid contact point's and the widest other; a third lies in a
+ * neighbour's band: info->merged); the bands part the lateral axis half-way
+ * between them and reach combine / 2 beyond the interpenetration at the
+ * largest lowering (intervals touching there farther out: info->excluded).
+ * Each band's gap g: 0 for the rigid contact point's; the others' from their
+ * interpenetration pen at two lowerings L, g = L - pen / cos(delta).
+ */
+static int find_bands(call *c, double e_max, band *bd, int *nb)
+{
+    const rr_nh_row_problem *pb = c->pb;
+    const rr_wheel_roller *pr = pb->pair;
+    const double Ypt = pr->side * (pr->roller_y + pb->point.s_roller), cb = pb->combine;
+    double iv[MAX_IV][2], grp[MAX_IV][2], lo, hi, best = -1.0, dist = INFINITY;
+    rr_gap_patch q;
+    int n, ng = 0, k, j, st, home = 0, other = -1, grown;
+    double Lg = e_max;
+    if (pb->Fz_regions > 0.0 && pb->Fz_regions < pb->Fz_max)
+        Lg = e_max * pow(pb->Fz_regions / pb->Fz_max, 2.0 / 3.0);
+    if ((st = probe(c, Lg, NULL, &q)) < 0)
+        return st;
+    n = intervals(&q, iv);
+    for (k = 0; k < n; k++) {
+        if (ng > 0 && iv[k][0] - grp[ng - 1][1] <= cb) {
+            grp[ng - 1][1] = fmax(grp[ng - 1][1], iv[k][1]);
+            continue;
+        }
+        grp[ng][0] = iv[k][0];
+        grp[ng++][1] = iv[k][1];
+    }
+    if (ng == 0) {
+        c->info->why = RR_NH_ROW_GRID;
+        return RR_ERR_GEOMETRY;
+    }
+    for (k = 0; k < ng; k++) {
+        const double d = Ypt < grp[k][0] ? grp[k][0] - Ypt : Ypt > grp[k][1] ? Ypt - grp[k][1] : 0;
+        if (d < dist)
+            dist = d, home = k;
+    }
+    for (k = 0; k < ng; k++)
+        if (k != home && grp[k][1] - grp[k][0] > best)
+            best = grp[k][1] - grp[k][0], other = k;
+    c->info->merged = ng > RR_NH_MAX_PATCHES ? ng - RR_NH_MAX_PATCHES : 0;
+    /* the extent: what touches at the largest lowering next to the groups */
+    lo = fmin(grp[home][0], other >= 0 ? grp[other][0] : INFINITY);
+    hi = fmax(grp[home][1], other >= 0 ? grp[other][1] : -INFINITY);
+    if ((st = probe(c, e_max, NULL, &q)) < 0)
+        return st;
+    n = intervals(&q, iv);
+    for (grown = 1; grown;)
+        for (grown = k = 0; k < n; k++)
+            if (iv[k][0] - hi <= cb && lo - iv[k][1] <= cb && (iv[k][0] < lo || iv[k][1] > hi)) {
+                lo = fmin(lo, iv[k][0]);
+                hi = fmax(hi, iv[k][1]);
+                grown = 1;
+            }
+    for (k = 0; k < n; k++)
+        c->info->excluded += iv[k][1] < lo || iv[k][0] > hi;
+    /* the bands, increasing in Y */
+    *nb = other >= 0 ? 2 : 1;
+    if (other >= 0 && grp[other][0] < grp[home][0]) {
+        k = home;
+        home = other;
+        other = k;
+        j = 1;                          /* the rigid contact point's band */
+    } else
+        j = 0;
+    bd[0].lo = lo - 0.5 * cb;
+    bd[*nb - 1].hi = hi + 0.5 * cb;
+    if (*nb == 2)
+        bd[0].hi = bd[1].lo = 0.5 * (grp[home][1] + grp[other][0]);
+    for (k = 0; k < *nb; k++) {
+        band *b = &bd[k];
+        if (k == j) {
+            b->g = 0.0;
+            b->s_roller = pb->point.s_roller;
+            b->s_wheel = pb->point.s_wheel;
+            b->delta = pb->point.delta;
+            continue;
+        }
+        {
+            /* the region's middle, its roller's slope, the wheel above it */
+            const double *gk = grp[k == 0 ? home : other];
+            double z, dz, L = e_max;
+            int it;
+            b->s_roller = pr->side * 0.5 * (gk[0] + gk[1]) - pr->roller_y;
+            b->s_wheel = pb->point.s_wheel + (b->s_roller - pb->point.s_roller);
+            if ((st = rr_spline_eval(&pr->roller, b->s_roller, &z, &dz, NULL)) < 0)
+                return st;
+            b->delta = atan(dz);
+            b->g = 0.0;
+            for (it = 0; it < 3; it++) {
+                if ((st = probe(c, L, b, &q)) < 0)
+                    return st;
+                if (!(q.pen > 0.0)) {
+                    c->info->why = RR_NH_ROW_GRID;
+                    return RR_ERR_GEOMETRY;
+                }
+                b->g = fmax(0.0, L - q.pen / cos(q.delta));
+                b->delta = q.delta;
+                b->s_roller = q.s_roller;
+                b->s_wheel = q.s_wheel;
+                L = b->g + 0.5 * (e_max - b->g);
+            }
+        }
+    }
+    /* a region that touches only at the top of the loads: the neighbour's */
+    for (k = 0; k < *nb; k++)
+        if (bd[k].g > 0.9 * e_max) {
+            const band keep = bd[1 - k];
+            bd[0] = keep;
+            bd[0].lo = lo - 0.5 * cb;
+            bd[0].hi = hi + 0.5 * cb;
+            *nb = 1;
+            break;
+        }
     return RR_OK;
 }
 
@@ -465,7 +690,7 @@ static int correct_node(call *c, const node_data *d, double *cb, int *warn)
     rr_nonhertz_frame(g->point[1], g->point[2], g->delta, 0.0, (double)pb->pair->side,
                       pb->pair->R0, &fr);
     if ((st = rr_nonhertz_creepages(&pb->wheelset, pb->roller_spin, pb->pair->R0, &fr, d->pen,
-                                    d->e, pb->vmin, kin)) < 0)
+                                    c->bd->g + d->e, pb->vmin, kin)) < 0)
         return st;
     cphi = kin[2];
     if ((st = calibrated(c, d, &a, &bb, &sy, &sp)) < 0)
@@ -524,14 +749,15 @@ int rr_nonhertz_row(const rr_nh_row_problem *pb, double *work, size_t work_len, 
     call c;
     size_t part[4], total;
     double *p;
-    int k, st, warn = RR_OK, ci;
+    int k, j, st, warn = RR_OK, ci, nb = 1;
     double e_max;
     node_data d;
+    band bd[RR_NH_MAX_PATCHES];
 
     if (!info)
         return RR_ERR_NULL;
     memset(info, 0, sizeof *info);
-    info->node = -1;
+    info->node = info->patch = -1;
     if (!row)
         return RR_ERR_NULL;
     for (k = 0; k < RR_NH_ROW_LEN; k++)
@@ -539,7 +765,8 @@ int rr_nonhertz_row(const rr_nh_row_problem *pb, double *work, size_t work_len, 
     if (!pb || !pb->pair || !work)
         return RR_ERR_NULL;
     {
-        const double v[] = {pb->y_ws, pb->pose0.z, pb->pose0.roll, pb->Fz_max, pb->E, pb->nu,
+        const double v[] = {pb->y_ws, pb->pose0.z, pb->pose0.roll, pb->Fz_max, pb->Fz_regions,
+                            pb->E, pb->nu,
                             pb->mu, pb->roller_spin, pb->vmin, pb->combine, pb->tol,
                             pb->point.s_roller, pb->point.s_wheel, pb->point.delta,
                             pb->point.A, pb->point.B};
@@ -547,7 +774,7 @@ int rr_nonhertz_row(const rr_nh_row_problem *pb, double *work, size_t work_len, 
             || !rr_all_finite(pb->wheelset.v, 3) || !rr_all_finite(pb->wheelset.w, 3))
             return RR_ERR_NONFINITE;
     }
-    if (!(pb->Fz_max > 0.0))
+    if (!(pb->Fz_max > 0.0) || !(pb->Fz_regions >= 0.0) || !(pb->Fz_regions <= pb->Fz_max))
         return RR_ERR_LOAD;
     if (pb->n < 8 || pb->n > RR_GAP_MAX_N / 2 || pb->n_corr < 8 || pb->n_corr > pb->n
         || (pb->richardson != 0 && pb->richardson != 1) || !(pb->combine >= 0.0))
@@ -576,34 +803,42 @@ int rr_nonhertz_row(const rr_nh_row_problem *pb, double *work, size_t work_len, 
     c.b.state = (signed char *)(c.b.hcf + 4 * c.b.cells);
 
     row[0] = pb->y_ws;
-    row[1] = 1.0;
     row[2] = pb->pose0.z;
     row[3] = pb->pose0.roll;
-    p = row + RR_NH_PATCH(0);
-    p[0] = 0.0;            /* the patch of the rigid contact point: no gap */
-    for (k = RR_NH_PATCH(1); k < RR_NH_ROW_LEN; k++)
-        row[k] = 0.0;      /* the second patch's place: unused */
+    for (k = RR_NH_PATCH(0); k < RR_NH_ROW_LEN; k++)
+        row[k] = 0.0;      /* a patch's place unused: zero */
     info->node = RR_NH_NODES - 1;
-    if ((st = largest_lowering(&c, &e_max)) < 0) {
+    if ((st = largest_lowering(&c, &e_max)) < 0 || (st = find_bands(&c, e_max, bd, &nb)) < 0) {
         for (k = 0; k < RR_NH_ROW_LEN; k++)
             row[k] = NAN;
         return st;
     }
-    ci = 0;
-    for (k = 0; k < RR_NH_NODES; k++) {
-        info->node = k;
-        st = solve_node(&c, k, node_f[k] * e_max,
-                        pb->Fz_max * pow(node_f[k], 1.5) / cos(pb->point.delta), p, &d, &warn);
-        if (st >= 0 && ci < RR_NH_CORR && k == corr_node[ci]) {
-            st = correct_node(&c, &d, p + RR_NH_CORR_AT(ci), &warn);
-            ci++;
-        }
-        if (st < 0) {
-            for (k = 0; k < RR_NH_ROW_LEN; k++)
-                row[k] = NAN;
-            return st;
+    row[1] = nb;
+    info->patches = nb;
+    for (j = 0; j < nb; j++) {
+        const double span = e_max - bd[j].g;
+        c.bd = &bd[j];
+        p = row + RR_NH_PATCH(j);
+        p[0] = bd[j].g;
+        info->patch = j;
+        ci = 0;
+        for (k = 0; k < RR_NH_NODES; k++) {
+            info->node = k;
+            st = solve_node(&c, k, node_f[k] * span,
+                            pb->Fz_max * pow(node_f[k] * span / e_max, 1.5) / cos(bd[j].delta),
+                            p, &d, &warn);
+            if (st >= 0 && ci < RR_NH_CORR && k == corr_node[ci]) {
+                st = correct_node(&c, &d, p + RR_NH_CORR_AT(ci), &warn);
+                ci++;
+            }
+            if (st < 0) {
+                for (k = 0; k < RR_NH_ROW_LEN; k++)
+                    row[k] = NAN;
+                return st;
+            }
         }
     }
+    info->patch = -1;
     info->node = -1;
     return warn;
 }

@@ -37,6 +37,9 @@ typedef struct {
     rr_wheelset_pose pose0;        /* rr_wheelset_contact's zero-gap pose there */
     rr_contact_point point;        /* and this side's contact point */
     double Fz_max;                 /* the largest vertical load of the nodes [N], > 0 */
+    double Fz_regions;             /* the load whose lowering tells the gap's separate
+                                      regions apart (the table's nominal load), in
+                                      [0, Fz_max]; 0: Fz_max */
     double E, nu;                  /* both bodies [Pa], [-] */
     double mu;                     /* the correction's friction (the table's mu_ref) */
     rr_motion wheelset;            /* the wheelset's motion at free rolling there (the
@@ -68,12 +71,15 @@ enum rr_nh_row_why {
 
 typedef struct {
     int why;                 /* rr_nh_row_why */
-    int node;                /* the node at fault */
+    int patch, node;         /* the patch and node at fault (-1: none) */
     int wheel_why, gap_why;  /* rr_wheel_exact_why, rr_gap_why */
     size_t need;             /* RR_ERR_WORKSPACE: the grid side the row needs */
     int solves;              /* exact solves spent */
-    int excluded;            /* regions in contact left out (beyond combine: where h is
-                                below the approach), the most at any node */
+    int patches;             /* patches of the row */
+    int excluded;            /* intervals interpenetrating at the largest lowering beyond
+                                combine of every band: not tabulated */
+    int merged;              /* separate regions beyond RR_NH_MAX_PATCHES, held in a
+                                neighbour's band (its plane) */
 } rr_nh_row_info;
 
 /* Doubles of workspace for grids up to side x side (the fine ones twice
