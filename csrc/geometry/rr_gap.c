@@ -139,9 +139,9 @@ static void group_runs(runs *R, double y_deep, double combine, double *lo, doubl
     }
 }
 
-/* keep = 1: the runs reaching into [klo, khi] (the same coordinate as the
- * runs'), their hull in *lo, *hi (some run does: the deepest point in it
- * is in one). */
+/* keep = 1: every run (the mask held them within [klo, khi], the same
+ * coordinate as the runs'), their hull in *lo, *hi (the deepest point of
+ * the band is in one). */
 static void keep_runs(runs *R, double klo, double khi, double *lo, double *hi)
 {
     int i;
@@ -237,7 +237,9 @@ static int weighted_reference(const plane *f, const samples *rs, section *wsec, 
         int r, done;
         runs R;
         for (i = 0; i < n; i++)
-            W->mask[i] = top - W->g[i0 + i] > 0.0;
+            W->mask[i] = top - W->g[i0 + i] > 0.0
+                         && (!o->keep || (W->Y[i0 + i] >= o->keep_lo
+                                          && W->Y[i0 + i] <= o->keep_hi));
         if ((st = find_runs(W->mask, W->Y + i0, n, &R, out)) != RR_OK)
             return st;
         if (o->keep)
@@ -560,7 +562,8 @@ int rr_gap_build(const rr_gap_site *site, const rr_gap_opts *o, double *work, si
         return RR_ERR_GEOMETRY;
     }
     for (i = 0; i < nf; i++)
-        c.mask[i] = c.hy[i] - hmin <= level;
+        c.mask[i] = c.hy[i] - hmin <= level
+                    && (!o->keep || (c.yf[i] >= klo && c.yf[i] <= khi));
     if ((st = find_runs(c.mask, c.yf, nf, &R, out)) != RR_OK)
         return st;
     if (R.n == 0) {                          /* hmin not finite: the plane's scan failed */

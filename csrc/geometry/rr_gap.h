@@ -72,9 +72,10 @@ typedef struct {
     double dx, dy;       /* element sizes [m]; 0: from n (square) */
     double combine;      /* intervals farther than this from the deepest are left out [m], >= 0 */
     int keep;            /* 0: the region is the deepest interval and those within combine
-                            (CONTACT's); 1: every interval reaching into rig Y [keep_lo,
-                            keep_hi], the level from the deepest point there, combine unused
-                            (one of several separate patches: rr_nonhertz_table.h) */
+                            (CONTACT's); 1: the gap within rig Y [keep_lo, keep_hi] alone
+                            (every interval there, cut at the band's ends; the level and
+                            the reference's weights from the deepest point there; combine
+                            unused): one of several separate patches, rr_nonhertz_table.h */
     double keep_lo, keep_hi;   /* keep = 1: rig Y [m], keep_lo < keep_hi */
 } rr_gap_opts;
 

@@ -489,7 +489,7 @@ static int find_bands(call *c, double e_max, band *bd, int *nb)
     const double Ypt = pr->side * (pr->roller_y + pb->point.s_roller), cb = pb->combine;
     double iv[MAX_IV][2], grp[MAX_IV][2], lo, hi, best = -1.0, dist = INFINITY;
     rr_gap_patch q;
-    int n, ng = 0, k, j, st, home = 0, other = -1, grown;
+    int n, ng = 0, ng0, k, j, st, home = 0, other = -1;
     double Lg = e_max;
     if (pb->Fz_regions > 0.0 && pb->Fz_regions < pb->Fz_max)
         Lg = e_max * pow(pb->Fz_regions / pb->Fz_max, 2.0 / 3.0);
@@ -513,25 +513,50 @@ static int find_bands(call *c, double e_max, band *bd, int *nb)
         if (d < dist)
             dist = d, home = k;
     }
+    ng0 = ng;
+    /* what touches at the largest lowering: within combine of a group its
+     * extent; farther out a region of its own (touching above the nominal
+     * load only) */
+    lo = grp[home][0];
+    hi = grp[home][1];
     for (k = 0; k < ng; k++)
-        if (k != home && grp[k][1] - grp[k][0] > best)
-            best = grp[k][1] - grp[k][0], other = k;
-    c->info->merged = ng > RR_NH_MAX_PATCHES ? ng - RR_NH_MAX_PATCHES : 0;
-    /* the extent: what touches at the largest lowering next to the groups */
-    lo = fmin(grp[home][0], other >= 0 ? grp[other][0] : INFINITY);
-    hi = fmax(grp[home][1], other >= 0 ? grp[other][1] : -INFINITY);
+        lo = fmin(lo, grp[k][0]), hi = fmax(hi, grp[k][1]);
     if ((st = probe(c, e_max, NULL, &q)) < 0)
         return st;
     n = intervals(&q, iv);
-    for (grown = 1; grown;)
-        for (grown = k = 0; k < n; k++)
-            if (iv[k][0] - hi <= cb && lo - iv[k][1] <= cb && (iv[k][0] < lo || iv[k][1] > hi)) {
-                lo = fmin(lo, iv[k][0]);
-                hi = fmax(hi, iv[k][1]);
-                grown = 1;
-            }
-    for (k = 0; k < n; k++)
-        c->info->excluded += iv[k][1] < lo || iv[k][0] > hi;
+    for (k = 0; k < n; k++) {
+        int m, near = 0;
+        for (m = 0; m < ng0 && !near; m++)
+            near = iv[k][0] - grp[m][1] <= cb && grp[m][0] - iv[k][1] <= cb;
+        if (near) {
+            lo = fmin(lo, iv[k][0]);
+            hi = fmax(hi, iv[k][1]);
+        } else if (ng > ng0 && iv[k][0] - grp[ng - 1][1] <= cb) {
+            grp[ng - 1][1] = fmax(grp[ng - 1][1], iv[k][1]);
+        } else if (ng < MAX_IV) {
+            grp[ng][0] = iv[k][0];
+            grp[ng++][1] = iv[k][1];
+        }
+    }
+    /* the other patch: the widest region of the nominal load's, else of
+     * the largest load's */
+    for (k = 0; k < ng0; k++)
+        if (k != home && grp[k][1] - grp[k][0] > best)
+            best = grp[k][1] - grp[k][0], other = k;
+    for (k = ng0; other < 0 && k < ng; k++)
+        if (grp[k][1] - grp[k][0] > best)
+            best = grp[k][1] - grp[k][0], other = k;
+    if (other >= 0) {
+        lo = fmin(lo, grp[other][0]);
+        hi = fmax(hi, grp[other][1]);
+    }
+    for (k = 0; k < ng; k++)
+        if (k != home && k != other) {
+            if (grp[k][1] < lo - 0.5 * cb || grp[k][0] > hi + 0.5 * cb)
+                c->info->excluded++;         /* beyond the bands */
+            else
+                c->info->merged++;           /* in a neighbour's band */
+        }
     /* the bands, increasing in Y */
     *nb = other >= 0 ? 2 : 1;
     if (other >= 0 && grp[other][0] < grp[home][0]) {
