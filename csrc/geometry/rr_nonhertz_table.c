@@ -8,7 +8,6 @@
 #include <math.h>
 #include <string.h>
 #include "util/rr_common.h"
-#include "util/rr_spline.h"
 #include "contact/rr_contact.h"
 #include "contact/rr_exact.h"
 #include "contact/rr_exact_table.h"
@@ -16,6 +15,7 @@
 #include "geometry/rr_gap.h"
 #include "geometry/rr_wheel_exact.h"
 #include "geometry/rr_nonhertz_table.h"
+#include "geometry/rr_nonhertz_row.h"
 
 /* The nodes' lowerings as fractions of the largest (the study's NODES). */
 static const double node_f[RR_NH_NODES] = {0.03, 0.1, 0.2, 0.33, 0.46, 0.6, 0.75, 0.88, 1.0};
@@ -74,16 +74,6 @@ static void node_problem(const rr_nh_row_problem *pb, double Fz, rr_wheel_exact_
     we->interrupt = pb->interrupt;
 }
 
-/* The buffers carved from the caller's workspace. */
-typedef struct {
-    double *wex, *fine_ex, *gap;        /* rr_wheel_exact's (the coarse solver's at its
-                                           start), the fine grids' solver, rr_gap_build's */
-    size_t wex_len, coarse_len, fine_len, gap_len;
-    double *h, *pn, *hf, *hc, *hcf;     /* side^2, side^2, 4 side^2, side^2, 4 side^2 */
-    signed char *state;                 /* side^2 bytes */
-    size_t cells;
-} bufs;
-
 static size_t lens(const rr_nh_row_problem *pb, int side, size_t part[4])
 {
     rr_wheel_exact_problem we;
@@ -107,55 +97,9 @@ size_t rr_nonhertz_row_workspace_len(const rr_nh_row_problem *pb, int side)
     return lens(pb, side, part);
 }
 
-/* A patch of the row: the band of rig Y whose gap it holds (rr_gap's keep:
- * the bands part the lateral axis between the separate regions), its
- * vertical gap at the zero-gap pose and where its plane's search starts. */
-typedef struct {
-    double lo, hi, g, s_roller, s_wheel, delta;
-} band;
-
-/* The row's call state. */
-typedef struct {
-    const rr_nh_row_problem *pb;
-    bufs b;
-    rr_nh_row_info *info;
-    double G;
-    rr_wheel_exact_result scratch;      /* the largest load's solution */
-    const band *bd;                     /* the patch being built */
-} call;
-
-/* Rows of a grid outside the patch's band (rr_gap's exterior element
- * beyond the band's edge can reach into the next patch's interpenetration)
- * lifted out of reach, then h shifted back to least 0 and pen with it: the
- * patch holds its band's gap alone. */
-static void clip_band(const band *bd, rr_gap_patch *g, double *h)
-{
-    const size_t mx = (size_t)g->grid.mx, my = (size_t)g->grid.my;
-    double top = -INFINITY, m = INFINITY;
-    size_t i, j;
-    for (i = 0; i < mx * my; i++)
-        top = h[i] > top ? h[i] : top;
-    top += 10.0 * g->level;
-    for (j = 0; j < my; j++) {
-        const double Y = g->point[1] + (g->grid.y0 + (double)j * g->grid.dy) * g->t2[1];
-        for (i = 0; i < mx; i++) {
-            if (!(Y >= bd->lo && Y <= bd->hi))
-                h[j * mx + i] = top;
-            m = h[j * mx + i] < m ? h[j * mx + i] : m;
-        }
-    }
-    if (!(m > 0.0))
-        return;
-    for (i = 0; i < mx * my; i++)
-        h[i] -= m;
-    g->pen = g->pen > m ? g->pen - m : 0.0;
-    for (i = 0; i < 3; i++)
-        g->wheel_point[i] = g->point[i] - g->pen * g->n[i];
-}
-
 /* A grid of elements dx (n across when dx = 0) on the node's plane and pose
  * (patch p of result r) into h (hlen doubles). */
-static int grid_at(call *c, const rr_wheel_exact_result *r, int n, double dx, double *h,
+static int grid_at(rr_nh_call *c, const rr_wheel_exact_result *r, int n, double dx, double *h,
                    size_t hlen, rr_gap_patch *out)
 {
     const rr_nh_row_problem *pb = c->pb;
@@ -192,12 +136,12 @@ static int grid_at(call *c, const rr_wheel_exact_result *r, int n, double dx, do
             c->info->need = (size_t)(out->grid.mx > out->grid.my ? out->grid.mx : out->grid.my);
         return st;
     }
-    clip_band(c->bd, out, h);
+    rr_nh_clip_band(c->bd, out, h);
     return st;
 }
 
 /* The exact forces (fx, fy, mz about P) on grid g, h at load N. */
-static int solve(call *c, const rr_grid *g, const double *h, double N, double cx, double cy,
+static int solve(rr_nh_call *c, const rr_grid *g, const double *h, double N, double cx, double cy,
                  double cphi, int fine, double F[3], rr_exact_field *field)
 {
     const rr_nh_row_problem *pb = c->pb;
@@ -240,7 +184,7 @@ static int worse(int a, int b)
 
 /* The forces at a batch of creepages cr[i] = (cx, cy, cphi), i < m, on the
  * coarse grid and (Richardson) the fine one: F[i] = 2 F_fine - F_coarse. */
-static int forces(call *c, const rr_gap_patch *g, const double *h, const rr_gap_patch *gf,
+static int forces(rr_nh_call *c, const rr_gap_patch *g, const double *h, const rr_gap_patch *gf,
                   const double *hf, double N, const double (*cr)[3], int m, double (*F)[3],
                   int *warn)
 {
@@ -271,7 +215,7 @@ typedef struct {
 
 /* The calibrated ellipse of a node: semi-axes a, b and the scales of cy
  * and the spin that give its exact K22, K23 (nonhertz_fast.calibrated_ellipse). */
-static int calibrated(const call *c, const node_data *d, double *a, double *b, double *sy,
+static int calibrated(const rr_nh_call *c, const node_data *d, double *a, double *b, double *sy,
                       double *sp)
 {
     rr_kalker_coeffs kc;
@@ -290,7 +234,7 @@ static int calibrated(const call *c, const node_data *d, double *a, double *b, d
 
 /* The lowering of the largest load: rr_wheel_exact at Fz_max (the nodes'
  * scale; zero creepage). */
-static int largest_lowering(call *c, double *e_max)
+static int largest_lowering(rr_nh_call *c, double *e_max)
 {
     const rr_nh_row_problem *pb = c->pb;
     rr_wheel_exact_problem we;
@@ -316,11 +260,11 @@ static int largest_lowering(call *c, double *e_max)
 /* The patch at lowering e (CONTACT's weighted plane at its own approach,
  * cover cov) and the load whose approach is the pose's interpenetration
  * (the exact normal solution at that pose): d->r's patch, sol, N. */
-static int normal_at(call *c, double e, double N, double cov, node_data *d, int *edge, int *warn)
+static int normal_at(rr_nh_call *c, double e, double N, double cov, node_data *d, int *edge, int *warn)
 {
     const rr_nh_row_problem *pb = c->pb;
-    const bufs *b = &c->b;
-    const band *bd = c->bd;
+    const rr_nh_bufs *b = &c->b;
+    const rr_nh_band *bd = c->bd;
     rr_wheel_exact_result *r = &d->r;
     rr_gap_site site;
     rr_gap_opts o;
@@ -354,7 +298,7 @@ static int normal_at(call *c, double e, double N, double cov, node_data *d, int 
                                                                              : r->patch.grid.my);
             return st;
         }
-        clip_band(bd, &r->patch, b->h);
+        rr_nh_clip_band(bd, &r->patch, b->h);
         if (!(r->patch.pen > 0.0)) {
             c->info->why = RR_NH_ROW_GRID;
             return RR_ERR_GEOMETRY;
@@ -404,227 +348,13 @@ static int normal_at(call *c, double e, double N, double cov, node_data *d, int 
     return RR_OK;
 }
 
-/* ---- the row's patches ------------------------------------------------ */
-
-#define MAX_IV (2 * RR_GAP_MAX_RUNS)
-
-/* The gap's interpenetration at lowering L from the zero-gap pose (cover
- * 1: where h is below the approach), the plane at its own approach: in
- * band bd's keep (bd NULL: CONTACT's grouping round the rigid contact
- * point's region, every interval listed) into *q, h in the node buffer. */
-static int probe(call *c, double L, const band *bd, rr_gap_patch *q)
-{
-    const rr_nh_row_problem *pb = c->pb;
-    rr_gap_site site;
-    rr_gap_opts o;
-    double a;
-    int it, st;
-    site.pair = pb->pair;
-    site.y_ws = pb->y_ws;
-    site.z = pb->pose0.z - L;
-    site.roll = pb->pose0.roll;
-    site.s_roller = bd ? bd->s_roller : pb->point.s_roller;
-    site.s_wheel = bd ? bd->s_wheel : pb->point.s_wheel;
-    site.delta = bd ? bd->delta : pb->point.delta;
-    rr_gap_opts_default(&o);
-    o.n = pb->n;
-    o.cover = 1.0;
-    o.combine = pb->combine;
-    if (bd) {
-        o.keep = 1;
-        o.keep_lo = bd->lo;
-        o.keep_hi = bd->hi;
-    }
-    a = (L - (bd ? bd->g : 0.0)) * cos(site.delta);
-    for (it = 0; it < 4; it++) {
-        o.approach = a > 1e-3 * L ? a : 1e-3 * L;
-        if ((st = rr_gap_build(&site, &o, c->b.gap, c->b.gap_len, c->b.h, c->b.cells, q)) < 0) {
-            c->info->why = RR_NH_ROW_GRID;
-            c->info->gap_why = q->why;
-            return st;
-        }
-        if (bd)
-            clip_band(bd, q, c->b.h);
-        if (!(q->pen > 0.0) || fabs(q->pen / o.approach - 1.0) < 1e-3)
-            break;
-        a = q->pen;
-    }
-    return RR_OK;
-}
-
-/* The intervals of a probe in rig Y (the plane's y from P along t2),
- * increasing; their count. */
-static int intervals(const rr_gap_patch *q, double (*iv)[2])
-{
-    int n = 0, k, m;
-    for (k = 0; k < q->nregions + q->nexcluded; k++) {
-        const double *r = k < q->nregions ? q->regions[k] : q->excluded[k - q->nregions];
-        const double lo = q->point[1] + r[0] * q->t2[1], hi = q->point[1] + r[1] * q->t2[1];
-        for (m = n; m > 0 && iv[m - 1][0] > lo; m--) {
-            iv[m][0] = iv[m - 1][0];
-            iv[m][1] = iv[m - 1][1];
-        }
-        iv[m][0] = lo;
-        iv[m][1] = hi;
-        n++;
-    }
-    return n;
-}
-
-/*
- * The row's patches: the gap's separate regions (intervals farther apart
- * than combine, CONTACT's D_COMB) at the lowering of the regions' load
- * Fz_regions (the table's nominal one), at most RR_NH_MAX_PATCHES of them
- * (the rigid contact point's and the widest other; a third lies in a
- * neighbour's band: info->merged); the bands part the lateral axis half-way
- * between them and reach combine / 2 beyond the interpenetration at the
- * largest lowering (intervals touching there farther out: info->excluded).
- * Each band's gap g: 0 for the rigid contact point's; the others' from their
- * interpenetration pen at two lowerings L, g = L - pen / cos(delta).
- */
-static int find_bands(call *c, double e_max, band *bd, int *nb)
-{
-    const rr_nh_row_problem *pb = c->pb;
-    const rr_wheel_roller *pr = pb->pair;
-    const double Ypt = pr->side * (pr->roller_y + pb->point.s_roller), cb = pb->combine;
-    double iv[MAX_IV][2], grp[MAX_IV][2], lo, hi, best = -1.0, dist = INFINITY;
-    rr_gap_patch q;
-    int n, ng = 0, ng0, k, j, st, home = 0, other = -1;
-    double Lg = e_max;
-    if (pb->Fz_regions > 0.0 && pb->Fz_regions < pb->Fz_max)
-        Lg = e_max * pow(pb->Fz_regions / pb->Fz_max, 2.0 / 3.0);
-    if ((st = probe(c, Lg, NULL, &q)) < 0)
-        return st;
-    n = intervals(&q, iv);
-    for (k = 0; k < n; k++) {
-        if (ng > 0 && iv[k][0] - grp[ng - 1][1] <= cb) {
-            grp[ng - 1][1] = fmax(grp[ng - 1][1], iv[k][1]);
-            continue;
-        }
-        grp[ng][0] = iv[k][0];
-        grp[ng++][1] = iv[k][1];
-    }
-    if (ng == 0) {
-        c->info->why = RR_NH_ROW_GRID;
-        return RR_ERR_GEOMETRY;
-    }
-    for (k = 0; k < ng; k++) {
-        const double d = Ypt < grp[k][0] ? grp[k][0] - Ypt : Ypt > grp[k][1] ? Ypt - grp[k][1] : 0;
-        if (d < dist)
-            dist = d, home = k;
-    }
-    ng0 = ng;
-    /* what touches at the largest lowering: within combine of a group its
-     * extent; farther out a region of its own (touching above the nominal
-     * load only) */
-    lo = grp[home][0];
-    hi = grp[home][1];
-    for (k = 0; k < ng; k++)
-        lo = fmin(lo, grp[k][0]), hi = fmax(hi, grp[k][1]);
-    if ((st = probe(c, e_max, NULL, &q)) < 0)
-        return st;
-    n = intervals(&q, iv);
-    for (k = 0; k < n; k++) {
-        int m, near = 0;
-        for (m = 0; m < ng0 && !near; m++)
-            near = iv[k][0] - grp[m][1] <= cb && grp[m][0] - iv[k][1] <= cb;
-        if (near) {
-            lo = fmin(lo, iv[k][0]);
-            hi = fmax(hi, iv[k][1]);
-        } else if (ng > ng0 && iv[k][0] - grp[ng - 1][1] <= cb) {
-            grp[ng - 1][1] = fmax(grp[ng - 1][1], iv[k][1]);
-        } else if (ng < MAX_IV) {
-            grp[ng][0] = iv[k][0];
-            grp[ng++][1] = iv[k][1];
-        }
-    }
-    /* the other patch: the widest region of the nominal load's, else of
-     * the largest load's */
-    for (k = 0; k < ng0; k++)
-        if (k != home && grp[k][1] - grp[k][0] > best)
-            best = grp[k][1] - grp[k][0], other = k;
-    for (k = ng0; other < 0 && k < ng; k++)
-        if (grp[k][1] - grp[k][0] > best)
-            best = grp[k][1] - grp[k][0], other = k;
-    if (other >= 0) {
-        lo = fmin(lo, grp[other][0]);
-        hi = fmax(hi, grp[other][1]);
-    }
-    for (k = 0; k < ng; k++)
-        if (k != home && k != other) {
-            if (grp[k][1] < lo - 0.5 * cb || grp[k][0] > hi + 0.5 * cb)
-                c->info->excluded++;         /* beyond the bands */
-            else
-                c->info->merged++;           /* in a neighbour's band */
-        }
-    /* the bands, increasing in Y */
-    *nb = other >= 0 ? 2 : 1;
-    if (other >= 0 && grp[other][0] < grp[home][0]) {
-        k = home;
-        home = other;
-        other = k;
-        j = 1;                          /* the rigid contact point's band */
-    } else
-        j = 0;
-    bd[0].lo = lo - 0.5 * cb;
-    bd[*nb - 1].hi = hi + 0.5 * cb;
-    if (*nb == 2)
-        bd[0].hi = bd[1].lo = 0.5 * (grp[home][1] + grp[other][0]);
-    for (k = 0; k < *nb; k++) {
-        band *b = &bd[k];
-        if (k == j) {
-            b->g = 0.0;
-            b->s_roller = pb->point.s_roller;
-            b->s_wheel = pb->point.s_wheel;
-            b->delta = pb->point.delta;
-            continue;
-        }
-        {
-            /* the region's middle, its roller's slope, the wheel above it */
-            const double *gk = grp[k == 0 ? home : other];
-            double z, dz, L = e_max;
-            int it;
-            b->s_roller = pr->side * 0.5 * (gk[0] + gk[1]) - pr->roller_y;
-            b->s_wheel = pb->point.s_wheel + (b->s_roller - pb->point.s_roller);
-            if ((st = rr_spline_eval(&pr->roller, b->s_roller, &z, &dz, NULL)) < 0)
-                return st;
-            b->delta = atan(dz);
-            b->g = 0.0;
-            for (it = 0; it < 3; it++) {
-                if ((st = probe(c, L, b, &q)) < 0)
-                    return st;
-                if (!(q.pen > 0.0)) {
-                    c->info->why = RR_NH_ROW_GRID;
-                    return RR_ERR_GEOMETRY;
-                }
-                b->g = fmax(0.0, L - q.pen / cos(q.delta));
-                b->delta = q.delta;
-                b->s_roller = q.s_roller;
-                b->s_wheel = q.s_wheel;
-                L = b->g + 0.5 * (e_max - b->g);
-            }
-        }
-    }
-    /* a region that touches only at the top of the loads: the neighbour's */
-    for (k = 0; k < *nb; k++)
-        if (bd[k].g > 0.9 * e_max) {
-            const band keep = bd[1 - k];
-            bd[0] = keep;
-            bd[0].lo = lo - 0.5 * cb;
-            bd[0].hi = hi + 0.5 * cb;
-            *nb = 1;
-            break;
-        }
-    return RR_OK;
-}
-
 /* One node at lowering e: its normal solution, then the coefficients on
  * its grid (and a finer one). */
-static int solve_node(call *c, int k, double e, double Nguess, double *p, node_data *d,
+static int solve_node(rr_nh_call *c, int k, double e, double Nguess, double *p, node_data *d,
                       int *warn)
 {
     const rr_nh_row_problem *pb = c->pb;
-    const bufs *b = &c->b;
+    const rr_nh_bufs *b = &c->b;
     rr_gap_patch gf;
     const rr_gap_patch *g = &d->r.patch;
     double sw = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, syy = 0.0, vx, vy, Nt, cov = 1.3;
@@ -700,10 +430,10 @@ static int solve_node(call *c, int k, double e, double Nguess, double *p, node_d
 /* The correction at a node (its block cb, RR_NH_CORR_LEN doubles): the
  * exact forces about the centroid less the calibrated ellipse's, over mu N,
  * at zero creepage and on the polar grid, at the row's free-rolling spin. */
-static int correct_node(call *c, const node_data *d, double *cb, int *warn)
+static int correct_node(rr_nh_call *c, const node_data *d, double *cb, int *warn)
 {
     const rr_nh_row_problem *pb = c->pb;
-    const bufs *b = &c->b;
+    const rr_nh_bufs *b = &c->b;
     const rr_gap_patch *g = &d->r.patch;
     const int m = 1 + RR_NH_U * RR_NH_TH;
     const double muN = pb->mu * d->N;
@@ -771,13 +501,13 @@ static int correct_node(call *c, const node_data *d, double *cb, int *warn)
 int rr_nonhertz_row(const rr_nh_row_problem *pb, double *work, size_t work_len, int side,
                     double *row, rr_nh_row_info *info)
 {
-    call c;
+    rr_nh_call c;
     size_t part[4], total;
     double *p;
     int k, j, st, warn = RR_OK, ci, nb = 1;
     double e_max;
     node_data d;
-    band bd[RR_NH_MAX_PATCHES];
+    rr_nh_band bd[RR_NH_MAX_PATCHES];
 
     if (!info)
         return RR_ERR_NULL;
@@ -833,7 +563,7 @@ int rr_nonhertz_row(const rr_nh_row_problem *pb, double *work, size_t work_len, 
     for (k = RR_NH_PATCH(0); k < RR_NH_ROW_LEN; k++)
         row[k] = 0.0;      /* a patch's place unused: zero */
     info->node = RR_NH_NODES - 1;
-    if ((st = largest_lowering(&c, &e_max)) < 0 || (st = find_bands(&c, e_max, bd, &nb)) < 0) {
+    if ((st = largest_lowering(&c, &e_max)) < 0 || (st = rr_nh_find_bands(&c, e_max, bd, &nb)) < 0) {
         for (k = 0; k < RR_NH_ROW_LEN; k++)
             row[k] = NAN;
         return st;
