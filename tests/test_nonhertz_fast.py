@@ -314,6 +314,8 @@ def test_one_wheel_that_fails_leaves_the_other():
     (dict(Fz=-5.0), r"Fz must be a finite number > 0"),
     (dict(Fz=np.nan), r"Fz must be"),
     (dict(n="40"), r"n must be a positive integer"),
+    (dict(combine=-1e-3), r"combine must be >= 0 \[m\], got -0.001"),
+    (dict(combine=np.nan), r"combine must be a finite number, got nan"),
     (dict(y=[0.0]), r"at least two finite rows"),
     (dict(sides=("middle",)), r"sides must name"),
     (dict(y_min=1e-3, y_max=0.0, y=None), r"y_max must exceed y_min"),

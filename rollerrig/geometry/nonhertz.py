@@ -8,8 +8,9 @@ shift built by the exact theory, evaluated in microseconds.
                        patch="nonhertz", nonhertz=t)
 
 The method (benchmarks/NONHERTZ_STUDY.md, "The recommended method, for C"):
-per row (a lateral shift of the wheelset) the exact normal solution of the
-wheel's patch at nine vertical loads up to 1.85 times the nominal one (load
+per row (a lateral shift of the wheelset) and per separate region of the
+gap (a patch, with its own gap at the row's zero-gap pose) the exact normal
+solution at nine vertical loads up to 1.85 times the nominal one (load
 against lowering, plane, pressure centroid and moments, area, peak) and
 its exact linear creep coefficients, and at two loads the exact creep
 forces' departure from the calibrated ellipse on a grid of creepages; at
@@ -155,7 +156,10 @@ def nonhertz_table(geometry, y_min, y_max, *, Fz, dy=2e-4, dy_jump=5e-5, mu_ref=
     jump of the rigid contact point (None: none; the rows must not straddle
     a jump, NONHERTZ_STUDY.md), or at the shifts y given.  Fz [N]: the
     nominal vertical wheel load (the nodes reach 1.85 Fz; beyond them the
-    loads are extrapolated by Hertz's law).  mu_ref: the friction of the
+    loads are extrapolated by Hertz's law; the gap's separate regions are
+    told apart at Fz's lowering).  combine [m]: intervals of the gap farther
+    apart are separate regions, each its own patch (CONTACT's D_COMB; up
+    to two a row, rr_nonhertz_table.h).  mu_ref: the friction of the
     correction; E, nu: both bodies.  n, n_corr: elements across the nodes'
     and the correction's grids; richardson: extrapolate the coefficients
     and the correction from elements half as large.  workers: threads
@@ -170,6 +174,8 @@ def nonhertz_table(geometry, y_min, y_max, *, Fz, dy=2e-4, dy_jump=5e-5, mu_ref=
     E = _number(func, "E", E)
     nu = _number(func, "nu", nu, positive=False)
     combine = _number(func, "combine", combine, positive=False)
+    if combine < 0:
+        raise RollerRigError(f"{func}: combine must be >= 0 [m], got {combine!r}")
     for name, v in (("n", n), ("n_corr", n_corr), ("workers", workers)):
         if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < 1:
             raise RollerRigError(f"{func}: {name} must be a positive integer, got {v!r}")
