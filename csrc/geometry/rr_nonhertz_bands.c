@@ -208,15 +208,14 @@ int rr_nh_find_bands(rr_nh_call *c, double e_max, rr_nh_band *bd, int *nb)
     bd[*nb - 1].hi = hi + 0.5 * cb;
     if (*nb == 2)
         bd[0].hi = bd[1].lo = 0.5 * (grp[home][1] + grp[other][0]);
+    bd[j].g = 0.0;
+    bd[j].s_roller = pb->point.s_roller;
+    bd[j].s_wheel = pb->point.s_wheel;
+    bd[j].delta = pb->point.delta;
     for (k = 0; k < *nb; k++) {
         rr_nh_band *b = &bd[k];
-        if (k == j) {
-            b->g = 0.0;
-            b->s_roller = pb->point.s_roller;
-            b->s_wheel = pb->point.s_wheel;
-            b->delta = pb->point.delta;
+        if (k == j)
             continue;
-        }
         {
             /* the region's middle, its roller's slope, the wheel above it */
             const double *gk = grp[k == 0 ? home : other];
@@ -229,12 +228,19 @@ int rr_nh_find_bands(rr_nh_call *c, double e_max, rr_nh_band *bd, int *nb)
             b->delta = atan(dz);
             b->g = 0.0;
             for (it = 0; it < 3; it++) {
-                if ((st = probe(c, L, b, &q)) < 0)
-                    return st;
-                if (!(q.pen > 0.0)) {
-                    c->info->why = RR_NH_ROW_GRID;
-                    return RR_ERR_GEOMETRY;
+                st = probe(c, L, b, &q);
+                if (st == RR_ERR_GEOMETRY || st == RR_ERR_RANGE || (st >= 0 && !(q.pen > 0.0))) {
+                    /* a region whose patch cannot be built on these profiles
+                     * (off them, beyond one planar patch): left out, counted
+                     * (the table's one-patch rows, warned), not the row lost */
+                    c->info->why = c->info->gap_why = 0;
+                    c->info->excluded++;
+                    bd[0] = bd[j];
+                    *nb = 1;
+                    return RR_OK;
                 }
+                if (st < 0)
+                    return st;
                 b->g = fmax(0.0, L - q.pen / cos(q.delta));
                 b->delta = q.delta;
                 b->s_roller = q.s_roller;

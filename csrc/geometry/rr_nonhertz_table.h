@@ -93,7 +93,9 @@ typedef struct {
     int solves;              /* exact solves spent */
     int patches;             /* patches of the row */
     int excluded;            /* intervals interpenetrating at the largest lowering beyond
-                                combine of every band: not tabulated */
+                                combine of every band, or a region whose own patch
+                                could not be built (off the profiles, beyond one
+                                planar patch): not tabulated */
     int merged;              /* separate regions beyond RR_NH_MAX_PATCHES, held in a
                                 neighbour's band (its plane) */
 } rr_nh_row_info;
