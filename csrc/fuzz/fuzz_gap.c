@@ -63,6 +63,15 @@ static void decode_gap_opts(fz_in *in, rr_gap_opts *o, double approach_hint, int
         o->dy = fz_choice(in, 2) ? o->dx : fz_log(in, small ? 2e-4 : 5e-5, 5e-3);
     }
     o->combine = fz_choice(in, 8) == 0 ? fz_lin(in, -0.01, 0.01) : fz_lin(in, 0.0, 0.01);
+    if (fz_choice(in, 4) == 0) {
+        /* a band of rig Y (rr_nonhertz_table's patches): anywhere, any width,
+         * sometimes empty or reversed, sometimes keep out of {0, 1} */
+        o->keep = fz_choice(in, 16) == 0 ? fz_int(in, -1, 3) : 1;
+        o->keep_lo = fz_lin(in, -1.0, 1.0);
+        o->keep_hi = o->keep_lo + (fz_choice(in, 16) == 0 ? fz_lin(in, -0.01, 0.0)
+                                                          : fz_log(in, 1e-5, 0.5));
+    }
+    fz_note("keep %d [%.17g, %.17g] ", o->keep, o->keep_lo, o->keep_hi);
     fz_note("opts ref %d (%.17g, %.17g) approach %.17g cover %.17g n %d dx %.17g dy %.17g "
             "combine %.17g; ", o->reference, o->s_roller, o->delta, o->approach, o->cover, o->n,
             o->dx, o->dy, o->combine);
@@ -76,7 +85,8 @@ static int opts_invalid(const rr_gap_opts *o, const rr_wheel_roller *p)
     return !ref_ok || !(o->approach > 0.0) || !isfinite(o->approach) || !(o->cover >= 1.0)
            || !isfinite(o->cover) || o->n < 4 || o->n > RR_GAP_MAX_N || !(o->dx >= 0.0)
            || !(o->dy >= 0.0) || !isfinite(o->dx) || !isfinite(o->dy)
-           || !(o->combine >= 0.0) || !isfinite(o->combine) || (p->side != 1 && p->side != -1);
+           || !(o->combine >= 0.0) || !isfinite(o->combine) || (p->side != 1 && p->side != -1)
+           || (o->keep != 0 && o->keep != 1) || (o->keep && !(o->keep_lo < o->keep_hi));
 }
 
 static void check_patch(const char *fn, int st, const rr_gap_patch *P, const double *h,

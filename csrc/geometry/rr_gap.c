@@ -36,6 +36,8 @@ void rr_gap_opts_default(rr_gap_opts *o)
     o->dx = 0.0;
     o->dy = 0.0;
     o->combine = 4e-3;
+    o->keep = 0;
+    o->keep_lo = o->keep_hi = 0.0;
 }
 
 /* The samples' spacing (patch.py's step): RR_GAP_SAMPLE, or a tenth of the
@@ -137,6 +139,23 @@ static void group_runs(runs *R, double y_deep, double combine, double *lo, doubl
     }
 }
 
+/* keep = 1: every run (the mask held them within [klo, khi], the same
+ * coordinate as the runs'), their hull in *lo, *hi (the deepest point of
+ * the band is in one). */
+static void keep_runs(runs *R, double klo, double khi, double *lo, double *hi)
+{
+    int i;
+    *lo = INFINITY;
+    *hi = -INFINITY;
+    for (i = 0; i < R->n; i++) {
+        R->kept[i] = R->hi[i] >= klo && R->lo[i] <= khi;
+        if (R->kept[i]) {
+            *lo = fmin(*lo, R->lo[i]);
+            *hi = fmax(*hi, R->hi[i]);
+        }
+    }
+}
+
 /* ---- the weighted reference ------------------------------------------------- */
 
 /* Per roller sample: its rig Y, the vertical gap g, and a, alpha (filled
@@ -156,7 +175,7 @@ typedef struct {
  * wsec: the wheel's section (scratch).  Returns the reference's roller
  * coordinate in *sr_out and its angle in *delta. */
 static int weighted_reference(const plane *f, const samples *rs, section *wsec, double sr_P,
-                              double approach, double combine, weights *W, double *sr_out,
+                              const rr_gap_opts *o, weights *W, double *sr_out,
                               double *delta, rr_gap_patch *out)
 {
     const rr_wheel_roller *p = f->p;
@@ -199,27 +218,34 @@ static int weighted_reference(const plane *f, const samples *rs, section *wsec, 
     for (i = i0; i <= i1; i++) {
         W->g[i] = sec_interp(wsec, W->Y[i], wsec->ze) - rs->z[i];
         W->a[i] = W->alpha[i] = NAN;
+        if (o->keep && !(W->Y[i] >= o->keep_lo && W->Y[i] <= o->keep_hi))
+            continue;
         if (W->g[i] < gmin) {
             gmin = W->g[i];
             deep = i;
         }
     }
     if (!isfinite(gmin)) {
-        out->why = RR_GAP_WEIGHTS;
-        return RR_ERR_RANGE;
+        out->why = gmin == INFINITY && o->keep ? RR_GAP_KEEP : RR_GAP_WEIGHTS;
+        return gmin == INFINITY && o->keep ? RR_ERR_GEOMETRY : RR_ERR_RANGE;
     }
     for (i = i0; i <= i1; i++)
         W->g[i] -= gmin;
     for (it = 0; it < WEIGHT_ITER; it++) {
-        const double top = approach / cos(*delta);
+        const double top = o->approach / cos(*delta);
         double lo, hi, nd;
         int r, done;
         runs R;
         for (i = 0; i < n; i++)
-            W->mask[i] = top - W->g[i0 + i] > 0.0;
+            W->mask[i] = top - W->g[i0 + i] > 0.0
+                         && (!o->keep || (W->Y[i0 + i] >= o->keep_lo
+                                          && W->Y[i0 + i] <= o->keep_hi));
         if ((st = find_runs(W->mask, W->Y + i0, n, &R, out)) != RR_OK)
             return st;
-        group_runs(&R, W->Y[deep], combine, &lo, &hi);
+        if (o->keep)
+            keep_runs(&R, o->keep_lo, o->keep_hi, &lo, &hi);
+        else
+            group_runs(&R, W->Y[deep], o->combine, &lo, &hi);
         sw = swa = swy = 0.0;
         for (r = 0; r < R.n; r++)
             for (i = i0 + R.a[r]; R.kept[r] && i < i0 + R.b[r]; i++) {
@@ -299,7 +325,12 @@ static int check_inputs(const rr_gap_site *site, const rr_gap_opts *o)
         || (o->reference == RR_GAP_GIVEN && !(fabs(o->delta) < 0.5 * RR_PI))
         || !(fabs(site->delta) < 0.5 * RR_PI)
         || !(o->approach > 0.0) || !(o->cover >= 1.0) || o->n < 4 || o->n > RR_GAP_MAX_N
-        || !(o->dx >= 0.0) || !(o->dy >= 0.0) || !(o->combine >= 0.0))
+        || !(o->dx >= 0.0) || !(o->dy >= 0.0) || !(o->combine >= 0.0)
+        || (o->keep != 0 && o->keep != 1))
+        return RR_ERR_PARAM;
+    if (o->keep && !(isfinite(o->keep_lo) && isfinite(o->keep_hi)))
+        return RR_ERR_NONFINITE;
+    if (o->keep && !(o->keep_lo < o->keep_hi))
         return RR_ERR_PARAM;
     return RR_OK;
 }
@@ -439,7 +470,7 @@ int rr_gap_build(const rr_gap_site *site, const rr_gap_opts *o, double *work, si
 {
     const rr_wheel_roller *p;
     double step, sr_P, sw_P, delta, plo, phi, lo, hi, level, hmin, df, r_P, R_P, x_t, xh;
-    double dx, dy, fi_lo, fi_hi, fj_lo, fj_hi, hmin_grid;
+    double dx, dy, fi_lo, fi_hi, fj_lo, fj_hi, hmin_grid, klo, khi;
     plane f;
     carve c;
     section rsec, wsec;
@@ -482,8 +513,8 @@ int rr_gap_build(const rr_gap_site *site, const rr_gap_opts *o, double *work, si
         return st;
     if (o->reference == RR_GAP_WEIGHTED) {
         if ((st = take_samples(&p->roller, sr_P, step, c.kmax, &c.rs, out, 0)) != RR_OK
-            || (st = weighted_reference(&f, &c.rs, &wsec, sr_P, o->approach, o->combine, &c.W,
-                                        &sr_P, &delta, out)) != RR_OK)
+            || (st = weighted_reference(&f, &c.rs, &wsec, sr_P, o, &c.W, &sr_P, &delta,
+                                        out)) != RR_OK)
             return st;
     }
     if ((st = place_plane(&f, &c, &rsec, &wsec, step, sr_P, delta, &sw_P, &plo, &phi, out))
@@ -512,23 +543,37 @@ int rr_gap_build(const rr_gap_site *site, const rr_gap_opts *o, double *work, si
     }
     df = (phi - plo) / (double)(nf - 1);
     hmin = INFINITY;
+    /* keep = 1: the keep interval in the plane's y (rig Y = P's + y t2y at
+     * the surfaces, which lie within a gap's height of the plane there) */
+    klo = (o->keep_lo - f.P0) / f.t2y;
+    khi = (o->keep_hi - f.P0) / f.t2y;
     for (i = 0; i < nf; i++) {
         c.yf[i] = i < nf - 1 ? (double)i * df + plo : phi;     /* numpy.linspace */
         c.hy[i] = gap_at(&rsec, &wsec, c.yf[i]);
+        if (o->keep && !(c.yf[i] >= klo && c.yf[i] <= khi))
+            continue;
         if (c.hy[i] < hmin) {
             hmin = c.hy[i];
             deep = i;
         }
     }
+    if (o->keep && hmin == INFINITY) {
+        out->why = RR_GAP_KEEP;
+        return RR_ERR_GEOMETRY;
+    }
     for (i = 0; i < nf; i++)
-        c.mask[i] = c.hy[i] - hmin <= level;
+        c.mask[i] = c.hy[i] - hmin <= level
+                    && (!o->keep || (c.yf[i] >= klo && c.yf[i] <= khi));
     if ((st = find_runs(c.mask, c.yf, nf, &R, out)) != RR_OK)
         return st;
     if (R.n == 0) {                          /* hmin not finite: the plane's scan failed */
         out->why = RR_GAP_PATCH_NONFINITE;
         return RR_ERR_GEOMETRY;
     }
-    group_runs(&R, c.yf[deep], o->combine, &lo, &hi);
+    if (o->keep)
+        keep_runs(&R, klo, khi, &lo, &hi);
+    else
+        group_runs(&R, c.yf[deep], o->combine, &lo, &hi);
     for (k = 0; k < R.n; k++) {
         double *iv = R.kept[k] ? out->regions[out->nregions++] : out->excluded[out->nexcluded++];
         iv[0] = R.lo[k];

@@ -71,10 +71,16 @@ typedef struct {
     int n;               /* elements across the region's longer side, 4..RR_GAP_MAX_N */
     double dx, dy;       /* element sizes [m]; 0: from n (square) */
     double combine;      /* intervals farther than this from the deepest are left out [m], >= 0 */
+    int keep;            /* 0: the region is the deepest interval and those within combine
+                            (CONTACT's); 1: the gap within rig Y [keep_lo, keep_hi] alone
+                            (every interval there, cut at the band's ends; the level and
+                            the reference's weights from the deepest point there; combine
+                            unused): one of several separate patches, rr_nonhertz_table.h */
+    double keep_lo, keep_hi;   /* keep = 1: rig Y [m], keep_lo < keep_hi */
 } rr_gap_opts;
 
-/* Weighted reference, cover 1.5, n 40, dx = dy = 0 (from n), combine 4 mm;
- * approach 0 (the caller's to set). */
+/* Weighted reference, cover 1.5, n 40, dx = dy = 0 (from n), combine 4 mm,
+ * keep 0; approach 0 (the caller's to set). */
 void rr_gap_opts_default(rr_gap_opts *o);
 
 /* Where the gap is: one side's wheel and roller at a pose of the wheelset,
@@ -111,9 +117,10 @@ enum rr_gap_why {
     RR_GAP_SCAN = 12,           /* the plane's lateral range holds more samples than the
                                    workspace (cross-sections far longer than the window) */
     RR_GAP_H_BUFFER = 13,       /* h_len < need_mx need_my: the grid is in grid */
-    RR_GAP_FAR = 14             /* the grid lies more than RR_GAP_MAX_INDEX elements from P
+    RR_GAP_FAR = 14,            /* the grid lies more than RR_GAP_MAX_INDEX elements from P
                                    (elements far smaller than the region's distance from
                                    it: lo, hi, grid.dy) */
+    RR_GAP_KEEP = 15            /* keep = 1: no sample of the gap within [keep_lo, keep_hi] */
 };
 
 typedef struct {
@@ -160,7 +167,7 @@ size_t rr_gap_workspace_len(const rr_gap_opts *o);
  *            with the grid in out->grid), RR_ERR_NONFINITE, RR_ERR_PARAM (an
  *            option out of range; the pair's radii or side), errors of
  *            rr_spline_check, RR_ERR_GEOMETRY (why OFF_PROFILE, FOLD, APART,
- *            PATCH_REACHES, PATCH_NONFINITE), RR_ERR_RANGE (why
+ *            PATCH_REACHES, PATCH_NONFINITE, KEEP), RR_ERR_RANGE (why
  *            REGION_ENDS, REGION_LONG, REGION_BEYOND, RUNS, WEIGHTS, SCAN, FAR:
  *            a load or approach beyond one planar patch on these
  *            profiles), RR_ERR_GRID (why TOO_MANY: elements too small for

@@ -15,6 +15,7 @@
 #include "geometry/rr_gap.h"
 #include "geometry/rr_wheel_exact.h"
 #include "geometry/rr_nonhertz_table.h"
+#include "geometry/rr_nonhertz_row.h"
 
 /* The nodes' lowerings as fractions of the largest (the study's NODES). */
 static const double node_f[RR_NH_NODES] = {0.03, 0.1, 0.2, 0.33, 0.46, 0.6, 0.75, 0.88, 1.0};
@@ -73,16 +74,6 @@ static void node_problem(const rr_nh_row_problem *pb, double Fz, rr_wheel_exact_
     we->interrupt = pb->interrupt;
 }
 
-/* The buffers carved from the caller's workspace. */
-typedef struct {
-    double *wex, *fine_ex, *gap;        /* rr_wheel_exact's (the coarse solver's at its
-                                           start), the fine grids' solver, rr_gap_build's */
-    size_t wex_len, coarse_len, fine_len, gap_len;
-    double *h, *pn, *hf, *hc, *hcf;     /* side^2, side^2, 4 side^2, side^2, 4 side^2 */
-    signed char *state;                 /* side^2 bytes */
-    size_t cells;
-} bufs;
-
 static size_t lens(const rr_nh_row_problem *pb, int side, size_t part[4])
 {
     rr_wheel_exact_problem we;
@@ -106,18 +97,9 @@ size_t rr_nonhertz_row_workspace_len(const rr_nh_row_problem *pb, int side)
     return lens(pb, side, part);
 }
 
-/* The row's call state. */
-typedef struct {
-    const rr_nh_row_problem *pb;
-    bufs b;
-    rr_nh_row_info *info;
-    double G;
-    rr_wheel_exact_result scratch;      /* the largest load's solution */
-} call;
-
 /* A grid of elements dx (n across when dx = 0) on the node's plane and pose
  * (patch p of result r) into h (hlen doubles). */
-static int grid_at(call *c, const rr_wheel_exact_result *r, int n, double dx, double *h,
+static int grid_at(rr_nh_call *c, const rr_wheel_exact_result *r, int n, double dx, double *h,
                    size_t hlen, rr_gap_patch *out)
 {
     const rr_nh_row_problem *pb = c->pb;
@@ -132,7 +114,9 @@ static int grid_at(call *c, const rr_wheel_exact_result *r, int n, double dx, do
     o.cover = r->cover;
     o.n = n;
     o.dx = o.dy = dx;
-    o.combine = pb->combine;
+    o.keep = 1;
+    o.keep_lo = c->bd->lo;
+    o.keep_hi = c->bd->hi;
     if (rr_gap_workspace_len(&o) > c->b.gap_len) {
         c->info->why = RR_NH_ROW_GRID;
         return RR_ERR_WORKSPACE;
@@ -141,21 +125,23 @@ static int grid_at(call *c, const rr_wheel_exact_result *r, int n, double dx, do
     site.y_ws = pb->y_ws;
     site.z = r->z;
     site.roll = r->roll;
-    site.s_roller = pb->point.s_roller;
-    site.s_wheel = pb->point.s_wheel;
-    site.delta = pb->point.delta;
+    site.s_roller = c->bd->s_roller;
+    site.s_wheel = c->bd->s_wheel;
+    site.delta = c->bd->delta;
     st = rr_gap_build(&site, &o, c->b.gap, c->b.gap_len, h, hlen, out);
     if (st < 0) {
         c->info->why = RR_NH_ROW_GRID;
         c->info->gap_why = out->why;
         if (st == RR_ERR_WORKSPACE)
             c->info->need = (size_t)(out->grid.mx > out->grid.my ? out->grid.mx : out->grid.my);
+        return st;
     }
+    rr_nh_clip_band(c->bd, out, h);
     return st;
 }
 
 /* The exact forces (fx, fy, mz about P) on grid g, h at load N. */
-static int solve(call *c, const rr_grid *g, const double *h, double N, double cx, double cy,
+static int solve(rr_nh_call *c, const rr_grid *g, const double *h, double N, double cx, double cy,
                  double cphi, int fine, double F[3], rr_exact_field *field)
 {
     const rr_nh_row_problem *pb = c->pb;
@@ -198,7 +184,7 @@ static int worse(int a, int b)
 
 /* The forces at a batch of creepages cr[i] = (cx, cy, cphi), i < m, on the
  * coarse grid and (Richardson) the fine one: F[i] = 2 F_fine - F_coarse. */
-static int forces(call *c, const rr_gap_patch *g, const double *h, const rr_gap_patch *gf,
+static int forces(rr_nh_call *c, const rr_gap_patch *g, const double *h, const rr_gap_patch *gf,
                   const double *hf, double N, const double (*cr)[3], int m, double (*F)[3],
                   int *warn)
 {
@@ -229,7 +215,7 @@ typedef struct {
 
 /* The calibrated ellipse of a node: semi-axes a, b and the scales of cy
  * and the spin that give its exact K22, K23 (nonhertz_fast.calibrated_ellipse). */
-static int calibrated(const call *c, const node_data *d, double *a, double *b, double *sy,
+static int calibrated(const rr_nh_call *c, const node_data *d, double *a, double *b, double *sy,
                       double *sp)
 {
     rr_kalker_coeffs kc;
@@ -248,7 +234,7 @@ static int calibrated(const call *c, const node_data *d, double *a, double *b, d
 
 /* The lowering of the largest load: rr_wheel_exact at Fz_max (the nodes'
  * scale; zero creepage). */
-static int largest_lowering(call *c, double *e_max)
+static int largest_lowering(rr_nh_call *c, double *e_max)
 {
     const rr_nh_row_problem *pb = c->pb;
     rr_wheel_exact_problem we;
@@ -267,7 +253,6 @@ static int largest_lowering(call *c, double *e_max)
                                                                          : r->patch.grid.my);
         return st;
     }
-    c->info->excluded = r->patch.nexcluded;
     *e_max = r->lowered;
     return RR_OK;
 }
@@ -275,29 +260,32 @@ static int largest_lowering(call *c, double *e_max)
 /* The patch at lowering e (CONTACT's weighted plane at its own approach,
  * cover cov) and the load whose approach is the pose's interpenetration
  * (the exact normal solution at that pose): d->r's patch, sol, N. */
-static int normal_at(call *c, double e, double N, double cov, node_data *d, int *edge, int *warn)
+static int normal_at(rr_nh_call *c, double e, double N, double cov, node_data *d, int *edge, int *warn)
 {
     const rr_nh_row_problem *pb = c->pb;
-    const bufs *b = &c->b;
+    const rr_nh_bufs *b = &c->b;
+    const rr_nh_band *bd = c->bd;
     rr_wheel_exact_result *r = &d->r;
     rr_gap_site site;
     rr_gap_opts o;
     rr_exact_problem ep;
     rr_exact_field field;
-    double a = e * cos(pb->point.delta);
+    double a = e * cos(bd->delta);
     int it, st;
     memset(r, 0, sizeof *r);
     site.pair = pb->pair;
     site.y_ws = pb->y_ws;
-    site.z = pb->pose0.z - e;
+    site.z = pb->pose0.z - (bd->g + e);
     site.roll = pb->pose0.roll;
-    site.s_roller = pb->point.s_roller;
-    site.s_wheel = pb->point.s_wheel;
-    site.delta = pb->point.delta;
+    site.s_roller = bd->s_roller;
+    site.s_wheel = bd->s_wheel;
+    site.delta = bd->delta;
     rr_gap_opts_default(&o);
     o.n = pb->n;
     o.cover = cov;
-    o.combine = pb->combine;
+    o.keep = 1;
+    o.keep_lo = bd->lo;
+    o.keep_hi = bd->hi;
     /* the plane at the pose's own interpenetration */
     for (it = 0; it < 4; it++) {
         o.approach = a;
@@ -310,6 +298,7 @@ static int normal_at(call *c, double e, double N, double cov, node_data *d, int 
                                                                              : r->patch.grid.my);
             return st;
         }
+        rr_nh_clip_band(bd, &r->patch, b->h);
         if (!(r->patch.pen > 0.0)) {
             c->info->why = RR_NH_ROW_GRID;
             return RR_ERR_GEOMETRY;
@@ -350,19 +339,10 @@ static int normal_at(call *c, double e, double N, double cov, node_data *d, int 
         return RR_ERR_RANGE;
     }
     *edge = rr_exact_at_edge(b->state, r->patch.grid.mx, r->patch.grid.my);
-    if (r->patch.nexcluded > 0) {
-        /* regions left out within the grid's cover need not touch: count
-         * those within the approach itself (cover 1), which would */
-        rr_gap_patch q;
-        o.cover = 1.0;
-        if (rr_gap_build(&site, &o, b->gap, b->gap_len, b->hc, b->cells, &q) >= 0
-            && q.nexcluded > c->info->excluded)
-            c->info->excluded = q.nexcluded;
-    }
     r->N = N;
     r->z = site.z;
     r->roll = site.roll;
-    r->lowered = e;
+    r->lowered = bd->g + e;
     r->approach = a;
     r->cover = cov;
     return RR_OK;
@@ -370,11 +350,11 @@ static int normal_at(call *c, double e, double N, double cov, node_data *d, int 
 
 /* One node at lowering e: its normal solution, then the coefficients on
  * its grid (and a finer one). */
-static int solve_node(call *c, int k, double e, double Nguess, double *p, node_data *d,
+static int solve_node(rr_nh_call *c, int k, double e, double Nguess, double *p, node_data *d,
                       int *warn)
 {
     const rr_nh_row_problem *pb = c->pb;
-    const bufs *b = &c->b;
+    const rr_nh_bufs *b = &c->b;
     rr_gap_patch gf;
     const rr_gap_patch *g = &d->r.patch;
     double sw = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, syy = 0.0, vx, vy, Nt, cov = 1.3;
@@ -450,10 +430,10 @@ static int solve_node(call *c, int k, double e, double Nguess, double *p, node_d
 /* The correction at a node (its block cb, RR_NH_CORR_LEN doubles): the
  * exact forces about the centroid less the calibrated ellipse's, over mu N,
  * at zero creepage and on the polar grid, at the row's free-rolling spin. */
-static int correct_node(call *c, const node_data *d, double *cb, int *warn)
+static int correct_node(rr_nh_call *c, const node_data *d, double *cb, int *warn)
 {
     const rr_nh_row_problem *pb = c->pb;
-    const bufs *b = &c->b;
+    const rr_nh_bufs *b = &c->b;
     const rr_gap_patch *g = &d->r.patch;
     const int m = 1 + RR_NH_U * RR_NH_TH;
     const double muN = pb->mu * d->N;
@@ -465,7 +445,7 @@ static int correct_node(call *c, const node_data *d, double *cb, int *warn)
     rr_nonhertz_frame(g->point[1], g->point[2], g->delta, 0.0, (double)pb->pair->side,
                       pb->pair->R0, &fr);
     if ((st = rr_nonhertz_creepages(&pb->wheelset, pb->roller_spin, pb->pair->R0, &fr, d->pen,
-                                    d->e, pb->vmin, kin)) < 0)
+                                    c->bd->g + d->e, pb->vmin, kin)) < 0)
         return st;
     cphi = kin[2];
     if ((st = calibrated(c, d, &a, &bb, &sy, &sp)) < 0)
@@ -521,17 +501,18 @@ static int correct_node(call *c, const node_data *d, double *cb, int *warn)
 int rr_nonhertz_row(const rr_nh_row_problem *pb, double *work, size_t work_len, int side,
                     double *row, rr_nh_row_info *info)
 {
-    call c;
+    rr_nh_call c;
     size_t part[4], total;
     double *p;
-    int k, st, warn = RR_OK, ci;
+    int k, j, st, warn = RR_OK, ci, nb = 1;
     double e_max;
     node_data d;
+    rr_nh_band bd[RR_NH_MAX_PATCHES];
 
     if (!info)
         return RR_ERR_NULL;
     memset(info, 0, sizeof *info);
-    info->node = -1;
+    info->node = info->patch = -1;
     if (!row)
         return RR_ERR_NULL;
     for (k = 0; k < RR_NH_ROW_LEN; k++)
@@ -539,7 +520,8 @@ int rr_nonhertz_row(const rr_nh_row_problem *pb, double *work, size_t work_len, 
     if (!pb || !pb->pair || !work)
         return RR_ERR_NULL;
     {
-        const double v[] = {pb->y_ws, pb->pose0.z, pb->pose0.roll, pb->Fz_max, pb->E, pb->nu,
+        const double v[] = {pb->y_ws, pb->pose0.z, pb->pose0.roll, pb->Fz_max, pb->Fz_regions,
+                            pb->E, pb->nu,
                             pb->mu, pb->roller_spin, pb->vmin, pb->combine, pb->tol,
                             pb->point.s_roller, pb->point.s_wheel, pb->point.delta,
                             pb->point.A, pb->point.B};
@@ -547,7 +529,7 @@ int rr_nonhertz_row(const rr_nh_row_problem *pb, double *work, size_t work_len, 
             || !rr_all_finite(pb->wheelset.v, 3) || !rr_all_finite(pb->wheelset.w, 3))
             return RR_ERR_NONFINITE;
     }
-    if (!(pb->Fz_max > 0.0))
+    if (!(pb->Fz_max > 0.0) || !(pb->Fz_regions >= 0.0) || !(pb->Fz_regions <= pb->Fz_max))
         return RR_ERR_LOAD;
     if (pb->n < 8 || pb->n > RR_GAP_MAX_N / 2 || pb->n_corr < 8 || pb->n_corr > pb->n
         || (pb->richardson != 0 && pb->richardson != 1) || !(pb->combine >= 0.0))
@@ -576,34 +558,42 @@ int rr_nonhertz_row(const rr_nh_row_problem *pb, double *work, size_t work_len, 
     c.b.state = (signed char *)(c.b.hcf + 4 * c.b.cells);
 
     row[0] = pb->y_ws;
-    row[1] = 1.0;
     row[2] = pb->pose0.z;
     row[3] = pb->pose0.roll;
-    p = row + RR_NH_PATCH(0);
-    p[0] = 0.0;            /* the patch of the rigid contact point: no gap */
-    for (k = RR_NH_PATCH(1); k < RR_NH_ROW_LEN; k++)
-        row[k] = 0.0;      /* the second patch's place: unused */
+    for (k = RR_NH_PATCH(0); k < RR_NH_ROW_LEN; k++)
+        row[k] = 0.0;      /* a patch's place unused: zero */
     info->node = RR_NH_NODES - 1;
-    if ((st = largest_lowering(&c, &e_max)) < 0) {
+    if ((st = largest_lowering(&c, &e_max)) < 0 || (st = rr_nh_find_bands(&c, e_max, bd, &nb)) < 0) {
         for (k = 0; k < RR_NH_ROW_LEN; k++)
             row[k] = NAN;
         return st;
     }
-    ci = 0;
-    for (k = 0; k < RR_NH_NODES; k++) {
-        info->node = k;
-        st = solve_node(&c, k, node_f[k] * e_max,
-                        pb->Fz_max * pow(node_f[k], 1.5) / cos(pb->point.delta), p, &d, &warn);
-        if (st >= 0 && ci < RR_NH_CORR && k == corr_node[ci]) {
-            st = correct_node(&c, &d, p + RR_NH_CORR_AT(ci), &warn);
-            ci++;
-        }
-        if (st < 0) {
-            for (k = 0; k < RR_NH_ROW_LEN; k++)
-                row[k] = NAN;
-            return st;
+    row[1] = nb;
+    info->patches = nb;
+    for (j = 0; j < nb; j++) {
+        const double span = e_max - bd[j].g;
+        c.bd = &bd[j];
+        p = row + RR_NH_PATCH(j);
+        p[0] = bd[j].g;
+        info->patch = j;
+        ci = 0;
+        for (k = 0; k < RR_NH_NODES; k++) {
+            info->node = k;
+            st = solve_node(&c, k, node_f[k] * span,
+                            pb->Fz_max * pow(node_f[k] * span / e_max, 1.5) / cos(bd[j].delta),
+                            p, &d, &warn);
+            if (st >= 0 && ci < RR_NH_CORR && k == corr_node[ci]) {
+                st = correct_node(&c, &d, p + RR_NH_CORR_AT(ci), &warn);
+                ci++;
+            }
+            if (st < 0) {
+                for (k = 0; k < RR_NH_ROW_LEN; k++)
+                    row[k] = NAN;
+                return st;
+            }
         }
     }
+    info->patch = -1;
     info->node = -1;
     return warn;
 }

@@ -237,6 +237,49 @@ static void test_python_values(void)
     free(work);
 }
 
+/* keep = 1 with a band holding the whole region gives the same patch and
+ * h as CONTACT's grouping (one region); a band over half of it holds that
+ * half: its lateral extent within the band (plus the grid's exterior
+ * element), the same plane construction. */
+static void test_keep_band(void)
+{
+    rr_wheel_roller p;
+    rr_gap_site site;
+    rr_gap_opts o;
+    rr_gap_patch P, Q;
+    static double h2[HCAP];
+    size_t k;
+    int same = 1;
+    flat_on_crown(1, &p);
+    rr_gap_opts_default(&o);
+    o.approach = 5e-5;
+    site.pair = &p;
+    site.y_ws = 0.0;
+    site.z = p.r0;
+    site.roll = 0.0;
+    site.s_roller = site.s_wheel = site.delta = 0.0;
+    wl = rr_gap_workspace_len(&o);
+    work = calloc(wl, sizeof(double));
+    CHECK_STATUS(rr_gap_build(&site, &o, work, wl, hbuf, HCAP, &P), RR_OK, "keep: CONTACT's");
+    o.keep = 1;
+    o.keep_lo = -1.0;
+    o.keep_hi = 1.0;
+    CHECK_STATUS(rr_gap_build(&site, &o, work, wl, h2, HCAP, &Q), RR_OK, "keep: a wide band");
+    CHECK(Q.grid.mx == P.grid.mx && Q.grid.my == P.grid.my && Q.delta == P.delta
+          && Q.pen == P.pen, "keep: a wide band, the same grid and plane");
+    for (k = 0; k < (size_t)P.grid.mx * (size_t)P.grid.my; k++)
+        same &= hbuf[k] == h2[k];
+    CHECK(same, "keep: a wide band, the same h");
+    o.keep_lo = P.point[1];          /* from P's lateral place on */
+    CHECK_STATUS(rr_gap_build(&site, &o, work, wl, h2, HCAP, &Q), RR_OK, "keep: half");
+    /* in rig Y (each plane has its own reference point): from the band's
+     * start to the region's end, a sample apart */
+    CHECK(fabs(Q.point[1] + Q.lo * Q.t2[1] - P.point[1]) <= 2.0 * Q.step
+          && fabs(Q.point[1] + Q.hi * Q.t2[1] - (P.point[1] + P.hi * P.t2[1])) <= 2.0 * Q.step
+          && Q.grid.my < P.grid.my, "keep: half the band, half the region");
+    free(work);
+}
+
 /* ---- bad inputs ---- */
 
 static void test_bad_inputs(void)
@@ -283,6 +326,22 @@ static void test_bad_inputs(void)
     o.combine = -1e-3;
     CHECK_STATUS(rr_gap_build(&site, &o, work, wl, hbuf, HCAP, &P), RR_ERR_PARAM, "combine");
     o.combine = 4e-3;
+    o.keep = 2;
+    CHECK_STATUS(rr_gap_build(&site, &o, work, wl, hbuf, HCAP, &P), RR_ERR_PARAM, "keep 2");
+    o.keep = 1;
+    o.keep_lo = NAN;
+    o.keep_hi = 1.0;
+    CHECK_STATUS(rr_gap_build(&site, &o, work, wl, hbuf, HCAP, &P), RR_ERR_NONFINITE,
+                 "keep_lo NaN");
+    o.keep_lo = 1.0;
+    CHECK_STATUS(rr_gap_build(&site, &o, work, wl, hbuf, HCAP, &P), RR_ERR_PARAM,
+                 "keep_lo = keep_hi");
+    o.keep_lo = 2.0;              /* a band the gap does not reach */
+    o.keep_hi = 3.0;
+    CHECK_STATUS(rr_gap_build(&site, &o, work, wl, hbuf, HCAP, &P), RR_ERR_GEOMETRY,
+                 "keep: no sample in the band");
+    CHECK(P.why == RR_GAP_KEEP, "keep: the band named");
+    o.keep = 0;
     o.reference = 7;
     CHECK_STATUS(rr_gap_build(&site, &o, work, wl, hbuf, HCAP, &P), RR_ERR_PARAM, "reference");
     o.reference = RR_GAP_GIVEN;
@@ -499,6 +558,7 @@ int main(void)
     hbuf2 = malloc(HCAP * sizeof(double));
     test_closed_form();
     test_python_values();
+    test_keep_band();
     test_bad_inputs();
     test_wheel_exact();
     free(hbuf);

@@ -245,6 +245,16 @@ static void test_row_inputs(void)
     pb.Fz_max = -1.0;
     CHECK_STATUS(rr_nonhertz_row(&pb, work, 4, 48, row, &info), RR_ERR_LOAD, "Fz_max < 0");
     pb.Fz_max = 1e4;
+    pb.Fz_regions = NAN;
+    CHECK_STATUS(rr_nonhertz_row(&pb, work, 4, 48, row, &info), RR_ERR_NONFINITE,
+                 "Fz_regions NaN");
+    pb.Fz_regions = 2e4;
+    CHECK_STATUS(rr_nonhertz_row(&pb, work, 4, 48, row, &info), RR_ERR_LOAD,
+                 "Fz_regions beyond Fz_max");
+    pb.Fz_regions = -1.0;
+    CHECK_STATUS(rr_nonhertz_row(&pb, work, 4, 48, row, &info), RR_ERR_LOAD, "Fz_regions < 0");
+    CHECK(info.patch == -1 && info.node == -1 && info.patches == 0, "no patch at fault");
+    pb.Fz_regions = 5e3;
     pb.n_corr = 50;
     CHECK_STATUS(rr_nonhertz_row(&pb, work, 4, 48, row, &info), RR_ERR_PARAM, "n_corr > n");
     pb.n_corr = 30;

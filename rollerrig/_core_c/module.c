@@ -121,7 +121,7 @@ static PyMethodDef core_methods[] = {
      "rig_config_report({\"section.key\": value}) -> [(key, status, rule, other, entry, "
      "value, lo, hi), ...]: every problem of the rig's parameters (rr_rig_config_report)"},
     {"nonhertz_row", py_nonhertz_row, METH_VARARGS,
-     "nonhertz_row(pair, side, y_ws, (z0, roll0), point, (Fz_max, E, nu, mu), motion, "
+     "nonhertz_row(pair, side, y_ws, (z0, roll0), point, (Fz_max, Fz_regions, E, nu, mu), motion, "
      "roller_spin, vmin, (n, n_corr, richardson, combine), (tol, maxit)) -> (status, row, "
      "{info}): rr_nonhertz_row"},
     {"nonhertz_check", py_nonhertz_check, METH_VARARGS,

@@ -30,7 +30,7 @@ static int row_kernel(void *ctx, npy_intp start, npy_intp stop)
 }
 
 /* nonhertz_row(12 profile arrays, 8 params, side, y_ws, (z0, roll0), (s_roller,
- * s_wheel, delta, A, B), (Fz_max, E, nu, mu), ((c), (v), (w)), roller_spin,
+ * s_wheel, delta, A, B), (Fz_max, Fz_regions, E, nu, mu), ((c), (v), (w)), roller_spin,
  * vmin, (n, n_corr, richardson, combine), (tol, maxit)) -> (status, row
  * (RR_NH_ROW_LEN,), {info}).  The workspace grows until the grids fit. */
 PyObject *py_nonhertz_row(PyObject *self, PyObject *args)
@@ -55,11 +55,11 @@ PyObject *py_nonhertz_row(PyObject *self, PyObject *args)
     q = &pb->point;
     m = &pb->wheelset;
     rr_nonhertz_row_default(pb);
-    if (!PyArg_ParseTuple(args, PAIR_FORMAT "id(dd)(ddddd)(dddd)((ddd)(ddd)(ddd))dd(iiid)(di)"
+    if (!PyArg_ParseTuple(args, PAIR_FORMAT "id(dd)(ddddd)(ddddd)((ddd)(ddd)(ddd))dd(iiid)(di)"
                           ":nonhertz_row",
                           PAIR_ARGS(pobj, par), &side, &pb->y_ws, &pb->pose0.z,
                           &pb->pose0.roll, &q->s_roller, &q->s_wheel, &q->delta, &q->A, &q->B,
-                          &pb->Fz_max, &pb->E, &pb->nu, &pb->mu, &m->c[0], &m->c[1], &m->c[2],
+                          &pb->Fz_max, &pb->Fz_regions, &pb->E, &pb->nu, &pb->mu, &m->c[0], &m->c[1], &m->c[2],
                           &m->v[0], &m->v[1], &m->v[2], &m->w[0], &m->w[1], &m->w[2],
                           &pb->roller_spin, &pb->vmin, &pb->n, &pb->n_corr, &pb->richardson,
                           &pb->combine, &pb->tol, &pb->maxit))
@@ -92,10 +92,12 @@ PyObject *py_nonhertz_row(PyObject *self, PyObject *args)
     if (!(arr = PyArray_SimpleNew(1, &dim, NPY_DOUBLE)))
         goto done;
     memcpy(PyArray_DATA((PyArrayObject *)arr), k->row, sizeof k->row);
-    res = Py_BuildValue("(iO{s:i,s:i,s:i,s:i,s:n,s:i,s:i,s:i})", k->st, arr, "why", k->info.why,
-                        "node", k->info.node, "wheel_why", k->info.wheel_why, "gap_why",
-                        k->info.gap_why, "need", (Py_ssize_t)k->info.need, "solves",
-                        k->info.solves, "excluded", k->info.excluded, "side", k->side);
+    res = Py_BuildValue("(iO{s:i,s:i,s:i,s:i,s:i,s:n,s:i,s:i,s:i,s:i,s:i})", k->st, arr,
+                        "why", k->info.why, "patch", k->info.patch, "node", k->info.node,
+                        "wheel_why", k->info.wheel_why, "gap_why", k->info.gap_why, "need",
+                        (Py_ssize_t)k->info.need, "solves", k->info.solves, "patches",
+                        k->info.patches, "excluded", k->info.excluded, "merged",
+                        k->info.merged, "side", k->side);
 done:
     Py_XDECREF(arr);
     PyMem_RawFree(k->work);

@@ -8,8 +8,9 @@ shift built by the exact theory, evaluated in microseconds.
                        patch="nonhertz", nonhertz=t)
 
 The method (benchmarks/NONHERTZ_STUDY.md, "The recommended method, for C"):
-per row (a lateral shift of the wheelset) the exact normal solution of the
-wheel's patch at nine vertical loads up to 1.85 times the nominal one (load
+per row (a lateral shift of the wheelset) and per separate region of the
+gap (a patch, with its own gap at the row's zero-gap pose) the exact normal
+solution at nine vertical loads up to 1.85 times the nominal one (load
 against lowering, plane, pressure centroid and moments, area, peak) and
 its exact linear creep coefficients, and at two loads the exact creep
 forces' departure from the calibrated ellipse on a grid of creepages; at
@@ -155,7 +156,10 @@ def nonhertz_table(geometry, y_min, y_max, *, Fz, dy=2e-4, dy_jump=5e-5, mu_ref=
     jump of the rigid contact point (None: none; the rows must not straddle
     a jump, NONHERTZ_STUDY.md), or at the shifts y given.  Fz [N]: the
     nominal vertical wheel load (the nodes reach 1.85 Fz; beyond them the
-    loads are extrapolated by Hertz's law).  mu_ref: the friction of the
+    loads are extrapolated by Hertz's law; the gap's separate regions are
+    told apart at Fz's lowering).  combine [m]: intervals of the gap farther
+    apart are separate regions, each its own patch (CONTACT's D_COMB; up
+    to two a row, rr_nonhertz_table.h).  mu_ref: the friction of the
     correction; E, nu: both bodies.  n, n_corr: elements across the nodes'
     and the correction's grids; richardson: extrapolate the coefficients
     and the correction from elements half as large.  workers: threads
@@ -170,6 +174,8 @@ def nonhertz_table(geometry, y_min, y_max, *, Fz, dy=2e-4, dy_jump=5e-5, mu_ref=
     E = _number(func, "E", E)
     nu = _number(func, "nu", nu, positive=False)
     combine = _number(func, "combine", combine, positive=False)
+    if combine < 0:
+        raise RollerRigError(f"{func}: combine must be >= 0 [m], got {combine!r}")
     for name, v in (("n", n), ("n_corr", n_corr), ("workers", workers)):
         if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < 1:
             raise RollerRigError(f"{func}: {name} must be a positive integer, got {v!r}")
@@ -198,15 +204,22 @@ def nonhertz_table(geometry, y_min, y_max, *, Fz, dy=2e-4, dy_jump=5e-5, mu_ref=
             built = list(ex.map(lambda v: _row(geometry, side, float(v), Fz, E, nu, mu_ref, n,
                                                n_corr, richardson, combine, tol, maxit), ys))
         rows = [r for r, _ in built]
-        for v, (_, excluded) in zip(ys, built):
-            if excluded > 0:
-                # one patch per row (rr_nonhertz_table.h): a region beyond
-                # combine of the deepest that touches is not in the table;
-                # said here (the main thread), not dropped silently
+        for v, (_, info) in zip(ys, built):
+            # every separate region within the bands is its own patch
+            # (rr_nonhertz_table.h); what is not is said here (the main
+            # thread), not dropped silently
+            if info["excluded"] > 0:
                 warnings.warn(f"nonhertz_table: the {side} side at y = {float(v)!r} m: "
-                              f"{excluded} region(s) of the gap farther than combine = "
-                              f"{combine!r} m from the deepest (at some of its loads) are not "
-                              f"tabulated (one patch per row)", RollerRigWarning, stacklevel=2)
+                              f"{info['excluded']} interval(s) of the gap touching at the "
+                              f"largest load lie farther than combine = {combine!r} m from "
+                              f"the row's patches and are not tabulated", RollerRigWarning,
+                              stacklevel=2)
+            if info["merged"] > 0:
+                warnings.warn(f"nonhertz_table: the {side} side at y = {float(v)!r} m: "
+                              f"{info['merged'] + _core.NH_MAX_PATCHES} separate regions, "
+                              f"at most {_core.NH_MAX_PATCHES} patches a row: "
+                              f"{info['merged']} held in a neighbour's patch (its plane)",
+                              RollerRigWarning, stacklevel=2)
         out[side] = NonHertzSide(np.ascontiguousarray(np.array(rows)),
                                  1.0 if side == "left" else -1.0, float(geometry.roller_radius),
                                  G, nu, mu_ref).check()
@@ -227,20 +240,21 @@ def _row(geometry, side, y, Fz, E, nu, mu_ref, n, n_corr, richardson, combine, t
               (0.0, spin * np.cos(roll0), spin * np.sin(roll0)))
     st, row, info = _core.nonhertz_row(
         *geometry._arrays(), geometry._params(), 0 if side == "left" else 1, y, (z0, roll0),
-        point, (LOAD_SPAN * Fz, E, nu, mu_ref), motion, roller_spin, 1e-3,
+        point, (LOAD_SPAN * Fz, Fz, E, nu, mu_ref), motion, roller_spin, 1e-3,
         (int(n), int(n_corr), int(bool(richardson)), combine), (float(tol), int(maxit)))
     if st < 0:
         what = {_core.NH_ROW_NODE: "the exact solution of a load node",
-                _core.NH_ROW_GRID: "a finer grid of a node",
+                _core.NH_ROW_GRID: "a grid of a node or of the row's regions",
                 _core.NH_ROW_SOLVE: "a creep solution of a node",
                 _core.NH_ROW_COEFF: "a node's linear creep coefficient (not positive)"}
-        raise RollerRigError(f"nonhertz_table: the {side} side at y = {y!r} m, node "
+        patch = f"patch {info['patch']}, " if info["patch"] > 0 else ""
+        raise RollerRigError(f"nonhertz_table: the {side} side at y = {y!r} m, {patch}node "
                              f"{info['node']} (vertical load "
                              f"{LOAD_SPAN * Fz * _NODE_F[max(info['node'], 0)] ** 1.5:.6g} N): "
                              f"{what.get(info['why'], 'the row')} failed: "
                              f"{status_message(st)} (why {info['wheel_why']}, "
                              f"gap {info['gap_why']})")
-    return row, info["excluded"]
+    return row, info
 
 
 _NODE_F = (0.03, 0.1, 0.2, 0.33, 0.46, 0.6, 0.75, 0.88, 1.0)
