@@ -288,6 +288,18 @@ def nonhertz_table(geometry, y_min, y_max, *, Fz, dy=2e-4, dy_jump=5e-5, mu_ref=
     --------
     rig_nonhertz_table : the rig's table from its parameters.
     rig_contact : patch="nonhertz" uses the table.
+
+    Examples
+    --------
+    Three rows of the left wheel of the rig's pair, on coarse grids:
+
+    >>> import rollerrig as rr
+    >>> rig, params, table = rr.build_rig()
+    >>> nh = rr.nonhertz_table(table.geometry, 0.0, 2e-4, dy=1e-4, dy_jump=None,
+    ...                        Fz=200.0, n=10, n_corr=8, richardson=False,
+    ...                        sides=("left",))
+    >>> print(nh.left.y, nh.right)
+    [0.     0.0001 0.0002] None
     """
     import time
     func = "nonhertz_table"

@@ -630,6 +630,19 @@ def build_rig(params=None, *, dt=None, method=None, substeps=None, ode=None, nx=
     --------
     Rig : the methods that step it.
     simulate : the whole scenario.
+
+    Examples
+    --------
+    One control sample by hand, the rig's own controllers holding the
+    roller at the scenario's speed, no creepage target:
+
+    >>> import rollerrig as rr
+    >>> rig, params, table = rr.build_rig()
+    >>> w = params["scenario"]["roller_speed_m_s"] / params["roller"]["radius_m"]
+    >>> rig.sample(w, float("nan")), rig.advance()[1]
+    (0, 0)
+    >>> print(f"t = {rig.t:.3f} s, status {rig.status}")
+    t = 0.004 s, status 0
     """
     P = _parameters("build_rig", params)
     rig, table, *_ = _build("build_rig", P, dt=dt, method=method, substeps=substeps, ode=ode,

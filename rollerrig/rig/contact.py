@@ -228,6 +228,21 @@ def rig_contact(table, *, x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, s
     status).  For patch="nonhertz" with errors "warn" or "ignore", a wheel
     that fails has NaN numbers, no patches and its status (< 0), the other
     wheel is kept (and "warn" warns).
+
+    Examples
+    --------
+    The centred wheelset on the rig's own pair, the rollers' speed 0.1 %
+    under that of the nominal radii (the rolling radii differ from those:
+    cx is not -0.001):
+
+    >>> import rollerrig as rr
+    >>> rig, params, table = rr.build_rig()
+    >>> g, V = table.geometry, 2.0                      # roller surface speed [m/s]
+    >>> c = rr.rig_contact(table, y=0.0, spin=V / g.wheel_radius,
+    ...                    roller_spin=0.999 * V / g.roller_radius,
+    ...                    N_left=100.0, N_right=100.0)
+    >>> print(f"cx = {c.left.cx:.5f}, fx = {c.left.fx:.2f} N, status {c.status}")
+    cx = -0.00310, fx = 39.95 N, status 0
     """
     func = "rig_contact"
     _check_table(func, table)

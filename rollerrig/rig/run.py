@@ -324,6 +324,18 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     often than UNTRUSTED_SHARE (one in 20), in UNTRUSTED_MIN (20) samples
     or more, ends with status ERR_UNTRUSTED (-19), its message saying how
     many.
+
+    Examples
+    --------
+    A short run to one creepage target (the paper's scenario is
+    ``rr.simulate()``):
+
+    >>> import rollerrig as rr
+    >>> res = rr.simulate(duration=0.4, targets=[0.02], progress=False)
+    >>> print(res.status, res.message, len(res.time))
+    0 ok 100
+    >>> print(f"t = {res.time[-1]:.3f} s, creepage {res.creepage[-1]:.3f}")
+    t = 0.400 s, creepage 0.013
     """
     t0 = time.perf_counter()
     _progress.check("simulate", progress)
