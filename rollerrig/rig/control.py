@@ -147,6 +147,17 @@ class CreepageController:
     In the loop it gives the built-in controller's history bit for bit
     (the same operations in the same order), so it is the template for
     one's own.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import rollerrig as rr
+    >>> from rollerrig.rig.control import CreepageController
+    >>> own = rr.simulate(duration=0.4, targets=[0.02], progress=False)
+    >>> user = rr.simulate(duration=0.4, targets=[0.02], progress=False,
+    ...                    controller=CreepageController())
+    >>> print(user.status, np.array_equal(own.creepage, user.creepage))
+    0 True
     """
 
     def start(self, info):

@@ -177,6 +177,16 @@ def rig_exact(geometry, y_ws, *, mu, N=None, Fz=None, side="left", spin=None,
     -----
     The whole of it, patches, load iteration and solves, runs in the C
     core (csrc/geometry/rr_wheel_exact.h).
+
+    Examples
+    --------
+    The left wheel of the measured pair at 3.5 mm, on a coarse grid:
+
+    >>> import rollerrig as rr
+    >>> g = rr.RigGeometry.measured_pair()
+    >>> e = rr.rig_exact(g, 0.0035, Fz=6e4, spin=12.4, roller_spin=5.587, mu=0.5, n=16)
+    >>> print(f"N = {e.N:.0f} N, fx = {e.solution.fx:.0f} N")
+    N = 59972 N, fx = -18155 N
     """
     func = "rig_exact"
     if (N is None) == (Fz is None):

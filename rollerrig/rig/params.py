@@ -584,6 +584,17 @@ def check_parameters(params=None, *, source="check_parameters: params"):
     --------
     load_parameters : a parameter file as a nested dict.
     default_parameters : the defaults.
+
+    Examples
+    --------
+    >>> from rollerrig.rig import check_parameters
+    >>> P = check_parameters({"scenario": {"mu0": 0.3}})
+    >>> P["scenario"]["mu0"], P["roller"]["radius_m"]
+    (0.3, 0.16)
+    >>> check_parameters({"scenario": {"mu0": -1}})
+    Traceback (most recent call last):
+    ...
+    rollerrig._errors.RollerRigError: ...: scenario.mu0 must be a finite number in (0, ...], got -1
     """
     if params is not None and not isinstance(params, dict):
         raise RollerRigError(f"{source} must be a nested dict (or, for simulate and "

@@ -343,6 +343,15 @@ class RigResult:
         str
             One row per target; a value that is NaN shows as "-", with the
             reason at the end of its row.
+
+        Examples
+        --------
+        >>> import rollerrig as rr
+        >>> res = rr.simulate(duration=0.4, targets=[0.02], progress=False)
+        >>> print(res.table())
+          target   reached settling s  adhesion peak F/muN
+           0.020   0.00722          -    0.3676     0.9895  settling: the running mean
+           never came within 5% of the target
         """
         def cell(v, width, fmt):
             return f"{v:{width}{fmt}}" if np.isfinite(v) else f"{'-':>{width}}"
