@@ -166,18 +166,9 @@ class Rig:
     (the plant over the sample); :meth:`run` steps many samples at once.
     :meth:`rhs`, :meth:`jac` and :meth:`set_state` expose the plant's
     right-hand side, its approximate Jacobian and its state (e.g. to verify
-    the integrator against another solver).
-
-    Attributes
-    ----------
-    t : float
-        The rig's time [s].
-    y : numpy.ndarray
-        The plant's state (a copy; RIG_STATE, 12 values).
-    status : int
-        The last status (Notes).
-    info : RigInfo
-        The controllers' settings (:class:`rollerrig.rig.control.RigInfo`).
+    the integrator against another solver).  The properties :attr:`t`,
+    :attr:`y`, :attr:`status` and :attr:`info` give its time, state,
+    last status and the controllers' settings.
 
     See Also
     --------
@@ -241,7 +232,7 @@ class Rig:
             per sample (:data:`RECORD_FIELDS`); after the first error the
             rest NaN.
         status : int
-            The worst status of the run (class Notes).
+            The worst status of the run (the class's Notes).
 
         Raises
         ------
@@ -274,7 +265,7 @@ class Rig:
         Returns
         -------
         int
-            Status (class Notes).
+            Status (the class's Notes).
 
         Raises
         ------
@@ -294,7 +285,7 @@ class Rig:
             to xi_est (time, encoder counts, angles and speeds, drive
             torques, eq. 16's creepage estimate).
         status : int
-            Status (class Notes).
+            Status (the class's Notes).
 
         See Also
         --------
@@ -324,7 +315,7 @@ class Rig:
         Returns
         -------
         int
-            Status (class Notes).
+            Status (the class's Notes).
 
         Raises
         ------
@@ -351,7 +342,7 @@ class Rig:
         record : numpy.ndarray
             The sample's record (:data:`RECORD_FIELDS`).
         status : int
-            Status (class Notes).
+            Status (the class's Notes).
         """
         return self._core.advance()
 
@@ -363,7 +354,7 @@ class Rig:
         record : numpy.ndarray
             The record (:data:`RECORD_FIELDS`).
         status : int
-            Status (class Notes).
+            Status (the class's Notes).
         """
         return self._core.record()
 
@@ -386,7 +377,7 @@ class Rig:
         dydt : numpy.ndarray
             The derivative of the state (12 values).
         status : int
-            Status (class Notes).
+            Status (the class's Notes).
 
         Raises
         ------
@@ -410,7 +401,7 @@ class Rig:
         J : numpy.ndarray
             The approximate Jacobian d(dy/dt)/dy, 12 x 12.
         status : int
-            Status (class Notes).
+            Status (the class's Notes).
 
         Raises
         ------
@@ -432,7 +423,7 @@ class Rig:
         Returns
         -------
         int
-            Status (class Notes).
+            Status (the class's Notes).
 
         Raises
         ------
@@ -453,7 +444,7 @@ class Rig:
 
     @property
     def status(self):
-        """The rig's last status (class Notes)."""
+        """The rig's last status (the class's Notes)."""
         return self._core.status
 
     @property
