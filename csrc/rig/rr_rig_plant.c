@@ -100,6 +100,23 @@ rr_friction rr_rig_friction_at(const rr_rig_params *p, double t, int side, doubl
     return patched(p, rr_rig_schedule_law(p, t), side, s);
 }
 
+/* The spin's gyroscopic moment at y (rr_rig.h): I_w spin (w_f x a), the
+ * axle a and the frame's rate w_f (roll and yaw, the spin taken out) of the
+ * pose; zero where gyro_inertia is. */
+static void gyroscopic(const rr_rig_params *p, const rr_rig_pose *pose, const double *y,
+                       double G[3])
+{
+    const double cy = cos(y[RR_RIG_YAW]), sy = sin(y[RR_RIG_YAW]);
+    const double cr = cos(pose->roll), sr = sin(pose->roll);
+    const double a[3] = {-sy * cr, cy * cr, sr};
+    const double wf[3] = {pose->roll_rate * cy, pose->roll_rate * sy, y[RR_RIG_YAW_RATE]};
+    const double h = p->gyro_inertia * y[RR_RIG_SPIN];
+    int j;
+    cross(wf, a, G);
+    for (j = 0; j < 3; j++)
+        G[j] *= h;
+}
+
 /* Solve [a b; c d] x = r; 0, or RR_ERR_LOAD if singular or a load is not positive. */
 static int loads(double a, double b, double c, double d, double r0, double r1, double N[2])
 {
@@ -161,6 +178,12 @@ static int contact_eval(rr_rig *rig, const double *y)
         Wz = p->preload + p->mass * p->g + 2.0 * p->kz * (rig->pose.c[2] - rig->z_ref)
            + 2.0 * p->cz * rig->pose.v[2];
         Mx = 2.0 * b2 * (p->kz * rig->pose.roll + p->cz * rig->pose.roll_rate);
+        if (p->gyro_inertia > 0.0) {
+            /* the contacts also turn the spin's momentum: (d H/dt)_x */
+            double G[3];
+            gyroscopic(p, &rig->pose, y, G);
+            Mx += G[0];
+        }
     }
     for (k = 0; k < 2; k++)
         balance_row(&rig->pose, &rig->w[k], rig->w[k].n, 0.0, &fz[k], &mx[k]);
@@ -257,11 +280,17 @@ int rr_rig_rhs(rr_rig *rig, double t, const double *y, double *dydt)
         if (p->lateral.n > 0)
             F[1] += rr_rig_lateral_force(&p->lateral, rig->t);
         dydt[RR_RIG_VY] = (F[1] - 2.0 * (p->ky * y[RR_RIG_Y] + p->cy * y[RR_RIG_VY])) / p->mass;
+        if (p->gyro_inertia > 0.0) {
+            double G[3];
+            gyroscopic(p, &rig->pose, y, G);
+            M[2] -= G[2];
+        }
         dydt[RR_RIG_YAW_RATE] = (M[2] - 2.0 * b2 * (p->kx * y[RR_RIG_YAW]
                                                     + p->cx * y[RR_RIG_YAW_RATE])) / p->Izz;
         dydt[RR_RIG_SPIN] = (M[0] * axle[0] + M[1] * axle[1] + M[2] * axle[2]
                              + y[RR_RIG_T_WHEELSET]) / p->Iyy;
-        dydt[RR_RIG_ROLLER_SPIN] = (y[RR_RIG_T_ROLLER] + Mr) / p->roller_inertia;
+        /* on track the rails keep their speed whatever the contact does */
+        dydt[RR_RIG_ROLLER_SPIN] = p->track ? 0.0 : (y[RR_RIG_T_ROLLER] + Mr) / p->roller_inertia;
         dydt[RR_RIG_T_ROLLER] = (rig->Tref_roller - y[RR_RIG_T_ROLLER]) / p->roller_tau;
         dydt[RR_RIG_T_WHEELSET] = (rig->Tref_wheelset - y[RR_RIG_T_WHEELSET]) / p->wheelset_tau;
     }
@@ -296,7 +325,7 @@ static void jac_const(const rr_rig_params *p, double *J)
     JJ(RR_RIG_YAW_RATE, RR_RIG_YAW) = -2.0 * b2 * p->kx / p->Izz;
     JJ(RR_RIG_YAW_RATE, RR_RIG_YAW_RATE) = -2.0 * b2 * p->cx / p->Izz;
     JJ(RR_RIG_SPIN, RR_RIG_T_WHEELSET) = 1.0 / p->Iyy;
-    JJ(RR_RIG_ROLLER_SPIN, RR_RIG_T_ROLLER) = 1.0 / p->roller_inertia;
+    JJ(RR_RIG_ROLLER_SPIN, RR_RIG_T_ROLLER) = p->track ? 0.0 : 1.0 / p->roller_inertia;
     JJ(RR_RIG_T_ROLLER, RR_RIG_T_ROLLER) = -1.0 / p->roller_tau;
     JJ(RR_RIG_T_WHEELSET, RR_RIG_T_WHEELSET) = -1.0 / p->wheelset_tau;
 #undef JJ
@@ -401,7 +430,7 @@ static int linearise(rr_rig *rig, const double *y)
             l->rx[RR_RIG_VX] = 1.0 / p->mass;
             l->rx[RR_RIG_YAW_RATE] = -a / p->Izz;
             l->rx[RR_RIG_SPIN] = -r / p->Iyy;
-            l->rx[RR_RIG_ROLLER_SPIN] = R / p->roller_inertia;
+            l->rx[RR_RIG_ROLLER_SPIN] = p->track ? 0.0 : R / p->roller_inertia;
             l->ry[RR_RIG_VY] = 1.0 / p->mass;
         }
         simplified_forces(l, l->cx, l->cy, f, l->D);
