@@ -46,6 +46,9 @@ from .analysis.exact_table import ExactTable, build_exact_table
 from .analysis.fit import FitResult, fit_modified_fastsim, fit_polach
 from .analysis.sweep import sweep, sweep_rig
 from .capi import get_include, get_library_dir, get_pkgconfig_dir, get_source_dir
+# lateral dynamics and stability (issue 25)
+from .analysis.stability import (Linearization, Mode, Stability, critical_speed, linearize,
+                                 stability)
 
 #: the modules that moved into a wing, by their old names: `import
 #: rollerrig.sweep`, `from rollerrig.profiles import Profile` and the like
@@ -84,4 +87,6 @@ __all__ = [
     "PatchShape", "patch_shape", "RigExact", "rig_exact", "exact_table", "ExactTable",
     "build_exact_table", "control", "RigSignals", "RigInfo", "CreepageController",
     "get_include", "get_library_dir", "get_source_dir", "get_pkgconfig_dir",
+    # lateral dynamics and stability (issue 25)
+    "linearize", "Linearization", "Mode", "stability", "Stability", "critical_speed",
 ]
