@@ -209,16 +209,14 @@ def _structural(A):
     """The states that take part in the dynamics: not a cyclic angle (a zero
     column: chi; theta_r without an adhesion patch) nor a held one (a zero
     row: the rails' speed on track).  Their eigenvalues are exactly zero."""
-    keep = list(range(A.shape[0]))
-    changed = True
-    while changed:
-        changed = False
-        for i in list(keep):
-            others = [k for k in keep]
-            if not np.any(A[np.ix_(others, [i])]) or not np.any(A[np.ix_([i], others)]):
-                keep.remove(i)
-                changed = True
-    return keep
+    keep = np.ones(A.shape[0], dtype=bool)
+    while keep.any():
+        sub = A[np.ix_(keep, keep)]
+        drop = ~sub.any(axis=0) | ~sub.any(axis=1)
+        if not drop.any():
+            break
+        keep[np.flatnonzero(keep)[drop]] = False
+    return [int(i) for i in np.flatnonzero(keep)]
 
 
 def _modes(A, states):
