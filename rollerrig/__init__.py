@@ -49,6 +49,7 @@ from .capi import get_include, get_library_dir, get_pkgconfig_dir, get_source_di
 # lateral dynamics and stability (issue 25)
 from .analysis.stability import (Linearization, Mode, Stability, critical_speed, linearize,
                                  stability)
+from .analysis.hunting import Hunting, hunting
 
 #: the modules that moved into a wing, by their old names: `import
 #: rollerrig.sweep`, `from rollerrig.profiles import Profile` and the like
@@ -89,4 +90,5 @@ __all__ = [
     "get_include", "get_library_dir", "get_source_dir", "get_pkgconfig_dir",
     # lateral dynamics and stability (issue 25)
     "linearize", "Linearization", "Mode", "stability", "Stability", "critical_speed",
+    "hunting", "Hunting",
 ]
