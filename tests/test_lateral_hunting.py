@@ -39,17 +39,16 @@ def _decay_rate(rec, after=1.0):
     return np.polyfit(tt[k][m], np.log(yy[k][m]), 1)[0]
 
 
-@pytest.mark.slow
-def test_the_rigs_substeps_give_the_linear_decay_rate():
-    """Why hunting() steps 32 times a sample: the rig's integrator takes
-    the creep forces' lateral coupling explicitly (its Jacobian holds the
-    creepages' rates only), which adds negative damping to the hunting mode.
-    At 60 m/s on track (linear: -1.26/s) one substep a sample grows
-    (+1.3/s); SUBSTEPS decays within 10 % of the linear rate (measured 6 %,
-    a first-order error: 8 substeps -0.95/s)."""
+def test_the_rigs_time_step_gives_the_linear_decay_rate():
+    """The rig's integrator, whose Jacobian carries the conicity's
+    longitudinal creepage (without it the explicit coupling grew the
+    hunting mode at +1.3/s here), against the linearisation at 60 m/s on
+    track (-1.26/s): within 10 % at one substep a 4 ms sample (measured
+    7.7 %, the approximate Jacobian's first-order error), 5 % at SUBSTEPS
+    (3 %)."""
     lin = rr.linearize(SOFT, roller_speed=60.0, track=True).least_damped.eigenvalue.real
-    assert _decay_rate(_run(60.0, 1e-6, 4.0, substeps=1)) > 0 > lin
-    assert _decay_rate(_run(60.0, 1e-6, 4.0)) == pytest.approx(lin, rel=0.1)
+    assert _decay_rate(_run(60.0, 1e-6, 4.0, substeps=1)) == pytest.approx(lin, rel=0.1)
+    assert _decay_rate(_run(60.0, 1e-6, 4.0)) == pytest.approx(lin, rel=0.05)
 
 
 def test_the_cycle_above_the_linear_critical_speed_is_the_ramps(ramp):

@@ -14,6 +14,9 @@
 #define NS RR_RIG_NSTATE
 /* a creep force may pass mu N by this share (rounding) before it is an error */
 #define FRICTION_ROUNDING 1e-9
+/* contact angles [rad] below which a contact is on the tread (the
+ * Jacobian's conicity term: linearise) */
+#define TREAD_ANGLE 0.1
 
 static void cross(const double a[3], const double b[3], double out[3])
 {
@@ -382,7 +385,9 @@ static void simplified_forces(const rr_rig_creep_lin *l, double cx, double cy, d
 static int linearise(rr_rig *rig, const double *y)
 {
     const rr_rig_params *p = rig->p;
-    int k, st;
+    rr_contact_point cp[2], cm[2];
+    double hy = 0.0;
+    int k, st, pm_ok = 0;
 
     if (rig->lin_ok && memcmp(rig->lin_y, y, sizeof rig->lin_y) == 0)
         return RR_OK;
@@ -390,6 +395,15 @@ static int linearise(rr_rig *rig, const double *y)
     st = contact_eval(rig, y);
     if (st < 0)
         return st;
+    {
+        /* the table's contacts just either side of the shift: the slope of
+         * its interpolant there (what the right-hand side differentiates) */
+        rr_wheelset_pose tp;
+        const rr_contact_table *tab = p->contact.table;
+        hy = 1e-4 * tab->dy;
+        pm_ok = rr_contact_table_lookup(tab, y[RR_RIG_Y] + hy, &tp, NULL, &cp[0], &cp[1]) >= 0
+             && rr_contact_table_lookup(tab, y[RR_RIG_Y] - hy, &tp, NULL, &cm[0], &cm[1]) >= 0;
+    }
     for (k = 0; k < 2; k++) {
         const rr_wheel_contact *w = &rig->w[k];
         rr_rig_creep_lin *l = &rig->lin[k];
@@ -432,6 +446,17 @@ static int linearise(rr_rig *rig, const double *y)
             l->rx[RR_RIG_SPIN] = -r / p->Iyy;
             l->rx[RR_RIG_ROLLER_SPIN] = p->track ? 0.0 : R / p->roller_inertia;
             l->ry[RR_RIG_VY] = 1.0 / p->mass;
+            /* the rolling radii's change with the shift: the conicity's
+             * longitudinal creepage (eq. 7), the coupling of hunting, which
+             * an explicit treatment turns into negative damping (at 60 m/s
+             * on track, soft suspension: +1.3/s without it, -1.36/s with
+             * it, -1.26/s linearised); on the tread only: across a flange
+             * root the slope changes within a step, and one Newton
+             * iteration with it overshoots */
+            if (pm_ok && fabs(w->geo.delta) < TREAD_ANGLE)
+                l->dcx[RR_RIG_Y] = (-y[RR_RIG_SPIN] * (cp[k].r - cm[k].r)
+                                    + y[RR_RIG_ROLLER_SPIN] * (cp[k].R - cm[k].R))
+                                   / (2.0 * hy * l->V);
         }
         simplified_forces(l, l->cx, l->cy, f, l->D);
         l->fx = f[0];

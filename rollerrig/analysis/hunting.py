@@ -53,16 +53,13 @@ def _positive(func, name, v):
     return float(v)
 
 
-#: plant steps per 4 ms sample in the ramp: the rig's integrator takes the
-#: lateral coupling of the creep forces (the conicity's longitudinal creepage,
-#: the gravitational stiffness) explicitly (its Jacobian has only the
-#: creepages' rates, csrc/rig/rr_rig_plant.c), which at one step a sample
-#: adds negative damping to the hunting mode: at 60 m/s on track (soft
-#: suspension) the decay rate is +1.3/s at 1 substep, -0.95 at 8, -1.19 at
-#: 32 against the linearisation's -1.26 (tests/test_lateral_hunting.py);
-#: at 1 substep a spurious cycle survives down to 50 m/s, 30 % below the
-#: linear critical speed; at 32 the cycle's amplitude is within 2 % of 64's
-SUBSTEPS = 32
+#: plant steps per 4 ms sample in the ramp.  The rig's Jacobian carries the
+#: conicity's longitudinal creepage (csrc/rig/rr_rig_plant.c, linearise): at
+#: 60 m/s on track (soft suspension) the hunting mode decays at -1.36/s at 1
+#: substep, -1.30 at 4, against -1.26 linearised (without that term: +1.3/s
+#: at 1 substep, a spurious cycle down to 50 m/s); the cycle's amplitude at 4
+#: is within 1 % of 32's (tests/test_lateral_hunting.py)
+SUBSTEPS = 4
 
 
 def hunting(speeds, params=None, *, track=False, settle=2.0, measure=1.0, shift=1e-3,
