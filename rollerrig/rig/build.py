@@ -18,6 +18,7 @@ from ..geometry.profiles import Profile
 from ..geometry.wheelset import MAX_ROWS, ContactTable, RigGeometry
 from .params import (_FILE_OPTIONS, _SAMPLE_TIME, PARAMETERS, _c_values, _check_run, _defaults,
                      _parameters, _short)
+from .params import _with_track
 
 
 #: the creep-force methods the rig steps with (the registry's in_rig: not
@@ -283,6 +284,7 @@ def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, c
     None), for messages; run, names: more of the run's own values
     {"section.key": value} (simulate's duration, targets, start times) and
     the arguments that gave them."""
+    P = _with_track(func, P)              # scenario.track: the rail for the rollers
     given_dt = dt is not None if given_dt is None else given_dt
     run, names = dict(run or {}), dict(names or {})
     run[_SAMPLE_TIME] = dt if dt is not None else P["scenario"]["control_sample_time_s"]
@@ -384,7 +386,7 @@ def _culprits(P, run, names, keys, build):
 
 
 def build_rig(params=None, *, dt=None, method=None, substeps=None, ode=None, nx=None, ny=None,
-              roller_speed=None, start="rolling", **creep):
+              roller_speed=None, start="rolling", track=None, **creep):
     """The rig (rollerrig.Rig, over the C rig) and the merged parameters,
     for stepping by hand (rig.sample / rig.advance / rig.rhs, e.g. to verify
     the integrator against another solver).  Returns (rig, params, table).
@@ -404,10 +406,12 @@ def build_rig(params=None, *, dt=None, method=None, substeps=None, ode=None, nx=
     roller_speed: roller surface speed [m/s] of the initial state
     start:   "rolling" (the wheelset rolling freely at roller_speed) or
              "rest"
+    track:   True: on tangent track (simulate's track); default
+             scenario.track
     table:   the contact table (rollerrig.ContactTable) of the conical wheel
              on its crowned roller
     """
-    P = _parameters("build_rig", params)
+    P = _with_track("build_rig", _parameters("build_rig", params), track)
     rig, table, *_ = _build("build_rig", P, dt=dt, method=method, substeps=substeps, ode=ode,
                             nx=nx, ny=ny, roller_speed=roller_speed, start=start, creep=creep)
     return rig, P, table

@@ -37,6 +37,7 @@ from . import control as _control
 from .._errors import RollerRigError, RollerRigWarning, status_message
 from .build import _build, _creep_options, _geometry
 from .params import _SAMPLE_TIME, _check_run, _integer, _parameters, _real_arg, _short
+from .params import _with_track
 from .result import RECORD_FIELDS, RigResult, scenario_record
 
 
@@ -172,7 +173,7 @@ def _record_plan(n, dt, record_every, max_record_bytes):
 def simulate(duration=None, dt=None, method=None, params=None, targets=None,
              target_times=None, *, roller_speed=None, start="rolling", nx=None, ny=None,
              substeps=None, ode=None, record_every=1, max_record_bytes=RECORD_BYTES_CAP,
-             progress=None, controller=None, **creep):
+             progress=None, controller=None, track=None, **creep):
     """Run the rig: by default the seed paper's scenario on the default parameters.
 
     duration:  simulated time [s], at least one sample and at most 1e5 s
@@ -235,6 +236,10 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
                (rollerrig.rig.control.RigInfo).  A controller that raises or
                returns NaN ends the run with a RollerRigError naming the
                sample, whose .result holds the history so far
+    track:     True: the same wheelset on tangent track (the rail a roller of
+               radius rollerrig.rig.params.TRACK_RADIUS_M held at the roller
+               speed, docs/lateral_dynamics.md); False: on the rollers;
+               default scenario.track
     **creep:   the creep-force method's options: bound, grid, slip_speed,
                blend_rule (blended FASTSIM), k0, alpha_inf, beta (modified
                FASTSIM), kA, kS (Polach); see
@@ -252,7 +257,7 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     if controller is not None and not callable(controller):
         raise RollerRigError(f"simulate: controller must be a callable (signals -> dict of "
                              f"references), got {_short(controller)}")
-    P = _parameters("simulate", params)
+    P = _with_track("simulate", _parameters("simulate", params), track)
     scenario = scenario_record(params)          # the file as read (path, sha256) or None
     S = P["scenario"]
     given_dt = dt is not None
