@@ -47,6 +47,10 @@ from .analysis.exact_table import ExactTable, build_exact_table
 from .analysis.fit import FitResult, fit_modified_fastsim, fit_polach
 from .analysis.sweep import sweep, sweep_rig
 from .capi import get_include, get_library_dir, get_pkgconfig_dir, get_source_dir
+# lateral dynamics and stability (issue 25)
+from .analysis.stability import (Linearization, Mode, Stability, critical_speed, linearize,
+                                 stability)
+from .analysis.hunting import Hunting, hunting
 
 #: the modules that moved into a wing, by their old names: `import
 #: rollerrig.sweep`, `from rollerrig.profiles import Profile` and the like
@@ -86,4 +90,7 @@ __all__ = [
     "rig_nonhertz_table",
     "build_exact_table", "control", "RigSignals", "RigInfo", "CreepageController",
     "get_include", "get_library_dir", "get_source_dir", "get_pkgconfig_dir",
+    # lateral dynamics and stability (issue 25)
+    "linearize", "Linearization", "Mode", "stability", "Stability", "critical_speed",
+    "hunting", "Hunting",
 ]

@@ -1,5 +1,6 @@
 """Command-line entry point: ``rollerrig simulate``, ``rollerrig fmu``,
-``rollerrig exact-table`` (also ``python -m rollerrig``).
+``rollerrig exact-table``, ``rollerrig stability`` (also ``python -m
+rollerrig``).
 
 Exit status: 0 the run finished (its warnings, if any, on stderr), 1 the
 run stopped early (its outputs are still written), 2 bad input (one message
@@ -322,6 +323,68 @@ def _fmu(args):
     return 0
 
 
+# ------------------------------------------------ rollerrig stability (issue 25)
+
+def _speed_range(text):
+    """--speeds LO:HI:N (N speeds from LO to HI [m/s], evenly) or a comma list."""
+    import numpy as np
+    try:
+        if ":" in text:
+            lo, hi, n = text.split(":")
+            speeds = np.linspace(float(lo), float(hi), int(n))
+        else:
+            speeds = np.array([float(v) for v in text.split(",")])
+    except ValueError:
+        speeds = np.zeros(0)
+    if speeds.size == 0 or not np.all(np.isfinite(speeds)) or np.any(speeds <= 0) \
+            or np.any(np.diff(speeds) <= 0):
+        raise argparse.ArgumentTypeError(f"increasing speeds > 0 [m/s] as LO:HI:N or "
+                                         f"v1,v2,..., got {text!r}")
+    return speeds
+
+
+def _stability(args):
+    from .analysis.stability import stability
+    name = "rollerrig stability"
+    try:
+        st = stability(args.speeds, args.scenario, track=args.track)
+    except RollerRigError as e:
+        text = str(e).replace("stability: speeds", "--speeds").replace("stability: params",
+                                                                        "--scenario")
+        print(text if text.startswith(name) else f"{name}: {text}", file=sys.stderr)
+        return 2
+    where = "track" if st.track else "rollers"
+    print(f"# the plant's modes against speed on the {where} (rollerrig.stability)")
+    print(f"{'speed [m/s]':>12} {'max Re [1/s]':>14} {'min damping':>12} "
+          f"{'least damped [Hz]':>18}")
+    for V, mr, md, modes in zip(st.speeds, st.max_real, st.min_damping, st.modes):
+        top = next((m for m in modes if not m.neutral), None)
+        print(f"{V:12.4g} {mr:14.6g} {md:12.5g} "
+              f"{top.frequency_hz if top else float('nan'):18.5g}")
+    if st.critical_speed == st.critical_speed:
+        m = st.critical_mode
+        print(f"critical speed: {st.critical_speed:.6g} m/s ({m.frequency_hz:.4g} Hz, "
+              f"{', '.join(m.dominant)})")
+    else:
+        print(f"critical speed: none in {st.speeds[0]:g} to {st.speeds[-1]:g} m/s")
+    return 0
+
+
+def _add_stability(sub):
+    p = sub.add_parser("stability", help="the wheelset's eigenvalues and critical speed",
+                       description="Linearise the rig's plant at its steady state at each "
+                       "speed (rollerrig.stability; docs/lateral_dynamics.md), print the "
+                       "largest real part, the least damping ratio and the least damped "
+                       "mode's frequency per speed, and the linear critical speed.  Exit "
+                       "status 0: done, 2: bad input.")
+    p.add_argument("--speeds", type=_speed_range, default=_speed_range("5:100:20"),
+                   metavar="LO:HI:N", help="roller (or track) speeds [m/s]: N from LO to HI, "
+                   "or a comma list (default 5:100:20)")
+    p.add_argument("--track", action="store_true", help="the same wheelset on tangent track")
+    p.add_argument("--scenario", metavar="TOML", help="parameter file overriding the defaults")
+    p.set_defaults(func=_stability)
+
+
 def build_parser():
     from ._binding import METHODS
     rig_methods = [name for name, m in METHODS.items() if m.in_rig]
@@ -392,6 +455,7 @@ def build_parser():
     p.add_argument("--fmi", type=int, choices=(2, 3), default=2,
                    help="FMI version: 2 (FMI 2.0, the default) or 3 (FMI 3.0)")
     p.set_defaults(func=_fmu)
+    _add_stability(sub)
     return parser
 
 

@@ -249,7 +249,7 @@ def test_methods_offered_are_the_rigs_from_the_registry(capsys):
      "rollerrig exact-table: argument --nu: Poisson's ratio must be in [0, 0.5], got '0.7'"),
     (["--bogus"], "rollerrig: unrecognized arguments: --bogus"),
     (["bogus"], "rollerrig: argument COMMAND: invalid choice: 'bogus' (choose from "
-                "'simulate', 'exact-table', 'fmu')"),
+                "'simulate', 'exact-table', 'fmu', 'stability')"),
 ])
 def test_argument_errors_are_one_line_naming_the_option(argv, message, capsys):
     """No usage block; an unknown option after a command is named by that

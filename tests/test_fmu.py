@@ -167,7 +167,7 @@ def test_contents_binary_sources_and_exports(fmus, unzipped, version):
 def test_variables_come_from_the_declarations(unzipped):
     md = read_model_description(str(unzipped[2]))
     by_name = {v.name: v for v in md.modelVariables}
-    units = {"": None, "-": None}
+    units = {"": None, "-": None, "1": None}     # dimensionless: no unit in the FMU
     for p in rig.PARAMETERS:
         names = [p.name] if p.type != "list" else \
             [f"{p.name}[{k + 1}]" for k in range(len(p.default))]

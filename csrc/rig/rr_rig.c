@@ -85,6 +85,10 @@ int rr_rig_check(const rr_rig_params *p)
         || (p->linear_tr != 0 && p->linear_tr != 1)
         || (p->newton_model != 0 && p->newton_model != 1))
         return RR_ERR_PARAM;
+    if (!isfinite(p->gyro_inertia))
+        return RR_ERR_NONFINITE;
+    if (!(p->gyro_inertia >= 0.0) || (p->track != 0 && p->track != 1))
+        return RR_ERR_PARAM;
     if ((st = rr_rig_contact_check(&p->contact)) != RR_OK
         || (st = rr_pi_check(&p->roller_pi)) != RR_OK
         || (st = rr_pi_check(&p->wheelset_pi)) != RR_OK

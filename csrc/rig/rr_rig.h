@@ -32,7 +32,21 @@
  *   Iyy spin' = M . axle + T_wheelset
  *   J_r roller_spin' = T_roller + sum_j ((p_j - O_r) x F_j)_y
  * with b the axle boxes' lateral half-spacing, O_r a point of the roller
- * axis.  Gyroscopic terms are left out.
+ * axis.
+ * Gyroscopic terms (gyro_inertia > 0, the wheelset's own spin inertia I_w:
+ * a drive's rotor on the frame does not yaw with the axle): the axle a
+ * turns with the frame rate w_f = (roll rate about the yawed X, yaw rate
+ * about Z), so the spin's angular momentum I_w spin a changes at
+ * I_w spin (w_f x a), about -I_w spin yaw_rate X + I_w spin roll_rate Z:
+ *   Izz yaw'' = ... - I_w spin (w_f x a)_z     (roll_rate = droll/dy vy)
+ * and the contacts' roll moment carries + I_w spin (w_f x a)_x besides
+ * the springs' (the roll follows the constraint: a load transfer).  Both
+ * vanish while the wheelset runs centred, as in the paper's scenario.
+ * Track (track = 1): the rails move at the constant speed of the state's
+ * roller_spin (its derivative, and the roller drive's effect, are zero):
+ * with the contact table and R0 of a roller of very large radius (rollerrig
+ * uses RR_RIG_TRACK_RADIUS) this is the wheelset on tangent track, carried
+ * forward at the speed (docs/lateral_dynamics.md).
  *
  * Sampled-data control (period T): at each sample the encoders read the
  * angles, the creepage controller (eq. 13-16) sets the wheelset speed
@@ -71,6 +85,11 @@ enum rr_rig_state_index {
  * sampled speed loops to be stable at T (rr_rig_speed_loops). */
 #define RR_RIG_MIN_T 1e-6
 #define RR_RIG_MAX_T 0.1
+
+/* The radius [m] that stands for the rail's infinite one in track mode
+ * (track = 1, rollerrig's track=True): the rollers' effects on the lateral
+ * dynamics scale as r0/R (r0/R = 9.2e-5 for the scaled wheelset). */
+#define RR_RIG_TRACK_RADIUS 1000.0
 
 /* Most points of an adhesion schedule (rr_rig_adhesion). */
 #define RR_RIG_MAX_SCHEDULE 256
@@ -153,6 +172,10 @@ typedef struct {
     double roller_tau, wheelset_tau;          /* drive lags [s], > 0 */
     rr_encoder_params roller_enc, wheelset_enc;
     rr_creepctl_params creepctl;              /* radii, alpha, beta, vmin, sense */
+    /* lateral dynamics (docs/lateral_dynamics.md) */
+    double gyro_inertia;     /* the wheelset's own spin inertia in the gyroscopic terms
+                                [kg m^2], >= 0 (0: left out) */
+    int track;               /* 1: tangent track, the rails' speed held (see above); 0: rig */
 } rr_rig_params;
 
 /*

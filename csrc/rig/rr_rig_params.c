@@ -97,6 +97,10 @@ static const rr_rig_param params[] = {
          "of both PI loops, encoders and the creepage controller (stable with these inertias: "
          "tests/test_rig.py)"),
     REAL("scenario.g_m_s2", "m/s^2", 9.81, NONNEG, g, "standard gravity"),
+    FLAG("scenario.track", 0, "false", track,
+         "choice: the rig (false); true: the same wheelset on tangent track, the rail a "
+         "roller of radius RR_RIG_TRACK_RADIUS moving at the constant roller speed "
+         "(csrc/rig/rr_rig.h; docs/lateral_dynamics.md)"),
     /* [wheelset] */
     REAL("wheelset.mass_kg", "kg", 14.504, POS, mass, "scaled: 1813 kg / 125 (phi^3)"),
     REAL("wheelset.spin_inertia_kg_m2", "kg m^2", 0.035840, POS, spin_inertia,
@@ -128,6 +132,10 @@ static const rr_rig_param params[] = {
          "alternative (docs)"),
     REAL("wheelset.profile_half_width_m", "m", 0.015, POS, profile_half_width,
          "choice: +-15 mm tread, about the scaled 135 mm wheel width (27 mm) plus margin"),
+    FLAG("wheelset.gyroscopic", 1, "true", gyroscopic,
+         "physics: the spinning wheelset's gyroscopic moments (its own spin_inertia_kg_m2, "
+         "not the drive's) in yaw and in the roll balance (docs/lateral_dynamics.md); false "
+         "leaves them out, to show what they do"),
     /* [roller] */
     REAL("roller.radius_m", "m", 0.160, POS, roller_radius,
          "scaled: 0.8001 m / 5 (full-scale roller of the CONTACT roller-rig case); R/r0 = 1.74"),
@@ -652,6 +660,9 @@ int rr_rig_params_from(const rr_rig_config *c, const rr_contact_table *t, rr_rig
     p->newton_iters = c->newton_iterations;
     p->linear_tr = c->linear_first_stage;
     p->newton_model = c->newton_model;
+    /* lateral dynamics (docs/lateral_dynamics.md) */
+    p->gyro_inertia = c->gyroscopic ? c->spin_inertia : 0.0;
+    p->track = c->track;
     /* the derived doubles: values each in range can overflow together */
     {
         const double derived[3] = {p->Iyy, p->contact.estar, p->contact.G};

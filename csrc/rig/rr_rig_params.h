@@ -93,12 +93,14 @@ typedef struct {
     int drive_mode;             /* index: braking, traction */
     double T;                   /* control sample time [s] */
     double g;                   /* [m/s^2] */
+    int track;                  /* 1: the wheelset on tangent track (rr_rig.h, track) */
     /* wheelset */
     double mass, spin_inertia, yaw_inertia, wheel_radius, contact_half_spacing,
         axlebox_half_spacing;
     int wheel_profile;          /* index: conical, points */
     int wheel_profile_right;    /* index: "" (the left's), points */
     double wheel_scale, conicity, profile_half_width;
+    int gyroscopic;             /* 1: the spinning wheelset's gyroscopic moments (rr_rig.h) */
     /* roller */
     double roller_radius;
     int roller_profile;         /* index: crowned cylinder, points */

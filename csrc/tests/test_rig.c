@@ -221,6 +221,13 @@ static void test_errors(const rr_rig_params *good)
     CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "linear_tr neither 0 nor 1");
     p = *good; p.newton_model = 2;
     CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "newton_model neither 0 nor 1");
+    /* lateral dynamics (issue 25) */
+    p = *good; p.gyro_inertia = -1.0;
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "negative gyroscopic inertia");
+    p = *good; p.gyro_inertia = NAN;
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_NONFINITE, "NaN gyroscopic inertia");
+    p = *good; p.track = 2;
+    CHECK_STATUS(rr_rig_check(&p), RR_ERR_PARAM, "track neither 0 nor 1");
     CHECK_STATUS(rr_rig_init(good, NAN, NULL, 0, &rig), RR_ERR_NONFINITE, "NaN speed");
     /* a wheel off its roller: a clean stop at the sample's start */
     CHECK_STATUS(rr_rig_init(good, 31.25, NULL, 0, &rig), RR_OK, "init");

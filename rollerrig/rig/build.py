@@ -18,6 +18,7 @@ from ..geometry.profiles import Profile
 from ..geometry.wheelset import MAX_ROWS, ContactTable, RigGeometry
 from .params import (_FILE_OPTIONS, _SAMPLE_TIME, PARAMETERS, _c_values, _check_run, _defaults,
                      _parameters, _short)
+from .params import _with_track
 
 
 #: the creep-force methods the rig steps with (the registry's in_rig: not
@@ -460,6 +461,7 @@ def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, c
     None), for messages; run, names: more of the run's own values
     {"section.key": value} (simulate's duration, targets, start times) and
     the arguments that gave them."""
+    P = _with_track(func, P)              # scenario.track: the rail for the rollers
     given_dt = dt is not None if given_dt is None else given_dt
     run, names = dict(run or {}), dict(names or {})
     run[_SAMPLE_TIME] = dt if dt is not None else P["scenario"]["control_sample_time_s"]
@@ -561,7 +563,7 @@ def _culprits(P, run, names, keys, build):
 
 
 def build_rig(params=None, *, dt=None, method=None, substeps=None, ode=None, nx=None, ny=None,
-              roller_speed=None, start="rolling", **creep):
+              roller_speed=None, start="rolling", track=None, **creep):
     """The rig and the merged parameters, for stepping by hand.
 
     E.g. rig.sample / rig.advance / rig.rhs, to verify the integrator
@@ -591,6 +593,9 @@ def build_rig(params=None, *, dt=None, method=None, substeps=None, ode=None, nx=
         Roller surface speed [m/s] of the initial state.
     start : {"rolling", "rest"}, optional
         "rolling": the wheelset rolling freely at roller_speed; "rest".
+    track : bool, optional
+        True: on tangent track (:func:`simulate`'s track); default
+        scenario.track.
     **creep
         The creep-force method's options (:data:`CREEP_OPTIONS`: bound,
         grid, slip_speed, blend_rule, k0, alpha_inf, beta, kA, kS; see
@@ -613,9 +618,9 @@ def build_rig(params=None, *, dt=None, method=None, substeps=None, ode=None, nx=
         A parameter or argument out of range or breaking a rule (every
         problem of the parameters at once), a dt at which a drive's speed
         loop is unstable, an unknown method or option, a start not
-        "rolling" or "rest", a geometry that gives no contact table, or a
-        rig that cannot start (naming the changed values it cannot start
-        with).
+        "rolling" or "rest", track not True or False, a geometry that
+        gives no contact table, or a rig that cannot start (naming the
+        changed values it cannot start with).
 
     See Also
     --------
@@ -635,7 +640,7 @@ def build_rig(params=None, *, dt=None, method=None, substeps=None, ode=None, nx=
     >>> print(f"t = {rig.t:.3f} s, status {rig.status}")
     t = 0.004 s, status 0
     """
-    P = _parameters("build_rig", params)
+    P = _with_track("build_rig", _parameters("build_rig", params), track)
     rig, table, *_ = _build("build_rig", P, dt=dt, method=method, substeps=substeps, ode=ode,
                             nx=nx, ny=ny, roller_speed=roller_speed, start=start, creep=creep)
     return rig, P, table

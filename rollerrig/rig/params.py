@@ -732,3 +732,42 @@ def write_defaults(path=DEFAULTS_PATH):
     from .._files import write_file
     text = defaults_toml()
     return write_file(path, lambda fh: fh.write(text), what="write_defaults: path")
+
+
+# ------------------------------------------------------------ track mode
+# (issue 25, docs/lateral_dynamics.md)
+
+#: the radius [m] that stands for the rail's infinite one in track mode:
+#: csrc/rig/rr_rig.h's RR_RIG_TRACK_RADIUS (tests/test_lateral_track.py
+#: reads the header); the rollers' effects on the lateral dynamics scale as
+#: r0/R, 9.2e-5 for the scaled wheelset
+TRACK_RADIUS_M = 1000.0
+_ENCODER_MAX = 2147483647
+
+
+def _with_track(func, P, track=None):
+    """The checked parameters P on track (track True, or None and
+    scenario.track true) or on the rig (track False): on track the rollers
+    become the rail, a roller of radius TRACK_RADIUS_M whose speed the plant
+    holds (csrc/rig/rr_rig.h, track), with its encoder's counts scaled by the
+    radius (at most 2^31 - 1) so that it resolves the same surface speed.
+    A new dict where anything changes; P itself otherwise."""
+    if track is None:
+        track = bool(P["scenario"].get("track", False))
+    elif not isinstance(track, bool):
+        raise RollerRigError(f"{func}: track must be True or False, got {_short(track)}")
+    if not track:
+        if P["scenario"].get("track", False):
+            P = copy.deepcopy(P)
+            P["scenario"]["track"] = False
+        return P
+    if P["scenario"].get("track", False) and float(P["roller"]["radius_m"]) == TRACK_RADIUS_M:
+        return P
+    Q = copy.deepcopy(P)
+    R0 = float(Q["roller"]["radius_m"])
+    Q["scenario"]["track"] = True
+    Q["roller"]["radius_m"] = TRACK_RADIUS_M
+    counts = int(Q["roller_drive"]["encoder_counts_per_rev"])
+    Q["roller_drive"]["encoder_counts_per_rev"] = int(min(_ENCODER_MAX,
+                                                          round(counts * TRACK_RADIUS_M / R0)))
+    return Q

@@ -39,6 +39,7 @@ from . import control as _control
 from .._errors import RollerRigError, RollerRigWarning, status_message
 from .build import _build, _creep_options, _geometry
 from .params import _SAMPLE_TIME, _check_run, _integer, _parameters, _real_arg, _short
+from .params import _with_track
 from .result import RECORD_FIELDS, RigResult, scenario_record
 
 
@@ -200,7 +201,7 @@ def _record_plan(n, dt, record_every, max_record_bytes):
 def simulate(duration=None, dt=None, method=None, params=None, targets=None,
              target_times=None, *, roller_speed=None, start="rolling", nx=None, ny=None,
              substeps=None, ode=None, record_every=1, max_record_bytes=RECORD_BYTES_CAP,
-             progress=None, controller=None, **creep):
+             progress=None, controller=None, track=None, **creep):
     """Run the rig: by default the seed paper's scenario on the default parameters.
 
     Parameters
@@ -271,6 +272,11 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
         the rig's own controller); a drive left out (or None returned)
         keeps the rig's own controller.  Its method start(info), if any, is
         called first (:class:`rollerrig.rig.control.RigInfo`).
+    track : bool, optional
+        True: the same wheelset on tangent track (the rail a roller of
+        radius ``rollerrig.rig.params.TRACK_RADIUS_M`` held at the roller
+        speed, docs/lateral_dynamics.md); False: on the rollers; default
+        scenario.track.
     **creep
         The creep-force method's options: bound, grid, slip_speed,
         blend_rule (blended FASTSIM), k0, alpha_inf, beta (modified
@@ -291,8 +297,8 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
         target no sample would apply (its interval holds no sample's
         start), records over max_record_bytes (with the record_every that
         would fit), record_every not an integer from 1 to the number of
-        samples, a controller that is not callable, an unknown method or
-        option.  During the run: a controller that raises or returns NaN
+        samples, a controller that is not callable, track not True or
+        False, an unknown method or option.  During the run: a controller that raises or returns NaN
         (or what is not a command) ends the run with a RollerRigError
         naming the sample, whose ``.result`` holds the history so far.
 
@@ -342,7 +348,7 @@ def simulate(duration=None, dt=None, method=None, params=None, targets=None,
     if controller is not None and not callable(controller):
         raise RollerRigError(f"simulate: controller must be a callable (signals -> dict of "
                              f"references), got {_short(controller)}")
-    P = _parameters("simulate", params)
+    P = _with_track("simulate", _parameters("simulate", params), track)
     scenario = scenario_record(params)          # the file as read (path, sha256) or None
     S = P["scenario"]
     given_dt = dt is not None
