@@ -30,6 +30,7 @@ from typing import NamedTuple, Tuple
 import numpy as np
 
 from .._errors import RollerRigError, status_message
+from .._optional import require
 from ..rig.build import build_rig
 from ..rig.params import _parameters, _short, _with_track
 
@@ -346,7 +347,7 @@ def _sweep(s, modes_at):
     crit, mode = math.nan, None
     up = np.flatnonzero((mr[:-1] < 0) & (mr[1:] >= 0))
     if up.size:
-        from scipy.optimize import brentq
+        brentq = require("scipy.optimize", "the critical speed (stability, critical_speed)", "fit").brentq
         i = int(up[0])
         crit = brentq(lambda V: _max_real(modes_at(V)), s[i], s[i + 1], xtol=1e-12,
                       rtol=1e-10)
