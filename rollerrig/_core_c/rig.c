@@ -457,6 +457,62 @@ static PyObject *Rig_set_state(RigObject *self, PyObject *args)
     return PyLong_FromLong(st);
 }
 
+/* full_state() -> (names, values, status); set_full_state(values) -> status:
+ * the rig's whole state between samples (rr_rig_get_full_state). */
+static PyObject *Rig_full_state(RigObject *self, PyObject *noargs)
+{
+    const char *const *names = rr_rig_full_state_names();
+    npy_intp n = RR_FS_COUNT;
+    PyObject *out, *tup;
+    int j, st;
+    (void)noargs;
+    if (!(tup = PyTuple_New(RR_FS_COUNT)))
+        return NULL;
+    for (j = 0; j < RR_FS_COUNT; j++) {
+        PyObject *name = PyUnicode_FromString(names[j]);
+        if (!name) {
+            Py_DECREF(tup);
+            return NULL;
+        }
+        PyTuple_SET_ITEM(tup, j, name);
+    }
+    if (!(out = PyArray_SimpleNew(1, &n, NPY_DOUBLE)) || rig_enter(self, "full_state") < 0) {
+        Py_XDECREF(out);
+        Py_DECREF(tup);
+        return NULL;
+    }
+    st = rr_rig_get_full_state(&self->rig, OUT(out));
+    rig_leave(self);
+    return Py_BuildValue("NNi", tup, out, st);
+}
+
+static PyObject *Rig_set_full_state(RigObject *self, PyObject *args)
+{
+    PyObject *obj;
+    PyArrayObject *a;
+    double v[RR_FS_COUNT];
+    int j, st;
+    if (!PyArg_ParseTuple(args, "O:set_full_state", &obj))
+        return NULL;
+    a = (PyArrayObject *)PyArray_FROMANY(obj, NPY_DOUBLE, 1, 1, NPY_ARRAY_IN_ARRAY);
+    if (!a)
+        return NULL;
+    if (PyArray_DIM(a, 0) != RR_FS_COUNT) {
+        PyErr_Format(PyExc_ValueError, "Rig: the full state has %d values, got %zd",
+                     RR_FS_COUNT, (Py_ssize_t)PyArray_DIM(a, 0));
+        Py_DECREF(a);
+        return NULL;
+    }
+    for (j = 0; j < RR_FS_COUNT; j++)
+        v[j] = ((const double *)PyArray_DATA(a))[j];
+    Py_DECREF(a);
+    if (rig_enter(self, "set_full_state") < 0)
+        return NULL;
+    st = rr_rig_set_full_state(&self->rig, v);
+    rig_leave(self);
+    return PyLong_FromLong(st);
+}
+
 static PyObject *Rig_get_t(RigObject *self, void *closure)
 {
     double t;
@@ -529,6 +585,10 @@ static PyMethodDef Rig_methods[] = {
     {"rhs", (PyCFunction)Rig_rhs, METH_VARARGS, "rhs(t, y) -> (dydt, status)"},
     {"jac", (PyCFunction)Rig_jac, METH_VARARGS, "jac(t, y) -> (J, status)"},
     {"set_state", (PyCFunction)Rig_set_state, METH_VARARGS, "set_state(t, y) -> status"},
+    {"full_state", (PyCFunction)Rig_full_state, METH_NOARGS,
+     "full_state() -> (names, values, status): the rig's whole state between samples"},
+    {"set_full_state", (PyCFunction)Rig_set_full_state, METH_VARARGS,
+     "set_full_state(values) -> status"},
     {NULL, NULL, 0, NULL}
 };
 
