@@ -22,7 +22,9 @@ differences.  tests/test_lateral_linearize.py checks the matrix against a
 ten times larger step and the eigenvalues against the time response.
 
 The plant alone: the controllers, encoders and the creepage controller are
-not in the linearisation (its inputs are the drives' torque references).
+not in this linearisation (its inputs are the drives' torque references);
+linearize(closed_loop=True) linearises the sampled closed loop with them
+(rollerrig/analysis/closed_loop.py).
 """
 import math
 from typing import NamedTuple, Tuple
@@ -286,7 +288,7 @@ def _linearize_at(plant, V, state=None, func="linearize"):
 
 
 def linearize(params=None, *, roller_speed=None, track=False, state=None, method=None,
-              **creep):
+              closed_loop=False, **creep):
     """The rig's plant linearised at its steady state (Linearization).
 
     params:       None, a nested dict or a TOML path (as simulate);
@@ -299,11 +301,21 @@ def linearize(params=None, *, roller_speed=None, track=False, state=None, method
                   instead of the steady state found here; refused where it is
                   not steady
     method, **creep: the creep-force method and its options (as simulate)
+    closed_loop:  True: the sampled closed loop with the drives, encoders and
+                  controllers, the wheelset held at free rolling, as a map
+                  over one control sample (closed_loop.ClosedLoopLinearization;
+                  state then a full state dict, Rig.full_state())
     """
     func = "linearize"
+    if not isinstance(closed_loop, bool):
+        raise RollerRigError(f"{func}: closed_loop must be True or False, got "
+                             f"{_short(closed_loop)}")
     if roller_speed is not None:
         roller_speed = _speed_arg(func, "roller_speed", roller_speed)
     plant = _Plant(func, params, roller_speed, track, method, creep)
+    if closed_loop:
+        from .closed_loop import closed_loop_linearize
+        return closed_loop_linearize(plant, plant.V0, state, func)
     return _linearize_at(plant, plant.V0, state, func)
 
 
