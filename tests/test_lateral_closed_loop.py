@@ -183,6 +183,8 @@ def test_closed_loop_bad_input(loop):
         rr.linearize(closed_loop=True, state=off)
     with pytest.raises(RollerRigError, match="state must be a full state dict"):
         rr.linearize(closed_loop=True, state=loop.state)
+    with pytest.raises(RollerRigError, match="closed_loop is not available on track"):
+        rr.linearize(track=True, closed_loop=True)
     rig = _rig()
     r, x = _refs(rig, 50)
     rig.run(r, x)
