@@ -700,6 +700,15 @@ static void test_full_state(const rr_rig_params *p)
     REFUSE(RR_FS_MU0, -0.3, RR_ERR_FRICTION, "set: mu0 < 0");
     REFUSE(RR_FS_X + RR_RIG_Y, 0.02, RR_ERR_GEOMETRY, "set: the wheel off its table");
 #undef REFUSE
+    /* a rig that refused to step on goes on from a state set */
+    rig.status = RR_ERR_GEOMETRY;
+    CHECK_STATUS(rr_rig_get_full_state(&rig, u), RR_OK, "get: a refusing rig's state");
+    CHECK_STATUS(rr_rig_step(&rig, 5.0 / 0.16, 0.01, a), RR_ERR_GEOMETRY, "refusing");
+    CHECK_STATUS(rr_rig_set_full_state(&rig, v), RR_OK, "set clears the refusal");
+    CHECK(rr_rig_run(&rig, 40, rr, xr, b, &st) == 40 && st >= 0, "run after the refusal");
+    /* the same samples as the first run from v (its row 0 holds the refusal now) */
+    CHECK(memcmp(a + RR_REC_COUNT, b + RR_REC_COUNT, 39 * RR_REC_COUNT * sizeof *a) == 0,
+          "after the refusal: the checkpoint's records");
     CHECK_STATUS(rr_rig_set_full_state(&rig, NULL), RR_ERR_NULL, "set: NULL");
     CHECK_STATUS(rr_rig_get_full_state(NULL, u), RR_ERR_NULL, "get: NULL rig");
     CHECK(isnan(u[0]) && isnan(u[RR_FS_COUNT - 1]), "get: NaN on error");

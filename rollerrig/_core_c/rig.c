@@ -381,23 +381,29 @@ static PyObject *Rig_record(RigObject *self, PyObject *noargs)
     return record_call(self, rr_rig_record, "record");
 }
 
-static int state_vector(PyObject *obj, double *y)
+/* n doubles from a 1-D array-like (`what`: the state, the full state) */
+static int vector_n(PyObject *obj, double *y, int n, const char *what)
 {
     PyArrayObject *a = (PyArrayObject *)PyArray_FROMANY(obj, NPY_DOUBLE, 1, 1,
                                                           NPY_ARRAY_IN_ARRAY);
     int j;
     if (!a)
         return -1;
-    if (PyArray_DIM(a, 0) != RR_RIG_NSTATE) {
-        PyErr_Format(PyExc_ValueError, "Rig: the state has %d values, got %zd", RR_RIG_NSTATE,
+    if (PyArray_DIM(a, 0) != n) {
+        PyErr_Format(PyExc_ValueError, "Rig: %s has %d values, got %zd", what, n,
                      (Py_ssize_t)PyArray_DIM(a, 0));
         Py_DECREF(a);
         return -1;
     }
-    for (j = 0; j < RR_RIG_NSTATE; j++)
+    for (j = 0; j < n; j++)
         y[j] = ((const double *)PyArray_DATA(a))[j];
     Py_DECREF(a);
     return 0;
+}
+
+static int state_vector(PyObject *obj, double *y)
+{
+    return vector_n(obj, y, RR_RIG_NSTATE, "the state");
 }
 
 /* rhs(t, y) -> (dydt, status); jac(t, y) -> (J, status): the plant with the held references. */
@@ -489,24 +495,11 @@ static PyObject *Rig_full_state(RigObject *self, PyObject *noargs)
 static PyObject *Rig_set_full_state(RigObject *self, PyObject *args)
 {
     PyObject *obj;
-    PyArrayObject *a;
     double v[RR_FS_COUNT];
-    int j, st;
-    if (!PyArg_ParseTuple(args, "O:set_full_state", &obj))
-        return NULL;
-    a = (PyArrayObject *)PyArray_FROMANY(obj, NPY_DOUBLE, 1, 1, NPY_ARRAY_IN_ARRAY);
-    if (!a)
-        return NULL;
-    if (PyArray_DIM(a, 0) != RR_FS_COUNT) {
-        PyErr_Format(PyExc_ValueError, "Rig: the full state has %d values, got %zd",
-                     RR_FS_COUNT, (Py_ssize_t)PyArray_DIM(a, 0));
-        Py_DECREF(a);
-        return NULL;
-    }
-    for (j = 0; j < RR_FS_COUNT; j++)
-        v[j] = ((const double *)PyArray_DATA(a))[j];
-    Py_DECREF(a);
-    if (rig_enter(self, "set_full_state") < 0)
+    int st;
+    if (!PyArg_ParseTuple(args, "O:set_full_state", &obj)
+        || vector_n(obj, v, RR_FS_COUNT, "the full state") < 0
+        || rig_enter(self, "set_full_state") < 0)
         return NULL;
     st = rr_rig_set_full_state(&self->rig, v);
     rig_leave(self);
