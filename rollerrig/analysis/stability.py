@@ -22,7 +22,9 @@ differences.  tests/test_lateral_linearize.py checks the matrix against a
 ten times larger step and the eigenvalues against the time response.
 
 The plant alone: the controllers, encoders and the creepage controller are
-not in the linearisation (its inputs are the drives' torque references).
+not in this linearisation (its inputs are the drives' torque references);
+linearize(closed_loop=True) linearises the sampled closed loop with them
+(rollerrig/analysis/closed_loop.py).
 """
 import math
 from typing import NamedTuple, Tuple
@@ -287,7 +289,7 @@ def _linearize_at(plant, V, state=None, func="linearize"):
 
 
 def linearize(params=None, *, roller_speed=None, track=False, state=None, method=None,
-              **creep):
+              closed_loop=False, **creep):
     """The rig's plant linearised at its steady state.
 
     Parameters
@@ -306,24 +308,38 @@ def linearize(params=None, *, roller_speed=None, track=False, state=None, method
         the steady state found here; refused where it is not steady.
     method : str, optional
         The creep-force method (as :func:`rollerrig.simulate`).
+    closed_loop : bool
+        True: the sampled closed loop with the drives, encoders and
+        controllers, the wheelset held at free rolling, as a map over one
+        control sample (``state`` then a full state dict,
+        :meth:`rollerrig.Rig.full_state`); not on track, nor under creepage
+        control (an error says why).
     **creep
         The method's options.
 
     Returns
     -------
-    Linearization
+    Linearization or ClosedLoopLinearization
         A, B, C, D with the named states, inputs and outputs, the eigenvalues
-        and the modes.
+        and the modes; closed loop: the discrete map over one sample, its
+        eigenvalues z and their continuous equivalents log(z) / T.
 
     Raises
     ------
     RollerRigError
-        A bad argument, named; a state that is not steady.
+        A bad argument, named; a state that is not steady; a closed loop
+        whose finite differences the encoders' counts do not resolve.
     """
     func = "linearize"
+    if not isinstance(closed_loop, bool):
+        raise RollerRigError(f"{func}: closed_loop must be True or False, got "
+                             f"{_short(closed_loop)}")
     if roller_speed is not None:
         roller_speed = _speed_arg(func, "roller_speed", roller_speed)
     plant = _Plant(func, params, roller_speed, track, method, creep)
+    if closed_loop:
+        from .closed_loop import closed_loop_linearize
+        return closed_loop_linearize(plant, plant.V0, state, func)
     return _linearize_at(plant, plant.V0, state, func)
 
 
