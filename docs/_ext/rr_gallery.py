@@ -27,6 +27,11 @@ def _title_and_body(doc, name):
     first = " ".join(first.split())
     cut = first.find(". ")
     title, tail = (first, "") if cut < 0 else (first[:cut + 1], first[cut + 2:])
+    if len(title) > 70:            # a long sentence: its head as the title, all of it below
+        cuts = [i for i in (title.find(": "), title.find(", "), title.find(" (")) if i > 15]
+        if cuts:
+            tail = " ".join(p for p in (title, tail) if p)
+            title = title[:min(cuts)]
     body = "\n\n".join(p for p in (tail, rest) if p.strip())
     return title.rstrip("."), body
 
