@@ -25,11 +25,13 @@ The plant alone: the controllers, encoders and the creepage controller are
 not in the linearisation (its inputs are the drives' torque references).
 """
 import math
-from typing import NamedTuple, Tuple
+from typing import Any, Callable, NamedTuple, Optional, Tuple
 
 import numpy as np
+import numpy.typing as npt
 
 from .._errors import RollerRigError, status_message
+from .._typing import Params
 from ..rig.build import build_rig
 from ..rig.params import _parameters, _short, _with_track
 
@@ -285,8 +287,9 @@ def _linearize_at(plant, V, state=None, func="linearize"):
                          plant.track)
 
 
-def linearize(params=None, *, roller_speed=None, track=False, state=None, method=None,
-              **creep):
+def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
+              track: bool = False, state: Optional[npt.ArrayLike] = None,
+              method: Optional[str] = None, **creep: Any) -> Linearization:
     """The rig's plant linearised at its steady state (Linearization).
 
     params:       None, a nested dict or a TOML path (as simulate);
@@ -362,7 +365,7 @@ def _system_modes(func, system, V):
     return _modes(A, tuple(f"s{i}" for i in range(A.shape[0])))
 
 
-def critical_speed(system, speeds):
+def critical_speed(system: Callable[[float], npt.ArrayLike], speeds: npt.ArrayLike) -> float:
     """The linear critical speed of any linear model: system(V) -> A (a square
     matrix, d x/dt = A x at speed V); the first upward zero crossing of the
     largest real part of A's modes (neutral ones and the structural zeros
@@ -376,7 +379,8 @@ def critical_speed(system, speeds):
     return _sweep(s, lambda V: _system_modes(func, system, V))[3]
 
 
-def stability(speeds, params=None, *, track=False, method=None, **creep):
+def stability(speeds: npt.ArrayLike, params: Params = None, *, track: bool = False,
+              method: Optional[str] = None, **creep: Any) -> Stability:
     """The plant's eigenvalues against speed and its linear critical speed
     (Stability).  speeds: increasing roller (or track) speeds [m/s], each
     finite and > 0, at least one.  The critical speed: the first interval of
