@@ -38,12 +38,7 @@ from .._binding import (METHODS, FallingFriction, MethodInfo, OptionInfo, _broad
                        _friction, creep_blame, creep_options, methods_doc, swap_blame,
                        used_numbers)
 from .._errors import RollerRigError, check_status
-
-#: a result field: a float for a call on scalars, else a float64 array of
-#: the broadcast shape
-FloatResult = Union[float, npt.NDArray[np.float64]]
-#: a status field: an int for a call on scalars, else an int8 array
-StatusResult = Union[int, npt.NDArray[np.int8]]
+from .._typing import FloatResult, StatusResult
 
 __all__ = [
     "METHODS", "BOUNDS", "MethodInfo", "OptionInfo", "FallingFriction", "HertzContact",

@@ -15,15 +15,19 @@ over one element) by a semismooth Newton method with GMRES, every product
 with the half-space's influence coefficients by FFT.  Forces act on the
 wheel (body 1); conventions as rollerrig.contact.creep.
 """
+from __future__ import annotations
+
 from dataclasses import dataclass
+from typing import Any, Optional, Tuple
 
 import numpy as np
+import numpy.typing as npt
 
 from .. import _core
 from .._binding import (METHODS, _as_float, check_creep_options, creep_blame, creep_options,
                         swap_blame, used_numbers)
 from .._errors import RollerRigError, check_status
-from .creep import TractionField, _case
+from .creep import CreepForces, TractionField, _case
 
 __all__ = ["ExactSolution", "exact_field", "exact_solve", "exact_richardson"]
 
@@ -86,8 +90,10 @@ def _solution(func, out, args, blame, edge_ok=False):
                          residuals=(rn, rt), status=status)
 
 
-def exact_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, nx=None, ny=None,
-                tol=None, maxit=None, spin_shift=None):
+def exact_field(cx: float, cy: float = 0.0, cphi: float = 0.0, *, a: float, b: float, N: float,
+                mu: float, G: float = 8.2e10, nu: float = 0.28, nx: Optional[int] = None,
+                ny: Optional[int] = None, tol: Optional[float] = None,
+                maxit: Optional[int] = None, spin_shift: Optional[float] = None) -> ExactSolution:
     """The exact solution of one Hertzian case, with its fields.
 
     Parameters
@@ -141,8 +147,11 @@ def exact_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, nx=None
     return _solution(func, _core.exact_field(opts, *flat), full, creep_blame(opts, flat))
 
 
-def exact_solve(h, *, dx, dy, N, mu, G=8.2e10, nu=0.28, cx=0.0, cy=0.0, cphi=0.0, x0=None,
-                y0=None, tol=None, maxit=None, spin_shift=None):
+def exact_solve(h: npt.ArrayLike, *, dx: float, dy: float, N: float, mu: float, G: float = 8.2e10,
+                nu: float = 0.28, cx: float = 0.0, cy: float = 0.0, cphi: float = 0.0,
+                x0: Optional[float] = None, y0: Optional[float] = None,
+                tol: Optional[float] = None, maxit: Optional[int] = None,
+                spin_shift: Optional[float] = None) -> ExactSolution:
     """The exact solution for any undeformed distance h on a grid.
 
     Parameters
@@ -269,8 +278,11 @@ def _exact_solve(func, h, numbers, options, edge_ok=False):
                      lambda i, code: [blamed] if blamed else swapped(i, code), edge_ok)
 
 
-def exact_richardson(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, nx=27,
-                     ny=None, **options):
+def exact_richardson(cx: npt.ArrayLike, cy: npt.ArrayLike = 0.0, cphi: npt.ArrayLike = 0.0, *,
+                     a: npt.ArrayLike, b: npt.ArrayLike, N: npt.ArrayLike, mu: npt.ArrayLike,
+                     G: npt.ArrayLike = 8.2e10, nu: npt.ArrayLike = 0.28, nx: int = 27,
+                     ny: Optional[int] = None,
+                     **options: Any) -> Tuple[CreepForces, CreepForces]:
     """The continuum estimate of the exact forces from two grids.
 
     Parameters
@@ -320,7 +332,7 @@ def exact_richardson(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, nx
     >>> print(f"fx = {f.fx:.0f} N +- {err.fx:.0f} N")
     fx = -1491 N +- 82 N
     """
-    from .creep import CreepForces, creep_forces
+    from .creep import creep_forces
     func = "exact_richardson"
     ny = nx if ny is None else ny
     if "method" in options:

@@ -31,6 +31,8 @@ import warnings
 from typing import NamedTuple
 
 import numpy as np
+import numpy.typing as npt
+from typing import Any, Optional, Tuple
 
 from .. import _core
 from .._errors import RollerRigError, RollerRigWarning, status_message
@@ -124,10 +126,15 @@ _VALID_STATE = dict(x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spin=10
                     vmin=1e-3)
 
 
-def rig_contact(table, *, x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spin,
-                roller_spin, N_left=None, N_right=None, Fz_left=None, Fz_right=None, mu=0.4,
-                friction=None, E=2.1e11, nu=0.28, vmin=1e-3, method="fastsim",
-                kinematics_only=False, errors=None, patch="hertz", nonhertz=None, **options):
+def rig_contact(table: ContactTable, *, x: npt.ArrayLike = 0.0, y: npt.ArrayLike = 0.0,
+                yaw: npt.ArrayLike = 0.0, vx: npt.ArrayLike = 0.0, vy: npt.ArrayLike = 0.0,
+                yaw_rate: npt.ArrayLike = 0.0, spin: npt.ArrayLike, roller_spin: npt.ArrayLike,
+                N_left: Optional[npt.ArrayLike] = None, N_right: Optional[npt.ArrayLike] = None,
+                Fz_left: Optional[npt.ArrayLike] = None, Fz_right: Optional[npt.ArrayLike] = None,
+                mu: npt.ArrayLike = 0.4, friction: object = None, E: float = 2.1e11,
+                nu: float = 0.28, vmin: float = 1e-3, method: str = "fastsim",
+                kinematics_only: bool = False, errors: Optional[str] = None, patch: str = "hertz",
+                nonhertz: object = None, **options: Any) -> "RigContact":
     """Contact of both wheels for wheelset states (numpy-broadcast arrays).
 
     table:     ContactTable of the rig's wheel/roller pair
@@ -421,8 +428,10 @@ class LinearCreepages(NamedTuple):
     cphi: np.ndarray
 
 
-def linear_creepages(table, *, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spin,
-                     roller_spin):
+def linear_creepages(table: ContactTable, *, y: npt.ArrayLike = 0.0, yaw: npt.ArrayLike = 0.0,
+                     vx: npt.ArrayLike = 0.0, vy: npt.ArrayLike = 0.0,
+                     yaw_rate: npt.ArrayLike = 0.0, spin: npt.ArrayLike,
+                     roller_spin: npt.ArrayLike) -> Tuple["LinearCreepages", "LinearCreepages"]:
     """The seed paper's linearised creepages (eq. 7-9) at the table geometry.
 
     In this library's conventions (Kalker's sign, a_j the signed lateral arm

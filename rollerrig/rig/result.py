@@ -5,6 +5,7 @@ import json
 from dataclasses import dataclass
 
 import numpy as np
+from typing import Any, Dict, List
 
 from .. import _core
 from .._optional import require
@@ -135,7 +136,7 @@ class RigResult:
                      "status": str(int(self.status)), "message": str(self.message)})
         return meta
 
-    def to_dataframe(self):
+    def to_dataframe(self) -> Any:
         """The records as a pandas DataFrame, one column per RECORD_FIELDS
         entry; DataFrame.attrs["units"] {column: unit} (CF / UDUNITS, "1"
         dimensionless, as RECORD_UNITS), attrs["long_names"] their meanings
@@ -191,7 +192,7 @@ class RigResult:
                                                         RECORD_UNITS, meta),
                           what="RigResult.to_csv: path")
 
-    def summary(self, tol=0.05, window=0.25):
+    def summary(self, tol: float = 0.05, window: float = 0.25) -> List[Dict[str, Any]]:
         """Per target, a dict: "target"; "reached", the creepage held (mean
         over the last 80 % of its interval) [1]; "settling_s", the settling
         time [s] (when the creepage's running mean over `window` seconds
@@ -240,7 +241,7 @@ class RigResult:
                               peak_force_over_muN=float(peak)), why))
         return rows
 
-    def table(self, tol=0.05):
+    def table(self, tol: float = 0.05) -> str:
         """summary() as aligned text; a value that is NaN shows as "-", with
         the reason at the end of its row."""
         def cell(v, width, fmt):
