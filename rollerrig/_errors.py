@@ -66,7 +66,8 @@ def status_message(code: int) -> str:
 
 #: every status code of the C core with its message: 0 ok, > 0 a warning
 #: (the result is usable), < 0 an error (the results are NaN)
-STATUS: Dict[int, str] = {code: status_message(code) for code in range(_core.STATUS_MIN, _core.STATUS_MAX + 1)}
+STATUS: Dict[int, str] = {code: status_message(code)
+                          for code in range(_core.STATUS_MIN, _core.STATUS_MAX + 1)}
 
 
 def _value(arr: npt.NDArray[np.float64], index: int) -> float:

@@ -389,7 +389,8 @@ def _case(func: str, cx: object, cy: object, cphi: object, a: object, b: object,
 def creep_forces(cx: npt.ArrayLike, cy: npt.ArrayLike = 0.0, cphi: npt.ArrayLike = 0.0, *,
                  a: npt.ArrayLike, b: npt.ArrayLike, N: npt.ArrayLike, mu: npt.ArrayLike,
                  G: npt.ArrayLike = 8.2e10, nu: npt.ArrayLike = 0.28, method: str = "fastsim",
-                 speed: npt.ArrayLike = 0.0, friction: Optional[Union[FallingFriction, str]] = None,
+                 speed: npt.ArrayLike = 0.0,
+                 friction: Optional[Union[FallingFriction, str]] = None,
                  errors: Optional[str] = None, **options: Any) -> CreepForces:
     """Creep forces and spin moment on the wheel of a Hertzian contact.
 

@@ -143,7 +143,8 @@ def assert_fields_close(actual, expected, *, rtol=DEFAULT_RTOL, atol=DEFAULT_ATO
 
 def assert_history_close(actual: Any, expected: Any, *, fields: Optional[Sequence[str]] = None,
                          window: Optional[float] = None, rtol: float = DEFAULT_RTOL,
-                         atol: float = DEFAULT_ATOL, tolerances: Optional[Mapping[str, Any]] = None,
+                         atol: float = DEFAULT_ATOL,
+                         tolerances: Optional[Mapping[str, Any]] = None,
                          figure: Any = None) -> None:
     """Assert that a simulate result's history agrees with an expected one:
     a RigResult, a mapping {field: column} or the path of a reference .npz
