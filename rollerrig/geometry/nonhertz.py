@@ -46,13 +46,19 @@ JUMP_ZONE = 0.3e-3
 
 @dataclass(frozen=True, eq=False)
 class NonHertzSide:
-    """One side's table: rows (n, NH_ROW_LEN) and how they were built."""
+    """One side's table: its rows and how they were built.
 
-    rows: np.ndarray
+    A side of a :class:`NonHertzTable` (:func:`nonhertz_table`).
+
+    See Also
+    --------
+    NonHertzTable : both sides.
+    """
+    rows: np.ndarray   #: the rows, shape (n, NH_ROW_LEN); column 0 the shift y [m]
     sigma: float       #: +1 left, -1 right
     R0: float          #: the roller's nominal radius [m]
     G: float           #: shear modulus [Pa]
-    nu: float
+    nu: float          #: Poisson ratio [-]
     mu_ref: float      #: the friction the correction was built at
 
     @property
@@ -62,10 +68,26 @@ class NonHertzSide:
 
     @property
     def head(self):
+        """The table's header (sigma, R0 [m], G [Pa], nu, mu_ref), as the C
+        core takes it (rr_nonhertz.h)."""
         return (float(self.sigma), float(self.R0), float(self.G), float(self.nu),
                 float(self.mu_ref))
 
     def check(self):
+        """Check the header and every row by the C core's rules.
+
+        Returns
+        -------
+        NonHertzSide
+            self, when valid.
+
+        Raises
+        ------
+        RollerRigError
+            Naming the header or the first row (and its y) that is not a
+            valid table row (a value not finite or out of its range,
+            rr_nonhertz.h).
+        """
         st, bad = _core.nonhertz_check(self.rows, self.head)
         if st < 0:
             where = ("the header" if bad < 0
@@ -77,21 +99,51 @@ class NonHertzSide:
 
 @dataclass(frozen=True, eq=False)
 class NonHertzTable:
-    """A profile pair's tables, one per side (None where not built)."""
+    """A profile pair's non-Hertzian tables, one per side, as
+    :func:`nonhertz_table` returns it.
 
-    left: NonHertzSide
-    right: NonHertzSide
+    See Also
+    --------
+    nonhertz_table : the build.
+    rig_nonhertz_table : the rig's table.
+    rig_contact : its patch="nonhertz" takes one.
+    """
+    left: NonHertzSide         #: the left side's table (None where not built)
+    right: NonHertzSide        #: the right side's table (None where not built)
     Fz: float                  #: the nominal vertical load the nodes were sized for [N]
     build_seconds: float = float("nan")   #: wall time of the build
 
     def side(self, name):
+        """One side's table.
+
+        Parameters
+        ----------
+        name : {"left", "right"}
+            The side.
+
+        Returns
+        -------
+        NonHertzSide
+            Its table.
+
+        Raises
+        ------
+        RollerRigError
+            No table was built for that side.
+        """
         s = getattr(self, name)
         if s is None:
             raise RollerRigError(f"NonHertzTable: no table for the {name} side")
         return s
 
     def save(self, path: Union[str, "os.PathLike[str]"]) -> None:
-        """Save as .npz (numpy arrays only: np.load needs no pickle)."""
+        """Save as .npz (numpy arrays only: np.load needs no pickle).
+
+        Parameters
+        ----------
+        path : str or path-like
+            The file; :meth:`load` reads it back.
+        """
         out = dict(Fz=self.Fz, build_seconds=self.build_seconds,
                    layout=np.array([_core.NH_ROW_LEN, _core.NH_NODES, _core.NH_MAX_PATCHES]))
         for name in ("left", "right"):
@@ -103,7 +155,24 @@ class NonHertzTable:
 
     @classmethod
     def load(cls, path: Union[str, "os.PathLike[str]"]) -> "NonHertzTable":
-        """A table saved by save(); checked row by row."""
+        """A table saved by :meth:`save`; checked row by row.
+
+        Parameters
+        ----------
+        path : str or path-like
+            The .npz file.
+
+        Returns
+        -------
+        NonHertzTable
+            The table.
+
+        Raises
+        ------
+        RollerRigError
+            A layout that is not this library's; a header or row that is
+            not valid (:meth:`NonHertzSide.check`).
+        """
         with np.load(path, allow_pickle=False) as f:
             layout = tuple(int(v) for v in f["layout"])
             if layout != (_core.NH_ROW_LEN, _core.NH_NODES, _core.NH_MAX_PATCHES):
@@ -156,20 +225,87 @@ def nonhertz_table(geometry: RigGeometry, y_min: Optional[float], y_max: Optiona
                    n: int = 40, n_corr: int = 30, richardson: bool = True, combine: float = 4e-3,
                    tol: float = 1e-6, maxit: int = 5000, workers: int = 2,
                    y: Optional[npt.ArrayLike] = None) -> NonHertzTable:
-    """The non-Hertzian contact's tables of a profile pair (NonHertzTable).
+    """The non-Hertzian contact's tables of a profile pair.
 
-    Rows from y_min to y_max [m] every dy, every dy_jump within 0.3 mm of a
-    jump of the rigid contact point (None: none; the rows must not straddle
-    a jump, NONHERTZ_STUDY.md), or at the shifts y given.  Fz [N]: the
-    nominal vertical wheel load (the nodes reach 1.85 Fz; beyond them the
-    loads are extrapolated by Hertz's law; the gap's separate regions are
-    told apart at Fz's lowering).  combine [m]: intervals of the gap farther
-    apart are separate regions, each its own patch (CONTACT's D_COMB; up
-    to two a row, rr_nonhertz_table.h).  mu_ref: the friction of the
-    correction; E, nu: both bodies.  n, n_corr: elements across the nodes'
-    and the correction's grids; richardson: extrapolate the coefficients
-    and the correction from elements half as large.  workers: threads
-    building rows side by side.
+    Parameters
+    ----------
+    geometry : RigGeometry
+        The profile pair.
+    y_min, y_max : float
+        The rows' range of lateral shifts [m], y_max > y_min (ignored when
+        y is given).
+    Fz : float
+        The nominal vertical wheel load [N], > 0: the nodes reach 1.85 Fz;
+        beyond them the loads are extrapolated by Hertz's law; the gap's
+        separate regions are told apart at Fz's lowering.
+    dy : float, optional
+        Row spacing [m], > 0.
+    dy_jump : float or None, optional
+        Row spacing [m] within 0.3 mm of a jump of the rigid contact point
+        (None: no refinement; the rows must not straddle a jump,
+        NONHERTZ_STUDY.md).
+    mu_ref : float, optional
+        The friction of the correction [-], > 0.
+    E : float, optional
+        Young's modulus of both bodies [Pa], > 0.
+    nu : float, optional
+        Poisson ratio of both bodies [-].
+    sides : sequence of {"left", "right"}, optional
+        The sides to build (the others None).
+    n, n_corr : int, optional
+        Elements across the nodes' and the correction's grids, >= 1.
+    richardson : bool, optional
+        Extrapolate the coefficients and the correction from elements half
+        as large.
+    combine : float, optional
+        [m], >= 0: intervals of the gap farther apart are separate regions,
+        each its own patch (CONTACT's D_COMB; up to two a row,
+        rr_nonhertz_table.h).
+    tol, maxit : float, int, optional
+        The exact solver's tolerance and iteration cap.
+    workers : int, optional
+        Threads building rows side by side, >= 1.
+    y : array_like, optional
+        The rows' shifts [m] (instead of y_min, y_max, dy); at least two,
+        finite.
+
+    Returns
+    -------
+    NonHertzTable
+        One :class:`NonHertzSide` per side (None where not built), with
+        Fz and the build's wall time.
+
+    Raises
+    ------
+    RollerRigError
+        geometry not a RigGeometry; a number not finite or out of its
+        range (naming it); sides naming neither side; fewer than two
+        finite rows; a row whose build fails (naming the side, y, the
+        patch, the load node and why).
+
+    Warns
+    -----
+    RollerRigWarning
+        A row with intervals of the gap farther than combine from its
+        patches (not tabulated), or with more separate regions than
+        patches a row (held in a neighbour's patch).
+
+    See Also
+    --------
+    rig_nonhertz_table : the rig's table from its parameters.
+    rig_contact : patch="nonhertz" uses the table.
+
+    Examples
+    --------
+    Three rows of the left wheel of the rig's pair, on coarse grids:
+
+    >>> import rollerrig as rr
+    >>> rig, params, table = rr.build_rig()
+    >>> nh = rr.nonhertz_table(table.geometry, 0.0, 2e-4, dy=1e-4, dy_jump=None,
+    ...                        Fz=200.0, n=10, n_corr=8, richardson=False,
+    ...                        sides=("left",))
+    >>> print(nh.left.y, nh.right)
+    [0.     0.0001 0.0002] None
     """
     import time
     func = "nonhertz_table"

@@ -1,6 +1,6 @@
 """The C rig from checked parameters: its contact table, the creep-force
-method and options, the drives' sampled speed loops, Rig (the C rig stepped
-by hand) and build_rig."""
+method and options, the drives' sampled speed loops, :class:`Rig` (the C
+rig stepped by hand) and :func:`build_rig`."""
 import functools
 import os
 import math
@@ -161,35 +161,30 @@ def _creep_options(func, P, method, nx, ny, creep, in_rig=True):
 
 
 class Rig:
-    """The rig stepped by hand (build_rig): the C rig of csrc/rig/rr_rig.h, its
-    arguments checked here (RollerRigError naming them).
+    """The rig stepped by hand, as :func:`build_rig` returns it.
 
-    sample(roller_ref, xi_ref) -> status: the sampling instant (encoders,
-        creepage controller, PI controllers); roller_ref the roller speed
-        reference [rad/s], xi_ref the creepage target (NaN: no creepage
-        control, the wheelset held at free rolling); the same as
-    read() -> (signals, status): the sampling instant's measurement (the
-        fields of rollerrig.rig.control.RigSignals from t to xi_est), then
-    write(roller_mode, roller_ref, wheelset_mode, wheelset_ref, mu0=nan)
-        -> status: the references held over the sample; modes
-        _core.CMD_BUILTIN (the rig's controllers: roller speed, creepage
-        target), CMD_SPEED [rad/s], CMD_TORQUE [N m]; mu0 the friction
-        coefficient over the sample (NaN: the adhesion section's);
-        csrc/rig/rr_rig.h, rr_rig_read, rr_rig_write
-    info: the controllers' settings (rollerrig.rig.control.RigInfo)
-    advance() -> (record, status): the plant over one sample
-    run(roller_ref, xi_ref, out=None) -> (records, status): one sample per
-        element of the two 1-D arrays, records of shape (n,
-        len(RECORD_FIELDS)) (written into `out` if given: a writable
-        C-contiguous float64 array of that shape); stops at the first error
-        (the rest NaN); status the worst of the run
-    record() -> (record, status); rhs(t, y) -> (dydt, status); jac(t, y)
-        -> (J, status); set_state(t, y) -> status: the plant's right-hand
-        side, its approximate Jacobian and its state y (RIG_STATE, 12 values)
-    t [s], y, status: the rig's time, state (a copy) and last status
-    Statuses: 0 ok, 1 a warning, < 0 an error (rollerrig.STATUS); after an
-    error the rig keeps its last good state and refuses to step on.  One
-    thread at a time: a second thread gets RuntimeError.
+    The C rig of csrc/rig/rr_rig.h, its arguments checked here
+    (RollerRigError naming them).  A control sample is either
+    :meth:`sample` (the rig's own controllers) or :meth:`read`, then
+    :meth:`write` (references of one's own), followed by :meth:`advance`
+    (the plant over the sample); :meth:`run` steps many samples at once.
+    :meth:`rhs`, :meth:`jac` and :meth:`set_state` expose the plant's
+    right-hand side, its approximate Jacobian and its state (e.g. to verify
+    the integrator against another solver).  The properties :attr:`t`,
+    :attr:`y`, :attr:`status` and :attr:`info` give its time, state,
+    last status and the controllers' settings.
+
+    See Also
+    --------
+    build_rig : the rig of a set of parameters.
+    simulate : the whole scenario, sample by sample through the C loop.
+    rollerrig.rig.control.RigSignals : what :meth:`read` measures.
+
+    Notes
+    -----
+    Statuses: 0 ok, 1 a warning, < 0 an error (``rollerrig.STATUS``);
+    after an error the rig keeps its last good state and refuses to step
+    on.  One thread at a time: a second thread gets RuntimeError.
     """
 
     __slots__ = ("_core",)
@@ -221,18 +216,117 @@ class Rig:
         return np.ascontiguousarray(a)
 
     def run(self, roller_ref, xi_ref, out=None):
+        """Step one sample per element of the references.
+
+        Parameters
+        ----------
+        roller_ref : array_like
+            Roller speed reference per sample [rad/s], 1-D.
+        xi_ref : array_like
+            Creepage target per sample [-], 1-D of the same length (NaN:
+            no creepage control, the wheelset held at free rolling).
+        out : numpy.ndarray, optional
+            Where to write the records: a writable C-contiguous float64
+            array of shape (n, len(RECORD_FIELDS)).
+
+        Returns
+        -------
+        records : numpy.ndarray
+            Shape (n, len(RECORD_FIELDS)) (``out`` if given), one record
+            per sample (:data:`RECORD_FIELDS`); after the first error the
+            rest NaN.
+        status : int
+            The worst status of the run (the class's Notes).
+
+        Raises
+        ------
+        RollerRigError
+            A reference not a 1-D array of real numbers, or the two of
+            different lengths.
+
+        Notes
+        -----
+        The run stops at the first error (status < 0).
+        """
         r = self._array("Rig.run", "roller_ref", roller_ref)
         x = self._array("Rig.run", "xi_ref", xi_ref, r.size)
         return self._core.run(r, x) if out is None else self._core.run(r, x, out)
 
     def sample(self, roller_ref, xi_ref):
+        """The sampling instant with the rig's own controllers.
+
+        Encoders, creepage controller and PI controllers; the same as
+        :meth:`read` then :meth:`write` with the builtin modes.
+
+        Parameters
+        ----------
+        roller_ref : float
+            Roller speed reference [rad/s].
+        xi_ref : float
+            Creepage target [-] (NaN: no creepage control, the wheelset
+            held at free rolling).
+
+        Returns
+        -------
+        int
+            Status (the class's Notes).
+
+        Raises
+        ------
+        RollerRigError
+            An argument not a real number.
+        """
         return self._core.sample(self._scalar("Rig.sample", "roller_ref", roller_ref),
                                  self._scalar("Rig.sample", "xi_ref", xi_ref))
 
     def read(self):
+        """The sampling instant's measurement.
+
+        Returns
+        -------
+        signals : tuple of float
+            The fields of :class:`rollerrig.rig.control.RigSignals` from t
+            to xi_est (time, encoder counts, angles and speeds, drive
+            torques, eq. 16's creepage estimate).
+        status : int
+            Status (the class's Notes).
+
+        See Also
+        --------
+        write : the references held over the sample, after read.
+        """
         return self._core.read()
 
     def write(self, roller_mode, roller_ref, wheelset_mode, wheelset_ref, mu0=math.nan):
+        """The references held over the sample (after :meth:`read`).
+
+        csrc/rig/rr_rig.h, rr_rig_read, rr_rig_write.
+
+        Parameters
+        ----------
+        roller_mode, wheelset_mode : int
+            ``_core.CMD_BUILTIN`` (the rig's controllers: roller speed,
+            creepage target), ``CMD_SPEED`` (a speed reference [rad/s] to
+            the drive's PI controller) or ``CMD_TORQUE`` (a torque
+            reference [N m] to the drive).
+        roller_ref, wheelset_ref : float
+            The references in the modes' units (builtin: the roller speed
+            [rad/s], the creepage target [-]).
+        mu0 : float, optional
+            Friction coefficient over the sample [-] (NaN: the adhesion
+            section's).
+
+        Returns
+        -------
+        int
+            Status (the class's Notes).
+
+        Raises
+        ------
+        RollerRigError
+            A mode not one of the three, a reference or mu0 not a real
+            number.
+        """
         modes = (_core.CMD_BUILTIN, _core.CMD_SPEED, _core.CMD_TORQUE)
         for name, mode in (("roller_mode", roller_mode), ("wheelset_mode", wheelset_mode)):
             if mode not in modes or isinstance(mode, bool):
@@ -245,9 +339,27 @@ class Rig:
                                 self._scalar("Rig.write", "mu0", mu0))
 
     def advance(self):
+        """The plant over one sample.
+
+        Returns
+        -------
+        record : numpy.ndarray
+            The sample's record (:data:`RECORD_FIELDS`).
+        status : int
+            Status (the class's Notes).
+        """
         return self._core.advance()
 
     def record(self):
+        """The record of the present state.
+
+        Returns
+        -------
+        record : numpy.ndarray
+            The record (:data:`RECORD_FIELDS`).
+        status : int
+            Status (the class's Notes).
+        """
         return self._core.record()
 
     def _t_y(self, func, t, y):
@@ -255,28 +367,93 @@ class Rig:
                 self._array(func, "y", y, _core.RIG_NSTATE))
 
     def rhs(self, t, y):
+        """The plant's right-hand side dy/dt at (t, y).
+
+        Parameters
+        ----------
+        t : float
+            Time [s].
+        y : array_like
+            State, RIG_STATE (12 values).
+
+        Returns
+        -------
+        dydt : numpy.ndarray
+            The derivative of the state (12 values).
+        status : int
+            Status (the class's Notes).
+
+        Raises
+        ------
+        RollerRigError
+            t not a real number, y not 12 real numbers.
+        """
         return self._core.rhs(*self._t_y("Rig.rhs", t, y))
 
     def jac(self, t, y):
+        """The plant's approximate Jacobian at (t, y).
+
+        Parameters
+        ----------
+        t : float
+            Time [s].
+        y : array_like
+            State, RIG_STATE (12 values).
+
+        Returns
+        -------
+        J : numpy.ndarray
+            The approximate Jacobian d(dy/dt)/dy, 12 x 12.
+        status : int
+            Status (the class's Notes).
+
+        Raises
+        ------
+        RollerRigError
+            t not a real number, y not 12 real numbers.
+        """
         return self._core.jac(*self._t_y("Rig.jac", t, y))
 
     def set_state(self, t, y):
+        """Set the rig's time and plant state.
+
+        Parameters
+        ----------
+        t : float
+            Time [s].
+        y : array_like
+            State, RIG_STATE (12 values).
+
+        Returns
+        -------
+        int
+            Status (the class's Notes).
+
+        Raises
+        ------
+        RollerRigError
+            t not a real number, y not 12 real numbers.
+        """
         return self._core.set_state(*self._t_y("Rig.set_state", t, y))
 
     @property
     def t(self):
+        """The rig's time [s]."""
         return self._core.t
 
     @property
     def y(self):
+        """The plant's state (a copy; RIG_STATE, 12 values)."""
         return self._core.y
 
     @property
     def status(self):
+        """The rig's last status (the class's Notes)."""
         return self._core.status
 
     @property
     def info(self):
+        """The controllers' settings (:class:`rollerrig.rig.control.RigInfo`)."""
         return _control.rig_info(self._core.info)
 
 
@@ -394,29 +571,81 @@ def build_rig(params: Params = None, *, dt: Optional[float] = None, method: Opti
               roller_speed: Optional[float] = None, start: str = "rolling",
               track: Optional[bool] = None,
               **creep: Any) -> Tuple["Rig", Dict[str, Dict[str, Any]], ContactTable]:
-    """The rig (rollerrig.Rig, over the C rig) and the merged parameters,
-    for stepping by hand (rig.sample / rig.advance / rig.rhs, e.g. to verify
-    the integrator against another solver).  Returns (rig, params, table).
+    """The rig and the merged parameters, for stepping by hand.
 
-    params:  None (the defaults), a nested dict overriding rig_default.toml
-             or the path of a TOML file doing so; checked by
-             check_parameters (one RollerRigError listing every problem)
-    dt:      control sample time [s], 1e-6 to 0.1 where the drives'
-             sampled speed loops are stable (as simulate; default
-             scenario.control_sample_time_s, 4 ms)
-    method, nx, ny, **creep: the creep-force method, its FASTSIM grid and
-             options (CREEP_OPTIONS: bound, grid, slip_speed, blend_rule, k0,
-             alpha_inf, beta, kA, kS; see rollerrig.creep_forces); default
-             the parameters' contact section
-    substeps, ode: plant steps per sample (1 to 1000) and the integrator
-             ("trbdf2", "ros2", "lineuler"); default the integration section
-    roller_speed: roller surface speed [m/s] of the initial state
-    start:   "rolling" (the wheelset rolling freely at roller_speed) or
-             "rest"
-    track:   True: on tangent track (simulate's track); default
-             scenario.track
-    table:   the contact table (rollerrig.ContactTable) of the conical wheel
-             on its crowned roller
+    E.g. rig.sample / rig.advance / rig.rhs, to verify the integrator
+    against another solver.
+
+    Parameters
+    ----------
+    params : None, dict or str or path-like, optional
+        None (the defaults), a nested dict overriding rig_default.toml or
+        the path of a TOML file doing so; checked by
+        :func:`check_parameters` (one RollerRigError listing every
+        problem).
+    dt : float, optional
+        Control sample time [s], 1e-6 to 0.1 where the drives' sampled
+        speed loops are stable (as :func:`simulate`; default
+        scenario.control_sample_time_s, 4 ms).
+    method : str, optional
+        The creep-force method, one of :data:`RIG_METHODS`; default the
+        parameters' contact section.
+    substeps : int, optional
+        Plant steps per sample, 1 to 1000; default the integration section.
+    ode : {"trbdf2", "ros2", "lineuler"}, optional
+        The integrator; default the integration section.
+    nx, ny : int, optional
+        The FASTSIM grid; default the parameters' contact section.
+    roller_speed : float, optional
+        Roller surface speed [m/s] of the initial state.
+    start : {"rolling", "rest"}, optional
+        "rolling": the wheelset rolling freely at roller_speed; "rest".
+    track : bool, optional
+        True: on tangent track (:func:`simulate`'s track); default
+        scenario.track.
+    **creep
+        The creep-force method's options (:data:`CREEP_OPTIONS`: bound,
+        grid, slip_speed, blend_rule, k0, alpha_inf, beta, kA, kS; see
+        :func:`rollerrig.creep_forces`); default the parameters' contact
+        section.
+
+    Returns
+    -------
+    rig : Rig
+        The rig (:class:`rollerrig.Rig`, over the C rig).
+    params : dict
+        The merged parameters.
+    table : ContactTable
+        The contact table (:class:`rollerrig.ContactTable`) of the conical
+        wheel on its crowned roller.
+
+    Raises
+    ------
+    RollerRigError
+        A parameter or argument out of range or breaking a rule (every
+        problem of the parameters at once), a dt at which a drive's speed
+        loop is unstable, an unknown method or option, a start not
+        "rolling" or "rest", track not True or False, a geometry that
+        gives no contact table, or a rig that cannot start (naming the
+        changed values it cannot start with).
+
+    See Also
+    --------
+    Rig : the methods that step it.
+    simulate : the whole scenario.
+
+    Examples
+    --------
+    One control sample by hand, the rig's own controllers holding the
+    roller at the scenario's speed, no creepage target:
+
+    >>> import rollerrig as rr
+    >>> rig, params, table = rr.build_rig()
+    >>> w = params["scenario"]["roller_speed_m_s"] / params["roller"]["radius_m"]
+    >>> rig.sample(w, float("nan")), rig.advance()[1]
+    (0, 0)
+    >>> print(f"t = {rig.t:.3f} s, status {rig.status}")
+    t = 0.004 s, status 0
     """
     P = _with_track("build_rig", _parameters("build_rig", params), track)
     rig, table, *_ = _build("build_rig", P, dt=dt, method=method, substeps=substeps, ode=ode,
@@ -425,14 +654,32 @@ def build_rig(params: Params = None, *, dt: Optional[float] = None, method: Opti
 
 
 def write_points(params, folder):
-    """The points the rig's table is built from (full size, referenced as
-    this module says), one text file per real profile of `params` (a nested
-    dict or a scenario file's path, checked): folder/wheel.txt, roller.txt,
-    wheel_right.txt, roller_right.txt, two numbers a line (y z [m], every
-    digit: %.17g), "# end natural" where the profile's spline is natural;
-    on contact.patch = "nonhertz" its tables too (nonhertz_left.txt,
-    nonhertz_right.txt).  For a C program (examples/rig_paper.c).  Returns
-    {slot: path}."""
+    """Write the points the rig's table is built from, for a C program.
+
+    One text file per real profile of `params` (full size, referenced as
+    this module says): folder/wheel.txt, roller.txt, wheel_right.txt,
+    roller_right.txt, two numbers a line (y z [m], every digit: %.17g),
+    "# end natural" where the profile's spline is natural; on
+    contact.patch = "nonhertz" its tables too (nonhertz_left.txt,
+    nonhertz_right.txt).  For a C program (examples/rig_paper.c).
+
+    Parameters
+    ----------
+    params : dict or str or path-like
+        A nested dict or a scenario file's path, checked.
+    folder : str or path-like
+        The folder to write into.
+
+    Returns
+    -------
+    dict
+        ``{slot: path}`` of the files written.
+
+    Raises
+    ------
+    RollerRigError
+        Parameters that are not valid.
+    """
     P = _parameters("write_points", params)
     points = _real_profiles.profile_points(P)
     out = {}
@@ -462,12 +709,36 @@ def write_points(params, folder):
 
 
 def rig_nonhertz_table(params=None, path=None):
-    """The non-Hertzian contact's table of the rig of `params` (None, a nested
-    dict or a scenario file, as simulate takes them; the contact section's
-    nonhertz_* rows set the build), built (or read: contact.nonhertz_table)
-    as simulate(..., contact.patch = "nonhertz") would; saved as .npz at
-    `path` if given (then give it as contact.nonhertz_table).  Returns the
-    rollerrig.NonHertzTable."""
+    """The non-Hertzian contact's table of the rig of `params`.
+
+    Built (or read: contact.nonhertz_table) as ``simulate(...,
+    contact.patch = "nonhertz")`` would; the contact section's nonhertz_*
+    rows set the build.
+
+    Parameters
+    ----------
+    params : None, dict or str or path-like, optional
+        None, a nested dict or a scenario file, as :func:`simulate` takes
+        them.
+    path : str or path-like, optional
+        Where to save the table as .npz (then give it as
+        contact.nonhertz_table).
+
+    Returns
+    -------
+    NonHertzTable
+        The table (:class:`rollerrig.NonHertzTable`).
+
+    Raises
+    ------
+    RollerRigError
+        Parameters that are not valid, a path that cannot be written, a
+        geometry that gives no table.
+
+    See Also
+    --------
+    nonhertz_table : the table of any profile pair.
+    """
     P = _parameters("rig_nonhertz_table", params)
     if path is not None:
         from .._files import check_output

@@ -4,7 +4,7 @@ From the wheelset and roller state and the normal load of each wheel to the
 contact points and frames, the Hertz ellipses, the creepages and the creep
 forces, returned as forces and moments on the wheelset in the rig's
 coordinates (csrc/rig/rr_rig_contact.h, the same C function the time step
-calls):
+calls)::
 
     g = rr.RigGeometry(...)
     table = rr.contact_table(g, -0.01, 0.01, 401)
@@ -45,6 +45,9 @@ __all__ = ["RigPose", "WheelContact", "RigContact", "rig_contact", "LinearCreepa
 
 
 class RigPose(NamedTuple):
+    """The wheelset's pose and motion, as :func:`rig_contact` returns it
+    (its ``pose``); rig frame (module docstring)."""
+
     c: np.ndarray        #: wheelset centre (X, Y, Z) [m], shape (3, ...)
     roll: np.ndarray     #: roll angle [rad], > 0 lifting the left wheel
     beta: np.ndarray     #: turn about the roller axis [rad], > 0 forward
@@ -66,9 +69,17 @@ WheelContact.__doc__ = "One wheel's contact; fields, units [SI] and meanings:\n"
 
 
 class RigContact(NamedTuple):
-    pose: RigPose
-    left: WheelContact
-    right: WheelContact
+    """Both wheels' contact, as :func:`rig_contact` returns it.
+
+    ``left`` and ``right`` are :class:`WheelContact` (or
+    :class:`NonHertzWheel` for patch="nonhertz"); each field an array of
+    the broadcast shape of the states (numpy scalars for a call on
+    scalars; 3-vectors shape (3, ...)).
+    """
+
+    pose: RigPose        #: the wheelset's pose and motion
+    left: WheelContact   #: the left wheel's contact
+    right: WheelContact  #: the right wheel's contact
     status: np.ndarray   #: the worse of the two wheels' statuses
 
 
@@ -137,30 +148,108 @@ def rig_contact(table: ContactTable, *, x: npt.ArrayLike = 0.0, y: npt.ArrayLike
                 nonhertz: object = None, **options: Any) -> "RigContact":
     """Contact of both wheels for wheelset states (numpy-broadcast arrays).
 
-    table:     ContactTable of the rig's wheel/roller pair
-    x, y:      wheelset centre's longitudinal and lateral position [m]
-    yaw:       [rad] about Z; vx, vy [m/s], yaw_rate [rad/s] their rates
-    spin:      wheelset angular speed about its axle [rad/s]
-    roller_spin: the rollers' angular speed [rad/s]
-    N_left, N_right: normal loads [N]; or
-    Fz_left, Fz_right: the wheels' vertical loads [N] (CONTACT's FZ): the
-               normal load found so that N n_z + fy t2_z = Fz (to 1e-9 Fz)
-    patch:     "hertz" (default): one Hertz ellipse at the rigid contact
-               point; "nonhertz": the non-Hertzian, multi-patch contact from
-               the tables of nonhertz (an rr.NonHertzTable built for this
-               pair, rr.nonhertz_table), Coulomb friction, one state
-               (x and yaw turn each patch's frame by the rig's first-order law):
-               returns RigContact(pose, left, right, status) with NonHertzWheel
-               sides (each wheel's total force and moment, its patches)
-    mu, friction: static friction coefficient; None (Coulomb) or a FallingFriction
-    E, nu:     Young's modulus [Pa] and Poisson ratio of wheel and roller steel
-    vmin:      least rolling speed for the creepages [m/s] (standstill)
-    method, **options: the creep-force method and its options, as for
-               creep_forces (rollerrig.METHODS); FASTSIM's grid defaults to
-               20 x 20 here
-    kinematics_only: skip Hertz and the forces (their fields are NaN)
-    Returns RigContact(pose, left, right, status); one wheel's error leaves
-    the other's results valid (see each wheel's status).
+    Parameters
+    ----------
+    table : ContactTable
+        The contact table of the rig's wheel/roller pair
+        (:func:`contact_table`).
+    x, y : float or array_like, optional
+        The wheelset centre's longitudinal and lateral position [m].
+    yaw : float or array_like, optional
+        Yaw angle about Z [rad].
+    vx, vy : float or array_like, optional
+        The rates of x and y [m/s].
+    yaw_rate : float or array_like, optional
+        The rate of yaw [rad/s].
+    spin : float or array_like
+        The wheelset's angular speed about its axle [rad/s], > 0 rolling
+        it forward.
+    roller_spin : float or array_like
+        The rollers' angular speed [rad/s], > 0 moving their tops backward.
+    N_left, N_right : float or array_like, optional
+        Normal loads [N], > 0; or
+    Fz_left, Fz_right : float or array_like, optional
+        The wheels' vertical loads [N] (CONTACT's FZ), > 0: the normal load
+        found so that N n_z + fy t2_z = Fz (to 1e-9 Fz).  Give the normal
+        or the vertical loads, not both.
+    mu : float, optional
+        Static friction coefficient [-], in (0, FRICTION_MAX].
+    friction : None or FallingFriction, optional
+        None (Coulomb) or a :class:`FallingFriction`.
+    E : float, optional
+        Young's modulus of wheel and roller steel [Pa], > 0.
+    nu : float, optional
+        Poisson ratio of wheel and roller steel [-], in [0, 0.5].
+    vmin : float, optional
+        Least rolling speed for the creepages [m/s] (standstill), > 0.
+    method : str, optional
+        The creep-force method, as for :func:`creep_forces`
+        (``rollerrig.METHODS``).
+    kinematics_only : bool, optional
+        Skip Hertz and the forces (their fields are NaN; no loads needed).
+    errors : {None, "raise", "warn", "ignore"}, optional
+        As for :func:`creep_forces`: None is "raise" for a call on scalars,
+        "warn" for arrays.
+    patch : {"hertz", "nonhertz"}, optional
+        "hertz" (default): one Hertz ellipse at the rigid contact point;
+        "nonhertz": the non-Hertzian, multi-patch contact from the tables
+        of `nonhertz`, Coulomb friction, one state (x and yaw turn each
+        patch's frame by the rig's first-order law).
+    nonhertz : NonHertzTable, optional
+        For patch="nonhertz": an :class:`rollerrig.NonHertzTable` built for
+        this pair (:func:`nonhertz_table`).
+    **options
+        The creep-force method's options, as for :func:`creep_forces`;
+        FASTSIM's grid defaults to 20 x 20 here.
+
+    Returns
+    -------
+    RigContact
+        ``(pose, left, right, status)`` (:class:`RigContact`): the pose
+        (:class:`RigPose`), each wheel's :class:`WheelContact` (for
+        patch="nonhertz" a :class:`NonHertzWheel`: each wheel's total force
+        and moment, its patches) and the worse of the wheels' statuses.
+
+    Raises
+    ------
+    RollerRigError
+        table not a ContactTable; patch unknown; both or neither of the
+        normal and vertical loads (the latter both needed); mu, E, nu or
+        vmin not finite or out of range; an unknown method or option; with
+        errors="raise", a bad state, naming the argument and its value.
+        For patch="nonhertz": nonhertz not a NonHertzTable, a friction law,
+        method or options given, a state not scalar or not finite, E and nu
+        not those of the table, y beyond the table's rows, a load not
+        positive or with no vertical balance; vertical loads that do not
+        settle.
+
+    See Also
+    --------
+    linear_creepages : the seed paper's linearised creepages.
+    rig_exact : one wheel solved by the exact theory.
+    replay : this function over a run's records.
+
+    Notes
+    -----
+    One wheel's error leaves the other's results valid (see each wheel's
+    status).  For patch="nonhertz" with errors "warn" or "ignore", a wheel
+    that fails has NaN numbers, no patches and its status (< 0), the other
+    wheel is kept (and "warn" warns).
+
+    Examples
+    --------
+    The centred wheelset on the rig's own pair, the rollers' speed 0.1 %
+    under that of the nominal radii (the rolling radii differ from those:
+    cx is not -0.001):
+
+    >>> import rollerrig as rr
+    >>> rig, params, table = rr.build_rig()
+    >>> g, V = table.geometry, 2.0                      # roller surface speed [m/s]
+    >>> c = rr.rig_contact(table, y=0.0, spin=V / g.wheel_radius,
+    ...                    roller_spin=0.999 * V / g.roller_radius,
+    ...                    N_left=100.0, N_right=100.0)
+    >>> print(f"cx = {c.left.cx:.5f}, fx = {c.left.fx:.2f} N, status {c.status}")
+    cx = -0.00310, fx = 39.95 N, status 0
     """
     func = "rig_contact"
     _check_table(func, table)
@@ -245,7 +334,7 @@ class NonHertzWheel(NamedTuple):
     centre: np.ndarray  #: the load-weighted force centre [m]
     patches: tuple      #: NonHertzPatch per patch
     Fz: float           #: the vertical load carried [N]
-    status: int
+    status: int         #: 0 ok, < 0 the wheel failed (NaN numbers, no patches)
 
 
 def _nonhertz_rig_contact(func, table, nonhertz, loads, *, x, y, yaw, vx, vy, yaw_rate, spin,
@@ -423,9 +512,12 @@ def _scalarise(t):
 
 
 class LinearCreepages(NamedTuple):
-    cx: np.ndarray
-    cy: np.ndarray
-    cphi: np.ndarray
+    """One wheel's linearised creepages (eq. 7-9), as
+    :func:`linear_creepages` returns them; arrays of the broadcast shape."""
+
+    cx: np.ndarray      #: longitudinal creepage [-] (eq. 7)
+    cy: np.ndarray      #: lateral creepage [-] (eq. 8)
+    cphi: np.ndarray    #: spin creepage [rad/m] (eq. 9)
 
 
 def linear_creepages(table: ContactTable, *, y: npt.ArrayLike = 0.0, yaw: npt.ArrayLike = 0.0,
@@ -434,19 +526,54 @@ def linear_creepages(table: ContactTable, *, y: npt.ArrayLike = 0.0, yaw: npt.Ar
                      roller_spin: npt.ArrayLike) -> Tuple["LinearCreepages", "LinearCreepages"]:
     """The seed paper's linearised creepages (eq. 7-9) at the table geometry.
 
-    In this library's conventions (Kalker's sign, a_j the signed lateral arm
-    of contact j from the wheelset centre, sigma = +1 left, -1 right),
-    with V = roller_spin R0 the roller surface speed and w0 = V/r0:
+    Parameters
+    ----------
+    table : ContactTable
+        The contact table of the rig's wheel/roller pair.
+    y : float or array_like, optional
+        The wheelset's lateral shift [m], inside the table.
+    yaw : float or array_like, optional
+        Yaw angle [rad].
+    vx, vy : float or array_like, optional
+        Longitudinal and lateral speed [m/s].
+    yaw_rate : float or array_like, optional
+        [rad/s].
+    spin : float or array_like
+        The wheelset's angular speed about its axle [rad/s].
+    roller_spin : float or array_like
+        The rollers' angular speed [rad/s], non-zero.
+
+    Returns
+    -------
+    left, right : LinearCreepages
+        Each wheel's (cx, cy, cphi) (:class:`LinearCreepages`).
+
+    Raises
+    ------
+    RollerRigError
+        table not a ContactTable; an argument not finite; roller_spin zero
+        (V_n = 0 needs the exact creepages); y beyond the table; a
+        creepage that overflows.
+
+    See Also
+    --------
+    rig_contact : the creepages and forces of the full kinematics.
+
+    Notes
+    -----
+    In this library's conventions (Kalker's sign, a_j the signed lateral
+    arm of contact j from the wheelset centre, sigma = +1 left, -1 right),
+    with V = roller_spin R0 the roller surface speed and w0 = V/r0::
 
         cx = (r0 - r)/r0 + (R - R0)/R0 + vx/V - (spin - w0) r0/V - a yaw_rate/V   (7)
         cy = -yaw + (1 + A0 (r + sigma delta a)) vy / V                          (8)
         cphi = -sigma delta (1/r0 + 1/R0)                                        (9)
 
-    A0 = d roll / d y is the paper's geometric parameter (the table's slope).
-    Eq. 7's first term is (r0 - r)(r0 + R0)/(r0 R0) in the paper, which is
-    ours when R - R0 = r0 - r (the wheelset at constant height); eq. 9 omits
-    the yaw rate's spin, yaw_rate cos(delta)/V, as does the paper.  Returns
-    (left, right) LinearCreepages.
+    A0 = d roll / d y is the paper's geometric parameter (the table's
+    slope).  Eq. 7's first term is (r0 - r)(r0 + R0)/(r0 R0) in the paper,
+    which is ours when R - R0 = r0 - r (the wheelset at constant height);
+    eq. 9 omits the yaw rate's spin, yaw_rate cos(delta)/V, as does the
+    paper.
     """
     func = "linear_creepages"
     _check_table(func, table)

@@ -5,7 +5,7 @@ what a real controller sees), calls the controller, and holds what it
 returns over the sample: per drive a speed reference for the drive's PI
 controller or a torque reference for the drive itself; a drive it leaves
 out keeps the rig's own controller (csrc/rig/rr_rig.h, rr_rig_read and
-rr_rig_write).
+rr_rig_write)::
 
     def controller(s):                      # s: RigSignals
         return {"wheelset_torque": -20.0}   # N m, held over the sample
@@ -24,7 +24,12 @@ from .. import _core
 
 
 class RigSignals(NamedTuple):
-    """What a controller sees at control sample k (taken at its start)."""
+    """What a controller sees at control sample k (taken at its start).
+
+    The argument of a controller's call (:func:`simulate`'s controller),
+    and the fields of :meth:`Rig.read` from t to xi_est.
+    """
+
     k: int                   #: sample index
     t: float                 #: time [s]
     roller_count: float      #: encoder counters (whole counts) [-]
@@ -41,7 +46,9 @@ class RigSignals(NamedTuple):
 
 
 class RigInfo(NamedTuple):
-    """The rig's settings a controller is configured with (start(info))."""
+    """The rig's settings a controller is configured with (start(info)),
+    as :attr:`Rig.info` gives them."""
+
     dt: float                    #: control sample time [s]
     wheel_radius: float          #: eq. 15-16's wheel rolling radius r_w [m]
     roller_radius: float         #: eq. 15-16's roller rolling radius r_r [m]
@@ -122,22 +129,71 @@ def command(out, s):
 
 
 class CreepageController:
-    """The paper's creepage controller (eq. 13-16, csrc/rig/rr_control.h) as
-    a controller of the user's: from the encoders' speeds it moves the
-    coefficient K toward the scenario's target (eq. 13-14) and returns the
-    wheelset speed reference K (r_r / r_w) w_roller (eq. 15); before the
+    """The paper's creepage controller as a controller of the user's.
+
+    Eq. 13-16, csrc/rig/rr_control.h: from the encoders' speeds it moves
+    the coefficient K toward the scenario's target (eq. 13-14) and returns
+    the wheelset speed reference K (r_r / r_w) w_roller (eq. 15); before the
     first target it holds the wheelset at free rolling.  The roller keeps
-    the rig's own speed controller.  In the loop it gives the built-in
-    controller's history bit for bit (the same operations in the same
-    order), so it is the template for one's own."""
+    the rig's own speed controller.
+
+    See Also
+    --------
+    simulate : its controller argument.
+    RigSignals : what it sees at each sample.
+
+    Notes
+    -----
+    In the loop it gives the built-in controller's history bit for bit
+    (the same operations in the same order), so it is the template for
+    one's own.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import rollerrig as rr
+    >>> from rollerrig.rig.control import CreepageController
+    >>> own = rr.simulate(duration=0.4, targets=[0.02], progress=False)
+    >>> user = rr.simulate(duration=0.4, targets=[0.02], progress=False,
+    ...                    controller=CreepageController())
+    >>> print(user.status, np.array_equal(own.creepage, user.creepage))
+    0 True
+    """
 
     def start(self, info):
+        """Configure the controller before the first sample.
+
+        Parameters
+        ----------
+        info : RigInfo
+            The rig's settings (sample time, radii, sense, gains alpha and
+            beta, ...).
+
+        Notes
+        -----
+        Resets K to 1 and the control to inactive (the wheelset at free
+        rolling until the first target).
+        """
         self.info = info
         self.K = 1.0
         self.active = False
         self.xi_last = 0.0              # the estimate of the last sample without control
 
     def __call__(self, s):
+        """The references for sample s.
+
+        Parameters
+        ----------
+        s : RigSignals
+            What the controller sees at the sample.
+
+        Returns
+        -------
+        dict
+            ``{"wheelset_speed": w}`` [rad/s]: free rolling (r_r / r_w
+            w_roller) before the first target, else K (r_r / r_w)
+            w_roller (eq. 15).
+        """
         i = self.info
         if math.isnan(s.xi_ref):
             self.active = False

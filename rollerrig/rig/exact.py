@@ -1,7 +1,7 @@
 """One wheel of the rig solved by Kalker's exact theory on its own patch:
 the undeformed distance from the rig's profiles (rollerrig.geometry.patch,
 a patch that need not be an ellipse), the load along the patch's normal or
-the wheel's vertical load, the creepages from the rig's kinematics.
+the wheel's vertical load, the creepages from the rig's kinematics::
 
     g = rr.RigGeometry.measured_pair()
     e = rr.rig_exact(g, 0.0035, Fz=6e4, spin=12.4, roller_spin=5.587, mu=0.5)
@@ -36,7 +36,14 @@ __all__ = ["RigExact", "rig_exact"]
 
 @dataclass(frozen=True, eq=False)
 class RigExact:
-    """One wheel of the rig solved by the exact theory on its own patch."""
+    """One wheel of the rig solved by the exact theory on its own patch, as
+    :func:`rig_exact` returns it.
+
+    ``solution`` is the :class:`ExactSolution`, ``patch`` the
+    :class:`Patch`; the properties ``shape`` (the :class:`PatchShape` of the
+    contact area) and ``force`` (the contact force on the wheel in the rig
+    frame) follow from them.
+    """
 
     solution: ExactSolution  #: fields and forces: fx along t1, fy along t2, mz about n at P
     patch: Patch             #: h, the grid and the frame
@@ -90,36 +97,104 @@ def rig_exact(geometry: "RigGeometry", y_ws: float, *, mu: float, N: Optional[fl
               reference: str = "weighted", loaded: bool = True, passes: int = 2,
               vmin: float = 1e-3, table: Optional["ContactTable"] = None, tol: float = 1e-6,
               maxit: int = 5000, **patch_options: Any) -> "RigExact":
-    """One wheel of the rig at lateral shift y_ws [m] solved by Kalker's exact
-    theory on its non-Hertzian patch (undeformed_distance).
+    """One wheel of the rig solved by Kalker's exact theory on its
+    non-Hertzian patch (:func:`undeformed_distance`).
 
-    The load: N [N] along the patch's normal, or Fz [N] the vertical force
-    on the wheel (the rig's wheel load, CONTACT's FZ): N is then iterated
-    until the contact force's vertical component, N n_z + fy t2_z, is Fz
-    to 1e-7.  mu: Coulomb friction; E [Pa], nu: both bodies.
-    Creepages: cx, cy, cphi given (at the patch's reference point, in its
-    frame), or from the kinematics: spin, roller_spin [rad/s] as for
-    rig_contact (vy [m/s], yaw_rate [rad/s]; zero yaw and longitudinal
-    shift; see _motion for the material points); table: a ContactTable
-    of geometry for the wheelset's pose and rates (default: one built
-    around y_ws).  reference: as undeformed_distance (default "weighted",
-    CONTACT's reference: the patch's centre, not its deepest point).
-    loaded: h at the loaded pose, the wheelset lowered from its zero-gap
-    height by the approach over cos(delta) (as CONTACT: the load moves the
-    wheelset vertically, not along the normal, so the wheel also slides by
-    approach tan(delta) along the plane); False: at the zero-gap pose.
-    passes: 2 (default): a first grid of n/2 across (elements twice dx, dy
-    where those are given) at the zero-gap pose, sized from Hertz's
-    approach, finds the approach; the second, with n
-    across, covers where h <= 1.1 times it; 1: one grid sized from Hertz's
-    approach (or the approach given).  Either way a solution whose contact
-    reaches the grid's edge, or whose approach exceeds what the grid
-    covers, is solved again on a grid sized from the approach found.
-    tol, maxit: the solver's.  **patch_options: further options of
-    undeformed_distance (approach, cover, dx, dy, combine, z, roll).
-    Returns RigExact (the ExactSolution, the Patch, the creepages used).
+    Parameters
+    ----------
+    geometry : RigGeometry
+        The rig's wheel and roller profiles.
+    y_ws : float
+        The wheelset's lateral shift [m].
+    mu : float
+        Coulomb friction coefficient [-].
+    N : float, optional
+        The load along the patch's normal [N]; or
+    Fz : float, optional
+        The vertical force on the wheel [N] (the rig's wheel load,
+        CONTACT's FZ): N is then iterated until the contact force's
+        vertical component, N n_z + fy t2_z, is Fz to 1e-7.  Give N or Fz.
+    side : {"left", "right"}, optional
+        The wheel.
+    spin, roller_spin : float, optional
+        The wheelset's and the rollers' angular speeds [rad/s], as for
+        :func:`rig_contact` (zero yaw and longitudinal shift; see _motion
+        for the material points); needed unless cx, cy, cphi are given.
+    vy : float, optional
+        Lateral speed [m/s].
+    yaw_rate : float, optional
+        [rad/s].
+    cx, cy, cphi : float, optional
+        The creepages [-], [-], [rad/m] at the patch's reference point, in
+        its frame: all three or none (then from the kinematics).
+    E : float, optional
+        Young's modulus of both bodies [Pa].
+    nu : float, optional
+        Poisson ratio of both bodies [-].
+    n : int, optional
+        Elements across the grid, 4 to GAP_MAX_N.
+    reference : str, optional
+        As :func:`undeformed_distance` (default "weighted", CONTACT's
+        reference: the patch's centre, not its deepest point).
+    loaded : bool, optional
+        True: h at the loaded pose, the wheelset lowered from its zero-gap
+        height by the approach over cos(delta) (as CONTACT: the load moves
+        the wheelset vertically, not along the normal, so the wheel also
+        slides by approach tan(delta) along the plane); False: at the
+        zero-gap pose.
+    passes : {2, 1}, optional
+        2 (default): a first grid of n/2 across (elements twice dx, dy
+        where those are given) at the zero-gap pose, sized from Hertz's
+        approach, finds the approach; the second, with n across, covers
+        where h <= 1.1 times it; 1: one grid sized from Hertz's approach
+        (or the approach given).  Either way a solution whose contact
+        reaches the grid's edge, or whose approach exceeds what the grid
+        covers, is solved again on a grid sized from the approach found.
+    vmin : float, optional
+        Least rolling speed for the creepages [m/s].
+    table : ContactTable, optional
+        A table of geometry for the wheelset's pose and rates (default:
+        one built around y_ws).
+    tol, maxit : float, int, optional
+        The solver's tolerance and iteration cap.
+    **patch_options
+        Further options of :func:`undeformed_distance` (approach, cover
+        (>= 1), dx, dy, combine, z, roll).
+
+    Returns
+    -------
+    RigExact
+        The :class:`ExactSolution`, the :class:`Patch`, the creepages used
+        (:class:`RigExact`).
+
+    Raises
+    ------
+    RollerRigError
+        Neither N nor Fz; passes not 1 or 2; some but not all of cx, cy,
+        cphi; neither the creepages nor spin and roller_spin; an unknown
+        option; cover < 1; n out of range; a failure of the patch, the
+        load iteration or the solver, naming the status.
+
+    See Also
+    --------
+    rig_contact : the Hertzian contact of both wheels.
+    undeformed_distance : the patch's gap.
+    exact_solve : the exact theory on an ellipse.
+
+    Notes
+    -----
     The whole of it, patches, load iteration and solves, runs in the C
     core (csrc/geometry/rr_wheel_exact.h).
+
+    Examples
+    --------
+    The left wheel of the measured pair at 3.5 mm, on a coarse grid:
+
+    >>> import rollerrig as rr
+    >>> g = rr.RigGeometry.measured_pair()
+    >>> e = rr.rig_exact(g, 0.0035, Fz=6e4, spin=12.4, roller_spin=5.587, mu=0.5, n=16)
+    >>> print(f"N = {e.N:.0f} N, fx = {e.solution.fx:.0f} N")
+    N = 59972 N, fx = -18155 N
     """
     func = "rig_exact"
     if (N is None) == (Fz is None):

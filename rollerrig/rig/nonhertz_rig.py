@@ -1,5 +1,5 @@
 """The rig on the non-Hertzian contact (contact.patch = "nonhertz",
-csrc/rig/rr_rig_contact.h, Patch): the table of the rig's own pair.
+csrc/rig/rr_rig_contact.h, Patch): the table of the rig's own pair::
 
     rr.simulate(params={"wheelset": {"profile": "s1002"}, "roller": {"profile": "uic60"},
                         "contact": {"patch": "nonhertz"}})
@@ -55,8 +55,19 @@ def _scale(P):
 
 
 def pair_key(P):
-    """What makes the rig's pair and its table: {name: value}, the profiles'
-    points (as the C rig takes them) as a digest per slot."""
+    """What makes the rig's pair and its table.
+
+    Parameters
+    ----------
+    P : dict
+        Checked parameters.
+
+    Returns
+    -------
+    dict
+        ``{name: value}``, the profiles' points (as the C rig takes them)
+        as a digest per slot.
+    """
     key = {name: float(_value(P, name)) for name in _KEY_VALUES}
     points = _real_profiles.profile_points(P)
     if points is None:
@@ -74,7 +85,18 @@ def pair_key(P):
 
 
 def static_load(P):
-    """The wheel's static vertical load [N]: half of the preload and weight."""
+    """The wheel's static vertical load.
+
+    Parameters
+    ----------
+    P : dict
+        Checked parameters.
+
+    Returns
+    -------
+    float
+        Half of the preload and weight [N].
+    """
     return 0.5 * (float(P["suspension"]["preload_total_N"])
                   + float(P["wheelset"]["mass_kg"]) * float(P["scenario"]["g_m_s2"]))
 
@@ -222,8 +244,29 @@ def _read(path, key, P):
 
 
 def table_for(P, table):
-    """The NonHertzTable of checked parameters P on contact table `table`
-    (their geometry): read from contact.nonhertz_table, or built and kept."""
+    """The non-Hertzian table of the rig's pair.
+
+    Parameters
+    ----------
+    P : dict
+        Checked parameters.
+    table : ContactTable
+        Their contact table (their geometry).
+
+    Returns
+    -------
+    NonHertzTable
+        Read from contact.nonhertz_table, or built and kept (the last few,
+        by pair and settings).
+
+    Raises
+    ------
+    RollerRigError
+        A file that is missing or not a readable table, that records no
+        rig pair, lacks a side, was built for another pair (every quantity
+        that differs named) or for loads below the rig's static wheel
+        load; a build that fails.
+    """
     key = pair_key(P)
     path = P["contact"]["nonhertz_table"]
     if path:
@@ -238,14 +281,36 @@ def table_for(P, table):
 
 
 def c_tables(nh):
-    """The binding's form: ((left rows, head), (right rows, head))."""
+    """The binding's form of a table.
+
+    Parameters
+    ----------
+    nh : NonHertzTable
+        The table, both sides built.
+
+    Returns
+    -------
+    tuple
+        ``((left rows, head), (right rows, head))``.
+    """
     return tuple((np.ascontiguousarray(s.rows, dtype=float), s.head)
                  for s in (nh.left, nh.right))
 
 
 def save(nh, P, path):
-    """The table as .npz, with the rig's pair recorded (NonHertzTable.save's
-    arrays, readable by NonHertzTable.load)."""
+    """Save the table as .npz, with the rig's pair recorded.
+
+    NonHertzTable.save's arrays, readable by NonHertzTable.load.
+
+    Parameters
+    ----------
+    nh : NonHertzTable
+        The table, both sides built.
+    P : dict
+        The checked parameters it was built for.
+    path : str or path-like
+        The file.
+    """
     from .. import _core
     out = dict(Fz=nh.Fz, build_seconds=nh.build_seconds,
                layout=np.array([_core.NH_ROW_LEN, _core.NH_NODES, _core.NH_MAX_PATCHES]),

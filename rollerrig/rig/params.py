@@ -43,10 +43,10 @@ class RigParameter(NamedTuple):
     unit: str           #: "-" dimensionless, "" a name or a flag
     type: str           #: "real", "int", "flag", "choice" or "list"
     default: object     #: float, int, bool, str or tuple of floats (None: a creep row)
-    lo: float           #: range of a real, an int or each entry of a list
-    hi: float
-    lo_open: bool
-    hi_open: bool
+    lo: float           #: lower bound of a real, an int or each entry of a list
+    hi: float           #: upper bound (as lo)
+    lo_open: bool       #: whether the lower bound is excluded
+    hi_open: bool       #: whether the upper bound is excluded
     choices: tuple      #: the names of a choice
     text: str           #: the default as TOML text (None: a choice, its name)
     creep: bool         #: the creep-force method or an option of it (rollerrig.contact.creep)
@@ -143,10 +143,28 @@ def _read_parameter_file(path):
 
 
 def load_parameters(path: Union[str, "os.PathLike[str]"]) -> Dict[str, Dict[str, Any]]:
-    """A parameter file (TOML, the layout of rig_default.toml, any subset of
-    it) as a nested dict, not yet checked (check_parameters does).  Raises
-    RollerRigError naming the file and why: missing, a directory or FIFO,
-    over 1 MiB, not UTF-8, not TOML, nested too deeply."""
+    """A parameter file as a nested dict, not yet checked.
+
+    Parameters
+    ----------
+    path : str or path-like
+        A TOML file of the layout of rig_default.toml, any subset of it.
+
+    Returns
+    -------
+    dict
+        The nested dict as read (:func:`check_parameters` checks it).
+
+    Raises
+    ------
+    RollerRigError
+        Naming the file and why: missing, a directory or FIFO, over 1 MiB,
+        not UTF-8, not TOML, nested too deeply.
+
+    See Also
+    --------
+    check_parameters : the values checked and merged with the defaults.
+    """
     try:
         return _read_parameter_file(path)
     except _Problems as p:
@@ -170,10 +188,19 @@ def _defaults():
 
 
 def defaults_toml():
-    """The text of rollerrig/data/rig_default.toml: the declaration of
-    PARAMETERS (csrc/rig/rr_rig_params.c) with every origin as a comment.
+    """The text of rollerrig/data/rig_default.toml.
+
+    Returns
+    -------
+    str
+        The declaration of PARAMETERS (csrc/rig/rr_rig_params.c) with every
+        origin as a comment.
+
+    Notes
+    -----
     tests/test_rig_params.py checks that the shipped file equals it;
-    rollerrig.rig.write_defaults() rewrites it."""
+    :func:`write_defaults` rewrites it.
+    """
     notes = dict(_core.RIG_SECTIONS)
     lines = [line.rstrip() for line in _TOML_HEADER.splitlines()]
     section = None
@@ -218,7 +245,18 @@ _TOML_HEADER = """\
 
 
 def default_parameters():
-    """The default parameter set (a fresh nested dict: change it freely)."""
+    """The default parameter set.
+
+    Returns
+    -------
+    dict
+        A fresh nested dict (change it freely), the layout of
+        rig_default.toml.
+
+    See Also
+    --------
+    check_parameters : these overridden by a nested dict, checked.
+    """
     return copy.deepcopy(_defaults())
 
 
@@ -511,16 +549,53 @@ def _check_values(P):
 
 
 def check_parameters(params=None, *, source="check_parameters: params"):
-    """The default parameters overridden by `params` (a nested dict as the
-    layout of rig_default.toml, any subset of it), every value checked.
+    """The default parameters overridden by `params`, every value checked.
 
-    Returns the merged nested dict.  Raises one RollerRigError, prefixed by
-    `source`, that lists every problem at once: unknown keys, values out of
-    range (the message names the key, the range and the value), a section
-    given a value or the reverse, the lengths and order of
-    scenario.targets / target_start_s, and a key the parameters no longer
-    have (RETIRED: the similarity law, the full-scale reference, the gear
-    ratios, ...): such a key acted on nothing.
+    Parameters
+    ----------
+    params : dict, optional
+        A nested dict as the layout of rig_default.toml, any subset of it
+        (None: the defaults).
+    source : str, optional
+        The prefix of the error's message.
+
+    Returns
+    -------
+    dict
+        The merged nested dict.
+
+    Raises
+    ------
+    RollerRigError
+        One error, prefixed by `source`, that lists every problem at once:
+        params not a nested dict, unknown keys, values out of range (the
+        message names the key, the range and the value), a section given a
+        value or the reverse, the lengths and order of scenario.targets /
+        target_start_s, and a key the parameters no longer have (RETIRED:
+        the similarity law, the full-scale reference, the gear ratios,
+        ...): such a key acted on nothing.
+
+    Warns
+    -----
+    RollerRigWarning
+        The default target start times scaled to fit a
+        scenario.duration_s given without scenario.target_start_s.
+
+    See Also
+    --------
+    load_parameters : a parameter file as a nested dict.
+    default_parameters : the defaults.
+
+    Examples
+    --------
+    >>> from rollerrig.rig import check_parameters
+    >>> P = check_parameters({"scenario": {"mu0": 0.3}})
+    >>> P["scenario"]["mu0"], P["roller"]["radius_m"]
+    (0.3, 0.16)
+    >>> check_parameters({"scenario": {"mu0": -1}})
+    Traceback (most recent call last):
+    ...
+    rollerrig._errors.RollerRigError: ...: scenario.mu0 must be a finite number in (0, ...], got -1
     """
     if params is not None and not isinstance(params, dict):
         raise RollerRigError(f"{source} must be a nested dict (or, for simulate and "
@@ -641,8 +716,20 @@ def _check_run(func, P, run, names=None, about=None, skip=()):
 
 
 def write_defaults(path=DEFAULTS_PATH):
-    """Rewrite rig_default.toml from the C declaration (defaults_toml), as
-    every file is written (rollerrig._files.write_file)."""
+    """Rewrite rig_default.toml from the C declaration (:func:`defaults_toml`).
+
+    Written as every file is (rollerrig._files.write_file).
+
+    Parameters
+    ----------
+    path : str or path-like, optional
+        The file (default the shipped rig_default.toml, DEFAULTS_PATH).
+
+    Returns
+    -------
+    str or path-like
+        The path written.
+    """
     from .._files import write_file
     text = defaults_toml()
     return write_file(path, lambda fh: fh.write(text), what="write_defaults: path")

@@ -25,41 +25,62 @@ _RECORD_MEANING = {name: meaning for name, _, meaning in RECORD}
 class RigResult:
     """Time histories of a rig run, with its schedule and parameters.
 
-    records:      float array (samples kept, len(RECORD_FIELDS)), one row
-                  per kept control sample, recorded at the sample's end;
-                  each column is also an attribute: res.time [s],
-                  res.creepage [1], res.fx [N], ... (RECORD_FIELDS, units in
-                  RECORD_UNITS; res.sample_status as int8), and
-                  res.normal_load = left + right [N]
-    params:       the merged parameters (nested dict of rig_default.toml)
-    targets:      the creepage targets [1] (magnitudes, in the drive's sense)
-    target_times: their start times [s]
-    dt:           control sample time [s]
-    status:       0 the run finished; > 0 it finished but some samples
-                  warned (1: an inner iteration, e.g. the integrator's Newton
-                  iteration, ended above its tolerance; the samples'
-                  sample_status say which); -19 (ERR_UNTRUSTED) it finished
-                  but more than one sample in 20 warned (20 samples at
-                  least): its records are all there, not to be trusted;
-                  other < 0: it stopped at a sample whose state could not
-                  be computed (-1 NaN, -2 a normal load not positive:
-                  lift-off, -3 a wheel off its roller, -11 a singular
-                  system, -18 a creep force beyond mu N;
-                  rollerrig.status_message(status)), and the records end at
-                  the last good sample
-    message:      "ok", "ok with warnings: ..." (how many samples), "not to
-                  be trusted: ..." (how many), or when and why the run
-                  stopped
-    wall:         wall-clock seconds: "setup" (parameters, contact table: a
-                  one-off, as the paper's offline database) and "run" (the
-                  stepping loop)
-    record_every: the records keep every record_every-th sample (1: all);
-                  the kept samples are k record_every dt apart
-    method:       the creep-force method of the run
-    samples:      control samples stepped (default: len(records) * record_every)
-    scenario:     the scenario file the parameters were read from, if any:
-                  {"path": ..., "sha256": ...} (simulate(params=path) and
-                  `rollerrig simulate --scenario` set it); None otherwise
+    As :func:`simulate` returns it.  Each column of ``records`` is also an
+    attribute: ``res.time`` [s], ``res.creepage`` [1], ``res.fx`` [N], ...
+    (:data:`RECORD_FIELDS`, units in :data:`RECORD_UNITS`;
+    ``res.sample_status`` as int8), and ``res.normal_load`` = left + right
+    [N].
+
+    Attributes
+    ----------
+    records : numpy.ndarray
+        Float array (samples kept, len(RECORD_FIELDS)), one row per kept
+        control sample, recorded at the sample's end.
+    params : dict
+        The merged parameters (nested dict of rig_default.toml).
+    targets : tuple of float
+        The creepage targets [1] (magnitudes, in the drive's sense).
+    target_times : tuple of float
+        Their start times [s].
+    dt : float
+        Control sample time [s].
+    status : int
+        The run's status (Notes).
+    message : str
+        "ok", "ok with warnings: ..." (how many samples), "not to be
+        trusted: ..." (how many), or when and why the run stopped.
+    wall : dict
+        Wall-clock seconds: "setup" (parameters, contact table: a one-off,
+        as the paper's offline database) and "run" (the stepping loop).
+    record_every : int
+        The records keep every record_every-th sample (1: all); the kept
+        samples are k record_every dt apart.
+    method : str
+        The creep-force method of the run.
+    samples : int
+        Control samples stepped (default: len(records) * record_every).
+    scenario : dict or None
+        The scenario file the parameters were read from, if any:
+        ``{"path": ..., "sha256": ...}`` (``simulate(params=path)`` and
+        ``rollerrig simulate --scenario`` set it); None otherwise.
+
+    See Also
+    --------
+    simulate : the run that makes it.
+    replay : its kinematics through a contact model.
+
+    Notes
+    -----
+    status: 0 the run finished; > 0 it finished but some samples warned
+    (1: an inner iteration, e.g. the integrator's Newton iteration, ended
+    above its tolerance; the samples' sample_status say which); -19
+    (ERR_UNTRUSTED) it finished but more than one sample in 20 warned (20
+    samples at least): its records are all there, not to be trusted; other
+    < 0: it stopped at a sample whose state could not be computed (-1 NaN,
+    -2 a normal load not positive: lift-off, -3 a wheel off its roller, -11
+    a singular system, -18 a creep force beyond mu N;
+    ``rollerrig.status_message(status)``), and the records end at the last
+    good sample.
     """
 
     records: np.ndarray
@@ -112,12 +133,18 @@ class RigResult:
 
     def metadata(self):
         """The run's record, as to_csv's header, to_xarray's and
-        to_dataframe's attrs carry it: "rollerrig" (the library's version),
-        "method", "scenario" (the file, or "none: the default parameters"),
-        "scenario_sha256" (if a file), "changed_from_defaults" (the
-        parameters that differ from rig_default.toml, "section.key = value;
-        ..."), "targets", "target_times_s", "duration_s", "dt" [s],
-        "record_every", "status", "message": all text."""
+        to_dataframe's attrs carry it.
+
+        Returns
+        -------
+        dict of str
+            "rollerrig" (the library's version), "method", "scenario" (the
+            file, or "none: the default parameters"), "scenario_sha256" (if
+            a file), "changed_from_defaults" (the parameters that differ
+            from rig_default.toml, "section.key = value; ..."), "targets",
+            "target_times_s", "duration_s", "dt" [s], "record_every",
+            "status", "message": all text.
+        """
         from .._version import __version__
         from .params import default_parameters
         method = self.method or self.params.get("contact", {}).get("creep_method")
@@ -137,12 +164,26 @@ class RigResult:
         return meta
 
     def to_dataframe(self) -> Any:
-        """The records as a pandas DataFrame, one column per RECORD_FIELDS
-        entry; DataFrame.attrs["units"] {column: unit} (CF / UDUNITS, "1"
-        dimensionless, as RECORD_UNITS), attrs["long_names"] their meanings
-        and the run's metadata() in the other attrs.  (pandas keeps attrs
-        through most operations, not all: copy them where it matters.)
-        Needs pandas (extra "sweep")."""
+        """The records as a pandas DataFrame.
+
+        Returns
+        -------
+        pandas.DataFrame
+            One column per RECORD_FIELDS entry; ``DataFrame.attrs["units"]``
+            {column: unit} (CF / UDUNITS, "1" dimensionless, as
+            RECORD_UNITS), ``attrs["long_names"]`` their meanings and the
+            run's :meth:`metadata` in the other attrs.
+
+        Raises
+        ------
+        OptionalDependencyError
+            pandas not installed (it needs the extra "sweep").
+
+        Notes
+        -----
+        pandas keeps attrs through most operations, not all: copy them
+        where it matters.
+        """
         pd = require("pandas", "RigResult.to_dataframe", "sweep")
         frame = pd.DataFrame({name: getattr(self, name) for name in RECORD_FIELDS})
         frame.attrs.update(self.metadata())
@@ -151,13 +192,24 @@ class RigResult:
         return frame
 
     def to_xarray(self):
-        """The records as an xarray.Dataset: dimension "time" [s], one
-        variable per record field with its unit (CF / UDUNITS) and meaning
-        in attrs ("units", "long_name"); the Dataset's attrs hold the
-        targets, their start times, the run's metadata() (version, method,
-        scenario file and hash, parameters changed from the defaults, dt,
-        record_every, status, message) and the parameters (as JSON, key
-        "params").  Needs xarray (extra "sweep")."""
+        """The records as an xarray.Dataset.
+
+        Returns
+        -------
+        xarray.Dataset
+            Dimension "time" [s], one variable per record field with its
+            unit (CF / UDUNITS) and meaning in attrs ("units",
+            "long_name"); the Dataset's attrs hold the targets, their start
+            times, the run's :meth:`metadata` (version, method, scenario
+            file and hash, parameters changed from the defaults, dt,
+            record_every, status, message) and the parameters (as JSON, key
+            "params").
+
+        Raises
+        ------
+        OptionalDependencyError
+            xarray not installed (it needs the extra "sweep").
+        """
         xr = require("xarray", "RigResult.to_xarray", "sweep")
 
         def attrs(name):
@@ -175,16 +227,32 @@ class RigResult:
                    "target_times_units": "s", **meta, "params": json.dumps(self.params)})
 
     def to_csv(self, path):
-        """Write the records as CSV to `path`: the RECORD_FIELDS names, then
-        '#' lines (the units, one per column, CF / UDUNITS; the run's
-        metadata(): version, method, scenario file and sha256, parameters
-        changed from the defaults, ...), then one row per kept sample, each
-        value the shortest text that reads back as the same double.
-        `pandas.read_csv(path, comment="#")`, `numpy.genfromtxt(path,
-        delimiter=",", names=True)` read it; rollerrig._csv.read_table
-        gives the header too.  `path`: a new path or a regular file,
-        replaced whole (never a symbolic link, a device or a FIFO:
-        RollerRigError naming the path).  Returns the path."""
+        """Write the records as CSV.
+
+        The RECORD_FIELDS names, then '#' lines (the units, one per column,
+        CF / UDUNITS; the run's :meth:`metadata`: version, method, scenario
+        file and sha256, parameters changed from the defaults, ...), then
+        one row per kept sample, each value the shortest text that reads
+        back as the same double.  ``pandas.read_csv(path, comment="#")``,
+        ``numpy.genfromtxt(path, delimiter=",", names=True)`` read it;
+        rollerrig._csv.read_table gives the header too.
+
+        Parameters
+        ----------
+        path : str or path-like
+            A new path or a regular file, replaced whole (never a symbolic
+            link, a device or a FIFO).
+
+        Returns
+        -------
+        str or path-like
+            The path.
+
+        Raises
+        ------
+        RollerRigError
+            A path that is not a new path or a regular file, naming it.
+        """
         from .._csv import write_table
         from .._files import write_file
         meta = list(self.metadata().items())
@@ -193,17 +261,39 @@ class RigResult:
                           what="RigResult.to_csv: path")
 
     def summary(self, tol: float = 0.05, window: float = 0.25) -> List[Dict[str, Any]]:
-        """Per target, a dict: "target"; "reached", the creepage held (mean
-        over the last 80 % of its interval) [1]; "settling_s", the settling
-        time [s] (when the creepage's running mean over `window` seconds
-        first comes within tol of the target; eq. 14's recovery steps then
-        make a small sawtooth about it; NaN if it never does); "adhesion",
-        the adhesion coefficient held [1]; "peak_force_over_muN", the peak
-        |fx| / (mu0 N) over the interval.  The creepage is taken in the
-        drive's sense (braking cx, traction -cx).  Windows are in seconds,
-        so decimated records (record_every > 1) give the same rows to within
-        their spacing.  NaN where an interval holds fewer records than the
-        window (table() says so, and why)."""
+        """Per target, how the creepage controller held it.
+
+        Parameters
+        ----------
+        tol : float, optional
+            Settling tolerance, relative to the target [-].
+        window : float, optional
+            Length of the creepage's running mean [s].
+
+        Returns
+        -------
+        list of dict
+            Per target: "target"; "reached", the creepage held (mean over
+            the last 80 % of its interval) [1]; "settling_s", the settling
+            time [s] (when the creepage's running mean over `window`
+            seconds first comes within tol of the target; eq. 14's
+            recovery steps then make a small sawtooth about it; NaN if it
+            never does); "adhesion", the adhesion coefficient held [1];
+            "peak_force_over_muN", the peak ``|fx| / (mu0 N)`` over the
+            interval.
+
+        See Also
+        --------
+        table : the same as aligned text, with the reasons for NaN.
+
+        Notes
+        -----
+        The creepage is taken in the drive's sense (braking cx, traction
+        -cx).  Windows are in seconds, so decimated records (record_every >
+        1) give the same rows to within their spacing.  NaN where an
+        interval holds fewer records than the window (:meth:`table` says
+        so, and why).
+        """
         return [row for row, _ in self._summary(tol, window)]
 
     def _summary(self, tol, window):
@@ -242,8 +332,28 @@ class RigResult:
         return rows
 
     def table(self, tol: float = 0.05) -> str:
-        """summary() as aligned text; a value that is NaN shows as "-", with
-        the reason at the end of its row."""
+        """:meth:`summary` as aligned text.
+
+        Parameters
+        ----------
+        tol : float, optional
+            Settling tolerance, relative to the target [-].
+
+        Returns
+        -------
+        str
+            One row per target; a value that is NaN shows as "-", with the
+            reason at the end of its row.
+
+        Examples
+        --------
+        >>> import rollerrig as rr
+        >>> res = rr.simulate(duration=0.4, targets=[0.02], progress=False)
+        >>> print(res.table())
+          target   reached settling s  adhesion peak F/muN
+           0.020   0.00722          -    0.3676     0.9895  settling: the running mean
+           never came within 5% of the target
+        """
         def cell(v, width, fmt):
             return f"{v:{width}{fmt}}" if np.isfinite(v) else f"{'-':>{width}}"
         lines = [f"{'target':>8} {'reached':>9} {'settling s':>10} {'adhesion':>9} "

@@ -1,5 +1,7 @@
 """The roller rig in time: the seed paper's mechatronic model and scenario.
 
+::
+
     import rollerrig as rr
     res = rr.simulate()                           # the paper's scenario, default parameters
     res.time, res.creepage, res.fx                # named numpy arrays, one value per sample
@@ -67,10 +69,36 @@ UNTRUSTED_MIN = 20
 
 
 def schedule(P, duration, dt, targets, target_times, roller_speed, first=0, stop=None):
-    """The references of samples first <= k < stop (default: all of the
-    duration): roller speed [rad/s] and creepage target (NaN before the
-    first target's start).  Sample k starts at k dt.  The rule is the C
-    side's (rr_rig_schedule), which a C program of the rig follows too."""
+    """The references of samples first <= k < stop.
+
+    Sample k starts at k dt.  The rule is the C side's (rr_rig_schedule),
+    which a C program of the rig follows too.
+
+    Parameters
+    ----------
+    P : dict
+        Checked parameters (nested dict).
+    duration : float
+        Simulated time [s].
+    dt : float
+        Control sample time [s].
+    targets, target_times : sequence of float
+        Creepage targets [-] and their start times [s].
+    roller_speed : float
+        Roller surface speed [m/s].
+    first : int, optional
+        The first sample.
+    stop : int, optional
+        One past the last sample (default: all of the duration).
+
+    Returns
+    -------
+    roller_ref : numpy.ndarray
+        Roller speed reference per sample [rad/s].
+    xi_ref : numpy.ndarray
+        Creepage target per sample [-] (NaN before the first target's
+        start).
+    """
     n = int(round(duration / dt))
     stop = n if stop is None else min(stop, n)
     return _core.rig_schedule(float(roller_speed), float(P["roller"]["radius_m"]),
@@ -184,81 +212,144 @@ def simulate(duration: Optional[float] = None, dt: Optional[float] = None,
              **creep: Any) -> RigResult:
     """Run the rig: by default the seed paper's scenario on the default parameters.
 
-    duration:  simulated time [s], at least one sample and at most 1e5 s
-               (default scenario.duration_s); the run has round(duration /
-               dt) samples (a RollerRigWarning says so where that is not
-               the duration)
-    dt:        control sample time and integration step [s], 1e-6 to 0.1
-               (default scenario.control_sample_time_s, the paper's 4 ms),
-               at which both drives' sampled speed loops are stable (their
-               PI gains on their inertias through their lags, eq. 10-13;
-               with the default parameters 6.7e-5 to 8.3e-3 s): another is
-               refused before the run, naming the drive and the range
-    method:    creep-force method, one of RIG_METHODS ("fastsim",
-               "fastsim_blended", "modified_fastsim", "polach", "fastrip",
-               "exact_table"; not "linear", which has no friction limit, nor
-               "exact", solved at each step); nx, ny the FASTSIM grid
-               (default: the parameters' contact section)
-    params:    None, a nested dict overriding rig_default.toml, e.g.
-               {"scenario": {"mu0": 0.3}, "wheelset": {"mass_kg": 15.0}}, or
-               the path of a TOML file of the same layout; every problem is
-               reported at once (check_parameters).  Its [adhesion] section
-               changes the friction: a schedule of mu0 (and the falling
-               law's A, B) in time, a contaminated patch on the roller
-               circumference; res.mu_left, res.mu_right record it
-    targets:   creepage targets in sequence, magnitudes in [0, 1) in the
-               drive's sense (default scenario.targets, the paper's 0.04,
-               0.015, 0.02, 0.03); target_times their start times [s],
-               increasing, inside the duration.  Without target_times:
-               targets given here start at equal intervals over the
-               duration; the scenario's own targets start at
-               scenario.target_start_s when those all fall inside the
-               duration, otherwise at those times scaled by duration /
-               scenario.duration_s, with a RollerRigWarning saying so (the
-               rule of a scenario.duration_s given without start times:
-               check_parameters).  A target no sample would apply (its
-               interval holds no sample's start) is refused
-    roller_speed: roller surface speed [m/s] held by its controller
-               (default scenario.roller_speed_m_s)
-    start:     "rolling" (wheelset rolling freely at roller_speed) or "rest"
-               (everything at standstill; the roller drive spins the rig up)
-    substeps, ode: plant steps per sample and the integrator ("ros2",
-               "trbdf2", "lineuler")
-    record_every: keep the record of every record_every-th sample only (the
-               run still takes every sample): for long runs
-    max_record_bytes: cap on the records' memory (default RECORD_BYTES_CAP,
-               1 GiB: 232 bytes per kept sample); a run over it is refused
-               before it starts, with the record_every that would fit
-    progress:  None (default): a progress bar on stderr once the run passes
-               about a second; True: from the start; False: none
-    controller: None (the rig's own controllers), or a callable called at
-               each control sample with what a real controller sees
-               (rollerrig.rig.control.RigSignals: time, encoder counts, angles
-               and speeds, drive torques, eq. 16's estimate, the scenario's
-               references) and returning the references held over the
-               sample: a dict with any of roller_speed [rad/s] or
-               roller_torque [N m], wheelset_speed, wheelset_torque or
-               xi_ref (a creepage target for the rig's own controller); a
-               drive left out (or None returned) keeps the rig's own
-               controller.  Its method start(info), if any, is called first
-               (rollerrig.rig.control.RigInfo).  A controller that raises or
-               returns NaN ends the run with a RollerRigError naming the
-               sample, whose .result holds the history so far
-    track:     True: the same wheelset on tangent track (the rail a roller of
-               radius rollerrig.rig.params.TRACK_RADIUS_M held at the roller
-               speed, docs/lateral_dynamics.md); False: on the rollers;
-               default scenario.track
-    **creep:   the creep-force method's options: bound, grid, slip_speed,
-               blend_rule (blended FASTSIM), k0, alpha_inf, beta (modified
-               FASTSIM), kA, kS (Polach); see
-               rollerrig.creep_forces
-    Returns RigResult (its fields, units and status codes are in its
-    docstring).  A run that fails (a wheel off its roller, lift-off, NaN, a
-    creep force beyond mu N) stops cleanly: the result holds the history so
-    far, its status and message say why.  A run whose samples did not
-    converge more often than UNTRUSTED_SHARE (one in 20), in UNTRUSTED_MIN
-    (20) samples or more, ends with status ERR_UNTRUSTED (-19), its message
-    saying how many.
+    Parameters
+    ----------
+    duration : float, optional
+        Simulated time [s], at least one sample and at most 1e5 s (default
+        scenario.duration_s); the run has round(duration / dt) samples (a
+        RollerRigWarning says so where that is not the duration).
+    dt : float, optional
+        Control sample time and integration step [s], 1e-6 to 0.1 (default
+        scenario.control_sample_time_s, the paper's 4 ms), at which both
+        drives' sampled speed loops are stable (their PI gains on their
+        inertias through their lags, eq. 10-13; with the default parameters
+        6.7e-5 to 8.3e-3 s): another is refused before the run, naming the
+        drive and the range.
+    method : str, optional
+        Creep-force method, one of :data:`RIG_METHODS` ("fastsim",
+        "fastsim_blended", "modified_fastsim", "polach", "fastrip",
+        "exact_table"; not "linear", which has no friction limit, nor
+        "exact", solved at each step); default the parameters' contact
+        section.
+    params : None, dict or str or path-like, optional
+        None, a nested dict overriding rig_default.toml, e.g. ``{"scenario":
+        {"mu0": 0.3}, "wheelset": {"mass_kg": 15.0}}``, or the path of a
+        TOML file of the same layout; every problem is reported at once
+        (:func:`check_parameters`).  Its [adhesion] section changes the
+        friction: a schedule of mu0 (and the falling law's A, B) in time, a
+        contaminated patch on the roller circumference; res.mu_left,
+        res.mu_right record it.
+    targets : sequence of float, optional
+        Creepage targets in sequence, magnitudes in [0, 1) in the drive's
+        sense (default scenario.targets, the paper's 0.04, 0.015, 0.02,
+        0.03).
+    target_times : sequence of float, optional
+        The targets' start times [s], increasing, inside the duration
+        (Notes for the default).
+    roller_speed : float, optional
+        Roller surface speed [m/s] held by its controller (default
+        scenario.roller_speed_m_s).
+    start : {"rolling", "rest"}, optional
+        "rolling" (wheelset rolling freely at roller_speed) or "rest"
+        (everything at standstill; the roller drive spins the rig up).
+    nx, ny : int, optional
+        The FASTSIM grid (default: the parameters' contact section).
+    substeps : int, optional
+        Plant steps per sample.
+    ode : {"ros2", "trbdf2", "lineuler"}, optional
+        The integrator.
+    record_every : int, optional
+        Keep the record of every record_every-th sample only (the run still
+        takes every sample): for long runs; 1 to the number of samples.
+    max_record_bytes : float, optional
+        Cap on the records' memory [bytes], > 0 (default
+        :data:`RECORD_BYTES_CAP`, 1 GiB: 232 bytes per kept sample); a run
+        over it is refused before it starts, with the record_every that
+        would fit.
+    progress : None or bool, optional
+        None (default): a progress bar on stderr once the run passes about
+        a second; True: from the start; False: none.
+    controller : callable, optional
+        None (the rig's own controllers), or a callable called at each
+        control sample with what a real controller sees
+        (:class:`rollerrig.rig.control.RigSignals`: time, encoder counts,
+        angles and speeds, drive torques, eq. 16's estimate, the scenario's
+        references) and returning the references held over the sample: a
+        dict with any of roller_speed [rad/s] or roller_torque [N m],
+        wheelset_speed, wheelset_torque or xi_ref (a creepage target for
+        the rig's own controller); a drive left out (or None returned)
+        keeps the rig's own controller.  Its method start(info), if any, is
+        called first (:class:`rollerrig.rig.control.RigInfo`).
+    track : bool, optional
+        True: the same wheelset on tangent track (the rail a roller of
+        radius ``rollerrig.rig.params.TRACK_RADIUS_M`` held at the roller
+        speed, docs/lateral_dynamics.md); False: on the rollers; default
+        scenario.track.
+    **creep
+        The creep-force method's options: bound, grid, slip_speed,
+        blend_rule (blended FASTSIM), k0, alpha_inf, beta (modified
+        FASTSIM), kA, kS (Polach); see :func:`rollerrig.creep_forces`.
+
+    Returns
+    -------
+    RigResult
+        The run's time histories (:class:`RigResult`: its fields, units
+        and status codes).
+
+    Raises
+    ------
+    RollerRigError
+        Before the run: parameters or arguments out of range or breaking a
+        rule (every problem of the parameters at once), a dt at which a
+        drive's loop is unstable (naming the drive and the range), a
+        target no sample would apply (its interval holds no sample's
+        start), records over max_record_bytes (with the record_every that
+        would fit), record_every not an integer from 1 to the number of
+        samples, a controller that is not callable, track not True or
+        False, an unknown method or option.  During the run: a controller that raises or returns NaN
+        (or what is not a command) ends the run with a RollerRigError
+        naming the sample, whose ``.result`` holds the history so far.
+
+    Warns
+    -----
+    RollerRigWarning
+        A duration that is not a whole number of samples; the scenario's
+        target start times scaled to a shorter duration.
+
+    See Also
+    --------
+    build_rig : the rig stepped by hand.
+    replay : a run's kinematics through a contact model.
+    rollerrig.rig.control.CreepageController : the paper's controller as
+        one of the user's.
+
+    Notes
+    -----
+    Without target_times: targets given here start at equal intervals
+    over the duration; the scenario's own targets start at
+    scenario.target_start_s when those all fall inside the duration,
+    otherwise at those times scaled by duration / scenario.duration_s,
+    with a RollerRigWarning saying so (the rule of a scenario.duration_s
+    given without start times: :func:`check_parameters`).
+
+    A run that fails (a wheel off its roller, lift-off, NaN, a creep force
+    beyond mu N) stops cleanly: the result holds the history so far, its
+    status and message say why.  A run whose samples did not converge more
+    often than UNTRUSTED_SHARE (one in 20), in UNTRUSTED_MIN (20) samples
+    or more, ends with status ERR_UNTRUSTED (-19), its message saying how
+    many.
+
+    Examples
+    --------
+    A short run to one creepage target (the paper's scenario is
+    ``rr.simulate()``):
+
+    >>> import rollerrig as rr
+    >>> res = rr.simulate(duration=0.4, targets=[0.02], progress=False)
+    >>> print(res.status, res.message, len(res.time))
+    0 ok 100
+    >>> print(f"t = {res.time[-1]:.3f} s, creepage {res.creepage[-1]:.3f}")
+    t = 0.400 s, creepage 0.013
     """
     t0 = time.perf_counter()
     _progress.check("simulate", progress)
@@ -455,12 +546,44 @@ def _controlled_chunks(rig, controller, P, duration, dt, targets, target_times, 
 
 
 def replay(res, *, method=None, nx=None, ny=None, **creep):
-    """The seed paper's Fig. 9 procedure: the kinematics recorded in a run
-    (a RigResult, e.g. an offline high-accuracy run kept as a database) fed
-    sample by sample through a contact model (the real-time one by default:
-    the parameters' method and grid) with the recorded normal loads.
-    Returns rollerrig.RigContact for every sample; compare its
-    left.fx + right.fx with res.fx."""
+    """The seed paper's Fig. 9 procedure: a run's kinematics through a contact model.
+
+    The kinematics recorded in a run (e.g. an offline high-accuracy run
+    kept as a database) fed sample by sample through a contact model (the
+    real-time one by default: the parameters' method and grid) with the
+    recorded normal loads.
+
+    Parameters
+    ----------
+    res : RigResult
+        The run.
+    method : str, optional
+        The creep-force method (any of ``rollerrig.METHODS`` the contact
+        model takes); default the run's parameters' contact section.
+    nx, ny : int, optional
+        The FASTSIM grid; default the parameters' contact section.
+    **creep
+        The method's options, as for :func:`simulate`.
+
+    Returns
+    -------
+    RigContact
+        For every sample (:class:`RigContact`); compare its ``left.fx +
+        right.fx`` with ``res.fx``.
+
+    Raises
+    ------
+    RollerRigError
+        The run's adhesion changed (its [adhesion] section: mu_left,
+        mu_right vary, or A, B do): replay takes one friction law,
+        scenario.mu0 with the contact section's; an unknown method or
+        option.
+
+    See Also
+    --------
+    rig_contact : one contact evaluation.
+    simulate : the run.
+    """
     from .contact import rig_contact
     from ..contact.creep import FallingFriction
 
