@@ -5,7 +5,7 @@
 # array-like the C code converts with PyArray_FROM_OTF (float64, C order).
 # The dict results (gap_build's patch, wheel_exact's result, nonhertz_*'s
 # info, Rig.info) have values of several types: Dict[str, Any].
-from typing import Any, Dict, List, Optional, Tuple, Union
+from typing import Any, Dict, List, Optional, Tuple, Union, final
 
 import numpy as np
 import numpy.typing as npt
@@ -99,6 +99,7 @@ RIG_WHEEL_FIELDS: Tuple[Tuple[str, int, str, str], ...]
 # ---------------------------------------------------------------- types
 
 
+@final
 class CreepOptions:
     """Checked options for creep_forces1, creep_forces, fastsim_field and
     exact_hertz_problem (keywords only: method=..., <its options>)."""
@@ -106,6 +107,7 @@ class CreepOptions:
     def __init__(self, **options: object) -> None: ...
 
 
+@final
 class Rig:
     """The rig's plant and controllers (rig.c): Rig(data, y0, dy, params,
     creep, mu0[, nonhertz])."""
