@@ -32,7 +32,7 @@ from typing import NamedTuple
 
 import numpy as np
 import numpy.typing as npt
-from typing import Any, Optional, Tuple
+from typing import TYPE_CHECKING, Any, Optional, Tuple, Union
 
 from .. import _core
 from .._errors import RollerRigError, RollerRigWarning, status_message
@@ -60,9 +60,42 @@ class RigPose(NamedTuple):
 #: rig frame (shape (3, ...)), 1 for a scalar
 WHEEL_FIELDS = _core.RIG_WHEEL_FIELDS
 
-#: one wheel's contact: the fields of WHEEL_FIELDS, then its status
-WheelContact = NamedTuple("WheelContact", [(name, np.ndarray) for name, *_ in WHEEL_FIELDS]
-                          + [("status", np.ndarray)])
+#: one wheel's contact: the fields of WHEEL_FIELDS, then its status.  The
+#: class is made from the C declaration at run time; for the type checker it
+#: is spelt out (tests/test_typing.py holds the two to the same fields): a
+#: scalar field a numpy scalar for a call on scalars, else an array
+if TYPE_CHECKING:
+    _Scalar = Union[np.float64, npt.NDArray[np.float64]]
+    _Vector = npt.NDArray[np.float64]          # shape (3, ...)
+
+    class WheelContact(NamedTuple):
+        p: _Vector
+        theta: _Scalar
+        t1: _Vector
+        t2: _Vector
+        n: _Vector
+        cx: _Scalar
+        cy: _Scalar
+        cphi: _Scalar
+        V: _Scalar
+        N: _Scalar
+        a: _Scalar
+        b: _Scalar
+        p0: _Scalar
+        fx: _Scalar
+        fy: _Scalar
+        mz: _Scalar
+        force: _Vector
+        moment: _Vector
+        r: _Scalar
+        R: _Scalar
+        delta: _Scalar
+        s_wheel: _Scalar
+        s_roller: _Scalar
+        status: Union[np.int8, npt.NDArray[np.int8]]
+else:
+    WheelContact = NamedTuple("WheelContact", [(name, np.ndarray) for name, *_ in WHEEL_FIELDS]
+                              + [("status", np.ndarray)])
 WheelContact.__doc__ = "One wheel's contact; fields, units [SI] and meanings:\n" + "\n".join(
     f"    {name} [{unit}]{' (3, ...)' if width == 3 else ''}: {meaning}"
     for name, width, unit, meaning in WHEEL_FIELDS) + "\n    status: this wheel's status"
