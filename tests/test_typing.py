@@ -89,6 +89,7 @@ def test_results_are_precise(tmp_path):
         from typing_extensions import assert_type
         import rollerrig as rr
         from rollerrig._binding import OptionInfo
+        from rollerrig.analysis.closed_loop import ClosedLoopLinearization
 
         F64 = npt.NDArray[np.float64]
         f = rr.creep_forces(np.array([1e-4, 2e-4]), a=6e-3, b=4e-3, N=1e4, mu=0.3)
@@ -109,6 +110,7 @@ def test_results_are_precise(tmp_path):
         assert_type(rr.FallingFriction(A=0.4, B=0.6).A, float)
         assert_type(rr.simulate(0.1), rr.RigResult)
         assert_type(rr.linearize(), rr.Linearization)
+        assert_type(rr.linearize(closed_loop=True), ClosedLoopLinearization)
         assert_type(rr.stability([10.0, 20.0]), rr.Stability)
         assert_type(rr.hunting([30.0, 20.0]), rr.Hunting)
         assert_type(rr.critical_speed(lambda V: [[-V]], [1.0, 2.0]), float)

@@ -525,6 +525,99 @@ int rr_rig_rhs(rr_rig *rig, double t, const double *y, double *dydt);
 /* rr_rig_jac - the approximate Jacobian the integrator uses, J[n*n], n = RR_RIG_NSTATE. */
 int rr_rig_jac(rr_rig *rig, double t, const double *y, double *J);
 
+/*
+ * The rig's full state between samples: everything rr_rig holds from one
+ * sample's end to the next that the samples ahead depend on (the plant's
+ * vector, the held references and friction law, the PI integrals, the
+ * encoders' counters, the creepage controller), in this order, as doubles
+ * (a flag or a counter as its whole number).  One list gives the enum
+ * (RR_FS_<ID>) and the names (rr_rig_full_state_names).  Left out, as no
+ * later sample reads them: the PI's last output (the held torque reference
+ * itself), the quantised angles (count 2 pi / counts), the reading of a
+ * sample in progress and the rig's caches (of its state: dropped on a set).
+ */
+#define RR_RIG_FULL_STATE(F)                                                                  \
+    F(T, "t", "s", "time")                                                                    \
+    F(X, "x", "m", "wheelset longitudinal position")                                          \
+    F(Y, "y", "m", "wheelset lateral position")                                               \
+    F(YAW, "yaw", "rad", "wheelset yaw angle")                                                \
+    F(CHI, "chi", "rad", "wheelset spin angle (unwrapped)")                                   \
+    F(THETA_R, "theta_r", "rad", "roller angle (unwrapped)")                                  \
+    F(VX, "vx", "m/s", "wheelset longitudinal velocity")                                      \
+    F(VY, "vy", "m/s", "wheelset lateral velocity")                                           \
+    F(YAW_RATE, "yaw_rate", "rad/s", "wheelset yaw rate")                                     \
+    F(SPIN, "spin", "rad/s", "wheelset angular speed")                                        \
+    F(ROLLER_SPIN, "roller_spin", "rad/s", "roller angular speed")                            \
+    F(T_ROLLER, "torque_roller", "N m", "roller drive torque (the lag's output)")             \
+    F(T_WHEELSET, "torque_wheelset", "N m", "wheelset drive torque (the lag's output)")       \
+    F(Z_REF, "z_ref", "m", "axle height at which the vertical springs carry the preload")     \
+    F(TREF_ROLLER, "torque_ref_roller", "N m", "roller torque reference held")                \
+    F(TREF_WHEELSET, "torque_ref_wheelset", "N m", "wheelset torque reference held")          \
+    F(MU0, "mu0", "-", "friction law held over the sample: static coefficient")               \
+    F(FRICTION_A, "friction_A", "-", "its falling law's A")                                   \
+    F(FRICTION_B, "friction_B", "s/m", "its falling law's B")                                 \
+    F(CREEP_CONTROL, "creep_control", "-", "1 while eq. 13-14 steer the wheelset, else 0")    \
+    F(XI_REF, "xi_ref", "-", "creepage target (finite with creep_control 1, else NaN)")       \
+    F(ROLLER_PI_INTEGRAL, "roller_pi_integral", "N m", "roller PI's integral term")           \
+    F(ROLLER_PI_SATURATED, "roller_pi_saturated", "-", "its limiter at the last update: "     \
+      "-1, 0, 1")                                                                             \
+    F(WHEELSET_PI_INTEGRAL, "wheelset_pi_integral", "N m", "wheelset PI's integral term")     \
+    F(WHEELSET_PI_SATURATED, "wheelset_pi_saturated", "-", "its limiter: -1, 0, 1")           \
+    F(ROLLER_COUNT, "roller_count", "-", "roller encoder's counter (a whole number)")          \
+    F(ROLLER_ENC_SPEED, "roller_enc_speed", "rad/s", "its last speed estimate")               \
+    F(ROLLER_ENC_PRIMED, "roller_enc_primed", "-", "1 once it has a count to difference")     \
+    F(WHEELSET_COUNT, "wheelset_count", "-", "wheelset encoder's counter (a whole number)")   \
+    F(WHEELSET_ENC_SPEED, "wheelset_enc_speed", "rad/s", "its last speed estimate")           \
+    F(WHEELSET_ENC_PRIMED, "wheelset_enc_primed", "-", "1 once it has a count")               \
+    F(CREEPCTL_K, "creepctl_K", "-", "eq. 15's coefficient K, >= 0")                          \
+    F(CREEPCTL_W_REF, "creepctl_w_ref", "rad/s", "wheelset speed reference (NaN while the "   \
+      "wheelset's torque is commanded)")                                                      \
+    F(CREEPCTL_XI_EST, "creepctl_xi_est", "-", "eq. 16's estimate at the last update")        \
+    F(CREEPCTL_DXI, "creepctl_dxi", "-", "the target's error at the last update")
+
+#define RR_FS_ENUM_(id, name, unit, meaning) RR_FS_##id,
+enum rr_rig_full_state_index {
+    RR_RIG_FULL_STATE(RR_FS_ENUM_)
+    RR_FS_COUNT
+};
+
+/* rr_rig_full_state_len - RR_FS_COUNT, the full state's length. */
+int rr_rig_full_state_len(void);
+
+/* rr_rig_full_state_names, _units - the names and units of the full state,
+ * arrays of rr_rig_full_state_len() strings in the order of the enum. */
+const char *const *rr_rig_full_state_names(void);
+const char *const *rr_rig_full_state_units(void);
+
+/*
+ * rr_rig_get_full_state - the rig's full state at a sample's end.
+ *   given:   rig at a sample's boundary (after rr_rig_init, rr_rig_advance or
+ *            a set; not between rr_rig_read and rr_rig_advance)
+ *   returns: v[RR_FS_COUNT]
+ *   status:  0; RR_ERR_SEQUENCE (a sample in progress); RR_ERR_NULL; the
+ *            status of a rig that never started.  On error v is NaN.  A rig
+ *            that refused to step on still gives its (last good) state.
+ */
+int rr_rig_get_full_state(const rr_rig *rig, double *v);
+
+/*
+ * rr_rig_set_full_state - put the rig at the full state v (a checkpoint
+ * restored, a state perturbed for a linearisation): the samples from there
+ * are bit for bit those that followed where v was taken (same parameters).
+ *   given:   rig initialised, at a sample's boundary; v[RR_FS_COUNT]
+ *   status:  0 or the plant's warning at v; RR_ERR_NONFINITE (a value NaN
+ *            or infinite, but xi_ref NaN without creepage control and
+ *            creepctl_w_ref NaN without it); RR_ERR_PARAM (a flag not one
+ *            of its values, a counter not a whole number below 2^53, K < 0,
+ *            xi_ref NaN with creep_control 1 or a number with 0,
+ *            creepctl_w_ref NaN with creep_control 1); the friction law's
+ *            check; the contact's error at the plant state (a wheel off its
+ *            roller, lift-off); RR_ERR_SEQUENCE; RR_ERR_NULL.  On error
+ *            nothing changes.  A set clears a refusal to step on (the rig
+ *            goes on from v).
+ */
+int rr_rig_set_full_state(rr_rig *rig, const double *v);
+
 /* Not API: what the sampled side (rr_rig.c) and the plant (rr_rig_plant.c)
  * take from each other.  rr_rig_usable: 0 if the rig can step, else the
  * failed rr_rig_init's status, or RR_ERR_NULL for a rig never initialised

@@ -637,6 +637,86 @@ static void test_sanity(const rr_rig_params *good)
           "the rig and the record say why");
 }
 
+/* The full state is a checkpoint: taken under creepage control, set back
+ * after 40 samples, the same 40 samples follow bit for bit; a changed value
+ * changes them; a state the rig cannot hold is refused and changes nothing. */
+static void test_full_state(const rr_rig_params *p)
+{
+    static rr_rig rig;
+    static double a[40 * RR_REC_COUNT], b[40 * RR_REC_COUNT];
+    double v[RR_FS_COUNT], w[RR_FS_COUNT], u[RR_FS_COUNT], rr[40], xr[40];
+    const char *const *names = rr_rig_full_state_names();
+    rr_rig_signals sig;
+    int k, j, st;
+    CHECK(rr_rig_full_state_len() == RR_FS_COUNT && RR_FS_COUNT == 35, "full state length");
+    CHECK(strcmp(names[0], "t") == 0 && strcmp(names[RR_FS_X + RR_RIG_Y], "y") == 0
+          && strcmp(names[RR_FS_COUNT - 1], "creepctl_dxi") == 0, "full state names");
+    CHECK(strcmp(rr_rig_full_state_units()[RR_FS_SPIN], "rad/s") == 0, "full state units");
+    for (j = 0; j < RR_FS_COUNT; j++)
+        for (k = 0; k < j; k++)
+            CHECK(strcmp(names[j], names[k]) != 0, "full state names distinct");
+    CHECK_STATUS(rr_rig_init(p, 5.0 / 0.16, NULL, 0, &rig), RR_OK, "init");
+    for (k = 0; k < 40; k++) {
+        rr[k] = 5.0 / 0.16;
+        xr[k] = 0.01;
+    }
+    CHECK(rr_rig_run(&rig, 30, rr, xr, a, &st) == 30 && st >= 0, "run to the checkpoint");
+    CHECK_STATUS(rr_rig_get_full_state(&rig, v), RR_OK, "get");
+    CHECK(v[RR_FS_CREEP_CONTROL] == 1.0 && v[RR_FS_XI_REF] == 0.01
+          && v[RR_FS_ROLLER_ENC_PRIMED] == 1.0 && v[RR_FS_T] == rig.t, "get: the controllers");
+    CHECK(rr_rig_run(&rig, 40, rr, xr, a, &st) == 40 && st >= 0, "run from it");
+    CHECK_STATUS(rr_rig_set_full_state(&rig, v), RR_OK, "set back");
+    CHECK(rr_rig_run(&rig, 40, rr, xr, b, &st) == 40 && st >= 0, "run again");
+    CHECK(memcmp(a, b, sizeof a) == 0, "checkpoint: the same records bit for bit");
+    CHECK_STATUS(rr_rig_get_full_state(&rig, w), RR_OK, "get after");
+    /* a changed lateral shift and integral change the run */
+    memcpy(u, v, sizeof u);
+    u[RR_FS_X + RR_RIG_Y] += 1e-4;
+    u[RR_FS_WHEELSET_PI_INTEGRAL] += 0.1;
+    CHECK_STATUS(rr_rig_set_full_state(&rig, u), RR_OK, "set changed");
+    CHECK(rr_rig_run(&rig, 40, rr, xr, b, &st) == 40 && st >= 0, "run changed");
+    CHECK(b[39 * RR_REC_COUNT + RR_REC_Y] != a[39 * RR_REC_COUNT + RR_REC_Y]
+          && b[39 * RR_REC_COUNT + RR_REC_T_WHEELSET] != a[39 * RR_REC_COUNT + RR_REC_T_WHEELSET],
+          "a changed state changes the run");
+    /* refusals: nothing changes */
+    CHECK_STATUS(rr_rig_get_full_state(&rig, w), RR_OK, "get before refusals");
+#define REFUSE(index, value, status, what)                         \
+    do {                                                           \
+        memcpy(u, v, sizeof u);                                    \
+        u[index] = value;                                          \
+        CHECK_STATUS(rr_rig_set_full_state(&rig, u), status, what); \
+        CHECK_STATUS(rr_rig_get_full_state(&rig, u), RR_OK, what); \
+        CHECK(memcmp(u, w, sizeof u) == 0, what);                  \
+    } while (0)
+    REFUSE(RR_FS_X + RR_RIG_VY, NAN, RR_ERR_NONFINITE, "set: NaN");
+    REFUSE(RR_FS_T, INFINITY, RR_ERR_NONFINITE, "set: inf time");
+    REFUSE(RR_FS_CREEP_CONTROL, 2.0, RR_ERR_PARAM, "set: a flag 2");
+    REFUSE(RR_FS_ROLLER_PI_SATURATED, 0.5, RR_ERR_PARAM, "set: a flag 0.5");
+    REFUSE(RR_FS_WHEELSET_COUNT, 10.5, RR_ERR_PARAM, "set: a count not whole");
+    REFUSE(RR_FS_ROLLER_COUNT, 1e17, RR_ERR_PARAM, "set: a count beyond 2^53");
+    REFUSE(RR_FS_CREEPCTL_K, -0.1, RR_ERR_PARAM, "set: K < 0");
+    REFUSE(RR_FS_XI_REF, NAN, RR_ERR_PARAM, "set: control without a target");
+    REFUSE(RR_FS_CREEP_CONTROL, 0.0, RR_ERR_PARAM, "set: a target without control");
+    REFUSE(RR_FS_MU0, -0.3, RR_ERR_FRICTION, "set: mu0 < 0");
+    REFUSE(RR_FS_X + RR_RIG_Y, 0.02, RR_ERR_GEOMETRY, "set: the wheel off its table");
+#undef REFUSE
+    /* a rig that refused to step on goes on from a state set */
+    rig.status = RR_ERR_GEOMETRY;
+    CHECK_STATUS(rr_rig_get_full_state(&rig, u), RR_OK, "get: a refusing rig's state");
+    CHECK_STATUS(rr_rig_step(&rig, 5.0 / 0.16, 0.01, a), RR_ERR_GEOMETRY, "refusing");
+    CHECK_STATUS(rr_rig_set_full_state(&rig, v), RR_OK, "set clears the refusal");
+    CHECK(rr_rig_run(&rig, 40, rr, xr, b, &st) == 40 && st >= 0, "run after the refusal");
+    /* the same samples as the first run from v (its row 0 holds the refusal now) */
+    CHECK(memcmp(a + RR_REC_COUNT, b + RR_REC_COUNT, 39 * RR_REC_COUNT * sizeof *a) == 0,
+          "after the refusal: the checkpoint's records");
+    CHECK_STATUS(rr_rig_set_full_state(&rig, NULL), RR_ERR_NULL, "set: NULL");
+    CHECK_STATUS(rr_rig_get_full_state(NULL, u), RR_ERR_NULL, "get: NULL rig");
+    CHECK(isnan(u[0]) && isnan(u[RR_FS_COUNT - 1]), "get: NaN on error");
+    CHECK_STATUS(rr_rig_read(&rig, &sig), RR_OK, "read");
+    CHECK_STATUS(rr_rig_get_full_state(&rig, u), RR_ERR_SEQUENCE, "get within a sample");
+    CHECK_STATUS(rr_rig_set_full_state(&rig, v), RR_ERR_SEQUENCE, "set within a sample");
+}
+
 int main(void)
 {
     static rr_contact_table t;
@@ -656,5 +736,6 @@ int main(void)
     test_rebind(&p);
     test_workspace(&p);
     test_sanity(&p);
+    test_full_state(&p);
     return rr_test_summary();
 }

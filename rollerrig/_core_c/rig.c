@@ -381,23 +381,29 @@ static PyObject *Rig_record(RigObject *self, PyObject *noargs)
     return record_call(self, rr_rig_record, "record");
 }
 
-static int state_vector(PyObject *obj, double *y)
+/* n doubles from a 1-D array-like (`what`: the state, the full state) */
+static int vector_n(PyObject *obj, double *y, int n, const char *what)
 {
     PyArrayObject *a = (PyArrayObject *)PyArray_FROMANY(obj, NPY_DOUBLE, 1, 1,
                                                           NPY_ARRAY_IN_ARRAY);
     int j;
     if (!a)
         return -1;
-    if (PyArray_DIM(a, 0) != RR_RIG_NSTATE) {
-        PyErr_Format(PyExc_ValueError, "Rig: the state has %d values, got %zd", RR_RIG_NSTATE,
+    if (PyArray_DIM(a, 0) != n) {
+        PyErr_Format(PyExc_ValueError, "Rig: %s has %d values, got %zd", what, n,
                      (Py_ssize_t)PyArray_DIM(a, 0));
         Py_DECREF(a);
         return -1;
     }
-    for (j = 0; j < RR_RIG_NSTATE; j++)
+    for (j = 0; j < n; j++)
         y[j] = ((const double *)PyArray_DATA(a))[j];
     Py_DECREF(a);
     return 0;
+}
+
+static int state_vector(PyObject *obj, double *y)
+{
+    return vector_n(obj, y, RR_RIG_NSTATE, "the state");
 }
 
 /* rhs(t, y) -> (dydt, status); jac(t, y) -> (J, status): the plant with the held references. */
@@ -453,6 +459,49 @@ static PyObject *Rig_set_state(RigObject *self, PyObject *args)
         || rig_enter(self, "set_state") < 0)
         return NULL;
     st = rr_rig_set_state(&self->rig, t, y);
+    rig_leave(self);
+    return PyLong_FromLong(st);
+}
+
+/* full_state() -> (names, values, status); set_full_state(values) -> status:
+ * the rig's whole state between samples (rr_rig_get_full_state). */
+static PyObject *Rig_full_state(RigObject *self, PyObject *noargs)
+{
+    const char *const *names = rr_rig_full_state_names();
+    npy_intp n = RR_FS_COUNT;
+    PyObject *out, *tup;
+    int j, st;
+    (void)noargs;
+    if (!(tup = PyTuple_New(RR_FS_COUNT)))
+        return NULL;
+    for (j = 0; j < RR_FS_COUNT; j++) {
+        PyObject *name = PyUnicode_FromString(names[j]);
+        if (!name) {
+            Py_DECREF(tup);
+            return NULL;
+        }
+        PyTuple_SET_ITEM(tup, j, name);
+    }
+    if (!(out = PyArray_SimpleNew(1, &n, NPY_DOUBLE)) || rig_enter(self, "full_state") < 0) {
+        Py_XDECREF(out);
+        Py_DECREF(tup);
+        return NULL;
+    }
+    st = rr_rig_get_full_state(&self->rig, OUT(out));
+    rig_leave(self);
+    return Py_BuildValue("NNi", tup, out, st);
+}
+
+static PyObject *Rig_set_full_state(RigObject *self, PyObject *args)
+{
+    PyObject *obj;
+    double v[RR_FS_COUNT];
+    int st;
+    if (!PyArg_ParseTuple(args, "O:set_full_state", &obj)
+        || vector_n(obj, v, RR_FS_COUNT, "the full state") < 0
+        || rig_enter(self, "set_full_state") < 0)
+        return NULL;
+    st = rr_rig_set_full_state(&self->rig, v);
     rig_leave(self);
     return PyLong_FromLong(st);
 }
@@ -529,6 +578,10 @@ static PyMethodDef Rig_methods[] = {
     {"rhs", (PyCFunction)Rig_rhs, METH_VARARGS, "rhs(t, y) -> (dydt, status)"},
     {"jac", (PyCFunction)Rig_jac, METH_VARARGS, "jac(t, y) -> (J, status)"},
     {"set_state", (PyCFunction)Rig_set_state, METH_VARARGS, "set_state(t, y) -> status"},
+    {"full_state", (PyCFunction)Rig_full_state, METH_NOARGS,
+     "full_state() -> (names, values, status): the rig's whole state between samples"},
+    {"set_full_state", (PyCFunction)Rig_set_full_state, METH_VARARGS,
+     "set_full_state(values) -> status"},
     {NULL, NULL, 0, NULL}
 };
 

@@ -486,8 +486,6 @@ def _fit(func, model, spec, cx, force, a, b, N, G, nu, speed, cy, cphi, fit, x0,
     f_all = np.concatenate(fs)
     w_all = np.concatenate(ws)
     v_all = np.concatenate([np.full(c.size, v) for c, v in zip(cxs, speeds)])
-    sign = -1 if float(np.sum(f_all * np.sign(c_all))) > 0.0 else 1
-    target = sign * f_all
     f_ref = float(np.max(np.abs(f_all)))
     if f_ref == 0.0:
         _fail(func, "force is zero everywhere; nothing to fit")
@@ -496,6 +494,10 @@ def _fit(func, model, spec, cx, force, a, b, N, G, nu, speed, cy, cphi, fit, x0,
     if f_ref > 10.0 * settings["N"]:
         _fail(func, f"force reaches {f_ref:.6g} N, more than 10 N = {10 * settings['N']:.6g} "
                     f"N: a creep force is mu N at most (check the units of force and N)")
+    # the curve's sense, once the forces are known to be bounded (a sum of
+    # forces near the double's range would overflow)
+    sign = -1 if float(np.sum(f_all * np.sign(c_all))) > 0.0 else 1
+    target = sign * f_all
 
     start, fit, inner, lo, hi = _setup(func, spec, fit, x0, bounds, f_ref / settings["N"])
     # the start point through the library's own checks: a bad a, b, N, G, nu raises here,

@@ -34,18 +34,17 @@ _Y, _SPIN, _RSPIN = 1, 8, 9
 
 
 class Hunting(NamedTuple):
-    """rollerrig.hunting: speeds [m/s] in the order run (decreasing), the
-    amplitude of y [m] and of yaw [rad] at each, its frequency [Hz] (from
-    y's upward zero crossings; NaN without two), sustained (bool); the
-    nonlinear critical speed [m/s]: the lowest speed of the first unbroken
-    run of sustained cycles (NaN if the first speed's is not)."""
-    speeds: np.ndarray
-    amplitude: np.ndarray
-    yaw_amplitude: np.ndarray
+    """The hunting cycle against speed (:func:`rollerrig.hunting`)."""
+    speeds: np.ndarray             #: [m/s], in the order run (decreasing)
+    amplitude: np.ndarray          #: the amplitude of the lateral shift y at each [m]
+    yaw_amplitude: np.ndarray      #: and of the yaw [rad]
+    #: its frequency [Hz], from y's upward zero crossings (NaN without two)
     frequency_hz: np.ndarray
-    sustained: np.ndarray
+    sustained: np.ndarray          #: bool: the cycle held over the measurement
+    #: the lowest speed of the first unbroken run of sustained cycles [m/s]
+    #: (NaN if the first speed's is not sustained)
     nonlinear_critical_speed: float
-    track: bool
+    track: bool                    #: on tangent track
 
 
 def _positive(func, name, v):
@@ -68,14 +67,37 @@ def hunting(speeds: npt.ArrayLike, params: Params = None, *, track: bool = False
             settle: float = 2.0, measure: float = 1.0, shift: float = 1e-3,
             substeps: int = SUBSTEPS, method: Optional[str] = None,
             **creep: Any) -> Hunting:
-    """The limit cycle's amplitude against speed (Hunting), by a ramp down.
+    """The limit cycle's amplitude against speed, by a ramp down.
 
-    speeds:  decreasing speeds [m/s], finite and > 0 (the first one above
-             the critical speed, where the shift grows into a cycle)
-    settle, measure: seconds held at each speed before and while measuring
-    shift:   the lateral shift [m] the run starts from (at the first speed)
-    substeps: plant steps per control sample (SUBSTEPS: why)
-    params, track, method, **creep: as rollerrig.stability
+    Parameters
+    ----------
+    speeds : array_like
+        Decreasing speeds [m/s], finite and > 0; the first one above the
+        critical speed, where the shift grows into a cycle.
+    params : None, dict or str
+        The rig's parameters, as :func:`rollerrig.stability`.
+    track : bool
+        True: on tangent track.
+    settle, measure : float
+        Seconds held at each speed before and while measuring, > 0.
+    shift : float
+        The lateral shift [m] the run starts from (at the first speed).
+    substeps : int
+        Plant steps per control sample (``SUBSTEPS``: the module says why).
+    method : str, optional
+        The creep-force method, as :func:`rollerrig.simulate`.
+    **creep
+        The method's options.
+
+    Returns
+    -------
+    Hunting
+        The amplitudes, frequencies and the nonlinear critical speed.
+
+    Raises
+    ------
+    RollerRigError
+        A bad argument, named.
     """
     func = "hunting"
     try:

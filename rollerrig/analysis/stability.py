@@ -1,5 +1,5 @@
 """Lateral dynamics and stability of the rig's wheelset, on its rollers and on
-tangent track (issue 25; the physics and the checks: docs/lateral_dynamics.md).
+tangent track (issue 25; the physics and the checks: docs/lateral_dynamics.md)::
 
     import rollerrig as rr
     lin = rr.linearize(roller_speed=5.0)             # the plant at its steady state
@@ -22,18 +22,25 @@ differences.  tests/test_lateral_linearize.py checks the matrix against a
 ten times larger step and the eigenvalues against the time response.
 
 The plant alone: the controllers, encoders and the creepage controller are
-not in the linearisation (its inputs are the drives' torque references).
+not in this linearisation (its inputs are the drives' torque references);
+linearize(closed_loop=True) linearises the sampled closed loop with them
+(rollerrig/analysis/closed_loop.py).
 """
 import math
-from typing import Any, Callable, NamedTuple, Optional, Tuple
+from typing import (TYPE_CHECKING, Any, Callable, Literal, NamedTuple, Optional, Tuple, Union,
+                    overload)
 
 import numpy as np
 import numpy.typing as npt
 
 from .._errors import RollerRigError, status_message
+from .._optional import require
 from .._typing import Params
 from ..rig.build import build_rig
 from ..rig.params import _parameters, _short, _with_track
+
+if TYPE_CHECKING:
+    from .closed_loop import ClosedLoopLinearization
 
 #: the plant's state, in the C order (csrc/rig/rr_rig.h, rr_rig_state_index)
 STATES = ("x", "y", "yaw", "chi", "theta_r", "vx", "vy", "yaw_rate", "spin", "roller_spin",
@@ -56,42 +63,43 @@ NEUTRAL_TOL = 1e-10
 
 
 class Mode(NamedTuple):
-    """One mode of a linearisation: eigenvalue [1/s] (Im >= 0 of its pair),
-    damped frequency [Hz] (Im / 2 pi), damping ratio (-Re / |eigenvalue|; 1
-    for a decaying real one, -1 for a growing one), and the states that
-    dominate it (participation factors |v_i w_i| >= 0.1 of the largest, the
-    largest first: unit-free); neutral: |eigenvalue| <= NEUTRAL_TOL of the
-    largest (a free rotation, not a stability margin)."""
-    eigenvalue: complex
-    frequency_hz: float
-    damping_ratio: float
-    dominant: Tuple[str, ...]
-    neutral: bool = False
+    """One mode of a linearisation.
+
+    The states that dominate a mode are those whose participation factors
+    ``abs(v_i * w_i)`` (right and left eigenvectors: unit-free) reach 0.1 of
+    the largest, the largest first.
+    """
+    eigenvalue: complex            #: [1/s], the one with Im >= 0 of its pair
+    frequency_hz: float            #: damped frequency Im / (2 pi) [Hz]
+    damping_ratio: float           #: -Re / abs(eigenvalue): 1 decaying real, -1 growing real
+    dominant: Tuple[str, ...]      #: the states that dominate it, the largest first
+    neutral: bool = False          #: abs(eigenvalue) <= NEUTRAL_TOL of the largest: a free rotation
 
 
 class Linearization(NamedTuple):
-    """The plant linearised at a steady state (rollerrig.linearize):
-    d(dx)/dt = A dx + B du, dy = C dx + D du, with dx the state's change
-    from `state`, du the inputs' from `inputs0`; states, inputs and outputs
-    named (outputs: the states); eigenvalues of A (the structural zeros
-    of the cyclic angles chi, theta_r and, on track, the rails' held speed
-    included); modes: the rest, one per pair, least damped first."""
-    A: np.ndarray
-    B: np.ndarray
-    C: np.ndarray
-    D: np.ndarray
-    states: Tuple[str, ...]
-    inputs: Tuple[str, ...]
-    outputs: Tuple[str, ...]
+    """The plant linearised at a steady state (:func:`rollerrig.linearize`).
+
+    ``d(dx)/dt = A dx + B du``, ``dy = C dx + D du``, with dx the state's
+    change from `state` and du the inputs' from `inputs0`.
+    """
+    A: np.ndarray                  #: state matrix [SI per state]
+    B: np.ndarray                  #: input matrix
+    C: np.ndarray                  #: output matrix (the outputs are the states)
+    D: np.ndarray                  #: feedthrough (zero)
+    states: Tuple[str, ...]        #: the states' names, in A's order
+    inputs: Tuple[str, ...]        #: the inputs' names (the drives' torque references)
+    outputs: Tuple[str, ...]       #: the outputs' names
+    #: eigenvalues of A [1/s], the structural zeros of the cyclic angles chi,
+    #: theta_r and, on track, the rails' held speed included
     eigenvalues: np.ndarray
-    modes: Tuple[Mode, ...]
-    state: np.ndarray
-    inputs0: np.ndarray
-    roller_speed: float
-    track: bool
+    modes: Tuple[Mode, ...]        #: the rest, one per pair, least damped first
+    state: np.ndarray              #: the steady state linearised about
+    inputs0: np.ndarray            #: the inputs there
+    roller_speed: float            #: roller (or track) surface speed [m/s]
+    track: bool                    #: on tangent track
 
     def to_scipy(self):
-        """scipy.signal.StateSpace(A, B, C, D)."""
+        """The model as ``scipy.signal.StateSpace(A, B, C, D)`` (needs scipy)."""
         from scipy import signal
         return signal.StateSpace(self.A, self.B, self.C, self.D)
 
@@ -102,20 +110,19 @@ class Linearization(NamedTuple):
 
 
 class Stability(NamedTuple):
-    """rollerrig.stability: per speed [m/s] the eigenvalues of the modes
-    (speeds x modes, complex, Im >= 0 of each pair, NaN-padded), the
-    largest real part [1/s] and the least damping ratio; critical_speed
-    [m/s] the first speed where the largest real part crosses zero upward,
-    refined by Brent's method to 1e-10 relative (NaN if none in the range);
-    critical_mode the mode there; modes: each speed's Linearization.modes."""
-    speeds: np.ndarray
+    """The plant's modes against speed (:func:`rollerrig.stability`)."""
+    speeds: np.ndarray             #: [m/s]
+    #: the modes' eigenvalues per speed (speeds x modes, complex, Im >= 0 of
+    #: each pair, NaN-padded) [1/s]
     eigenvalues: np.ndarray
-    max_real: np.ndarray
-    min_damping: np.ndarray
+    max_real: np.ndarray           #: the largest real part per speed [1/s]
+    min_damping: np.ndarray        #: the least damping ratio per speed
+    #: the first speed where the largest real part crosses zero upward,
+    #: refined by Brent's method to 1e-10 relative [m/s]; NaN if none in the range
     critical_speed: float
-    critical_mode: object
-    track: bool
-    modes: tuple = ()
+    critical_mode: object          #: the Mode there (None without a critical speed)
+    track: bool                    #: on tangent track
+    modes: tuple = ()              #: each speed's Linearization.modes
 
 
 def _scales(V, r0, R0):
@@ -287,26 +294,76 @@ def _linearize_at(plant, V, state=None, func="linearize"):
                          plant.track)
 
 
+# the result's type follows closed_loop (a user's strict script gets the one it asked for)
+@overload
 def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
               track: bool = False, state: Optional[npt.ArrayLike] = None,
-              method: Optional[str] = None, **creep: Any) -> Linearization:
-    """The rig's plant linearised at its steady state (Linearization).
+              method: Optional[str] = None, closed_loop: Literal[False] = False,
+              **creep: Any) -> Linearization: ...
+@overload
+def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
+              track: bool = False, state: Optional[npt.ArrayLike] = None,
+              method: Optional[str] = None, closed_loop: Literal[True],
+              **creep: Any) -> "ClosedLoopLinearization": ...
+@overload
+def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
+              track: bool = False, state: Optional[npt.ArrayLike] = None,
+              method: Optional[str] = None, closed_loop: bool = False,
+              **creep: Any) -> Union[Linearization, "ClosedLoopLinearization"]: ...
+def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
+              track: bool = False, state: Optional[npt.ArrayLike] = None,
+              method: Optional[str] = None, closed_loop: bool = False,
+              **creep: Any) -> Union[Linearization, "ClosedLoopLinearization"]:
+    """The rig's plant linearised at its steady state.
 
-    params:       None, a nested dict or a TOML path (as simulate);
-                  {"wheelset": {"gyroscopic": False}} leaves the gyroscopic
-                  terms out
-    roller_speed: roller surface speed [m/s] (on track: the speed along
-                  it), > 0; default scenario.roller_speed_m_s
-    track:        True: the same wheelset on tangent track
-    state:        a plant state (12 values, STATES) to linearise about
-                  instead of the steady state found here; refused where it is
-                  not steady
-    method, **creep: the creep-force method and its options (as simulate)
+    Parameters
+    ----------
+    params : None, dict or str
+        The rig's parameters as for :func:`rollerrig.simulate` (a nested dict
+        or a TOML path); ``{"wheelset": {"gyroscopic": False}}`` leaves the
+        gyroscopic terms out.
+    roller_speed : float, optional
+        Roller surface speed [m/s] (on track: the speed along it), > 0;
+        default ``scenario.roller_speed_m_s``.
+    track : bool
+        True: the same wheelset on tangent track.
+    state : array_like, optional
+        A plant state (12 values, ``STATES``) to linearise about instead of
+        the steady state found here; refused where it is not steady.
+    method : str, optional
+        The creep-force method (as :func:`rollerrig.simulate`).
+    closed_loop : bool
+        True: the sampled closed loop with the drives, encoders and
+        controllers, the wheelset held at free rolling, as a map over one
+        control sample (``state`` then a full state dict,
+        :meth:`rollerrig.Rig.full_state`); not on track, nor under creepage
+        control (an error says why).
+    **creep
+        The method's options.
+
+    Returns
+    -------
+    Linearization or ClosedLoopLinearization
+        A, B, C, D with the named states, inputs and outputs, the eigenvalues
+        and the modes; closed loop: the discrete map over one sample, its
+        eigenvalues z and their continuous equivalents log(z) / T.
+
+    Raises
+    ------
+    RollerRigError
+        A bad argument, named; a state that is not steady; a closed loop
+        whose finite differences the encoders' counts do not resolve.
     """
     func = "linearize"
+    if not isinstance(closed_loop, bool):
+        raise RollerRigError(f"{func}: closed_loop must be True or False, got "
+                             f"{_short(closed_loop)}")
     if roller_speed is not None:
         roller_speed = _speed_arg(func, "roller_speed", roller_speed)
     plant = _Plant(func, params, roller_speed, track, method, creep)
+    if closed_loop:
+        from .closed_loop import closed_loop_linearize
+        return closed_loop_linearize(plant, plant.V0, state, func)
     return _linearize_at(plant, plant.V0, state, func)
 
 
@@ -349,7 +406,7 @@ def _sweep(s, modes_at):
     crit, mode = math.nan, None
     up = np.flatnonzero((mr[:-1] < 0) & (mr[1:] >= 0))
     if up.size:
-        from scipy.optimize import brentq
+        brentq = require("scipy.optimize", "the critical speed (stability, critical_speed)", "fit").brentq
         i = int(up[0])
         crit = brentq(lambda V: _max_real(modes_at(V)), s[i], s[i + 1], xtol=1e-12,
                       rtol=1e-10)
@@ -366,12 +423,24 @@ def _system_modes(func, system, V):
 
 
 def critical_speed(system: Callable[[float], npt.ArrayLike], speeds: npt.ArrayLike) -> float:
-    """The linear critical speed of any linear model: system(V) -> A (a square
-    matrix, d x/dt = A x at speed V); the first upward zero crossing of the
-    largest real part of A's modes (neutral ones and the structural zeros
-    left out, as rollerrig.stability) in `speeds`, refined by Brent's method
-    to 1e-10 relative; NaN if none.  rollerrig.stability is this with the
-    rig's plant."""
+    """The linear critical speed of any linear model.
+
+    Parameters
+    ----------
+    system : callable
+        ``system(V) -> A``, a square matrix with ``dx/dt = A x`` at speed V.
+    speeds : array_like
+        Increasing speeds [m/s], each finite and > 0.
+
+    Returns
+    -------
+    float
+        The first upward zero crossing of the largest real part of A's modes
+        (neutral ones and the structural zeros left out, as
+        :func:`rollerrig.stability`) in `speeds`, refined by Brent's method to
+        1e-10 relative [m/s]; NaN if none.  :func:`rollerrig.stability` is
+        this with the rig's plant.
+    """
     func = "critical_speed"
     if not callable(system):
         raise RollerRigError(f"{func}: system must be a callable V -> A, got {_short(system)}")
@@ -381,13 +450,24 @@ def critical_speed(system: Callable[[float], npt.ArrayLike], speeds: npt.ArrayLi
 
 def stability(speeds: npt.ArrayLike, params: Params = None, *, track: bool = False,
               method: Optional[str] = None, **creep: Any) -> Stability:
-    """The plant's eigenvalues against speed and its linear critical speed
-    (Stability).  speeds: increasing roller (or track) speeds [m/s], each
-    finite and > 0, at least one.  The critical speed: the first interval of
-    `speeds` where the largest real part of the modes (not neutral) goes from
-    < 0 to >= 0, refined by Brent's method to 1e-10 relative; NaN if none
-    (below the first speed the plant may already be unstable: max_real
-    says).  params, track, method, **creep: as linearize."""
+    """The plant's eigenvalues against speed and its linear critical speed.
+
+    Parameters
+    ----------
+    speeds : array_like
+        Increasing roller (or track) speeds [m/s], each finite and > 0, at
+        least one.
+    params, track, method, **creep
+        As :func:`rollerrig.linearize`.
+
+    Returns
+    -------
+    Stability
+        The critical speed is the first interval of `speeds` where the largest
+        real part of the modes (not neutral) goes from < 0 to >= 0, refined by
+        Brent's method to 1e-10 relative; NaN if none (below the first speed
+        the plant may already be unstable: ``max_real`` says).
+    """
     func = "stability"
     s = _speeds_arg(func, speeds)
     plant = _Plant(func, params, float(s[0]), track, method, creep)

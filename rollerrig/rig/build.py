@@ -436,6 +436,36 @@ class Rig:
         """
         return self._core.set_state(*self._t_y("Rig.set_state", t, y))
 
+    def full_state(self):
+        """The rig's whole state between samples (rr_rig_get_full_state: the
+        plant, held references and friction, PI integrals, encoders,
+        creepage controller) as a dict name -> float, in the C order; a
+        checkpoint for set_full_state.  RollerRigError within a sample (after
+        read or sample, before advance) or on a rig that never started."""
+        names, values, status = self._core.full_state()
+        if status < 0:
+            raise RollerRigError(f"Rig.full_state: {status_message(status)}")
+        return dict(zip(names, values.tolist()))
+
+    def set_full_state(self, state):
+        """Put the rig at `state`, a dict of every name of full_state() (the
+        samples from there are those that followed where it was taken) ->
+        status: 0, a warning, or the C check's error (a NaN, a flag or
+        counter not its kind, a wheel off its roller: nothing changes)."""
+        names = self._core.full_state()[0]
+        if not isinstance(state, dict):
+            raise RollerRigError("Rig.set_full_state: state must be a dict of the names of "
+                                 f"Rig.full_state(), got {_short(state)}")
+        missing = [n for n in names if n not in state]
+        unknown = [k for k in state if k not in names]
+        if missing or unknown:
+            raise RollerRigError(f"Rig.set_full_state: state lacks {missing} and has unknown "
+                                 f"{unknown}" if missing and unknown else
+                                 f"Rig.set_full_state: state lacks {missing}" if missing else
+                                 f"Rig.set_full_state: state has unknown names {unknown}")
+        values = [self._scalar("Rig.set_full_state", f"state[{n!r}]", state[n]) for n in names]
+        return self._core.set_full_state(np.array(values))
+
     @property
     def t(self):
         """The rig's time [s]."""

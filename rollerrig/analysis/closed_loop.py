@@ -1,0 +1,276 @@
+"""The rig's sampled-data closed loop linearised at its steady state
+(rollerrig.linearize(..., closed_loop=True); docs/lateral_dynamics.md).
+
+The loop is a discrete-time map over one control sample T, x_{k+1} = F(x_k):
+one sample of the C rig (the encoders read, the PI controllers and the
+creepage controller act, the plant is integrated over T) from its full state
+(Rig.full_state).  Its Jacobian A is taken by central differences of F about
+the steady state the rig settles to under its speed controllers at the
+roller speed, the wheelset held at free rolling (no creepage target).
+
+Coordinates: the plant's states but the two unwrapped angles, which grow
+without bound; in their place each encoder's angle since its last count,
+d = angle - count 2 pi / counts (what its next speed estimate differences);
+the PI integrals.  The held references, the PI outputs and the creepage
+controller's K, reference and estimate are overwritten at every sample
+without a creepage target, so F does not depend on them: they are not
+coordinates.
+
+The encoders' quantisation: F is piecewise constant in an angle at the
+sample's start (the counter takes its floor), so a difference over a step
+that is not a whole number of counts would see the quantiser's jumps.  The
+steps of d are whole numbers of counts (at least one): the counter then
+moves by exactly that number and the encoder's part of F is exact; the other
+coordinates do not move the angle at the sample's start (the counter reads
+it before the plant moves), so no difference crosses a count.  The matrix is
+checked against steps four times larger: its dominant |z| must agree to
+CHECK_TOL, or the call fails naming the disagreement.
+"""
+import math
+from typing import NamedTuple, Tuple
+
+import numpy as np
+
+from .._errors import RollerRigError, status_message
+
+#: the closed loop's coordinates, in this order
+STATES = ("x", "y", "yaw", "vx", "vy", "yaw_rate", "spin", "roller_spin", "torque_roller",
+          "torque_wheelset", "roller_angle_since_count", "wheelset_angle_since_count",
+          "roller_pi_integral", "wheelset_pi_integral")
+_PLANT = STATES[:10]
+#: the relative finite-difference step (per unit of each coordinate's scale)
+FD_STEP = 2e-8
+#: the dominant |z| at FD_STEP and at 4 FD_STEP must agree to this (relative)
+CHECK_TOL = 1e-5
+#: samples run to reach the steady state, at most
+MAX_SETTLE = 200_000
+#: steady: the fixed point lies within this (per unit of each scale) of the
+#: state, besides the shift two encoder counts make
+STEADY_TOL = 1e-6
+
+
+class ClosedLoopMode(NamedTuple):
+    """One mode of the sampled closed loop: z (Im >= 0 of its pair), the
+    continuous equivalent log(z)/T [1/s], its frequency [Hz] and damping
+    ratio from that, and the coordinates that dominate it (participation
+    >= 0.1 of the largest, largest first)."""
+    z: complex
+    eigenvalue: complex
+    frequency_hz: float
+    damping_ratio: float
+    dominant: Tuple[str, ...]
+
+
+class ClosedLoopLinearization(NamedTuple):
+    """x_{k+1} - x* = A (x_k - x*) over one sample T [s]: A (discrete), the
+    coordinates `states`, the eigenvalues z of A (largest |z| first) and
+    their continuous equivalents log(z)/T [1/s], the modes (one per pair,
+    largest |z| first), the steady state x* and the rig's full state there,
+    the roller speed [m/s]; a closed loop is stable where every |z| < 1."""
+    A: np.ndarray
+    states: Tuple[str, ...]
+    z: np.ndarray
+    eigenvalues: np.ndarray
+    modes: Tuple[ClosedLoopMode, ...]
+    state: np.ndarray
+    full_state: dict
+    T: float
+    roller_speed: float
+    track: bool
+
+    @property
+    def spectral_radius(self):
+        return float(np.max(np.abs(self.z)))
+
+
+class _Loop:
+    """One sample of the rig from the closed loop's coordinates."""
+
+    def __init__(self, rig, func, roller_ref):
+        self.rig, self.func, self.roller_ref = rig, func, roller_ref
+        info = rig.info
+        self.T = info.dt
+        self.q = (2.0 * math.pi / info.roller_counts, 2.0 * math.pi / info.wheelset_counts)
+        self.base = None
+        self.keep = list(range(14))
+
+    def coords(self, s):
+        return np.array([s[k] for k in _PLANT]
+                        + [s["theta_r"] - s["roller_count"] * self.q[0],
+                           s["chi"] - s["wheelset_count"] * self.q[1],
+                           s["roller_pi_integral"], s["wheelset_pi_integral"]])
+
+    def full(self, x):
+        s = dict(self.base, **dict(zip(_PLANT, x[:10].tolist())))
+        s["theta_r"] = self.base["roller_count"] * self.q[0] + x[10]
+        s["chi"] = self.base["wheelset_count"] * self.q[1] + x[11]
+        s["roller_pi_integral"], s["wheelset_pi_integral"] = float(x[12]), float(x[13])
+        return s
+
+    def F(self, x):
+        st = self.rig.set_full_state(self.full(x))
+        if st >= 0:
+            _, st = self.rig.run([self.roller_ref], [math.nan])
+        if st < 0:
+            raise RollerRigError(f"{self.func}: the closed loop cannot take a sample from "
+                                 f"{dict(zip(STATES, np.round(x, 12)))}: {status_message(st)}")
+        return self.coords(self.rig.full_state())
+
+    def scales(self, x):
+        """Each coordinate's unit for the steps and the steadiness test: the
+        positions 1 m, the rates the speed, the torques and integrals 100
+        N m, the angles since a count the angle a sample turns."""
+        V = max(abs(x[7]) * self.R0, 1e-3)
+        turn = (max(abs(x[7]), 1e-3) * self.T, max(abs(x[6]), 1e-3) * self.T)
+        return np.array([1.0, 1.0, 1.0, V, V, V, V / self.r0, V / self.R0, 100.0, 100.0,
+                         turn[0], turn[1], 100.0, 100.0])
+
+    def jacobian(self, x, step):
+        """Central differences over the coordinates `keep`: A[keep, keep]."""
+        sc = self.scales(x)
+        A = np.empty((len(self.keep), len(self.keep)))
+        for c, j in enumerate(self.keep):
+            h = step * sc[j]
+            if j in (10, 11):     # whole counts: the counter moves by exactly as many
+                q = self.q[j - 10]
+                h = max(1.0, round(h / q)) * q
+            xp, xm = x.copy(), x.copy()
+            xp[j] += h
+            xm[j] -= h
+            A[:, c] = ((self.F(xp) - self.F(xm)) / (xp[j] - xm[j]))[self.keep]
+        return A
+
+
+def _modes(A, T, names):
+    z, V = np.linalg.eig(A)
+    try:
+        W = np.linalg.inv(V)
+    except np.linalg.LinAlgError:
+        W = np.linalg.pinv(V)
+    out = []
+    for k in np.argsort(-np.abs(z)):
+        if z[k].imag < 0:
+            continue
+        lam = np.log(complex(z[k])) / T
+        part = np.abs(V[:, k] * W[k, :])
+        order = np.argsort(-part)
+        dom = tuple(names[i] for i in order if part[i] >= 0.1 * part[order[0]])
+        mag = abs(lam)
+        out.append(ClosedLoopMode(complex(z[k]), lam, abs(lam.imag) / (2 * math.pi),
+                                  float(-lam.real / mag) if mag > 0 else math.nan, dom))
+    return tuple(out)
+
+
+def _rebased(rig, s, func):
+    """The full state with each angle moved back by whole turns into [0, 2
+    pi) and its counter by as many turns' counts: the same state to the rig
+    (the angles are cyclic but for the adhesion patch, which repeats each
+    turn), whose angles' rounding (1e-13 rad at 600 rad) no longer swamps
+    the differences of F's angles since a count."""
+    info = rig.info
+    s = dict(s)
+    for angle, count, counts in (("theta_r", "roller_count", info.roller_counts),
+                                 ("chi", "wheelset_count", info.wheelset_counts)):
+        n = math.floor(s[angle] / (2.0 * math.pi))
+        s[angle] -= 2.0 * math.pi * n
+        s[count] -= float(n) * counts
+    st = rig.set_full_state(s)
+    if st < 0:
+        raise RollerRigError(f"{func}: the rig refuses its own state rebased by whole turns: "
+                             f"{status_message(st)}")
+    return rig.full_state()
+
+
+def closed_loop_linearize(plant, V, state, func):
+    """The closed loop of the rig `plant.rig` (stability._Plant) at roller
+    surface speed V: settled there from its start (or at `state`, a full
+    state dict of Rig.full_state, refused if not steady)."""
+    rig = plant.rig
+    loop = _Loop(rig, func, V / plant.R0)
+    loop.R0, loop.r0 = plant.R0, plant.r0
+    if plant.track:
+        # the rails' speed is held: the roller drive moves nothing (its
+        # integral walks on the encoder's jitter), and the settled loop keeps
+        # a longitudinal velocity (-8e-5 m/s at 5 m/s) not yet explained
+        raise RollerRigError(f"{func}: closed_loop is not available on track (the settled "
+                             "loop is not steady there: its longitudinal velocity stays "
+                             "at about -8e-5 m/s); the plant's linearisation "
+                             "(closed_loop=False) is")
+    keep = loop.keep
+    names = tuple(STATES[i] for i in keep)
+    plant_rows = [i for i in keep if i < 10]
+    if state is not None:
+        if not isinstance(state, dict):
+            raise RollerRigError(f"{func}: with closed_loop, state must be a full state dict "
+                                 f"(Rig.full_state()), got {type(state).__name__}")
+        st = rig.set_full_state(state)
+        if st < 0:
+            raise RollerRigError(f"{func}: state refused by the rig: {status_message(st)}")
+        if state.get("creep_control", 0.0) != 0.0:
+            raise RollerRigError(f"{func}: state is under creepage control (creep_control 1);"
+                                 " the closed loop is linearised at free rolling")
+    done = 0
+    if state is None:
+        block = 2000
+        prev = None
+        while done < MAX_SETTLE:
+            _, st = rig.run(np.full(block, loop.roller_ref), np.full(block, math.nan))
+            if st < 0:
+                raise RollerRigError(f"{func}: the closed loop does not settle at "
+                                     f"{V:g} m/s: {status_message(st)}")
+            done += block
+            x = loop.coords(rig.full_state())
+            if prev is not None and np.all(np.abs(x - prev)[plant_rows]
+                                           <= 1e-9 * loop.scales(x)[plant_rows]):
+                break
+            prev = x
+    loop.base = _rebased(rig, rig.full_state(), func)
+    xfull = loop.coords(loop.base)
+    x0 = xfull[keep]
+    A = loop.jacobian(xfull, FD_STEP)
+    n = len(keep)
+    # steady: the fixed point of the linearised map lies within STEADY_TOL of x0;
+    # the angles since a count only to within a count (the quantiser's jitter)
+    r = (loop.F(xfull) - xfull)[keep]
+    sc = loop.scales(xfull)[keep]
+    try:
+        M = np.linalg.inv(np.eye(n) - A)
+    except np.linalg.LinAlgError:
+        M = np.full((n, n), math.inf)
+    dx = M @ r
+    # the quantised loop is steady to within the encoders' jitter: the fixed
+    # point's shift from two counts on each angle read
+    jitter = np.zeros(n)
+    for e, name in enumerate(("roller_angle_since_count", "wheelset_angle_since_count")):
+        c = names.index(name)
+        jitter += np.abs(M @ A[:, c]) * 2.0 * loop.q[e]
+        jitter[c] += 2.0 * loop.q[e]
+    tol = STEADY_TOL * sc + jitter
+    bad = [names[i] for i in range(n) if not abs(dx[i]) <= tol[i]]
+    if bad:
+        what = "state" if state is not None else "the state the loop settled to"
+        info = rig.info
+        why = (" (a linearisation holds only about a steady state)" if state is not None else
+               f" after {done} samples: the loop hunts, e.g. on its encoders' quantisation "
+               f"({info.roller_counts} and {info.wheelset_counts} counts, speed quanta "
+               f"{loop.q[0] / loop.T:.3g} and {loop.q[1] / loop.T:.3g} rad/s); the "
+               "linearisation takes the quantiser at unit gain, which does not depend on the "
+               "counts: linearise with finer encoders (roller_drive and wheelset_drive "
+               "encoder_counts_per_rev, e.g. 2**30)")
+        raise RollerRigError(f"{func}: {what} is not steady: the fixed point is off in "
+                             + ", ".join(f"{names[i]} by {dx[i]:.3g}" for i in range(n)
+                                         if names[i] in bad) + why)
+    A4 = loop.jacobian(xfull, 4.0 * FD_STEP)
+    rho, rho4 = (float(np.max(np.abs(np.linalg.eigvals(M)))) for M in (A, A4))
+    if not abs(rho - rho4) <= CHECK_TOL * rho:
+        raise RollerRigError(f"{func}: the closed loop's derivative is not resolved: the "
+                             f"dominant |z| is {rho:.9g} at the step {FD_STEP:g} and "
+                             f"{rho4:.9g} at four times it (the loop is not linear over "
+                             f"the steps, or the encoders' quantisation shows)")
+    rig.set_full_state(loop.base)
+    z = np.linalg.eigvals(A)
+    z = z[np.argsort(-np.abs(z))]
+    lam = np.log(z.astype(complex)) / loop.T
+    return ClosedLoopLinearization(A, names, z, lam, _modes(A, loop.T, names), x0,
+                                   dict(loop.base),
+                                   loop.T, float(V), plant.track)
