@@ -3,14 +3,23 @@ input conversion and broadcasting, status handling, friction laws, and the
 creep-force methods as the C registry lists them (csrc/contact/rr_methods.def).
 
 Private: the public names are re-exported by rollerrig.contact.creep."""
+from __future__ import annotations
+
 from dataclasses import dataclass
 from types import MappingProxyType
-from typing import NamedTuple
+from typing import (Any, Callable, Dict, Iterable, List, Mapping, NamedTuple, Optional, Sequence,
+                    Tuple, TypeVar, Union)
 
 import numpy as np
+import numpy.typing as npt
 
 from . import _core
 from ._errors import RollerRigError, check_status
+
+_F64 = npt.NDArray[np.float64]
+#: blame(flat index, status) -> the names of the blamed arguments, or None
+Blame = Callable[[int, int], Optional[List[str]]]
+_T = TypeVar("_T")
 
 
 class OptionInfo(NamedTuple):
@@ -20,15 +29,15 @@ class OptionInfo(NamedTuple):
     name: str          #: the option's keyword
     type: str          #: "int", "real" or "choice"
     unit: str          #: its unit ("" for a count, a choice or a dimensionless number)
-    default: object    #: int, float, or a choice's name
-    lo: object         #: lower end of the valid range (None for a choice)
-    hi: object         #: upper end of the valid range (None for a choice)
+    default: Union[float, int, str]  #: int, float, or a choice's name
+    lo: Optional[float]  #: lower end of the valid range (None for a choice)
+    hi: Optional[float]  #: upper end of the valid range (None for a choice)
     lo_open: bool      #: True: lo itself excluded
     hi_open: bool      #: True: hi itself excluded
-    choices: tuple     #: a choice's names
+    choices: Tuple[str, ...]  #: a choice's names
     doc: str           #: what the option does
 
-    def describe(self):
+    def describe(self) -> str:
         """The option's valid values as text, as the binding's messages give them."""
         if self.type == "choice":
             return "one of " + ", ".join(repr(c) for c in self.choices)
@@ -42,7 +51,7 @@ class MethodInfo(NamedTuple):
 
     name: str                   #: the method's name, creep_forces' ``method=``
     doc: str                    #: what the method is
-    options: MappingProxyType   #: option name -> OptionInfo, in the descriptor's order
+    options: Mapping[str, OptionInfo]  #: option name -> OptionInfo, in the descriptor's order
     has_field: bool             #: it has a traction field (fastsim_field)
     saturates: bool             #: it keeps ``|F| <= mu N``
     #: a time-loop method: a case of bounded work, not solved iteratively to a
@@ -56,25 +65,25 @@ class MethodInfo(NamedTuple):
     #: exact_solve's); the others the Hertz ellipse only
     takes_grid: bool
 
-    def defaults(self):
+    def defaults(self) -> Dict[str, object]:
         """The options' defaults, as a dict option name -> default value."""
         return {n: o.default for n, o in self.options.items()}
 
 
 #: name -> MethodInfo, in the registry's order (read-only)
-METHODS = MappingProxyType({
+METHODS: Mapping[str, MethodInfo] = MappingProxyType({
     name: MethodInfo(name, doc, MappingProxyType({o[0]: OptionInfo(*o) for o in opts}),
                      bool(field), bool(sat), bool(loop), bool(coulomb), bool(rig), bool(grid))
     for name, doc, opts, field, sat, loop, coulomb, rig, grid in _core.METHODS})
 
 
-def _rst_text(text):
+def _rst_text(text: str) -> str:
     """Text of the C registry as reStructuredText: its |x| (a norm) and *
     taken as characters, not markup."""
     return text.replace("\\", "\\\\").replace("|", "\\|").replace("*", "\\*").replace("`", "\\`")
 
 
-def methods_doc():
+def methods_doc() -> str:
     """The methods and their options as a reStructuredText definition list
     (for creep_forces' docstring): a method's name, its doc and a bullet
     per option (name=default [unit]: doc; valid values)."""
@@ -92,7 +101,7 @@ def methods_doc():
     return "\n".join(lines).rstrip("\n")
 
 
-def method_info(func, method):
+def method_info(func: str, method: object) -> MethodInfo:
     """The MethodInfo of a method name, or RollerRigError naming it."""
     if isinstance(method, str) and method in METHODS:
         return METHODS[method]
@@ -100,7 +109,7 @@ def method_info(func, method):
     raise RollerRigError(f"{func}: method must be one of {names}, got {method!r:.60}")
 
 
-def loop_method(func, method):
+def loop_method(func: str, method: object) -> MethodInfo:
     """The MethodInfo of a method the rig's time loop can run, else
     RollerRigError saying why and naming the ones it can."""
     info = method_info(func, method)
@@ -113,7 +122,7 @@ def loop_method(func, method):
     return info
 
 
-def rig_method(func, method):
+def rig_method(func: str, method: object) -> MethodInfo:
     """The MethodInfo of a method the rig steps with (in_rig), else
     RollerRigError saying why and naming the ones it steps with."""
     info = loop_method(func, method)
@@ -125,7 +134,7 @@ def rig_method(func, method):
     return info
 
 
-def core(call, *args, **kwargs):
+def core(call: Callable[..., _T], *args: Any, **kwargs: Any) -> _T:
     """A call into _core whose ValueErrors (bad options, named by the binding)
     become RollerRigError."""
     try:
@@ -136,7 +145,8 @@ def core(call, *args, **kwargs):
         raise RollerRigError(str(e)) from None
 
 
-def creep_options(func, method, options):
+def creep_options(func: str, method: object,
+                  options: Mapping[str, object]) -> _core.CreepOptions:
     """The method and options parsed and checked once by the binding from
     the registry (RollerRigError naming the method, option, range and
     value), as the _core.CreepOptions its calls take in place of keywords."""
@@ -144,7 +154,8 @@ def creep_options(func, method, options):
     return core(_core.check_creep_options, func, dict(options, method=method))
 
 
-def check_creep_options(func, method, options):
+def check_creep_options(func: str, method: object,
+                        options: Mapping[str, object]) -> Dict[str, object]:
     """As creep_options; returns the keywords for _core (method= and the
     options given)."""
     creep_options(func, method, options)
@@ -157,24 +168,25 @@ CREEP_VALID = dict(cx=0.0, cy=0.0, cphi=0.0, a=6e-3, b=4e-3, N=1e4, mu=0.3, G=8.
                    speed=1.0, **{"friction.A": 1.0, "friction.B": 0.0})
 
 
-def creep_blame(opts, flat):
+def creep_blame(opts: _core.CreepOptions, flat: Sequence[_F64]) -> Blame:
     """blame(i, status) for check_status: the argument of a creep-force case
     (as _case names them) that the C core blames for element i's status
     (rr_creep_blame, mapped by the binding), from the CreepOptions opts and
     the case's flat inputs; where it blames no one member (a result out of
     range), those whose own values give the status (swap_blame)."""
-    def status_of(*values):
+    def status_of(*values: float) -> int:
         return _core.creep_forces1(opts, *values)[3]
     swapped = swap_blame(status_of, flat, list(CREEP_VALID), CREEP_VALID)
 
-    def blame(i, code):
+    def blame(i: int, code: int) -> Optional[List[str]]:
         values = [float(a[i if a.size > 1 else 0]) for a in flat]
         name = _core.creep_blame(opts, *values, code)
         return [name] if name else swapped(i, code)
     return blame
 
 
-def swap_blame(status_of, flat, names, reference):
+def swap_blame(status_of: Callable[..., int], flat: Sequence[npt.ArrayLike],
+               names: Sequence[str], reference: Mapping[str, float]) -> Blame:
     """blame(i, status) for check_status, for a call whose C function reports
     no member: the arguments of element i whose own values give the status,
     found by the C function itself, not by restating its rules: each
@@ -182,7 +194,7 @@ def swap_blame(status_of, flat, names, reference):
     a time; where no single one clears the status (two bad values), all of
     them in turn, then each put back where the status stays cleared without
     it.  ``status_of(*values)`` -> the status of one case (names' order)."""
-    def blame(i, code):
+    def blame(i: int, code: int) -> Optional[List[str]]:
         values = [float(np.reshape(a, -1)[i if np.size(a) > 1 else 0]) for a in flat]
         swapped = [k for k, n in enumerate(names)
                    if status_of(*(reference[n] if j == k else v
@@ -206,7 +218,7 @@ def swap_blame(status_of, flat, names, reference):
     return blame
 
 
-def used_numbers(method, options):
+def used_numbers(method: str, options: Mapping[str, Any]) -> Dict[str, _F64]:
     """The method's real options as 0-d arrays, for messages on failed elements."""
     info = METHODS[method]
     return {n: np.asarray(float(options[n] if options.get(n) is not None else o.default))
@@ -250,7 +262,7 @@ class FallingFriction:
     A: float = 0.4  #: friction at infinite slip over the static mu [-], 0 < A <= 1
     B: float = 0.6  #: decay rate of the friction with the slip speed [s/m], >= 0
 
-    def mu(self, mu0, w):
+    def mu(self, mu0: Union[float, _F64], w: npt.ArrayLike) -> Union[float, _F64]:
         """The friction coefficient [-] at slip speed `w` [m/s] for static value `mu0`.
 
         Parameters
@@ -268,12 +280,12 @@ class FallingFriction:
         return mu0 * ((1.0 - self.A) * np.exp(-self.B * np.asarray(w, dtype=float)) + self.A)
 
 
-def _friction(func, friction, method=None):
+def _friction(func: str, friction: object, method: Optional[str] = None) -> Tuple[float, float]:
     """(A, B) of the friction law; a falling law for a Coulomb-only method
     (METHODS[method].coulomb_only) is refused, naming both."""
     if friction is None or friction == "coulomb":
         return 1.0, 0.0
-    if (isinstance(friction, FallingFriction) and method in METHODS
+    if (isinstance(friction, FallingFriction) and method is not None and method in METHODS
             and METHODS[method].coulomb_only and friction.A < 1.0 and friction.B > 0.0):
         raise RollerRigError(f"{func}: method {method!r} is built for Coulomb friction; "
                              f"got {friction!r} (use friction=None)")
@@ -283,7 +295,8 @@ def _friction(func, friction, method=None):
                          f"got {friction!r}")
 
 
-def _choice(func, name, value, table, none_ok=False):
+def _choice(func: str, name: str, value: object, table: Iterable[str],
+            none_ok: bool = False) -> None:
     """One of a table's names (a str: a list or a dict is not looked up)."""
     if (value is None and none_ok) or (isinstance(value, str) and value in table):
         return
@@ -291,7 +304,7 @@ def _choice(func, name, value, table, none_ok=False):
     raise RollerRigError(f"{func}: {name} must be one of {names}, got {value!r:.60}")
 
 
-def _as_float(func, name, value):
+def _as_float(func: str, name: str, value: object) -> _F64:
     arr = np.asarray(value)
     if arr.dtype.kind not in "iuf":
         raise RollerRigError(f"{func}: {name} must be real numbers, got dtype {arr.dtype} "
@@ -301,7 +314,8 @@ def _as_float(func, name, value):
     return arr.astype(np.float64, copy=False)
 
 
-def _broadcast(func, named):
+def _broadcast(func: str, named: Mapping[str, object]) -> Tuple[
+        Tuple[int, ...], bool, Dict[str, _F64], List[_F64]]:
     """Convert, broadcast and flatten the inputs for the binding.
 
     Returns (shape, scalar, {name: array as given}, [1-D arrays]) where a
@@ -325,7 +339,9 @@ def _broadcast(func, named):
     return shape, scalar, full, flat
 
 
-def _finish(func, shape, scalar, full, outputs, status, errors, blame=None):
+def _finish(func: str, shape: Tuple[int, ...], scalar: bool, full: Mapping[str, _F64],
+            outputs: Iterable[_F64], status: npt.NDArray[np.int8], errors: Optional[str],
+            blame: Optional[Blame] = None) -> List[Any]:
     if errors is None:
         errors = "raise" if scalar else "warn"
     if errors not in ("raise", "warn", "ignore"):

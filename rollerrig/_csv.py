@@ -18,19 +18,22 @@ as the same double.
 """
 import csv
 import math
+import os
+from typing import Dict, Iterable, List, Mapping, Sequence, TextIO, Tuple, Union
 
 from ._units import cf_unit, read_unit
 
 UNITS_KEY = "units"
 
 
-def _cell(v):
+def _cell(v: float) -> str:
     v = float(v)
     return repr(v) if math.isfinite(v) else ("nan" if math.isnan(v) else
                                              ("inf" if v > 0 else "-inf"))
 
 
-def write_table(fh, names, rows, units, meta=()):
+def write_table(fh: TextIO, names: Sequence[str], rows: Iterable[Iterable[float]],
+                units: Mapping[str, str], meta: Iterable[Tuple[str, object]] = ()) -> None:
     """Write the table to text file `fh`: the names, the units line, `meta`
     ((key, value) pairs, each a "# key: value" line; a value's newlines are
     flattened), the rows (sequences of numbers)."""
@@ -43,11 +46,13 @@ def write_table(fh, names, rows, units, meta=()):
         w.writerow([_cell(v) for v in row])
 
 
-def read_table(path):
+def read_table(path: Union[str, "os.PathLike[str]"]) -> Tuple[
+        List[str], Dict[str, str], Dict[str, str], List[List[float]]]:
     """A table the package wrote (or one written before its header carried
     units: no '#' lines): (names, {name: unit}, {key: value} of the header,
     rows as lists of floats).  Units read in either spelling ("-" is "1")."""
-    meta, lines = {}, []
+    meta: Dict[str, str] = {}
+    lines: List[str] = []
     with open(path, encoding="utf-8", newline="") as fh:
         for line in fh:
             if line.startswith("#"):
@@ -60,7 +65,7 @@ def read_table(path):
     names = next(reader, [])
     rows = [[float(v) for v in row] for row in reader if row]
     units_text = meta.pop(UNITS_KEY, None)
-    units = {}
+    units: Dict[str, str] = {}
     if units_text is not None:
         units = dict(zip(names, (read_unit(u) for u in units_text.split(","))))
     return names, units, meta, rows

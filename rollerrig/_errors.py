@@ -1,8 +1,12 @@
 """The package's error and warning types and the one place where C status
 codes become exceptions or warnings."""
+from __future__ import annotations
+
 import warnings
+from typing import Callable, Dict, Iterable, Mapping, Optional
 
 import numpy as np
+import numpy.typing as npt
 
 from . import _core
 
@@ -33,7 +37,7 @@ class RollerRigWarning(UserWarning):
     """
 
 
-def status_message(code):
+def status_message(code: int) -> str:
     """The C core's message for a status code.
 
     Parameters
@@ -62,14 +66,16 @@ def status_message(code):
 
 #: every status code of the C core with its message: 0 ok, > 0 a warning
 #: (the result is usable), < 0 an error (the results are NaN)
-STATUS = {code: status_message(code) for code in range(_core.STATUS_MIN, _core.STATUS_MAX + 1)}
+STATUS: Dict[int, str] = {code: status_message(code)
+                          for code in range(_core.STATUS_MIN, _core.STATUS_MAX + 1)}
 
 
-def _value(arr, index):
+def _value(arr: npt.NDArray[np.float64], index: int) -> float:
     return float(arr.reshape(-1)[index if arr.size > 1 else 0])
 
 
-def _culprits(args, index, blamed=None):
+def _culprits(args: Mapping[str, npt.NDArray[np.float64]], index: int,
+              blamed: Optional[Iterable[str]] = None) -> str:
     """'name = value' for the arguments at `index` that the C core blamed
     (blamed: names, from its check's report or from the C function itself,
     never from rules restated here; one not in args is named alone, "h"),
@@ -80,7 +86,9 @@ def _culprits(args, index, blamed=None):
     return ", ".join(f"{n} = {_value(a, index)!r}" for n, a in args.items()) or "(options)"
 
 
-def check_status(func, status, args, errors, blame=None):
+def check_status(func: str, status: npt.NDArray[np.int8],
+                 args: Mapping[str, npt.NDArray[np.float64]], errors: str,
+                 blame: Optional[Callable[[int, int], Optional[Iterable[str]]]] = None) -> None:
     """Raise, warn or stay silent for the statuses of a call.
 
     Parameters

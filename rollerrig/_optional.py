@@ -6,6 +6,8 @@ xarray, pandas, tqdm ("sweep"), scipy ("fit"), dask.distributed
 ("distributed").
 """
 import importlib
+from types import ModuleType
+from typing import Optional
 
 __all__ = ["OptionalDependencyError", "require"]
 
@@ -15,7 +17,8 @@ class OptionalDependencyError(ImportError):
     the message names the feature, the package and the extra to install."""
 
 
-def require(module, feature, extra, package=None, instead=None):
+def require(module: str, feature: str, extra: str, package: Optional[str] = None,
+            instead: Optional[str] = None) -> ModuleType:
     """Import and return `module` (e.g. "scipy.optimize") for `feature`
     (e.g. "fit_polach"), or raise OptionalDependencyError saying
     "<feature> needs <package>: pip install 'rollerrig[<extra>]'".

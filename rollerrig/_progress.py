@@ -6,6 +6,7 @@ progress=None (the default of every call): that delayed bar; True: shown
 from the start; False: none.
 """
 import sys
+from typing import Any, Optional
 
 from ._errors import RollerRigError
 
@@ -13,7 +14,7 @@ from ._errors import RollerRigError
 DELAY_S = 1.0
 
 
-def check(func, progress):
+def check(func: str, progress: object) -> Optional[bool]:
     """progress must be None, True or False (named in the error)."""
     if progress is not None and not isinstance(progress, bool):
         raise RollerRigError(f"{func}: progress must be None (a bar once the work passes "
@@ -22,20 +23,20 @@ def check(func, progress):
 
 
 class _Silent:
-    def update(self, n=1):
+    def update(self, n: float = 1) -> None:
         pass
 
-    def close(self):
+    def close(self) -> None:
         pass
 
-    def __enter__(self):
+    def __enter__(self) -> "_Silent":
         return self
 
-    def __exit__(self, *exc):
+    def __exit__(self, *exc: object) -> None:
         self.close()
 
 
-def bar(progress, total, desc, unit):
+def bar(progress: Optional[bool], total: Optional[float], desc: str, unit: str) -> Any:
     """A tqdm bar for `total` units of work (update(n) as they finish; close()
     at the end), or a silent stand-in for progress=False.  tqdm is a
     dependency of the package; should it be missing the work runs without a
@@ -43,7 +44,7 @@ def bar(progress, total, desc, unit):
     if progress is False:
         return _Silent()
     try:
-        from tqdm import tqdm
+        from tqdm import tqdm  # type: ignore[import-untyped]  # (no stubs; types-tqdm)
     except ImportError:
         return _Silent()
     return tqdm(total=total, desc=desc, unit=unit, dynamic_ncols=True, leave=False,

@@ -17,7 +17,7 @@ DIMENSIONLESS = "1"
 _CF = {"-": DIMENSIONLESS, "": ""}
 
 
-def cf_unit(unit):
+def cf_unit(unit: object) -> str:
     """The CF / UDUNITS spelling of a unit of the C tables: "-" becomes "1";
     "" (a name, a flag or a choice: no unit) stays ""; the others ("m",
     "N m", "kg m^2", "m/s^2", "N m s/rad", ...) are CF's already."""
@@ -25,12 +25,12 @@ def cf_unit(unit):
     return _CF.get(unit, unit)
 
 
-def read_unit(text):
+def read_unit(text: str) -> str:
     """A unit read back from a file the package wrote, older files included
     (their "-" is "1")."""
     return cf_unit(text)
 
 
-def is_dimensionless(unit):
+def is_dimensionless(unit: object) -> bool:
     """Whether `unit` (either spelling) is dimensionless."""
     return cf_unit(unit) == DIMENSIONLESS

@@ -23,9 +23,12 @@ in-place build of a checkout (``pip install -e .``) keeps the headers and
 sources where they are, in csrc/, and builds the library into
 rollerrig/_c/lib/: the functions then give those folders.
 """
+from __future__ import annotations
+
 import argparse
 import sys
 from pathlib import Path
+from typing import Callable, List, Optional, Sequence, Tuple
 
 __all__ = ["get_include", "get_library_dir", "get_source_dir", "get_pkgconfig_dir", "main"]
 
@@ -34,7 +37,7 @@ _C = _PACKAGE / "_c"
 _CHECKOUT_CSRC = _PACKAGE.parent / "csrc"      # the package in a checkout (pip install -e .)
 
 
-def _folder(what, candidates):
+def _folder(what: str, candidates: Sequence[Tuple[Path, str]]) -> str:
     """The first folder of candidates ((folder, a file it must hold), ...)
     that holds its file; FileNotFoundError naming what is missing if none."""
     for folder, probe in candidates:
@@ -46,7 +49,7 @@ def _folder(what, candidates):
         "`pip install .` ships it, `pip install -e .` builds it in the checkout")
 
 
-def get_include():
+def get_include() -> str:
     """The folder holding rollerrig.h and its layer folders.
 
     Compile with ``-I`` it and ``#include "rollerrig.h"``.
@@ -77,7 +80,7 @@ def get_include():
                                  (_CHECKOUT_CSRC, "rollerrig.h")])
 
 
-def get_library_dir():
+def get_library_dir() -> str:
     """The folder holding librollerrig.a, the core as compiled for the extension.
 
     The library is position-independent: link with ``-L`` it
@@ -101,7 +104,7 @@ def get_library_dir():
     return _folder("C library", [(_C / "lib", "librollerrig.a")])
 
 
-def get_source_dir():
+def get_source_dir() -> str:
     """The folder holding the core's sources and headers in their layer folders.
 
     The layer folders are util/, contact/, geometry/, rig/ (every
@@ -122,7 +125,7 @@ def get_source_dir():
                                  (_CHECKOUT_CSRC, "rig/rr_rig.c")])
 
 
-def get_pkgconfig_dir():
+def get_pkgconfig_dir() -> str:
     """The folder holding rollerrig.pc, for PKG_CONFIG_PATH.
 
     The file names its folders relative to itself (``${pcfiledir}``).
@@ -140,17 +143,17 @@ def get_pkgconfig_dir():
     return _folder("pkg-config file", [(_C / "lib" / "pkgconfig", "rollerrig.pc")])
 
 
-def cflags():
+def cflags() -> str:
     """The compiler flags for the headers, ``-I<get_include()>``."""
     return f"-I{get_include()}"
 
 
-def libs():
+def libs() -> str:
     """The linker flags for the library, ``-L<get_library_dir()> -lrollerrig -lm``."""
     return f"-L{get_library_dir()} -lrollerrig -lm"
 
 
-def main(argv=None):
+def main(argv: Optional[Sequence[str]] = None) -> int:
     """The ``rollerrig-config`` command: print the asked flags or folders on one line.
 
     Parameters
@@ -170,7 +173,7 @@ def main(argv=None):
         prog="rollerrig-config",
         description="Flags and folders to build a C program against the installed "
                     "rollerrig C library, e.g. cc prog.c $(rollerrig-config --cflags --libs)")
-    options = [
+    options: List[Tuple[str, Callable[[], str], str]] = [
         ("--cflags", cflags, "the compiler flags (-I...)"),
         ("--libs", libs, "the linker flags (-L... -lrollerrig -lm)"),
         ("--includedir", get_include, "the folder holding rollerrig.h"),

@@ -15,6 +15,7 @@ import re
 import sys
 import time
 import warnings
+from typing import Optional, Sequence
 
 from ._errors import RollerRigError, RollerRigWarning
 from ._files import OutputPathError, check_output, make_folder
@@ -459,7 +460,7 @@ def build_parser():
     return parser
 
 
-def main(argv=None):
+def main(argv: Optional[Sequence[str]] = None) -> int:
     """Run the command line with `argv` (default sys.argv[1:]); returns the
     exit status (0, 1 or 2; --help and --version exit through SystemExit)."""
     parser = build_parser()

@@ -27,6 +27,8 @@ place that asks), the FMU adapters' (fmi2_cs.c, fmi3_cs.c, fmi_glue.c,
 their headers and fmu_describe.c, the build's description program) from the
 package's data/fmi/.
 """
+from __future__ import annotations
+
 import concurrent.futures
 import hashlib
 import json
@@ -41,9 +43,11 @@ import tempfile
 import uuid
 import zipfile
 from pathlib import Path
+from typing import Optional, Union
 
 from ._errors import RollerRigError
 from ._files import check_output, write_file
+from ._typing import Params
 from ._version import __version__
 
 __all__ = ["build_fmu", "FmuBuildError", "core_c_dirs", "find_compiler", "model_identifier",
@@ -360,8 +364,10 @@ def _build_description(identifier, files):
     return "\n".join(lines)
 
 
-def build_fmu(out, scenario=None, fmi_version=2, *, cc=None, jobs=None, cache_dir=None,
-              quiet=True):
+def build_fmu(out: Union[str, "os.PathLike[str]"], scenario: Params = None, fmi_version: int = 2,
+              *, cc: Optional[str] = None, jobs: Optional[int] = None,
+              cache_dir: Optional[Union[str, "os.PathLike[str]"]] = None,
+              quiet: bool = True) -> str:
     """Write a co-simulation FMU of the rig to `out`, a name ending in .fmu:
     a new path or a regular file, replaced whole (never a symbolic link, a
     directory, a device or a FIFO; its folder must exist), checked before

@@ -32,6 +32,8 @@ Rebuild the shipped table (about 130 000 nodes, some 40 CPU minutes):
 
 then reinstall (`pip install .`); `--dask ADDRESS` builds on a Dask cluster.
 """
+from __future__ import annotations
+
 from dataclasses import dataclass
 import math
 
@@ -145,7 +147,7 @@ class ExactTable:
         return path
 
 
-def builtin_table():
+def builtin_table() -> ExactTable:
     """The table compiled into the C core (the one method "exact_table" uses).
 
     Returns

@@ -60,6 +60,12 @@ The fit
 scipy is needed here only: the extra "fit" (pip install 'rollerrig[fit]');
 without it the fits raise an ImportError naming the extra.
 """
+from __future__ import annotations
+
+from typing import Mapping, Optional, Sequence, Tuple, Union
+
+import numpy.typing as npt
+
 from dataclasses import dataclass, field
 import itertools
 import math
@@ -149,7 +155,9 @@ class FitResult:
     #: the fit's fixed settings (contact, speeds, held creepages, grid), for predict
     settings: dict = field(repr=False, default_factory=dict)
 
-    def predict(self, cx, speed=None, *, cy=None, cphi=None):
+    def predict(self, cx: npt.ArrayLike, speed: Optional[npt.ArrayLike] = None, *,
+                cy: Optional[float] = None,
+                cphi: Optional[float] = None) -> Union[float, npt.NDArray[np.float64]]:
         """The fitted model's force fx [N] at creepage cx, in the data's sign.
 
         Parameters
@@ -573,9 +581,16 @@ def _fit(func, model, spec, cx, force, a, b, N, G, nu, speed, cy, cphi, fit, x0,
                      settings=settings)
 
 
-def fit_polach(cx, force, *, a, b, N, G=8.2e10, nu=0.28, speed, cy=0.0, cphi=0.0,
-               fit=("mu0", "A", "B", "kA", "kS"), x0=None, bounds=None, loss="soft_l1",
-               f_scale=None, weights=None):
+def fit_polach(cx: Union[npt.ArrayLike, Sequence[npt.ArrayLike]],
+               force: Union[npt.ArrayLike, Sequence[npt.ArrayLike]], *, a: float, b: float,
+               N: npt.ArrayLike, G: float = 8.2e10, nu: float = 0.28, speed: npt.ArrayLike,
+               cy: float = 0.0, cphi: float = 0.0,
+               fit: Union[str, Sequence[str]] = ("mu0", "A", "B", "kA", "kS"),
+               x0: Optional[Mapping[str, float]] = None,
+               bounds: Optional[Mapping[str, Tuple[float, float]]] = None, loss: str = "soft_l1",
+               f_scale: Optional[float] = None,
+               weights: Optional[Union[npt.ArrayLike, Sequence[npt.ArrayLike]]] = None
+               ) -> FitResult:
     """Fit Polach's method (creep_forces(method="polach")) to creep curves.
 
     Parameters

@@ -16,11 +16,13 @@ a cycle is sustained where the measurement's last period is at least
 SUSTAINED of its first.
 """
 import math
-from typing import NamedTuple
+from typing import Any, NamedTuple, Optional
 
 import numpy as np
+import numpy.typing as npt
 
 from .._errors import RollerRigError, status_message
+from .._typing import Params
 from ..rig.build import build_rig
 from ..rig.params import _parameters, _short, _with_track
 from ..rig.result import RECORD_FIELDS
@@ -61,8 +63,10 @@ def _positive(func, name, v):
 SUBSTEPS = 4
 
 
-def hunting(speeds, params=None, *, track=False, settle=2.0, measure=1.0, shift=1e-3,
-            substeps=SUBSTEPS, method=None, **creep):
+def hunting(speeds: npt.ArrayLike, params: Params = None, *, track: bool = False,
+            settle: float = 2.0, measure: float = 1.0, shift: float = 1e-3,
+            substeps: int = SUBSTEPS, method: Optional[str] = None,
+            **creep: Any) -> Hunting:
     """The limit cycle's amplitude against speed, by a ramp down.
 
     Parameters

@@ -25,6 +25,10 @@ table's length scale per a/b; forces on the wheel, CONTACT's convention and
 ours alike.  The method's options are those of rollerrig.creep_forces, which
 checks them (RollerRigError).
 """
+from __future__ import annotations
+
+from typing import Any, Dict, Sequence
+
 import csv
 import functools
 import inspect
@@ -235,7 +239,7 @@ def random_cases(n=3000, seed=20261202):
                 cphi=psi * mu * N / (G * c ** 3 * k.c23), psi=psi, m=m)
 
 
-def own_exact_cases(n=3000, seed=20261202, nx=27):
+def own_exact_cases(n: int = 3000, seed: int = 20261202, nx: int = 27) -> ExactCases:
     """random_cases(n, seed) with the library's own exact theory as the reference.
 
     The reference is method "exact" extrapolated to the continuum from nx
@@ -357,12 +361,13 @@ class ScoreResult(NamedTuple):
             return self.method
         return f"{self.method} ({', '.join(f'{k}={v!r}' for k, v in shown.items())})"
 
-    def table(self):
+    def table(self) -> str:
         """A text table of the statistics, overall and split by spin and a/b."""
         return table(self)
 
 
-def score(method="fastsim", *, cases=None, **creep_options):
+def score(method: str = "fastsim", *, cases: Optional[ExactCases] = None,
+          **creep_options: Any) -> ScoreResult:
     """Score a creep-force method against the 3220 exact cases.
 
     Parameters
@@ -590,7 +595,8 @@ class CurveScore(NamedTuple):
     max: float              #: largest error [-]
 
 
-def score_curves(method="fastsim", series=None, **opts):
+def score_curves(method: str = "fastsim", series: Optional[Sequence[str]] = None,
+                 **opts: Any) -> Dict[str, CurveScore]:
     """Compare a method with each creep-curve series.
 
     Each series is computed with its physical case (CreepCurve.case: load,

@@ -27,14 +27,20 @@ linearize(closed_loop=True) linearises the sampled closed loop with them
 (rollerrig/analysis/closed_loop.py).
 """
 import math
-from typing import NamedTuple, Tuple
+from typing import (TYPE_CHECKING, Any, Callable, Literal, NamedTuple, Optional, Tuple, Union,
+                    overload)
 
 import numpy as np
+import numpy.typing as npt
 
 from .._errors import RollerRigError, status_message
 from .._optional import require
+from .._typing import Params
 from ..rig.build import build_rig
 from ..rig.params import _parameters, _short, _with_track
+
+if TYPE_CHECKING:
+    from .closed_loop import ClosedLoopLinearization
 
 #: the plant's state, in the C order (csrc/rig/rr_rig.h, rr_rig_state_index)
 STATES = ("x", "y", "yaw", "chi", "theta_r", "vx", "vy", "yaw_rate", "spin", "roller_spin",
@@ -288,8 +294,26 @@ def _linearize_at(plant, V, state=None, func="linearize"):
                          plant.track)
 
 
-def linearize(params=None, *, roller_speed=None, track=False, state=None, method=None,
-              closed_loop=False, **creep):
+# the result's type follows closed_loop (a user's strict script gets the one it asked for)
+@overload
+def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
+              track: bool = False, state: Optional[npt.ArrayLike] = None,
+              method: Optional[str] = None, closed_loop: Literal[False] = False,
+              **creep: Any) -> Linearization: ...
+@overload
+def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
+              track: bool = False, state: Optional[npt.ArrayLike] = None,
+              method: Optional[str] = None, closed_loop: Literal[True],
+              **creep: Any) -> "ClosedLoopLinearization": ...
+@overload
+def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
+              track: bool = False, state: Optional[npt.ArrayLike] = None,
+              method: Optional[str] = None, closed_loop: bool = False,
+              **creep: Any) -> Union[Linearization, "ClosedLoopLinearization"]: ...
+def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
+              track: bool = False, state: Optional[npt.ArrayLike] = None,
+              method: Optional[str] = None, closed_loop: bool = False,
+              **creep: Any) -> Union[Linearization, "ClosedLoopLinearization"]:
     """The rig's plant linearised at its steady state.
 
     Parameters
@@ -398,7 +422,7 @@ def _system_modes(func, system, V):
     return _modes(A, tuple(f"s{i}" for i in range(A.shape[0])))
 
 
-def critical_speed(system, speeds):
+def critical_speed(system: Callable[[float], npt.ArrayLike], speeds: npt.ArrayLike) -> float:
     """The linear critical speed of any linear model.
 
     Parameters
@@ -424,7 +448,8 @@ def critical_speed(system, speeds):
     return _sweep(s, lambda V: _system_modes(func, system, V))[3]
 
 
-def stability(speeds, params=None, *, track=False, method=None, **creep):
+def stability(speeds: npt.ArrayLike, params: Params = None, *, track: bool = False,
+              method: Optional[str] = None, **creep: Any) -> Stability:
     """The plant's eigenvalues against speed and its linear critical speed.
 
     Parameters

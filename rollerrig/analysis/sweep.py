@@ -38,6 +38,12 @@ extra before it runs.  output="dict" asks for plain numpy instead: the dict
 like the grid.  The progress bar is rollerrig's one mechanism
 (rollerrig._progress: tqdm, shown once the work passes about a second).
 """
+from __future__ import annotations
+
+from typing import Any, Callable, Mapping, Optional, Union
+
+import numpy.typing as npt
+
 import copy
 import inspect
 import math
@@ -356,8 +362,10 @@ def _check_output(func, output):
     return None
 
 
-def sweep(func, grid, *, chunk=None, backend="threads", workers=None, client=None,
-          progress=None, output="xarray", **fixed):
+def sweep(func: Union[str, Callable[..., Any]], grid: Mapping[str, npt.ArrayLike], *,
+          chunk: Optional[int] = None, backend: str = "threads", workers: Optional[int] = None,
+          client: Any = None, progress: Optional[bool] = None, output: str = "xarray",
+          **fixed: Any) -> Any:
     """Evaluate a vectorised function over the Cartesian grid of named axes.
 
     Parameters
@@ -620,8 +628,10 @@ def _dimension_names(names):
     return tuple(dims)
 
 
-def sweep_rig(grid, *, backend="threads", workers=None, client=None, progress=None,
-              output="xarray", **simulate_kwargs):
+def sweep_rig(grid: Mapping[str, Any], *, backend: str = "threads",
+              workers: Optional[int] = None, client: Any = None,
+              progress: Optional[bool] = None, output: str = "xarray",
+              **simulate_kwargs: Any) -> Any:
     """Run rr.simulate at every point of a Cartesian grid of rig parameters.
 
     Parameters

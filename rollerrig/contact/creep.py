@@ -24,17 +24,21 @@ or Poisson ratio out of range, -5 friction, -12 inputs so extreme that the
 result would not be a finite double.  rollerrig.STATUS maps every code to
 its message.
 """
+from __future__ import annotations
+
 from dataclasses import dataclass
 import inspect
-from typing import NamedTuple
+from typing import Any, Dict, List, Mapping, NamedTuple, Optional, Tuple, Union
 
 import numpy as np
+import numpy.typing as npt
 
 from .. import _core
 from .._binding import (METHODS, FallingFriction, MethodInfo, OptionInfo, _broadcast, _finish,
                        _friction, creep_blame, creep_options, methods_doc, swap_blame,
                        used_numbers)
 from .._errors import RollerRigError, check_status
+from .._typing import FloatResult, StatusResult
 
 __all__ = [
     "METHODS", "BOUNDS", "MethodInfo", "OptionInfo", "FallingFriction", "HertzContact",
@@ -53,11 +57,11 @@ class HertzContact(NamedTuple):
     broadcast shape (``status`` an int / int8 array).
     """
 
-    a: np.ndarray       #: semi-axis along the rolling direction [m]
-    b: np.ndarray       #: lateral semi-axis [m]
-    p0: np.ndarray      #: peak pressure [Pa]
-    delta: np.ndarray   #: approach of the two bodies [m]
-    status: np.ndarray  #: C status per element (0 OK; rollerrig.STATUS)
+    a: FloatResult       #: semi-axis along the rolling direction [m]
+    b: FloatResult       #: lateral semi-axis [m]
+    p0: FloatResult      #: peak pressure [Pa]
+    delta: FloatResult   #: approach of the two bodies [m]
+    status: StatusResult  #: C status per element (0 OK; rollerrig.STATUS)
 
 
 class KalkerCoefficients(NamedTuple):
@@ -68,11 +72,11 @@ class KalkerCoefficients(NamedTuple):
     cphi, Mz = G c^3 C23 cy - G c^4 C33 cphi.
     """
 
-    c11: np.ndarray     #: longitudinal creep coefficient [-]
-    c22: np.ndarray     #: lateral creep coefficient [-]
-    c23: np.ndarray     #: lateral-spin coupling coefficient [-]
-    c33: np.ndarray     #: spin coefficient [-] (Mz = G c^3 C23 cy - G c^4 C33 cphi)
-    status: np.ndarray  #: C status per element (0 OK; rollerrig.STATUS)
+    c11: FloatResult     #: longitudinal creep coefficient [-]
+    c22: FloatResult     #: lateral creep coefficient [-]
+    c23: FloatResult     #: lateral-spin coupling coefficient [-]
+    c33: FloatResult     #: spin coefficient [-] (Mz = G c^3 C23 cy - G c^4 C33 cphi)
+    status: StatusResult  #: C status per element (0 OK; rollerrig.STATUS)
 
 
 class CreepForces(NamedTuple):
@@ -83,10 +87,10 @@ class CreepForces(NamedTuple):
     broadcast shape (``status`` an int / int8 array).
     """
 
-    fx: np.ndarray      #: longitudinal force on the wheel [N]
-    fy: np.ndarray      #: lateral force on the wheel [N]
-    mz: np.ndarray      #: spin moment on the wheel [N m]
-    status: np.ndarray  #: C status per element (0 OK, > 0 warning, < 0 NaN result)
+    fx: FloatResult      #: longitudinal force on the wheel [N]
+    fy: FloatResult      #: lateral force on the wheel [N]
+    mz: FloatResult      #: spin moment on the wheel [N m]
+    status: StatusResult  #: C status per element (0 OK, > 0 warning, < 0 NaN result)
 
 
 @dataclass(frozen=True)
@@ -99,13 +103,13 @@ class TractionField:
     the ellipse have zero pressure.
     """
 
-    x: np.ndarray      #: element centre, rolling direction [m]
-    y: np.ndarray      #: element centre, lateral [m]
-    pn: np.ndarray     #: pressure [Pa]
-    px: np.ndarray     #: longitudinal tangential traction on the wheel [Pa]
-    py: np.ndarray     #: lateral tangential traction on the wheel [Pa]
-    slip: np.ndarray   #: True where the element slips, False where it adheres
-    area: np.ndarray   #: element area [m^2]
+    x: npt.NDArray[np.float64]  #: element centre, rolling direction [m]
+    y: npt.NDArray[np.float64]  #: element centre, lateral [m]
+    pn: npt.NDArray[np.float64]  #: pressure [Pa]
+    px: npt.NDArray[np.float64]  #: longitudinal tangential traction on the wheel [Pa]
+    py: npt.NDArray[np.float64]  #: lateral tangential traction on the wheel [Pa]
+    slip: npt.NDArray[np.bool_]  #: True where the element slips, False where it adheres
+    area: npt.NDArray[np.float64]  #: element area [m^2]
     fx: float          #: total longitudinal force on the wheel [N]
     fy: float          #: total lateral force on the wheel [N]
     mz: float          #: total spin moment on the wheel [N m]
@@ -120,15 +124,16 @@ class TractionField:
 # the same doubles: tests/test_scalar_path.py).
 _PLAIN = frozenset((float, int, np.float64))
 _tuple_new = tuple.__new__
-_SCALAR_OPTIONS = {}
+_SCALAR_OPTIONS: Dict[object, _core.CreepOptions] = {}
 _SCALAR_OPTIONS_MAX = 64
 
 
-def _scalar_options(method, options):
+def _scalar_options(method: object,
+                    options: Mapping[str, object]) -> Optional[_core.CreepOptions]:
     """The CreepOptions of a method and its options, parsed once; None where
     they are not hashable or not valid (the general path says why)."""
     try:
-        key = method
+        key: object = method
         if options:
             # the values' types in the key too: 1, 1.0 and True are equal keys,
             # and an option takes what the general path takes, whatever ran
@@ -152,7 +157,9 @@ def _scalar_options(method, options):
     return o
 
 
-def _scalar_creep(method, options, friction, case):
+def _scalar_creep(method: str, options: Mapping[str, object], friction: object,
+                  case: Tuple[Any, Any, Any, Any, Any, Any, Any, Any, Any, Any]
+                  ) -> Optional[CreepForces]:
     """CreepForces of one case of plain numbers with status 0, else None."""
     try:
         fA, fB = _friction("creep_forces", friction, method)
@@ -179,15 +186,15 @@ _HERTZ_VALID = dict(A=1.0, B=1.0, N=1e4, E=2.1e11, nu=0.28, E2=2.1e11, nu2=0.28)
 _KALKER_VALID = dict(a_over_b=1.0, nu=0.28)
 
 
-def _hertz_status(*v):
-    return _core.hertz1(*v)[-1]
+def _hertz_status(*v: float) -> int:
+    return _core.hertz1(*v)[4]
 
 
-def _kalker_status(*v):
+def _kalker_status(*v: float) -> int:
     return int(_core.kalker(*(np.array([x]) for x in v))[-1][0])
 
 
-def _case_blame(func, kwargs, code):
+def _case_blame(func: str, kwargs: Mapping[str, Any], code: int) -> Optional[List[str]]:
     """The arguments the C core blames for status `code` of one case of the
     library function `func` (creep_forces, hertz or kalker_coefficients)
     given as keywords (a sweep's element), or None."""
@@ -198,7 +205,8 @@ def _case_blame(func, kwargs, code):
                                            ("a", None), ("b", None), ("N", None), ("mu", None),
                                            ("G", 8.2e10), ("nu", 0.28), ("speed", 0.0))]
         kw.pop("errors", None)
-        flat = _case(func, *case, friction, method)[3]
+        cx, cy, cphi, a, b, N, mu, G, nu, speed = case
+        flat = _case(func, cx, cy, cphi, a, b, N, mu, G, nu, speed, friction, method)[3]
         return creep_blame(creep_options(func, method, kw), flat)(0, code)
     if func == "hertz":
         kw = dict(_HERTZ_VALID, **{k: v for k, v in kwargs.items() if k != "errors"})
@@ -215,7 +223,10 @@ def _case_blame(func, kwargs, code):
     return None
 
 
-def hertz(A, B, N, E=2.1e11, nu=0.28, E2=None, nu2=None, *, errors=None):
+def hertz(A: npt.ArrayLike, B: npt.ArrayLike, N: npt.ArrayLike, E: npt.ArrayLike = 2.1e11,
+          nu: npt.ArrayLike = 0.28, E2: Optional[npt.ArrayLike] = None,
+          nu2: Optional[npt.ArrayLike] = None, *,
+          errors: Optional[str] = None) -> HertzContact:
     """Hertzian contact ellipse of two elastic bodies.
 
     Elliptic integrals to machine precision (Carlson), the ellipticity
@@ -290,8 +301,10 @@ def hertz(A, B, N, E=2.1e11, nu=0.28, E2=None, nu2=None, *, errors=None):
     E2 = E if E2 is None else E2
     nu2 = nu if nu2 is None else nu2
     if errors is None and _PLAIN.issuperset(map(type, (A, B, N, E, nu, E2, nu2))):
+        r: Tuple[float, ...]
         try:
-            r = _core.hertz1(A, B, N, E, nu, E2, nu2)
+            # (the _PLAIN check above: plain numbers, which mypy cannot narrow to)
+            r = _core.hertz1(A, B, N, E, nu, E2, nu2)  # type: ignore[arg-type]
         except OverflowError:                        # an int beyond the doubles
             r = (-1,)
         if r[-1] == 0:                               # the scalar path (see creep_forces)
@@ -304,7 +317,8 @@ def hertz(A, B, N, E=2.1e11, nu=0.28, E2=None, nu2=None, *, errors=None):
                                                     _HERTZ_VALID)))
 
 
-def kalker_coefficients(a_over_b, nu=0.28, *, errors=None):
+def kalker_coefficients(a_over_b: npt.ArrayLike, nu: npt.ArrayLike = 0.28, *,
+                        errors: Optional[str] = None) -> KalkerCoefficients:
     """Kalker's creep and spin coefficients C11, C22, C23, C33.
 
     From Kalker 1990, Table E.3: exact at the table's nodes; linear in
@@ -361,7 +375,10 @@ def kalker_coefficients(a_over_b, nu=0.28, *, errors=None):
                                                   _KALKER_VALID)))
 
 
-def _case(func, cx, cy, cphi, a, b, N, mu, G, nu, speed, friction, method=None):
+def _case(func: str, cx: object, cy: object, cphi: object, a: object, b: object, N: object,
+          mu: object, G: object, nu: object, speed: object, friction: object,
+          method: Optional[str] = None) -> Tuple[Tuple[int, ...], bool, Dict[str, Any],
+                                                List[npt.NDArray[np.float64]]]:
     fA, fB = _friction(func, friction, method)
     named = dict(cx=cx, cy=cy, cphi=cphi, a=a, b=b, N=N, mu=mu, G=G, nu=nu, speed=speed)
     named["friction.A"] = fA
@@ -369,8 +386,12 @@ def _case(func, cx, cy, cphi, a, b, N, mu, G, nu, speed, friction, method=None):
     return _broadcast(func, named)
 
 
-def creep_forces(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, method="fastsim",
-                 speed=0.0, friction=None, errors=None, **options):
+def creep_forces(cx: npt.ArrayLike, cy: npt.ArrayLike = 0.0, cphi: npt.ArrayLike = 0.0, *,
+                 a: npt.ArrayLike, b: npt.ArrayLike, N: npt.ArrayLike, mu: npt.ArrayLike,
+                 G: npt.ArrayLike = 8.2e10, nu: npt.ArrayLike = 0.28, method: str = "fastsim",
+                 speed: npt.ArrayLike = 0.0,
+                 friction: Optional[Union[FallingFriction, str]] = None,
+                 errors: Optional[str] = None, **options: Any) -> CreepForces:
     """Creep forces and spin moment on the wheel of a Hertzian contact.
 
     Parameters
@@ -491,8 +512,10 @@ def creep_forces(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, method
                                 creep_blame(opts, flat)))
 
 
-def fastsim_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, method="fastsim",
-                  speed=0.0, friction=None, **options):
+def fastsim_field(cx: float, cy: float = 0.0, cphi: float = 0.0, *, a: float, b: float, N: float,
+                  mu: float, G: float = 8.2e10, nu: float = 0.28, method: str = "fastsim",
+                  speed: float = 0.0, friction: Optional[Union[FallingFriction, str]] = None,
+                  **options: Any) -> TractionField:
     """The traction field of one case, for plots and checks.
 
     Parameters
@@ -553,5 +576,5 @@ def fastsim_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, metho
 
 # the methods from the registry; cleandoc first, so that the list (at column 0) sits in the
 # Notes whatever the interpreter's docstring indentation
-creep_forces.__doc__ = inspect.cleandoc(creep_forces.__doc__).replace("{methods}",
+creep_forces.__doc__ = inspect.cleandoc(creep_forces.__doc__ or "").replace("{methods}",
                                                                       methods_doc())

@@ -15,15 +15,19 @@ over one element) by a semismooth Newton method with GMRES, every product
 with the half-space's influence coefficients by FFT.  Forces act on the
 wheel (body 1); conventions as rollerrig.contact.creep.
 """
+from __future__ import annotations
+
 from dataclasses import dataclass
+from typing import Any, Dict, List, Mapping, Optional, Tuple
 
 import numpy as np
+import numpy.typing as npt
 
 from .. import _core
-from .._binding import (METHODS, _as_float, check_creep_options, creep_blame, creep_options,
-                        swap_blame, used_numbers)
+from .._binding import (METHODS, Blame, _as_float, check_creep_options, creep_blame,
+                        creep_options, swap_blame, used_numbers)
 from .._errors import RollerRigError, check_status
-from .creep import TractionField, _case
+from .creep import CreepForces, TractionField, _case
 
 __all__ = ["ExactSolution", "exact_field", "exact_solve", "exact_richardson"]
 
@@ -40,19 +44,20 @@ class ExactSolution(TractionField):
     fields below that the exact theory adds.
     """
 
-    sx: np.ndarray      #: longitudinal slip velocity over the rolling speed [-], 0 in adhesion
-    sy: np.ndarray      #: lateral slip velocity over the rolling speed [-], 0 in adhesion
-    contact: np.ndarray  #: True where the element carries pressure
+    #: longitudinal slip velocity over the rolling speed [-], 0 in adhesion
+    sx: npt.NDArray[np.float64]
+    sy: npt.NDArray[np.float64]  #: lateral slip velocity over the rolling speed [-], 0 in adhesion
+    contact: npt.NDArray[np.bool_]  #: True where the element carries pressure
     fn: float           #: normal force found [N]
     delta: float        #: approach [m]
     contact_area: float  #: area of the elements in contact [m^2]
     pmax: float         #: peak pressure [Pa]
-    products: tuple     #: FFT products (normal, tangential)
+    products: Tuple[float, float]  #: FFT products (normal, tangential)
     newton_steps: int   #: Newton steps of the tangential problem
-    residuals: tuple    #: final relative residuals (normal, tangential)
+    residuals: Tuple[float, float]  #: final relative residuals (normal, tangential)
 
 
-def _edge(contact):
+def _edge(contact: npt.NDArray[np.bool_]) -> str:
     """Where a contact area (boolean (my, mx)) reaches the grid's edge: the
     sides it touches, as words ("" if none)."""
     sides = (("the first column", contact[:, 0]), ("the last column", contact[:, -1]),
@@ -60,7 +65,8 @@ def _edge(contact):
     return ", ".join(name for name, c in sides if c.any())
 
 
-def _solution(func, out, args, blame, edge_ok=False):
+def _solution(func: str, out: Tuple[Any, ...], args: Mapping[str, npt.NDArray[np.float64]],
+              blame: Optional[Blame], edge_ok: bool = False) -> ExactSolution:
     """The ExactSolution of _core.exact_solve's or exact_field's output;
     RollerRigError for an error status (naming the arguments blame(0,
     status) gives: check_status), or (unless edge_ok) for a contact that
@@ -86,8 +92,10 @@ def _solution(func, out, args, blame, edge_ok=False):
                          residuals=(rn, rt), status=status)
 
 
-def exact_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, nx=None, ny=None,
-                tol=None, maxit=None, spin_shift=None):
+def exact_field(cx: float, cy: float = 0.0, cphi: float = 0.0, *, a: float, b: float, N: float,
+                mu: float, G: float = 8.2e10, nu: float = 0.28, nx: Optional[int] = None,
+                ny: Optional[int] = None, tol: Optional[float] = None,
+                maxit: Optional[int] = None, spin_shift: Optional[float] = None) -> ExactSolution:
     """The exact solution of one Hertzian case, with its fields.
 
     Parameters
@@ -141,8 +149,11 @@ def exact_field(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, nx=None
     return _solution(func, _core.exact_field(opts, *flat), full, creep_blame(opts, flat))
 
 
-def exact_solve(h, *, dx, dy, N, mu, G=8.2e10, nu=0.28, cx=0.0, cy=0.0, cphi=0.0, x0=None,
-                y0=None, tol=None, maxit=None, spin_shift=None):
+def exact_solve(h: npt.ArrayLike, *, dx: float, dy: float, N: float, mu: float, G: float = 8.2e10,
+                nu: float = 0.28, cx: float = 0.0, cy: float = 0.0, cphi: float = 0.0,
+                x0: Optional[float] = None, y0: Optional[float] = None,
+                tol: Optional[float] = None, maxit: Optional[int] = None,
+                spin_shift: Optional[float] = None) -> ExactSolution:
     """The exact solution for any undeformed distance h on a grid.
 
     Parameters
@@ -213,21 +224,22 @@ def exact_solve(h, *, dx, dy, N, mu, G=8.2e10, nu=0.28, cx=0.0, cy=0.0, cphi=0.0
                         dict(tol=tol, maxit=maxit, spin_shift=spin_shift))
 
 
-def _exact_solve(func, h, numbers, options, edge_ok=False):
+def _exact_solve(func: str, h: npt.ArrayLike, numbers: Mapping[str, object],
+                 options: Mapping[str, object], edge_ok: bool = False) -> ExactSolution:
     """exact_solve's work: numbers, options as its arguments (x0, y0 None: the
     grid centred); edge_ok: a contact at the grid's edge returned, not
     refused (rig_exact, which sizes a larger grid from it)."""
-    h = _as_float(func, "h", h)
-    if h.ndim != 2:
-        raise RollerRigError(f"{func}: h must be a 2-D array (my, mx), got shape {h.shape}")
-    my, mx = h.shape
+    h_arr = _as_float(func, "h", h)
+    if h_arr.ndim != 2:
+        raise RollerRigError(f"{func}: h must be a 2-D array (my, mx), got shape {h_arr.shape}")
+    my, mx = h_arr.shape
     if mx > _core.EXACT_MAX_GRID or my > _core.EXACT_MAX_GRID:
         raise RollerRigError(f"{func}: h must have at most {_core.EXACT_MAX_GRID} elements a "
-                             f"side, got shape {h.shape}")
+                             f"side, got shape {h_arr.shape}")
     # the options by the registry's rules (their names, ranges, integers only)
     options = {k: v for k, v in options.items() if v is not None}
     opts = creep_options(func, "exact", options)
-    full = {}
+    full: Dict[str, npt.NDArray[np.float64]] = {}
     for k, v in numbers.items():
         if v is None:
             continue
@@ -253,10 +265,10 @@ def _exact_solve(func, h, numbers, options, edge_ok=False):
     full.update(used_numbers("exact", options))
     names = ("dx", "dy", "x0", "y0", "N", "mu", "G", "nu", "cx", "cy", "cphi")
     case = dict(full, x0=x0, y0=y0)
-    out = _core.exact_solve(opts, h, *(float(case[n]) for n in names))
+    out = _core.exact_solve(opts, h_arr, *(float(case[n]) for n in names))
 
-    def status_of(*values):
-        return _core.exact_solve(opts, h, *values)[0]
+    def status_of(*values: float) -> int:
+        return int(_core.exact_solve(opts, h_arr, *values)[0])
     # a valid case on this grid, whose values replace the failed one's one at
     # a time where the C core's report names no argument (a result out of
     # range: swap_blame); the element's own size and the grid centred
@@ -269,8 +281,11 @@ def _exact_solve(func, h, numbers, options, edge_ok=False):
                      lambda i, code: [blamed] if blamed else swapped(i, code), edge_ok)
 
 
-def exact_richardson(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, nx=27,
-                     ny=None, **options):
+def exact_richardson(cx: npt.ArrayLike, cy: npt.ArrayLike = 0.0, cphi: npt.ArrayLike = 0.0, *,
+                     a: npt.ArrayLike, b: npt.ArrayLike, N: npt.ArrayLike, mu: npt.ArrayLike,
+                     G: npt.ArrayLike = 8.2e10, nu: npt.ArrayLike = 0.28, nx: int = 27,
+                     ny: Optional[int] = None,
+                     **options: Any) -> Tuple[CreepForces, CreepForces]:
     """The continuum estimate of the exact forces from two grids.
 
     Parameters
@@ -320,7 +335,7 @@ def exact_richardson(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, nx
     >>> print(f"fx = {f.fx:.0f} N +- {err.fx:.0f} N")
     fx = -1491 N +- 82 N
     """
-    from .creep import CreepForces, creep_forces
+    from .creep import creep_forces
     func = "exact_richardson"
     ny = nx if ny is None else ny
     if "method" in options:
@@ -330,7 +345,7 @@ def exact_richardson(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, nx
     check_creep_options(func, "exact", dict({k: v for k, v in options.items()
                                              if k in info.options}, nx=nx, ny=ny))
     for name, n in (("nx", nx), ("ny", ny)):
-        most = int(info.options[name].hi)
+        most = int(info.options[name].hi or 0)     # (an int option: hi is a number)
         if 2 * n > most:
             raise RollerRigError(f"{func}: {name} must be at most {most // 2} (the fine grid "
                                  f"has 2 {name} = {2 * n} elements, the method at most "
@@ -339,10 +354,12 @@ def exact_richardson(cx, cy=0.0, cphi=0.0, *, a, b, N, mu, G=8.2e10, nu=0.28, nx
     f1 = creep_forces(cx, cy, cphi, nx=nx, ny=ny, **kw)
     f2 = creep_forces(cx, cy, cphi, nx=2 * nx, ny=2 * ny, **kw)
     status = np.minimum(np.asarray(f1.status), np.asarray(f2.status))
-    est = [2.0 * g - f for f, g in zip(f1[:3], f2[:3])]
-    err = [np.abs(g - f) for f, g in zip(f1[:3], f2[:3])]
+    est: List[Any] = [2.0 * g - f for f, g in zip(f1[:3], f2[:3])]
+    err: List[Any] = [np.abs(g - f) for f, g in zip(f1[:3], f2[:3])]
+    st: Any = status
     if np.ndim(status) == 0:
-        status = int(status)
+        st = int(status)
         est = [float(v) for v in est]
         err = [float(v) for v in err]
-    return CreepForces(*est, status), CreepForces(*err, status)
+    return (CreepForces(est[0], est[1], est[2], st),
+            CreepForces(err[0], err[1], err[2], st))

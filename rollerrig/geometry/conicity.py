@@ -71,6 +71,9 @@ Example::
 import math
 import numbers
 import warnings
+from typing import Any, Optional, Union
+
+import numpy.typing as npt
 
 import numpy as np
 
@@ -235,8 +238,10 @@ def _one(f, amp, method, centre, n):
     return 2.0 * math.pi ** 2 / (2.0 * half) ** 2
 
 
-def equivalent_conicity(geometry, amplitude=0.003, method="harmonic", *, centre="balance",
-                        dy=None, y_span=None, n=2048, **search):
+def equivalent_conicity(geometry: RigGeometry, amplitude: npt.ArrayLike = 0.003,
+                        method: str = "harmonic", *, centre: Union[str, float] = "balance",
+                        dy: Optional[float] = None, y_span: Optional[float] = None, n: int = 2048,
+                        **search: Any) -> Union[float, npt.NDArray[np.float64]]:
     """Equivalent conicity tan(gamma_e) at the amplitude(s) y^ [m].
 
     Parameters

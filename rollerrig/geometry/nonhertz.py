@@ -24,6 +24,9 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
+import os
+from typing import Optional, Sequence, Union
 
 from .. import _core
 from .._errors import RollerRigError, RollerRigWarning, status_message
@@ -133,7 +136,7 @@ class NonHertzTable:
             raise RollerRigError(f"NonHertzTable: no table for the {name} side")
         return s
 
-    def save(self, path):
+    def save(self, path: Union[str, "os.PathLike[str]"]) -> None:
         """Save as .npz (numpy arrays only: np.load needs no pickle).
 
         Parameters
@@ -151,7 +154,7 @@ class NonHertzTable:
         np.savez(path, **out)
 
     @classmethod
-    def load(cls, path):
+    def load(cls, path: Union[str, "os.PathLike[str]"]) -> "NonHertzTable":
         """A table saved by :meth:`save`; checked row by row.
 
         Parameters
@@ -216,9 +219,12 @@ def _number(func, name, v, positive=True):
     return float(v)
 
 
-def nonhertz_table(geometry, y_min, y_max, *, Fz, dy=2e-4, dy_jump=5e-5, mu_ref=0.52,
-                   E=2.1e11, nu=0.28, sides=("left", "right"), n=40, n_corr=30,
-                   richardson=True, combine=4e-3, tol=1e-6, maxit=5000, workers=2, y=None):
+def nonhertz_table(geometry: RigGeometry, y_min: Optional[float], y_max: Optional[float],
+                   *, Fz: float, dy: float = 2e-4, dy_jump: float = 5e-5, mu_ref: float = 0.52,
+                   E: float = 2.1e11, nu: float = 0.28, sides: Sequence[str] = ("left", "right"),
+                   n: int = 40, n_corr: int = 30, richardson: bool = True, combine: float = 4e-3,
+                   tol: float = 1e-6, maxit: int = 5000, workers: int = 2,
+                   y: Optional[npt.ArrayLike] = None) -> NonHertzTable:
     """The non-Hertzian contact's tables of a profile pair.
 
     Parameters

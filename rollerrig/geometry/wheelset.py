@@ -21,6 +21,9 @@ import os
 import warnings
 from dataclasses import dataclass
 from typing import NamedTuple, Optional
+from typing import Any
+
+import numpy.typing as npt
 
 import numpy as np
 
@@ -86,9 +89,10 @@ class RigGeometry:
     roller_right: Optional[Profile] = None
 
     @classmethod
-    def standard(cls, wheel=None, roller=None, *, wheel_radius=0.46, roller_radius=0.46,
-                 gauge=1.435, back_to_back=1.360, flange_back=-0.070, gauge_depth=0.014,
-                 inclination=0.0):
+    def standard(cls, wheel: Optional[Profile] = None, roller: Optional[Profile] = None, *,
+                 wheel_radius: float = 0.46, roller_radius: float = 0.46, gauge: float = 1.435,
+                 back_to_back: float = 1.360, flange_back: float = -0.070,
+                 gauge_depth: float = 0.014, inclination: float = 0.0) -> "RigGeometry":
         """A wheelset on rollers placed as on track by gauge and back-to-back distance.
 
         Parameters
@@ -140,7 +144,8 @@ class RigGeometry:
                    roller_y=gauge / 2 - y_gauge)
 
     @classmethod
-    def measured_pair(cls, *, roller_radius=0.80010, back_to_back=1.347, smoothing=2e-3):
+    def measured_pair(cls, *, roller_radius: float = 0.80010, back_to_back: float = 1.347,
+                      smoothing: Optional[float] = 2e-3) -> "RigGeometry":
         """The measured wheels on the measured rollers shipped in rollerrig/data/profiles.
 
         MiniProf .whl/.ban of a full-scale single-wheelset roller rig, left
@@ -266,8 +271,9 @@ def _search(func, nsamples=400, two_point_tol=1e-4, two_point_sep=2e-3):
     return int(nsamples), float(two_point_tol), float(two_point_sep)
 
 
-def wheelset_contact(geometry, y_ws, *, nsamples=400, two_point_tol=1e-4,
-                     two_point_sep=2e-3, errors=None):
+def wheelset_contact(geometry: RigGeometry, y_ws: npt.ArrayLike, *, nsamples: int = 400,
+                     two_point_tol: float = 1e-4, two_point_sep: float = 2e-3,
+                     errors: Optional[str] = None) -> WheelsetContact:
     """Direct contact search at the lateral shifts y_ws.
 
     Parameters
@@ -402,7 +408,8 @@ class ContactTable:
 MAX_ROWS = 1_000_000
 
 
-def contact_table(geometry, y_min, y_max, n=401, **search):
+def contact_table(geometry: RigGeometry, y_min: float, y_max: float, n: int = 401,
+                  **search: Any) -> ContactTable:
     """Contact table over [y_min, y_max] [m] with n rows.
 
     A direct search per row (:func:`wheelset_contact`), in C with the GIL

@@ -1,4 +1,11 @@
 """rollerrig.plot's error maps (a method against the exact cases) and fits."""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any, Optional
+
+if TYPE_CHECKING:
+    from ..analysis.reference import ScoreResult
+
 import warnings
 
 import numpy as np
@@ -40,8 +47,10 @@ def _error_stats(err):
                 max=float(np.max(good)))
 
 
-def error_map(result, ax=None, *, spin=None, quantity="force", reduce="max",
-              ellipticity=None, vmax=None, cmap="viridis", colorbar=None, title=True):
+def error_map(result: ScoreResult, ax: Any = None, *, spin: Optional[float] = None,
+              quantity: str = "force", reduce: str = "max", ellipticity: Optional[float] = None,
+              vmax: Optional[float] = None, cmap: str = "viridis",
+              colorbar: Optional[bool] = None, title: bool = True) -> Any:
     """Draw a ScoreResult's error over the creepage direction / magnitude plane.
 
     One panel per spin level, or the one level `spin`.  x: the direction of

@@ -1,5 +1,12 @@
 """rollerrig.plot's figures of a rig run (the seed paper's Fig. 7 and 8) and of
 the profiles in contact."""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, List, Union
+
+if TYPE_CHECKING:
+    from ..rig.result import RigResult
+
 import os
 import textwrap
 
@@ -259,7 +266,8 @@ def rig_force(res, ax=None, *, title=True, adhesion=None):
     return ax
 
 
-def plot_run(res, outdir, prefix="rig"):
+def plot_run(res: RigResult, outdir: Union[str, "os.PathLike[str]"],
+             prefix: str = "rig") -> List[str]:
     """Write <prefix>_creepage.png (Fig. 7) and <prefix>_force.png (Fig. 8) of a run.
 
     Parameters

@@ -18,4 +18,8 @@ from .exact import RigExact, rig_exact
 
 __all__ = ["PARAMETERS", "default_parameters", "load_parameters", "check_parameters", "build_rig",
            "Rig", "simulate", "replay", "RigResult", "RECORD_FIELDS", "RECORD_UNITS",
-           "RECORD_BYTES_CAP", "RIG_METHODS"]
+           "RECORD_BYTES_CAP", "RIG_METHODS",
+           # re-exported by rollerrig (rr.rig_contact, ...): public here too
+           "LinearCreepages", "RigContact", "RigPose", "WheelContact", "linear_creepages",
+           "rig_contact", "CreepageController", "RigInfo", "RigSignals", "RigExact", "rig_exact",
+           "rig_nonhertz_table"]

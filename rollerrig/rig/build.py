@@ -7,6 +7,9 @@ import math
 import numbers
 
 import numpy as np
+from typing import Any, Dict, Optional, Tuple
+
+from .._typing import Params
 
 from .. import _core
 from . import control as _control
@@ -592,8 +595,12 @@ def _culprits(P, run, names, keys, build):
     return found
 
 
-def build_rig(params=None, *, dt=None, method=None, substeps=None, ode=None, nx=None, ny=None,
-              roller_speed=None, start="rolling", track=None, **creep):
+def build_rig(params: Params = None, *, dt: Optional[float] = None, method: Optional[str] = None,
+              substeps: Optional[int] = None, ode: Optional[str] = None,
+              nx: Optional[int] = None, ny: Optional[int] = None,
+              roller_speed: Optional[float] = None, start: str = "rolling",
+              track: Optional[bool] = None,
+              **creep: Any) -> Tuple["Rig", Dict[str, Dict[str, Any]], ContactTable]:
     """The rig and the merged parameters, for stepping by hand.
 
     E.g. rig.sample / rig.advance / rig.rhs, to verify the integrator

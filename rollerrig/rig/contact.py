@@ -31,6 +31,8 @@ import warnings
 from typing import NamedTuple
 
 import numpy as np
+import numpy.typing as npt
+from typing import TYPE_CHECKING, Any, Optional, Tuple, Union
 
 from .. import _core
 from .._errors import RollerRigError, RollerRigWarning, status_message
@@ -58,9 +60,42 @@ class RigPose(NamedTuple):
 #: rig frame (shape (3, ...)), 1 for a scalar
 WHEEL_FIELDS = _core.RIG_WHEEL_FIELDS
 
-#: one wheel's contact: the fields of WHEEL_FIELDS, then its status
-WheelContact = NamedTuple("WheelContact", [(name, np.ndarray) for name, *_ in WHEEL_FIELDS]
-                          + [("status", np.ndarray)])
+#: one wheel's contact: the fields of WHEEL_FIELDS, then its status.  The
+#: class is made from the C declaration at run time; for the type checker it
+#: is spelt out (tests/test_typing.py holds the two to the same fields): a
+#: scalar field a numpy scalar for a call on scalars, else an array
+if TYPE_CHECKING:
+    _Scalar = Union[np.float64, npt.NDArray[np.float64]]
+    _Vector = npt.NDArray[np.float64]          # shape (3, ...)
+
+    class WheelContact(NamedTuple):
+        p: _Vector
+        theta: _Scalar
+        t1: _Vector
+        t2: _Vector
+        n: _Vector
+        cx: _Scalar
+        cy: _Scalar
+        cphi: _Scalar
+        V: _Scalar
+        N: _Scalar
+        a: _Scalar
+        b: _Scalar
+        p0: _Scalar
+        fx: _Scalar
+        fy: _Scalar
+        mz: _Scalar
+        force: _Vector
+        moment: _Vector
+        r: _Scalar
+        R: _Scalar
+        delta: _Scalar
+        s_wheel: _Scalar
+        s_roller: _Scalar
+        status: Union[np.int8, npt.NDArray[np.int8]]
+else:
+    WheelContact = NamedTuple("WheelContact", [(name, np.ndarray) for name, *_ in WHEEL_FIELDS]
+                              + [("status", np.ndarray)])
 WheelContact.__doc__ = "One wheel's contact; fields, units [SI] and meanings:\n" + "\n".join(
     f"    {name} [{unit}]{' (3, ...)' if width == 3 else ''}: {meaning}"
     for name, width, unit, meaning in WHEEL_FIELDS) + "\n    status: this wheel's status"
@@ -135,10 +170,15 @@ _VALID_STATE = dict(x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spin=10
                     vmin=1e-3)
 
 
-def rig_contact(table, *, x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spin,
-                roller_spin, N_left=None, N_right=None, Fz_left=None, Fz_right=None, mu=0.4,
-                friction=None, E=2.1e11, nu=0.28, vmin=1e-3, method="fastsim",
-                kinematics_only=False, errors=None, patch="hertz", nonhertz=None, **options):
+def rig_contact(table: ContactTable, *, x: npt.ArrayLike = 0.0, y: npt.ArrayLike = 0.0,
+                yaw: npt.ArrayLike = 0.0, vx: npt.ArrayLike = 0.0, vy: npt.ArrayLike = 0.0,
+                yaw_rate: npt.ArrayLike = 0.0, spin: npt.ArrayLike, roller_spin: npt.ArrayLike,
+                N_left: Optional[npt.ArrayLike] = None, N_right: Optional[npt.ArrayLike] = None,
+                Fz_left: Optional[npt.ArrayLike] = None, Fz_right: Optional[npt.ArrayLike] = None,
+                mu: npt.ArrayLike = 0.4, friction: object = None, E: float = 2.1e11,
+                nu: float = 0.28, vmin: float = 1e-3, method: str = "fastsim",
+                kinematics_only: bool = False, errors: Optional[str] = None, patch: str = "hertz",
+                nonhertz: object = None, **options: Any) -> "RigContact":
     """Contact of both wheels for wheelset states (numpy-broadcast arrays).
 
     Parameters
@@ -513,8 +553,10 @@ class LinearCreepages(NamedTuple):
     cphi: np.ndarray    #: spin creepage [rad/m] (eq. 9)
 
 
-def linear_creepages(table, *, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spin,
-                     roller_spin):
+def linear_creepages(table: ContactTable, *, y: npt.ArrayLike = 0.0, yaw: npt.ArrayLike = 0.0,
+                     vx: npt.ArrayLike = 0.0, vy: npt.ArrayLike = 0.0,
+                     yaw_rate: npt.ArrayLike = 0.0, spin: npt.ArrayLike,
+                     roller_spin: npt.ArrayLike) -> Tuple["LinearCreepages", "LinearCreepages"]:
     """The seed paper's linearised creepages (eq. 7-9) at the table geometry.
 
     Parameters

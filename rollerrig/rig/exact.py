@@ -17,6 +17,10 @@ mz about n at P).  The C core does the whole (csrc/geometry/rr_wheel_exact.h).
 from dataclasses import dataclass
 
 import numpy as np
+from typing import TYPE_CHECKING, Any, Optional
+
+if TYPE_CHECKING:
+    from ..geometry.wheelset import ContactTable, RigGeometry
 
 from .. import _core
 from .._binding import METHODS, check_creep_options
@@ -85,10 +89,14 @@ def _motion(geometry, y_ws, spin, roller_spin, vy, yaw_rate, vmin, table):
                  for a in (pose.c, pose.v, pose.w))
 
 
-def rig_exact(geometry, y_ws, *, mu, N=None, Fz=None, side="left", spin=None,
-              roller_spin=None, vy=0.0, yaw_rate=0.0, cx=None, cy=None, cphi=None, E=2.1e11,
-              nu=0.28, n=40, reference="weighted", loaded=True, passes=2, vmin=1e-3,
-              table=None, tol=1e-6, maxit=5000, **patch_options):
+def rig_exact(geometry: "RigGeometry", y_ws: float, *, mu: float, N: Optional[float] = None,
+              Fz: Optional[float] = None, side: str = "left", spin: Optional[float] = None,
+              roller_spin: Optional[float] = None, vy: float = 0.0, yaw_rate: float = 0.0,
+              cx: Optional[float] = None, cy: Optional[float] = None,
+              cphi: Optional[float] = None, E: float = 2.1e11, nu: float = 0.28, n: int = 40,
+              reference: str = "weighted", loaded: bool = True, passes: int = 2,
+              vmin: float = 1e-3, table: Optional["ContactTable"] = None, tol: float = 1e-6,
+              maxit: int = 5000, **patch_options: Any) -> "RigExact":
     """One wheel of the rig solved by Kalker's exact theory on its
     non-Hertzian patch (:func:`undeformed_distance`).
 

@@ -21,6 +21,7 @@ import os
 import stat
 import warnings
 from typing import NamedTuple
+from typing import Any, Dict, Union
 
 from .. import _core
 from .._errors import RollerRigError, RollerRigWarning
@@ -141,7 +142,7 @@ def _read_parameter_file(path):
                          "each other beyond Python's recursion limit)"]) from None
 
 
-def load_parameters(path):
+def load_parameters(path: Union[str, "os.PathLike[str]"]) -> Dict[str, Dict[str, Any]]:
     """A parameter file as a nested dict, not yet checked.
 
     Parameters

@@ -5,6 +5,7 @@ import json
 from dataclasses import dataclass
 
 import numpy as np
+from typing import Any, Dict, List
 
 from .. import _core
 from .._optional import require
@@ -162,7 +163,7 @@ class RigResult:
                      "status": str(int(self.status)), "message": str(self.message)})
         return meta
 
-    def to_dataframe(self):
+    def to_dataframe(self) -> Any:
         """The records as a pandas DataFrame.
 
         Returns
@@ -259,7 +260,7 @@ class RigResult:
                                                         RECORD_UNITS, meta),
                           what="RigResult.to_csv: path")
 
-    def summary(self, tol=0.05, window=0.25):
+    def summary(self, tol: float = 0.05, window: float = 0.25) -> List[Dict[str, Any]]:
         """Per target, how the creepage controller held it.
 
         Parameters
@@ -330,7 +331,7 @@ class RigResult:
                               peak_force_over_muN=float(peak)), why))
         return rows
 
-    def table(self, tol=0.05):
+    def table(self, tol: float = 0.05) -> str:
         """:meth:`summary` as aligned text.
 
         Parameters

@@ -31,10 +31,13 @@ feeds a run's kinematics through a contact model (the paper's Fig. 9).
 import math
 import time
 import warnings
+from typing import Any, Optional
 
 import numpy as np
+import numpy.typing as npt
 
 from .. import _core, _progress
+from .._typing import Controller, Params
 from . import control as _control
 from .._errors import RollerRigError, RollerRigWarning, status_message
 from .build import _build, _creep_options, _geometry
@@ -198,10 +201,15 @@ def _record_plan(n, dt, record_every, max_record_bytes):
     return int(record_every), kept
 
 
-def simulate(duration=None, dt=None, method=None, params=None, targets=None,
-             target_times=None, *, roller_speed=None, start="rolling", nx=None, ny=None,
-             substeps=None, ode=None, record_every=1, max_record_bytes=RECORD_BYTES_CAP,
-             progress=None, controller=None, track=None, **creep):
+def simulate(duration: Optional[float] = None, dt: Optional[float] = None,
+             method: Optional[str] = None, params: Params = None,
+             targets: Optional[npt.ArrayLike] = None, target_times: Optional[npt.ArrayLike] = None,
+             *, roller_speed: Optional[float] = None, start: str = "rolling",
+             nx: Optional[int] = None, ny: Optional[int] = None, substeps: Optional[int] = None,
+             ode: Optional[str] = None, record_every: int = 1,
+             max_record_bytes: int = RECORD_BYTES_CAP, progress: Optional[bool] = None,
+             controller: Optional[Controller] = None, track: Optional[bool] = None,
+             **creep: Any) -> RigResult:
     """Run the rig: by default the seed paper's scenario on the default parameters.
 
     Parameters

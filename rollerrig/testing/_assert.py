@@ -1,6 +1,10 @@
 """The plain assertions: assert_fields_close (any labelled array set),
 assert_history_close (a simulate result), assert_creep_curve_close (creep
 forces over a creepage axis)."""
+from __future__ import annotations
+
+from typing import Any, Mapping, Optional, Sequence
+
 import math
 import os
 import warnings
@@ -137,8 +141,11 @@ def assert_fields_close(actual, expected, *, rtol=DEFAULT_RTOL, atol=DEFAULT_ATO
     raise RegressionError(message, deviations, path, note)
 
 
-def assert_history_close(actual, expected, *, fields=None, window=None, rtol=DEFAULT_RTOL,
-                         atol=DEFAULT_ATOL, tolerances=None, figure=None):
+def assert_history_close(actual: Any, expected: Any, *, fields: Optional[Sequence[str]] = None,
+                         window: Optional[float] = None, rtol: float = DEFAULT_RTOL,
+                         atol: float = DEFAULT_ATOL,
+                         tolerances: Optional[Mapping[str, Any]] = None,
+                         figure: Any = None) -> None:
     """Assert that a simulate result's history agrees with an expected one:
     a RigResult, a mapping {field: column} or the path of a reference .npz
     (the plugin's).  fields: the record fields compared (default all);

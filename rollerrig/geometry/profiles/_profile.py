@@ -5,6 +5,7 @@ import math
 import os
 import warnings
 from types import MappingProxyType
+from typing import Optional
 
 import numpy as np
 
@@ -425,7 +426,7 @@ class Profile:
                        smoothing=smoothing)
 
     @classmethod
-    def s1002(cls, smoothing=None):
+    def s1002(cls, smoothing: Optional[float] = None) -> "Profile":
         """The S1002 wheel of the Manchester contact benchmark.
 
         MBench_S1002_v3.prw, shipped in rollerrig/data/profiles: y = 0 at the
@@ -435,7 +436,7 @@ class Profile:
                             smoothing=smoothing)
 
     @classmethod
-    def uic60(cls, smoothing=None):
+    def uic60(cls, smoothing: Optional[float] = None) -> "Profile":
         """The UIC60 rail of the Manchester contact benchmark.
 
         MBench_UIC60_v3.prr, already canted 1:40: top of head z = 0 near
