@@ -6,6 +6,7 @@ annotated yet are listed there with the reason).  mypy runs as a subprocess
 from the checkout, so that it reads that configuration and the package's
 sources (rollerrig/_core.pyi for the extension).
 """
+import os
 import re
 import subprocess
 import sys
@@ -45,9 +46,18 @@ def test_package_is_strict_clean():
 
 
 def stubtest(*args):
-    r = subprocess.run([sys.executable, "-m", "mypy.stubtest", "rollerrig._core",
-                        "--mypy-config-file", str(Path(ROOT) / "pyproject.toml"), *args],
-                       cwd=ROOT, capture_output=True, text=True, timeout=900)
+    # run from a folder of its own, so that the import is of the installed
+    # package (CI's `pip install .` leaves the checkout's folder without the
+    # built extension), and mypy finds the stub beside that package
+    import tempfile
+
+    import rollerrig
+    installed = str(Path(rollerrig.__file__).resolve().parent.parent)
+    with tempfile.TemporaryDirectory() as here:
+        r = subprocess.run([sys.executable, "-m", "mypy.stubtest", "rollerrig._core",
+                            "--mypy-config-file", str(Path(ROOT) / "pyproject.toml"), *args],
+                           cwd=here, capture_output=True, text=True, timeout=900,
+                           env=dict(os.environ, MYPYPATH=installed))
     return r.returncode, r.stdout + r.stderr
 
 
