@@ -52,12 +52,14 @@ def stubtest(*args):
     import tempfile
 
     import rollerrig
-    installed = str(Path(rollerrig.__file__).resolve().parent.parent)
+    installed = Path(rollerrig.__file__).resolve().parent.parent
+    env = dict(os.environ)
+    if installed.name not in ("site-packages", "dist-packages"):
+        env["MYPYPATH"] = str(installed)    # an editable install: mypy finds site-packages itself
     with tempfile.TemporaryDirectory() as here:
         r = subprocess.run([sys.executable, "-m", "mypy.stubtest", "rollerrig._core",
                             "--mypy-config-file", str(Path(ROOT) / "pyproject.toml"), *args],
-                           cwd=here, capture_output=True, text=True, timeout=900,
-                           env=dict(os.environ, MYPYPATH=installed))
+                           cwd=here, capture_output=True, text=True, timeout=900, env=env)
     return r.returncode, r.stdout + r.stderr
 
 
