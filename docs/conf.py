@@ -16,6 +16,10 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 
 sys.path.insert(0, os.path.join(HERE, "_ext"))
+# the installed package, never the checkout's folder: `python -m sphinx` run
+# from the checkout puts it first on sys.path, and a plain `pip install .`
+# leaves that folder without the built extension
+sys.path[:] = [p for p in sys.path if os.path.abspath(p or os.curdir) != ROOT]
 
 import rollerrig  # noqa: E402  (the installed package: the site documents what users get)
 
