@@ -39,9 +39,10 @@ def test_the_site_builds_from_the_docs_extra():
     # (CI's docs step) cannot miss one
     with open(os.path.join(DOCS, "conf.py"), encoding="utf-8") as f:
         conf = f.read()
-    with open(os.path.join(ROOT, "setup.cfg"), encoding="utf-8") as f:
-        cfg = f.read()
-    extra = cfg.split("\ndocs =\n", 1)[1].split("\ntest =", 1)[0]
+    import configparser
+    cfg = configparser.ConfigParser()
+    cfg.read(os.path.join(ROOT, "setup.cfg"), encoding="utf-8")   # as setuptools reads it
+    extra = cfg["options.extras_require"]["docs"]
     for module, package in (("numpydoc", "numpydoc"), ("myst_nb", "myst-nb"),
                             ("pydata_sphinx_theme", "pydata-sphinx-theme")):
         assert module in conf and package in extra
