@@ -12,16 +12,16 @@ import numpy as np
 import pytest
 
 import rollerrig as rr
-from rollerrig import fmu, rig
+from rollerrig import fmu
 
 fmpy = pytest.importorskip("fmpy", reason="the test extra installs FMPy")
 from fmpy import read_model_description, simulate_fmu  # noqa: E402
 from fmpy.simulation import instantiate_fmu  # noqa: E402
+from test_fmu import _bits_differ  # noqa: E402  (the record, bit for bit)
 
 pytestmark = pytest.mark.slow     # FMUs compiled and run by FMPy
 
 T = 0.004
-REC = list(rig.RECORD_FIELDS)
 DATA = os.path.join(os.path.dirname(rr.__file__), "data")
 SHORT = {"scenario": {"duration_s": 2.0, "targets": [0.04, 0.015], "target_start_s": [0.0, 1.0]},
          "contact": {"patch": "nonhertz", "nonhertz_half_range_m": 8e-5,
@@ -35,19 +35,6 @@ def _scenario(pair):
     if isinstance(p, str):
         p = rr.load_parameters(p)
     return {**p, **SHORT}
-
-
-def _bits_differ(res, ref):
-    bad = []
-    for i, name in enumerate(REC):
-        if name == "time":
-            continue
-        got = np.asarray(res[name][1:], dtype=float)
-        want = ref[:len(got), i]
-        if got.shape != want.shape or not np.array_equal(got.view(np.uint64),
-                                                          want.view(np.uint64)):
-            bad.append(name)
-    return bad
 
 
 @pytest.fixture(scope="module")
