@@ -7,7 +7,6 @@ import os
 import warnings
 import zipfile
 
-import numpy as np
 import pytest
 
 import rollerrig as rr
