@@ -381,6 +381,10 @@ SOLVE = dict(dx=1e-3, dy=1e-3, N=5e4, mu=0.3, cx=1e-3, cphi=0.5)
     (dict(x0=np.zeros(3)), r"x0 must be a number, got shape \(3,\)"),
     (dict(y0=np.nan), r"y0 = nan: input is NaN"),
     (dict(x0=1e308), r"x0 = 1e\+308: inputs too extreme"),
+    # a mean pressure whose square overflows (or vanishes): the solvers'
+    # norms were inf / inf and ran to maxit, 0.2 s a case (fuzz_creep, CI)
+    (dict(N=1e150), r"N = 1e\+150: inputs too extreme"),
+    (dict(N=1e-150), r"N = 1e-150: inputs too extreme"),
     (dict(h=np.zeros((1, 2000))), r"h must have at most 1024 elements a side"),
     # a contact that reaches the grid's edge (status 0 before): one element,
     # a flat gap, an inverted one, a bowl cut off by its grid

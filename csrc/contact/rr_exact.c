@@ -158,11 +158,14 @@ static int check_problem(const rr_exact_problem *pb, size_t work_len)
     need = rr_exact_workspace_len(g->mx, g->my);
     if (work_len < need)
         return RR_ERR_WORKSPACE;
-    /* the mean pressure and the tractions must be finite doubles */
+    /* the mean pressure and the tractions must be finite doubles, and their
+     * squares too: the solvers' norms sum them (past 1e150 they overflow,
+     * below 1e-150 they vanish, and the iteration runs to maxit on inf/inf) */
     {
         const double pmean = pb->N / (g->dx * g->dy) / ((double)g->mx * g->my);
         if (!isnormal(pmean) || !isfinite(pmean * pb->mu * 1e3) || !isfinite(pmean / pb->G)
-            || !isnormal(pb->mu * pb->N) || !isnormal(pb->mu * pmean))
+            || !isnormal(pb->mu * pb->N) || !isnormal(pb->mu * pmean)
+            || !(fmax(pmean, pb->mu * pmean) <= 1e140) || !(fmin(pmean, pb->mu * pmean) >= 1e-140))
             return RR_ERR_RANGE;      /* forces or bounds without a double's digits */
     }
     return RR_OK;

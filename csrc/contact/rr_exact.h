@@ -129,7 +129,8 @@ size_t rr_exact_workspace_len(int mx, int my);
  *   positive, or no element where h is lowest can carry load), RR_ERR_LOAD,
  *   RR_ERR_MATERIAL, RR_ERR_FRICTION, RR_ERR_PARAM (tol, maxit,
  *   spin_shift), RR_ERR_RANGE (mu N or mu times the mean pressure not a
- *   normal double, sizes so extreme that a result is not finite, or a
+ *   normal double, the mean pressure or mu times it outside [1e-140,
+ *   1e140] Pa, where the solvers' sums of squares fail, sizes so extreme that a result is not finite, or a
  *   load whose displacements drown in the rounding of the gap, so that the
  *   pressure would not carry it to 1e-6), RR_ERR_WORKSPACE, RR_ERR_NULL,
  *   RR_ERR_INTERRUPTED (pb->interrupt asked to stop).  field may be NULL.
