@@ -16,9 +16,11 @@ sample.  CreepageController is the paper's creepage controller (eq. 13-16)
 written as such a controller: it gives the built-in controller's history
 bit for bit, and is a template for one's own.
 """
+from __future__ import annotations
+
 import math
 import numbers
-from typing import NamedTuple
+from typing import Any, Callable, Dict, Mapping, NamedTuple, Tuple
 
 from .. import _core
 
@@ -73,12 +75,12 @@ COMMANDS = {
 }
 
 
-def rig_info(info):
+def rig_info(info: Mapping[str, Any]) -> RigInfo:
     """RigInfo of the binding's Rig.info dict."""
     return RigInfo(**{k: info[k] for k in RigInfo._fields})
 
 
-def safe_repr(value, how=repr):
+def safe_repr(value: object, how: Callable[[object], str] = repr) -> str:
     """repr (or str) of a value of the user's, or a stand-in if that raises."""
     try:
         return how(value)
@@ -86,7 +88,7 @@ def safe_repr(value, how=repr):
         return f"<{type(value).__name__} whose {how.__name__}() raised {type(exc).__name__}>"
 
 
-def command(out, s):
+def command(out: object, s: RigSignals) -> Tuple[int, float, int, float]:
     """(roller_mode, roller_ref, wheelset_mode, wheelset_ref) of a
     controller's return value `out` at signals s; ValueError naming what
     is wrong (a mapping whose items() raises, a value whose float() does).
@@ -103,7 +105,7 @@ def command(out, s):
     except Exception as exc:
         raise ValueError(f"it returned a {type(out).__name__} whose items() raised "
                          f"{type(exc).__name__}: {safe_repr(exc, str):.80}") from exc
-    given = {}
+    given: Dict[str, str] = {}
     for key, value in items:
         if not isinstance(key, str) or key not in COMMANDS:
             raise ValueError(f"it returned the unknown key {safe_repr(key):.40} (the keys are "
@@ -160,7 +162,7 @@ class CreepageController:
     0 True
     """
 
-    def start(self, info):
+    def start(self, info: RigInfo) -> None:
         """Configure the controller before the first sample.
 
         Parameters
@@ -179,7 +181,7 @@ class CreepageController:
         self.active = False
         self.xi_last = 0.0              # the estimate of the last sample without control
 
-    def __call__(self, s):
+    def __call__(self, s: RigSignals) -> Dict[str, float]:
         """The references for sample s.
 
         Parameters

@@ -12,29 +12,40 @@ words each problem it reports (_report_problems), and checks what is the
 file's own (unknown and retired keys, sections) and the creep rows (the
 registry's, rollerrig.contact).
 """
+from __future__ import annotations
+
 import copy
 import difflib
 import functools
 import math
 import numbers
 import os
-import stat
+import sys
 import warnings
-from typing import NamedTuple
-from typing import Any, Dict, Union
+from typing import (Any, Callable, Collection, Dict, List, Mapping, NamedTuple, Optional, Tuple,
+                    Union)
 
 from .. import _core
 from .._errors import RollerRigError, RollerRigWarning
 from .._binding import METHODS, creep_options
 from . import real_profiles as _real_profiles
+# the file's reading, in a room of its own (fmu, analysis read these names here)
+from ._param_file import MAX_PARAMETER_FILE_BYTES as MAX_PARAMETER_FILE_BYTES
+from ._param_file import _Problems as _Problems, _error as _error, _short as _short
+from ._param_file import _read_parameter_file as _read_parameter_file
 
-try:
+if sys.version_info >= (3, 11):
     import tomllib
-except ImportError:                                     # Python < 3.11
+else:                                                   # Python < 3.11
     import tomli as tomllib
 
 DEFAULTS_PATH = os.path.join(os.path.dirname(os.path.dirname(__file__)), "data",
                              "rig_default.toml")
+
+#: the merged parameters: {section: {key: value}}
+_Merged = Dict[str, Dict[str, Any]]
+#: a value's check: None where it is good, else what it must be, in words
+_Check = Callable[[object], Optional[str]]
 
 
 class RigParameter(NamedTuple):
@@ -42,16 +53,17 @@ class RigParameter(NamedTuple):
     name: str           #: "section.key" of rig_default.toml
     unit: str           #: "-" dimensionless, "" a name or a flag
     type: str           #: "real", "int", "flag", "choice" or "list"
-    default: object     #: float, int, bool, str or tuple of floats (None: a creep row)
+    #: float, int, bool, str or tuple of floats (None: a creep row)
+    default: Union[None, float, int, bool, str, Tuple[float, ...]]
     lo: float           #: lower bound of a real, an int or each entry of a list
     hi: float           #: upper bound (as lo)
     lo_open: bool       #: whether the lower bound is excluded
     hi_open: bool       #: whether the upper bound is excluded
-    choices: tuple      #: the names of a choice
-    text: str           #: the default as TOML text (None: a choice, its name)
+    choices: Tuple[str, ...]  #: the names of a choice
+    text: Optional[str]  #: the default as TOML text (None: a choice, its name)
     creep: bool         #: the creep-force method or an option of it (rollerrig.contact.creep)
     origin: str         #: where the default comes from
-    option: str         #: a creep row's option of the method ("nx"; None: not one)
+    option: Optional[str]  #: a creep row's option of the method ("nx"; None: not one)
 
 
 #: every parameter of the rig, declared once in C: name, unit, type,
@@ -64,85 +76,12 @@ ODE_METHODS = _PARAMETER["integration.method"].choices
 #: control sample time [s], simulated time [s] (27.8 h)
 MIN_DT, MAX_DT = _PARAMETER["scenario.control_sample_time_s"][4:6]
 MAX_DURATION = _PARAMETER["scenario.duration_s"].hi
-MAX_PARAMETER_FILE_BYTES = 1 << 20  # the default file is 12 kB
 
 
 # ------------------------------------------------------------------ reading files
+# (the reading itself: rollerrig.rig._param_file)
 
-class _Problems(Exception):
-    """What is wrong with a parameter set or file: a list of sentences, each
-    naming its key; the public functions turn it into one RollerRigError."""
-
-    def __init__(self, problems):
-        super().__init__(problems)
-        self.problems = list(problems)
-
-
-_SHOWN_PROBLEMS = 30     # a file of thousands of bad keys gives a readable message
-
-
-def _error(source, problems):
-    if len(problems) == 1:
-        return RollerRigError(f"{source}: {problems[0]}")
-    shown = [f"  {p}" for p in problems[:_SHOWN_PROBLEMS]]
-    if len(problems) > _SHOWN_PROBLEMS:
-        shown.append(f"  ... and {len(problems) - _SHOWN_PROBLEMS} more")
-    return RollerRigError(f"{source}: {len(problems)} problems:\n" + "\n".join(shown))
-
-
-def _short(value, width=60):
-    text = repr(value)
-    return text if len(text) <= width else text[:width - 3] + "..."
-
-
-def _read_parameter_file(path):
-    """The parsed TOML of `path`, or _Problems saying why not.  Only a
-    regular file of at most MAX_PARAMETER_FILE_BYTES of UTF-8 is read (a
-    FIFO is never waited on, a device never read from)."""
-    try:
-        # O_NONBLOCK: opening a FIFO for reading must not wait for a writer;
-        # the type is then checked on the open descriptor, so it cannot change
-        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0)
-                     | getattr(os, "O_BINARY", 0))
-    except IsADirectoryError:
-        raise _Problems(["is a directory, not a parameter file"]) from None
-    except OSError as e:
-        raise _Problems([f"cannot open it: {e.strerror or e}"]) from None
-    try:
-        info = os.fstat(fd)
-        if stat.S_ISDIR(info.st_mode):
-            raise _Problems(["is a directory, not a parameter file"])
-        if not stat.S_ISREG(info.st_mode):
-            raise _Problems(["is not a regular file (a FIFO, a device or a socket); give a "
-                             "TOML parameter file"])
-        if info.st_size > MAX_PARAMETER_FILE_BYTES:
-            raise _Problems([f"is {info.st_size} bytes; a parameter file is at most "
-                             f"{MAX_PARAMETER_FILE_BYTES} bytes (rig_default.toml: 12 kB)"])
-        with os.fdopen(fd, "rb") as fh:
-            fd = None
-            data = fh.read(MAX_PARAMETER_FILE_BYTES + 1)
-    except OSError as e:
-        raise _Problems([f"cannot read it: {e.strerror or e}"]) from None
-    finally:
-        if fd is not None:
-            os.close(fd)
-    if len(data) > MAX_PARAMETER_FILE_BYTES:             # grew while being read
-        raise _Problems([f"is more than {MAX_PARAMETER_FILE_BYTES} bytes"])
-    try:
-        text = data.decode("utf-8")
-    except UnicodeDecodeError as e:
-        raise _Problems([f"is not UTF-8 text (byte {e.start}); a parameter file is TOML "
-                         f"text"]) from None
-    try:
-        return tomllib.loads(text)
-    except tomllib.TOMLDecodeError as e:
-        raise _Problems([f"is not valid TOML: {e}"]) from None
-    except RecursionError:
-        raise _Problems(["is nested too deeply or malformed (TOML arrays or tables inside "
-                         "each other beyond Python's recursion limit)"]) from None
-
-
-def load_parameters(path: Union[str, "os.PathLike[str]"]) -> Dict[str, Dict[str, Any]]:
+def load_parameters(path: Union[str, os.PathLike[str]]) -> Dict[str, Dict[str, Any]]:
     """A parameter file as a nested dict, not yet checked.
 
     Parameters
@@ -171,23 +110,23 @@ def load_parameters(path: Union[str, "os.PathLike[str]"]) -> Dict[str, Dict[str,
         raise _error(f"load_parameters: {os.fspath(path)}", p.problems) from None
 
 
-def _default_value(p):
+def _default_value(p: RigParameter) -> Any:
     if p.default is None:                        # a creep row: its TOML text
         return tomllib.loads(f"v = {p.text}")["v"]
-    return list(p.default) if p.type == "list" else p.default
+    return list(p.default) if p.type == "list" and isinstance(p.default, tuple) else p.default
 
 
 @functools.lru_cache(maxsize=1)
-def _defaults():
+def _defaults() -> _Merged:
     """The defaults as a nested dict, from the C declaration (PARAMETERS)."""
-    D = {}
+    D: _Merged = {}
     for p in PARAMETERS:
         section, key = p.name.split(".")
         D.setdefault(section, {})[key] = _default_value(p)
     return D
 
 
-def defaults_toml():
+def defaults_toml() -> str:
     """The text of rollerrig/data/rig_default.toml.
 
     Returns
@@ -215,7 +154,7 @@ def defaults_toml():
     return "\n".join(lines) + "\n"
 
 
-def _wrap(text, width):
+def _wrap(text: str, width: int) -> List[str]:
     import textwrap
     return textwrap.wrap(text, width) if text else []
 
@@ -244,7 +183,7 @@ _TOML_HEADER = """\
 # uncertainties: docs/parameters.md."""
 
 
-def default_parameters():
+def default_parameters() -> Dict[str, Dict[str, Any]]:
     """The default parameter set.
 
     Returns
@@ -262,7 +201,7 @@ def default_parameters():
 
 # ------------------------------------------------------------------ checking parameters
 
-def _range_text(lo, hi, lo_open, hi_open):
+def _range_text(lo: float, hi: float, lo_open: bool, hi_open: bool) -> str:
     """" >= 0", " in (0, 1]" or "" (no bound): a range as the messages write it."""
     if lo == -math.inf and hi == math.inf:
         return ""
@@ -271,15 +210,16 @@ def _range_text(lo, hi, lo_open, hi_open):
     return f" in {'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
 
 
-def _real(lo=-math.inf, hi=math.inf, lo_open=False, hi_open=False):
+def _real(lo: float = -math.inf, hi: float = math.inf, lo_open: bool = False,
+          hi_open: bool = False) -> _Check:
     """A check: a finite real number in the interval (for an argument that
     is no parameter of the rig; a parameter's range is checked in C, by
     rig_config_report)."""
     need = _range_text(lo, hi, lo_open, hi_open)
 
-    def check(v):
+    def check(v: object) -> Optional[str]:
         ok = isinstance(v, numbers.Real) and not isinstance(v, bool)
-        if ok:
+        if isinstance(v, numbers.Real) and ok:
             try:
                 x = float(v)
             except OverflowError:                        # an int beyond a double
@@ -291,22 +231,24 @@ def _real(lo=-math.inf, hi=math.inf, lo_open=False, hi_open=False):
     return check
 
 
-def _integer(lo, hi):
-    def check(v):
-        ok = isinstance(v, numbers.Integral) and not isinstance(v, bool) and lo <= v <= hi
+def _integer(lo: float, hi: float) -> _Check:
+    def check(v: object) -> Optional[str]:
+        # (numbers.Real's stub declares no comparison with a float on the left)
+        ok = (isinstance(v, numbers.Integral) and not isinstance(v, bool)
+              and lo <= v <= hi)                            # type: ignore[operator]
         return None if ok else f"must be an integer from {lo} to {hi}"
     return check
 
 
-def _choice(*values):
+def _choice(*values: str) -> _Check:
     shown = " or ".join(repr(v) for v in values)
 
-    def check(v):
+    def check(v: object) -> Optional[str]:
         return None if isinstance(v, str) and v in values else f"must be {shown}"
     return check
 
 
-def _need(p):
+def _need(p: RigParameter) -> str:
     """What a value of row p must be, in words: its declared type and range
     (the message of rig_config_report's "range" problem, which checks it)."""
     within = _range_text(p.lo, p.hi, p.lo_open, p.hi_open)
@@ -331,11 +273,12 @@ def _need(p):
 _FILE_OPTIONS = {p.name.split(".", 1)[1]: p.option for p in PARAMETERS if p.option}
 
 
-def _option_rule(name):
+def _option_rule(name: str) -> _Check:
     """A parameter check from the registry's option `name` (its range or names)."""
     op = next(m.options[name] for m in METHODS.values() if name in m.options)
     if op.type == "choice":
         return _choice(*op.choices)
+    assert op.lo is not None and op.hi is not None      # a number's range (not a choice's)
     if op.type == "int":
         return _integer(op.lo + op.lo_open, op.hi - op.hi_open)
     return _real(op.lo, op.hi, lo_open=op.lo_open, hi_open=op.hi_open)
@@ -358,7 +301,7 @@ _ONE_PER = {"scenario.targets": "one start time per target",
             "disturbance.lateral_force_times_s": "one per time"}
 
 
-def _c_values(P):
+def _c_values(P: Mapping[str, Mapping[str, Any]]) -> Dict[str, Any]:
     """{"section.key": value} of the merged parameters' rig rows (not the
     creep rows): the C configuration (rr_rig_config) they make."""
     out = {p.name: P[p.name.split(".")[0]][p.name.split(".")[1]] for p in PARAMETERS
@@ -377,7 +320,7 @@ def _c_values(P):
 _NH_TABLE = "contact.nonhertz_table"
 
 
-def _nonhertz_problems(P):
+def _nonhertz_problems(P: Mapping[str, Mapping[str, Any]]) -> List[str]:
     """contact.nonhertz_table: "" (built) or a file's path (read at the run)."""
     v = P["contact"]["nonhertz_table"]
     if not isinstance(v, str):
@@ -386,11 +329,12 @@ def _nonhertz_problems(P):
     return []
 
 
-def _loop_sentence(name, values, drive, rho, lo, hi):
+def _loop_sentence(name: Optional[str], values: Mapping[str, Any], drive: int, rho: float,
+                   lo: float, hi: float) -> str:
     """A drive's sampled speed loop unstable at the sample time: the drive,
     the settings its loop depends on, its pole and the sample times at
     which it is stable (rr_speed_loop_range)."""
-    v = values.get
+    v: Callable[[str], Any] = values.get
     if drive == 0:
         text = (f"roller_drive.kp_N_m_s_per_rad = {v('roller_drive.kp_N_m_s_per_rad'):g}, "
                 f"ki_N_m_s_per_rad = {v('roller_drive.ki_N_m_s_per_rad'):g} and "
@@ -411,7 +355,9 @@ def _loop_sentence(name, values, drive, rho, lo, hi):
             f"closed-loop pole |z| = {rho:.4g}); {where}")
 
 
-def _report_problems(values, names=None, skip=(), about=None):
+def _report_problems(values: Dict[str, Any], names: Optional[Mapping[str, str]] = None,
+                     skip: Collection[str] = (),
+                     about: Optional[Collection[str]] = None) -> List[str]:
     """Sentences for the problems of the C configuration `values`
     ({"section.key": value}, rig rows only; the rest at their defaults), as
     rr_rig_config_report finds them (csrc/rig/rr_rig_params.h: every rule of
@@ -422,22 +368,22 @@ def _report_problems(values, names=None, skip=(), about=None):
     skip:  rules not judged here (_RUN_RULES in a parameter set);
     about: only problems wholly about these keys (the key, and the other
         row if any), where the rest of `values` is not yet the run's."""
-    names = names or {}
+    given = names or {}
 
-    def name(key):
-        return names.get(key, key)
+    def name(key: Optional[str]) -> Optional[str]:
+        return key if key is None else given.get(key, key)
     out = []
     for key, _, rule, other, entry, value, lo, hi in _core.rig_config_report(values):
         if rule in skip or (about is not None and not {key, other} - {None} <= set(about)):
             continue
         v, p = values.get(key), _PARAMETER[key]
         if rule == "range":
-            unit = f" {p.unit}" if key in names and p.unit not in ("", "-") else ""
+            unit = f" {p.unit}" if key in given and p.unit not in ("", "-") else ""
             out.append(f"{name(key)} {_need(p)}{unit}, got {_short(v)}")
         elif rule == "count":
             empty = ", or none" if lo == 0 else ""     # lo 0: none is allowed too
             out.append(f"{name(key)} has {value:g} entries but {name(other)} has {hi:g}: give "
-                       f"{_ONE_PER.get(other, f'one per entry of {name(other)}')}{empty}")
+                       f"{_ONE_PER.get(other or '', f'one per entry of {name(other)}')}{empty}")
         elif rule == "increasing":
             out.append(f"{name(key)} must increase, got {_short(v)}")
         elif rule == "nondecreasing":
@@ -457,14 +403,14 @@ def _report_problems(values, names=None, skip=(), about=None):
         elif rule == "sum":
             out.append(f"{name(key)} + {name(other)} must be a finite number (the wheelset's "
                        f"inertia with its drive's), got {_short(v)} + "
-                       f"{_short(values.get(other))}")
+                       f"{_short(values.get(other) if other else None)}")
         else:                                   # a rule this module has no words for yet
             out.append(f"{name(key)} = {_short(v)} breaks the rig's rule {rule!r}"
                        f"{f' with {name(other)}' if other else ''}")
     return out
 
 
-def _creep_problems(C):
+def _creep_problems(C: Mapping[str, Any]) -> List[str]:
     """Sentences for the creep rows of the contact section C: each value as
     the registry declares it, then, where those are good, each method's own
     rule between its options (the registry's check: Polach's kS <= kA) for
@@ -485,8 +431,8 @@ def _creep_problems(C):
         except RollerRigError as e:
             # the registry's words ("kS must satisfy 0 < kS <= kA <= 1
             # (method 'polach'), got ...") with the file's keys
-            rule = str(e).split(": ", 1)[-1].split(", got ", 1)[0]
-            option, _, rest = rule.partition(" ")
+            words = str(e).split(": ", 1)[-1].split(", got ", 1)[0]
+            option, _, rest = words.partition(" ")
             key = next((f"contact.{k}" for k, o in given.items() if o == option), option)
             values = ", ".join(f"contact.{k} = {C[k]!r}" for k in given)
             problems.append(f"{key} {rest}, got {values}")
@@ -499,11 +445,12 @@ def _creep_problems(C):
 RETIRED = dict(_core.RIG_RETIRED)
 
 
-def _retired(name):
+def _retired(name: str) -> Optional[str]:
     return RETIRED.get(name) or RETIRED.get(name.split(".", 1)[0])
 
 
-def _merge(base, over, problems, where=""):
+def _merge(base: Dict[str, Any], over: Mapping[Any, Any], problems: List[str],
+           where: str = "") -> None:
     """Override nested dict `base` by `over` in place, appending a sentence
     to `problems` for each key that cannot be taken."""
     for key, value in over.items():
@@ -533,7 +480,7 @@ def _merge(base, over, problems, where=""):
         base[key] = value
 
 
-def _check_values(P):
+def _check_values(P: _Merged) -> List[str]:
     """Sentences for every value of the merged parameters that breaks its
     rule, then for the rules between keys: the rig rows by the C report
     (but for the rules a run judges at its dt), the creep rows by the
@@ -548,7 +495,8 @@ def _check_values(P):
     return profiles + _report_problems(values, skip=_RUN_RULES) + _creep_problems(P["contact"])
 
 
-def check_parameters(params=None, *, source="check_parameters: params"):
+def check_parameters(params: Optional[Mapping[str, Any]] = None, *,
+                     source: str = "check_parameters: params") -> Dict[str, Dict[str, Any]]:
     """The default parameters overridden by `params`, every value checked.
 
     Parameters
@@ -610,17 +558,17 @@ def check_parameters(params=None, *, source="check_parameters: params"):
     return P
 
 
-def _parameter_problems(params):
+def _parameter_problems(params: Optional[Mapping[str, Any]]) -> Tuple[_Merged, List[str]]:
     """(the merged parameters, the list of their problems) of a nested dict."""
     P = default_parameters()
-    problems = []
+    problems: List[str] = []
     if params:
         _merge(P, copy.deepcopy(params), problems)
         _scale_starts(params, P)
     return P, problems + _check_values(P)
 
 
-def _default_starts_scaled(params, P):
+def _default_starts_scaled(params: object, P: _Merged) -> Optional[List[float]]:
     """The default start times scaled to scenario.duration_s where params
     set that duration (valid) but not scenario.target_start_s, and the
     defaults do not all fall inside it; else None.  Also None where the
@@ -641,7 +589,7 @@ def _default_starts_scaled(params, P):
     return scaled if all(b > a for a, b in zip(scaled, scaled[1:])) else None
 
 
-def _scale_starts(params, P):
+def _scale_starts(params: object, P: _Merged) -> None:
     """One rule for a duration too short for the target start times, whether
     scenario.duration_s or simulate's duration gives it: start times the
     caller did not give (the defaults, written for the default duration)
@@ -653,7 +601,7 @@ def _scale_starts(params, P):
         P["scenario"]["target_start_s"] = scaled
 
 
-def _scaled_starts(params, P):
+def _scaled_starts(params: object, P: _Merged) -> str:
     """The warning's text where _scale_starts scaled the start times, else ""."""
     if _default_starts_scaled(params, P) is None:
         return ""
@@ -665,7 +613,7 @@ def _scaled_starts(params, P):
             f"{[float(f'{x:.6g}') for x in P['scenario']['target_start_s']]} s")
 
 
-def _parameters(func, params):
+def _parameters(func: str, params: object) -> _Merged:
     """The checked parameters of a call: params None, a dict, or a file path."""
     if params is None:
         return default_parameters()
@@ -685,22 +633,26 @@ def _parameters(func, params):
     return check_parameters(params, source=f"{func}: params")
 
 
-def _real_arg(func, name, v, lo=-math.inf, hi=math.inf, lo_open=False, unit=""):
+def _real_arg(func: str, name: str, v: object, lo: float = -math.inf, hi: float = math.inf,
+              lo_open: bool = False, unit: str = "") -> float:
     need = _real(lo, hi, lo_open=lo_open)(v)
-    if need:
+    if need or not isinstance(v, numbers.Real):        # (no need: v is a real number)
         raise RollerRigError(f"{func}: {name} {need}{' ' + unit if unit else ''}, "
                              f"got {_short(v)}")
     return float(v)
 
 
-def _in_range(key, value):
+def _in_range(key: str, value: object) -> bool:
     """Whether rig row `key` takes `value` (its declared type and range, as
     the C report's "range" rule judges them)."""
     return not any(k == key and rule == "range"
                    for k, _, rule, *_ in _core.rig_config_report({key: value}))
 
 
-def _check_run(func, P, run, names=None, about=None, skip=()):
+def _check_run(func: str, P: Mapping[str, Mapping[str, Any]], run: Mapping[str, Any],
+               names: Optional[Mapping[str, str]] = None,
+               about: Optional[Collection[str]] = None,
+               skip: Collection[str] = ()) -> Dict[str, Any]:
     """The C configuration of a run: the checked parameters' rig rows with
     the run's own values in their place (run: {"section.key": value}, its
     sample time, duration, targets, ...).  Raises one RollerRigError,
@@ -715,7 +667,8 @@ def _check_run(func, P, run, names=None, about=None, skip=()):
     return values
 
 
-def write_defaults(path=DEFAULTS_PATH):
+def write_defaults(path: Union[str, os.PathLike[str]] = DEFAULTS_PATH
+                   ) -> Union[str, os.PathLike[str]]:
     """Rewrite rig_default.toml from the C declaration (:func:`defaults_toml`).
 
     Written as every file is (rollerrig._files.write_file).
@@ -746,7 +699,7 @@ TRACK_RADIUS_M = 1000.0
 _ENCODER_MAX = 2147483647
 
 
-def _with_track(func, P, track=None):
+def _with_track(func: str, P: _Merged, track: Optional[bool] = None) -> _Merged:
     """The checked parameters P on track (track True, or None and
     scenario.track true) or on the rig (track False): on track the rollers
     become the rail, a roller of radius TRACK_RADIUS_M whose speed the plant

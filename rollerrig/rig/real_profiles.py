@@ -26,16 +26,32 @@ line, except on a roller below its gauge point, out of any wheel's reach,
 where it is trimmed (the shipped measured rollers fold 17-52 mm below their
 top, on their gauge faces; as RigGeometry.measured_pair() trims them).
 """
+from __future__ import annotations
+
 import functools
 import os
 import re
 import warnings
+from typing import TYPE_CHECKING, Any, Dict, List, Mapping, Optional, Sequence, Tuple, cast
 
 import numpy as np
 
 from .. import _core
 from .._errors import RollerRigError, RollerRigWarning
+from .._typing import F64Array
 from ..geometry.profiles import DATA_DIR, Profile, read_profile
+
+if TYPE_CHECKING:
+    from ..geometry.wheelset import RigGeometry
+
+#: a profile's slot as the C rig takes it: (y, z, end: 0 not-a-knot, 1 natural)
+Slot = Tuple[F64Array, F64Array, int]
+#: the four slots of rr_rig_profiles (wheel, roller, wheel_right, roller_right)
+Points = Tuple[Optional[Slot], Optional[Slot], Optional[Slot], Optional[Slot]]
+#: the rig's geometry numbers (r0, R0, half width, alpha, crown, span, reach, rows)
+Numbers = Tuple[float, float, float, float, float, float, float, int]
+#: the files a profile row names: (path, modification time) per slot, None if none
+Stamps = Tuple[Optional[Tuple[str, int]], ...]
 
 #: the rows that name a profile, by section: (the left's, the right's)
 PROFILE_ROWS = {"wheelset": ("profile", "profile_right"), "roller": ("profile", "profile_right")}
@@ -54,18 +70,18 @@ MAX_GAP = 5e-3
 POINTS = "points"
 
 
-def is_real(section, value):
+def is_real(section: str, value: object) -> bool:
     """Whether a profile row's value names a real profile (not the analytic
     one, not "" for a right side)."""
     return isinstance(value, str) and value not in ("", ANALYTIC[section])
 
 
-def c_value(section, key, value):
+def c_value(section: str, key: str, value: object) -> object:
     """The C rig's value of a profile row: the analytic name, "" or "points"."""
     return POINTS if is_real(section, value) else value
 
 
-def resolve(value):
+def resolve(value: str) -> Optional[str]:
     """The file a profile row's value names: as given (absolute, or relative
     to the working folder; a scenario file's own are made absolute by
     relative_to), else a file of that name shipped in
@@ -75,7 +91,7 @@ def resolve(value):
     return next((os.path.abspath(c) for c in candidates if os.path.isfile(c)), None)
 
 
-def problems(P):
+def problems(P: Mapping[str, Mapping[str, Any]]) -> List[str]:
     """Sentences for the profile rows of the merged parameters P: each a
     string, a built-in name of its section, the analytic name (the left
     side), "" (the right side) or an existing file."""
@@ -106,7 +122,7 @@ def problems(P):
 _FOLD = re.compile(r"z (-?[0-9.e+-]+) \.\. (-?[0-9.e+-]+) mm")
 
 
-def _read(name, value, kind, smoothing, notes):
+def _read(name: str, value: str, kind: str, smoothing: float, notes: List[str]) -> Profile:
     """A profile row's profile: built-in, or read (folds as the module says:
     a roller's below its gauge point trimmed, with no warning, as
     RigGeometry.measured_pair() trims the measured rollers'; notes gets the
@@ -138,7 +154,7 @@ def _read(name, value, kind, smoothing, notes):
         raise RollerRigError(f"{name}: {e}") from None
 
 
-def _wheel_points(p):
+def _wheel_points(p: Profile) -> Tuple[F64Array, F64Array, Optional[float]]:
     """(y, z, taping-line radius offset [m] or None): a wheel re-referenced to its taping line."""
     miniprof = p.meta.get("format") == "miniprof"
     tape = float(p.meta.get("WheelDiameterTaperline", TAPING_LINE / MM)) * MM if miniprof else 0.0
@@ -150,7 +166,7 @@ def _wheel_points(p):
     return p.y - tape, p.z - float(p.z_at(tape)), radius
 
 
-def _roller_points(p):
+def _roller_points(p: Profile) -> Tuple[F64Array, F64Array]:
     """(y, z): a roller re-referenced to its top and its gauge point."""
     top = float(p.z.min())
     depth = float(p.meta["RailGaugePoint"]) * MM if "RailGaugePoint" in p.meta else GAUGE_DEPTH
@@ -160,12 +176,15 @@ def _roller_points(p):
 
 
 @functools.lru_cache(maxsize=16)
-def _points(wheel, roller, wheel_right, roller_right, smoothing, stamps):
+def _points(wheel: object, roller: object, wheel_right: object, roller_right: object,
+            smoothing: float, stamps: Stamps) -> Tuple[Points, Tuple[str, ...]]:
     """(the four slots of rr_rig_profiles: None or (y, z, end) each (end 0
     not-a-knot, 1 natural: the profile's own), read and re-referenced; the
     readers' words for the folds trimmed).  stamps: the
     files' modification times (a changed file is read again)."""
-    out, radii, notes = [], {}, []
+    out: List[Optional[List[Any]]] = []
+    radii: Dict[int, Optional[float]] = {}
+    notes: List[str] = []
     for slot, (section, value) in enumerate((("wheelset", wheel), ("roller", roller),
                                              ("wheelset", wheel_right),
                                              ("roller", roller_right))):
@@ -174,6 +193,7 @@ def _points(wheel, roller, wheel_right, roller_right, smoothing, stamps):
             out.append(None)
             continue
         kind = "wheel" if section == "wheelset" else "rail"
+        assert isinstance(value, str)                 # (is_real: a name or a path)
         p = _read(f"{key} = {value!r}", value, kind, smoothing, notes)
         try:
             if kind == "wheel":
@@ -185,13 +205,15 @@ def _points(wheel, roller, wheel_right, roller_right, smoothing, stamps):
         out.append([np.ascontiguousarray(y), np.ascontiguousarray(z),
                     1 if p.bc == "natural" else 0])
     # the measured pair: the right wheel as much larger as its header says
-    if out[2] is not None and radii.get(0) is not None and radii.get(2) is not None:
-        out[2][1] = out[2][1] + (radii[2] - radii[0])
+    r0, r2, right = radii.get(0), radii.get(2), out[2]
+    if right is not None and r0 is not None and r2 is not None:
+        right[1] = right[1] + (r2 - r0)
     for s in out:
         if s is not None:
             for a in s[:2]:
                 a.setflags(write=False)
-    return tuple(None if s is None else tuple(s) for s in out), tuple(notes)
+    slots = [None if s is None else (s[0], s[1], s[2]) for s in out]
+    return (slots[0], slots[1], slots[2], slots[3]), tuple(notes)
 
 
 #: the shipped scenarios on real profiles
@@ -199,7 +221,7 @@ SCENARIOS = {name: os.path.join(os.path.dirname(DATA_DIR), f"rig_{name}.toml")
              for name in ("s1002_uic60", "measured_pair", "flange_excursion")}
 
 
-def profile_points(P):
+def profile_points(P: Mapping[str, Mapping[str, Any]]) -> Optional[Points]:
     """The four slots (rr_rig_profiles: wheel, roller, wheel_right,
     roller_right) of the merged parameters P, or None where all are
     analytic (the cone on its crowned roller)."""
@@ -211,20 +233,21 @@ def profile_points(P):
     return _points(*values, *_stamps(P))[0]
 
 
-def _stamps(P):
+def _stamps(P: Mapping[str, Mapping[str, Any]]) -> Tuple[float, Stamps]:
     """(smoothing, each file's path and modification time): what, besides the
     rows' values, makes the points (a file changed or moved is read again)."""
     W, R = P["wheelset"], P["roller"]
     values = (W["profile"], R["profile"], W["profile_right"], R["profile_right"])
     sections = ("wheelset", "roller", "wheelset", "roller")
     # the file each names (a relative name is the working folder's) and its time
-    stamps = tuple((resolve(v), os.stat(resolve(v)).st_mtime_ns)
+    # (a checked set's real rows name files that exist: problems)
+    stamps = tuple((cast(str, resolve(v)), os.stat(cast(str, resolve(v))).st_mtime_ns)
                    if is_real(s, v) and v not in BUILTIN else None
                    for s, v in zip(sections, values))
     return float(P["integration"]["profile_smoothing_m"]), stamps
 
 
-def relative_to(params, folder):
+def relative_to(params: Dict[str, Any], folder: str) -> Dict[str, Any]:
     """params (a scenario file's nested dict) with each profile row's
     relative path that names a file in `folder` made absolute (a scenario
     names its profiles relative to itself)."""
@@ -244,13 +267,15 @@ SLOT_KEYS = ("wheelset.profile", "roller.profile", "wheelset.profile_right",
              "roller.profile_right")
 
 
-def rig_profile_table(geometry, scales, points, values):
+def rig_profile_table(geometry: Numbers, scales: Tuple[float, float, float], points: Points,
+                      values: Sequence[object]) -> Tuple[F64Array, float, float]:
     """The C table (data, y0, dy) on real profiles, or RollerRigError naming
     the profile row, its value (the file) and the point at fault
     (rr_rig_profiles_check) or the shift where the profiles do not touch."""
     from .._errors import status_message
     data, y0, dy, status, bad_y, which, point = _core.rig_profile_table(geometry, scales, points)
     if status >= 0:
+        assert data is not None                  # (a status >= 0: the table was built)
         return data, y0, dy
     if which < 0:
         where = f"at y_ws = {bad_y!r} m: " if np.isfinite(bad_y) else ""
@@ -259,7 +284,9 @@ def rig_profile_table(geometry, scales, points, values):
     if point < 0:
         raise RollerRigError(f"{head}: its points (as referenced, full size): "
                              f"{status_message(status)}")
-    y, z = points[which][0], points[which][1]
+    slot = points[which]
+    assert slot is not None                      # (the C check blames a slot it was given)
+    y, z = slot[0], slot[1]
     at = f"point {point} of {len(y)} (y = {y[point] * 1e3:.6g} mm, z = {z[point] * 1e3:.6g} mm)"
     if point > 0 and not y[point] > y[point - 1]:
         why = "y does not increase there: a vertical or overhanging segment"
@@ -272,7 +299,8 @@ def rig_profile_table(geometry, scales, points, values):
     raise RollerRigError(f"{head}: {at}: {why}")
 
 
-def rig_geometry(numbers, scales, points):
+def rig_geometry(numbers: Numbers, scales: Tuple[float, float, float],
+                 points: Points) -> RigGeometry:
     """The RigGeometry of the rig's profiles (the points as the C build
     scales and places them; analytic slots as rr_rig_table_build makes
     them): for rollerrig.ContactTable.geometry and plots."""
@@ -281,7 +309,7 @@ def rig_geometry(numbers, scales, points):
     ws, rs, gauge = scales
     n = _core.RIG_PROFILE_POINTS
 
-    def profile(slot, kind):
+    def profile(slot: int, kind: str) -> Optional[Profile]:
         s = points[slot]
         if s is None:
             return None

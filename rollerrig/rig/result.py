@@ -1,13 +1,18 @@
 """The record of a rig run and RigResult, its time histories with the
 run's schedule and parameters (summary, table, to_csv, to_xarray,
 to_dataframe)."""
+from __future__ import annotations
+
 import json
+import os
 from dataclasses import dataclass
 
 import numpy as np
-from typing import Any, Dict, List
+import numpy.typing as npt
+from typing import Any, Dict, List, Mapping, Optional, Tuple, Union
 
 from .. import _core
+from .._typing import F64Array
 from .._optional import require
 from .._units import cf_unit
 
@@ -83,55 +88,56 @@ class RigResult:
     good sample.
     """
 
-    records: np.ndarray
-    params: dict
-    targets: tuple
-    target_times: tuple
+    records: F64Array
+    params: Dict[str, Dict[str, Any]]
+    targets: Tuple[float, ...]
+    target_times: Tuple[float, ...]
     dt: float
     status: int
     message: str
-    wall: dict = None
+    wall: Optional[Dict[str, float]] = None
     record_every: int = 1
-    method: str = None
-    samples: int = None
-    scenario: dict = None
+    method: Optional[str] = None
+    samples: Optional[int] = None
+    scenario: Optional[Dict[str, str]] = None
 
-    def __getattr__(self, name):
+    def __getattr__(self, name: str) -> npt.NDArray[Any]:
         if name in RECORD_FIELDS:
             col = self.records[:, RECORD_FIELDS.index(name)]
             return col.astype(np.int8) if name == "sample_status" else col
         raise AttributeError(name)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         method = self.method or self.params.get("contact", {}).get("creep_method")
         return (f"RigResult(samples={self.samples_run}, duration={self.duration:g} s, "
                 f"dt={self.dt:g} s, record_every={self.record_every}, method={method!r}, "
                 f"status={self.status}, message={self.message!r})")
 
     @property
-    def samples_run(self):
+    def samples_run(self) -> int:
         """Control samples stepped."""
         return self.samples if self.samples is not None else len(self) * self.record_every
 
     @property
-    def duration(self):
+    def duration(self) -> float:
         """Simulated time [s]: samples stepped times dt."""
         return self.samples_run * self.dt
 
     @property
-    def record_dt(self):
+    def record_dt(self) -> float:
         """Time between two kept records [s]: record_every dt."""
         return self.record_every * self.dt
 
     @property
-    def normal_load(self):
+    def normal_load(self) -> npt.NDArray[Any]:
         """Sum of both wheels' normal loads [N]."""
-        return self.normal_load_left + self.normal_load_right
+        total: npt.NDArray[Any] = self.normal_load_left + self.normal_load_right
+        return total
 
-    def __len__(self):
-        return self.records.shape[0]
+    def __len__(self) -> int:
+        return int(self.records.shape[0])
 
-    def metadata(self):
+    def metadata(self) -> Dict[str, str]:
         """The run's record, as to_csv's header, to_xarray's and
         to_dataframe's attrs carry it.
 
@@ -191,7 +197,7 @@ class RigResult:
         frame.attrs["long_names"] = dict(_RECORD_MEANING)
         return frame
 
-    def to_xarray(self):
+    def to_xarray(self) -> Any:
         """The records as an xarray.Dataset.
 
         Returns
@@ -212,9 +218,9 @@ class RigResult:
         """
         xr = require("xarray", "RigResult.to_xarray", "sweep")
 
-        def attrs(name):
+        def attrs(name: str) -> Dict[str, str]:
             return {"units": RECORD_UNITS[name], "long_name": _RECORD_MEANING[name]}
-        meta = self.metadata()
+        meta: Dict[str, Any] = self.metadata()
         del meta["targets"], meta["target_times_s"]           # as arrays below
         meta.update({"duration_s": float(self.duration), "dt": float(self.dt), "dt_units": "s",
                      "record_every": int(self.record_every),
@@ -226,7 +232,7 @@ class RigResult:
                    "target_times": np.asarray(self.target_times, dtype=float),
                    "target_times_units": "s", **meta, "params": json.dumps(self.params)})
 
-    def to_csv(self, path):
+    def to_csv(self, path: Union[str, os.PathLike[str]]) -> Union[str, os.PathLike[str]]:
         """Write the records as CSV.
 
         The RECORD_FIELDS names, then '#' lines (the units, one per column,
@@ -296,12 +302,12 @@ class RigResult:
         """
         return [row for row, _ in self._summary(tol, window)]
 
-    def _summary(self, tol, window):
+    def _summary(self, tol: float, window: float) -> List[Tuple[Dict[str, Any], str]]:
         """summary()'s rows, each with the reason its numbers are NaN ("" if
         none is)."""
         mu0 = self.params["scenario"]["mu0"]
         sense = -1.0 if self.params["scenario"].get("drive_mode") == "traction" else 1.0
-        rows = []
+        rows: List[Tuple[Dict[str, Any], str]] = []
         t = self.time
         creepage = sense * self.creepage
         ends = list(self.target_times[1:]) + [np.inf]
@@ -354,7 +360,7 @@ class RigResult:
            0.020   0.00722          -    0.3676     0.9895  settling: the running mean
            never came within 5% of the target
         """
-        def cell(v, width, fmt):
+        def cell(v: float, width: int, fmt: str) -> str:
             return f"{v:{width}{fmt}}" if np.isfinite(v) else f"{'-':>{width}}"
         lines = [f"{'target':>8} {'reached':>9} {'settling s':>10} {'adhesion':>9} "
                  f"{'peak F/muN':>10}"]
@@ -366,11 +372,10 @@ class RigResult:
         return "\n".join(lines)
 
 
-def scenario_record(params):
+def scenario_record(params: object) -> Optional[Dict[str, str]]:
     """RigResult.scenario of a run whose parameters came from `params`: the
     file's absolute path and sha256 when it is a path, else None."""
     import hashlib
-    import os
     if not isinstance(params, (str, os.PathLike)):
         return None
     path = os.path.abspath(os.fspath(params))
@@ -378,10 +383,11 @@ def scenario_record(params):
         return {"path": path, "sha256": hashlib.sha256(fh.read()).hexdigest()}
 
 
-def _changed(defaults, params, prefix=""):
+def _changed(defaults: Mapping[str, Any], params: Mapping[str, Any],
+             prefix: str = "") -> List[Tuple[str, Any]]:
     """[(section.key, value)] of `params` that differ from `defaults`
     (nested dicts; a key the defaults lack counts as changed)."""
-    out = []
+    out: List[Tuple[str, Any]] = []
     for key in sorted(params):
         value, default = params[key], defaults.get(key, _MISSING)
         if isinstance(value, dict) and isinstance(default, dict):
