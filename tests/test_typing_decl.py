@@ -29,3 +29,11 @@ def test_wheel_contact_declared_as_the_c_fields():
     assert declared[:-1] == expected
     assert declared[-1][0] == "status"
     assert [n for n, _ in declared] == list(contact.WheelContact._fields)
+
+
+def test_rig_contact_declared_as_the_run_time_class():
+    # the type checker's RigContact is generic in its wheels' type (WheelContact
+    # or NonHertzWheel by rig_contact's patch); its fields are the run-time class's
+    declared = _type_checking_class(contact, "RigContact")
+    assert [n for n, _ in declared] == list(contact.RigContact._fields)
+    assert [a for n, a in declared if n in ("left", "right")] == ["_Wheel", "_Wheel"]

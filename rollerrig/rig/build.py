@@ -1,27 +1,37 @@
 """The C rig from checked parameters: its contact table, the creep-force
 method and options, the drives' sampled speed loops, :class:`Rig` (the C
 rig stepped by hand) and :func:`build_rig`."""
+from __future__ import annotations
+
 import functools
 import os
 import math
-import numbers
-
-import numpy as np
-from typing import Any, Dict, Optional, Tuple
+from typing import (TYPE_CHECKING, Any, Callable, Dict, Iterable, List, Mapping, Optional,
+                    Sequence, Tuple, Union)
 
 from .._typing import Params
 
 from .. import _core
-from . import control as _control
 from . import real_profiles as _real_profiles
 from . import nonhertz_rig as _nonhertz_rig
 from .._errors import RollerRigError, status_message
-from .._binding import METHODS, _as_float, check_creep_options, core, loop_method, rig_method
+from .._binding import METHODS, check_creep_options, core, loop_method, rig_method
 from ..geometry.profiles import Profile
 from ..geometry.wheelset import MAX_ROWS, ContactTable, RigGeometry
 from .params import (_FILE_OPTIONS, _SAMPLE_TIME, PARAMETERS, _c_values, _check_run, _defaults,
                      _parameters, _short)
 from .params import _with_track
+from .real_profiles import Numbers, Stamps
+# the rig stepped by hand, in a room of its own
+from ._stepper import Rig as Rig
+
+if TYPE_CHECKING:
+    from ..geometry.nonhertz import NonHertzTable
+
+#: checked parameters {section: {key: value}}
+_Merged = Dict[str, Dict[str, Any]]
+#: a build of the rig (or of its table) from parameters and a run's own values
+_Build = Callable[[_Merged, Mapping[str, Any]], object]
 
 
 #: the creep-force methods the rig steps with (the registry's in_rig: not
@@ -29,7 +39,8 @@ from .params import _with_track
 RIG_METHODS = tuple(name for name, m in METHODS.items() if m.in_rig)
 
 
-def _c_params(P, dt, substeps, ode, run=None):
+def _c_params(P: Mapping[str, Mapping[str, Any]], dt: float, substeps: int, ode: str,
+              run: Optional[Mapping[str, Any]] = None) -> Dict[str, Any]:
     """The C rig's primary values {"section.key": value} (csrc/rig/rr_rig_params.h,
     rr_rig_config) of checked parameters, with the run's own values (run:
     simulate's duration, targets, ...; checked) and the call's sample time,
@@ -53,16 +64,16 @@ PROFILE_KEYS = ("wheelset.profile", "wheelset.profile_right", "wheelset.profile_
                 "roller.gauge_m", "integration.profile_smoothing_m")
 
 
-def _geometry(P):
+def _geometry(P: Mapping[str, Mapping[str, Any]]) -> ContactTable:
     """The rig's profiles and their table: the conical wheel on the crowned
     roller (the paper's first stage), or the real profiles the profile rows
     name (rollerrig.rig.real_profiles); a geometry that yields none is the
     parameters' fault, and the message says which ones made it."""
     W, R, I = P["wheelset"], P["roller"], P["integration"]
-    numbers = (float(W["wheel_radius_m"]), float(R["radius_m"]),
-               float(W["profile_half_width_m"]), math.atan(float(W["conicity"])),
-               float(R["crown_radius_m"]), float(W["contact_half_spacing_m"]),
-               float(I["table_half_range_m"]), int(I["table_rows"]))
+    numbers: Numbers = (float(W["wheel_radius_m"]), float(R["radius_m"]),
+                        float(W["profile_half_width_m"]), math.atan(float(W["conicity"])),
+                        float(R["crown_radius_m"]), float(W["contact_half_spacing_m"]),
+                        float(I["table_half_range_m"]), int(I["table_rows"]))
     real = _real_profiles.profile_points(P) is not None
     keys = GEOMETRY_KEYS + (PROFILE_KEYS if real else ())
     try:
@@ -73,13 +84,15 @@ def _geometry(P):
                                             float(R["gauge_m"])), values,
                                   *_real_profiles._stamps(P))
     except RollerRigError as e:
-        values = ", ".join(f"{k} = {P[k.split('.')[0]][k.split('.')[1]]!r}" for k in keys)
-        raise RollerRigError(f"params: the rig's geometry ({values}) gives no contact "
+        named = ", ".join(f"{k} = {P[k.split('.')[0]][k.split('.')[1]]!r}" for k in keys)
+        raise RollerRigError(f"params: the rig's geometry ({named}) gives no contact "
                              f"table: {e}") from None
 
 
 @functools.lru_cache(maxsize=8)
-def _rig_profile_table(numbers, scales, values, smoothing, stamps):
+def _rig_profile_table(numbers: Numbers, scales: Tuple[float, float, float],
+                       values: Tuple[object, object, object, object], smoothing: float,
+                       stamps: Stamps) -> ContactTable:
     """The table on real profiles (rr_rig_table_build_profiles, in C from
     the points, as the FMU and a C program build it); its geometry the
     RigGeometry of the same points, scaled and placed (for lookups and
@@ -105,7 +118,8 @@ def _rig_profile_table(numbers, scales, values, smoothing, stamps):
 # profiles made here (the same points and spline, by the same C) are the
 # table's geometry and check the numbers with messages that name them.
 @functools.lru_cache(maxsize=8)
-def _rig_table(r0, R0, hw, alpha, crown, span, reach, rows):
+def _rig_table(r0: float, R0: float, hw: float, alpha: float, crown: float, span: float,
+               reach: float, rows: int) -> ContactTable:
     n = _core.RIG_PROFILE_POINTS
     g = RigGeometry(wheel=Profile.conical(alpha, (-hw, hw), r0=r0, n=n),
                     roller=Profile.cylinder((-hw, hw), crown_radius=crown, n=n),
@@ -130,7 +144,9 @@ CREEP_OPTIONS = tuple(dict.fromkeys(o for m in METHODS.values() for o in m.optio
                                     if o not in ("nx", "ny")))
 
 
-def _creep_options(func, P, method, nx, ny, creep, in_rig=True):
+def _creep_options(func: str, P: Mapping[str, Mapping[str, Any]], method: Optional[str],
+                   nx: Optional[int], ny: Optional[int], creep: Mapping[str, Any],
+                   in_rig: bool = True) -> Dict[str, object]:
     """The creep-force method and its options: the parameters' contact
     section (the keys of _FILE_OPTIONS the method has), overridden by the
     caller's (method, nx, ny, and `creep`: the method's options); checked
@@ -160,335 +176,12 @@ def _creep_options(func, P, method, nx, ny, creep, in_rig=True):
     return check_creep_options(func, method, opts)
 
 
-class Rig:
-    """The rig stepped by hand, as :func:`build_rig` returns it.
-
-    The C rig of csrc/rig/rr_rig.h, its arguments checked here
-    (RollerRigError naming them).  A control sample is either
-    :meth:`sample` (the rig's own controllers) or :meth:`read`, then
-    :meth:`write` (references of one's own), followed by :meth:`advance`
-    (the plant over the sample); :meth:`run` steps many samples at once.
-    :meth:`rhs`, :meth:`jac` and :meth:`set_state` expose the plant's
-    right-hand side, its approximate Jacobian and its state (e.g. to verify
-    the integrator against another solver).  The properties :attr:`t`,
-    :attr:`y`, :attr:`status` and :attr:`info` give its time, state,
-    last status and the controllers' settings.
-
-    See Also
-    --------
-    build_rig : the rig of a set of parameters.
-    simulate : the whole scenario, sample by sample through the C loop.
-    rollerrig.rig.control.RigSignals : what :meth:`read` measures.
-
-    Notes
-    -----
-    Statuses: 0 ok, 1 a warning, < 0 an error (``rollerrig.STATUS``);
-    after an error the rig keeps its last good state and refuses to step
-    on.  One thread at a time: a second thread gets RuntimeError.
-    """
-
-    __slots__ = ("_core",)
-
-    def __init__(self, core):
-        self._core = core
-
-    def __repr__(self):
-        return f"Rig(t = {self.t:g} s, status {self.status})"
-
-    @staticmethod
-    def _scalar(func, name, v):
-        """A real number (NaN and infinities pass: the C rig answers them
-        with a status, as it does for a NaN state)."""
-        if isinstance(v, numbers.Real) and not isinstance(v, bool):
-            try:
-                return float(v)
-            except OverflowError:                      # an int beyond a double
-                pass
-        raise RollerRigError(f"{func}: {name} must be a real number, got {_short(v)}")
-
-    @staticmethod
-    def _array(func, name, v, n=None):
-        a = _as_float(func, name, v) if not (np.ndim(v) == 1 and np.size(v) == 0) \
-            else np.zeros(0)
-        if a.ndim != 1 or (n is not None and a.size != n):
-            want = f"{n} values" if n is not None else "a 1-D array"
-            raise RollerRigError(f"{func}: {name} must be {want}, got shape {a.shape}")
-        return np.ascontiguousarray(a)
-
-    def run(self, roller_ref, xi_ref, out=None):
-        """Step one sample per element of the references.
-
-        Parameters
-        ----------
-        roller_ref : array_like
-            Roller speed reference per sample [rad/s], 1-D.
-        xi_ref : array_like
-            Creepage target per sample [-], 1-D of the same length (NaN:
-            no creepage control, the wheelset held at free rolling).
-        out : numpy.ndarray, optional
-            Where to write the records: a writable C-contiguous float64
-            array of shape (n, len(RECORD_FIELDS)).
-
-        Returns
-        -------
-        records : numpy.ndarray
-            Shape (n, len(RECORD_FIELDS)) (``out`` if given), one record
-            per sample (:data:`RECORD_FIELDS`); after the first error the
-            rest NaN.
-        status : int
-            The worst status of the run (the class's Notes).
-
-        Raises
-        ------
-        RollerRigError
-            A reference not a 1-D array of real numbers, or the two of
-            different lengths.
-
-        Notes
-        -----
-        The run stops at the first error (status < 0).
-        """
-        r = self._array("Rig.run", "roller_ref", roller_ref)
-        x = self._array("Rig.run", "xi_ref", xi_ref, r.size)
-        return self._core.run(r, x) if out is None else self._core.run(r, x, out)
-
-    def sample(self, roller_ref, xi_ref):
-        """The sampling instant with the rig's own controllers.
-
-        Encoders, creepage controller and PI controllers; the same as
-        :meth:`read` then :meth:`write` with the builtin modes.
-
-        Parameters
-        ----------
-        roller_ref : float
-            Roller speed reference [rad/s].
-        xi_ref : float
-            Creepage target [-] (NaN: no creepage control, the wheelset
-            held at free rolling).
-
-        Returns
-        -------
-        int
-            Status (the class's Notes).
-
-        Raises
-        ------
-        RollerRigError
-            An argument not a real number.
-        """
-        return self._core.sample(self._scalar("Rig.sample", "roller_ref", roller_ref),
-                                 self._scalar("Rig.sample", "xi_ref", xi_ref))
-
-    def read(self):
-        """The sampling instant's measurement.
-
-        Returns
-        -------
-        signals : tuple of float
-            The fields of :class:`rollerrig.rig.control.RigSignals` from t
-            to xi_est (time, encoder counts, angles and speeds, drive
-            torques, eq. 16's creepage estimate).
-        status : int
-            Status (the class's Notes).
-
-        See Also
-        --------
-        write : the references held over the sample, after read.
-        """
-        return self._core.read()
-
-    def write(self, roller_mode, roller_ref, wheelset_mode, wheelset_ref, mu0=math.nan):
-        """The references held over the sample (after :meth:`read`).
-
-        csrc/rig/rr_rig.h, rr_rig_read, rr_rig_write.
-
-        Parameters
-        ----------
-        roller_mode, wheelset_mode : int
-            ``_core.CMD_BUILTIN`` (the rig's controllers: roller speed,
-            creepage target), ``CMD_SPEED`` (a speed reference [rad/s] to
-            the drive's PI controller) or ``CMD_TORQUE`` (a torque
-            reference [N m] to the drive).
-        roller_ref, wheelset_ref : float
-            The references in the modes' units (builtin: the roller speed
-            [rad/s], the creepage target [-]).
-        mu0 : float, optional
-            Friction coefficient over the sample [-] (NaN: the adhesion
-            section's).
-
-        Returns
-        -------
-        int
-            Status (the class's Notes).
-
-        Raises
-        ------
-        RollerRigError
-            A mode not one of the three, a reference or mu0 not a real
-            number.
-        """
-        modes = (_core.CMD_BUILTIN, _core.CMD_SPEED, _core.CMD_TORQUE)
-        for name, mode in (("roller_mode", roller_mode), ("wheelset_mode", wheelset_mode)):
-            if mode not in modes or isinstance(mode, bool):
-                raise RollerRigError(f"Rig.write: {name} must be one of {modes} (builtin, "
-                                     f"speed, torque), got {_short(mode)}")
-        return self._core.write(int(roller_mode), self._scalar("Rig.write", "roller_ref",
-                                                               roller_ref),
-                                int(wheelset_mode), self._scalar("Rig.write", "wheelset_ref",
-                                                                 wheelset_ref),
-                                self._scalar("Rig.write", "mu0", mu0))
-
-    def advance(self):
-        """The plant over one sample.
-
-        Returns
-        -------
-        record : numpy.ndarray
-            The sample's record (:data:`RECORD_FIELDS`).
-        status : int
-            Status (the class's Notes).
-        """
-        return self._core.advance()
-
-    def record(self):
-        """The record of the present state.
-
-        Returns
-        -------
-        record : numpy.ndarray
-            The record (:data:`RECORD_FIELDS`).
-        status : int
-            Status (the class's Notes).
-        """
-        return self._core.record()
-
-    def _t_y(self, func, t, y):
-        return (self._scalar(func, "t", t),
-                self._array(func, "y", y, _core.RIG_NSTATE))
-
-    def rhs(self, t, y):
-        """The plant's right-hand side dy/dt at (t, y).
-
-        Parameters
-        ----------
-        t : float
-            Time [s].
-        y : array_like
-            State, RIG_STATE (12 values).
-
-        Returns
-        -------
-        dydt : numpy.ndarray
-            The derivative of the state (12 values).
-        status : int
-            Status (the class's Notes).
-
-        Raises
-        ------
-        RollerRigError
-            t not a real number, y not 12 real numbers.
-        """
-        return self._core.rhs(*self._t_y("Rig.rhs", t, y))
-
-    def jac(self, t, y):
-        """The plant's approximate Jacobian at (t, y).
-
-        Parameters
-        ----------
-        t : float
-            Time [s].
-        y : array_like
-            State, RIG_STATE (12 values).
-
-        Returns
-        -------
-        J : numpy.ndarray
-            The approximate Jacobian d(dy/dt)/dy, 12 x 12.
-        status : int
-            Status (the class's Notes).
-
-        Raises
-        ------
-        RollerRigError
-            t not a real number, y not 12 real numbers.
-        """
-        return self._core.jac(*self._t_y("Rig.jac", t, y))
-
-    def set_state(self, t, y):
-        """Set the rig's time and plant state.
-
-        Parameters
-        ----------
-        t : float
-            Time [s].
-        y : array_like
-            State, RIG_STATE (12 values).
-
-        Returns
-        -------
-        int
-            Status (the class's Notes).
-
-        Raises
-        ------
-        RollerRigError
-            t not a real number, y not 12 real numbers.
-        """
-        return self._core.set_state(*self._t_y("Rig.set_state", t, y))
-
-    def full_state(self):
-        """The rig's whole state between samples (rr_rig_get_full_state: the
-        plant, held references and friction, PI integrals, encoders,
-        creepage controller) as a dict name -> float, in the C order; a
-        checkpoint for set_full_state.  RollerRigError within a sample (after
-        read or sample, before advance) or on a rig that never started."""
-        names, values, status = self._core.full_state()
-        if status < 0:
-            raise RollerRigError(f"Rig.full_state: {status_message(status)}")
-        return dict(zip(names, values.tolist()))
-
-    def set_full_state(self, state):
-        """Put the rig at `state`, a dict of every name of full_state() (the
-        samples from there are those that followed where it was taken) ->
-        status: 0, a warning, or the C check's error (a NaN, a flag or
-        counter not its kind, a wheel off its roller: nothing changes)."""
-        names = self._core.full_state()[0]
-        if not isinstance(state, dict):
-            raise RollerRigError("Rig.set_full_state: state must be a dict of the names of "
-                                 f"Rig.full_state(), got {_short(state)}")
-        missing = [n for n in names if n not in state]
-        unknown = [k for k in state if k not in names]
-        if missing or unknown:
-            raise RollerRigError(f"Rig.set_full_state: state lacks {missing} and has unknown "
-                                 f"{unknown}" if missing and unknown else
-                                 f"Rig.set_full_state: state lacks {missing}" if missing else
-                                 f"Rig.set_full_state: state has unknown names {unknown}")
-        values = [self._scalar("Rig.set_full_state", f"state[{n!r}]", state[n]) for n in names]
-        return self._core.set_full_state(np.array(values))
-
-    @property
-    def t(self):
-        """The rig's time [s]."""
-        return self._core.t
-
-    @property
-    def y(self):
-        """The plant's state (a copy; RIG_STATE, 12 values)."""
-        return self._core.y
-
-    @property
-    def status(self):
-        """The rig's last status (the class's Notes)."""
-        return self._core.status
-
-    @property
-    def info(self):
-        """The controllers' settings (:class:`rollerrig.rig.control.RigInfo`)."""
-        return _control.rig_info(self._core.info)
-
-
-def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, creep,
-           given_dt=None, run=None, names=None):
+def _build(func: str, P: _Merged, *, dt: Optional[float], method: Optional[str],
+           substeps: Optional[int], ode: Optional[str], nx: Optional[int], ny: Optional[int],
+           roller_speed: Optional[float], start: str, creep: Mapping[str, Any],
+           given_dt: Optional[bool] = None, run: Optional[Mapping[str, Any]] = None,
+           names: Optional[Mapping[str, str]] = None
+           ) -> Tuple[Rig, ContactTable, float, float, str]:
     """(the C rig, its table, dt, roller speed [m/s], method) of checked
     parameters P; given_dt: whether the caller gave dt (default: dt not
     None), for messages; run, names: more of the run's own values
@@ -496,28 +189,31 @@ def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, c
     the arguments that gave them."""
     P = _with_track(func, P)              # scenario.track: the rail for the rollers
     given_dt = dt is not None if given_dt is None else given_dt
-    run, names = dict(run or {}), dict(names or {})
-    run[_SAMPLE_TIME] = dt if dt is not None else P["scenario"]["control_sample_time_s"]
+    own: Dict[str, Any] = dict(run or {})
+    named: Dict[str, str] = dict(names or {})
+    own[_SAMPLE_TIME] = dt if dt is not None else P["scenario"]["control_sample_time_s"]
     if given_dt:
-        names[_SAMPLE_TIME] = "dt"
-    for key, arg, v in (("integration.substeps", "substeps", substeps),
-                        ("integration.method", "ode", ode),
-                        ("scenario.roller_speed_m_s", "roller_speed", roller_speed)):
+        named[_SAMPLE_TIME] = "dt"
+    values_given: Tuple[Tuple[str, str, object], ...] = (
+        ("integration.substeps", "substeps", substeps), ("integration.method", "ode", ode),
+        ("scenario.roller_speed_m_s", "roller_speed", roller_speed))
+    for key, arg, v in values_given:
         if v is not None:
-            run[key], names[key] = v, arg
+            own[key], named[key] = v, arg
     # every value and rule of the run's configuration (the drives' loops at
     # dt too), each problem named, before anything is built
-    values = _check_run(func, P, run, names)
-    dt, substeps, ode = (float(values[_SAMPLE_TIME]), int(values["integration.substeps"]),
-                         values["integration.method"])
+    values = _check_run(func, P, own, named)
+    step, substeps_, ode_ = (float(values[_SAMPLE_TIME]), int(values["integration.substeps"]),
+                             str(values["integration.method"]))
     V = float(values["scenario.roller_speed_m_s"])
     opts = _creep_options(func, P, method, nx, ny, creep)
     if start not in ("rolling", "rest"):
         raise RollerRigError(f"{func}: start must be 'rolling' or 'rest', got {start!r}")
 
-    def make(Q, run, table=None):
+    def make(Q: _Merged, run: Mapping[str, Any],
+             table: Optional[ContactTable] = None) -> _core.Rig:
         table = _geometry(Q) if table is None else table
-        cp = _c_params(Q, dt, substeps, ode, run)
+        cp = _c_params(Q, step, substeps_, ode_, run)
         # the non-Hertzian tables of P (built or read once, below); another
         # set of values (_culprits' search) is tried on Hertz
         nh = nh_tables if Q is P else None
@@ -533,28 +229,29 @@ def _build(func, P, *, dt, method, substeps, ode, nx, ny, roller_speed, start, c
     try:
         table = _geometry(P)
     except RollerRigError as e:
-        raise _cannot_start(func, e, _culprits(P, run, names, GEOMETRY_KEYS,
+        raise _cannot_start(func, e, _culprits(P, own, named, GEOMETRY_KEYS,
                                                lambda Q, run: _geometry(Q))) from None
-    nh_tables = None
+    nh_tables: Optional[Tuple[Any, ...]] = None
     if P["contact"]["patch"] == "nonhertz":
         try:
             nh_tables = _nonhertz_rig.c_tables(_nonhertz_rig.table_for(P, table))
         except RollerRigError as e:
             raise RollerRigError(f"{func}: contact.patch = 'nonhertz': {e}") from None
     try:
-        rig = make(P, run, table)
+        rig = make(P, own, table)
     except (ValueError, RollerRigError) as e:
-        raise _cannot_start(func, e, _culprits(P, run, names, [p.name for p in PARAMETERS
+        raise _cannot_start(func, e, _culprits(P, own, named, [p.name for p in PARAMETERS
                                                                if not p.creep], make)) from None
-    return Rig(rig), table, dt, V, opts["method"]
+    return Rig(rig), table, step, V, str(opts["method"])
 
 
-def _cannot_start(func, e, culprits):
+def _cannot_start(func: str, e: Exception, culprits: Sequence[str]) -> RollerRigError:
     named = f"the rig cannot start with {', '.join(culprits)}: " if culprits else ""
     return RollerRigError(f"{func}: {named}{e}")
 
 
-def _culprits(P, run, names, keys, build):
+def _culprits(P: _Merged, run: Mapping[str, Any], names: Mapping[str, str], keys: Iterable[str],
+              build: _Build) -> List[str]:
     """The changed values the rig cannot start with, where every value is in
     range and every rule holds (_check_run said so): each of `keys` that
     differs from its default (not one the run replaces: its own values are
@@ -573,13 +270,13 @@ def _culprits(P, run, names, keys, build):
     geometry key, and no rig)."""
     D = _defaults()
 
-    def succeeds(Q, run):
+    def succeeds(Q: _Merged, run: Mapping[str, Any]) -> bool:
         try:
             build(Q, run)
         except (ValueError, RollerRigError):
             return False
         return True
-    found = []
+    found: List[str] = []
     for name in keys:
         section, key = name.split(".")
         v = P[section][key]
@@ -683,7 +380,7 @@ def build_rig(params: Params = None, *, dt: Optional[float] = None, method: Opti
     return rig, P, table
 
 
-def write_points(params, folder):
+def write_points(params: Params, folder: Union[str, os.PathLike[str]]) -> Dict[str, str]:
     """Write the points the rig's table is built from, for a C program.
 
     One text file per real profile of `params` (full size, referenced as
@@ -712,7 +409,7 @@ def write_points(params, folder):
     """
     P = _parameters("write_points", params)
     points = _real_profiles.profile_points(P)
-    out = {}
+    out: Dict[str, str] = {}
     for name, s in zip(("wheel", "roller", "wheel_right", "roller_right"),
                        points or (None,) * 4):
         if s is None:
@@ -738,7 +435,8 @@ def write_points(params, folder):
     return out
 
 
-def rig_nonhertz_table(params=None, path=None):
+def rig_nonhertz_table(params: Params = None,
+                       path: Optional[Union[str, os.PathLike[str]]] = None) -> NonHertzTable:
     """The non-Hertzian contact's table of the rig of `params`.
 
     Built (or read: contact.nonhertz_table) as ``simulate(...,

@@ -27,17 +27,20 @@ roller (see csrc/rig/rr_rig_contact.h for the first-order law and its
 reference).  linear_creepages() gives the seed paper's linearised eq. 7-9
 for comparison.
 """
+from __future__ import annotations
+
 import warnings
-from typing import NamedTuple
+from typing import (TYPE_CHECKING, Any, Callable, Dict, Generic, List, Literal, Mapping, NamedTuple,
+                    Optional, Tuple, TypeVar, Union, cast, overload)
 
 import numpy as np
 import numpy.typing as npt
-from typing import TYPE_CHECKING, Any, Optional, Tuple, Union
 
 from .. import _core
 from .._errors import RollerRigError, RollerRigWarning, status_message
 from .._binding import (_broadcast, _finish, _friction, check_creep_options, core, loop_method,
                         swap_blame)
+from .._typing import F64Array
 from ..geometry.wheelset import ContactTable
 
 __all__ = ["RigPose", "WheelContact", "RigContact", "rig_contact", "LinearCreepages",
@@ -101,23 +104,45 @@ WheelContact.__doc__ = "One wheel's contact; fields, units [SI] and meanings:\n"
     for name, width, unit, meaning in WHEEL_FIELDS) + "\n    status: this wheel's status"
 
 
-class RigContact(NamedTuple):
-    """Both wheels' contact, as :func:`rig_contact` returns it.
+#: the worse of the two wheels' statuses: an int8 array, a numpy int8 for a
+#: call on scalars, an int for patch="nonhertz"
+_Status = Union[int, np.int8, npt.NDArray[np.int8]]
 
-    ``left`` and ``right`` are :class:`WheelContact` (or
-    :class:`NonHertzWheel` for patch="nonhertz"); each field an array of
-    the broadcast shape of the states (numpy scalars for a call on
-    scalars; 3-vectors shape (3, ...)).
-    """
+#: both wheels' contact.  For the type checker RigContact is generic in its
+#: wheels' type (tests/test_typing_decl.py holds it to the run-time fields):
+#: rig_contact's overloads give RigContact[WheelContact] for patch="hertz",
+#: RigContact[NonHertzWheel] for "nonhertz"; a bare RigContact has wheels of
+#: either type, whose shared fields (force, moment, N, status) read as both
+if TYPE_CHECKING:
+    from typing_extensions import TypeVar as _DefaultTypeVar    # PEP 696's default=
 
-    pose: RigPose        #: the wheelset's pose and motion
-    left: WheelContact   #: the left wheel's contact
-    right: WheelContact  #: the right wheel's contact
-    status: np.ndarray   #: the worse of the two wheels' statuses
+    _Wheel = _DefaultTypeVar("_Wheel", bound=Union["WheelContact", "NonHertzWheel"],
+                             default=Union["WheelContact", "NonHertzWheel"], covariant=True)
+
+    class RigContact(NamedTuple, Generic[_Wheel]):
+        pose: RigPose
+        left: _Wheel
+        right: _Wheel
+        status: _Status
+else:
+    class RigContact(NamedTuple):
+        """Both wheels' contact, as :func:`rig_contact` returns it.
+
+        ``left`` and ``right`` are :class:`WheelContact` (or
+        :class:`NonHertzWheel` for patch="nonhertz"); each field an array of
+        the broadcast shape of the states (numpy scalars for a call on
+        scalars; 3-vectors shape (3, ...)).
+        """
+
+        pose: RigPose                                 #: the wheelset's pose and motion
+        left: Union[WheelContact, NonHertzWheel]      #: the left wheel's contact
+        right: Union[WheelContact, NonHertzWheel]     #: the right wheel's contact
+        status: _Status       #: the worse of the two wheels' statuses
 
 
-def _wheel(block, status, shape):
-    vals, k = {}, 0
+def _wheel(block: F64Array, status: npt.NDArray[np.int8], shape: Tuple[int, ...]) -> WheelContact:
+    vals: Dict[str, F64Array] = {}
+    k = 0
     for name, width, _, _ in WHEEL_FIELDS:
         vals[name] = (block[k:k + 3].reshape((3,) + shape) if width == 3
                       else block[k].reshape(shape))
@@ -125,27 +150,35 @@ def _wheel(block, status, shape):
     return WheelContact(**vals, status=status.reshape(shape))
 
 
-def _check_table(func, table):
+def _check_table(func: str, table: object) -> None:
     if not isinstance(table, ContactTable):
         raise RollerRigError(f"{func}: table must be a ContactTable (rr.contact_table), "
                              f"got {table!r:.60}")
 
 
-def elastic_constants(E, nu):
+def elastic_constants(E: float, nu: float) -> Tuple[float, float]:
     """(E*, G) of wheel and roller of the same material: the contact modulus
     E* = E / (2 (1 - nu^2)) and the shear modulus G = E / (2 (1 + nu))."""
     return E / (2.0 * (1.0 - nu * nu)), E / (2.0 * (1.0 + nu))
 
 
+#: the contact model's constants as the binding takes them:
+#: (R0, E*, G, nu, mu, friction's A, B, vmin)
+_Model = Tuple[float, float, float, float, float, float, float, float]
+
 _TINY = np.finfo(float).tiny      # a subnormal modulus has too few digits for a force
+#: ("N" or "Fz", left, right): the normal or the vertical loads (_loads)
+_Loads = Tuple[str, Any, Any]
 _RANGES = {"nu": "in [0, 0.5]", "mu": f"in (0, {_core.FRICTION_MAX:g}]"}
 
 
-def _model(func, table, mu, E, nu, vmin, friction):
+def _model(func: str, table: ContactTable, mu: float, E: float, nu: float, vmin: float,
+           friction: object) -> _Model:
     g = table.geometry
-    for name, v, ok in (("mu", mu, lambda x: 0 < x <= _core.FRICTION_MAX),
-                        ("E", E, lambda x: x > 0), ("nu", nu, lambda x: 0 <= x <= 0.5),
-                        ("vmin", vmin, lambda x: x > 0)):
+    checks: Tuple[Tuple[str, float, Callable[[float], bool]], ...] = (
+        ("mu", mu, lambda x: 0 < x <= _core.FRICTION_MAX), ("E", E, lambda x: x > 0),
+        ("nu", nu, lambda x: 0 <= x <= 0.5), ("vmin", vmin, lambda x: x > 0))
+    for name, v, ok in checks:
         real = isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, bool)
         try:
             good = real and np.isfinite(float(v)) and ok(float(v))
@@ -170,15 +203,52 @@ _VALID_STATE = dict(x=0.0, y=0.0, yaw=0.0, vx=0.0, vy=0.0, yaw_rate=0.0, spin=10
                     vmin=1e-3)
 
 
+# the wheels' type by `patch` (RigContact's comment)
+@overload
 def rig_contact(table: ContactTable, *, x: npt.ArrayLike = 0.0, y: npt.ArrayLike = 0.0,
                 yaw: npt.ArrayLike = 0.0, vx: npt.ArrayLike = 0.0, vy: npt.ArrayLike = 0.0,
                 yaw_rate: npt.ArrayLike = 0.0, spin: npt.ArrayLike, roller_spin: npt.ArrayLike,
                 N_left: Optional[npt.ArrayLike] = None, N_right: Optional[npt.ArrayLike] = None,
                 Fz_left: Optional[npt.ArrayLike] = None, Fz_right: Optional[npt.ArrayLike] = None,
-                mu: npt.ArrayLike = 0.4, friction: object = None, E: float = 2.1e11,
+                mu: float = 0.4, friction: object = None, E: float = 2.1e11,
+                nu: float = 0.28, vmin: float = 1e-3, method: str = "fastsim",
+                kinematics_only: bool = False, errors: Optional[str] = None, patch: Literal["hertz"] = ...,
+                nonhertz: object = None, **options: Any) -> RigContact[WheelContact]: ...
+
+
+@overload
+def rig_contact(table: ContactTable, *, x: npt.ArrayLike = 0.0, y: npt.ArrayLike = 0.0,
+                yaw: npt.ArrayLike = 0.0, vx: npt.ArrayLike = 0.0, vy: npt.ArrayLike = 0.0,
+                yaw_rate: npt.ArrayLike = 0.0, spin: npt.ArrayLike, roller_spin: npt.ArrayLike,
+                N_left: Optional[npt.ArrayLike] = None, N_right: Optional[npt.ArrayLike] = None,
+                Fz_left: Optional[npt.ArrayLike] = None, Fz_right: Optional[npt.ArrayLike] = None,
+                mu: float = 0.4, friction: object = None, E: float = 2.1e11,
+                nu: float = 0.28, vmin: float = 1e-3, method: str = "fastsim",
+                kinematics_only: bool = False, errors: Optional[str] = None, patch: Literal["nonhertz"],
+                nonhertz: object = None, **options: Any) -> RigContact[NonHertzWheel]: ...
+
+
+@overload
+def rig_contact(table: ContactTable, *, x: npt.ArrayLike = 0.0, y: npt.ArrayLike = 0.0,
+                yaw: npt.ArrayLike = 0.0, vx: npt.ArrayLike = 0.0, vy: npt.ArrayLike = 0.0,
+                yaw_rate: npt.ArrayLike = 0.0, spin: npt.ArrayLike, roller_spin: npt.ArrayLike,
+                N_left: Optional[npt.ArrayLike] = None, N_right: Optional[npt.ArrayLike] = None,
+                Fz_left: Optional[npt.ArrayLike] = None, Fz_right: Optional[npt.ArrayLike] = None,
+                mu: float = 0.4, friction: object = None, E: float = 2.1e11,
+                nu: float = 0.28, vmin: float = 1e-3, method: str = "fastsim",
+                kinematics_only: bool = False, errors: Optional[str] = None, patch: str = ...,
+                nonhertz: object = None, **options: Any) -> RigContact: ...
+
+
+def rig_contact(table: ContactTable, *, x: npt.ArrayLike = 0.0, y: npt.ArrayLike = 0.0,
+                yaw: npt.ArrayLike = 0.0, vx: npt.ArrayLike = 0.0, vy: npt.ArrayLike = 0.0,
+                yaw_rate: npt.ArrayLike = 0.0, spin: npt.ArrayLike, roller_spin: npt.ArrayLike,
+                N_left: Optional[npt.ArrayLike] = None, N_right: Optional[npt.ArrayLike] = None,
+                Fz_left: Optional[npt.ArrayLike] = None, Fz_right: Optional[npt.ArrayLike] = None,
+                mu: float = 0.4, friction: object = None, E: float = 2.1e11,
                 nu: float = 0.28, vmin: float = 1e-3, method: str = "fastsim",
                 kinematics_only: bool = False, errors: Optional[str] = None, patch: str = "hertz",
-                nonhertz: object = None, **options: Any) -> "RigContact":
+                nonhertz: object = None, **options: Any) -> RigContact[Any]:
     """Contact of both wheels for wheelset states (numpy-broadcast arrays).
 
     Parameters
@@ -318,9 +388,9 @@ def rig_contact(table: ContactTable, *, x: npt.ArrayLike = 0.0, y: npt.ArrayLike
                  (("mu", mu), ("E", E), ("nu", nu), ("vmin", vmin))}
     full.update(constants)
 
-    def status_of(*v):
+    def status_of(*v: float) -> int:
         """the status of one state under the model of constants v[10:]"""
-        m = _model(func, table, *v[10:], friction)
+        m = _model(func, table, v[10], v[11], v[12], v[13], friction)       # mu, E, nu, vmin
         return int(core(_core.rig_contact, table.data, table.y0, table.dy, m,
                         *(np.array([x]) for x in v[:10]),
                         kinematics_only=bool(kinematics_only), **opts)[0][0])
@@ -331,7 +401,8 @@ def rig_contact(table: ContactTable, *, x: npt.ArrayLike = 0.0, y: npt.ArrayLike
     p = RigPose(pose[0:3].reshape((3,) + shape), pose[3].reshape(shape),
                 pose[4].reshape(shape), pose[5:8].reshape((3,) + shape),
                 pose[8:11].reshape((3,) + shape))
-    res = RigContact(p, _wheel(left, sl, shape), _wheel(right, sr, shape), status)
+    res: RigContact[WheelContact] = RigContact(p, _wheel(left, sl, shape),
+                                               _wheel(right, sr, shape), status)
     if scalar:
         res = _scalarise(res)
     return res
@@ -344,11 +415,11 @@ class NonHertzPatch(NamedTuple):
     fx: float           #: creep forces on the wheel [N]
     fy: float
     mz: float           #: spin moment [N m]
-    force: np.ndarray   #: fx t1 + fy t2 + N n [N]
-    point: np.ndarray   #: the pressure's centroid [m]
-    t1: np.ndarray      #: the patch's frame: rolling direction,
-    t2: np.ndarray      #: lateral in its plane,
-    n: np.ndarray       #: and its normal into the wheel
+    force: F64Array     #: fx t1 + fy t2 + N n [N]
+    point: F64Array     #: the pressure's centroid [m]
+    t1: F64Array        #: the patch's frame: rolling direction,
+    t2: F64Array        #: lateral in its plane,
+    n: F64Array         #: and its normal into the wheel
     delta: float        #: the plane's angle [rad]
     cx: float           #: creepages at the centroid [-], [-], [rad/m]
     cy: float
@@ -359,19 +430,31 @@ class NonHertzPatch(NamedTuple):
 
 class NonHertzWheel(NamedTuple):
     """One wheel's non-Hertzian contact (rig_contact(..., patch="nonhertz"))."""
-    force: np.ndarray   #: total contact force on the wheel, rig frame [N]
-    moment: np.ndarray  #: its moment about the wheelset centre [N m]
+    force: F64Array     #: total contact force on the wheel, rig frame [N]
+    moment: F64Array    #: its moment about the wheelset centre [N m]
     N: float            #: the patches' normal loads summed [N]
     area: float         #: their areas summed [m^2]
     pmax: float         #: the largest peak pressure [Pa]
-    centre: np.ndarray  #: the load-weighted force centre [m]
-    patches: tuple      #: NonHertzPatch per patch
+    centre: F64Array    #: the load-weighted force centre [m]
+    patches: Tuple[NonHertzPatch, ...]  #: NonHertzPatch per patch
     Fz: float           #: the vertical load carried [N]
     status: int         #: 0 ok, < 0 the wheel failed (NaN numbers, no patches)
 
 
-def _nonhertz_rig_contact(func, table, nonhertz, loads, *, x, y, yaw, vx, vy, yaw_rate, spin,
-                          roller_spin, mu, friction, E, nu, vmin, method, options, errors):
+def _nonhertz_patch(p: Mapping[str, Any]) -> NonHertzPatch:
+    """A patch of the core's (a dict) as a NonHertzPatch, its vectors arrays."""
+    fields: Dict[str, Any] = {f: (np.array(p[f]) if f in ("force", "point", "t1", "t2", "n")
+                                  else p[f]) for f in NonHertzPatch._fields}
+    return NonHertzPatch(**fields)
+
+
+def _nonhertz_rig_contact(func: str, table: ContactTable, nonhertz: object, loads: _Loads, *,
+                          x: npt.ArrayLike, y: npt.ArrayLike, yaw: npt.ArrayLike,
+                          vx: npt.ArrayLike, vy: npt.ArrayLike, yaw_rate: npt.ArrayLike,
+                          spin: npt.ArrayLike, roller_spin: npt.ArrayLike, mu: float,
+                          friction: object, E: float, nu: float, vmin: float, method: str,
+                          options: Mapping[str, Any],
+                          errors: Optional[str]) -> RigContact[NonHertzWheel]:
     """rig_contact's patch="nonhertz" for one state (scalars).  errors None or
     "raise": a wheel that fails raises; "warn", "ignore": its NonHertzWheel
     has NaN numbers, no patches and its status (< 0), the other wheel is
@@ -391,7 +474,7 @@ def _nonhertz_rig_contact(func, table, nonhertz, loads, *, x, y, yaw, vx, vy, ya
     named = dict(x=x, y=y, yaw=yaw, vx=vx, vy=vy, yaw_rate=yaw_rate, spin=spin,
                  roller_spin=roller_spin, mu=mu, vmin=vmin, E=E, nu=nu,
                  load_left=loads[1], load_right=loads[2])
-    vals = {}
+    vals: Dict[str, float] = {}
     for k, v in named.items():
         a = np.asarray(v)
         if a.ndim != 0 or isinstance(v, bool) or a.dtype.kind not in "fiu":
@@ -402,7 +485,8 @@ def _nonhertz_rig_contact(func, table, nonhertz, loads, *, x, y, yaw, vx, vy, ya
             raise RollerRigError(f"{func}: {k} = {vals[k]!r}: {status_message(-1)}")
     G = E / (2.0 * (1.0 + nu))
     y = vals["y"]
-    wheels, poses = {}, None
+    wheels: Dict[str, NonHertzWheel] = {}
+    poses: Optional[RigPose] = None
     for side in ("left", "right"):
         t = nonhertz.side(side)
         if abs(t.G / G - 1) > 1e-9 or abs(t.nu - nu) > 1e-12:
@@ -414,19 +498,20 @@ def _nonhertz_rig_contact(func, table, nonhertz, loads, *, x, y, yaw, vx, vy, ya
             raise RollerRigError(f"{func}: y = {y!r} m: beyond the nonhertz table's rows "
                                  f"({ys[0]:g} to {ys[-1]:g} m): {status_message(st)}")
         yr = t.rows[[i, i + 1], 0]
-        k = rig_contact(table, x=vals["x"], y=yr, yaw=vals["yaw"], vx=vals["vx"],
+        kin = rig_contact(table, x=vals["x"], y=yr, yaw=vals["yaw"], vx=vals["vx"],
                         vy=vals["vy"], yaw_rate=vals["yaw_rate"], spin=vals["spin"],
                         roller_spin=vals["roller_spin"], vmin=vals["vmin"],
                         kinematics_only=True, errors="raise")
-        motion = [tuple(tuple(float(v) for v in np.asarray(a)[:, j])
-                        for a in (k.pose.c, k.pose.v, k.pose.w)) for j in range(2)]
+        motion0, motion1 = [tuple(tuple(float(v) for v in np.asarray(a)[:, j])
+                                  for a in (kin.pose.c, kin.pose.v, kin.pose.w)) for j in range(2)]
         load = vals[f"load_{side}"]
         if not load > 0:
             raise RollerRigError(f"{func}: the {side} wheel's load must be > 0, got {load!r}")
 
-        def run(Fz):
-            st, res, pts = nonhertz_wheel(t, y, Fz, vals["mu"], vals["roller_spin"], *motion,
-                                          vmin=vals["vmin"], x=vals["x"], yaw=vals["yaw"])
+        def run(Fz: float) -> Tuple[Dict[str, Any], Tuple[Dict[str, Any], ...]]:
+            st, res, pts = nonhertz_wheel(t, y, Fz, vals["mu"], vals["roller_spin"], motion0,
+                                          motion1, vmin=vals["vmin"], x=vals["x"],
+                                          yaw=vals["yaw"])
             if st == -12:        # RR_ERR_RANGE: the vertical balance (rr_nonhertz.h)
                 raise RollerRigError(f"{func}: the {side} wheel at y = {y!r} m, Fz = {Fz!r} N: "
                                      f"the vertical load has no balance on the table's "
@@ -464,16 +549,13 @@ def _nonhertz_rig_contact(func, table, nonhertz, loads, *, x, y, yaw, vx, vy, ya
             nan3 = np.full(3, np.nan)
             wheels[side] = NonHertzWheel(nan3, nan3.copy(), np.nan, np.nan, np.nan, nan3.copy(),
                                          (), Fz, -12)
-            poses = poses or k.pose
+            poses = poses or kin.pose
             continue
-        patches = tuple(NonHertzPatch(**{f: (np.array(p[f]) if f in ("force", "point", "t1",
-                                                                     "t2", "n")
-                                             else p[f]) for f in NonHertzPatch._fields})
-                        for p in pts)
+        patches = tuple(_nonhertz_patch(p) for p in pts)
         wheels[side] = NonHertzWheel(np.array(res["force"]), np.array(res["moment"]), res["N"],
                                      res["area"], res["pmax"], np.array(res["centre"]), patches,
                                      Fz, 0)
-        poses = poses or k.pose
+        poses = poses or kin.pose
     pose = rig_contact(table, x=vals["x"], y=y, yaw=vals["yaw"], vx=vals["vx"], vy=vals["vy"],
                        yaw_rate=vals["yaw_rate"], spin=vals["spin"],
                        roller_spin=vals["roller_spin"], vmin=vals["vmin"],
@@ -482,7 +564,9 @@ def _nonhertz_rig_contact(func, table, nonhertz, loads, *, x, y, yaw, vx, vy, ya
                       min(wheels["left"].status, wheels["right"].status))
 
 
-def _loads(func, N_left, N_right, Fz_left, Fz_right, kinematics_only):
+def _loads(func: str, N_left: Optional[npt.ArrayLike], N_right: Optional[npt.ArrayLike],
+           Fz_left: Optional[npt.ArrayLike], Fz_right: Optional[npt.ArrayLike],
+           kinematics_only: bool) -> _Loads:
     """("N" or "Fz", left, right): the normal or the vertical loads, not both."""
     N_given = N_left is not None or N_right is not None
     Fz_given = Fz_left is not None or Fz_right is not None
@@ -504,9 +588,12 @@ def _loads(func, N_left, N_right, Fz_left, Fz_right, kinematics_only):
 #: the vertical balance N n_z + fy t2_z = Fz of the Hertzian contact: its
 #: fixed point on N converges by the creep force's share (|fy t2_z| << N)
 FZ_TOL, FZ_ITER = 1e-9, 50
+#: a named tuple of arrays (_scalarise)
+_NT = TypeVar("_NT", bound=Tuple[Any, ...])
 
 
-def _hertz_from_vertical(table, Fz_left, Fz_right, **kw):
+def _hertz_from_vertical(table: ContactTable, Fz_left: npt.ArrayLike, Fz_right: npt.ArrayLike,
+                         **kw: Any) -> RigContact[WheelContact]:
     """rig_contact with the normal loads that carry the vertical loads."""
     func = "rig_contact"
     for name, v in (("Fz_left", Fz_left), ("Fz_right", Fz_right)):
@@ -515,9 +602,11 @@ def _hertz_from_vertical(table, Fz_left, Fz_right, **kw):
             raise RollerRigError(f"{func}: {name} must be finite and > 0 [N], got {v!r:.60}")
     Fl, Fr = np.asarray(Fz_left, dtype=float), np.asarray(Fz_right, dtype=float)
     N = [Fl.copy(), Fr.copy()]
-    prev = [None, None]           # (N, residual) of the last pass, for the secant
+    # (N, residual) of the last pass, for the secant
+    prev: List[Optional[Tuple[F64Array, F64Array]]] = [None, None]
     for _ in range(FZ_ITER):
-        c = rig_contact(table, N_left=N[0], N_right=N[1], **kw)
+        # (kw holds no patch: Hertz's wheels; overloads cannot tell through **kw)
+        c = cast("RigContact[WheelContact]", rig_contact(table, N_left=N[0], N_right=N[1], **kw))
         done = True
         for k, (w, F) in enumerate(((c.left, Fl), (c.right, Fr))):
             n_z, t2_z = np.asarray(w.n)[2], np.asarray(w.t2)[2]
@@ -526,8 +615,9 @@ def _hertz_from_vertical(table, Fz_left, Fz_right, **kw):
             # a secant on the fixed point's residual: at the flange the creep
             # force's share is large and the plain iteration slow
             step = r
-            if prev[k] is not None:
-                N0, r0 = prev[k]
+            last = prev[k]
+            if last is not None:
+                N0, r0 = last
                 with np.errstate(all="ignore"):
                     sec = -r * (N[k] - N0) / (r - r0)
                 ok = np.isfinite(sec) & (r != r0) & (N[k] + sec > 0)
@@ -539,7 +629,7 @@ def _hertz_from_vertical(table, Fz_left, Fz_right, **kw):
     raise RollerRigError(f"{func}: the normal loads for Fz_left, Fz_right did not settle")
 
 
-def _scalarise(t):
+def _scalarise(t: _NT) -> _NT:
     """0-d arrays of a scalar call as numpy scalars; 3-vectors stay arrays."""
     return type(t)(*(_scalarise(v) if isinstance(v, tuple) else v[()] for v in t))
 
@@ -548,15 +638,15 @@ class LinearCreepages(NamedTuple):
     """One wheel's linearised creepages (eq. 7-9), as
     :func:`linear_creepages` returns them; arrays of the broadcast shape."""
 
-    cx: np.ndarray      #: longitudinal creepage [-] (eq. 7)
-    cy: np.ndarray      #: lateral creepage [-] (eq. 8)
-    cphi: np.ndarray    #: spin creepage [rad/m] (eq. 9)
+    cx: F64Array        #: longitudinal creepage [-] (eq. 7)
+    cy: F64Array        #: lateral creepage [-] (eq. 8)
+    cphi: F64Array      #: spin creepage [rad/m] (eq. 9)
 
 
 def linear_creepages(table: ContactTable, *, y: npt.ArrayLike = 0.0, yaw: npt.ArrayLike = 0.0,
                      vx: npt.ArrayLike = 0.0, vy: npt.ArrayLike = 0.0,
                      yaw_rate: npt.ArrayLike = 0.0, spin: npt.ArrayLike,
-                     roller_spin: npt.ArrayLike) -> Tuple["LinearCreepages", "LinearCreepages"]:
+                     roller_spin: npt.ArrayLike) -> Tuple[LinearCreepages, LinearCreepages]:
     """The seed paper's linearised creepages (eq. 7-9) at the table geometry.
 
     Parameters
@@ -653,4 +743,4 @@ def linear_creepages(table: ContactTable, *, y: npt.ArrayLike = 0.0, yaw: npt.Ar
                                      f"{float(np.min(np.abs(roller_spin))):g} rad/s): "
                                      f"{status_message(-12)}")
         out.append(LinearCreepages(cx, cy, cphi))
-    return tuple(out)
+    return out[0], out[1]

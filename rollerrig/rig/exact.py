@@ -14,12 +14,16 @@ says what that changes), and the creepages at CONTACT's material points
 zero yaw and longitudinal shift: fx, fy, mz are rollerrig's (on the wheel;
 mz about n at P).  The C core does the whole (csrc/geometry/rr_wheel_exact.h).
 """
+from __future__ import annotations
+
 from dataclasses import dataclass
 
 import numpy as np
-from typing import TYPE_CHECKING, Any, Optional
+from typing import TYPE_CHECKING, Any, Dict, Mapping, Optional, Tuple
 
 if TYPE_CHECKING:
+    from .._typing import F64Array
+    from ..geometry.patch import PatchShape
     from ..geometry.wheelset import ContactTable, RigGeometry
 
 from .. import _core
@@ -56,19 +60,21 @@ class RigExact:
     builds: int = 0          #: patches built (the first pass's, the loaded one, rebuilds)
 
     @property
-    def shape(self):
+    def shape(self) -> PatchShape:
         """PatchShape of the contact area."""
         return patch_shape(self.solution.contact, self.patch.dx, self.patch.dy)
 
     @property
-    def force(self):
+    def force(self) -> F64Array:
         """Contact force on the wheel in the rig frame [N]:
         fx t1 + fy t2 + fn n."""
         s, p = self.solution, self.patch
         return s.fx * p.t1 + s.fy * p.t2 + s.fn * p.n
 
 
-def _motion(geometry, y_ws, spin, roller_spin, vy, yaw_rate, vmin, table):
+def _motion(geometry: RigGeometry, y_ws: float, spin: float, roller_spin: float, vy: float,
+            yaw_rate: float, vmin: float,
+            table: Optional[ContactTable]) -> Tuple[Tuple[float, ...], ...]:
     """The wheelset's rigid motion at y_ws (rig_contact's pose at x = yaw =
     0: centre, velocity, angular velocity), from which the core takes the
     creepages of a patch (rr_wheel_exact.h: the slip of the wheel's
@@ -89,14 +95,14 @@ def _motion(geometry, y_ws, spin, roller_spin, vy, yaw_rate, vmin, table):
                  for a in (pose.c, pose.v, pose.w))
 
 
-def rig_exact(geometry: "RigGeometry", y_ws: float, *, mu: float, N: Optional[float] = None,
+def rig_exact(geometry: RigGeometry, y_ws: float, *, mu: float, N: Optional[float] = None,
               Fz: Optional[float] = None, side: str = "left", spin: Optional[float] = None,
               roller_spin: Optional[float] = None, vy: float = 0.0, yaw_rate: float = 0.0,
               cx: Optional[float] = None, cy: Optional[float] = None,
               cphi: Optional[float] = None, E: float = 2.1e11, nu: float = 0.28, n: int = 40,
               reference: str = "weighted", loaded: bool = True, passes: int = 2,
-              vmin: float = 1e-3, table: Optional["ContactTable"] = None, tol: float = 1e-6,
-              maxit: int = 5000, **patch_options: Any) -> "RigExact":
+              vmin: float = 1e-3, table: Optional[ContactTable] = None, tol: float = 1e-6,
+              maxit: int = 5000, **patch_options: Any) -> RigExact:
     """One wheel of the rig solved by Kalker's exact theory on its
     non-Hertzian patch (:func:`undeformed_distance`).
 
@@ -233,14 +239,16 @@ def rig_exact(geometry: "RigGeometry", y_ws: float, *, mu: float, N: Optional[fl
     G = E / (2.0 * (1.0 + nu))
     # the solver's options by the registry's rules (names, ranges, integers)
     check_creep_options(func, "exact", dict(tol=tol, maxit=maxit))
-    spin_shift = float(METHODS["exact"].defaults()["spin_shift"])
+    spin_shift = float(METHODS["exact"].options["spin_shift"].default)
     z0, roll0, cpt = _pose_and_point(func, geometry, y_ws, side)
     y_ws = float(y_ws)
-    if all(given):
+    motion: Tuple[Tuple[float, ...], ...]
+    if cx is not None and cy is not None and cphi is not None:     # all(given)
         creep = (1, float(cx), float(cy), float(cphi))
         motion = ((0.0,) * 3,) * 3
         roller_spin_ = 0.0
     else:
+        assert spin is not None and roller_spin is not None         # (checked above)
         creep = (0, 0.0, 0.0, 0.0)
         motion = _motion(geometry, y_ws, spin, roller_spin, vy, yaw_rate, vmin, table)
         roller_spin_ = float(roller_spin)
@@ -269,7 +277,9 @@ def rig_exact(geometry: "RigGeometry", y_ws: float, *, mu: float, N: Optional[fl
                     V=rinfo["V"], N=rinfo["N"], passes=rinfo["passes"], builds=rinfo["builds"])
 
 
-def _wheel_error(func, status, pinfo, rinfo, geometry, side, y_ws, dx, dy, material):
+def _wheel_error(func: str, status: int, pinfo: Dict[str, Any], rinfo: Dict[str, Any],
+                 geometry: RigGeometry, side: str, y_ws: float, dx: Optional[float],
+                 dy: Optional[float], material: Mapping[str, float]) -> RollerRigError:
     """The RollerRigError of a failed rr_wheel_exact: its reason in words."""
     why = rinfo["why"]
     if why == _core.WHEEL_EXACT_GAP or why == _core.WHEEL_EXACT_HERTZ:

@@ -14,18 +14,23 @@ point's jumps), and kept in memory for the session.  A file's path: a table
 saved by rollerrig.rig_nonhertz_table(params, path) (rig.build), read and checked against the
 rig's pair (every quantity that differs is named) before the run.
 """
+from __future__ import annotations
+
 import hashlib
 import json
 import os
 import sys
 import time
 import warnings
+from typing import Any, Dict, Iterable, List, Mapping, Tuple, Union
 
 import numpy as np
+import numpy.typing as npt
 
 from .._errors import RollerRigError, RollerRigWarning
+from .._typing import F64Array
 from ..geometry.nonhertz import LOAD_SPAN, NonHertzSide, NonHertzTable, nonhertz_table
-from ..geometry.wheelset import wheelset_contact
+from ..geometry.wheelset import ContactTable, RigGeometry, wheelset_contact
 from . import real_profiles as _real_profiles
 
 #: the full-size table's choices (rollerrig.geometry.nonhertz), scaled to the
@@ -36,25 +41,29 @@ from . import real_profiles as _real_profiles
 JUMP, JUMP_ZONE, COMBINE = 0.5e-3, 0.3e-3, 4e-3
 #: tables kept in memory, by pair and settings
 _KEEP = 4
-_BUILT = {}
+_BUILT: Dict[Tuple[str, Tuple[float, float, int], float, float], NonHertzTable] = {}
+#: checked parameters {section: {key: value}}
+_Params = Mapping[str, Mapping[str, Any]]
+#: a table as the binding takes it: (rows, head) per side
+_CTable = Tuple[F64Array, Tuple[float, float, float, float, float]]
 _KEY_VALUES = ("wheelset.wheel_radius_m", "roller.radius_m", "wheelset.contact_half_spacing_m",
                "contact.youngs_modulus_Pa", "contact.poisson_ratio")
 _CONE_VALUES = ("wheelset.conicity", "wheelset.profile_half_width_m", "roller.crown_radius_m")
 _REAL_VALUES = ("wheelset.profile_scale", "roller.profile_scale", "roller.gauge_m")
 
 
-def _value(P, name):
+def _value(P: _Params, name: str) -> Any:
     section, key = name.split(".")
     return P[section][key]
 
 
-def _scale(P):
+def _scale(P: _Params) -> float:
     """The length factor of the rig's profiles (1 for the cone)."""
     return (float(P["wheelset"]["profile_scale"])
             if _real_profiles.profile_points(P) is not None else 1.0)
 
 
-def pair_key(P):
+def pair_key(P: _Params) -> Dict[str, Union[float, str]]:
     """What makes the rig's pair and its table.
 
     Parameters
@@ -68,7 +77,7 @@ def pair_key(P):
         ``{name: value}``, the profiles' points (as the C rig takes them)
         as a digest per slot.
     """
-    key = {name: float(_value(P, name)) for name in _KEY_VALUES}
+    key: Dict[str, Union[float, str]] = {name: float(_value(P, name)) for name in _KEY_VALUES}
     points = _real_profiles.profile_points(P)
     if points is None:
         key.update({name: float(_value(P, name)) for name in _CONE_VALUES})
@@ -84,7 +93,7 @@ def pair_key(P):
     return key
 
 
-def static_load(P):
+def static_load(P: _Params) -> float:
     """The wheel's static vertical load.
 
     Parameters
@@ -101,7 +110,7 @@ def static_load(P):
                   + float(P["wheelset"]["mass_kg"]) * float(P["scenario"]["g_m_s2"]))
 
 
-def _rows(geometry, side, half, dy, scale):
+def _rows(geometry: RigGeometry, side: str, half: float, dy: float, scale: float) -> F64Array:
     """One side's row shifts: every dy over [-half, half], every dy / 4
     within JUMP_ZONE (scaled) of the rigid contact point's jumps."""
     n = int(np.ceil(half / dy - 1e-9))
@@ -116,11 +125,11 @@ def _rows(geometry, side, half, dy, scale):
     for j in 0.5 * (y[k] + y[k + 1]):
         zone = JUMP_ZONE * scale
         ys += list(np.arange(j - zone, j + zone + 1e-12, dy / 4))
-    ys = np.unique(np.round(np.array(ys), 12))
-    return ys[(ys >= -n * dy - 1e-15) & (ys <= n * dy + 1e-15)]
+    shifts = np.unique(np.round(np.array(ys), 12))
+    return shifts[(shifts >= -n * dy - 1e-15) & (shifts <= n * dy + 1e-15)]
 
 
-def _settings(P):
+def _settings(P: _Params) -> Tuple[float, float, int]:
     C = P["contact"]
     return (float(C["nonhertz_half_range_m"]), float(C["nonhertz_row_spacing_m"]),
             int(C["nonhertz_elements"]))
@@ -130,13 +139,15 @@ def _settings(P):
 CHUNK = 8
 
 
-def _side_rows(g, side, ys, kw):
+def _side_rows(g: RigGeometry, side: str, ys: npt.ArrayLike,
+               kw: Mapping[str, Any]) -> Tuple[List[F64Array], str]:
     """One side's rows from the centre outwards, in chunks; a direction
     ends at the first row the exact theory cannot build (deep flange
     contact at the largest load node): (rows sorted by y, why it ended or
     "")."""
     ys = np.asarray(ys)
-    out, why = {}, ""
+    out: Dict[float, F64Array] = {}
+    why = ""
     for direction in (ys[ys >= 0.0], ys[ys < 0.0][::-1]):
         k = 0
         while k < len(direction):
@@ -160,18 +171,19 @@ def _side_rows(g, side, ys, kw):
     return [out[y] for y in sorted(out)], why
 
 
-def _chunk(g, side, ys, kw):
+def _chunk(g: RigGeometry, side: str, ys: Iterable[float],
+           kw: Mapping[str, Any]) -> List[F64Array]:
     """The rows at shifts ys (nonhertz_table needs two: a lone row is built
     beside a twin 1 nm away, which is dropped)."""
-    ys = [float(y) for y in ys]
-    twin = len(ys) == 1
-    t = nonhertz_table(g, None, None, y=ys + [ys[0] + 1e-9] if twin else ys, sides=(side,),
-                       **kw).side(side)
+    shifts = [float(y) for y in ys]
+    twin = len(shifts) == 1
+    t = nonhertz_table(g, None, None, y=shifts + [shifts[0] + 1e-9] if twin else shifts,
+                       sides=(side,), **kw).side(side)
     rows = list(t.rows)
     return rows[:1] if twin else rows
 
 
-def _build(P, table, key):
+def _build(P: _Params, table: ContactTable, key: Mapping[str, object]) -> NonHertzTable:
     """The table of the rig's pair (rollerrig.nonhertz_table per side)."""
     half, dy, n = _settings(P)
     scale = _scale(P)
@@ -184,9 +196,10 @@ def _build(P, table, key):
           f"rows, about {0.25 * total * (n / 40) ** 2:.0f} s on 2 free cores; kept for this "
           f"session, or save it: rollerrig.rig_nonhertz_table(params, path))", file=sys.stderr)
     t0 = time.perf_counter()
-    kw = dict(Fz=Fz, mu_ref=float(P["scenario"]["mu0"]), E=E, nu=nu, n=n,
+    kw: Dict[str, Any] = dict(Fz=Fz, mu_ref=float(P["scenario"]["mu0"]), E=E, nu=nu, n=n,
               n_corr=max(8, (3 * n) // 4), richardson=False, combine=COMBINE * scale)
-    sides, ends = {}, []
+    sides: Dict[str, NonHertzSide] = {}
+    ends: List[str] = []
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", RollerRigWarning)
         for side in ("left", "right"):
@@ -213,7 +226,7 @@ def _build(P, table, key):
     return NonHertzTable(sides["left"], sides["right"], Fz, time.perf_counter() - t0)
 
 
-def _read(path, key, P):
+def _read(path: str, key: Mapping[str, object], P: _Params) -> NonHertzTable:
     """A saved table, checked against the rig's pair and load."""
     name = f"contact.nonhertz_table = {path!r}"
     if not os.path.isfile(path):
@@ -243,7 +256,7 @@ def _read(path, key, P):
     return nh
 
 
-def table_for(P, table):
+def table_for(P: _Params, table: ContactTable) -> NonHertzTable:
     """The non-Hertzian table of the rig's pair.
 
     Parameters
@@ -280,7 +293,7 @@ def table_for(P, table):
     return _BUILT[k]
 
 
-def c_tables(nh):
+def c_tables(nh: NonHertzTable) -> Tuple[_CTable, ...]:
     """The binding's form of a table.
 
     Parameters
@@ -297,7 +310,7 @@ def c_tables(nh):
                  for s in (nh.left, nh.right))
 
 
-def save(nh, P, path):
+def save(nh: NonHertzTable, P: _Params, path: str) -> None:
     """Save the table as .npz, with the rig's pair recorded.
 
     NonHertzTable.save's arrays, readable by NonHertzTable.load.
@@ -312,7 +325,7 @@ def save(nh, P, path):
         The file.
     """
     from .. import _core
-    out = dict(Fz=nh.Fz, build_seconds=nh.build_seconds,
+    out: Dict[str, Any] = dict(Fz=nh.Fz, build_seconds=nh.build_seconds,
                layout=np.array([_core.NH_ROW_LEN, _core.NH_NODES, _core.NH_MAX_PATCHES]),
                rig_pair=np.array(json.dumps(pair_key(P), sort_keys=True)))
     for name in ("left", "right"):

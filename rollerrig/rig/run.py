@@ -28,22 +28,37 @@ simulate runs it (the rig's own controllers, or a controller of the
 caller's: rollerrig.rig.control), sample by sample through the C loop; replay
 feeds a run's kinematics through a contact model (the paper's Fig. 9).
 """
+from __future__ import annotations
+
 import math
 import time
 import warnings
-from typing import Any, Optional
+from typing import (TYPE_CHECKING, Any, Callable, Dict, Iterable, Mapping, NoReturn, Optional,
+                    Sequence, Tuple, cast)
 
 import numpy as np
 import numpy.typing as npt
 
 from .. import _core, _progress
-from .._typing import Controller, Params
+from .._typing import Controller, F64Array, Params
 from . import control as _control
 from .._errors import RollerRigError, RollerRigWarning, status_message
 from .build import _build, _creep_options, _geometry
 from .params import _SAMPLE_TIME, _check_run, _integer, _parameters, _real_arg, _short
 from .params import _with_track
 from .result import RECORD_FIELDS, RigResult, scenario_record
+
+if TYPE_CHECKING:
+    from .build import Rig
+    from .contact import RigContact, WheelContact
+
+#: checked parameters {section: {key: value}}
+_Params = Mapping[str, Mapping[str, Any]]
+#: (records kept, samples stepped, the run's status, the worst sample status,
+#: samples warned): a run's stepping (_run_builtin, _run_controlled)
+_Stepped = Tuple[F64Array, int, int, int, int]
+#: simulate's RigResult of (records, status, message, samples stepped)
+_Result = Callable[[F64Array, int, str, int], RigResult]
 
 
 #: the default cap on the memory of a run's records [bytes]: 1 GiB, about
@@ -68,7 +83,9 @@ UNTRUSTED_SHARE = 0.05
 UNTRUSTED_MIN = 20
 
 
-def schedule(P, duration, dt, targets, target_times, roller_speed, first=0, stop=None):
+def schedule(P: _Params, duration: float, dt: float, targets: Iterable[float],
+             target_times: Iterable[float], roller_speed: float, first: int = 0,
+             stop: Optional[int] = None) -> Tuple[F64Array, F64Array]:
     """The references of samples first <= k < stop.
 
     Sample k starts at k dt.  The rule is the C side's (rr_rig_schedule),
@@ -111,13 +128,14 @@ def schedule(P, duration, dt, targets, target_times, roller_speed, first=0, stop
 _TARGETS, _STARTS, _DURATION = "scenario.targets", "scenario.target_start_s", "scenario.duration_s"
 
 
-def _as_list(v):
+def _as_list(v: Any) -> Any:
     """A 1-D array as the list the C report takes (anything else as given:
     the report names what it is not)."""
     return v.tolist() if isinstance(v, np.ndarray) and v.ndim == 1 else v
 
 
-def _target_schedule(P, duration, dt, targets, target_times, names):
+def _target_schedule(P: _Params, duration: float, dt: float, targets: Any, target_times: Any,
+                     names: Mapping[str, str]) -> Tuple[Tuple[float, ...], Tuple[float, ...]]:
     """(targets, start times) of a run: the scenario's (scaled to the
     duration where they do not fit it, with a warning), or the caller's
     (equal intervals of the duration where target_times is None); checked
@@ -153,7 +171,7 @@ def _target_schedule(P, duration, dt, targets, target_times, names):
     return tuple(float(x) for x in targets), tuple(float(x) for x in target_times)
 
 
-def _first_sample(t, dt):
+def _first_sample(t: float, dt: float) -> int:
     """The first sample k whose start k dt (as the C schedule computes it,
     rr_rig_schedule) is at or after t."""
     k = max(0, math.ceil(t / dt))
@@ -164,7 +182,8 @@ def _first_sample(t, dt):
     return k
 
 
-def _check_targets_applied(targets, target_times, dt, n):
+def _check_targets_applied(targets: Sequence[float], target_times: Sequence[float], dt: float,
+                           n: int) -> None:
     """Refuse targets no sample would apply: the schedule gives each sample
     the target of the last start time at or before its start (k dt), so a
     target whose interval holds no sample start (it starts within one sample
@@ -181,7 +200,8 @@ def _check_targets_applied(targets, target_times, dt, n):
             f"{'s' if n > 1 else ''}); lengthen the duration or space the target_times")
 
 
-def _record_plan(n, dt, record_every, max_record_bytes):
+def _record_plan(n: int, dt: float, record_every: int,
+                 max_record_bytes: float) -> Tuple[int, int]:
     """(record_every, records kept) of a run of n samples, within the cap."""
     if _integer(1, max(1, n))(record_every):
         raise RollerRigError(f"simulate: record_every must be an integer from 1 to the "
@@ -391,7 +411,7 @@ def simulate(duration: Optional[float] = None, dt: Optional[float] = None,
     out = np.full((kept, len(RECORD_FIELDS)), np.nan)
     t1 = time.perf_counter()
 
-    def result(out, status, message, stepped):
+    def result(out: F64Array, status: int, message: str, stepped: int) -> RigResult:
         wall = {"setup": t1 - t0, "run": time.perf_counter() - t1}
         return RigResult(out, P, targets, target_times, dt, int(status), message, wall,
                          record_every=record_every, method=used, samples=stepped,
@@ -420,8 +440,9 @@ def simulate(duration: Optional[float] = None, dt: Optional[float] = None,
     return result(out, status, message, stepped)
 
 
-def _run_builtin(rig, P, duration, dt, targets, target_times, V, n, record_every, out,
-                 progress):
+def _run_builtin(rig: Rig, P: _Params, duration: float, dt: float, targets: Sequence[float],
+                 target_times: Sequence[float], V: float, n: int, record_every: int,
+                 out: F64Array, progress: Optional[bool]) -> _Stepped:
     """simulate's samples on the rig's own controllers, in chunks through
     the C loop.  Returns (records kept, samples stepped, the run's status,
     the worst sample status, samples warned)."""
@@ -432,8 +453,9 @@ def _run_builtin(rig, P, duration, dt, targets, target_times, V, n, record_every
                                record_every, out, chunk, bar)
 
 
-def _builtin_chunks(rig, P, duration, dt, targets, target_times, V, n, record_every, out,
-                    chunk, bar):
+def _builtin_chunks(rig: Rig, P: _Params, duration: float, dt: float, targets: Sequence[float],
+                    target_times: Sequence[float], V: float, n: int, record_every: int,
+                    out: F64Array, chunk: int, bar: Any) -> _Stepped:
     stepped, worst, warned, status = 0, 0, 0, 0
     for first in range(0, n, chunk):
         stop = min(n, first + chunk)
@@ -467,8 +489,10 @@ def _builtin_chunks(rig, P, duration, dt, targets, target_times, V, n, record_ev
 _XI_REF = RECORD_FIELDS.index("xi_ref")
 
 
-def _run_controlled(rig, controller, P, duration, dt, targets, target_times, V, n,
-                    record_every, out, progress, result):
+def _run_controlled(rig: Rig, controller: Controller, P: _Params, duration: float, dt: float,
+                    targets: Sequence[float], target_times: Sequence[float], V: float, n: int,
+                    record_every: int, out: F64Array, progress: Optional[bool],
+                    result: _Result) -> _Stepped:
     """simulate's samples with a controller of the user's
     (rollerrig.rig.control): read, call, write, advance, sample by sample; the
     records' xi_ref is the scenario's target the controller was given.
@@ -479,12 +503,14 @@ def _run_controlled(rig, controller, P, duration, dt, targets, target_times, V, 
     core = rig._core
     stepped, worst, warned, status = 0, 0, 0, 0
 
-    def fail(k, t, what, code, cause=None):
+    def fail(k: int, t: float, what: str, code: int,
+             cause: Optional[BaseException] = None) -> NoReturn:
         kept = out[:k // record_every]
         text = (f"simulate: the controller failed at sample {k} (t = {t:.4f} s): {what}; "
                 f"the history so far is in this error's .result")
         e = RollerRigError(text)
-        e.result = result(kept, code, text.split(": ", 1)[1], k)
+        # (the error carries the history so far: simulate's Raises)
+        e.result = result(kept, code, text.split(": ", 1)[1], k)  # type: ignore[attr-defined]
         raise e from cause
 
     start = getattr(controller, "start", None)
@@ -500,8 +526,10 @@ def _run_controlled(rig, controller, P, duration, dt, targets, target_times, V, 
                                   n, record_every, out, chunk, bar, fail)
 
 
-def _controlled_chunks(rig, controller, P, duration, dt, targets, target_times, V, n,
-                       record_every, out, chunk, bar, fail):
+def _controlled_chunks(rig: Rig, controller: Controller, P: _Params, duration: float,
+                       dt: float, targets: Sequence[float], target_times: Sequence[float],
+                       V: float, n: int, record_every: int, out: F64Array, chunk: int, bar: Any,
+                       fail: Callable[..., NoReturn]) -> _Stepped:
     core = rig._core
     stepped, worst, warned, status = 0, 0, 0, 0
     for first in range(0, n, chunk):
@@ -545,7 +573,8 @@ def _controlled_chunks(rig, controller, P, duration, dt, targets, target_times, 
     return out, stepped, status, worst, warned
 
 
-def replay(res, *, method=None, nx=None, ny=None, **creep):
+def replay(res: RigResult, *, method: Optional[str] = None, nx: Optional[int] = None,
+           ny: Optional[int] = None, **creep: Any) -> RigContact[WheelContact]:
     """The seed paper's Fig. 9 procedure: a run's kinematics through a contact model.
 
     The kinematics recorded in a run (e.g. an offline high-accuracy run
@@ -599,10 +628,11 @@ def replay(res, *, method=None, nx=None, ny=None, **creep):
                              "law, scenario.mu0 with the contact section's")
     friction = (FallingFriction(A=C["polach_A"], B=C["polach_B_s_per_m"])
                 if C["friction_law"] == "polach_falling" else None)
-    opts = _creep_options("replay", P, method, nx, ny, creep, in_rig=False)
-    return rig_contact(_geometry(P), x=res.x, y=res.y, yaw=res.yaw, vx=res.vx, vy=res.vy,
+    opts: Dict[str, Any] = _creep_options("replay", P, method, nx, ny, creep, in_rig=False)
+    # (opts hold no patch: Hertz's wheels; overloads cannot tell through **opts)
+    return cast("RigContact[WheelContact]", rig_contact(_geometry(P), x=res.x, y=res.y, yaw=res.yaw, vx=res.vx, vy=res.vy,
                        yaw_rate=res.yaw_rate, spin=res.spin, roller_spin=res.roller_spin,
                        N_left=res.normal_load_left, N_right=res.normal_load_right,
                        mu=P["scenario"]["mu0"], friction=friction,
                        E=C["youngs_modulus_Pa"], nu=C["poisson_ratio"],
-                       vmin=C["min_rolling_speed_m_s"], **opts)
+                       vmin=C["min_rolling_speed_m_s"], **opts))
