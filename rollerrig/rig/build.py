@@ -423,7 +423,8 @@ def write_points(params: Params, folder: Union[str, os.PathLike[str]]) -> Dict[s
         # the non-Hertzian tables the run takes (built or read), for
         # examples/rig_paper.c's nonhertz_left=, nonhertz_right=
         nh = _nonhertz_rig.table_for(P, _geometry(P))
-        for name, side in (("nonhertz_left", nh.left), ("nonhertz_right", nh.right)):
+        for name, side in (("nonhertz_left", nh.side("left")),
+                           ("nonhertz_right", nh.side("right"))):
             path = os.path.join(os.fspath(folder), f"{name}.txt")
             with open(path, "w") as fh:
                 fh.write(f"# {name}: sigma R0 G nu mu_ref rows, then the rows "

@@ -502,8 +502,10 @@ def _nonhertz_rig_contact(func: str, table: ContactTable, nonhertz: object, load
                         vy=vals["vy"], yaw_rate=vals["yaw_rate"], spin=vals["spin"],
                         roller_spin=vals["roller_spin"], vmin=vals["vmin"],
                         kinematics_only=True, errors="raise")
-        motion0, motion1 = [tuple(tuple(float(v) for v in np.asarray(a)[:, j])
-                                  for a in (kin.pose.c, kin.pose.v, kin.pose.w)) for j in range(2)]
+        # the wheelset's centre, velocity, angular velocity at the two rows
+        motion0, motion1 = [tuple((float(a[0, j]), float(a[1, j]), float(a[2, j]))
+                                  for a in map(np.asarray, (kin.pose.c, kin.pose.v, kin.pose.w)))
+                            for j in range(2)]
         load = vals[f"load_{side}"]
         if not load > 0:
             raise RollerRigError(f"{func}: the {side} wheel's load must be > 0, got {load!r}")

@@ -307,7 +307,7 @@ def c_tables(nh: NonHertzTable) -> Tuple[_CTable, ...]:
         ``((left rows, head), (right rows, head))``.
     """
     return tuple((np.ascontiguousarray(s.rows, dtype=float), s.head)
-                 for s in (nh.left, nh.right))
+                 for s in (nh.side("left"), nh.side("right")))
 
 
 def save(nh: NonHertzTable, P: _Params, path: str) -> None:

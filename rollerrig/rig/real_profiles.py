@@ -129,7 +129,7 @@ def _read(name: str, value: str, kind: str, smoothing: float, notes: List[str]) 
     reader's words for it)."""
     if value in BUILTIN:
         return BUILTIN[value][1]()
-    path = resolve(value)
+    path = cast(str, resolve(value))     # (a checked set's rows name files that exist: problems)
     sm = smoothing if smoothing > 0 else None
     try:
         if kind == "wheel":
