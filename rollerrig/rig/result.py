@@ -9,7 +9,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import numpy.typing as npt
-from typing import Any, Dict, List, Mapping, Optional, Tuple, Union
+from typing import Any, Dict, List, Mapping, Optional, Tuple, TypeVar, Union
 
 from .. import _core
 from .._typing import F64Array
@@ -24,6 +24,8 @@ RECORD_FIELDS = tuple(name for name, _, _ in RECORD)
 #: the unit of each record field, CF / UDUNITS ("1": dimensionless)
 RECORD_UNITS = {name: unit for name, unit, _ in RECORD}
 _RECORD_MEANING = {name: meaning for name, _, meaning in RECORD}
+#: a file's path, returned as given (to_csv)
+_Path = TypeVar("_Path", bound=Union[str, "os.PathLike[str]"])
 
 
 @dataclass(repr=False)
@@ -232,7 +234,7 @@ class RigResult:
                    "target_times": np.asarray(self.target_times, dtype=float),
                    "target_times_units": "s", **meta, "params": json.dumps(self.params)})
 
-    def to_csv(self, path: Union[str, os.PathLike[str]]) -> Union[str, os.PathLike[str]]:
+    def to_csv(self, path: _Path) -> _Path:
         """Write the records as CSV.
 
         The RECORD_FIELDS names, then '#' lines (the units, one per column,
