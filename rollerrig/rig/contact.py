@@ -30,8 +30,8 @@ for comparison.
 from __future__ import annotations
 
 import warnings
-from typing import (TYPE_CHECKING, Any, Callable, Dict, Generic, List, Literal, Mapping, NamedTuple,
-                    Optional, Tuple, TypeVar, Union, cast, overload)
+from typing import (TYPE_CHECKING, Any, Callable, Dict, Generic, List, Literal, Mapping,
+                    NamedTuple, Optional, Tuple, TypeVar, Union, cast, overload)
 
 import numpy as np
 import numpy.typing as npt
@@ -67,8 +67,8 @@ WHEEL_FIELDS = _core.RIG_WHEEL_FIELDS
 #: class is made from the C declaration at run time; for the type checker it
 #: is spelt out (tests/test_typing.py holds the two to the same fields): a
 #: scalar field a numpy scalar for a call on scalars, else an array
+_Scalar = Union[np.float64, npt.NDArray[np.float64]]
 if TYPE_CHECKING:
-    _Scalar = Union[np.float64, npt.NDArray[np.float64]]
     _Vector = npt.NDArray[np.float64]          # shape (3, ...)
 
     class WheelContact(NamedTuple):
@@ -212,8 +212,9 @@ def rig_contact(table: ContactTable, *, x: npt.ArrayLike = 0.0, y: npt.ArrayLike
                 Fz_left: Optional[npt.ArrayLike] = None, Fz_right: Optional[npt.ArrayLike] = None,
                 mu: float = 0.4, friction: object = None, E: float = 2.1e11,
                 nu: float = 0.28, vmin: float = 1e-3, method: str = "fastsim",
-                kinematics_only: bool = False, errors: Optional[str] = None, patch: Literal["hertz"] = ...,
-                nonhertz: object = None, **options: Any) -> RigContact[WheelContact]: ...
+                kinematics_only: bool = False, errors: Optional[str] = None,
+                patch: Literal["hertz"] = ..., nonhertz: object = None,
+                **options: Any) -> RigContact[WheelContact]: ...
 
 
 @overload
@@ -224,8 +225,9 @@ def rig_contact(table: ContactTable, *, x: npt.ArrayLike = 0.0, y: npt.ArrayLike
                 Fz_left: Optional[npt.ArrayLike] = None, Fz_right: Optional[npt.ArrayLike] = None,
                 mu: float = 0.4, friction: object = None, E: float = 2.1e11,
                 nu: float = 0.28, vmin: float = 1e-3, method: str = "fastsim",
-                kinematics_only: bool = False, errors: Optional[str] = None, patch: Literal["nonhertz"],
-                nonhertz: object = None, **options: Any) -> RigContact[NonHertzWheel]: ...
+                kinematics_only: bool = False, errors: Optional[str] = None,
+                patch: Literal["nonhertz"], nonhertz: object = None,
+                **options: Any) -> RigContact[NonHertzWheel]: ...
 
 
 @overload
@@ -499,9 +501,9 @@ def _nonhertz_rig_contact(func: str, table: ContactTable, nonhertz: object, load
                                  f"({ys[0]:g} to {ys[-1]:g} m): {status_message(st)}")
         yr = t.rows[[i, i + 1], 0]
         kin = rig_contact(table, x=vals["x"], y=yr, yaw=vals["yaw"], vx=vals["vx"],
-                        vy=vals["vy"], yaw_rate=vals["yaw_rate"], spin=vals["spin"],
-                        roller_spin=vals["roller_spin"], vmin=vals["vmin"],
-                        kinematics_only=True, errors="raise")
+                          vy=vals["vy"], yaw_rate=vals["yaw_rate"], spin=vals["spin"],
+                          roller_spin=vals["roller_spin"], vmin=vals["vmin"],
+                          kinematics_only=True, errors="raise")
         # the wheelset's centre, velocity, angular velocity at the two rows
         motion0, motion1 = [tuple((float(a[0, j]), float(a[1, j]), float(a[2, j]))
                                   for a in map(np.asarray, (kin.pose.c, kin.pose.v, kin.pose.w)))
@@ -640,9 +642,9 @@ class LinearCreepages(NamedTuple):
     """One wheel's linearised creepages (eq. 7-9), as
     :func:`linear_creepages` returns them; arrays of the broadcast shape."""
 
-    cx: F64Array        #: longitudinal creepage [-] (eq. 7)
-    cy: F64Array        #: lateral creepage [-] (eq. 8)
-    cphi: F64Array      #: spin creepage [rad/m] (eq. 9)
+    cx: _Scalar         #: longitudinal creepage [-] (eq. 7)
+    cy: _Scalar         #: lateral creepage [-] (eq. 8)
+    cphi: _Scalar       #: spin creepage [rad/m] (eq. 9)
 
 
 def linear_creepages(table: ContactTable, *, y: npt.ArrayLike = 0.0, yaw: npt.ArrayLike = 0.0,

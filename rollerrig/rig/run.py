@@ -630,9 +630,10 @@ def replay(res: RigResult, *, method: Optional[str] = None, nx: Optional[int] = 
                 if C["friction_law"] == "polach_falling" else None)
     opts: Dict[str, Any] = _creep_options("replay", P, method, nx, ny, creep, in_rig=False)
     # (opts hold no patch: Hertz's wheels; overloads cannot tell through **opts)
-    return cast("RigContact[WheelContact]", rig_contact(_geometry(P), x=res.x, y=res.y, yaw=res.yaw, vx=res.vx, vy=res.vy,
-                       yaw_rate=res.yaw_rate, spin=res.spin, roller_spin=res.roller_spin,
-                       N_left=res.normal_load_left, N_right=res.normal_load_right,
-                       mu=P["scenario"]["mu0"], friction=friction,
-                       E=C["youngs_modulus_Pa"], nu=C["poisson_ratio"],
-                       vmin=C["min_rolling_speed_m_s"], **opts))
+    c = rig_contact(_geometry(P), x=res.x, y=res.y, yaw=res.yaw, vx=res.vx, vy=res.vy,
+                    yaw_rate=res.yaw_rate, spin=res.spin, roller_spin=res.roller_spin,
+                    N_left=res.normal_load_left, N_right=res.normal_load_right,
+                    mu=P["scenario"]["mu0"], friction=friction,
+                    E=C["youngs_modulus_Pa"], nu=C["poisson_ratio"],
+                    vmin=C["min_rolling_speed_m_s"], **opts)
+    return cast("RigContact[WheelContact]", c)
