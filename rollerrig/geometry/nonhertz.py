@@ -418,7 +418,8 @@ _NODE_F = (0.03, 0.1, 0.2, 0.33, 0.46, 0.6, 0.75, 0.88, 1.0)
 
 def nonhertz_wheel(side_table: NonHertzSide, y: float, Fz: float, mu: float,
                    roller_spin: float, motion0: Motion, motion1: Motion, vmin: float = 1e-3,
-                   x: float = 0.0, yaw: float = 0.0) -> Tuple[int, Dict[str, Any], F64Array]:
+                   x: float = 0.0,
+                   yaw: float = 0.0) -> Tuple[int, Dict[str, Any], Tuple[Dict[str, Any], ...]]:
     """One wheel's contact from a side's table (rr_nonhertz_wheel): (status,
     result dict, patch dicts); motion0/1: ((c), (v), (w)) of the wheelset at
     the rows around y (nonhertz_locate), at the longitudinal shift x and yaw."""
