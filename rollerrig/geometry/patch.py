@@ -147,7 +147,7 @@ class Patch:
         return np.broadcast_to((self.y0 + self.dy * np.arange(my))[:, None], (my, mx))
 
 
-def _runs(mask: npt.ArrayLike) -> List[Tuple[int, int]]:
+def _runs(mask: npt.ArrayLike) -> List[Tuple[np.intp, np.intp]]:
     """(start, stop) index pairs of the runs of True in a 1-D mask."""
     m = np.concatenate(([False], mask, [False])).astype(np.int8)
     d = np.diff(m)
