@@ -299,8 +299,9 @@ def own_exact_cases(n: int = 3000, seed: int = 20261202, nx: int = 27) -> ExactC
         pct_slip=_frozen(np.full(n, np.nan)), a_over_b=_frozen(aob_class),
         spin=_frozen(spin_class), angle=_frozen(np.arctan2(d["cy"], d["cx"])),
         magnitude=_frozen(d["m"]), N=_frozen(d["N"]), mu=_frozen(d["mu"]),
-        G=float(d["G"]), nu=float(d["nu"]), source=f"rollerrig's exact theory, Richardson {nx}/{2 * nx} across, "
-                           f"{n} random cases (seed {seed})",
+        G=float(d["G"]), nu=float(d["nu"]),
+        source=f"rollerrig's exact theory, Richardson {nx}/{2 * nx} across, "
+               f"{n} random cases (seed {seed})",
         label=f"rollerrig's exact theory (Richardson {nx}/{2 * nx} across, {n} cases)")
 
 
