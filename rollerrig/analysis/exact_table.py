@@ -100,7 +100,7 @@ class ExactTable:
         return path
 
     @classmethod
-    def load(cls, path: Union[str, "os.PathLike[str]"]) -> ExactTable:
+    def load(cls, path: _Path) -> ExactTable:
         """Read a table written by :meth:`save` (a .npz file at `path`)."""
         with np.load(path) as z:
             return cls(tuple(float(v) for v in z["lo"]), tuple(float(v) for v in z["hi"]),
