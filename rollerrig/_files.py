@@ -14,7 +14,8 @@ from __future__ import annotations
 import os
 import secrets
 import stat
-from typing import IO, Any, Callable, Optional, Tuple, TypeVar, Union
+from typing import (IO, Any, BinaryIO, Callable, Literal, Optional, TextIO, Tuple, TypeVar, Union,
+                    overload)
 
 from ._errors import RollerRigError
 
@@ -139,7 +140,17 @@ def make_folder(path: PathArg, *, what: str) -> str:
     return text
 
 
-def write_file(path: _P, write: Callable[[IO[Any]], object], *, what: str,
+@overload
+def write_file(path: _P, write: Callable[[TextIO], object], *, what: str,
+               binary: Literal[False] = False, suffix: Optional[str] = None) -> _P: ...
+
+
+@overload
+def write_file(path: _P, write: Callable[[BinaryIO], object], *, what: str,
+               binary: Literal[True], suffix: Optional[str] = None) -> _P: ...
+
+
+def write_file(path: _P, write: Callable[[Any], object], *, what: str,
                binary: bool = False, suffix: Optional[str] = None) -> _P:
     """Write a file through `write(file object)` by check_output's rule:
     checked, written into a new file created exclusively beside `path`,

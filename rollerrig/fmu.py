@@ -43,7 +43,7 @@ import tempfile
 import uuid
 import zipfile
 from pathlib import Path
-from typing import (IO, Any, Callable, Dict, Iterable, List, Mapping, Optional, Sequence,
+from typing import (Any, BinaryIO, Callable, Dict, Iterable, List, Mapping, Optional, Sequence,
                     Tuple, TypedDict, Union)
 
 from ._errors import RollerRigError
@@ -457,7 +457,7 @@ def build_fmu(out: Union[str, "os.PathLike[str]"], scenario: Params = None, fmi_
             (src / "buildDescription.xml").write_text(_build_description(identifier,
                                                                          all_files))
 
-        def pack(fh: IO[Any]) -> None:
+        def pack(fh: BinaryIO) -> None:
             with zipfile.ZipFile(fh, "w", zipfile.ZIP_DEFLATED) as z:
                 for path in sorted(p for p in stage.rglob("*") if p.is_file()):
                     z.write(path, path.relative_to(stage).as_posix())
