@@ -150,6 +150,7 @@ def _simulate(args: argparse.Namespace) -> int:
     assert res is not None                 # simulate returned: error is None
     _print_warnings(PROG, caught, _as_option)
     wall = time.perf_counter() - t0
+    assert res.wall is not None            # a run's: simulate times it
     run = res.wall["run"]
     print(f"rollerrig {__version__}: {res.duration:g} s simulated in {run:.3f} s "
           f"(real-time factor {res.duration / run:.0f}; set-up {res.wall['setup']:.3f} s, "
@@ -157,7 +158,7 @@ def _simulate(args: argparse.Namespace) -> int:
           f"{f', one sample in {res.record_every} recorded' if res.record_every > 1 else ''}"
           f", {res.method}")
     print(res.table())
-    written: List[str] = []
+    written: List[Union[str, "os.PathLike[str]"]] = []
     failure: Optional[str] = None
     try:
         written.append(res.to_csv(paths[0]))
@@ -171,8 +172,8 @@ def _simulate(args: argparse.Namespace) -> int:
                    f"{e.strerror or e}")
     if no_figures:
         print(f"{PROG}: no figures: {no_figures}", file=sys.stderr)
-    for path in written:
-        print(f"wrote {path}")
+    for done in written:
+        print(f"wrote {done}")
     if failure:
         print(f"{PROG}: {failure}", file=sys.stderr)
         return 2

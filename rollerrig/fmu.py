@@ -218,6 +218,7 @@ def _start_nonhertz_c(P: _Checked) -> List[str]:
     lines: List[str] = []
     sets = head[:]
     for k, side in enumerate((nh.left, nh.right)):
+        assert side is not None             # the rig's table has both (table_for checks)
         flat = side.rows.reshape(-1)
         body = ",\n    ".join(", ".join(float(x).hex() for x in flat[i:i + 4])
                               for i in range(0, flat.size, 4))
