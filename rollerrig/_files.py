@@ -9,11 +9,19 @@ work; write_file checks again, writes into a new file created exclusively
 beside the path and renames it over the path, so that a reader never sees
 half a file and no temporary is left behind.
 """
+from __future__ import annotations
+
 import os
 import secrets
 import stat
+from typing import (IO, Any, BinaryIO, Callable, Literal, Optional, TextIO, Tuple, TypeVar, Union,
+                    overload)
 
 from ._errors import RollerRigError
+
+#: a path as the writers take it (anything else is refused at run time, naming it)
+PathArg = Union[str, bytes, "os.PathLike[str]", "os.PathLike[bytes]"]
+_P = TypeVar("_P", bound=PathArg)
 
 _KINDS = ((stat.S_ISDIR, "a directory"), (stat.S_ISLNK, "a symbolic link"),
           (stat.S_ISFIFO, "a FIFO"), (stat.S_ISCHR, "a character device"),
@@ -24,12 +32,12 @@ class OutputPathError(RollerRigError):
     """A path no file may be written at: "<what> <path>: <reason>" (.path,
     .reason: the command line names its option instead of `what`)."""
 
-    def __init__(self, what, path, reason):
+    def __init__(self, what: str, path: str, reason: str) -> None:
         super().__init__(f"{what} {path}: {reason}" if what else f"{path}: {reason}")
         self.path, self.reason = path, reason
 
 
-def _text(path, what, folder=False):
+def _text(path: PathArg, what: str, folder: bool = False) -> str:
     try:
         text = os.fspath(path)
     except TypeError:
@@ -47,7 +55,7 @@ def _text(path, what, folder=False):
     return text
 
 
-def _exclusive(folder, name, mode=0o666):
+def _exclusive(folder: str, name: str, mode: int = 0o666) -> Tuple[int, str]:
     """A new file beside `name` in folder, created exclusively (never an
     existing file, never through a link): (descriptor, its path).  The
     umask applies, as for open()."""
@@ -61,7 +69,7 @@ def _exclusive(folder, name, mode=0o666):
             continue
 
 
-def _replaceable(text, what):
+def _replaceable(text: str, what: str) -> None:
     """What is at the path may be replaced: nothing, or a regular file."""
     try:
         mode = os.lstat(text).st_mode
@@ -82,7 +90,7 @@ def _replaceable(text, what):
     raise OutputPathError(what, text, why)
 
 
-def check_output(path, *, what, suffix=None):
+def check_output(path: PathArg, *, what: str, suffix: Optional[str] = None) -> str:
     """Check, before any work, that a file may be written at `path`: its
     folder exists, is a directory and takes a new file (one is made and
     removed there); what is at `path` is nothing or a regular file (not a
@@ -115,7 +123,7 @@ def check_output(path, *, what, suffix=None):
     return text
 
 
-def make_folder(path, *, what):
+def make_folder(path: PathArg, *, what: str) -> str:
     """The folder `path`, created if needed (with its parents), for files
     to be written in: OutputPathError "<what> <path>: why" if it is not a
     directory or cannot be made.  Returns the path as text."""
@@ -132,7 +140,18 @@ def make_folder(path, *, what):
     return text
 
 
-def write_file(path, write, *, what, binary=False, suffix=None):
+@overload
+def write_file(path: _P, write: Callable[[TextIO], object], *, what: str,
+               binary: Literal[False] = False, suffix: Optional[str] = None) -> _P: ...
+
+
+@overload
+def write_file(path: _P, write: Callable[[BinaryIO], object], *, what: str,
+               binary: Literal[True], suffix: Optional[str] = None) -> _P: ...
+
+
+def write_file(path: _P, write: Callable[[Any], object], *, what: str,
+               binary: bool = False, suffix: Optional[str] = None) -> _P:
     """Write a file through `write(file object)` by check_output's rule:
     checked, written into a new file created exclusively beside `path`,
     what is at `path` checked again (still nothing or a regular file), then
@@ -146,8 +165,9 @@ def write_file(path, write, *, what, binary=False, suffix=None):
     except OSError as e:
         raise OSError(e.errno, e.strerror, text) from None
     try:
-        opts = {} if binary else {"newline": "", "encoding": "utf-8"}
-        with os.fdopen(fd, "wb" if binary else "w", **opts) as fh:
+        fh: IO[Any] = (os.fdopen(fd, "wb") if binary
+                       else os.fdopen(fd, "w", newline="", encoding="utf-8"))
+        with fh:
             write(fh)
         _replaceable(text, what)                     # nothing put there meanwhile
         os.replace(tmp, text)

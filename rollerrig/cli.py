@@ -9,17 +9,24 @@ written).  Every output path is checked before the work
 (rollerrig._files.check_output): a regular file or a new path only, never
 through a symbolic link, never a directory, a device or a FIFO.
 """
+from __future__ import annotations
+
 import argparse
 import os
 import re
 import sys
 import time
 import warnings
-from typing import Optional, Sequence
+from typing import (TYPE_CHECKING, Any, Callable, Dict, List, Mapping, NoReturn, Optional, Sequence,
+                    Tuple, Union, cast)
 
 from ._errors import RollerRigError, RollerRigWarning
-from ._files import OutputPathError, check_output, make_folder
+from ._files import OutputPathError, PathArg, check_output, make_folder
+from ._typing import F64Array
 from ._version import __version__
+
+if TYPE_CHECKING:
+    from .rig.result import RigResult
 
 PROG = "rollerrig simulate"
 
@@ -36,15 +43,18 @@ class _Parser(argparse.ArgumentParser):
     """argparse's parser whose errors are one line "<prog>: <message>",
     exit status 2, without the usage block (main prints the line)."""
 
-    def error(self, message):
+    commands: Dict[str, "_Parser"]      #: name -> the command's parser (build_parser's)
+
+    def error(self, message: str) -> NoReturn:
         raise _Refused(f"{self.prog}: {message}")
 
 
-def _prepare_out(path):
+def _prepare_out(path: str) -> Optional[str]:
     """Create the output folder (and prove it is a directory) before
     anything is run; returns the outermost folder it made (None if it was
     there), for _unmake."""
-    made, up = None, os.path.abspath(path)
+    made: Optional[str] = None
+    up = os.path.abspath(path)
     while not os.path.lexists(up):
         made, up = up, os.path.dirname(up)
     try:
@@ -54,7 +64,7 @@ def _prepare_out(path):
     return made
 
 
-def _unmake(path, made):
+def _unmake(path: str, made: Optional[str]) -> None:
     """Remove the folders _prepare_out made for a run that was refused
     (only while empty): bad input leaves nothing behind."""
     if made is None:
@@ -68,14 +78,15 @@ def _unmake(path, made):
         folder = os.path.dirname(folder)
 
 
-def _checked_output(path, what, suffix=None):
+def _checked_output(path: PathArg, what: str, suffix: Optional[str] = None) -> str:
     try:
         return check_output(path, what=what, suffix=suffix)
     except OutputPathError as e:
         raise _Refused(str(e)) from None
 
 
-def _load_scenario(path, method=None, patch=None):
+def _load_scenario(path: Optional[str], method: Optional[str] = None,
+                   patch: Optional[str] = None) -> Optional[Dict[str, Dict[str, Any]]]:
     """The scenario file's parameters, checked as rollerrig.fmu.check_scenario
     does for both commands: every problem at once, then the rig built from
     them (with --method, --patch if given)."""
@@ -89,7 +100,7 @@ def _load_scenario(path, method=None, patch=None):
         raise _Refused(str(e)) from None
 
 
-def _figures():
+def _figures() -> Optional[str]:
     """None when the figures can be drawn (files only: no window, whatever
     the environment's default backend), else why not."""
     from ._optional import require
@@ -100,16 +111,17 @@ def _figures():
     return None
 
 
-def _simulate(args):
+def _simulate(args: argparse.Namespace) -> int:
     from .rig.run import simulate
 
     no_figures = _figures()
     names = ["rig_history.csv"] + ([] if no_figures else ["rig_creepage.png", "rig_force.png"])
     paths = [os.path.join(args.out, name) for name in names]
-    made = None
+    made: Optional[str] = None
     kw = {"method": args.method} if args.method else {}
     t0 = time.perf_counter()
-    res = error = None
+    res: Optional[RigResult] = None
+    error: Optional[RollerRigError] = None
     # the scenario's warnings and the run's, printed once each if it runs
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", RollerRigWarning)
@@ -135,8 +147,10 @@ def _simulate(args):
         _unmake(args.out, made)
         print(f"{PROG}: {_as_option(error)}", file=sys.stderr)
         return 2
+    assert res is not None                 # simulate returned: error is None
     _print_warnings(PROG, caught, _as_option)
     wall = time.perf_counter() - t0
+    assert res.wall is not None            # a run's: simulate times it
     run = res.wall["run"]
     print(f"rollerrig {__version__}: {res.duration:g} s simulated in {run:.3f} s "
           f"(real-time factor {res.duration / run:.0f}; set-up {res.wall['setup']:.3f} s, "
@@ -144,7 +158,8 @@ def _simulate(args):
           f"{f', one sample in {res.record_every} recorded' if res.record_every > 1 else ''}"
           f", {res.method}")
     print(res.table())
-    written, failure = [], None
+    written: List[Union[str, "os.PathLike[str]"]] = []
+    failure: Optional[str] = None
     try:
         written.append(res.to_csv(paths[0]))
         if not no_figures:
@@ -157,8 +172,8 @@ def _simulate(args):
                    f"{e.strerror or e}")
     if no_figures:
         print(f"{PROG}: no figures: {no_figures}", file=sys.stderr)
-    for path in written:
-        print(f"wrote {path}")
+    for done in written:
+        print(f"wrote {done}")
     if failure:
         print(f"{PROG}: {failure}", file=sys.stderr)
         return 2
@@ -170,7 +185,8 @@ def _simulate(args):
     return 0
 
 
-def _as_option(message, prefix="simulate: ", options=_OPTION_OF):
+def _as_option(message: object, prefix: str = "simulate: ",
+               options: Mapping[str, str] = _OPTION_OF) -> str:
     """A message of rollerrig.simulate as the command line's: without its
     "simulate: " (the command names itself), the keyword it is about
     named as the option the user typed (duration -> --duration)."""
@@ -181,7 +197,7 @@ def _as_option(message, prefix="simulate: ", options=_OPTION_OF):
                   flags=re.M)
 
 
-def _positive_int(text):
+def _positive_int(text: str) -> int:
     try:
         value = int(text)
     except ValueError:
@@ -191,7 +207,7 @@ def _positive_int(text):
     return value
 
 
-def _shape(text):
+def _shape(text: str) -> Tuple[int, ...]:
     try:
         shape = tuple(int(v) for v in text.split(","))
     except ValueError:
@@ -201,9 +217,9 @@ def _shape(text):
     return shape
 
 
-def _nu(text):
+def _nu(text: str) -> float:
     try:
-        value = float(text)
+        value: Optional[float] = float(text)
     except ValueError:
         value = None
     if value is None or not 0.0 <= value <= 0.5:
@@ -211,11 +227,13 @@ def _nu(text):
     return value
 
 
-def _pair_nx(text):
+def _pair_nx(text: str) -> int:
     """--nx: the coarser grid of the Richardson pair; the finer one, 2 nx,
     within the exact solver's range (the registry's), checked before the build."""
     from ._binding import METHODS
-    most = METHODS["exact"].options["nx"].hi // 2
+    hi = METHODS["exact"].options["nx"].hi
+    assert hi is not None                  # an int option has a range
+    most = hi // 2
     value = _positive_int(text)
     if value > most:
         raise argparse.ArgumentTypeError(f"must be an integer from 1 to {most} (the finer grid "
@@ -223,20 +241,22 @@ def _pair_nx(text):
     return value
 
 
-def _dask_client(address):
+def _dask_client(address: str) -> Any:
     """A client of the Dask scheduler at `address`, or _Refused naming it:
     reached first by a bare connection (within dask's connect timeout,
     distributed.comm.timeouts.connect), so that a scheduler that cannot be
     reached is one line, not a client's traceback."""
     try:
         import asyncio
-        import distributed
-        from distributed.comm import connect
+        import importlib
+        # optional and untyped: imported as modules, their names Any
+        distributed = importlib.import_module("distributed")
+        connect = importlib.import_module("distributed.comm").connect
     except ImportError:
         raise _Refused(f"--dask {address}: needs dask.distributed "
                        f'(pip install "rollerrig[distributed]")') from None
 
-    async def reach():
+    async def reach() -> None:
         comm = await connect(address)
         await comm.close()
     try:
@@ -246,7 +266,7 @@ def _dask_client(address):
         raise _Refused(f"--dask {address}: cannot reach the scheduler: {e}") from None
 
 
-def _exact_table(args):
+def _exact_table(args: argparse.Namespace) -> int:
     from .analysis.exact_table import DEFAULT_SHAPE, build_exact_table
     name = "rollerrig exact-table"
     client = None
@@ -270,7 +290,7 @@ def _exact_table(args):
     finally:
         if client is not None:
             client.close()
-    failed = []                            # each output tried: one lost keeps the other
+    failed: List[str] = []                 # each output tried: one lost keeps the other
     for write, path in ((table.save, args.npz), (table.write_c, args.out)):
         try:
             if path is not None:
@@ -288,13 +308,14 @@ def _exact_table(args):
     return 0
 
 
-def _print_warnings(prog, caught, text=str):
+def _print_warnings(prog: str, caught: Sequence[warnings.WarningMessage],
+                    text: Callable[[Union[Warning, str]], str] = str) -> None:
     """The RollerRigWarnings caught, each once, one line "<prog>: warning: ..."."""
     for message in dict.fromkeys(text(w.message) for w in caught):
         print(f"{prog}: warning: {message}", file=sys.stderr)
 
 
-def _fmu(args):
+def _fmu(args: argparse.Namespace) -> int:
     from .fmu import build_fmu
     name = "rollerrig fmu"
     with warnings.catch_warnings(record=True) as caught:
@@ -326,9 +347,10 @@ def _fmu(args):
 
 # ------------------------------------------------ rollerrig stability (issue 25)
 
-def _speed_range(text):
+def _speed_range(text: str) -> F64Array:
     """--speeds LO:HI:N (N speeds from LO to HI [m/s], evenly) or a comma list."""
     import numpy as np
+    speeds: F64Array
     try:
         if ":" in text:
             lo, hi, n = text.split(":")
@@ -344,8 +366,8 @@ def _speed_range(text):
     return speeds
 
 
-def _stability(args):
-    from .analysis.stability import stability
+def _stability(args: argparse.Namespace) -> int:
+    from .analysis.stability import Mode, stability
     name = "rollerrig stability"
     try:
         st = stability(args.speeds, args.scenario, track=args.track)
@@ -363,7 +385,7 @@ def _stability(args):
         print(f"{V:12.4g} {mr:14.6g} {md:12.5g} "
               f"{top.frequency_hz if top else float('nan'):18.5g}")
     if st.critical_speed == st.critical_speed:
-        m = st.critical_mode
+        m = cast(Mode, st.critical_mode)   # the Mode at a critical speed (not NaN)
         print(f"critical speed: {st.critical_speed:.6g} m/s ({m.frequency_hz:.4g} Hz, "
               f"{', '.join(m.dominant)})")
     else:
@@ -371,7 +393,7 @@ def _stability(args):
     return 0
 
 
-def _add_stability(sub):
+def _add_stability(sub: "argparse._SubParsersAction[_Parser]") -> None:
     p = sub.add_parser("stability", help="the wheelset's eigenvalues and critical speed",
                        description="Linearise the rig's plant at its steady state at each "
                        "speed (rollerrig.stability; docs/lateral_dynamics.md), print the "
@@ -386,7 +408,7 @@ def _add_stability(sub):
     p.set_defaults(func=_stability)
 
 
-def build_parser():
+def build_parser() -> _Parser:
     from ._binding import METHODS
     rig_methods = [name for name, m in METHODS.items() if m.in_rig]
     parser = _Parser(
@@ -477,7 +499,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         parser.print_help()
         return 0
     try:
-        return func(args)
+        status: int = func(args)
+        return status
     except BrokenPipeError:
         # the reader of stdout went away (rollerrig simulate | head): no
         # traceback; stdout to devnull so that the exit's flush stays quiet

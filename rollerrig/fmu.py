@@ -43,11 +43,12 @@ import tempfile
 import uuid
 import zipfile
 from pathlib import Path
-from typing import Optional, Union
+from typing import (Any, BinaryIO, Callable, Dict, Iterable, List, Mapping, Optional, Sequence,
+                    Tuple, TypedDict, Union)
 
 from ._errors import RollerRigError
 from ._files import check_output, write_file
-from ._typing import Params
+from ._typing import F64Array, Params
 from ._version import __version__
 
 __all__ = ["build_fmu", "FmuBuildError", "core_c_dirs", "find_compiler", "model_identifier",
@@ -73,12 +74,18 @@ whose headers are under the 2-Clause BSD License.
 """
 
 
+#: checked parameters {section: {key: value}} (rollerrig.rig.params.check_parameters)
+_Checked = Mapping[str, Mapping[str, Any]]
+#: a real profile's points as rollerrig.rig.real_profiles gives them: (y, z, end: 1 natural)
+_ProfilePoints = Tuple[F64Array, F64Array, int]
+
+
 class FmuBuildError(RollerRigError):
     """The FMU could not be built: no C compiler, a compiler error, an
     unsupported platform."""
 
 
-def core_c_dirs():
+def core_c_dirs() -> Tuple[Path, Path]:
     """(sources, headers): the folders holding the C core's sources
     (``*/rr_*.c`` in their layer folders: util, contact, geometry, rig, fmu)
     and its headers (``*/rr_*.h``, ``*/*.def``): rollerrig.get_source_dir()
@@ -91,10 +98,10 @@ def core_c_dirs():
         raise FmuBuildError(f"rollerrig fmu: {e}") from None
 
 
-def find_compiler(cc=None):
+def find_compiler(cc: Optional[str] = None) -> List[str]:
     """The C compiler command (a list): cc if given, else $CC, else the
     first of cc, gcc, clang on PATH.  FmuBuildError if there is none."""
-    looked = []
+    looked: List[str] = []
     for text, origin in ((cc, "cc="), (os.environ.get("CC"), "$CC"), ("cc", None),
                          ("gcc", None), ("clang", None)):
         if not text or not text.strip():
@@ -111,18 +118,20 @@ def find_compiler(cc=None):
                         f"or set CC")
 
 
-def _platform_dir(fmi_version):
+def _platform_dir(fmi_version: int) -> Tuple[str, str]:
     """binaries/<this> of an FMU of this platform, and the binary's extension."""
     machine = platform.machine().lower()
     arch = {"x86_64": "x86_64", "amd64": "x86_64", "aarch64": "aarch64",
             "arm64": "aarch64"}.get(machine)
+    system: Optional[str]
+    ext: Optional[str]
     if sys.platform.startswith("linux"):
         system, ext = "linux", ".so"
     elif sys.platform == "darwin":
         system, ext = "darwin", ".dylib"
     else:
         system = ext = None
-    if arch is None or system is None or sys.maxsize <= 2 ** 32:
+    if arch is None or system is None or ext is None or sys.maxsize <= 2 ** 32:
         raise FmuBuildError(f"rollerrig fmu: builds for 64-bit Linux and macOS only, not "
                             f"{sys.platform} {platform.machine()}")
     if fmi_version == 2:
@@ -130,7 +139,7 @@ def _platform_dir(fmi_version):
     return f"{arch}-{system}", ext
 
 
-def model_identifier(path):
+def model_identifier(path: Union[str, "os.PathLike[str]"]) -> str:
     """The FMU's modelIdentifier from its file name: a C identifier."""
     stem = Path(path).name
     stem = stem[:-4] if stem.lower().endswith(".fmu") else stem
@@ -142,17 +151,18 @@ def model_identifier(path):
 
 # ------------------------------------------------------------------ the start values
 
-def _c_string(text):
+def _c_string(text: object) -> str:
     return json.dumps(str(text))
 
 
-def _start_config_c(P, source):
+def _start_config_c(P: _Checked, source: str) -> str:
     """sources/fmu_start.c: the default configuration overridden by every
     value of the checked parameters P that differs from its default, exact
     (hexadecimal floating constants)."""
     from .rig import params, real_profiles
     D = params.default_parameters()
-    calls, arrays = [], []
+    calls: List[str] = []
+    arrays: List[str] = []
     C = params._c_values(P)                 # a profile row: "points" for a real one
     for p in params.PARAMETERS:
         section, key = p.name.split(".")
@@ -195,7 +205,7 @@ def _start_config_c(P, source):
     return "\n".join(lines)
 
 
-def _start_nonhertz_c(P):
+def _start_nonhertz_c(P: _Checked) -> List[str]:
     """rr_fmu_start_nonhertz of fmu_start.c: on contact.patch = "nonhertz"
     the tables simulate() runs on (rollerrig.rig.nonhertz_rig: built from
     the rig's pair or read from contact.nonhertz_table), their rows exact
@@ -205,9 +215,10 @@ def _start_nonhertz_c(P):
         return head + ["    (void)t;", "    return 0;", "}", ""]
     from .rig import build, nonhertz_rig
     nh = nonhertz_rig.table_for(P, build._geometry(P))
-    lines = []
+    lines: List[str] = []
     sets = head[:]
     for k, side in enumerate((nh.left, nh.right)):
+        assert side is not None             # the rig's table has both (table_for checks)
         flat = side.rows.reshape(-1)
         body = ",\n    ".join(", ".join(float(x).hex() for x in flat[i:i + 4])
                               for i in range(0, flat.size, 4))
@@ -221,12 +232,13 @@ def _start_nonhertz_c(P):
     return [""] + lines + sets + ["    return 1;", "}", ""]
 
 
-def _start_profiles_c(points):
+def _start_profiles_c(points: Optional[Sequence[Optional[_ProfilePoints]]]) -> List[str]:
     """rr_fmu_start_profiles of fmu_start.c: the real profiles' points as
     rollerrig.rig.real_profiles gives them to the C table build (so the FMU
     builds simulate()'s table, bit for bit), exact hexadecimal constants."""
     slots = ("wheel", "roller", "wheel_right", "roller_right")
-    lines, sets = [], ["    memset(pr, 0, sizeof *pr);"]
+    lines: List[str] = []
+    sets = ["    memset(pr, 0, sizeof *pr);"]
     for k, name in enumerate(slots):
         s = None if points is None else points[k]
         if s is None:
@@ -243,7 +255,8 @@ def _start_profiles_c(points):
             + ["", "void rr_fmu_start_profiles(rr_rig_profiles *pr)", "{"] + sets + ["}", ""])
 
 
-def check_scenario(scenario, *, source, method=None, patch=None):
+def check_scenario(scenario: Params, *, source: str, method: Optional[str] = None,
+                   patch: Optional[str] = None) -> Tuple[Dict[str, Dict[str, Any]], str]:
     """(checked parameters, what they come from) of a scenario: None (the
     defaults), a nested dict or the path of a TOML file, checked as simulate
     checks it: every value (one RollerRigError listing every problem), then
@@ -255,6 +268,7 @@ def check_scenario(scenario, *, source, method=None, patch=None):
     from .rig import build, params as rig_params
     if scenario is None and patch is None:
         return rig_params.default_parameters(), "nothing (the defaults)"
+    params: Optional[Mapping[str, Any]]
     if isinstance(scenario, (str, os.PathLike)):
         source = f"{source} {os.fspath(scenario)}"
         try:
@@ -267,8 +281,9 @@ def check_scenario(scenario, *, source, method=None, patch=None):
     else:
         params, what = scenario, "the scenario given" if scenario else "the defaults"
     if patch is not None:
-        params = {k: dict(v) if isinstance(v, dict) else v for k, v in (params or {}).items()}
-        params["contact"] = {**params.get("contact", {}), "patch": patch}
+        patched = {k: dict(v) if isinstance(v, dict) else v for k, v in (params or {}).items()}
+        patched["contact"] = {**patched.get("contact", {}), "patch": patch}
+        params = patched
     P = rig_params.check_parameters(params, source=source)
     build._build(source, P, dt=None, method=method, substeps=None, ode=None, nx=None,
                  ny=None, roller_speed=None, start="rolling", creep={})
@@ -277,7 +292,7 @@ def check_scenario(scenario, *, source, method=None, patch=None):
 
 # ------------------------------------------------------------------ compiling
 
-def _run(cmd, what, cwd=None):
+def _run(cmd: Sequence[str], what: str, cwd: Optional[Path] = None) -> str:
     proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                           cwd=cwd)
     if proc.returncode != 0:
@@ -286,11 +301,11 @@ def _run(cmd, what, cwd=None):
     return proc.stdout
 
 
-def _stage_sources(src, fmi_version):
+def _stage_sources(src: Path, fmi_version: int) -> Tuple[List[str], List[str]]:
     """Copy the core's sources and headers and the adapter into src/;
     return (the core's .c files, the FMU's own .c files), relative to src."""
     sources, headers = core_c_dirs()
-    core = []
+    core: List[str] = []
     for path in sorted(Path(sources).glob("*/rr_*.c")):
         rel = path.relative_to(sources)
         (src / rel.parent).mkdir(parents=True, exist_ok=True)
@@ -311,13 +326,14 @@ def _stage_sources(src, fmi_version):
     return core, own
 
 
-def _compile_all(cc, files, src, obj_dir, jobs):
+def _compile_all(cc: List[str], files: Sequence[str], src: Path, obj_dir: Path,
+                 jobs: int) -> Dict[str, Path]:
     """Compile src/<file> into obj_dir, largest first, `jobs` at a time;
     return {file: object path}."""
     obj_dir.mkdir(parents=True, exist_ok=True)
     objects = {f: obj_dir / (f.replace("/", "__")[:-2] + ".o") for f in files}
 
-    def one(f):
+    def one(f: str) -> None:
         _run(cc + list(CFLAGS) + [f"-I{src}", "-c", str(src / f), "-o", str(objects[f])],
              f"compiling {f}")
     order = sorted(files, key=lambda f: -(src / f).stat().st_size)
@@ -327,7 +343,8 @@ def _compile_all(cc, files, src, obj_dir, jobs):
     return objects
 
 
-def _core_objects(cc, core, src, work, jobs, cache_dir):
+def _core_objects(cc: List[str], core: Sequence[str], src: Path, work: Path, jobs: int,
+                  cache_dir: Optional[Union[str, "os.PathLike[str]"]]) -> Dict[str, Path]:
     """The core's objects: compiled in work/, or taken from cache_dir when
     it holds those of the same compiler, flags and sources (the tests build
     several FMUs)."""
@@ -351,7 +368,7 @@ def _core_objects(cc, core, src, work, jobs, cache_dir):
     return {f: cached / (f.replace("/", "__")[:-2] + ".o") for f in core}
 
 
-def _build_description(identifier, files):
+def _build_description(identifier: str, files: Iterable[str]) -> str:
     lines = ['<?xml version="1.0" encoding="UTF-8"?>', '<fmiBuildDescription fmiVersion="3.0">',
              f'  <BuildConfiguration modelIdentifier="{identifier}" description="the rig\'s C '
              f'core, its FMU layer and the FMI 3.0 adapter: compile every file with the '
@@ -367,7 +384,7 @@ def _build_description(identifier, files):
 def build_fmu(out: Union[str, "os.PathLike[str]"], scenario: Params = None, fmi_version: int = 2,
               *, cc: Optional[str] = None, jobs: Optional[int] = None,
               cache_dir: Optional[Union[str, "os.PathLike[str]"]] = None,
-              quiet: bool = True) -> str:
+              quiet: bool = True) -> Path:
     """Write a co-simulation FMU of the rig to `out`, a name ending in .fmu:
     a new path or a regular file, replaced whole (never a symbolic link, a
     directory, a device or a FIFO; its folder must exist), checked before
@@ -393,14 +410,14 @@ def build_fmu(out: Union[str, "os.PathLike[str]"], scenario: Params = None, fmi_
     P, source = check_scenario(scenario, source="rollerrig fmu: scenario")
     identifier = model_identifier(out)
     plat, ext = _platform_dir(fmi_version)
-    cc = find_compiler(cc)
+    cc_cmd = find_compiler(cc)
     jobs = max(1, int(jobs or os.cpu_count() or 1))
     if cache_dir is None and os.environ.get("ROLLERRIG_FMU_CACHE"):
         cache_dir = os.environ["ROLLERRIG_FMU_CACHE"]
     if cache_dir is not None:
         Path(cache_dir).mkdir(parents=True, exist_ok=True)
-    with tempfile.TemporaryDirectory(prefix="rollerrig-fmu-") as tmp:
-        tmp = Path(tmp)
+    with tempfile.TemporaryDirectory(prefix="rollerrig-fmu-") as tmp_name:
+        tmp = Path(tmp_name)
         stage = tmp / "fmu"
         src = stage / "sources"
         src.mkdir(parents=True)
@@ -413,18 +430,18 @@ def build_fmu(out: Union[str, "os.PathLike[str]"], scenario: Params = None, fmi_
                                      f"{fmi_version}:{identifier}:{digest.hexdigest()}")) + "}"
         (src / "fmu_start.c").write_text(start_c.replace("@TOKEN@", _c_string(token)))
         own.append("fmu_start.c")
-        objects = _core_objects(cc, core, src, tmp, jobs, cache_dir)
-        objects.update(_compile_all(cc, own, src, tmp / "own", jobs))
+        objects = _core_objects(cc_cmd, core, src, tmp, jobs, cache_dir)
+        objects.update(_compile_all(cc_cmd, own, src, tmp / "own", jobs))
         binary_dir = stage / "binaries" / plat
         binary_dir.mkdir(parents=True)
         binary = binary_dir / (identifier + ext)
         all_files = core + own
-        _run(cc + ["-shared", "-o", str(binary)] + [str(objects[f]) for f in all_files]
+        _run(cc_cmd + ["-shared", "-o", str(binary)] + [str(objects[f]) for f in all_files]
              + ["-lm"], "linking the FMU's binary")
         # the description, from the C side at the FMU's start values
         shutil.copyfile(FMI_DATA / "fmu_describe.c", tmp / "fmu_describe.c")
         describe = tmp / "fmu_describe"
-        _run(cc + list(CFLAGS) + [f"-I{src}", str(tmp / "fmu_describe.c"), "-o", str(describe)]
+        _run(cc_cmd + list(CFLAGS) + [f"-I{src}", str(tmp / "fmu_describe.c"), "-o", str(describe)]
              + [str(objects[f]) for f in core] + [str(objects["fmu_start.c"]), "-lm"],
              "building the description program")
         description = (f"The Politecnico di Torino 1/5 roller rig (a wheelset on driven "
@@ -441,7 +458,7 @@ def build_fmu(out: Union[str, "os.PathLike[str]"], scenario: Params = None, fmi_
             (src / "buildDescription.xml").write_text(_build_description(identifier,
                                                                          all_files))
 
-        def pack(fh):
+        def pack(fh: BinaryIO) -> None:
             with zipfile.ZipFile(fh, "w", zipfile.ZIP_DEFLATED) as z:
                 for path in sorted(p for p in stage.rglob("*") if p.is_file()):
                     z.write(path, path.relative_to(stage).as_posix())
@@ -454,11 +471,27 @@ def build_fmu(out: Union[str, "os.PathLike[str]"], scenario: Params = None, fmi_
 
 # ------------------------------------------------------------------ the variable list
 
+class _Row(TypedDict):
+    """One variable of a modelDescription.xml, as the tables show it."""
+    name: str
+    vr: Optional[str]
+    causality: Optional[str]
+    variability: Optional[str]
+    type: str
+    unit: str
+    start: str
+    range: str
+    description: str
+
+
+#: a table's column: (its heading, a row's cell)
+_Column = Tuple[str, Callable[[_Row], object]]
+
 DOCS_PATH = Path(__file__).resolve().parent.parent / "docs" / "fmu.md"
 _DOCS_BEGIN, _DOCS_END = "<!-- begin variables -->", "<!-- end variables -->"
 
 
-def variables_markdown(xml):
+def variables_markdown(xml: str) -> str:
     """The variables of an FMI 2.0 modelDescription.xml (text) as Markdown
     tables: control parameters, inputs, outputs (the record, the encoders,
     each wheel's contact block), the rig's parameters."""
@@ -466,7 +499,7 @@ def variables_markdown(xml):
     root = ET.fromstring(xml)
     items = {t.get("name"): {i.get("value"): i.get("name") for i in t.iter("Item")}
              for t in root.iter("SimpleType")}
-    rows = []
+    rows: List[_Row] = []
     for sv in root.iter("ScalarVariable"):
         kind = next(iter(sv))
         start = kind.get("start")
@@ -477,25 +510,25 @@ def variables_markdown(xml):
                                                     f"{hi if hi is not None else ''}"
         if kind.tag == "Enumeration":
             rng = ", ".join(f'"{n}"' for n in items[kind.get("declaredType")].values())
-        rows.append(dict(name=sv.get("name"), vr=sv.get("valueReference"),
+        rows.append(_Row(name=sv.attrib["name"], vr=sv.get("valueReference"),
                          causality=sv.get("causality"), variability=sv.get("variability"),
                          type=kind.tag, unit=kind.get("unit", ""), start=start or "",
                          range=rng, description=sv.get("description", "")))
 
-    def esc(text):
+    def esc(text: str) -> str:
         return text.replace("|", "\\|")
 
-    def table(selected, columns):
+    def table(selected: Iterable[_Row], columns: Sequence[_Column]) -> List[str]:
         out = ["| " + " | ".join(c for c, _ in columns) + " |",
                "| " + " | ".join("---" for _ in columns) + " |"]
         for r in selected:
             out.append("| " + " | ".join(esc(str(f(r))) for _, f in columns) + " |")
         return out
 
-    name = ("name", lambda r: f"`{r['name']}`")
-    vr = ("vr", lambda r: r["vr"])
-    unit = ("unit", lambda r: r["unit"])
-    desc = ("description", lambda r: r["description"])
+    name: _Column = ("name", lambda r: f"`{r['name']}`")
+    vr: _Column = ("vr", lambda r: r["vr"])
+    unit: _Column = ("unit", lambda r: r["unit"])
+    desc: _Column = ("description", lambda r: r["description"])
     control = [r for r in rows if r["name"].startswith("control.")]
     inputs = [r for r in rows if r["causality"] == "input"]
     outputs = [r for r in rows if r["causality"] == "output"]
@@ -527,7 +560,7 @@ def variables_markdown(xml):
     return "\n".join(L) + "\n"
 
 
-def docs_text(xml, path=DOCS_PATH):
+def docs_text(xml: str, path: Union[str, "os.PathLike[str]"] = DOCS_PATH) -> str:
     """docs/fmu.md with its generated variable list replaced by that of xml."""
     text = Path(path).read_text(encoding="utf-8")
     head, rest = text.split(_DOCS_BEGIN, 1)
@@ -535,7 +568,8 @@ def docs_text(xml, path=DOCS_PATH):
     return head + _DOCS_BEGIN + "\n" + variables_markdown(xml) + _DOCS_END + tail
 
 
-def write_docs(fmu_path, path=DOCS_PATH):
+def write_docs(fmu_path: Union[str, "os.PathLike[str]"],
+               path: Union[str, "os.PathLike[str]"] = DOCS_PATH) -> Union[str, "os.PathLike[str]"]:
     """Rewrite docs/fmu.md's variable list from an FMI 2.0 FMU (built from
     the defaults: rollerrig fmu rig.fmu)."""
     with zipfile.ZipFile(fmu_path) as z:

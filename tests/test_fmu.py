@@ -19,6 +19,8 @@ import pytest
 
 import rollerrig as rr
 from rollerrig import cli, fmu, rig
+from rollerrig._units import DIMENSIONLESS, cf_unit
+from test_units import pint_problems
 
 fmpy = pytest.importorskip("fmpy", reason="the test extra installs FMPy")
 from fmpy import read_model_description, simulate_fmu  # noqa: E402
@@ -167,13 +169,17 @@ def test_contents_binary_sources_and_exports(fmus, unzipped, version):
 def test_variables_come_from_the_declarations(unzipped):
     md = read_model_description(str(unzipped[2]))
     by_name = {v.name: v for v in md.modelVariables}
-    units = {"": None, "-": None, "1": None}     # dimensionless: no unit in the FMU
+
+    def unit(declared, v):
+        """The FMU's unit of a declaration's: the package's spelling ("-" is
+        "1"), on a real only (FMI has none for the other types)."""
+        return (cf_unit(declared) or None) if v.type == "Real" else None
     for p in rig.PARAMETERS:
         names = [p.name] if p.type != "list" else \
             [f"{p.name}[{k + 1}]" for k in range(len(p.default))]
         for k, n in enumerate(names):
             v = by_name[n]
-            assert v.causality == "parameter" and v.unit == units.get(p.unit, p.unit), n
+            assert v.causality == "parameter" and v.unit == unit(p.unit, v), n
             default = rig.params._default_value(p)
             if p.type == "list":
                 assert float(v.start) == default[k], n
@@ -184,17 +190,44 @@ def test_variables_come_from_the_declarations(unzipped):
                 assert v.start == ("true" if default else "false"), n
             else:
                 assert float(v.start) == float(default), n
-    for name, unit, meaning in rig.RECORD:
+    for name, declared, meaning in rig.RECORD:
         if name == "time":
             continue
         v = by_name[name]
         assert v.causality == "output" and v.description == meaning \
-            and v.unit == units.get(unit, unit), name
+            and v.unit == unit(declared, v), name
     assert by_name["sample_status"].type == "Integer"
     assert by_name["mu"].causality == "input" and float(by_name["mu"].start) == 0.4
     assert by_name["scenario.mu0"].variability == "tunable"
     assert by_name["wheelset.mass_kg"].variability == "fixed"
     assert md.defaultExperiment.stepSize == "0.004" and md.defaultExperiment.stopTime == "20"
+
+
+@pytest.mark.parametrize("version", fmu.FMI_VERSIONS)
+def test_every_real_has_a_defined_unit_pint_reads(unzipped, version):
+    # issue 26, item 4: every real carries a unit, dimensionless ones the
+    # package's "1" (never empty), each defined in <UnitDefinitions> with base
+    # units (written by the C side) that pint's reading of the unit agrees with
+    pint = pytest.importorskip("pint")
+    md = read_model_description(str(unzipped[version]))
+    reals = [v for v in md.modelVariables if v.type in ("Real", "Float64")]
+    assert len(reals) > 150
+    assert [v.name for v in reals if not v.unit] == []
+    assert [v.name for v in md.modelVariables if v not in reals and v.unit] == []
+    defined = {u.name: u.baseUnit for u in md.unitDefinitions}
+    assert {v.unit for v in reals} == set(defined)     # each one used is defined, no other
+    assert pint_problems([(f"FMI {version} {v.name}", v.unit) for v in reals]) == []
+    ureg = pint.UnitRegistry()
+    for name, base in defined.items():
+        root = ureg.Quantity(1.0, name).to_root_units()      # in gram, metre, second, radian
+        exps = dict(root.unit_items())
+        assert base is not None and (base.kg, base.m, base.s, base.rad) == tuple(
+            exps.pop(k, 0) for k in ("gram", "meter", "second", "radian")) and not exps, name
+        assert base.factor == 1.0 and base.offset == 0.0 \
+            and root.magnitude == pytest.approx(1000.0 ** base.kg, rel=1e-12), name
+    by_name = {v.name: v for v in md.modelVariables}
+    for name in ("creepage", "scenario.mu0", "left.cx", "encoder.roller_count"):
+        assert by_name[name].unit == DIMENSIONLESS, name
 
 
 def test_docs_list_the_variables(unzipped):

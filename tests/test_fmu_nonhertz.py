@@ -4,7 +4,6 @@ on as generated data (sources/fmu_start.c, rr_fmu_start_nonhertz), and
 FMPy's run of it is rollerrig.simulate()'s, bit for bit, on S1002/UIC60 and
 on the measured pair, FMI 2 and 3 (the pattern of
 tests/test_rig_profiles_fmu.py)."""
-import os
 import warnings
 import zipfile
 
@@ -17,34 +16,20 @@ from rollerrig import fmu
 fmpy = pytest.importorskip("fmpy", reason="the test extra installs FMPy")
 from fmpy import read_model_description, simulate_fmu  # noqa: E402
 from fmpy.simulation import instantiate_fmu  # noqa: E402
-from test_fmu import _bits_differ  # noqa: E402  (the record, bit for bit)
+from test_fmu import _bits_differ, cache  # noqa: E402,F401  (bit for bit; one core build)
+import test_rig_profiles_fmu as profiles_fmu  # noqa: E402  (its pairs)
 
 pytestmark = pytest.mark.slow     # FMUs compiled and run by FMPy
 
 T = 0.004
-DATA = os.path.join(os.path.dirname(rr.__file__), "data")
-SHORT = {"scenario": {"duration_s": 2.0, "targets": [0.04, 0.015], "target_start_s": [0.0, 1.0]},
+SHORT = {**profiles_fmu.SHORT,
          "contact": {"patch": "nonhertz", "nonhertz_half_range_m": 8e-5,
                      "nonhertz_elements": 16}}
-PAIRS = {"s1002_uic60": {"wheelset": {"profile": "s1002"}, "roller": {"profile": "uic60"}},
-         "measured": os.path.join(DATA, "rig_measured_pair.toml")}
+PAIRS = profiles_fmu.PAIRS
 
 
 def _scenario(pair):
-    p = PAIRS[pair]
-    if isinstance(p, str):
-        p = rr.load_parameters(p)
-    return {**p, **SHORT}
-
-
-@pytest.fixture(scope="module")
-def cache():
-    try:
-        fmu.core_c_dirs()
-        fmu.find_compiler()
-    except fmu.FmuBuildError as e:
-        pytest.skip(str(e))
-    return os.environ.get("ROLLERRIG_FMU_CACHE")
+    return profiles_fmu._scenario(pair, SHORT)
 
 
 @pytest.mark.parametrize("pair", sorted(PAIRS))

@@ -409,13 +409,29 @@ def test_force_is_continuous_where_a_second_patch_takes_the_load():
     ys = np.arange(-5.3e-3, -4.5e-3 + 1e-9, 1e-5)
     kw = dict(spin=2.0 / 0.46, roller_spin=2.0 / 1e4, mu=0.3, E=E, nu=0.28, Fz_left=1e4,
               Fz_right=1e4)
-    F = np.array([rr.rig_contact(ct, y=y, patch="nonhertz", nonhertz=tab, **kw).right.force
-                  for y in ys])
+    wheels = [rr.rig_contact(ct, y=y, patch="nonhertz", nonhertz=tab, **kw).right for y in ys]
+    F = np.array([w.force for w in wheels])
     muN = 0.3 * 1e4
     step = np.linalg.norm(np.diff(F, axis=0), axis=1) / muN
     bend = np.linalg.norm(np.diff(F, 2, axis=0), axis=1) / muN
     assert step.max() <= 0.03, (step.max(), ys[np.argmax(step)])
     assert bend.max() <= 0.015, (bend.max(), ys[np.argmax(bend) + 1])
+    # each patch is one region's, blended with the same region of the other
+    # row (matched by place, weighted by load): loaded, and where its rows
+    # put that region (measured within 0.14 mm; blended by index, a row's
+    # root with the next's tread, or with an unloaded patch's zeros, it lay
+    # up to 363 mm away)
+    ry = tab.right.y
+    regions = {float(y): [p.point for p in rr.rig_contact(ct, y=float(y), patch="nonhertz",
+                                                          nonhertz=tab, **kw).right.patches]
+               for y in ry}
+    for y, w in zip(ys, wheels):
+        i = int(np.clip(np.searchsorted(ry, y) - 1, 0, len(ry) - 2))
+        near = regions[float(ry[i])] + regions[float(ry[i + 1])]
+        for p in w.patches:
+            assert p.N > 0.0, (y, p)
+            d = min(np.linalg.norm(p.point - q) for q in near)
+            assert d <= 0.5e-3, (y, d, p.point)
 
 
 def test_a_row_that_cannot_be_built_is_named():

@@ -15,7 +15,7 @@ from rollerrig import fmu
 fmpy = pytest.importorskip("fmpy", reason="the test extra installs FMPy")
 from fmpy import read_model_description, simulate_fmu  # noqa: E402
 from fmpy.simulation import instantiate_fmu  # noqa: E402
-from test_fmu import _bits_differ  # noqa: E402  (the record, bit for bit)
+from test_fmu import _bits_differ, cache  # noqa: E402,F401  (bit for bit; one core build)
 from fmpy.validation import validate_fmu  # noqa: E402
 
 pytestmark = pytest.mark.slow     # FMUs compiled and run by FMPy
@@ -27,21 +27,11 @@ PAIRS = {"s1002_uic60": {"wheelset": {"profile": "s1002"}, "roller": {"profile":
          "measured": os.path.join(DATA, "rig_measured_pair.toml")}
 
 
-def _scenario(pair):
+def _scenario(pair, short=SHORT):
     p = PAIRS[pair]
     if isinstance(p, str):
         p = rr.load_parameters(p)
-    return {**p, **SHORT}
-
-
-@pytest.fixture(scope="module")
-def cache():
-    try:
-        fmu.core_c_dirs()
-        fmu.find_compiler()
-    except fmu.FmuBuildError as e:
-        pytest.skip(str(e))
-    return os.environ.get("ROLLERRIG_FMU_CACHE")
+    return {**p, **short}
 
 
 @pytest.mark.parametrize("pair", sorted(PAIRS))

@@ -155,7 +155,7 @@ typedef struct {
     const char *prefix;         /* "" or a wheel's "left." / "right." */
     const char *base;           /* the name, or with entry >= 0 its stem: base[entry + 1] */
     int entry;                  /* -1, or the list entry / vector component (from 0) */
-    const char *unit;           /* "" none ("-" dimensionless: none either) */
+    const char *unit;           /* "" none, "-" dimensionless (the XML's "1") */
     const char *description;
     int type;                   /* enum rr_fmu_type */
     int causality;              /* enum rr_fmu_causality */

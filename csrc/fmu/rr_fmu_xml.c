@@ -72,6 +72,7 @@ static int symbol(const char *s, size_t n, int e[4], int sign)
     } symbols[] = {
         {"kg", {1, 0, 0, 0}}, {"m", {0, 1, 0, 0}}, {"s", {0, 0, 1, 0}},
         {"rad", {0, 0, 0, 1}}, {"N", {1, 1, -2, 0}}, {"Pa", {1, -1, -2, 0}},
+        {"1", {0, 0, 0, 0}},                         /* dimensionless (CF, UDUNITS) */
     };
     size_t len = n;
     int power = 1, i, j;
@@ -120,9 +121,15 @@ int rr_fmu_unit_base(const char *unit, int e[4])
     return 1;
 }
 
-static int has_unit(const rr_fmu_var *v)
+/* The unit the description gives v: its declaration's in the CF / UDUNITS
+ * spelling the package writes (rollerrig/_units.py: the C tables' "-",
+ * dimensionless, is "1"), or NULL: none for a name, a flag, a choice or an
+ * integer (FMI gives units to reals only). */
+static const char *xml_unit(const rr_fmu_var *v)
 {
-    return v->unit[0] && strcmp(v->unit, "-") != 0;
+    if (v->type != RR_FMU_REAL || !v->unit[0])
+        return NULL;
+    return strcmp(v->unit, "-") == 0 ? "1" : v->unit;
 }
 
 static void unit_definitions(out *o, const rr_fmu_config *start)
@@ -134,18 +141,19 @@ static void unit_definitions(out *o, const rr_fmu_config *start)
     for (i = 0; i < n; i++) {
         rr_fmu_var v, w;
         int e[4], seen = 0;
+        const char *unit, *other;
         rr_fmu_var_at(start, i, &v);
-        if (!has_unit(&v))
+        if ((unit = xml_unit(&v)) == NULL)
             continue;
         for (j = 0; j < i && !seen; j++) {
             rr_fmu_var_at(start, j, &w);
-            seen = has_unit(&w) && strcmp(w.unit, v.unit) == 0;
+            seen = (other = xml_unit(&w)) != NULL && strcmp(other, unit) == 0;
         }
         if (seen)
             continue;
         put(o, "    <Unit");
-        put_attr(o, "name", v.unit);
-        if (rr_fmu_unit_base(v.unit, e)) {
+        put_attr(o, "name", unit);
+        if (rr_fmu_unit_base(unit, e)) {
             put(o, ">\n      <BaseUnit");
             for (k = 0; k < 4; k++)
                 if (e[k])
@@ -236,8 +244,8 @@ static void put_type(out *o, const rr_fmu_config *start, const rr_fmu_var *v, co
 {
     if (v->type == RR_FMU_ENUMERATION)
         put_attr(o, "declaredType", name);
-    if (has_unit(v))
-        put_attr(o, "unit", v->unit);
+    if (xml_unit(v))
+        put_attr(o, "unit", xml_unit(v));
     put_values(o, start, v);
 }
 

@@ -9,7 +9,11 @@
  *
  * Ranges: FMI's min and max are inclusive; an open end (a mass > 0) is
  * written as its bound, and the unit refuses the bound itself when it is
- * set (rr_fmu_set).  Units "-" and "" (dimensionless, names) get none.
+ * set (rr_fmu_set).  Units are written in the CF / UDUNITS spelling the
+ * package writes (rollerrig/_units.py): the declarations' "-"
+ * (dimensionless) as "1"; every unit used has its <UnitDefinitions> entry.
+ * A name, a flag, a choice and an integer get none (FMI gives units to
+ * reals only).
  */
 #ifndef RR_FMU_XML_H
 #define RR_FMU_XML_H
@@ -42,9 +46,9 @@ long rr_fmu_xml(const rr_fmu_xml_info *info, const rr_fmu_config *start, char *b
 /*
  * rr_fmu_unit_base - the SI base-unit exponents of a unit text as the rig's
  * declarations write them ("N m s/rad", "kg m^2", "m/s^2": symbols kg, m,
- * s, rad, N, Pa, separated by spaces, one "/" before the denominator, "^n"
- * powers): e[0..3] the exponents of kg, m, s, rad.  1 if every symbol is
- * known, else 0 (e unspecified).
+ * s, rad, N, Pa and 1 (dimensionless), separated by spaces, one "/" before
+ * the denominator, "^n" powers): e[0..3] the exponents of kg, m, s, rad.
+ * 1 if every symbol is known, else 0 (e unspecified).
  */
 int rr_fmu_unit_base(const char *unit, int e[4]);
 

@@ -22,7 +22,14 @@
  * reading out of order is refused (RR_ERR_SEQUENCE); a torque command is
  * held clipped at its limit; rr_rig_run's count and
  * status as documented; rhs and jac finite on success; set_state refuses
- * non-finite input and leaves the state alone.
+ * non-finite input and leaves the state alone.  The full state
+ * (rr_rig_get_full_state, rr_rig_set_full_state): NaN on error, on success
+ * no infinity and NaN only where documented (xi_ref, creepctl_w_ref); a
+ * rig that never started refuses both; its own state set back leaves the
+ * same bits (taken, or refused where rr_rig_set_state had put the plant
+ * off its rollers); one value moved anywhere (NaN, infinities, huge, a flag or
+ * counter off its values) either refused with nothing changed or taken,
+ * and the rig then steps or refuses with a status.
  */
 #include <stddef.h>
 #include "fuzz_rig.h"
@@ -381,9 +388,72 @@ static int command_invalid(const rr_rig_command *c)
         || (!isnan(c->mu0) && !(c->mu0 > 0.0 && c->mu0 <= RR_FRICTION_MAX));
 }
 
+/* NaN may stand in the full state only where rr_rig.h says so. */
+static int nan_allowed(int k)
+{
+    return k == RR_FS_XI_REF || k == RR_FS_CREEPCTL_W_REF;
+}
+
+static void check_full_state(const char *fn, int st, const double *v)
+{
+    int k;
+    if (st < 0) {
+        if (!fz_all_nan(v, RR_FS_COUNT))
+            fz_fail("%s: status %d but the state is not NaN", fn, st);
+        return;
+    }
+    for (k = 0; k < RR_FS_COUNT; k++)
+        if (isinf(v[k]) || (isnan(v[k]) && !nan_allowed(k)))
+            fz_fail("%s: status %d, %s = %g", fn, st, rr_rig_full_state_names()[k], v[k]);
+}
+
+/* get, set it back (the same bits), then one value moved and set: refused
+ * with nothing changed, or taken */
+static void full_state_op(fz_in *in, rr_rig *rig)
+{
+    double v[RR_FS_COUNT], w[RR_FS_COUNT], u[RR_FS_COUNT];
+    const int k = fz_choice(in, RR_FS_COUNT);
+    const double moved = fz_slog(in, 1e-6, 1e6);
+    int st;
+
+    if (rr_rig_full_state_len() != RR_FS_COUNT)
+        fz_fail("rr_rig_full_state_len: %d, not %d", rr_rig_full_state_len(), RR_FS_COUNT);
+    st = rr_rig_get_full_state(rig, v);
+    fz_status("rr_rig_get_full_state", st);
+    check_full_state("rr_rig_get_full_state", st, v);
+    if (init_failed && st >= 0)
+        fz_fail("rr_rig_get_full_state: status %d on a rig whose init failed", st);
+    if (st < 0)
+        return;
+    /* the rig's own state: taken back, or (a plant state rr_rig_set_state
+     * took unchecked: a wheel off its roller) refused; either way the same
+     * bits after */
+    st = rr_rig_set_full_state(rig, v);
+    fz_status("rr_rig_set_full_state", st);
+    st = rr_rig_get_full_state(rig, w);
+    if (st < 0 || memcmp(v, w, sizeof v) != 0)
+        fz_fail("rr_rig_set_full_state: the rig's own state not the same bits after a set");
+    memcpy(u, v, sizeof u);
+    u[k] = moved;
+    fz_note(" full state %s = %.17g", rr_rig_full_state_names()[k], moved);
+    st = rr_rig_set_full_state(rig, u);
+    fz_status("rr_rig_set_full_state", st);
+    if (!isfinite(moved) && !nan_allowed(k) && st >= 0)
+        fz_fail("rr_rig_set_full_state: status %d for %s = %g", st,
+                rr_rig_full_state_names()[k], moved);
+    {
+        const int refused = st < 0;
+        st = rr_rig_get_full_state(rig, w);
+        check_full_state("rr_rig_get_full_state", st, w);
+        if (refused && (st < 0 || memcmp(v, w, sizeof v) != 0))
+            fz_fail("rr_rig_set_full_state: refused %s = %g but changed the state",
+                    rr_rig_full_state_names()[k], moved);
+    }
+}
+
 static void one_op(fz_in *in, rr_rig *rig)
 {
-    const int op = fz_choice(in, 10);
+    const int op = fz_choice(in, 11);
     double y0[RR_RIG_NSTATE], t0 = rig->t;
     double *rec = fz_alloc(RR_REC_COUNT * sizeof *rec);
     double y[RR_RIG_NSTATE], *J;
@@ -553,6 +623,9 @@ static void one_op(fz_in *in, rr_rig *rig)
         }
         break;
     }
+    case 10:
+        full_state_op(in, rig);
+        break;
     default:
         st = rr_rig_record(rig, rec);
         fz_status("rr_rig_record", st);

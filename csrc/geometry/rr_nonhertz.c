@@ -492,15 +492,18 @@ static void nan_result(rr_nh_result *out)
     out->N = out->area = out->pmax = out->w = out->dz[0] = out->dz[1] = NAN;
 }
 
-/* a += w b for the blended fields of a patch. */
-static void add_patch(rr_nh_patch *a, const rr_nh_patch *b, double w)
+/* a += w b for the blended fields of a patch: loads, forces and sizes by
+ * the row's weight w, the place and the plane by w times the patch's load
+ * (*wn its sum: an unloaded patch has no place, its zeros must not pull a
+ * loaded one's). */
+static void add_patch(rr_nh_patch *a, double *wn, const rr_nh_patch *b, double w)
 {
+    const double v = w * b->N;
     int m;
     a->N += w * b->N;
     a->fx += w * b->fx;
     a->fy += w * b->fy;
     a->mz += w * b->mz;
-    a->delta += w * b->delta;
     a->cx += w * b->cx;
     a->cy += w * b->cy;
     a->cphi += w * b->cphi;
@@ -508,12 +511,14 @@ static void add_patch(rr_nh_patch *a, const rr_nh_patch *b, double w)
     a->pmax += w * b->pmax;
     a->a += w * b->a;
     a->b += w * b->b;
+    *wn += v;
+    a->delta += v * b->delta;
     for (m = 0; m < 3; m++) {
         a->force[m] += w * b->force[m];
-        a->point[m] += w * b->point[m];
-        a->t1[m] += w * b->t1[m];
-        a->t2[m] += w * b->t2[m];
-        a->n[m] += w * b->n[m];
+        a->point[m] += v * b->point[m];
+        a->t1[m] += v * b->t1[m];
+        a->t2[m] += v * b->t2[m];
+        a->n[m] += v * b->n[m];
     }
 }
 
@@ -523,6 +528,36 @@ static void normalise(double *v)
     v[0] /= l;
     v[1] /= l;
     v[2] /= l;
+}
+
+/* The output slot of each row's patches: a row's patches are ordered by
+ * rig Y (rr_nonhertz_bands.c), so rows of one count pair them in order;
+ * where one row has a patch fewer, each of its patches takes the slot of
+ * the other row's nearest (the same region a row away), so that no patch
+ * blends one region's place with another's.  Rows of zero weight keep
+ * their order. */
+static void match_patches(const rr_nh_result rr[2], const double wt[2],
+                          int slot[2][RR_NH_MAX_PATCHES])
+{
+    int j, k, m;
+    for (j = 0; j < 2; j++)
+        for (k = 0; k < RR_NH_MAX_PATCHES; k++)
+            slot[j][k] = k;
+    if (wt[0] == 0.0 || wt[1] == 0.0 || rr[0].npatch == rr[1].npatch)
+        return;
+    j = rr[0].npatch < rr[1].npatch ? 0 : 1;        /* the row with fewer */
+    for (k = 0; k < rr[j].npatch; k++) {
+        double best = INFINITY;
+        for (m = 0; m < rr[1 - j].npatch; m++) {
+            const double *a = rr[j].patch[k].point, *b = rr[1 - j].patch[m].point;
+            const double d = (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1])
+                             + (a[2] - b[2]) * (a[2] - b[2]);
+            if (d < best) {
+                best = d;
+                slot[j][k] = m;
+            }
+        }
+    }
 }
 
 int rr_nonhertz_wheel(const rr_nh_table *t, const rr_nh_state *s, rr_nh_result *out)
@@ -538,7 +573,8 @@ int rr_nonhertz_wheel_law(const rr_nh_table *t, const rr_nh_state *s, double A, 
     rr_nh_result rr[2];
     const double *row[2];
     double w, wt[2];
-    int i, j, m, st, calls;
+    double wn[RR_NH_MAX_PATCHES] = {0.0};
+    int i, j, k, m, st, calls, slot[2][RR_NH_MAX_PATCHES];
     if (!out)
         return RR_ERR_NULL;
     nan_result(out);
@@ -580,47 +616,48 @@ int rr_nonhertz_wheel_law(const rr_nh_table *t, const rr_nh_state *s, double A, 
         }
         calls += rr[j].table_calls;
     }
-    /* the blend: totals, moments about each row's centre, patches by index */
+    /* the blend: totals, moments about each row's centre, each patch with
+     * its own region's in the other row (match_patches) */
+    match_patches(rr, wt, slot);
     memset(out, 0, sizeof *out);
     out->tz = tz;
     out->row = i;
     out->w = w;
     out->table_calls = calls;
     for (j = 0; j < 2; j++) {
-        int k;
         out->dz[j] = wt[j] == 0.0 ? NAN : rr[j].dz[0];
         if (wt[j] == 0.0)
             continue;
-        if (rr[j].npatch > out->npatch)
-            out->npatch = rr[j].npatch;
         for (k = 0; k < rr[j].npatch; k++) {
             const rr_nh_patch *p = &rr[j].patch[k];
             const double *c = s->motion[j].c;
             const double r[3] = {p->point[0] - c[0], p->point[1] - c[1], p->point[2] - c[2]};
             const double *n = p->n;
-            add_patch(&out->patch[k], p, wt[j]);
+            if (slot[j][k] + 1 > out->npatch)
+                out->npatch = slot[j][k] + 1;
+            add_patch(&out->patch[slot[j][k]], &wn[slot[j][k]], p, wt[j]);
             out->moment[0] += wt[j] * (r[1] * p->force[2] - r[2] * p->force[1] + p->mz * n[0]);
             out->moment[1] += wt[j] * (r[2] * p->force[0] - r[0] * p->force[2] + p->mz * n[1]);
             out->moment[2] += wt[j] * (r[0] * p->force[1] - r[1] * p->force[0] + p->mz * n[2]);
         }
     }
-    /* a patch only one row has keeps that row's place and angle */
-    for (j = 0; j < out->npatch; j++) {
-        const int in0 = wt[0] != 0.0 && j < rr[0].npatch, in1 = wt[1] != 0.0 && j < rr[1].npatch;
-        if (in0 != in1) {
-            const rr_nh_patch *p = in0 ? &rr[0].patch[j] : &rr[1].patch[j];
-            out->patch[j].delta = p->delta;
-            for (m = 0; m < 3; m++) {
-                out->patch[j].point[m] = p->point[m];
-                out->patch[j].t1[m] = p->t1[m];
-                out->patch[j].t2[m] = p->t2[m];
-                out->patch[j].n[m] = p->n[m];
-            }
-        }
-        normalise(out->patch[j].t1);
-        normalise(out->patch[j].t2);
-        normalise(out->patch[j].n);
+    /* the place and plane by load; an unloaded patch (a region that
+     * touches only above this load, in both rows) left out */
+    for (j = k = 0; j < out->npatch; j++) {
+        rr_nh_patch *p = &out->patch[j];
+        if (!(wn[j] > 0.0))
+            continue;
+        p->delta /= wn[j];
+        for (m = 0; m < 3; m++)
+            p->point[m] /= wn[j];
+        normalise(p->t1);
+        normalise(p->t2);
+        normalise(p->n);
+        if (k != j)
+            out->patch[k] = *p;
+        k++;
     }
+    out->npatch = k;
     for (j = 0; j < out->npatch; j++) {
         const rr_nh_patch *p = &out->patch[j];
         out->N += p->N;

@@ -152,8 +152,10 @@ typedef struct {
                              c its centre, v, w) */
 } rr_nh_state;
 
-/* One patch of the result (row i's and row i + 1's blended; a patch only
- * one row has enters with that row's weight). */
+/* One patch of the result: row i's and row i + 1's patch of the same
+ * region blended (matched by place: in order where the rows have as many,
+ * else the nearest); a patch only one row has enters with that row's
+ * weight, at its place. */
 typedef struct {
     double N;             /* normal load [N] */
     double fx, fy, mz;    /* creep forces on the wheel along t1, t2 [N], spin moment about

@@ -654,6 +654,8 @@ static void test_xml(const rr_fmu_config *f)
     CHECK(rr_fmu_unit_base("kg m^2", e) && e[0] == 1 && e[1] == 2, "kg m^2");
     CHECK(rr_fmu_unit_base("Pa", e) && e[0] == 1 && e[1] == -1 && e[2] == -2, "Pa");
     CHECK(!rr_fmu_unit_base("furlong", e) && !rr_fmu_unit_base("m/s/s", e), "unknown unit");
+    CHECK(rr_fmu_unit_base("1", e) && !e[0] && !e[1] && !e[2] && !e[3], "dimensionless");
+    CHECK(!rr_fmu_unit_base("-", e), "the C tables' dash is not a unit");
     CHECK(rr_fmu_xml(NULL, f, NULL, 0) == RR_ERR_NULL, "NULL info");
     n = rr_fmu_xml(&info, f, NULL, 0);
     CHECK(n > 10000, "length");
@@ -665,6 +667,10 @@ static void test_xml(const rr_fmu_config *f)
     CHECK(contains(buf, "<Unit name=\"N m s/rad\">\n      <BaseUnit kg=\"1\" m=\"2\" s=\"-1\" "
                    "rad=\"-1\"/>"), "unit");
     CHECK(contains(buf, "<Real unit=\"kg\" min=\"0\" start=\"14.504\"/>"), "mass");
+    /* dimensionless: CF's "1" (rollerrig/_units.py), defined; never the tables' "-" */
+    CHECK(contains(buf, "<Unit name=\"1\">\n      <BaseUnit/>\n    </Unit>")
+          && contains(buf, "name=\"scenario.mu0\"") && contains(buf, "<Real unit=\"1\"")
+          && !contains(buf, "unit=\"-\"") && !contains(buf, "<Integer unit="), "unit 1");
     CHECK(contains(buf, "<DefaultExperiment startTime=\"0\" stopTime=\"20\" stepSize=\"0.004\""),
           "experiment");
     CHECK(contains(buf, "&quot;braking&quot;") || contains(buf, "&quot;"), "escaped quotes");

@@ -18,6 +18,7 @@
  *                  (rr_nonhertz_table, rr_nonhertz)
  *   rig_contact.c  the rig's contact model over arrays of states
  *   rig.c          the rig in time (the Rig type), its schedule and speed loops
+ *   rig_profiles.c the rig's contact table on real profiles (rig_profile_table)
  *   rig_config.c   every problem of the rig's parameters (rig_config_report)
  *
  * Thin by design: no physics here.  Every batch call takes 1-D float64
@@ -244,6 +245,7 @@ CORE_PRIVATE extern PyTypeObject RigType;
 
 CORE_PRIVATE PyObject *py_rig_schedule(PyObject *self, PyObject *args);
 CORE_PRIVATE PyObject *py_rig_speed_loops(PyObject *self, PyObject *arg);
+/* rig_profiles.c */
 CORE_PRIVATE PyObject *py_rig_profile_table(PyObject *self, PyObject *args);
 /* rig_config.c */
 CORE_PRIVATE PyObject *py_rig_config_report(PyObject *self, PyObject *arg);

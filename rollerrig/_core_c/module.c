@@ -58,7 +58,7 @@ static PyMethodDef core_methods[] = {
      "creep_forces(cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B, *, method, <its options>)"
      " -> (fx, fy, mz, status); METHODS lists the methods and their options"},
     {"check_creep_options", py_check_creep_options, METH_VARARGS,
-     "check_creep_options(func, {method: ..., <its options>}) -> None, or ValueError"},
+     "check_creep_options(func, {method: ..., <its options>}) -> CreepOptions, or ValueError"},
     {"creep_forces1", (PyCFunction)(void (*)(void))py_creep_forces1, METH_FASTCALL,
      "creep_forces1(opts, cx, cy, cphi, a, b, N, mu, G, nu, speed, A, B) -> (fx, fy, mz, status)"},
     {"creep_blame", (PyCFunction)(void (*)(void))py_creep_blame, METH_FASTCALL,

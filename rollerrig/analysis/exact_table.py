@@ -36,8 +36,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 import math
+import os
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
+import numpy.typing as npt
+
+from .._typing import F64Array
 
 #: the shipped table's nodes along (log a/b, alpha, theta, u)
 DEFAULT_SHAPE = (21, 13, 23, 21)
@@ -47,6 +52,8 @@ R0 = 1.0
 AOB_RANGE = (0.1, 10.0)
 #: the case every node is solved on (the normalised forces do not depend on it)
 _C, _N, _MU, _G = 6e-3, 5e4, 0.3, 8.2e10
+#: a path to write: a str or an os.PathLike of str, returned as given
+_Path = Union[str, "os.PathLike[str]"]
 
 
 @dataclass(frozen=True)
@@ -62,25 +69,25 @@ class ExactTable:
     creep_forces : method "exact_table" interpolates the built-in one.
     """
 
-    lo: tuple           #: the axes' lower ends (log a/b, alpha [rad], theta [rad], u)
-    hi: tuple           #: the axes' upper ends, as lo
+    lo: Tuple[float, ...]   #: the axes' lower ends (log a/b, alpha [rad], theta [rad], u)
+    hi: Tuple[float, ...]   #: the axes' upper ends, as lo
     #: float32 of shape (n0, n1, n2, n3, 3) holding fx / (mu N), fy / (mu N),
     #: mz / (mu N c) at the folded point (c = sqrt(ab))
-    values: np.ndarray
+    values: npt.NDArray[np.float32]
     nu: float           #: the Poisson ratio [-] it was built for
     r0: float           #: the scale of u = R / (R + r0) it was built with
     nx: int             #: the coarse grid of the exact theory at each node (and 2 nx)
 
     @property
-    def shape(self):
+    def shape(self) -> Tuple[int, ...]:
         """The nodes along each of the four axes, (n0, n1, n2, n3)."""
         return self.values.shape[:4]
 
-    def axes(self):
+    def axes(self) -> List[F64Array]:
         """The four axes' node values, a list of 1-D arrays (log a/b, alpha, theta, u)."""
         return [np.linspace(lo, hi, n) for lo, hi, n in zip(self.lo, self.hi, self.shape)]
 
-    def save(self, path):
+    def save(self, path: _Path) -> _Path:
         """Write the table as .npz at `path` and return `path`.
 
         The name ends in .npz; a new path or a regular file, replaced whole
@@ -93,14 +100,14 @@ class ExactTable:
         return path
 
     @classmethod
-    def load(cls, path):
+    def load(cls, path: _Path) -> ExactTable:
         """Read a table written by :meth:`save` (a .npz file at `path`)."""
         with np.load(path) as z:
             return cls(tuple(float(v) for v in z["lo"]), tuple(float(v) for v in z["hi"]),
                        z["values"].astype(np.float32), float(z["nu"]), float(z["r0"]),
                        int(z["nx"]))
 
-    def write_c(self, path):
+    def write_c(self, path: _Path) -> _Path:
         """Write the table as C source, the core's built-in table, at `path`; return `path`.
 
         The name ends in .c; a new path or a regular file, replaced whole
@@ -123,7 +130,7 @@ class ExactTable:
             "",
             f"static const float values[{flat.size}] = {{",
         ]
-        row = []
+        row: List[str] = []
         for v in flat:
             row.append(f"{float(v):.9g}f" if v != 0 else "0")
             if len(row) == 8:
@@ -169,7 +176,8 @@ def builtin_table() -> ExactTable:
     return ExactTable(tuple(lo), tuple(hi), values, nu, r0, nx)
 
 
-def _node_case(log_aob, alpha, theta, u, nu, r0):
+def _node_case(log_aob: F64Array, alpha: F64Array, theta: F64Array, u: F64Array, nu: float,
+               r0: float) -> Tuple[F64Array, F64Array, F64Array, F64Array, F64Array]:
     """Creepages and semi-axes of the nodes (arrays), u < 1."""
     from ..contact.creep import kalker_coefficients
     aob = np.exp(log_aob)
@@ -183,7 +191,8 @@ def _node_case(log_aob, alpha, theta, u, nu, r0):
     return x * s / k.c11, y * s / k.c22, z * s / (_C * k.c11), a, b
 
 
-def full_sliding(log_aob, alpha, theta, nu, *, nr=160, nb=320):
+def full_sliding(log_aob: npt.ArrayLike, alpha: npt.ArrayLike, theta: npt.ArrayLike,
+                 nu: float, *, nr: int = 160, nb: int = 320) -> F64Array:
     """The full-sliding limit (u = 1) of the normalised forces.
 
     -mu p w/``|w|`` integrated over Hertz's pressure, w the rigid slip
@@ -246,7 +255,8 @@ def full_sliding(log_aob, alpha, theta, nu, *, nr=160, nb=320):
     return out
 
 
-def node_values(log_aob, alpha, theta, u, *, nu, nx, r0=R0):
+def node_values(log_aob: npt.ArrayLike, alpha: npt.ArrayLike, theta: npt.ArrayLike,
+                u: npt.ArrayLike, *, nu: float, nx: int, r0: float = R0) -> Dict[str, F64Array]:
     """The table's values at nodes.
 
     Parameters
@@ -285,8 +295,9 @@ def node_values(log_aob, alpha, theta, u, *, nu, nx, r0=R0):
     return {"fx": out[:, 0], "fy": out[:, 1], "mz": out[:, 2]}
 
 
-def build_exact_table(shape=DEFAULT_SHAPE, *, nu=0.28, nx=27, r0=R0, backend="threads",
-                      workers=None, client=None, progress=None):
+def build_exact_table(shape: Sequence[int] = DEFAULT_SHAPE, *, nu: float = 0.28, nx: int = 27,
+                      r0: float = R0, backend: str = "threads", workers: Optional[int] = None,
+                      client: Any = None, progress: Optional[bool] = None) -> ExactTable:
     """Build an ExactTable: the exact theory at every node.
 
     The nodes run through :func:`sweep` (on threads, or on a Dask cluster
@@ -351,7 +362,7 @@ def build_exact_table(shape=DEFAULT_SHAPE, *, nu=0.28, nx=27, r0=R0, backend="th
                       int(nx))
 
 
-def symmetry_zeros(values):
+def symmetry_zeros(values: npt.ArrayLike) -> F64Array:
     """The forces that the symmetries make vanish, set to zero at the nodes.
 
     The solver leaves its round-off there, some 1e-7: fx where x = 0 (pure

@@ -62,7 +62,7 @@ without it the fits raise an ImportError naming the extra.
 """
 from __future__ import annotations
 
-from typing import Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy.typing as npt
 
@@ -74,32 +74,37 @@ import numpy as np
 
 from .._errors import RollerRigError
 from .._optional import require
+from .._typing import F64Array, FloatResult
 from .._units import cf_unit
 from ..contact.creep import METHODS, FallingFriction, creep_forces
+from ._fit_inputs import _RATIO, Curves, Spec, _data, _fail, _scalar, _setup
 
 __all__ = ["FitResult", "fit_polach", "fit_modified_fastsim", "POLACH_PARAMETERS",
            "MODIFIED_FASTSIM_PARAMETERS", "PARAMETER_UNITS", "LOSSES"]
 
-_TINY = 1e-6      # stands in for an open lower bound at 0 (all parameters are O(0.1 - 1))
 _INF = np.inf
 
 # name: (default, lower, upper, lower bound open, upper bound open); default None: the
 # data's peak |force| / N.  The friction law's mu0, A, B are the fit's own; a
 # method's options take their range from the registry (rollerrig.METHODS), with
 # the fit's starting value.
-_FRICTION_PARAMETERS = {
+_FRICTION_PARAMETERS: Dict[str, Tuple[Optional[float], float, float, bool, bool]] = {
     "mu0": (None, 0.0, _INF, True, True),
     "A": (0.4, 0.0, 1.0, True, False),
     "B": (0.6, 0.0, _INF, False, True),
 }
 
 
-def _method_parameters(method, **start):
+def _method_parameters(method: str, **start: float) -> Spec:
     """The fitted options of a method: start value and the registry's range."""
     options = METHODS[method].options
-    return {**_FRICTION_PARAMETERS,
-            **{n: (v, options[n].lo, options[n].hi, options[n].lo_open, options[n].hi_open)
-               for n, v in start.items()}}
+
+    def spec(n: str, v: float) -> Tuple[Optional[float], float, float, bool, bool]:
+        o = options[n]
+        if o.lo is None or o.hi is None:        # a choice: the fits take real options only
+            raise TypeError(f"{method}'s option {n} has no range to fit in")
+        return v, o.lo, o.hi, o.lo_open, o.hi_open
+    return {**_FRICTION_PARAMETERS, **{n: spec(n, v) for n, v in start.items()}}
 
 
 #: fit_polach's parameters: name -> (start, lower, upper, lower bound open,
@@ -119,7 +124,6 @@ PARAMETER_UNITS = {"mu0": "1", "A": "1", "B": "s/m",
                       for n in P if n not in _FRICTION_PARAMETERS}}
 #: the robust losses of scipy.optimize.least_squares the fits take
 LOSSES = ("linear", "soft_l1", "huber", "cauchy", "arctan")
-_RATIO = "kS/kA"
 
 
 @dataclass
@@ -134,14 +138,14 @@ class FitResult:
     model: str          #: "polach" or "modified_fastsim"
     #: every parameter of the model, fitted or held, {name: value} (units:
     #: rollerrig.analysis.fit.PARAMETER_UNITS)
-    params: dict
+    params: Dict[str, float]
     #: standard error of each fitted parameter, {name: value} (NaN where the
     #: Jacobian is singular or there are no more points than parameters)
-    stderr: dict
-    fitted: tuple       #: the names fitted, in the model's order
+    stderr: Dict[str, float]
+    fitted: Tuple[str, ...]     #: the names fitted, in the model's order
     #: model - data [N], in the data's sign; a list of arrays if the data were
     #: a list of curves
-    residuals: object
+    residuals: Union[F64Array, List[F64Array]]
     rms: float          #: root mean square of the residuals [N]
     #: least_squares' cost, 0.5 sum loss(r^2), r = weights (model - data) / F_ref
     cost: float
@@ -151,9 +155,9 @@ class FitResult:
     sign: int           #: +1, or -1 if the data were negated for the fit
     #: the fitted parameters that ended on a bound (kS: kS = kA); their
     #: standard errors mean little
-    at_bound: tuple = ()
+    at_bound: Tuple[str, ...] = ()
     #: the fit's fixed settings (contact, speeds, held creepages, grid), for predict
-    settings: dict = field(repr=False, default_factory=dict)
+    settings: Dict[str, Any] = field(repr=False, default_factory=dict)
 
     def predict(self, cx: npt.ArrayLike, speed: Optional[npt.ArrayLike] = None, *,
                 cy: Optional[float] = None,
@@ -196,10 +200,12 @@ class FitResult:
 
 # ------------------------------------------------------------------ the models
 
-def _model(model, p, s, cx, speed, cy, cphi, errors="ignore"):
+def _model(model: str, p: Mapping[str, float], s: Mapping[str, Any], cx: npt.ArrayLike,
+           speed: npt.ArrayLike, cy: npt.ArrayLike, cphi: npt.ArrayLike,
+           errors: Optional[str] = "ignore") -> FloatResult:
     """fx of the model with parameters p at (cx, speed); settings s."""
     friction = FallingFriction(A=p["A"], B=p["B"])
-    common = dict(a=s["a"], b=s["b"], N=s["N"], mu=p["mu0"], G=s["G"], nu=s["nu"],
+    common: Dict[str, Any] = dict(a=s["a"], b=s["b"], N=s["N"], mu=p["mu0"], G=s["G"], nu=s["nu"],
                   speed=speed, friction=friction, errors=errors)
     if model == "polach":
         f = creep_forces(cx, cy, cphi, method="polach", kA=p["kA"], kS=p["kS"], **common)
@@ -211,161 +217,8 @@ def _model(model, p, s, cx, speed, cy, cphi, errors="ignore"):
     return f.fx
 
 
-# ------------------------------------------------------------------ input checks
-
-def _fail(func, msg):
-    raise RollerRigError(f"{func}: {msg}")
-
-
-def _curve_array(func, name, value):
-    try:
-        arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        _fail(func, f"{name} must be real numbers, got {value!r:.60}")
-    if arr.ndim != 1:
-        _fail(func, f"{name} must be one-dimensional, got shape {arr.shape}")
-    if arr.size == 0:
-        _fail(func, f"{name} is empty")
-    bad = np.flatnonzero(~np.isfinite(arr))
-    if bad.size:
-        i = int(bad[0])
-        _fail(func, f"{name}[{i}] = {float(arr[i])!r} is not finite")
-    return arr
-
-
-def _curves(func, name, value):
-    """A list of 1-D float arrays and whether the input was a list of curves."""
-    if isinstance(value, (list, tuple)) and value and all(
-            isinstance(v, (list, tuple, np.ndarray)) for v in value):
-        return [_curve_array(func, f"{name}[{k}]", v) for k, v in enumerate(value)], True
-    if isinstance(value, (list, tuple)) and not value:
-        _fail(func, f"{name} is empty")
-    return [_curve_array(func, name, value)], False
-
-
-def _data(func, cx, force, speed, weights):
-    cxs, many = _curves(func, "cx", cx)
-    fs, many_f = _curves(func, "force", force)
-    if many != many_f or len(cxs) != len(fs):
-        _fail(func, f"cx has {len(cxs) if many else 'one'} curve(s) but force has "
-                    f"{len(fs) if many_f else 'one'}")
-    for k, (c, f) in enumerate(zip(cxs, fs)):
-        tag = f"[{k}]" if many else ""
-        if c.size != f.size:
-            _fail(func, f"force{tag} has {f.size} points but cx{tag} has {c.size}")
-    n = len(cxs)
-    sp = np.asarray(speed, dtype=float) if speed is not None else None
-    if sp is None or sp.ndim > 1 or (sp.ndim == 1 and sp.size != n):
-        _fail(func, f"speed must be a scalar or one value per curve ({n}), got {speed!r}")
-    sp = np.broadcast_to(sp, (n,)).astype(float)
-    for k, v in enumerate(sp):
-        if not (np.isfinite(v) and v > 0.0):
-            tag = f"[{k}]" if sp.size > 1 else ""
-            _fail(func, f"speed{tag} must be > 0, got {float(v)!r}")
-    if weights is None:
-        ws = [np.ones_like(c) for c in cxs]
-    else:
-        ws, many_w = _curves(func, "weights", weights)
-        if many_w != many or len(ws) != n:
-            _fail(func, "weights must have the shape of cx (one array per curve)")
-        for k, (w, c) in enumerate(zip(ws, cxs)):
-            tag = f"[{k}]" if many else ""
-            if w.size != c.size:
-                _fail(func, f"weights{tag} has {w.size} points but cx{tag} has {c.size}")
-            if np.any(w < 0) or not np.any(w > 0):
-                _fail(func, f"weights{tag} must be >= 0 and not all 0, got {w!r:.60}")
-    return cxs, fs, sp, ws, many
-
-
-def _scalar(func, name, v, positive=True):
-    if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)) \
-            or not math.isfinite(v) or (positive and v <= 0):
-        shown = float(v) if isinstance(v, (np.integer, np.floating)) else v
-        _fail(func, f"{name} must be a finite {'positive ' if positive else ''}number, "
-                    f"got {shown!r}")
-    return float(v)
-
-
-def _interval(lo, hi, lo_open, hi_open):
-    return f"{'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
-
-
-def _in(v, lo, hi, lo_open, hi_open):
-    return (v > lo if lo_open else v >= lo) and (v < hi if hi_open else v <= hi)
-
-
-def _setup(func, spec, fit, x0, bounds, mu0_default):
-    """Natural start values, the internal names fitted and their bounds."""
-    names = tuple(spec)
-    if isinstance(fit, str):
-        fit = (fit,)
-    fit = tuple(fit)
-    if not fit:
-        _fail(func, "fit names no parameter")
-    for n in fit:
-        if n not in spec:
-            _fail(func, f"unknown parameter {n!r} in fit; choose from {names}")
-    if len(set(fit)) != len(fit):
-        _fail(func, f"fit names a parameter twice: {fit!r}")
-    fit = tuple(n for n in names if n in fit)          # the model's order
-    x0 = {} if x0 is None else dict(x0)
-    for n, v in x0.items():
-        if n not in spec:
-            _fail(func, f"unknown parameter {n!r} in x0; choose from {names}")
-        _scalar(func, f"x0[{n!r}]", v, positive=False)
-    start = {}
-    for n, (default, lo, hi, lo_open, hi_open) in spec.items():
-        v = float(x0.get(n, mu0_default if default is None else default))
-        if not _in(v, lo, hi, lo_open, hi_open):
-            _fail(func, f"x0[{n!r}] = {v!r} is outside {_interval(lo, hi, lo_open, hi_open)}")
-        start[n] = v
-    if "kS" in spec and start["kS"] > start["kA"]:
-        _fail(func, f"x0['kS'] = {start['kS']!r} is above x0['kA'] = {start['kA']!r}; "
-                    "Polach's method needs kS <= kA")
-
-    # internal variables: kS is fitted as the ratio kS/kA
-    inner = [(_RATIO if n == "kS" else n) for n in fit]
-    bounds = {} if bounds is None else dict(bounds)
-    for n in bounds:
-        if n == "kS":
-            _fail(func, "bounds: kS is fitted as the ratio kS/kA; bound 'kS/kA' instead")
-        if n not in inner:
-            _fail(func, f"bounds given for {n!r}, which is not fitted ({inner})")
-    lo_v, hi_v = [], []
-    for n in inner:
-        if n == _RATIO:
-            lo, hi, lo_open, hi_open = 0.0, 1.0, True, False
-            v0 = start["kS"] / start["kA"]
-        else:
-            _, lo, hi, lo_open, hi_open = spec[n]
-            v0 = start[n]
-        if n == "kA" and "kS" not in fit:           # kS held: kA >= kS keeps the order
-            lo, lo_open = start["kS"], False
-        if n in bounds:
-            try:
-                blo, bhi = (float(x) for x in bounds[n])
-            except (TypeError, ValueError):
-                _fail(func, f"bounds[{n!r}] must be (lo, hi), got {bounds[n]!r}")
-            if not (blo < bhi) or math.isnan(blo) or math.isnan(bhi):
-                _fail(func, f"bounds[{n!r}] = {bounds[n]!r}: need lo < hi")
-            if blo > lo or (blo == lo and not lo_open):
-                lo, lo_open = blo, False
-            if bhi < hi or (bhi == hi and not hi_open):
-                hi, hi_open = bhi, False
-            if not _in(v0, lo, hi, lo_open, hi_open):
-                what = "x0['kS'] / x0['kA']" if n == _RATIO else f"x0[{n!r}]"
-                _fail(func, f"{what} = {v0!r} is outside bounds[{n!r}] = "
-                            f"{_interval(lo, hi, lo_open, hi_open)}")
-        if lo_open:
-            lo = max(lo, _TINY) if lo == 0.0 else lo * (1.0 + _TINY) + _TINY
-        if lo >= hi:
-            _fail(func, f"bounds for {n!r} leave no room: [{lo!r}, {hi!r}]")
-        lo_v.append(lo)
-        hi_v.append(hi)
-    return start, fit, inner, np.array(lo_v), np.array(hi_v)
-
-
-def _natural(start, inner, theta):
+def _natural(start: Mapping[str, float], inner: Sequence[str],
+             theta: F64Array) -> Dict[str, float]:
     p = dict(start)
     for n, v in zip(inner, theta):
         if n != _RATIO:
@@ -375,7 +228,8 @@ def _natural(start, inner, theta):
     return p
 
 
-def _jacobian(fun, theta, lo, hi):
+def _jacobian(fun: Callable[[F64Array], F64Array], theta: npt.ArrayLike, lo: F64Array,
+              hi: F64Array) -> F64Array:
     """Central differences, one-sided against a bound."""
     theta = np.asarray(theta, dtype=float)
     f0 = fun(theta)
@@ -396,7 +250,7 @@ def _jacobian(fun, theta, lo, hi):
     return J
 
 
-def _covariance(J, r):
+def _covariance(J: F64Array, r: F64Array) -> F64Array:
     """(J^T J)^-1 s^2, NaN in the rows and columns of ill-determined parameters."""
     m, p = J.shape
     if m <= p:
@@ -404,7 +258,7 @@ def _covariance(J, r):
     s2 = float(r @ r) / (m - p)
     _, sv, vt = np.linalg.svd(J, full_matrices=False)
     keep = sv > np.sqrt(np.finfo(float).eps) * sv[0] if sv[0] > 0 else np.zeros_like(sv, bool)
-    cov = (vt[keep].T / sv[keep] ** 2) @ vt[keep] * s2
+    cov: F64Array = (vt[keep].T / sv[keep] ** 2) @ vt[keep] * s2
     bad = np.zeros(p, bool)
     for k in np.flatnonzero(~keep):
         bad |= np.abs(vt[k]) > 1e-3
@@ -418,10 +272,12 @@ def _covariance(J, r):
 #: the other starts of the friction law: mu0 as given or doubled, A and B as
 #: given, flat or steep (each change only where the fit may move it)
 _MU0_FACTORS = (1.0, 2.0)
-_LAWS = ({}, {"A": 0.2, "B": 3.0}, {"A": 0.8, "B": 0.2})
+_LAWS: Tuple[Dict[str, float], ...] = ({}, {"A": 0.2, "B": 3.0}, {"A": 0.8, "B": 0.2})
 
 
-def _starts(theta0, inner, lo, hi, x0, stiffness=None):
+def _starts(theta0: F64Array, inner: Sequence[str], lo: F64Array, hi: F64Array,
+            x0: Optional[Mapping[str, float]],
+            stiffness: Optional[Mapping[str, float]] = None) -> Iterator[F64Array]:
     """theta0, then starts with the friction law's fitted parameters (those
     x0 does not give) moved: mu0 doubled; A, B to a flat and to a steep law;
     then the same with the stiffness {internal name: value} the data's
@@ -442,7 +298,9 @@ def _starts(theta0, inner, lo, hi, x0, stiffness=None):
             yield t
 
 
-def _stiffness(model, inner, x0, start, settings, c_all, target, f_ref):
+def _stiffness(model: str, inner: Sequence[str], x0: Optional[Mapping[str, float]],
+               start: Mapping[str, float], settings: Mapping[str, Any], c_all: F64Array,
+               target: F64Array, f_ref: float) -> Dict[str, float]:
     """Polach's kA and kS/kA from the data's initial slope: at small
     creepage fx = -(kA + kS)/2 G a b c11 cx (Kalker's linear theory times
     (kA + kS)/2, whatever mu), so the slope through the origin of the
@@ -469,15 +327,19 @@ def _stiffness(model, inner, x0, start, settings, c_all, target, f_ref):
     return {"kA": kA, _RATIO: min(max(ksum / kA - 1.0, 1e-3), 1.0)}
 
 
-def _fit(func, model, spec, cx, force, a, b, N, G, nu, speed, cy, cphi, fit, x0, bounds,
-         loss, f_scale, weights, extra):
+def _fit(func: str, model: str, spec: Spec, cx: object, force: object, a: object, b: object,
+         N: object, G: object, nu: object, speed: object, cy: object, cphi: object,
+         fit: Union[str, Sequence[str]], x0: Optional[Mapping[str, float]],
+         bounds: Optional[Mapping[str, Tuple[float, float]]], loss: str,
+         f_scale: Optional[float], weights: object, extra: Mapping[str, Any]) -> FitResult:
     least_squares = require("scipy.optimize", func, "fit", package="scipy").least_squares
     cxs, fs, speeds, ws, many = _data(func, cx, force, speed, weights)
-    settings = dict(a=_scalar(func, "a", a), b=_scalar(func, "b", b), N=_scalar(func, "N", N),
-                    G=_scalar(func, "G", G), nu=_scalar(func, "nu", nu, positive=False),
-                    cy=_scalar(func, "cy", cy, positive=False),
-                    cphi=_scalar(func, "cphi", cphi, positive=False),
-                    speeds=tuple(float(v) for v in speeds), **extra)
+    settings: Dict[str, Any] = dict(
+        a=_scalar(func, "a", a), b=_scalar(func, "b", b), N=_scalar(func, "N", N),
+        G=_scalar(func, "G", G), nu=_scalar(func, "nu", nu, positive=False),
+        cy=_scalar(func, "cy", cy, positive=False),
+        cphi=_scalar(func, "cphi", cphi, positive=False),
+        speeds=tuple(float(v) for v in speeds), **extra)
     if loss not in LOSSES:
         _fail(func, f"loss must be one of {LOSSES}, got {loss!r}")
     f_scale = 0.05 if f_scale is None else _scalar(func, "f_scale", f_scale)
@@ -508,7 +370,7 @@ def _fit(func, model, spec, cx, force, a, b, N, G, nu, speed, cy, cphi, fit, x0,
     except RollerRigError as e:                 # the model's own message, under our name
         _fail(func, f"the model at the start point: {e}")
 
-    def residuals(theta):
+    def residuals(theta: F64Array) -> F64Array:
         p = _natural(start, inner, theta)
         f = _model(model, p, settings, c_all, v_all, settings["cy"], settings["cphi"])
         r = w_all * (f - target) / f_ref
@@ -542,6 +404,7 @@ def _fit(func, model, spec, cx, force, a, b, N, G, nu, speed, cy, cphi, fit, x0,
             sol = s
         if np.sqrt(np.mean(sol.fun ** 2)) <= 1e-4:      # fun: the residuals at x
             break
+    assert sol is not None          # _starts yields theta0 first: one solve at least
     params = _natural(start, inner, sol.x)
 
     # standard errors from the plain (not loss-weighted) Jacobian at the solution
@@ -564,6 +427,7 @@ def _fit(func, model, spec, cx, force, a, b, N, G, nu, speed, cy, cphi, fit, x0,
     at_bound = tuple(n for n in fit if n in at_bound)
     model_f = _model(model, params, settings, c_all, v_all, settings["cy"], settings["cphi"])
     res_all = sign * model_f - f_all
+    res_out: Union[F64Array, List[F64Array]]
     if many:
         cuts = np.cumsum([c.size for c in cxs])[:-1]
         res_out = np.split(res_all, cuts)
@@ -581,16 +445,14 @@ def _fit(func, model, spec, cx, force, a, b, N, G, nu, speed, cy, cphi, fit, x0,
                      settings=settings)
 
 
-def fit_polach(cx: Union[npt.ArrayLike, Sequence[npt.ArrayLike]],
-               force: Union[npt.ArrayLike, Sequence[npt.ArrayLike]], *, a: float, b: float,
+def fit_polach(cx: Curves, force: Curves, *, a: float, b: float,
                N: npt.ArrayLike, G: float = 8.2e10, nu: float = 0.28, speed: npt.ArrayLike,
                cy: float = 0.0, cphi: float = 0.0,
                fit: Union[str, Sequence[str]] = ("mu0", "A", "B", "kA", "kS"),
                x0: Optional[Mapping[str, float]] = None,
                bounds: Optional[Mapping[str, Tuple[float, float]]] = None, loss: str = "soft_l1",
                f_scale: Optional[float] = None,
-               weights: Optional[Union[npt.ArrayLike, Sequence[npt.ArrayLike]]] = None
-               ) -> FitResult:
+               weights: Optional[Curves] = None) -> FitResult:
     """Fit Polach's method (creep_forces(method="polach")) to creep curves.
 
     Parameters
@@ -714,10 +576,16 @@ def fit_polach(cx: Union[npt.ArrayLike, Sequence[npt.ArrayLike]],
                 speed, cy, cphi, fit, x0, bounds, loss, f_scale, weights, {})
 
 
-def fit_modified_fastsim(cx, force, *, a, b, N, G=8.2e10, nu=0.28, speed, cy=0.0, cphi=0.0,
-                         fit=("k0", "alpha_inf", "beta"), x0=None, bounds=None,
-                         loss="soft_l1", f_scale=None, weights=None, nx=20, ny=20,
-                         grid="rect", bound="parabolic", slip_speed=None):
+def fit_modified_fastsim(cx: Curves, force: Curves, *, a: float, b: float, N: npt.ArrayLike,
+                         G: float = 8.2e10, nu: float = 0.28, speed: npt.ArrayLike,
+                         cy: float = 0.0, cphi: float = 0.0,
+                         fit: Union[str, Sequence[str]] = ("k0", "alpha_inf", "beta"),
+                         x0: Optional[Mapping[str, float]] = None,
+                         bounds: Optional[Mapping[str, Tuple[float, float]]] = None,
+                         loss: str = "soft_l1", f_scale: Optional[float] = None,
+                         weights: Optional[Curves] = None, nx: int = 20, ny: int = 20,
+                         grid: str = "rect", bound: str = "parabolic",
+                         slip_speed: Optional[str] = None) -> FitResult:
     """Fit modified FASTSIM (Spiryagin, Polach and Cole 2013) to creep curves.
 
     Parameters

@@ -27,7 +27,7 @@ checks them (RollerRigError).
 """
 from __future__ import annotations
 
-from typing import Any, Dict, Sequence
+from typing import Any, Dict, List, Mapping, Sequence, Tuple, Union
 
 import csv
 import functools
@@ -38,8 +38,10 @@ import re
 from typing import NamedTuple, Optional
 
 import numpy as np
+import numpy.typing as npt
 
 from .._errors import RollerRigError
+from .._typing import F64Array, FloatResult
 from ..contact.creep import METHODS, FallingFriction, creep_forces
 
 __all__ = ["ExactCases", "ScoreResult", "CreepCurve", "CurveScore", "exact_cases",
@@ -58,7 +60,7 @@ MM = 1e-3          # m per mm
 N_PER_MM2 = 1e6    # Pa per N/mm^2
 
 
-def read_csv(name, folder=DATA_DIR):
+def read_csv(name: str, folder: str = DATA_DIR) -> Tuple[str, List[Dict[str, str]]]:
     """Read a reference CSV: (the # source line without '#', list of row dicts).
 
     Raises
@@ -75,14 +77,24 @@ def read_csv(name, folder=DATA_DIR):
     return comment[1:].strip(), rows
 
 
-def _header_number(comment, pattern, what, name):
+def _header_match(comment: str, pattern: str, what: str, name: str) -> re.Match[str]:
     m = re.search(pattern, comment)
     if m is None:
         raise RollerRigError(f"{name}: cannot read {what} from the header line")
-    return m.groups() if len(m.groups()) > 1 else m.group(1)
+    return m
 
 
-def _frozen(arr):
+def _header_number(comment: str, pattern: str, what: str, name: str) -> str:
+    """The text of `pattern`'s one group in the header line."""
+    return _header_match(comment, pattern, what, name).group(1)
+
+
+def _header_numbers(comment: str, pattern: str, what: str, name: str) -> Tuple[str, ...]:
+    """The texts of `pattern`'s groups (several) in the header line."""
+    return _header_match(comment, pattern, what, name).groups()
+
+
+def _frozen(arr: npt.ArrayLike) -> F64Array:
     arr = np.asarray(arr, dtype=float)
     arr.setflags(write=False)
     return arr
@@ -113,15 +125,15 @@ class ExactCases(NamedTuple):
     spin: np.ndarray        #: normalised spin level (0, 0.5, 1, 2)
     angle: np.ndarray       #: creepage direction atan2(cy, cx) [rad] (-pi/2 .. pi/2)
     magnitude: np.ndarray   #: normalised creepage magnitude (0 .. 12)
-    N: float                #: normal load [N] (an array in own_exact_cases)
-    mu: float               #: friction coefficient (an array in own_exact_cases)
+    N: FloatResult          #: normal load [N] (an array in own_exact_cases)
+    mu: FloatResult         #: friction coefficient (an array in own_exact_cases)
     G: float                #: shear modulus [Pa]
     nu: float               #: Poisson's ratio
     source: str             #: the CSV's source line
     label: str = "exact reference cases"   #: what they are, short: the score tables' caption
 
 
-def _table_header_params(comment):
+def _table_header_params(comment: str) -> Dict[float, Tuple[float, float]]:
     """{a/b: (rho [mm], cp [mm])} from the header line of the test table."""
     found = re.findall(r"a/b=\s*([0-9.]+):\s*rho=\s*([0-9.]+)\s*,\s*cp=\s*([0-9.]+)", comment)
     params = {float(aob): (float(rho), float(cp)) for aob, rho, cp in found}
@@ -132,7 +144,7 @@ def _table_header_params(comment):
 
 
 @functools.lru_cache(maxsize=None)
-def exact_cases():
+def exact_cases() -> ExactCases:
     """The 3220 exact cases of CONTACT's test table, in SI.
 
     Returns
@@ -194,7 +206,7 @@ _AOB_EDGES = (0.1, 0.3, 0.7, 1.4, 3.3, 10.01)
 _AOB_LABELS = (0.2, 0.5, 1.0, 2.0, 5.0)
 
 
-def random_cases(n=3000, seed=20261202):
+def random_cases(n: int = 3000, seed: int = 20261202) -> Dict[str, FloatResult]:
     """Seeded random Hertzian cases, drawn as CONTACT's 300 of
     tests/data/contact_exact_cases.csv were (wider a/b).
 
@@ -286,9 +298,10 @@ def own_exact_cases(n: int = 3000, seed: int = 20261202, nx: int = 27) -> ExactC
         Fy=_frozen(est.fy / muN), Mz=_frozen(est.mz / (muN * d["c"])),
         pct_slip=_frozen(np.full(n, np.nan)), a_over_b=_frozen(aob_class),
         spin=_frozen(spin_class), angle=_frozen(np.arctan2(d["cy"], d["cx"])),
-        magnitude=_frozen(d["m"]), N=_frozen(d["N"]), mu=_frozen(d["mu"]), G=d["G"],
-        nu=d["nu"], source=f"rollerrig's exact theory, Richardson {nx}/{2 * nx} across, "
-                           f"{n} random cases (seed {seed})",
+        magnitude=_frozen(d["m"]), N=_frozen(d["N"]), mu=_frozen(d["mu"]),
+        G=float(d["G"]), nu=float(d["nu"]),
+        source=f"rollerrig's exact theory, Richardson {nx}/{2 * nx} across, "
+               f"{n} random cases (seed {seed})",
         label=f"rollerrig's exact theory (Richardson {nx}/{2 * nx} across, {n} cases)")
 
 
@@ -304,7 +317,7 @@ _OPTION_ARGS = tuple(p for p, v in inspect.signature(creep_forces).parameters.it
 _METHOD_OPTIONS = tuple(dict.fromkeys(o for m in METHODS.values() for o in m.options))
 
 
-def _check_options(func, options, fixed):
+def _check_options(func: str, options: Mapping[str, Any], fixed: Sequence[str]) -> None:
     """The case's own arguments are refused; an option no method has is named
     here, the others are checked for the method by the registry."""
     known = _OPTION_ARGS + _METHOD_OPTIONS
@@ -316,7 +329,7 @@ def _check_options(func, options, fixed):
                                  f"{', '.join(o for o in known if o != 'method')}")
 
 
-def _stats(err):
+def _stats(err: npt.ArrayLike) -> Dict[str, float]:
     """{"median", "p95", "max", "n", "n_failed"} of the finite errors."""
     err = np.asarray(err, dtype=float)
     ok = np.isfinite(err)
@@ -338,7 +351,7 @@ class ScoreResult(NamedTuple):
     """
 
     method: str             #: the method scored
-    options: dict           #: the creep_forces options given
+    options: Dict[str, Any]  #: the creep_forces options given
     cases: ExactCases       #: the reference cases
     fx: np.ndarray          #: the method's FX / (mu N) per case
     fy: np.ndarray          #: the method's FY / (mu N) per case
@@ -346,15 +359,15 @@ class ScoreResult(NamedTuple):
     status: np.ndarray      #: creep_forces status per case
     error: np.ndarray       #: |(dFx, dFy)| / (mu N) per case (NaN where the method failed)
     mz_error: np.ndarray    #: |dMz| / (mu N cp) per case
-    overall: dict           #: statistics of the force error over all cases
-    by_spin: dict           #: {spin level: statistics}
-    by_ellipticity: dict    #: {a/b: statistics}
-    mz_overall: dict        #: statistics of the Mz error over all cases
-    mz_by_spin: dict        #: {spin level: statistics of the Mz error}
-    mz_by_ellipticity: dict  #: {a/b: statistics of the Mz error}
+    overall: Dict[str, float]       #: statistics of the force error over all cases
+    by_spin: Dict[float, Dict[str, float]]          #: {spin level: statistics}
+    by_ellipticity: Dict[float, Dict[str, float]]   #: {a/b: statistics}
+    mz_overall: Dict[str, float]    #: statistics of the Mz error over all cases
+    mz_by_spin: Dict[float, Dict[str, float]]   #: {spin level: statistics of the Mz error}
+    mz_by_ellipticity: Dict[float, Dict[str, float]]    #: {a/b: statistics of the Mz error}
 
     @property
-    def label(self):
+    def label(self) -> str:
         """The method and its options as text, e.g. "fastsim (nx=20, ny=20)"."""
         shown = {k: v for k, v in self.options.items() if k != "errors"}
         if not shown:
@@ -412,22 +425,24 @@ def score(method: str = "fastsim", *, cases: Optional[ExactCases] = None,
     f = creep_forces(t.cx, t.cy, t.cphi, a=t.a, b=t.b, N=t.N, mu=t.mu, G=t.G, nu=t.nu,
                      method=method, **opts)
     scale = t.mu * t.N
-    fx, fy, mz = f.fx / scale, f.fy / scale, f.mz / (scale * t.cp)
+    # arrays, as the cases' are (np.asarray: the same arrays, typed so)
+    fx, fy, mz = (np.asarray(v) for v in (f.fx / scale, f.fy / scale, f.mz / (scale * t.cp)))
     err = np.hypot(fx - t.Fx, fy - t.Fy)
     mz_err = np.abs(mz - t.Mz)
 
-    def split(e, key):
+    def split(e: F64Array, key: F64Array) -> Dict[float, Dict[str, float]]:
         return {float(v): _stats(e[key == v]) for v in np.unique(key)}
 
     return ScoreResult(
         method=method, options=dict(creep_options), cases=t, fx=fx, fy=fy, mz=mz,
-        status=f.status, error=err, mz_error=mz_err,
+        status=np.asarray(f.status), error=err, mz_error=mz_err,
         overall=_stats(err), by_spin=split(err, t.spin),
         by_ellipticity=split(err, t.a_over_b), mz_overall=_stats(mz_err),
         mz_by_spin=split(mz_err, t.spin), mz_by_ellipticity=split(mz_err, t.a_over_b))
 
 
-def table(results, split=True):
+def table(results: Union[ScoreResult, Sequence[ScoreResult], Dict[Any, ScoreResult]],
+          split: bool = True) -> str:
     """A text table of one or more ScoreResults.
 
     Parameters
@@ -487,20 +502,22 @@ class CreepCurve(NamedTuple):
     #: the creep_forces arguments of the physical case (a, b, N, mu, G, nu,
     #: speed, friction: CONTACT's static coefficient and its falling friction
     #: law as FallingFriction(A = FKIN/mu, B = ln 2/SABSH1))
-    case: dict
+    case: Dict[str, Any]
     #: the rollerrig method that reproduces how CONTACT computed the series
     #: (None for the exact theory)
     method: Optional[str]
     #: the method's options; they hold the series' grid nx, ny, read from the
     #: header (the exact theory's options are only the grid)
-    options: dict
+    options: Dict[str, Any]
     note: str               #: what rollerrig does not model of the series, if anything
 
 
-def _curve_settings(comment):
+def _curve_settings(comment: str) -> Tuple[Dict[str, float], Dict[str, Any], float,
+                                            Dict[int, Tuple[float, float, float]],
+                                            Dict[str, float], str]:
     name = CURVES_FILE
-    a, b = _header_number(comment, r"\(a=([0-9.]+), b=([0-9.]+) mm\)", "a, b", name)
-    nx, ny = _header_number(comment, r"grid (\d+)x(\d+)", "the grid", name)
+    a, b = _header_numbers(comment, r"\(a=([0-9.]+), b=([0-9.]+) mm\)", "a, b", name)
+    nx, ny = _header_numbers(comment, r"grid (\d+)x(\d+)", "the grid", name)
     case = dict(a=float(a) * MM, b=float(b) * MM,
                 N=float(_header_number(comment, r"FN=([0-9.]+) N", "FN", name)),
                 G=float(_header_number(comment, r"G=([0-9.]+) N/mm\^2", "G", name)) * N_PER_MM2,
@@ -511,7 +528,7 @@ def _curve_settings(comment):
     falling = {int(s): (float(k), float(e), float(h)) for s, k, e, h in re.findall(
         r"series (\d) uses (?:exponential falling friction )?FKIN=([0-9.]+), "
         r"FEXP1=([0-9.]+), SABSH1=([0-9.]+) mm/s", comment)}
-    k0, alpha, beta = _header_number(
+    k0, alpha, beta = _header_numbers(
         comment, r"K0_MF=([0-9.]+), ALFAMF=([0-9.]+), BETAMF=([0-9.]+)",
         "the modified FASTSIM parameters", name)
     layer = _header_number(comment, r"(interfacial layer [^;]*)", "the layer", name)
@@ -520,14 +537,14 @@ def _curve_settings(comment):
 
 
 @functools.lru_cache(maxsize=None)
-def _creep_curves():
+def _creep_curves() -> Dict[int, CreepCurve]:
     comment, rows = read_csv(CURVES_FILE)
     case0, grid, coulomb, falling, modified, layer = _curve_settings(comment)
     out = {}
     for k in sorted({int(r["series"]) for r in rows}):
         sel = [r for r in rows if int(r["series"]) == k]
         desc = sel[0]["series_description"]
-        case = dict(case0, mu=coulomb, friction=None)
+        case: Dict[str, Any] = dict(case0, mu=coulomb, friction=None)
         if k in falling:
             fkin, fexp, sabsh = falling[k]
             mu0 = fkin + fexp
@@ -554,7 +571,7 @@ def _creep_curves():
     return out
 
 
-def creep_curves():
+def creep_curves() -> Dict[int, CreepCurve]:
     """The series of CONTACT's creep-curve example.
 
     Returns
@@ -595,8 +612,8 @@ class CurveScore(NamedTuple):
     max: float              #: largest error [-]
 
 
-def score_curves(method: str = "fastsim", series: Optional[Sequence[str]] = None,
-                 **opts: Any) -> Dict[str, CurveScore]:
+def score_curves(method: str = "fastsim", series: Optional[Union[int, Sequence[int]]] = None,
+                 **opts: Any) -> Dict[int, CurveScore]:
     """Compare a method with each creep-curve series.
 
     Each series is computed with its physical case (CreepCurve.case: load,

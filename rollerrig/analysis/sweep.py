@@ -40,7 +40,7 @@ like the grid.  The progress bar is rollerrig's one mechanism
 """
 from __future__ import annotations
 
-from typing import Any, Callable, Mapping, Optional, Union
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy.typing as npt
 
@@ -49,13 +49,10 @@ import inspect
 import math
 import numbers
 import os
-import uuid
-from concurrent.futures import FIRST_COMPLETED, ThreadPoolExecutor, wait
-from functools import partial
+from types import ModuleType
 
 import numpy as np
 
-from .. import _progress
 from .._errors import RollerRigError, check_status
 from .._optional import require
 from .._units import DIMENSIONLESS, cf_unit
@@ -64,12 +61,14 @@ from ..rig.build import CREEP_OPTIONS
 from ..rig.params import (PARAMETERS, _parameter_problems, _retired, check_parameters,
                           load_parameters)
 from ..rig.run import simulate
+from ._backends import check_options, execute
 
 __all__ = ["sweep", "sweep_rig", "UNITS", "FUNCTION_UNITS", "FUNCTIONS"]
 
 #: the vectorised functions that sweep takes by name
-FUNCTIONS = {"creep_forces": contact.creep_forces, "hertz": contact.hertz,
-             "kalker_coefficients": contact.kalker_coefficients}
+FUNCTIONS: Dict[str, Callable[..., Any]] = {
+    "creep_forces": contact.creep_forces, "hertz": contact.hertz,
+    "kalker_coefficients": contact.kalker_coefficients}
 
 #: units of the names that mean one thing across the library (inputs and
 #: outputs), for the Dataset's attrs; CF / UDUNITS, "1" is dimensionless.  Polach's
@@ -114,11 +113,11 @@ OUTPUTS = ("xarray", "dict")
 CHUNK_CASES = 100_000      # cases per chunk by default: ~0.15 s of FASTSIM 20 x 20
 
 
-def _units(name, func=None):
+def _units(name: object, func: Optional[str] = None) -> Optional[str]:
     """The units of a name of function `func`'s, or of a parameter path (its
     declaration's, rollerrig.rig.PARAMETERS), or None when unknown."""
     name = str(name)
-    if name in FUNCTION_UNITS.get(func, {}):
+    if func is not None and name in FUNCTION_UNITS.get(func, {}):
         return FUNCTION_UNITS[func][name]
     if name in _PARAMETER_UNITS:
         return _PARAMETER_UNITS[name]
@@ -127,12 +126,14 @@ def _units(name, func=None):
     return UNITS.get(name.rsplit(".", 1)[-1])
 
 
-def _axes(func, grid, numeric):
+def _axes(func: str, grid: object,
+          numeric: bool) -> Tuple[Tuple[str, ...], Tuple[npt.NDArray[Any], ...]]:
     """Check the grid: a non-empty dict of non-empty 1-D axes.  Returns (names, axes)."""
     if not isinstance(grid, dict) or not grid:
         raise RollerRigError(f"{func}: grid must be a non-empty dict name -> 1-D array, "
                              f"got {grid!r:.60}")
-    names, axes = [], []
+    names: List[str] = []
+    axes: List[npt.NDArray[Any]] = []
     for name, values in grid.items():
         if not isinstance(name, str) or not name:
             raise RollerRigError(f"{func}: grid names must be non-empty strings, got {name!r}")
@@ -150,123 +151,9 @@ def _axes(func, grid, numeric):
     return tuple(names), tuple(axes)
 
 
-def _check_options(func, backend, workers, client, progress):
-    """The backend actually used ("serial", "threads" or "dask") and the worker count."""
-    if backend not in ("threads", "serial", "dask"):
-        raise RollerRigError(f"{func}: backend must be 'threads', 'serial' or 'dask', "
-                             f"got {backend!r}")
-    if client is not None:
-        if backend == "serial":
-            raise RollerRigError(f"{func}: a Dask client was given with backend='serial'")
-        backend = "dask"
-    elif backend == "dask":
-        distributed = require("distributed", f"{func}(backend='dask')", "distributed",
-                              package="dask.distributed")
-        try:
-            client = distributed.get_client()
-        except ValueError:
-            raise RollerRigError(f"{func}: backend='dask' needs a dask.distributed Client "
-                                 f"(client=...), and none is running") from None
-    if workers is not None:
-        if backend != "threads":
-            raise RollerRigError(f"{func}: workers is for backend='threads' (a Dask client has "
-                                 f"its own workers), got workers={workers!r} with "
-                                 f"backend={backend!r}")
-        if isinstance(workers, bool) or not isinstance(workers, numbers.Integral) \
-                or workers < 1:
-            raise RollerRigError(f"{func}: workers must be an integer >= 1, got {workers!r}")
-    _progress.check(func, progress)
-    if backend == "threads":
-        slots = int(workers) if workers is not None else (os.cpu_count() or 1)
-    elif backend == "dask":
-        slots = max(1, sum(client.nthreads().values()))
-    else:
-        slots = 1
-    return backend, slots, client
-
-
-def _execute(label, task, items, sizes, describe, store, common, *, backend, slots, client,
-             progress, unit):
-    """Run task(item, **common) for every item and store(k, result) in this
-    thread as each finishes.  A failing task raises RollerRigError naming
-    describe(k); Ctrl-C cancels what has not started and raises
-    KeyboardInterrupt."""
-    n = len(items)
-    bar = _progress.bar(progress, int(sum(sizes)), label, unit)
-    done = 0
-
-    def fail(k, exc):
-        return RollerRigError(f"{label}: {describe(k)} failed: {type(exc).__name__}: {exc}")
-
-    def interrupted(cancelled):
-        return KeyboardInterrupt(f"{label} interrupted: {done} of {n} tasks done, "
-                                 f"{cancelled} cancelled")
-    try:
-        if backend == "serial":
-            for k, item in enumerate(items):
-                try:
-                    res = task(item, **common)
-                except Exception as exc:
-                    raise fail(k, exc) from exc
-                except KeyboardInterrupt:
-                    raise interrupted(n - done - 1) from None
-                store(k, res)
-                done += 1
-                bar.update(sizes[k])
-        elif backend == "threads":
-            pool = ThreadPoolExecutor(max_workers=min(slots, n),
-                                      thread_name_prefix="rollerrig-sweep")
-            futures = {}
-            try:
-                futures = {pool.submit(task, item, **common): k for k, item in enumerate(items)}
-                pending = set(futures)
-                while pending:
-                    finished, pending = wait(pending, return_when=FIRST_COMPLETED)
-                    for fut in sorted(finished, key=futures.get):
-                        k = futures[fut]
-                        try:
-                            res = fut.result()
-                        except Exception as exc:
-                            raise fail(k, exc) from exc
-                        store(k, res)
-                        done += 1
-                        bar.update(sizes[k])
-            except KeyboardInterrupt:
-                cancelled = sum(f.cancel() for f in futures)
-                raise interrupted(cancelled) from None
-            finally:
-                # pending chunks are dropped; running ones (C loops that
-                # cannot be stopped from here) end before we return
-                pool.shutdown(wait=True, cancel_futures=True)
-        else:
-            tag = f"rollerrig-{label.replace('(', '-').rstrip(')')}-{uuid.uuid4().hex[:8]}"
-            futures = client.map(partial(task, **common), items,
-                                 key=[f"{tag}-{k}" for k in range(n)], pure=False)
-            index = {f.key: k for k, f in enumerate(futures)}
-            try:
-                for fut in _completed(client, futures):
-                    k = index[fut.key]
-                    try:
-                        res = fut.result()
-                    except Exception as exc:
-                        raise fail(k, exc) from exc
-                    store(k, res)
-                    fut.release()
-                    done += 1
-                    bar.update(sizes[k])
-            except KeyboardInterrupt:
-                client.cancel(futures)
-                raise interrupted(n - done) from None
-            except BaseException:
-                client.cancel(futures)
-                raise
-    finally:
-        bar.close()
-
-
 # ---------------------------------------------------------------- sweep
 
-def _resolve(func):
+def _resolve(func: object) -> Tuple[str, Callable[..., Any], bool]:
     """(name, callable, known) for a function name or a callable."""
     if isinstance(func, str):
         if func not in FUNCTIONS:
@@ -282,7 +169,9 @@ def _resolve(func):
     return getattr(func, "__name__", "func"), func, False
 
 
-def _chunk(bounds, func, names, axes, fixed):
+def _chunk(bounds: Tuple[int, int], func: Union[str, Callable[..., Any]], names: Sequence[str],
+           axes: Sequence[npt.NDArray[Any]],
+           fixed: Mapping[str, Any]) -> Dict[str, npt.NDArray[Any]]:
     """One chunk: the cases start <= i < stop of the flattened grid, as a
     dict of 1-D arrays (module level, so that Dask can send it)."""
     start, stop = bounds
@@ -297,7 +186,7 @@ def _chunk(bounds, func, names, axes, fixed):
         raise RollerRigError(f"sweep: the function must return a NamedTuple (or dict) of "
                              f"arrays, got {type(out).__name__}")
     n = stop - start
-    res = {}
+    res: Dict[str, npt.NDArray[Any]] = {}
     for field, value in out.items():
         arr = np.asarray(value)
         if arr.size == 1 and n != 1:
@@ -309,7 +198,7 @@ def _chunk(bounds, func, names, axes, fixed):
     return res
 
 
-def _friction_base(friction):
+def _friction_base(friction: object) -> contact.FallingFriction:
     """The law whose fields friction.A / friction.B axes replace: the fixed
     `friction` (a FallingFriction), or FallingFriction's defaults without one."""
     if friction is None:
@@ -321,7 +210,8 @@ def _friction_base(friction):
                          f"FallingFriction, got {friction!r:.60}")
 
 
-def _with_friction(kwargs, fixed):
+def _with_friction(kwargs: Dict[str, Any],
+                   fixed: Mapping[str, Any]) -> Tuple[Dict[str, Any], Mapping[str, Any]]:
     """(kwargs, fixed) with the friction.A / friction.B axes turned into the
     argument friction=FallingFriction(A, B) of arrays, one value per case."""
     swept = {n[len("friction."):]: kwargs.pop(n) for n in FRICTION_AXES if n in kwargs}
@@ -332,11 +222,11 @@ def _with_friction(kwargs, fixed):
     return kwargs, dict(fixed, friction=law)
 
 
-def _grid_index(shape, i):
+def _grid_index(shape: Tuple[int, ...], i: int) -> Tuple[int, ...]:
     return tuple(int(k) for k in np.unravel_index(i, shape))
 
 
-def _as_attr(value):
+def _as_attr(value: object) -> Union[str, numbers.Real]:
     """A fixed argument as a netCDF-friendly attribute value."""
     if isinstance(value, (bool, np.bool_)) or value is None:
         return str(value)
@@ -345,14 +235,7 @@ def _as_attr(value):
     return repr(value)
 
 
-def _completed(client, futures):
-    """dask's as_completed on `client`, which need not be the default client."""
-    from distributed import as_completed
-    with client.as_current():
-        yield from as_completed(futures)
-
-
-def _check_output(func, output):
+def _check_output(func: str, output: str) -> Optional[ModuleType]:
     """Refuse a bad output before anything runs; the xarray module when it is wanted."""
     if output not in OUTPUTS:
         raise RollerRigError(f"{func}: output must be 'xarray' or 'dict', got {output!r}")
@@ -457,11 +340,12 @@ def sweep(func: Union[str, Callable[..., Any]], grid: Mapping[str, npt.ArrayLike
     name, fn, known = _resolve(func)
     where = f"sweep({name})"
     names, axes = _axes("sweep", grid, numeric=known)
-    backend, slots, client = _check_options("sweep", backend, workers, client, progress)
+    backend, slots, client = check_options("sweep", backend, workers, client, progress)
     xr = _check_output("sweep", output)
     clash = sorted(set(names) & set(fixed))
     if clash:
         raise RollerRigError(f"sweep: {clash} given both as a grid axis and as a fixed argument")
+    params: Optional[Mapping[str, inspect.Parameter]]
     try:
         params = inspect.signature(fn).parameters
     except (TypeError, ValueError):
@@ -502,9 +386,9 @@ def sweep(func: Union[str, Callable[..., Any]], grid: Mapping[str, npt.ArrayLike
     if known and errors is None:
         call_fixed["errors"] = "ignore"
 
-    data = {}
+    data: Dict[str, npt.NDArray[Any]] = {}
 
-    def store(k, res):
+    def store(k: int, res: Dict[str, npt.NDArray[Any]]) -> None:
         start, stop = bounds[k]
         for field, arr in res.items():
             if field not in data:
@@ -512,14 +396,14 @@ def sweep(func: Union[str, Callable[..., Any]], grid: Mapping[str, npt.ArrayLike
                 data[field] = np.empty(total, dtype=dtype)
             data[field][start:stop] = arr
 
-    def describe(k):
+    def describe(k: int) -> str:
         start, stop = bounds[k]
         return (f"chunk {k} of {len(bounds)} (cases {start} to {stop - 1}, grid index "
                 f"{_grid_index(shape, start)} to {_grid_index(shape, stop - 1)})")
 
     common = dict(func=name if known else fn, names=names, axes=axes, fixed=call_fixed)
-    _execute(where, _chunk, bounds, sizes, describe, store, common, backend=backend,
-             slots=slots, client=client, progress=progress, unit="case")
+    execute(where, _chunk, bounds, sizes, describe, store, common, backend=backend,
+            slots=slots, client=client, progress=progress, unit="case")
     data = {field: arr.reshape(shape) for field, arr in data.items()}
 
     if known and errors is None and "status" in data:
@@ -528,7 +412,7 @@ def sweep(func: Union[str, Callable[..., Any]], grid: Mapping[str, npt.ArrayLike
             for i, (n, ax) in enumerate(zip(names, axes))}
         args.update({k: np.asarray(v, dtype=float) for k, v in fixed.items()
                      if isinstance(v, numbers.Real) and not isinstance(v, bool)})
-        def blame(i, code):
+        def blame(i: int, code: int) -> Optional[List[str]]:
             """the arguments the C core blames for the failed case i"""
             index = np.unravel_index(i, shape)
             kwargs = {n: float(ax[k]) for n, ax, k in zip(names, axes, index)}
@@ -541,7 +425,10 @@ def sweep(func: Union[str, Callable[..., Any]], grid: Mapping[str, npt.ArrayLike
                     {"status": _STATUS_ATTRS}, func=name if known else None)
 
 
-def _package(xr, coords, var_dims, data, attrs, extra_attrs, paths=None, func=None):
+def _package(xr: Optional[ModuleType], coords: Mapping[str, npt.NDArray[Any]],
+             var_dims: Mapping[str, Tuple[str, ...]], data: Mapping[str, npt.NDArray[Any]],
+             attrs: Mapping[str, object], extra_attrs: Mapping[str, Mapping[str, str]],
+             paths: Optional[Mapping[str, str]] = None, func: Optional[str] = None) -> Any:
     """An xarray.Dataset (xr the module), or with xr None the plain dict.
     paths: {dimension: parameter path} of the dimensions named after one;
     func: the library function swept, whose names the units are of."""
@@ -549,7 +436,7 @@ def _package(xr, coords, var_dims, data, attrs, extra_attrs, paths=None, func=No
     units = {n: _units(paths.get(n, n), func) for n in list(coords) + list(data)}
     units = {n: u for n, u in units.items() if u is not None and n != "status"}
 
-    def attrs_of(n):
+    def attrs_of(n: str) -> Dict[str, str]:
         return dict(extra_attrs.get(n, {}), **({"units": units[n]} if n in units else {}),
                     **({"parameter": paths[n]} if n in paths else {}))
     if xr is None:
@@ -568,7 +455,7 @@ _NOT_SWEPT = ("params", "targets", "target_times", "progress", "output", "record
               "max_record_bytes")
 
 
-def _with_value(base, path, value):
+def _with_value(base: Dict[str, Any], path: str, value: object) -> Dict[str, Any]:
     """A deep copy of nested dict `base` with the dotted `path` set to value."""
     params = copy.deepcopy(base)
     *sections, leaf = path.split(".")
@@ -579,7 +466,9 @@ def _with_value(base, path, value):
     return params
 
 
-def _rig_point(k, names, axes, base, options):
+def _rig_point(k: int, names: Sequence[str], axes: Sequence[npt.NDArray[Any]],
+              base: Dict[str, Any], options: Mapping[str, Any]
+              ) -> Tuple[Tuple[float, ...], npt.NDArray[np.float64], int, str]:
     """Run simulate at flat grid point k (module level, so that Dask can send it).
     Returns (targets, metrics [len(targets) x 4], status, message)."""
     shape = tuple(ax.size for ax in axes)
@@ -605,7 +494,7 @@ _SEL_KEYWORDS = {"method", "tolerance", "drop", "indexers"}
 RENAMED_ARGUMENTS = {"method": "creep_method"}
 
 
-def _dimension_names(names):
+def _dimension_names(names: Sequence[str]) -> Tuple[str, ...]:
     """The Dataset's dimension for each grid axis: a parameter path by its
     last part when that is unique, else by the path with "." -> "_"; a
     simulate argument by its own name, but "method" as "creep_method"
@@ -693,7 +582,7 @@ def sweep_rig(grid: Mapping[str, Any], *, backend: str = "threads",
            [0.389]])
     """
     names, axes = _axes("sweep_rig", grid, numeric=False)
-    backend, slots, client = _check_options("sweep_rig", backend, workers, client, progress)
+    backend, slots, client = check_options("sweep_rig", backend, workers, client, progress)
     xr = _check_output("sweep_rig", output)
     dims = _dimension_names(names)
     sim_args = set(inspect.signature(simulate).parameters) - {"creep"}
@@ -711,7 +600,8 @@ def sweep_rig(grid: Mapping[str, Any], *, backend: str = "threads",
             raise RollerRigError(f"sweep_rig: grid axis '{name}' = {ax[0].item()!r}: "
                                  f"{problems[0]}")
         if "." in name:
-            node, parts = full, name.split(".")
+            node: Any = full                    # a section, then a value
+            parts = name.split(".")
             for depth, part in enumerate(parts):
                 if not isinstance(node, dict) or part not in node:
                     raise RollerRigError(f"sweep_rig: unknown parameter '{name}' (no "
@@ -743,9 +633,9 @@ def sweep_rig(grid: Mapping[str, Any], *, backend: str = "threads",
 
     shape = tuple(ax.size for ax in axes)
     total = math.prod(shape)
-    found = {}
+    found: Dict[str, Any] = {}
 
-    def store(k, res):
+    def store(k: int, res: Tuple[Tuple[float, ...], npt.NDArray[np.float64], int, str]) -> None:
         targets, metrics, status, message = res
         if "targets" not in found:
             found["targets"] = targets
@@ -759,14 +649,14 @@ def sweep_rig(grid: Mapping[str, Any], *, backend: str = "threads",
         found["status"][k] = status
         found["message"][k] = message
 
-    def describe(k):
+    def describe(k: int) -> str:
         index = _grid_index(shape, k)
         point = ", ".join(f"{n} = {ax[i].item()!r}" for n, ax, i in zip(names, axes, index))
         return f"run {k} (grid index {index}: {point})"
 
     common = dict(names=names, axes=axes, base=base, options=simulate_kwargs)
-    _execute("sweep_rig", _rig_point, list(range(total)), [1] * total, describe, store, common,
-             backend=backend, slots=slots, client=client, progress=progress, unit="run")
+    execute("sweep_rig", _rig_point, list(range(total)), [1] * total, describe, store, common,
+            backend=backend, slots=slots, client=client, progress=progress, unit="run")
 
     ntarget = len(found["targets"])
     data = {m: found["metrics"][:, :, j].reshape(shape + (ntarget,))

@@ -68,16 +68,18 @@ Example::
                        wheel_y=0.75, roller_y=0.76053)
     equivalent_conicity(g, [0.001, 0.003, 0.005], method="harmonic")
 """
+from __future__ import annotations
+
 import math
 import numbers
 import warnings
-from typing import Any, Optional, Union
-
-import numpy.typing as npt
+from typing import Any, Callable, Optional, Tuple, Union, overload
 
 import numpy as np
+import numpy.typing as npt
 
 from .._errors import RollerRigError, RollerRigWarning
+from .._typing import F64Array, FloatResult
 from .wheelset import RigGeometry, wheelset_contact
 
 __all__ = ["CONICITY_METHODS", "equivalent_conicity", "rolling_radius_difference"]
@@ -89,7 +91,13 @@ _FUNC = "equivalent_conicity"
 _MAX_AMPLITUDE = 0.05   #: [m] a larger amplitude is taken for millimetres given as metres
 
 
-def rolling_radius_difference(geometry, y_ws, **search):
+@overload
+def rolling_radius_difference(geometry: RigGeometry, y_ws: float, **search: Any) -> float: ...
+@overload
+def rolling_radius_difference(geometry: RigGeometry, y_ws: npt.ArrayLike,
+                              **search: Any) -> FloatResult: ...
+def rolling_radius_difference(geometry: RigGeometry, y_ws: npt.ArrayLike,
+                              **search: Any) -> FloatResult:
     """Delta r = r_left - r_right [m] at the lateral shifts y_ws [m].
 
     Parameters
@@ -124,7 +132,7 @@ def rolling_radius_difference(geometry, y_ws, **search):
     return dr if np.ndim(y_ws) else float(dr[0])
 
 
-def _is_number(v):
+def _is_number(v: object) -> bool:
     return isinstance(v, numbers.Real) and not isinstance(v, bool)
 
 
@@ -132,16 +140,20 @@ class _DeltaR:
     """A tabulated Delta r(y), linear between the nodes, and its integral
     (the potential of the kinematic equation), exact for that interpolant."""
 
-    def __init__(self, y, dr):
+    def __init__(self, y: F64Array, dr: F64Array) -> None:
         self.y, self.dr = y, dr
         self.slope = np.diff(dr) / np.diff(y)
         # NaN cells add nothing: differences of V within a finite run stay exact
         self.V = np.concatenate(([0.0], np.nancumsum(0.5 * (dr[1:] + dr[:-1]) * np.diff(y))))
 
-    def __call__(self, y):
+    @overload
+    def __call__(self, y: float) -> float: ...
+    @overload
+    def __call__(self, y: F64Array) -> F64Array: ...
+    def __call__(self, y: Union[float, F64Array]) -> Union[float, F64Array]:
         return np.interp(y, self.y, self.dr, left=np.nan, right=np.nan)
 
-    def potential(self, y):
+    def potential(self, y: npt.ArrayLike) -> F64Array:
         y = np.asarray(y, dtype=float)
         k = np.clip(np.searchsorted(self.y, y, side="right") - 1, 0, self.y.size - 2)
         h = y - self.y[k]
@@ -149,7 +161,7 @@ class _DeltaR:
         return np.where((y >= self.y[0]) & (y <= self.y[-1]), v, np.nan)
 
 
-def _bisect(g, lo, hi):
+def _bisect(g: Callable[[float], float], lo: float, hi: float) -> Optional[float]:
     """The root of g in [lo, hi] (g increasing through it), by bisection."""
     glo, ghi = g(lo), g(hi)
     if not (np.isfinite(glo) and np.isfinite(ghi)) or glo > 0.0 or ghi < 0.0:
@@ -167,7 +179,7 @@ def _bisect(g, lo, hi):
     return 0.5 * (lo + hi)
 
 
-def _finite_run(f, y0):
+def _finite_run(f: _DeltaR, y0: float) -> Optional[Tuple[float, float]]:
     """The widest interval [lo, hi] of table nodes around y0 with finite Delta r."""
     ok = np.isfinite(f.dr)
     k = int(np.clip(np.searchsorted(f.y, y0), 0, f.y.size - 1))
@@ -182,7 +194,8 @@ def _finite_run(f, y0):
     return f.y[lo], f.y[hi]
 
 
-def _centre(f, amp, method, centre, t_sin):
+def _centre(f: _DeltaR, amp: float, method: str, centre: Union[str, float],
+            t_sin: F64Array) -> float:
     if not isinstance(centre, str):
         return float(centre)
     run = _finite_run(f, 0.0)
@@ -190,10 +203,10 @@ def _centre(f, amp, method, centre, t_sin):
         raise RollerRigError(f"{_FUNC}: Delta r is not known at y = 0 (no contact, or no "
                              f"Hertz ellipse there)")
     if method == "harmonic":
-        def g(c):
+        def g(c: float) -> float:
             return float(np.mean(f(c + amp * t_sin)))
     else:
-        def g(c):
+        def g(c: float) -> float:
             return float(f.potential(c + amp) - f.potential(c - amp))
     inset = amp * (1.0 + 1e-9)               # the stroke stays inside despite rounding
     lo, hi = run[0] + inset, run[1] - inset
@@ -206,7 +219,8 @@ def _centre(f, amp, method, centre, t_sin):
     return c
 
 
-def _one(f, amp, method, centre, n):
+def _one(f: _DeltaR, amp: float, method: str, centre: Union[str, float],
+         n: int) -> Union[float, np.floating[Any]]:
     t = 2.0 * math.pi * (np.arange(n) + 0.5) / n
     st = np.sin(t)
     c = _centre(f, amp, method, centre, st)
@@ -238,7 +252,22 @@ def _one(f, amp, method, centre, n):
     return 2.0 * math.pi ** 2 / (2.0 * half) ** 2
 
 
-def equivalent_conicity(geometry: RigGeometry, amplitude: npt.ArrayLike = 0.003,
+#: a tabulated Delta r: (y, delta_r), two 1-D arrays [m]
+DeltaRTable = Tuple[npt.ArrayLike, npt.ArrayLike]
+
+
+@overload
+def equivalent_conicity(geometry: Union[RigGeometry, DeltaRTable], amplitude: float = ...,
+                        method: str = ..., *, centre: Union[str, float] = ...,
+                        dy: Optional[float] = ..., y_span: Optional[float] = ..., n: int = ...,
+                        **search: Any) -> float: ...
+@overload
+def equivalent_conicity(geometry: Union[RigGeometry, DeltaRTable], amplitude: npt.ArrayLike,
+                        method: str = ..., *, centre: Union[str, float] = ...,
+                        dy: Optional[float] = ..., y_span: Optional[float] = ..., n: int = ...,
+                        **search: Any) -> Union[float, npt.NDArray[np.float64]]: ...
+def equivalent_conicity(geometry: Union[RigGeometry, DeltaRTable],
+                        amplitude: npt.ArrayLike = 0.003,
                         method: str = "harmonic", *, centre: Union[str, float] = "balance",
                         dy: Optional[float] = None, y_span: Optional[float] = None, n: int = 2048,
                         **search: Any) -> Union[float, npt.NDArray[np.float64]]:
@@ -367,8 +396,9 @@ def equivalent_conicity(geometry: RigGeometry, amplitude: npt.ArrayLike = 0.003,
             raise RollerRigError(f"{_FUNC}: y_span / dy = {steps:.3g} grid steps each side; "
                                  f"at most 50000 (a larger dy or a smaller y_span)")
         k = int(math.ceil(steps))
-        y = dy * np.arange(-k, k + 1)
-        f = _DeltaR(y, rolling_radius_difference(geometry, y, **search))
+        y = dy * np.arange(-k, k + 1, dtype=np.float64)
+        # (y is 1-D: Delta r an array, which np.asarray passes through)
+        f = _DeltaR(y, np.asarray(rolling_radius_difference(geometry, y, **search)))
     elif isinstance(geometry, (tuple, list)) and len(geometry) == 2:
         extra = sorted(search) + [k for k, v in (("dy", dy), ("y_span", y_span))
                                   if v is not None]

@@ -19,17 +19,20 @@ load, per patch the calibrated ellipse by the exact-theory table plus the
 tabulated correction (csrc/geometry/rr_nonhertz.h; the rows are built by
 rr_nonhertz_table.h, in threads).
 """
+from __future__ import annotations
+
+import os
 import warnings
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
-import os
-from typing import Optional, Sequence, Union
 
 from .. import _core
 from .._errors import RollerRigError, RollerRigWarning, status_message
+from .._typing import F64Array
 from .wheelset import RigGeometry, wheelset_contact
 
 __all__ = ["NonHertzSide", "NonHertzTable", "nonhertz_table"]
@@ -42,6 +45,10 @@ LOAD_SPAN = 1.6 * 1.1 ** 1.5
 JUMP = 0.5e-3
 #: rows within this distance of a jump are refined
 JUMP_ZONE = 0.3e-3
+
+#: a wheelset's motion at a row as the core takes it: ((centre), (velocity),
+#: (angular velocity)), rig frame
+Motion = Tuple[Tuple[float, float, float], ...]
 
 
 @dataclass(frozen=True, eq=False)
@@ -62,18 +69,18 @@ class NonHertzSide:
     mu_ref: float      #: the friction the correction was built at
 
     @property
-    def y(self):
+    def y(self) -> F64Array:
         """The rows' lateral shifts [m]."""
         return self.rows[:, 0].copy()
 
     @property
-    def head(self):
+    def head(self) -> Tuple[float, float, float, float, float]:
         """The table's header (sigma, R0 [m], G [Pa], nu, mu_ref), as the C
         core takes it (rr_nonhertz.h)."""
         return (float(self.sigma), float(self.R0), float(self.G), float(self.nu),
                 float(self.mu_ref))
 
-    def check(self):
+    def check(self) -> NonHertzSide:
         """Check the header and every row by the C core's rules.
 
         Returns
@@ -108,12 +115,12 @@ class NonHertzTable:
     rig_nonhertz_table : the rig's table.
     rig_contact : its patch="nonhertz" takes one.
     """
-    left: NonHertzSide         #: the left side's table (None where not built)
-    right: NonHertzSide        #: the right side's table (None where not built)
+    left: Optional[NonHertzSide]    #: the left side's table (None where not built)
+    right: Optional[NonHertzSide]   #: the right side's table (None where not built)
     Fz: float                  #: the nominal vertical load the nodes were sized for [N]
     build_seconds: float = float("nan")   #: wall time of the build
 
-    def side(self, name):
+    def side(self, name: str) -> NonHertzSide:
         """One side's table.
 
         Parameters
@@ -131,7 +138,7 @@ class NonHertzTable:
         RollerRigError
             No table was built for that side.
         """
-        s = getattr(self, name)
+        s: Optional[NonHertzSide] = getattr(self, name)
         if s is None:
             raise RollerRigError(f"NonHertzTable: no table for the {name} side")
         return s
@@ -144,7 +151,7 @@ class NonHertzTable:
         path : str or path-like
             The file; :meth:`load` reads it back.
         """
-        out = dict(Fz=self.Fz, build_seconds=self.build_seconds,
+        out: Dict[str, Any] = dict(Fz=self.Fz, build_seconds=self.build_seconds,
                    layout=np.array([_core.NH_ROW_LEN, _core.NH_NODES, _core.NH_MAX_PATCHES]))
         for name in ("left", "right"):
             s = getattr(self, name)
@@ -178,7 +185,7 @@ class NonHertzTable:
             if layout != (_core.NH_ROW_LEN, _core.NH_NODES, _core.NH_MAX_PATCHES):
                 raise RollerRigError(f"NonHertzTable.load: {path}: the layout {layout} is not "
                                      f"this library's")
-            sides = {}
+            sides: Dict[str, Optional[NonHertzSide]] = {}
             for name in ("left", "right"):
                 if f"{name}_rows" in f:
                     h = f[f"{name}_head"]
@@ -191,7 +198,7 @@ class NonHertzTable:
                        float(f["build_seconds"]))
 
 
-def _jumps(geometry, y_lo, y_hi, side):
+def _jumps(geometry: RigGeometry, y_lo: float, y_hi: float, side: str) -> F64Array:
     """Lateral shifts where the side's rigid contact point jumps."""
     y = np.arange(y_lo - JUMP_ZONE, y_hi + JUMP_ZONE + 5e-6, 1e-5)
     c = getattr(wheelset_contact(geometry, y), side)
@@ -199,28 +206,30 @@ def _jumps(geometry, y_lo, y_hi, side):
     return 0.5 * (y[k] + y[k + 1])
 
 
-def row_shifts(geometry, y_min, y_max, dy, side, dy_jump=None):
+def row_shifts(geometry: RigGeometry, y_min: float, y_max: float, dy: float, side: str,
+               dy_jump: Optional[float] = None) -> F64Array:
     """The rows: every dy from y_min to y_max, every dy_jump within
     JUMP_ZONE of the rigid contact point's jumps (none if dy_jump is None)."""
     n = int(np.ceil((y_max - y_min) / dy - 1e-9))
-    y = list(np.linspace(y_min, y_min + n * dy, n + 1))
+    ys = list(np.linspace(y_min, y_min + n * dy, n + 1))
     if dy_jump is not None:
         for j in _jumps(geometry, y_min, y_max, side):
-            y += list(np.arange(j - JUMP_ZONE, j + JUMP_ZONE + 1e-9, dy_jump))
-    y = np.unique(np.round(np.array(y), 9))
+            ys += list(np.arange(j - JUMP_ZONE, j + JUMP_ZONE + 1e-9, dy_jump))
+    y = np.unique(np.round(np.array(ys), 9))
     return y[(y >= y_min - 1e-12) & (y <= y_min + n * dy + 1e-12)]
 
 
-def _number(func, name, v, positive=True):
-    ok = isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, bool)
-    if not ok or not np.isfinite(float(v)) or (positive and not float(v) > 0):
+def _number(func: str, name: str, v: object, positive: bool = True) -> float:
+    if not (isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, bool)) \
+            or not np.isfinite(float(v)) or (positive and not float(v) > 0):
         raise RollerRigError(f"{func}: {name} must be a finite number{' > 0' if positive else ''}"
                              f", got {v!r}")
     return float(v)
 
 
 def nonhertz_table(geometry: RigGeometry, y_min: Optional[float], y_max: Optional[float],
-                   *, Fz: float, dy: float = 2e-4, dy_jump: float = 5e-5, mu_ref: float = 0.52,
+                   *, Fz: float, dy: float = 2e-4, dy_jump: Optional[float] = 5e-5,
+                   mu_ref: float = 0.52,
                    E: float = 2.1e11, nu: float = 0.28, sides: Sequence[str] = ("left", "right"),
                    n: int = 40, n_corr: int = 30, richardson: bool = True, combine: float = 4e-3,
                    tol: float = 1e-6, maxit: int = 5000, workers: int = 2,
@@ -333,13 +342,16 @@ def nonhertz_table(geometry: RigGeometry, y_min: Optional[float], y_max: Optiona
             dy_jump = _number(func, "dy_jump", dy_jump)
     G = E / (2.0 * (1.0 + nu))
     t0 = time.perf_counter()
-    out = {}
+    out: Dict[str, Optional[NonHertzSide]] = {}
     for side in ("left", "right"):
         if side not in sides:
             out[side] = None
             continue
-        ys = (np.unique(np.asarray(y, dtype=float)) if y is not None
-              else row_shifts(geometry, y_min, y_max, dy, side, dy_jump))
+        if y is not None:
+            ys = np.unique(np.asarray(y, dtype=float))
+        else:
+            assert y_min is not None and y_max is not None    # checked above, y None
+            ys = row_shifts(geometry, y_min, y_max, dy, side, dy_jump)
         if ys.size < 2 or not np.all(np.isfinite(ys)):
             raise RollerRigError(f"{func}: at least two finite rows are needed, got {ys!r:.80}")
         with ThreadPoolExecutor(max_workers=int(workers)) as ex:
@@ -368,7 +380,9 @@ def nonhertz_table(geometry: RigGeometry, y_min: Optional[float], y_max: Optiona
     return NonHertzTable(out["left"], out["right"], Fz, time.perf_counter() - t0)
 
 
-def _row(geometry, side, y, Fz, E, nu, mu_ref, n, n_corr, richardson, combine, tol, maxit):
+def _row(geometry: RigGeometry, side: str, y: float, Fz: float, E: float, nu: float,
+         mu_ref: float, n: int, n_corr: int, richardson: bool, combine: float, tol: float,
+         maxit: int) -> Tuple[F64Array, Dict[str, int]]:
     """One row by the core (rr_nonhertz_row), the GIL released."""
     c = wheelset_contact(geometry, y)
     z0, roll0, p = float(c.z[0]), float(c.roll[0]), getattr(c, side)
@@ -402,8 +416,10 @@ def _row(geometry, side, y, Fz, E, nu, mu_ref, n, n_corr, richardson, combine, t
 _NODE_F = (0.03, 0.1, 0.2, 0.33, 0.46, 0.6, 0.75, 0.88, 1.0)
 
 
-def nonhertz_wheel(side_table, y, Fz, mu, roller_spin, motion0, motion1, vmin=1e-3, x=0.0,
-                   yaw=0.0):
+def nonhertz_wheel(side_table: NonHertzSide, y: float, Fz: float, mu: float,
+                   roller_spin: float, motion0: Motion, motion1: Motion, vmin: float = 1e-3,
+                   x: float = 0.0,
+                   yaw: float = 0.0) -> Tuple[int, Dict[str, Any], Tuple[Dict[str, Any], ...]]:
     """One wheel's contact from a side's table (rr_nonhertz_wheel): (status,
     result dict, patch dicts); motion0/1: ((c), (v), (w)) of the wheelset at
     the rows around y (nonhertz_locate), at the longitudinal shift x and yaw."""
@@ -412,6 +428,6 @@ def nonhertz_wheel(side_table, y, Fz, mu, roller_spin, motion0, motion1, vmin=1e
                                  float(vmin), float(x), float(yaw)), motion0, motion1)
 
 
-def nonhertz_locate(side_table, y):
+def nonhertz_locate(side_table: NonHertzSide, y: float) -> Tuple[int, int, float]:
     """(status, row, w): the rows around y."""
     return _core.nonhertz_locate(side_table.rows, side_table.head, float(y))

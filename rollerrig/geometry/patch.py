@@ -61,15 +61,19 @@ the zero-gap pose and Hertz's approach, and words the core's reasons for
 a patch it cannot build.  tests/_nonhertz_python.py keeps the Python
 construction it replaced, and tests/test_gap.py holds the two together.
 """
+from __future__ import annotations
+
 import warnings
 from dataclasses import dataclass
-from typing import NamedTuple
+from typing import Any, List, Literal, Mapping, NamedTuple, Optional, Tuple, Union, overload
 
 import numpy as np
+import numpy.typing as npt
 
 from .. import _core
 from .._errors import RollerRigError, RollerRigWarning, status_message
-from .wheelset import RigGeometry, wheelset_contact
+from .._typing import F64Array
+from .wheelset import ContactSide, RigGeometry, wheelset_contact
 
 __all__ = ["Patch", "undeformed_distance", "patch_shape", "PatchShape"]
 
@@ -80,6 +84,9 @@ _SAMPLE = 2e-5
 _SAMPLE_MIN = 1e-7
 #: lateral half-width of the profiles' window around the reference point [m]
 _WINDOW = 0.04
+
+#: the tangent plane's reference: "point", "weighted" or (s_roller [m], delta [rad])
+Reference = Union[str, Tuple[float, float], List[float]]
 
 
 @dataclass(frozen=True, eq=False)
@@ -118,35 +125,43 @@ class Patch:
     cover: float         #: the grid covers where h <= cover * approach
     #: lateral intervals (y_lo, y_hi) [m] where h <= cover * approach, in the
     #: plane's y: those on the grid
-    regions: tuple
-    excluded: tuple      #: intervals left out: farther than `combine` (a separate patch)
+    regions: Tuple[Tuple[float, float], ...]
+    #: intervals left out: farther than `combine` (a separate patch)
+    excluded: Tuple[Tuple[float, float], ...]
 
     @property
-    def shape(self):
+    def shape(self) -> Tuple[int, ...]:
         """The grid's shape (my, mx), h's."""
         return self.h.shape
 
     @property
-    def x(self):
+    def x(self) -> F64Array:
         """Element centres along x [m], (my, mx)."""
         my, mx = self.h.shape
         return np.broadcast_to(self.x0 + self.dx * np.arange(mx), (my, mx))
 
     @property
-    def y(self):
+    def y(self) -> F64Array:
         """Element centres along y [m], (my, mx)."""
         my, mx = self.h.shape
         return np.broadcast_to((self.y0 + self.dy * np.arange(my))[:, None], (my, mx))
 
 
-def _runs(mask):
+def _runs(mask: npt.ArrayLike) -> List[Tuple[np.intp, np.intp]]:
     """(start, stop) index pairs of the runs of True in a 1-D mask."""
     m = np.concatenate(([False], mask, [False])).astype(np.int8)
     d = np.diff(m)
     return list(zip(np.flatnonzero(d == 1), np.flatnonzero(d == -1)))
 
 
-def _number(func, name, v, positive=True, allow_none=False):
+@overload
+def _number(func: str, name: str, v: object, positive: bool = ...,
+            allow_none: Literal[False] = ...) -> float: ...
+@overload
+def _number(func: str, name: str, v: object, positive: bool = ...,
+            allow_none: bool = ...) -> Optional[float]: ...
+def _number(func: str, name: str, v: object, positive: bool = True,
+            allow_none: bool = False) -> Optional[float]:
     if v is None and allow_none:
         return None
     if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)) \
@@ -156,7 +171,8 @@ def _number(func, name, v, positive=True, allow_none=False):
     return float(v)
 
 
-def _pose_and_point(func, geometry, y_ws, side):
+def _pose_and_point(func: str, geometry: RigGeometry, y_ws: float,
+                    side: str) -> Tuple[float, float, ContactSide]:
     if not isinstance(geometry, RigGeometry):
         raise RollerRigError(f"{func}: geometry must be a RigGeometry, got {geometry!r:.60}")
     if side not in ("left", "right"):
@@ -166,7 +182,7 @@ def _pose_and_point(func, geometry, y_ws, side):
     return float(c.z[0]), float(c.roll[0]), getattr(c, side)
 
 
-def _reference(func, reference):
+def _reference(func: str, reference: Reference) -> Tuple[int, float, float]:
     """(code, s_roller, delta) of the core (rr_gap.h) for a reference."""
     if isinstance(reference, str) and reference in ("point", "weighted"):
         return (_core.GAP_POINT if reference == "point" else _core.GAP_WEIGHTED), 0.0, 0.0
@@ -181,7 +197,7 @@ def _reference(func, reference):
                          f"(s_roller, delta), got {reference!r:.60}")
 
 
-def _combine(func, combine):
+def _combine(func: str, combine: float) -> float:
     combine = _number(func, "combine", combine, positive=False)
     if combine < 0:
         # a negative one kept not even the deepest interval (issue 24: min()
@@ -190,13 +206,14 @@ def _combine(func, combine):
     return combine
 
 
-def _gap_error(func, status, info, geometry, side, y_ws, load, z, roll):
+def _gap_error(func: str, status: int, info: Mapping[str, Any], geometry: RigGeometry,
+               side: str, y_ws: float, load: str, z: float, roll: float) -> RollerRigError:
     """The RollerRigError of a failed rr_gap_build: its reason (info["why"])
     in words, with the numbers the core left for it."""
     why = info["why"]
     level = info["level"]
 
-    def too_large(where):
+    def too_large(where: str) -> str:
         return (f"{func}: at y_ws = {y_ws!r} m and {load} the region to cover (h <= cover x "
                 f"approach = {level:.3g} m) {where}: a load or approach beyond one planar "
                 f"patch on these profiles")
@@ -253,14 +270,16 @@ def _gap_error(func, status, info, geometry, side, y_ws, load, z, roll):
     return RollerRigError(msg)
 
 
-def _count(v):
+def _count(v: float) -> Union[int, float]:
     """An element count the core gave as a double, as an integer."""
     return int(v) if np.isfinite(v) else v
 
 
-def _patch(h, info, side, y_ws, z, roll, approach, cover, lowered):
+def _patch(h: F64Array, info: Mapping[str, Any], side: str, y_ws: float, z: float,
+           roll: float, approach: float, cover: float, lowered: float) -> Patch:
     """The Patch of a built grid (rr_gap_build's h and numbers)."""
-    vec = (lambda k: np.array(info[k], dtype=float))
+    def vec(k: str) -> F64Array:
+        return np.array(info[k], dtype=float)
     return Patch(h=h, dx=info["dx"], dy=info["dy"], x0=info["x0"], y0=info["y0"],
                  point=vec("point"), wheel_point=vec("wheel_point"), lowered=lowered,
                  t1=vec("t1"), t2=vec("t2"), n=vec("n"), delta=info["delta"],
@@ -269,7 +288,8 @@ def _patch(h, info, side, y_ws, z, roll, approach, cover, lowered):
                  regions=tuple(info["regions"]), excluded=tuple(info["excluded"]))
 
 
-def _warn_excluded(func, info, y_ws, side, combine, stacklevel=3):
+def _warn_excluded(func: str, info: Mapping[str, Any], y_ws: float, side: str,
+                   combine: float, stacklevel: int = 3) -> None:
     rest = info["excluded"]
     if rest:
         warnings.warn(f"{func}: at y_ws = {y_ws!r} m the {side} wheel has "
@@ -279,9 +299,12 @@ def _warn_excluded(func, info, y_ws, side, combine, stacklevel=3):
                       f"a separate patch, left out", RollerRigWarning, stacklevel=stacklevel)
 
 
-def undeformed_distance(geometry, y_ws, *, side="left", N=None, approach=None, n=40, E=2.1e11,
-                        nu=0.28, cover=1.5, dx=None, dy=None, reference="weighted",
-                        combine=4e-3, z=None, roll=None):
+def undeformed_distance(geometry: RigGeometry, y_ws: float, *, side: str = "left",
+                        N: Optional[float] = None, approach: Optional[float] = None,
+                        n: int = 40, E: float = 2.1e11, nu: float = 0.28, cover: float = 1.5,
+                        dx: Optional[float] = None, dy: Optional[float] = None,
+                        reference: Reference = "weighted", combine: float = 4e-3,
+                        z: Optional[float] = None, roll: Optional[float] = None) -> Patch:
     """The undeformed distance h(x, y) of one wheel on its roller, on a grid.
 
     Parameters
@@ -415,7 +438,7 @@ class PatchShape(NamedTuple):
     lateral_regions: int  #: runs of rows holding contact
 
 
-def patch_shape(contact, dx, dy):
+def patch_shape(contact: npt.ArrayLike, dx: float, dy: float) -> PatchShape:
     """The extent of a contact area, in CONTACT's terms.
 
     Parameters
@@ -444,7 +467,7 @@ def patch_shape(contact, dx, dy):
                       len(_runs(c.any(axis=1))))
 
 
-def _label_count(c):
+def _label_count(c: npt.NDArray[np.bool_]) -> int:
     """Connected components of True elements, 8-neighbour connectivity."""
     seen = np.zeros_like(c)
     count = 0

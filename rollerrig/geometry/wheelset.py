@@ -17,19 +17,20 @@ The search is in the plane of the axle; rollerrig.rig.contact adds the
 wheelset's longitudinal shift and yaw, which move the contact points round
 the rollers (csrc/rig/rr_rig_contact.h).
 """
+from __future__ import annotations
+
 import os
 import warnings
 from dataclasses import dataclass
-from typing import NamedTuple, Optional
-from typing import Any
-
-import numpy.typing as npt
+from typing import Any, List, NamedTuple, Optional, Tuple
 
 import numpy as np
+import numpy.typing as npt
 
 from .. import _core
 from .._errors import RollerRigError, RollerRigWarning, check_status, status_message
 from .._binding import _as_float
+from .._typing import F64Array
 from .profiles import DATA_DIR, Profile, read_profile
 
 __all__ = ["RigGeometry", "ContactSide", "WheelsetContact", "wheelset_contact",
@@ -182,23 +183,23 @@ class RigGeometry:
                    roller_radius=roller_radius + rl.z.min(), wheel_y=back_to_back / 2,
                    roller_y=gauge / 2 - gl)
 
-    def _arrays(self):
+    def _arrays(self) -> List[F64Array]:
         """The four profiles as the core takes them: each the Profile's own
         spline (knots, values, the second derivatives at the knots that
         rr_spline_fit gave), heights up, so -z (rr_profile_surface does the
         same in C, csrc/geometry/rr_tables.h)."""
-        def spline(p, kind):
+        def spline(p: object, kind: str) -> Tuple[F64Array, F64Array, F64Array]:
             if not isinstance(p, Profile):
                 raise RollerRigError(f"RigGeometry: {kind} must be a Profile, got {p!r:.60}")
             return (np.ascontiguousarray(p.y), np.ascontiguousarray(-p.z),
                     np.ascontiguousarray(-p._d2))
-        out = []
+        out: List[F64Array] = []
         for w, r in ((self.wheel, self.roller),
                      (self.wheel_right or self.wheel, self.roller_right or self.roller)):
             out += [*spline(w, "wheel"), *spline(r, "roller")]
         return out
 
-    def _params(self):
+    def _params(self) -> Tuple[float, ...]:
         vals = dict(wheel_radius=self.wheel_radius, roller_radius=self.roller_radius,
                     wheel_y=self.wheel_y, roller_y=self.roller_y)
         for name, v in vals.items():
@@ -242,13 +243,13 @@ class WheelsetContact(NamedTuple):
     status: np.ndarray     #: C status per shift (0 OK, < 0: a wheel off its roller, NaN)
 
 
-def _side(block):
+def _side(block: F64Array) -> ContactSide:
     fields = [block[k] for k in range(11)]
     fields[10] = fields[10] != 0
     return ContactSide(*fields)
 
 
-def _shifts(func, y_ws):
+def _shifts(func: str, y_ws: npt.ArrayLike) -> F64Array:
     """Lateral shifts as a 1-D float64 array, with a message naming y_ws."""
     y = _as_float(func, "y_ws", y_ws)
     if y.ndim > 1:
@@ -257,7 +258,8 @@ def _shifts(func, y_ws):
     return np.ascontiguousarray(np.atleast_1d(y))
 
 
-def _search(func, nsamples=400, two_point_tol=1e-4, two_point_sep=2e-3):
+def _search(func: str, nsamples: int = 400, two_point_tol: float = 1e-4,
+            two_point_sep: float = 2e-3) -> Tuple[int, float, float]:
     """The search options, checked: (nsamples, two_point_tol, two_point_sep)."""
     if isinstance(nsamples, bool) or not isinstance(nsamples, (int, np.integer)) \
             or not 3 <= nsamples <= _core.SEARCH_MAX_SAMPLES:
@@ -360,16 +362,16 @@ class ContactTable:
     data: np.ndarray        #: the rows, as the core stores them (read-only)
 
     @property
-    def y_ws(self):
+    def y_ws(self) -> F64Array:
         """The shifts of the rows [m]."""
-        return self.y0 + self.dy * np.arange(self.n)
+        return self.y0 + self.dy * np.arange(self.n, dtype=np.float64)
 
     @property
-    def y_range(self):
+    def y_range(self) -> Tuple[float, float]:
         """The first and last rows' shifts (y_min, y_max) [m]."""
         return self.y0, self.y0 + self.dy * (self.n - 1)
 
-    def lookup(self, y_ws, *, errors=None):
+    def lookup(self, y_ws: npt.ArrayLike, *, errors: Optional[str] = None) -> WheelsetContact:
         """The geometry at y_ws [m], interpolated between rows.
 
         Parameters
@@ -394,7 +396,7 @@ class ContactTable:
         check_status(func, status, {"y_ws": y}, errors)
         return WheelsetContact(y, z, roll, _side(left), _side(right), status)
 
-    def slopes(self, y_ws):
+    def slopes(self, y_ws: npt.ArrayLike) -> Tuple[F64Array, F64Array]:
         """The interpolant's slopes d z / d y_ws [-] and d roll / d y_ws [rad/m] at y_ws [m].
 
         The constraint's rates per unit lateral velocity; two 1-D arrays.

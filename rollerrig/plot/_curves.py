@@ -1,9 +1,26 @@
 """rollerrig.plot's creep curves and traction fields."""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any, Mapping, Optional, Tuple, Union
+
 import numpy as np
+import numpy.typing as npt
 
 from .._errors import RollerRigError
+from .._typing import F64Array
 from ._base import (MM, TRACTION_QUANTITIES, _one_axes, _real_1d, _scale, _sign, _xscale,
                     _ylabel)
+
+if TYPE_CHECKING:                      # matplotlib is imported on use only
+    from matplotlib.axes import Axes
+
+    from ..analysis.reference import CreepCurve
+    from ..contact.creep import CreepForces, TractionField
+
+#: a force as the creep-curve functions take it: values [N] or a CreepForces
+Force = Union["npt.ArrayLike", "CreepForces"]
+#: a reference curve: a CreepCurve or (cx, force[, label])
+Reference = Union["CreepCurve", Tuple[Any, ...]]
 
 
 # ------------------------------------------------------------------ creep curves
@@ -11,11 +28,12 @@ from ._base import (MM, TRACTION_QUANTITIES, _one_axes, _real_1d, _scale, _sign,
 _COMPONENTS = ("fx", "fy", "|f|")
 
 
-def _force_values(func, force, component, n):
+def _force_values(func: str, force: object, component: str, n: int) -> F64Array:
     from ..contact.creep import CreepForces
     if component not in _COMPONENTS:
         raise RollerRigError(f"{func}: component must be one of {_COMPONENTS}, "
                              f"got {component!r}")
+    vals: npt.NDArray[Any]
     if isinstance(force, CreepForces):
         fx, fy = np.asarray(force.fx, dtype=float), np.asarray(force.fy, dtype=float)
         vals = {"fx": fx, "fy": fy, "|f|": np.hypot(fx, fy)}[component]
@@ -30,8 +48,10 @@ def _force_values(func, force, component, n):
     return vals
 
 
-def creep_curve(cx, force, *, ax=None, label=None, mu=None, N=None, sign=-1,
-                component="fx", xscale=None, **line_kw):
+def creep_curve(cx: npt.ArrayLike, force: Force, *, ax: Optional[Axes] = None,
+                label: Optional[str] = None, mu: Optional[float] = None,
+                N: Optional[float] = None, sign: int = -1, component: str = "fx",
+                xscale: Optional[str] = None, **line_kw: Any) -> Axes:
     """One creep curve: sign * force / (mu N) against the creepage cx.
 
     Parameters
@@ -78,23 +98,24 @@ def creep_curve(cx, force, *, ax=None, label=None, mu=None, N=None, sign=-1,
     ('log', '-fx / (mu N)')
     """
     func = "creep_curve"
-    cx = _real_1d(func, "cx", cx)
+    x = _real_1d(func, "cx", cx)
     sign = _sign(func, sign)
-    vals = _force_values(func, force, component, cx.size)
+    vals = _force_values(func, force, component, x.size)
     div, norm = _scale(func, mu, N)
-    _, ax, _ = _one_axes(func, ax, (6, 4))
-    fresh = not ax.get_lines()       # keep the scale and labels of axes drawn on before
-    ax.plot(cx, sign * vals / div, label=label, **line_kw)
+    _, axes, _ = _one_axes(func, ax, (6, 4))
+    fresh = not axes.get_lines()     # keep the scale and labels of axes drawn on before
+    axes.plot(x, sign * vals / div, label=label, **line_kw)
     if fresh:
-        ax.set_xscale(_xscale(cx, xscale))
-        ax.set_xlabel("longitudinal creepage cx" if component == "fx" else "creepage")
-        ax.set_ylabel(_ylabel(component, sign, norm))
+        axes.set_xscale(_xscale(x, xscale))
+        axes.set_xlabel("longitudinal creepage cx" if component == "fx" else "creepage")
+        axes.set_ylabel(_ylabel(component, sign, norm))
     if label is not None:
-        ax.legend(fontsize=8)
-    return ax
+        axes.legend(fontsize=8)
+    return axes
 
 
-def _reference_points(func, reference):
+def _reference_points(func: str, reference: object) -> Tuple[
+        F64Array, F64Array, str, Optional[float], Optional[float]]:
     """(cx, fx [N], label, mu, N) of a reference curve."""
     from ..analysis.reference import CreepCurve
     if isinstance(reference, CreepCurve):
@@ -118,8 +139,11 @@ def _reference_points(func, reference):
 _STYLES = ("-", "--", "-.", ":")
 
 
-def creep_curves(cx, curves, *, mu=None, N=None, reference=None, ax=None, sign=-1,
-                 component="fx", xscale=None, title=None):
+def creep_curves(cx: npt.ArrayLike, curves: Union[Mapping[Any, Force], Force], *,
+                 mu: Optional[float] = None, N: Optional[float] = None,
+                 reference: Optional[Reference] = None, ax: Optional[Axes] = None,
+                 sign: int = -1, component: str = "fx", xscale: Optional[str] = None,
+                 title: Optional[str] = None) -> Axes:
     """Several creep curves on one axes, optionally over reference points.
 
     Parameters
@@ -151,43 +175,43 @@ def creep_curves(cx, curves, *, mu=None, N=None, reference=None, ax=None, sign=-
         For bad input (naming the argument).
     """
     func = "creep_curves"
-    cx = _real_1d(func, "cx", cx)
-    if not isinstance(curves, dict):
-        curves = {None: curves}
-    if not curves:
+    x = _real_1d(func, "cx", cx)
+    by_label: Mapping[Any, object] = curves if isinstance(curves, dict) else {None: curves}
+    if not by_label:
         raise RollerRigError(f"{func}: curves is empty")
     ref = _reference_points(func, reference) if reference is not None else None
     if ref is not None and mu is None and N is None and ref[3] is not None:
         mu, N = ref[3], ref[4]
     sign = _sign(func, sign)
     div, norm = _scale(func, mu, N)
-    values = {label: _force_values(func, f, component, cx.size) for label, f in curves.items()}
-    _, ax, _ = _one_axes(func, ax, (6.4, 4.2))
+    values = {label: _force_values(func, f, component, x.size)
+              for label, f in by_label.items()}
+    _, axes, _ = _one_axes(func, ax, (6.4, 4.2))
     for k, (label, vals) in enumerate(values.items()):
-        ax.plot(cx, sign * vals / div, _STYLES[k % len(_STYLES)], lw=1.4,
+        axes.plot(x, sign * vals / div, _STYLES[k % len(_STYLES)], lw=1.4,
                 label=None if label is None else str(label))
     if ref is not None:
-        ax.plot(ref[0], sign * ref[1] / div, "ko", ms=4, label=ref[2], zorder=3)
-    ax.set_xscale(_xscale(cx, xscale))
-    ax.set_xlabel("longitudinal creepage cx" if component == "fx" else "creepage")
-    ax.set_ylabel(_ylabel(component, sign, norm))
+        axes.plot(ref[0], sign * ref[1] / div, "ko", ms=4, label=ref[2], zorder=3)
+    axes.set_xscale(_xscale(x, xscale))
+    axes.set_xlabel("longitudinal creepage cx" if component == "fx" else "creepage")
+    axes.set_ylabel(_ylabel(component, sign, norm))
     if norm == "(mu N)":             # |F| <= mu N: clip the linear theory's straight line
         shown = sign * np.concatenate(list(values.values())) / div
         lo, hi = float(np.nanmin(shown)), float(np.nanmax(shown))
-        ax.set_ylim(min(0.0, 1.08 * lo) if lo > -1.2 else -1.2,
-                    max(0.0, 1.08 * hi) if hi < 1.2 else 1.2)
-    ax.grid(alpha=0.3, which="both", lw=0.5)
+        axes.set_ylim(min(0.0, 1.08 * lo) if lo > -1.2 else -1.2,
+                      max(0.0, 1.08 * hi) if hi < 1.2 else 1.2)
+    axes.grid(alpha=0.3, which="both", lw=0.5)
     if title:
-        ax.set_title(title, fontsize=10)
-    if any(line.get_label() and not line.get_label().startswith("_")
-           for line in ax.get_lines()):
-        ax.legend(fontsize=8, loc="best")
-    return ax
+        axes.set_title(title, fontsize=10)
+    if any(line.get_label() and not str(line.get_label()).startswith("_")
+           for line in axes.get_lines()):
+        axes.legend(fontsize=8, loc="best")
+    return axes
 
 
 # ------------------------------------------------------------------ traction field
 
-def _cell_sizes(t):
+def _cell_sizes(t: TractionField) -> Tuple[F64Array, float]:
     """(dx per element, dy) of the field's elements [m]."""
     ny, nx = t.x.shape
     if ny > 1:
@@ -202,8 +226,10 @@ def _cell_sizes(t):
     return dx, dy
 
 
-def traction_field(t, ax=None, *, quantity="|p_t|", show_slip=True, arrows=True,
-                   colorbar=None, cmap="viridis", title=True):
+def traction_field(t: TractionField, ax: Optional[Axes] = None, *, quantity: str = "|p_t|",
+                   show_slip: bool = True, arrows: bool = True,
+                   colorbar: Optional[bool] = None, cmap: str = "viridis",
+                   title: bool = True) -> Axes:
     """A traction field element by element.
 
     Parameters
@@ -258,9 +284,9 @@ def traction_field(t, ax=None, *, quantity="|p_t|", show_slip=True, arrows=True,
     if quantity not in TRACTION_QUANTITIES:
         raise RollerRigError(f"{func}: quantity must be one of {list(TRACTION_QUANTITIES)}, "
                              f"got {quantity!r}")
-    fig, ax, made = _one_axes(func, ax, (5.8, 5.2))
+    fig, axes, made = _one_axes(func, ax, (5.8, 5.2))
     from matplotlib.collections import LineCollection, PolyCollection
-    from matplotlib.colors import ListedColormap
+    from matplotlib.colors import Colormap, ListedColormap
     from matplotlib.patches import Patch
 
     inside = t.pn > 0
@@ -270,7 +296,7 @@ def traction_field(t, ax=None, *, quantity="|p_t|", show_slip=True, arrows=True,
     X, Y = t.x / MM, t.y / MM
     hx, hy = dx / MM / 2, dy / MM / 2
 
-    def boxes(mask):
+    def boxes(mask: npt.NDArray[np.bool_]) -> F64Array:
         xs, ys, wx = X[mask], Y[mask], hx[mask]
         return np.stack([np.stack([xs - wx, ys - hy], -1), np.stack([xs + wx, ys - hy], -1),
                          np.stack([xs + wx, ys + hy], -1), np.stack([xs - wx, ys + hy], -1)],
@@ -282,6 +308,9 @@ def traction_field(t, ax=None, *, quantity="|p_t|", show_slip=True, arrows=True,
                   "|p_t|/pn": np.where(inside, pt / t.pn, np.nan),
                   "slip": t.slip.astype(float)}[quantity]
     name, scale, unit = TRACTION_QUANTITIES[quantity]
+    cmap_used: Union[str, Colormap]
+    vmin: Optional[float]
+    vmax: Optional[float]
     if quantity == "slip":
         cmap_used, vmin, vmax = ListedColormap(["#9ecae1", "#fc9272"]), 0.0, 1.0
     else:
@@ -289,18 +318,21 @@ def traction_field(t, ax=None, *, quantity="|p_t|", show_slip=True, arrows=True,
     if quantity in ("px", "py"):
         top = float(np.nanmax(np.abs(values[inside]))) * scale or 1.0
         cmap_used, vmin, vmax = ("RdBu_r" if cmap == "viridis" else cmap), -top, top
-    cells = PolyCollection(boxes(inside), array=values[inside] * scale, cmap=cmap_used,
+    # (matplotlib's stubs want a sequence of polygons: an (n, 4, 2) array is one)
+    cells = PolyCollection(boxes(inside),  # type: ignore[arg-type]
+                           array=values[inside] * scale, cmap=cmap_used,
                            edgecolors="face", linewidths=0.2, label="elements")
     cells.set_clim(vmin, vmax)
-    ax.add_collection(cells)
+    axes.add_collection(cells)
 
     handles = []
     if show_slip:
         slip = inside & t.slip
         if np.any(slip):
-            hatch = PolyCollection(boxes(slip), facecolors="none", edgecolors="0.15",
+            hatch = PolyCollection(boxes(slip),  # type: ignore[arg-type]
+                                   facecolors="none", edgecolors="0.15",
                                    linewidths=0.0, hatch="////", label="slip area")
-            ax.add_collection(hatch)
+            axes.add_collection(hatch)
         # element edges with adhesion on one side and slip (or nothing) on the other
         adh = inside & ~t.slip
         segs = []
@@ -321,7 +353,7 @@ def traction_field(t, ax=None, *, quantity="|p_t|", show_slip=True, arrows=True,
                 if j > 0 and slip[j - 1, i]:
                     segs.append([(max(x0, X[j - 1, i] - hx[j - 1, i]), y0),
                                  (min(x1, X[j - 1, i] + hx[j - 1, i]), y0)])
-        ax.add_collection(LineCollection(segs, colors="k", linewidths=1.6,
+        axes.add_collection(LineCollection(segs, colors="k", linewidths=1.6,
                                          label="adhesion/slip boundary"))
         handles = [Patch(facecolor="white", edgecolor="0.3", label="adhesion"),
                    Patch(facecolor="white", edgecolor="0.3", hatch="////", label="slip")]
@@ -331,19 +363,19 @@ def traction_field(t, ax=None, *, quantity="|p_t|", show_slip=True, arrows=True,
         sub = np.zeros_like(inside)
         sub[sj // 2::sj, si // 2::si] = True
         sub &= inside
-        ax.quiver(X[sub], Y[sub], t.px[sub], t.py[sub], color="k", width=0.004,
+        axes.quiver(X[sub], Y[sub], t.px[sub], t.py[sub], color="k", width=0.004,
                   pivot="mid", label="tractions")
-    ax.autoscale_view()
-    ax.set_aspect("equal")
-    ax.set_xlabel("x, rolling direction [mm]")
-    ax.set_ylabel("y, lateral [mm]")
+    axes.autoscale_view()
+    axes.set_aspect("equal")
+    axes.set_xlabel("x, rolling direction [mm]")
+    axes.set_ylabel("y, lateral [mm]")
     if title:
         pct = 100.0 * np.sum(t.area[inside & t.slip]) / np.sum(t.area[inside])
         fx, fy, mz = (0.0 if abs(v) < 1e-9 else v for v in (t.fx, t.fy, t.mz))
-        ax.set_title(f"{name}: fx = {fx / 1e3:.3g} kN, fy = {fy / 1e3:.3g} kN, "
+        axes.set_title(f"{name}: fx = {fx / 1e3:.3g} kN, fy = {fy / 1e3:.3g} kN, "
                      f"mz = {mz:.3g} N m\nslip area {pct:.0f} %", fontsize=9)
     if handles:
-        ax.legend(handles=handles, loc="upper right", fontsize=8, framealpha=0.85)
+        axes.legend(handles=handles, loc="upper right", fontsize=8, framealpha=0.85)
     if quantity != "slip" and (colorbar or (colorbar is None and made)):
-        fig.colorbar(cells, ax=ax, label=f"{name} [{unit}]", shrink=0.85)
-    return ax
+        fig.colorbar(cells, ax=axes, label=f"{name} [{unit}]", shrink=0.85)
+    return axes

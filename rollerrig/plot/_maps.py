@@ -1,22 +1,28 @@
 """rollerrig.plot's error maps (a method against the exact cases) and fits."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, Optional
+from typing import TYPE_CHECKING, Any, Callable, Dict, Optional, Sequence, Tuple, Union, cast
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+
+    from ..analysis.fit import FitResult
     from ..analysis.reference import ScoreResult
 
 import warnings
 
 import numpy as np
+import numpy.typing as npt
 
 from .._errors import RollerRigError
-from ._base import _many_axes, _one_axes, _pyplot, _real_1d, _scale, _xscale, _ylabel
+from .._typing import F64Array
+from ._base import AxesArray, _many_axes, _one_axes, _pyplot, _real_1d, _scale, _xscale, _ylabel
 
 
 # ------------------------------------------------------------------ error maps
 
-def _map_grid(result, spin, quantity, reduce, ellipticity):
+def _map_grid(result: ScoreResult, spin: float, quantity: str, reduce: str,
+              ellipticity: Optional[float]) -> Tuple[F64Array, F64Array, F64Array]:
     """(angles, magnitudes, values[n_mag, n_ang]) of one spin level."""
     t = result.cases
     err = result.error if quantity == "force" else result.mz_error
@@ -31,14 +37,15 @@ def _map_grid(result, spin, quantity, reduce, ellipticity):
     for i, j, e in zip(im, ia, err[sel]):
         stack[i, j, count[i, j]] = e
         count[i, j] += 1
+    reducers: Dict[str, Callable[..., F64Array]] = {
+        "max": np.nanmax, "median": np.nanmedian, "mean": np.nanmean}
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)      # all-NaN cells stay NaN
-        values = {"max": np.nanmax, "median": np.nanmedian, "mean": np.nanmean}[reduce](
-            stack, axis=2)
+        values = reducers[reduce](stack, axis=2)
     return angles, magnitudes, values
 
 
-def _error_stats(err):
+def _error_stats(err: F64Array) -> Dict[str, float]:
     """{"median", "p95", "max"} of the finite errors (NaN: the method failed there)."""
     good = err[np.isfinite(err)]
     if good.size == 0:
@@ -167,8 +174,10 @@ def error_map(result: ScoreResult, ax: Any = None, *, spin: Optional[float] = No
 
 # ------------------------------------------------------------------ fits
 
-def fit(result, cx, force, ax=None, *, mu=None, N=None, residuals=False, label=None,
-        xscale=None):
+def fit(result: FitResult, cx: Union[npt.ArrayLike, Sequence[npt.ArrayLike]],
+        force: Union[npt.ArrayLike, Sequence[npt.ArrayLike]], ax: Any = None, *,
+        mu: Optional[float] = None, N: Optional[float] = None, residuals: bool = False,
+        label: Optional[str] = None, xscale: Optional[str] = None) -> Union[Axes, AxesArray]:
     """A FitResult of fit_polach / fit_modified_fastsim over its data.
 
     The data as markers, the fitted model as a line on a fine grid over the
@@ -209,8 +218,11 @@ def fit(result, cx, force, ax=None, *, mu=None, N=None, residuals=False, label=N
         raise RollerRigError(f"{func}: result must be a FitResult from fit_polach or "
                              f"fit_modified_fastsim, got {type(result).__name__}")
     many = isinstance(cx, (list, tuple)) and len(cx) > 0 and np.ndim(cx[0]) == 1
-    cxs = [_real_1d(func, "cx", c) for c in (cx if many else [cx])]
-    fs = [_real_1d(func, "force", f) for f in (force if many else [force])]
+    cxs = [_real_1d(func, "cx", c)
+           for c in (cx if many and isinstance(cx, (list, tuple)) else [cx])]
+    # many: force is a list of curves as cx is (a sequence, as documented)
+    fs = [_real_1d(func, "force", f)
+          for f in (cast(Sequence[npt.ArrayLike], force) if many else [force])]
     speeds = result.settings.get("speeds", ())
     if len(cxs) != len(fs) or len(cxs) != len(speeds):
         raise RollerRigError(f"{func}: the fit had {len(speeds)} curve(s) (speeds "
@@ -221,6 +233,8 @@ def fit(result, cx, force, ax=None, *, mu=None, N=None, residuals=False, label=N
     allc, allf = np.concatenate(cxs), np.concatenate(fs)
     sign = -1 if float(np.nansum(allf * np.sign(allc))) < 0 else 1
     div, norm = _scale(func, mu, result.settings["N"] if N is None else N)
+    main: Axes
+    rax: Axes
     if residuals:
         fig, axs, made = _many_axes(func, ax, 2, (6.4, 6.2), sharex=True,
                                     gridspec_kw=dict(height_ratios=[2, 1]))
@@ -258,7 +272,8 @@ def fit(result, cx, force, ax=None, *, mu=None, N=None, residuals=False, label=N
         rax.set_ylabel("model - data" + (f" / {norm}" if norm else " [N]"))
         rax.grid(alpha=0.3, which="both", lw=0.5)
         rax.legend(fontsize=7.5, loc="best")
-        if made:
+        from matplotlib.figure import Figure
+        if made and isinstance(fig, Figure):      # made here: a Figure
             fig.tight_layout()
         return np.array([main, rax], dtype=object)
     main.set_xlabel("longitudinal creepage cx")

@@ -2,14 +2,44 @@
 first MAX_PANELS), the data over the reference, and below it the
 difference with the band the tolerance allows.  matplotlib is optional:
 without it figure() says why instead of drawing."""
+from __future__ import annotations
+
+from typing import Any, Mapping, Optional, Protocol, Sequence, Tuple
+
 import numpy as np
+import numpy.typing as npt
 
 from .._files import write_file
+
+
+class _Deviation(Protocol):
+    """What the figure reads of a rollerrig.testing.FieldDeviation (the
+    testing package imports this module, not the other way round)."""
+
+    @property
+    def name(self) -> str: ...
+    @property
+    def unit(self) -> str: ...
+    @property
+    def rtol(self) -> float: ...
+    @property
+    def atol(self) -> float: ...
+    @property
+    def problem(self) -> Optional[str]: ...
+    @property
+    def bad(self) -> int: ...
+    @property
+    def size(self) -> int: ...
+    @property
+    def worst(self) -> Tuple[int, ...]: ...
 
 MAX_PANELS = 6
 
 
-def figure(path, deviations, got, ref, x=None, x_name=None, x_unit=None, title=""):
+def figure(path: str, deviations: Sequence[_Deviation], got: Mapping[str, npt.NDArray[Any]],
+           ref: Mapping[str, npt.NDArray[Any]], x: Optional[npt.NDArray[Any]] = None,
+           x_name: Optional[str] = None, x_unit: Optional[str] = None,
+           title: str = "") -> Tuple[Optional[str], Optional[str]]:
     """Draw the figure into `path` (PNG).  Returns (path, None), or (None,
     why not) when matplotlib does not import or no field can be drawn."""
     try:

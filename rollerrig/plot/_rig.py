@@ -2,23 +2,29 @@
 the profiles in contact."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, List, Union
+from typing import TYPE_CHECKING, Any, List, Mapping, Optional, Sequence, Tuple, Union, cast
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+    from ..geometry.wheelset import RigGeometry
     from ..rig.result import RigResult
 
 import os
 import textwrap
 
 import numpy as np
+import numpy.typing as npt
 
 from .._errors import RollerRigError
-from ._base import MM, _many_axes, _one_axes, _pyplot
+from .._typing import F64Array
+from ._base import MM, AxesArray, _many_axes, _one_axes, _pyplot
 
 
 # ------------------------------------------------------------------ the rig run
 
-def _check_result(func, res):
+def _check_result(func: str, res: object) -> RigResult:
     from ..rig.result import RigResult
     if not isinstance(res, RigResult):
         raise RollerRigError(f"{func}: res must be a RigResult from rr.simulate, got "
@@ -26,7 +32,7 @@ def _check_result(func, res):
     return res
 
 
-def _drive_sense(res):
+def _drive_sense(res: RigResult) -> Tuple[int, str]:
     """(+1, "braking") or (-1, "traction"): the sign that makes the
     recorded creepage cx (Kalker's sign: > 0 braking) the controller's
     positive creepage, and -fx (fx on the wheel: < 0 braking) the force the
@@ -35,7 +41,8 @@ def _drive_sense(res):
     return (-1, "traction") if mode == "traction" else (1, "braking")
 
 
-def rig_history(res, axes=None, *, title=True):
+def rig_history(res: RigResult, axes: Optional[Sequence[Axes]] = None, *,
+                title: bool = True) -> AxesArray:
     """The seed paper's Fig. 7: creepage and surface speeds against time.
 
     Two panels sharing the time axis: the creepage (contact model, encoder
@@ -98,11 +105,13 @@ def rig_history(res, axes=None, *, title=True):
                      f"{res.dt * 1e3:g} ms, {res.method or 'creep model'}): paper Fig. 7\n"
                      f"creepage {cx} \u2248 {'' if sense > 0 else '-'}(roller \u2212 wheel "
                      f"surface speed) / mean speed ({sign})", fontsize=9.5)
-        fig.tight_layout()
+        from matplotlib.figure import Figure
+        if isinstance(fig, Figure):                # made here: a Figure
+            fig.tight_layout()
     return np.array([ax1, ax2], dtype=object)
 
 
-def friction_law_text(params):
+def friction_law_text(params: Mapping[str, Mapping[str, Any]]) -> str:
     """The friction law of a run's parameters in words, with its values.
 
     The caption of rig_force's adhesion panel: Polach's falling law or
@@ -140,7 +149,7 @@ def friction_law_text(params):
     return text
 
 
-def _adhesion_limits(t, mu):
+def _adhesion_limits(t: F64Array, mu: F64Array) -> Optional[Tuple[float, float]]:
     """A y range that shows the adhesion's differences between targets:
     the samples after the first tenth of the run (past the start-up), padded."""
     keep = np.isfinite(mu) & (t >= t[0] + 0.1 * (t[-1] - t[0]))
@@ -151,7 +160,8 @@ def _adhesion_limits(t, mu):
     return lo - pad, hi + pad
 
 
-def rig_force(res, ax=None, *, title=True, adhesion=None):
+def rig_force(res: RigResult, ax: Optional[Axes] = None, *, title: bool = True,
+              adhesion: Optional[bool] = None) -> Axes:
     """The seed paper's Fig. 8: the longitudinal creep force of both wheels against time.
 
     Drawn in the sense the drive works against (braking: -fx, since fx on
@@ -223,15 +233,16 @@ def rig_force(res, ax=None, *, title=True, adhesion=None):
             label="friction limit mu0 N (each wheel's mu0 in time, N its normal load)"
             if changing else f"friction limit mu0 N (mu0 = {mu0:g}, N both normal loads)")
     if changing:
-        ax.mu_axis = ax.twinx()
-        ax.mu_axis.plot(t, res.mu_left, color="tab:green", lw=0.8, alpha=0.7,
-                        label="mu0 at the left contact")
+        mu_axis = ax.twinx()
+        setattr(ax, "mu_axis", mu_axis)            # an attribute of the axes returned
+        mu_axis.plot(t, res.mu_left, color="tab:green", lw=0.8, alpha=0.7,
+                     label="mu0 at the left contact")
         if np.any(res.mu_right != res.mu_left):
-            ax.mu_axis.plot(t, res.mu_right, color="tab:olive", lw=0.8, alpha=0.7,
-                            label="mu0 at the right contact")
-        ax.mu_axis.set_ylabel("friction coefficient mu0 [1]")
-        ax.mu_axis.set_ylim(0.0, 1.1 * np.max(mus))
-        ax.mu_axis.legend(fontsize=8, loc="upper right")
+            mu_axis.plot(t, res.mu_right, color="tab:olive", lw=0.8, alpha=0.7,
+                         label="mu0 at the right contact")
+        mu_axis.set_ylabel("friction coefficient mu0 [1]")
+        mu_axis.set_ylim(0.0, 1.1 * np.max(mus))
+        mu_axis.legend(fontsize=8, loc="upper right")
     if ax_mu is None:
         ax.set_xlabel("time [s]")
     ax.set_ylabel(f"{mode} force {fx} [N]")
@@ -255,7 +266,7 @@ def rig_force(res, ax=None, *, title=True, adhesion=None):
         ax_mu.grid(alpha=0.3)
         ax_mu.legend(fontsize=8, loc="lower right")
         ax_mu.set_title(textwrap.fill(friction_law_text(res.params), 125), fontsize=8.5)
-        ax.adhesion_axis = ax_mu
+        setattr(ax, "adhesion_axis", ax_mu)        # an attribute of the axes returned
     if title:
         sign = "fx < 0 on the wheel when braking" if sense > 0 else \
             "fx > 0 on the wheel when driving"
@@ -300,7 +311,7 @@ def plot_run(res: RigResult, outdir: Union[str, "os.PathLike[str]"],
              for n in ("creepage", "force")}
     for name, draw in (("creepage", lambda: rig_history(res)[0].figure),
                        ("force", lambda: rig_force(res).figure)):
-        fig = draw()
+        fig = cast("Figure", draw())               # made here: a Figure, not a SubFigure
         try:
             write_file(paths[name], lambda fh: fig.savefig(fh, format="png", dpi=130),
                        what="plot_run:", binary=True)
@@ -311,7 +322,7 @@ def plot_run(res: RigResult, outdir: Union[str, "os.PathLike[str]"],
 
 # ------------------------------------------------------------------ profiles
 
-def _shifts(func, y_ws):
+def _shifts(func: str, y_ws: object) -> F64Array:
     try:
         y = np.atleast_1d(np.asarray(y_ws, dtype=float))
     except (TypeError, ValueError):
@@ -321,8 +332,10 @@ def _shifts(func, y_ws):
     return y
 
 
-def profiles(geometry, y_ws=(0.0, 0.002, 0.004, 0.006), ax=None, *, side="left",
-             wheels=True, window=None, legend=True):
+def profiles(geometry: RigGeometry, y_ws: npt.ArrayLike = (0.0, 0.002, 0.004, 0.006),
+             ax: Optional[Axes] = None, *, side: str = "left",
+             wheels: Union[bool, npt.ArrayLike] = True,
+             window: Optional[Sequence[float]] = None, legend: bool = True) -> Axes:
     """Wheel and roller profiles of one side, the wheel placed at each lateral shift.
 
     The wheel is placed by rr.wheelset_contact at each lateral shift y_ws

@@ -15,7 +15,13 @@ The first run writes tests/<module>/<test>.npz (compared) and .csv (for a
 person) and fails saying so; later runs compare; `pytest --rr-regen`
 rewrites them.  Without pytest: assert_history_close,
 assert_creep_curve_close, assert_fields_close.  docs/testing.md.
+
+The fixtures' types (HistoryRegression, CreepCurveRegression, Regression),
+for a test's annotations, are imported on first use: they need pytest,
+the plain asserts do not.
 """
+from typing import TYPE_CHECKING, Any
+
 from ._assert import (CREEP_UNITS, RegressionError, assert_creep_curve_close,
                       assert_fields_close, assert_history_close, creep_curve_fields,
                       history_fields)
@@ -25,3 +31,17 @@ from ._store import read_reference, write_reference
 __all__ = ["assert_history_close", "assert_creep_curve_close", "assert_fields_close",
            "RegressionError", "FieldDeviation", "history_fields", "creep_curve_fields",
            "read_reference", "write_reference", "DEFAULT_RTOL", "DEFAULT_ATOL", "CREEP_UNITS"]
+
+_FIXTURE_TYPES = ("Regression", "HistoryRegression", "CreepCurveRegression")
+
+if TYPE_CHECKING:
+    from ._fixtures import CreepCurveRegression as CreepCurveRegression
+    from ._fixtures import HistoryRegression as HistoryRegression
+    from ._fixtures import Regression as Regression
+
+
+def __getattr__(name: str) -> Any:
+    if name in _FIXTURE_TYPES:
+        from . import _fixtures
+        return getattr(_fixtures, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -3,18 +3,25 @@ assert_history_close (a simulate result), assert_creep_curve_close (creep
 forces over a creepage axis)."""
 from __future__ import annotations
 
-from typing import Any, Mapping, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import math
 import os
 import warnings
 
 import numpy as np
+import numpy.typing as npt
 
 from .._errors import RollerRigError
 from .._units import cf_unit
 from . import _compare
-from ._compare import DEFAULT_ATOL, DEFAULT_RTOL
+from ._compare import DEFAULT_ATOL, DEFAULT_RTOL, Fields
+
+if TYPE_CHECKING:
+    from ._compare import FieldDeviation
+
+#: a path as the functions take it (a reference file, a figure)
+_Path = Union[str, "os.PathLike[str]"]
 
 
 class RegressionError(AssertionError):
@@ -23,12 +30,14 @@ class RegressionError(AssertionError):
     (rollerrig.testing.FieldDeviation), .figure the comparison figure's
     path (None: .figure_note says why there is none)."""
 
-    def __init__(self, message, deviations, figure=None, figure_note=None):
+    def __init__(self, message: str, deviations: List[FieldDeviation],
+                 figure: Optional[str] = None, figure_note: Optional[str] = None) -> None:
         super().__init__(message)
         self.deviations, self.figure, self.figure_note = deviations, figure, figure_note
 
 
-def history_fields(result, fields=None, window=None):
+def history_fields(result: Any, fields: Optional[Sequence[str]] = None,
+                   window: Optional[float] = None) -> Tuple[Fields, Dict[str, str]]:
     """({name: column}, {name: unit}) of a simulate result (RigResult): the
     record's fields (rollerrig.rig.RECORD_FIELDS), or those of `fields`.
 
@@ -56,7 +65,8 @@ def history_fields(result, fields=None, window=None):
     return cols, {n: cf_unit(RECORD_UNITS[n]) for n in names}
 
 
-def _window_means(records, window, spacing):
+def _window_means(records: npt.NDArray[Any], window: Any,
+                  spacing: float) -> npt.NDArray[Any]:
     try:
         w = float(window)
     except (TypeError, ValueError):
@@ -72,14 +82,16 @@ def _window_means(records, window, spacing):
     blocks = records[:n * k].reshape(n, k, records.shape[1])
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)     # a window all NaN: NaN
-        return np.nanmean(blocks, axis=1)
+        means: npt.NDArray[Any] = np.nanmean(blocks, axis=1)
+    return means
 
 
 #: the creep forces' units (rollerrig.creep_forces: fx, fy [N], mz [N m])
 CREEP_UNITS = {"fx": "N", "fy": "N", "mz": "N m", "status": "1"}
 
 
-def creep_curve_fields(creepage, forces, creepage_name="creepage"):
+def creep_curve_fields(creepage: npt.ArrayLike, forces: Any,
+                       creepage_name: str = "creepage") -> Tuple[Fields, Dict[str, str]]:
     """({name: array}, units) of a creep curve: the creepage axis, then the
     forces (a rollerrig.CreepForces, or a mapping such as {"fx": ...})."""
     if hasattr(forces, "_asdict"):
@@ -94,7 +106,7 @@ def creep_curve_fields(creepage, forces, creepage_name="creepage"):
     return fields, units
 
 
-def _reference(func, expected):
+def _reference(func: str, expected: Any) -> Tuple[Any, Mapping[str, str]]:
     """A mapping of the expected data: as given, or read from a reference
     file (NAME.npz written by the plugin)."""
     if isinstance(expected, (str, os.PathLike)):
@@ -108,9 +120,13 @@ def _reference(func, expected):
     return expected, {}
 
 
-def assert_fields_close(actual, expected, *, rtol=DEFAULT_RTOL, atol=DEFAULT_ATOL,
-                        tolerances=None, units=None, x=None, figure=None,
-                        where="the reference", func="assert_fields_close"):
+def assert_fields_close(actual: Mapping[str, npt.ArrayLike],
+                        expected: Union[Mapping[str, npt.ArrayLike], _Path], *,
+                        rtol: float = DEFAULT_RTOL, atol: float = DEFAULT_ATOL,
+                        tolerances: Optional[Mapping[str, Mapping[str, float]]] = None,
+                        units: Optional[Mapping[str, str]] = None, x: Optional[str] = None,
+                        figure: Optional[_Path] = None, where: str = "the reference",
+                        func: str = "assert_fields_close") -> None:
     """Assert that two labelled array sets ({name: array}) agree field by
     field, each value within atol + rtol |expected| (numpy.isclose's rule;
     NaN equals NaN).  tolerances: {field: {"rtol": ..., "atol": ...}} over
@@ -131,11 +147,13 @@ def assert_fields_close(actual, expected, *, rtol=DEFAULT_RTOL, atol=DEFAULT_ATO
     xs = None
     if x is not None and x in ref and ref[x].ndim == 1:
         xs = ref[x]
-    message = _compare.describe(deviations, len(tol), where, xs, x, units.get(x))
-    path = note = None
+    x_unit = units.get(x) if x is not None else None
+    message = _compare.describe(deviations, len(tol), where, xs, x, x_unit)
+    path: Optional[str] = None
+    note: Optional[str] = None
     if figure is not None:
         from ..plot._regression import figure as draw
-        path, note = draw(os.fspath(figure), deviations, got, ref, xs, x, units.get(x),
+        path, note = draw(os.fspath(figure), deviations, got, ref, xs, x, x_unit,
                           title=f"{func}: this run against {where}")
         message += f"\ncomparison figure: {path}" if path else f"\n{note}"
     raise RegressionError(message, deviations, path, note)
@@ -166,9 +184,11 @@ def assert_history_close(actual: Any, expected: Any, *, fields: Optional[Sequenc
                         units=units, x="time", figure=figure, func=func)
 
 
-def assert_creep_curve_close(creepage, actual, expected, *, rtol=DEFAULT_RTOL,
-                             atol=DEFAULT_ATOL, tolerances=None, figure=None,
-                             creepage_name="creepage"):
+def assert_creep_curve_close(creepage: npt.ArrayLike, actual: Any, expected: Any, *,
+                             rtol: float = DEFAULT_RTOL, atol: float = DEFAULT_ATOL,
+                             tolerances: Optional[Mapping[str, Mapping[str, float]]] = None,
+                             figure: Optional[_Path] = None,
+                             creepage_name: str = "creepage") -> None:
     """Assert that creep forces over a creepage axis (`actual`: a
     rollerrig.CreepForces or a mapping {"fx": ...}) agree with `expected`
     (the same kinds, or the path of a reference .npz holding the axis too).

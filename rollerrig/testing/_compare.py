@@ -8,13 +8,21 @@ an infinity the same infinity, so a history's "not yet defined" NaN (the
 creepage target before the first target, a speed reference while a torque
 is commanded) compares as the value it is.
 """
+from __future__ import annotations
+
 import math
 from dataclasses import dataclass
-from typing import Optional, Tuple
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple
 
 import numpy as np
+import numpy.typing as npt
 
 from .._errors import RollerRigError
+
+#: a labelled array set as compared: {name: float or integer ndarray}
+Fields = Dict[str, npt.NDArray[Any]]
+#: {name: (rtol, atol)} of every field
+Tolerances = Dict[str, Tuple[float, float]]
 
 #: the tolerance of a field not named in `tolerances`: agreement to about
 #: nine significant digits, far above a double's rounding (1e-16) and far
@@ -51,7 +59,7 @@ class FieldDeviation:
     ref_worst: float = math.nan
 
 
-def _number(what, value):
+def _number(what: str, value: Any) -> float:
     try:
         v = float(value)
     except (TypeError, ValueError):
@@ -61,7 +69,8 @@ def _number(what, value):
     return v
 
 
-def field_tolerances(func, names, rtol, atol, tolerances):
+def field_tolerances(func: str, names: Sequence[str], rtol: Any, atol: Any,
+                     tolerances: object) -> Tolerances:
     """{name: (rtol, atol)} for every field: `tolerances` ({field: {"rtol":
     ..., "atol": ...}}, either key optional) over the defaults rtol, atol.
     A field named in `tolerances` that the data lacks is refused (a typo
@@ -76,7 +85,7 @@ def field_tolerances(func, names, rtol, atol, tolerances):
     if unknown:
         raise RollerRigError(f"{func}: tolerances names {', '.join(map(repr, unknown))}, "
                              f"which the data does not hold (its fields: {', '.join(names)})")
-    out = {}
+    out: Tolerances = {}
     for name in names:
         given = tolerances.get(name, {})
         if not isinstance(given, dict) or set(given) - {"rtol", "atol"}:
@@ -87,14 +96,14 @@ def field_tolerances(func, names, rtol, atol, tolerances):
     return out
 
 
-def as_fields(func, what, data):
+def as_fields(func: str, what: str, data: object) -> Fields:
     """`data` (a mapping name -> array-like) as {name: float or integer
     ndarray}, checked: names non-empty strings without '/' (they are file
     names inside the .npz), values numeric, not empty."""
     if not hasattr(data, "items"):
         raise RollerRigError(f"{func}: {what} must be a mapping field name -> array, got "
                              f"{type(data).__name__}")
-    out = {}
+    out: Fields = {}
     for name, value in data.items():
         if not isinstance(name, str) or not name or "/" in name or name.startswith("__"):
             raise RollerRigError(f"{func}: {what}: field names must be non-empty strings "
@@ -111,7 +120,8 @@ def as_fields(func, what, data):
     return out
 
 
-def deviation(name, unit, got, ref, rtol, atol):
+def deviation(name: str, unit: str, got: npt.NDArray[Any], ref: npt.NDArray[Any],
+              rtol: float, atol: float) -> FieldDeviation:
     """FieldDeviation of one field (bad == 0 and no problem: it agrees)."""
     if got.shape != ref.shape:
         return FieldDeviation(name, unit, rtol, atol,
@@ -133,7 +143,7 @@ def deviation(name, unit, got, ref, rtol, atol):
     worst = bad[int(np.argmax(np.nan_to_num(score, nan=np.inf)))]
     first = bad[0]
 
-    def index(i):
+    def index(i: np.intp) -> Tuple[int, ...]:
         return tuple(int(k) for k in np.unravel_index(i, got.shape))
     return FieldDeviation(name, unit, rtol, atol, bad=int(bad.size), size=int(g.size),
                           first=index(first), worst=index(worst), got_first=float(g[first]),
@@ -141,11 +151,13 @@ def deviation(name, unit, got, ref, rtol, atol):
                           ref_worst=float(r[worst]))
 
 
-def compare(got, ref, tol, units=None):
+def compare(got: Mapping[str, npt.NDArray[Any]], ref: Mapping[str, npt.NDArray[Any]],
+            tol: Mapping[str, Tuple[float, float]],
+            units: Optional[Mapping[str, str]] = None) -> List[FieldDeviation]:
     """[FieldDeviation] of every field that differs, in the reference's
     order, then the fields only `got` holds.  tol: {name: (rtol, atol)}."""
     units = units or {}
-    out = []
+    out: List[FieldDeviation] = []
     for name in list(ref) + [n for n in got if n not in ref]:
         rtol, atol = tol.get(name, (DEFAULT_RTOL, DEFAULT_ATOL))
         unit = units.get(name, "")
@@ -162,11 +174,12 @@ def compare(got, ref, tol, units=None):
     return out
 
 
-def _value(v):
+def _value(v: float) -> str:
     return repr(float(v)) if math.isfinite(v) else str(v)
 
 
-def _at(index, x, x_name, x_unit):
+def _at(index: Tuple[int, ...], x: Optional[npt.NDArray[Any]], x_name: Optional[str],
+        x_unit: Optional[str]) -> str:
     """Where a value stands: "time = 1.204 s (index 301)", or "index (3, 4)"."""
     where = f"index {index[0]}" if len(index) == 1 else f"index {index}"
     if x is not None and len(index) == 1 and index[0] < len(x):
@@ -175,7 +188,9 @@ def _at(index, x, x_name, x_unit):
     return where
 
 
-def describe(deviations, n_fields, where, x=None, x_name=None, x_unit=None):
+def describe(deviations: Sequence[FieldDeviation], n_fields: int, where: str,
+             x: Optional[npt.NDArray[Any]] = None, x_name: Optional[str] = None,
+             x_unit: Optional[str] = None) -> str:
     """The failure's text: a line for the whole, then per field its counts,
     first and worst deviations."""
     lines = [f"{len(deviations)} of {n_fields} fields differ from {where}:"]

@@ -17,9 +17,13 @@ test_paper -> tests/test_rig/test_paper.npz and .csv.  check():
   - --rr-regen: rewrites the reference and the test fails at its end,
     saying so (so a run with the flag never passes for a check).
 """
+from __future__ import annotations
+
 import os
 import re
+from typing import Any, List, Mapping, Optional, Sequence, Set
 
+import numpy.typing as npt
 import pytest
 
 from .._errors import RollerRigError
@@ -36,14 +40,15 @@ class Regression:
     """The fixture rr_regression: check(data) holds any labelled array set
     ({name: array}) against its reference."""
 
-    def __init__(self, request, tmp_path, regen):
+    def __init__(self, request: pytest.FixtureRequest, tmp_path: "os.PathLike[str]",
+                 regen: bool) -> None:
         self._request, self._tmp, self._regen = request, tmp_path, regen
-        self._used = set()
+        self._used: Set[str] = set()
         path = request.path
         self.folder = os.path.join(os.path.dirname(path), os.path.splitext(
             os.path.basename(path))[0])
 
-    def reference_path(self, basename=None):
+    def reference_path(self, basename: Optional[str] = None) -> str:
         """The reference's path without its suffix (.npz, .csv)."""
         if basename is not None and (not isinstance(basename, str) or not basename.strip(".")
                                      or re.search(r"[/\\\0]", basename)):
@@ -52,8 +57,10 @@ class Regression:
         name = basename or re.sub(r"[^\w.-]+", "_", self._request.node.name).strip("_")
         return os.path.join(self.folder, name)
 
-    def check(self, data, basename=None, *, units=None, x=None, rtol=DEFAULT_RTOL,
-              atol=DEFAULT_ATOL, tolerances=None):
+    def check(self, data: Mapping[str, npt.ArrayLike], basename: Optional[str] = None, *,
+              units: Optional[Mapping[str, str]] = None, x: Optional[str] = None,
+              rtol: float = DEFAULT_RTOL, atol: float = DEFAULT_ATOL,
+              tolerances: Optional[Mapping[str, Mapping[str, float]]] = None) -> None:
         """Hold `data` ({name: array}) against the reference `basename`
         (default: the test's name); units {name: unit} and x (the abscissa
         field) for the files and the message; rtol, atol, tolerances as
@@ -61,7 +68,9 @@ class Regression:
         return self._check(data, basename, units or {}, x, rtol, atol, tolerances,
                            "rr_regression.check")
 
-    def _check(self, data, basename, units, x, rtol, atol, tolerances, func):
+    def _check(self, data: object, basename: Optional[str], units: Mapping[str, str],
+               x: Optional[str], rtol: float, atol: float,
+               tolerances: Optional[Mapping[str, Mapping[str, float]]], func: str) -> None:
         from . import _compare
         fields = _compare.as_fields(func, "data", data)
         # the tolerances are checked before anything is written
@@ -83,7 +92,7 @@ class Regression:
                        f"the comparison), {os.path.relpath(csv_path)} (to read); {then}")
             # the test goes on (its other checks write theirs too) and fails
             # at its end: the plugin's pytest_runtest_call (_rollerrig_pytest)
-            written = getattr(self._request.node, WRITTEN_ATTR, None)
+            written: Optional[List[str]] = getattr(self._request.node, WRITTEN_ATTR, None)
             if written is None:                    # the fixture used without the plugin
                 pytest.fail(message, pytrace=False)
             written.append(message)
@@ -109,8 +118,11 @@ class HistoryRegression(Regression):
     result's history (every record field, or `fields`) against its
     reference; a failure says at which time a field first departs."""
 
-    def check(self, result, basename=None, *, fields=None, window=None, rtol=DEFAULT_RTOL,
-              atol=DEFAULT_ATOL, tolerances=None):
+    # check takes each fixture's own data: not the base class's signature
+    def check(self, result: Any, basename: Optional[str] = None, *,  # type: ignore[override]
+              fields: Optional[Sequence[str]] = None, window: Optional[float] = None,
+              rtol: float = DEFAULT_RTOL, atol: float = DEFAULT_ATOL,
+              tolerances: Optional[Mapping[str, Mapping[str, float]]] = None) -> None:
         """window: compare the means over windows of this many seconds
         (rollerrig.testing.history_fields: robust where single samples are
         not, e.g. across machines)."""
@@ -124,8 +136,11 @@ class CreepCurveRegression(Regression):
     forces (a rollerrig.CreepForces or {"fx": ...}) over their creepage
     axis against the reference."""
 
-    def check(self, creepage, forces, basename=None, *, creepage_name="creepage",
-              rtol=DEFAULT_RTOL, atol=DEFAULT_ATOL, tolerances=None):
+    # check takes each fixture's own data: not the base class's signature
+    def check(self, creepage: npt.ArrayLike, forces: Any,  # type: ignore[override]
+              basename: Optional[str] = None, *, creepage_name: str = "creepage",
+              rtol: float = DEFAULT_RTOL, atol: float = DEFAULT_ATOL,
+              tolerances: Optional[Mapping[str, Mapping[str, float]]] = None) -> None:
         data, units = _assert.creep_curve_fields(creepage, forces, creepage_name)
         return self._check(data, basename, units, creepage_name, rtol, atol, tolerances,
                            "rr_creep_regression.check")

@@ -2,10 +2,14 @@
 stored, bit for bit, with the units and the writer's record as JSON under
 the key "__rollerrig__") and NAME.csv beside it (for a person: the same
 numbers as text, read by pandas and numpy too; rollerrig._csv)."""
+from __future__ import annotations
+
 import json
 import os
+from typing import Any, BinaryIO, Dict, Iterable, List, Mapping, Optional, TextIO, Tuple
 
 import numpy as np
+import numpy.typing as npt
 
 from .._csv import write_table
 from .._errors import RollerRigError
@@ -17,29 +21,36 @@ META_KEY = "__rollerrig__"
 FORMAT = 1
 
 
-def write_reference(base, fields, units=None, x=None, meta=None):
+def write_reference(base: str, fields: Mapping[str, npt.NDArray[Any]],
+                    units: Optional[Mapping[str, str]] = None, x: Optional[str] = None,
+                    meta: Optional[Iterable[Tuple[str, object]]] = None) -> Tuple[str, str]:
     """Write base + ".npz" and base + ".csv" (folders made as needed);
     returns both paths.  fields: {name: ndarray}; units {name: unit}; x the
     field that is the abscissa (time, creepage) if any; meta: more (key,
     value) lines for the CSV's header."""
-    units = {n: cf_unit(units.get(n, "")) for n in fields} if units else {n: "" for n in fields}
+    written = {n: cf_unit(units.get(n, "")) for n in fields} if units else {n: "" for n in fields}
     record = {"format": FORMAT, "rollerrig": __version__, "fields": list(fields),
-              "units": units, "x": x}
+              "units": written, "x": x}
     os.makedirs(os.path.dirname(os.path.abspath(base)), exist_ok=True)
     npz, csv_path = base + ".npz", base + ".csv"
 
-    def write_npz(fh):
-        np.savez_compressed(fh, **fields, **{META_KEY: np.array(json.dumps(record))})
+    # (Any: numpy's stubs take **kwds beside a keyword allow_pickle: bool)
+    arrays: Mapping[str, Any] = fields
+    meta_array: Dict[str, Any] = {META_KEY: np.array(json.dumps(record))}
+
+    def write_npz(fh: BinaryIO) -> None:
+        np.savez_compressed(fh, **arrays, **meta_array)
     write_file(npz, write_npz, what="rollerrig.testing: reference", binary=True)
-    header = [("written by", f"rollerrig {__version__} (rollerrig.testing); the comparison "
+    header: List[Tuple[str, object]] = [("written by", f"rollerrig {__version__} (rollerrig.testing); the comparison "
                              f"reads {os.path.basename(npz)}, this file is for reading")]
     header += list(meta or ())
-    write_file(csv_path, lambda fh: _write_csv(fh, fields, units, header),
+    write_file(csv_path, lambda fh: _write_csv(fh, fields, written, header),
                what="rollerrig.testing: reference")
     return npz, csv_path
 
 
-def _write_csv(fh, fields, units, header):
+def _write_csv(fh: TextIO, fields: Mapping[str, npt.NDArray[Any]], units: Mapping[str, str],
+               header: List[Tuple[str, object]]) -> None:
     """One column per field when every field is 1-D of one length (a
     history, a curve); else long form: field, index, value."""
     arrays = list(fields.values())
@@ -57,7 +68,7 @@ def _write_csv(fh, fields, units, header):
     write_table(fh, names, padded, {}, header)
 
 
-def read_reference(base):
+def read_reference(base: str) -> Optional[Tuple[Dict[str, npt.NDArray[Any]], Dict[str, Any]]]:
     """(fields {name: ndarray}, record {"units", "x", "rollerrig", ...}) of
     base + ".npz"; None when there is none."""
     path = base + ".npz"

@@ -1,12 +1,17 @@
 """Limits of a profile and the checks of its points: numbers, kind, end
 conditions, scale (unit mistakes), single-valuedness (folds), and the
 preparation of raw points (any order, any folds) for a Profile."""
+from __future__ import annotations
+
 import math
 import warnings
+from typing import Any, Dict, List, Literal, Optional, Tuple, Union, overload
 
 import numpy as np
+import numpy.typing as npt
 
 from ..._errors import RollerRigError, RollerRigWarning
+from ..._typing import F64Array
 
 KINDS = ("wheel", "rail")  #: a profile's kinds (a roller is a "rail")
 BCS = ("not-a-knot", "natural")  #: the spline's end conditions
@@ -17,7 +22,12 @@ MAX_COORD = 2.0     #: [m] larger coordinates are taken for a unit mistake
 MIN_WIDTH = 1e-3    #: [m] a narrower profile is taken for a unit mistake
 UNITS = {"m": 1.0, "cm": 1e-2, "mm": 1e-3}     # metres per unit
 
-def _as_float_array(func, name, value):
+#: the labels of a profile's points in messages: (the line or index of each
+#: point, "line" / "index" / "point")
+Labels = Tuple[npt.NDArray[np.integer[Any]], str]
+
+
+def _as_float_array(func: str, name: str, value: npt.ArrayLike) -> F64Array:
     arr = np.asarray(value)
     if arr.dtype.kind not in "iuf":
         raise RollerRigError(f"{func}: {name} must be real numbers, got dtype {arr.dtype} "
@@ -25,27 +35,33 @@ def _as_float_array(func, name, value):
     return arr.astype(np.float64)
 
 
-def _check_number(func, name, value, positive=False, allow_none=False):
+@overload
+def _check_number(func: str, name: str, value: object, positive: bool = ...,
+                  allow_none: Literal[False] = ...) -> float: ...
+@overload
+def _check_number(func: str, name: str, value: object, positive: bool = ...,
+                  allow_none: bool = ...) -> Optional[float]: ...
+def _check_number(func: str, name: str, value: object, positive: bool = False,
+                  allow_none: bool = False) -> Optional[float]:
     if value is None and allow_none:
         return None
-    ok = isinstance(value, (int, float, np.integer, np.floating)) \
-        and not isinstance(value, bool) and math.isfinite(value) \
-        and (value > 0 if positive else True)
-    if not ok:
+    if not (isinstance(value, (int, float, np.integer, np.floating))
+            and not isinstance(value, bool) and math.isfinite(value)
+            and (value > 0 if positive else True)):
         what = "a positive finite number" if positive else "a finite number"
         raise RollerRigError(f"{func}: {name} must be {what}"
                              f"{' or None' if allow_none else ''}, got {value!r}")
     return float(value)
 
 
-def _check_kind(func, kind):
+def _check_kind(func: str, kind: str) -> str:
     if kind not in KINDS:
         raise RollerRigError(f"{func}: kind must be 'wheel' or 'rail' (a roller is 'rail'), "
                              f"got {kind!r}")
     return kind
 
 
-def _check_bc(func, bc, smoothing):
+def _check_bc(func: str, bc: Optional[str], smoothing: Optional[float]) -> str:
     if bc is None:
         return "natural" if smoothing is not None else "not-a-knot"
     if bc not in BCS:
@@ -56,12 +72,12 @@ def _check_bc(func, bc, smoothing):
     return bc
 
 
-def _label(labels, i):
+def _label(labels: Labels, i: Union[int, np.integer[Any]]) -> str:
     """'line 12' (files) or 'point 12' (arrays) for point i."""
     return f"{labels[1]} {labels[0][i]}"
 
 
-def _check_scale(where, y, z, labels):
+def _check_scale(where: str, y: F64Array, z: F64Array, labels: Labels) -> None:
     big = np.abs(np.concatenate([y, z]))
     k = int(np.argmax(big))
     if big[k] > MAX_COORD:
@@ -76,7 +92,8 @@ def _check_scale(where, y, z, labels):
             f"the numbers look like metres read as millimetres (units='m')")
 
 
-def _single_valued(where, y, z, kind, labels, on_fold):
+def _single_valued(where: str, y: F64Array, z: F64Array, kind: str, labels: Labels,
+                   on_fold: str) -> Tuple[npt.NDArray[np.bool_], str]:
     """Keep the single-valued branch through the running surface.
 
     y, z in the profile's (ascending) order.  Returns the boolean mask of the
@@ -87,10 +104,10 @@ def _single_valued(where, y, z, kind, labels, on_fold):
     anchor = int(np.argmin(z)) if kind == "rail" else int(np.argmax(z))
     keep = np.zeros(n, dtype=bool)
     keep[anchor] = True
-    runs = []                                      # (indices, extreme y before the run)
+    runs: List[Tuple[List[int], float]] = []       # (indices, extreme y before the run)
     for step, indices in ((1, range(anchor + 1, n)), (-1, range(anchor - 1, -1, -1))):
-        ext = y[anchor]
-        run = []
+        ext: float = y[anchor]
+        run: List[int] = []
         for i in indices:
             if step * (y[i] - ext) > 0.0:
                 if run:
@@ -124,7 +141,9 @@ def _single_valued(where, y, z, kind, labels, on_fold):
     return keep, desc
 
 
-def _prepare(where, y, z, kind, labels, on_fold, mirror_y=False, mirror_z=False):
+def _prepare(where: str, y: F64Array, z: F64Array, kind: str, labels: Labels, on_fold: str,
+             mirror_y: bool = False,
+             mirror_z: bool = False) -> Tuple[F64Array, F64Array, Dict[str, Any]]:
     """From raw points in metres (file order) to ascending, single-valued
     points.  Returns (y, z, notes dict)."""
     if on_fold not in ("trim", "raise"):
@@ -142,7 +161,7 @@ def _prepare(where, y, z, kind, labels, on_fold, mirror_y=False, mirror_z=False)
     if mirror_z:
         z = -z
     _check_scale(where, y, z, labels)
-    notes = {}
+    notes: Dict[str, Any] = {}
     if y[-1] < y[0]:
         y, z = y[::-1], z[::-1]
         labels = (labels[0][::-1], labels[1])

@@ -1,17 +1,22 @@
 """The Profile class: an immutable profile z(y) with its cubic spline, and
 read_profile, which makes one from a file by the table of formats READERS."""
+from __future__ import annotations
+
 import contextlib
 import math
 import os
 import warnings
 from types import MappingProxyType
-from typing import Optional
+from typing import (IO, Any, Callable, Dict, Iterator, Mapping, Optional, Sequence, Tuple,
+                    Union, overload)
 
 import numpy as np
+import numpy.typing as npt
 
 from ... import _core
 from ..._errors import RollerRigError, RollerRigWarning, status_message
 from ..._files import write_file
+from ..._typing import F64Array, FloatResult
 from ._checks import (MAX_COORD, MAX_POINTS, MIN_POINTS, MIN_SPACING, MIN_WIDTH,
                       UNITS, _as_float_array, _check_bc, _check_kind, _check_number,
                       _check_scale, _prepare)
@@ -87,8 +92,23 @@ class Profile:
 
     __slots__ = ("_y", "_z", "_z_input", "_s", "_c2", "_c3", "_d2", "_kind", "_name",
                  "_meta", "_bc", "_smoothing")
+    # (the slots' types; set once, by __init__ through object.__setattr__)
+    _y: F64Array
+    _z: F64Array
+    _z_input: F64Array
+    _s: F64Array
+    _c2: F64Array
+    _c3: F64Array
+    _d2: F64Array
+    _kind: str
+    _name: str
+    _meta: Mapping[str, Any]
+    _bc: str
+    _smoothing: Optional[float]
 
-    def __init__(self, y, z, *, kind, name="", meta=None, bc=None, smoothing=None):
+    def __init__(self, y: npt.ArrayLike, z: npt.ArrayLike, *, kind: str, name: str = "",
+                 meta: Optional[Mapping[str, Any]] = None, bc: Optional[str] = None,
+                 smoothing: Optional[float] = None) -> None:
         func = "Profile"
         _check_kind(func, kind)
         smoothing = _check_number(func, "smoothing", smoothing, positive=True,
@@ -127,13 +147,14 @@ class Profile:
         _check_scale(func, y, z, (np.arange(len(y)), "index"))
         zn = z
         if smoothing is not None:
-            zn, j = _smooth(y, z, (smoothing / (2.0 * math.pi)) ** 4)
-            if zn is None:
+            smoothed, j = _smooth(y, z, (smoothing / (2.0 * math.pi)) ** 4)
+            if smoothed is None:
                 raise RollerRigError(
                     f"{func}: smoothing = {smoothing!r} m is numerically singular on these "
                     f"points near index {j} (y[{j}] = {y[j]!r}; point spacings from "
                     f"{np.min(np.diff(y)):.3g} to {np.max(np.diff(y)):.3g} m): space the "
                     f"points more evenly, remove near-duplicates, or smooth less")
+            zn = smoothed
         s, c2, c3, d2 = _spline_fit(y, zn, bc)
         for arr in (y, zn, z, s, c2, c3, d2):
             arr.flags.writeable = False
@@ -154,80 +175,81 @@ class Profile:
 
     # -- immutability, pickling, display
 
-    def __setattr__(self, name, value):
+    def __setattr__(self, name: str, value: object) -> None:
         raise AttributeError(f"Profile is immutable (cannot set {name!r}); use shifted(), "
                              f"mirrored() or a new Profile")
 
-    def __delattr__(self, name):
+    def __delattr__(self, name: str) -> None:
         raise AttributeError(f"Profile is immutable (cannot delete {name!r})")
 
-    def __reduce__(self):
+    def __reduce__(self) -> Tuple[Callable[..., Profile], Tuple[Any, ...]]:
         return (_rebuild, (np.array(self._y), np.array(self._z_input), self._kind,
                            self._name, dict(self._meta), self._bc, self._smoothing))
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         sm = f", smoothing={self._smoothing:g}" if self._smoothing is not None else ""
         return (f"Profile(kind={self._kind!r}, name={self._name!r}, {len(self._y)} points, "
                 f"y {self._y[0] * 1e3:.4g} .. {self._y[-1] * 1e3:.4g} mm, bc={self._bc!r}{sm})")
 
-    def __len__(self):
+    def __len__(self) -> int:
         return len(self._y)
 
     # -- attributes
 
     @property
-    def y(self):
+    def y(self) -> F64Array:
         """Node abscissae [m], strictly increasing (read-only array)."""
         return self._y
 
     @property
-    def z(self):
+    def z(self) -> F64Array:
         """Spline values at the nodes [m]: the points given, or their smoothed values."""
         return self._z
 
     @property
-    def z_input(self):
+    def z_input(self) -> F64Array:
         """The z values given (equal to ``z`` unless smoothing is set)."""
         return self._z_input
 
     @property
-    def kind(self):
+    def kind(self) -> str:
         """The profile's kind: "wheel" or "rail" (a roller is a "rail")."""
         return self._kind
 
     @property
-    def name(self):
+    def name(self) -> str:
         """The profile's label (a file's name without extension by default)."""
         return self._name
 
     @property
-    def meta(self):
+    def meta(self) -> Mapping[str, Any]:
         """Header values and reading notes (a read-only mapping)."""
         return self._meta
 
     @property
-    def bc(self):
+    def bc(self) -> str:
         """The spline's end conditions, "not-a-knot" or "natural"."""
         return self._bc
 
     @property
-    def smoothing(self):
+    def smoothing(self) -> Optional[float]:
         """The smoothing wavelength [m], or None (the spline interpolates the points)."""
         return self._smoothing
 
     @property
-    def y_min(self):
+    def y_min(self) -> float:
         """The first node's y [m]: the profile's end on the flange / gauge side."""
         return float(self._y[0])
 
     @property
-    def y_max(self):
+    def y_max(self) -> float:
         """The last node's y [m]: the profile's end on the field side."""
         return float(self._y[-1])
 
     # -- evaluation
 
-    def _locate(self, func, y):
+    def _locate(self, func: str, y: npt.ArrayLike) -> Tuple[
+            F64Array, npt.NDArray[np.intp], F64Array, npt.NDArray[np.bool_]]:
         arr = _as_float_array(f"Profile.{func}", "y", y)
         flat = arr.reshape(-1)
         i = np.clip(np.searchsorted(self._y, flat, side="right") - 1, 0, len(self._y) - 2)
@@ -236,11 +258,15 @@ class Profile:
         return arr, i, t, out
 
     @staticmethod
-    def _shape(arr, values):
+    def _shape(arr: F64Array, values: F64Array) -> FloatResult:
         values = values.reshape(arr.shape)
         return float(values) if arr.ndim == 0 else values
 
-    def evaluate(self, y):
+    @overload
+    def evaluate(self, y: float) -> Tuple[float, float, float]: ...
+    @overload
+    def evaluate(self, y: npt.ArrayLike) -> Tuple[FloatResult, FloatResult, FloatResult]: ...
+    def evaluate(self, y: npt.ArrayLike) -> Tuple[FloatResult, FloatResult, FloatResult]:
         """The spline and its derivatives at y.
 
         Parameters
@@ -259,7 +285,8 @@ class Profile:
         """
         return self._evaluate("evaluate", y)
 
-    def _evaluate(self, func, y):
+    def _evaluate(self, func: str,
+                  y: npt.ArrayLike) -> Tuple[FloatResult, FloatResult, FloatResult]:
         arr, i, t, out = self._locate(func, y)
         s, c2, c3 = self._s[i], self._c2[i], self._c3[i]
         z = self._z[i] + t * (s + t * (c2 + t * c3))
@@ -269,14 +296,22 @@ class Profile:
             v[out] = np.nan
         return self._shape(arr, z), self._shape(arr, dz), self._shape(arr, d2z)
 
-    def z_at(self, y):
+    @overload
+    def z_at(self, y: float) -> float: ...
+    @overload
+    def z_at(self, y: npt.ArrayLike) -> FloatResult: ...
+    def z_at(self, y: npt.ArrayLike) -> FloatResult:
         """z(y) [m] at y [m] (float or array; NaN outside [y_min, y_max])."""
         arr, i, t, out = self._locate("z_at", y)
         z = self._z[i] + t * (self._s[i] + t * (self._c2[i] + t * self._c3[i]))
         z[out] = np.nan
         return self._shape(arr, z)
 
-    def slope(self, y):
+    @overload
+    def slope(self, y: float) -> float: ...
+    @overload
+    def slope(self, y: npt.ArrayLike) -> FloatResult: ...
+    def slope(self, y: npt.ArrayLike) -> FloatResult:
         """dz/dy [-] at y [m] (NaN outside [y_min, y_max]).
 
         z is down, y to the field side: a wheel coned as usual has slope
@@ -284,11 +319,19 @@ class Profile:
         """
         return self._evaluate("slope", y)[1]
 
-    def second_derivative(self, y):
+    @overload
+    def second_derivative(self, y: float) -> float: ...
+    @overload
+    def second_derivative(self, y: npt.ArrayLike) -> FloatResult: ...
+    def second_derivative(self, y: npt.ArrayLike) -> FloatResult:
         """d2z/dy2 [1/m] at y [m] (NaN outside [y_min, y_max])."""
         return self._evaluate("second_derivative", y)[2]
 
-    def curvature(self, y):
+    @overload
+    def curvature(self, y: float) -> float: ...
+    @overload
+    def curvature(self, y: npt.ArrayLike) -> FloatResult: ...
+    def curvature(self, y: npt.ArrayLike) -> FloatResult:
         """Signed curvature z'' / (1 + z'^2)^1.5 [1/m] at y [m].
 
         Positive where the curve bends downward (+z): convex for a rail or
@@ -300,21 +343,21 @@ class Profile:
 
     # -- new profiles from this one
 
-    def _derived(self, func, y, z, name, note):
+    def _derived(self, func: str, y: F64Array, z: F64Array, name: str, note: str) -> Profile:
         meta = dict(self._meta)
         meta["derived"] = tuple(meta.get("derived", ())) + (note,)
         with _named(func):
             return Profile(y, z, kind=self._kind, name=name, meta=meta, bc=self._bc,
                            smoothing=self._smoothing)
 
-    def shifted(self, dy=0.0, dz=0.0):
+    def shifted(self, dy: float = 0.0, dz: float = 0.0) -> Profile:
         """The profile moved by dy laterally and dz downward [m] (a new Profile)."""
         dy = _check_number("Profile.shifted", "dy", dy)
         dz = _check_number("Profile.shifted", "dz", dz)
         return self._derived("Profile.shifted", self._y + dy, self._z_input + dz, self._name,
                              f"shifted by dy = {dy!r} m, dz = {dz!r} m")
 
-    def gauge_point(self, depth=0.014):
+    def gauge_point(self, depth: float = 0.014) -> float:
         """Lateral position [m] of a rail's (or roller's) gauge face at `depth` [m].
 
         `depth` (> 0) is measured below z = 0, the top of the head in rail
@@ -340,7 +383,7 @@ class Profile:
             lo, hi = (mid, hi) if self.z_at(mid) > depth else (lo, mid)
         return 0.5 * (lo + hi)
 
-    def canted(self, inclination):
+    def canted(self, inclination: float) -> Profile:
         """The profile turned about its origin as a rail or roller head canted inward.
 
         `inclination` is a slope, e.g. 1/40, within [-0.1, 0.1]: the field
@@ -360,7 +403,7 @@ class Profile:
                                  "(a face steeper than the cant)")
         return self._derived(func, y, z, self._name, f"canted by {inc!r}")
 
-    def mirrored(self):
+    def mirrored(self) -> Profile:
         """The mirror image y -> -y: the same profile for the other side of the track.
 
         The field side is positive again there.  Smoothing commutes with it.
@@ -368,7 +411,7 @@ class Profile:
         return self._derived("Profile.mirrored", -self._y[::-1], self._z_input[::-1], self._name,
                              "mirrored y -> -y")
 
-    def write_text(self, path, units="mm"):
+    def write_text(self, path: Union[str, os.PathLike[str]], units: str = "mm") -> None:
         """Write the nodes (y, z) as plain two-column text, readable by read_profile.
 
         '#' header lines 'key = value' carry name, kind, units and bc; 17
@@ -381,7 +424,7 @@ class Profile:
                                  f"got {units!r}")
         f = UNITS[units]
 
-        def write(out):
+        def write(out: IO[str]) -> None:
             out.write("# rollerrig profile: lateral y towards the field side, vertical z "
                       "downward\n")
             out.write(f"# name = {self._name}\n# kind = {self._kind}\n# units = {units}\n"
@@ -393,8 +436,11 @@ class Profile:
     # -- other constructors
 
     @classmethod
-    def from_points(cls, y, z, *, kind, name="", units="m", on_fold="trim", mirror_y=False,
-                    mirror_z=False, bc=None, smoothing=None, meta=None):
+    def from_points(cls, y: npt.ArrayLike, z: npt.ArrayLike, *, kind: str, name: str = "",
+                    units: str = "m", on_fold: str = "trim", mirror_y: bool = False,
+                    mirror_z: bool = False, bc: Optional[str] = None,
+                    smoothing: Optional[float] = None,
+                    meta: Optional[Mapping[str, Any]] = None) -> Profile:
         """A profile from points in any order.
 
         Converts units (`units`: "m", "cm", "mm"), mirrors on request
@@ -446,7 +492,8 @@ class Profile:
                             smoothing=smoothing)
 
     @classmethod
-    def conical(cls, alpha, y_range=(-0.02, 0.02), r0=None, n=41):
+    def conical(cls, alpha: float, y_range: Sequence[float] = (-0.02, 0.02),
+                r0: Optional[float] = None, n: int = 41) -> Profile:
         """The paper's conical wheel: z = -tan(alpha) y on y_range [m].
 
         The rolling radius r0 + z decreases towards the field side for
@@ -475,7 +522,8 @@ class Profile:
                        meta={"alpha": alpha, "r0": r0})
 
     @classmethod
-    def cylinder(cls, y_range=(-0.02, 0.02), crown_radius=None, n=81):
+    def cylinder(cls, y_range: Sequence[float] = (-0.02, 0.02),
+                 crown_radius: Optional[float] = None, n: int = 81) -> Profile:
         """A roller (kind "rail"): a cylinder, or crowned with radius `crown_radius` [m].
 
         Flat lateral profile z = 0 (a cylinder, crown_radius None), or a
@@ -497,7 +545,7 @@ class Profile:
 
 
 @contextlib.contextmanager
-def _named(func):
+def _named(func: str) -> Iterator[None]:
     """Profile's own checks, reported under the constructor the caller used."""
     try:
         yield
@@ -507,11 +555,12 @@ def _named(func):
                              else msg) from None
 
 
-def _rebuild(y, z, kind, name, meta, bc, smoothing):
+def _rebuild(y: F64Array, z: F64Array, kind: str, name: str, meta: Dict[str, Any], bc: str,
+             smoothing: Optional[float]) -> Profile:
     return Profile(y, z, kind=kind, name=name, meta=meta, bc=bc, smoothing=smoothing)
 
 
-def _range_points(func, y_range, n):
+def _range_points(func: str, y_range: Sequence[float], n: int) -> Tuple[float, float, int]:
     """y_range and n checked: (y_min, y_max, n)."""
     try:
         y0, y1 = (float(v) for v in y_range)
@@ -535,7 +584,8 @@ def _range_points(func, y_range, n):
     return y0, y1, int(n)
 
 
-def _analytic(func, kind, param, y0, y1, n):
+def _analytic(func: str, kind: int, param: float, y0: float, y1: float,
+              n: int) -> Tuple[F64Array, F64Array]:
     """The points of an analytic profile from the C core (rr_profile_conical,
     kind 0, param alpha; rr_profile_crowned, kind 1, param the crown radius
     or 0), so that a C program has the same points: numpy.linspace(y0, y1,
@@ -547,8 +597,10 @@ def _analytic(func, kind, param, y0, y1, n):
     return y, z
 
 
-def read_profile(path, kind=None, *, units=None, on_fold="trim", mirror_y=False,
-                 mirror_z=False, smoothing=None, bc=None, name=None):
+def read_profile(path: Union[str, os.PathLike[str]], kind: Optional[str] = None, *,
+                 units: Optional[str] = None, on_fold: str = "trim", mirror_y: bool = False,
+                 mirror_z: bool = False, smoothing: Optional[float] = None,
+                 bc: Optional[str] = None, name: Optional[str] = None) -> Profile:
     """Read a wheel or rail/roller profile file into a Profile.
 
     Parameters

@@ -1,13 +1,19 @@
 """Spline numerics of the profiles: the C2 interpolating cubic spline's node
 slopes and the penalised least-squares smoothing spline (Reinsch 1967).
 The package docstring (rollerrig.geometry.profiles) explains both."""
+from __future__ import annotations
+
+from typing import Optional, Tuple
+
 import numpy as np
 
 from ... import _core
 from ..._errors import RollerRigError, status_message
+from ..._typing import F64Array
 
 
-def _spline_fit(y, z, bc):
+def _spline_fit(y: F64Array, z: F64Array,
+                bc: str) -> Tuple[F64Array, F64Array, F64Array, F64Array]:
     """The C2 cubic spline through (y, z), by the C core (rr_spline_fit,
     csrc/util/rr_spline.h: a C program builds the same spline, bit for bit):
     node slopes s [n], per-interval coefficients c2, c3 [n - 1] with
@@ -34,7 +40,8 @@ def _spline_fit(y, z, bc):
     return s, c2, c3, d2
 
 
-def _solve_pentadiagonal_spd(d0, d1, d2, b):
+def _solve_pentadiagonal_spd(d0: F64Array, d1: F64Array, d2: F64Array, b: F64Array
+                             ) -> Tuple[Optional[F64Array], Optional[int]]:
     """Solve M x = b for a symmetric positive definite M given by its main
     diagonal d0, first and second super-diagonals d1, d2 (LDL^T, no pivoting).
     Returns (x, None), or (None, i) if pivot i is below 1e-12 of its diagonal
@@ -63,7 +70,7 @@ def _solve_pentadiagonal_spd(d0, d1, d2, b):
     return x, None
 
 
-def _smoothing_weights(y):
+def _smoothing_weights(y: F64Array) -> F64Array:
     """Trapezoid weights: the lateral length each point stands for."""
     h = np.diff(y)
     w = np.empty(len(y))
@@ -73,7 +80,8 @@ def _smoothing_weights(y):
     return w
 
 
-def _smooth(y, z, lam):
+def _smooth(y: F64Array, z: F64Array,
+            lam: float) -> Tuple[Optional[F64Array], Optional[int]]:
     """Values at the nodes of the natural cubic smoothing spline minimising
     sum w_i (z_i - f_i)^2 + lam * integral f''^2 (Reinsch's algorithm, Green
     and Silverman 1994, sec. 2.3): (R + lam Q^T W^-1 Q) g = Q^T z and
@@ -93,6 +101,7 @@ def _smooth(y, z, lam):
     dz = np.diff(z) / h
     g, bad = _solve_pentadiagonal_spd(d0, d1, d2, dz[1:] - dz[:-1])
     if g is None:
+        assert bad is not None      # (None, i) from the solver: i is set
         return None, bad + 1
     qg = np.zeros(len(y))
     qg[:-2] += a * g

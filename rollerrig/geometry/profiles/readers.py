@@ -8,32 +8,39 @@ looks the extension up in READERS, checks what is common to all formats
 and makes the Profile; a new format is one reader and one entry in READERS.
 The readers make no Profile: this module imports nothing of _profile.
 """
+from __future__ import annotations
+
 import math
 import os
 import re
 import stat
 import warnings
-from typing import Callable, NamedTuple, Optional
+from typing import Any, Callable, Collection, Dict, List, Mapping, NamedTuple, Optional, Union
 
 import numpy as np
+import numpy.typing as npt
 
 from ..._errors import RollerRigError, RollerRigWarning
+from ..._typing import F64Array
 from ._checks import BCS, KINDS, UNITS
+
+#: a header value as _value reads it
+HeaderValue = Union[int, float, str]
 
 
 class RawProfile(NamedTuple):
     """What a reader returns: the points as the file gives them."""
 
-    y: np.ndarray          #: lateral [m], the file's order
-    z: np.ndarray          #: vertical [m], downward
-    lines: np.ndarray      #: the line of each point (for messages)
+    y: F64Array            #: lateral [m], the file's order
+    z: F64Array            #: vertical [m], downward
+    lines: npt.NDArray[np.integer[Any]]  #: the line of each point (for messages)
     kind: Optional[str]    #: "wheel"/"rail" the file says or the caller gave, else None
-    meta: dict             #: header values
+    meta: Dict[str, Any]   #: header values
     units: Optional[str] = None   #: the units read (plain text), else None
     bc: Optional[str] = None      #: end conditions the file declares, else None
 
 
-def _value(text):
+def _value(text: str) -> HeaderValue:
     """A header value: int, float or string (quotes removed)."""
     t = text.strip()
     if len(t) >= 2 and t[0] == t[-1] and t[0] in "'\"":
@@ -48,7 +55,7 @@ def _value(text):
         return t
 
 
-def _numbers(where, lineno, text, expect):
+def _numbers(where: str, lineno: int, text: str, expect: str) -> List[float]:
     """The numbers of a data line, or a RollerRigError naming the line."""
     fields = [f for f in re.split(r"[\s,;]+", text.strip()) if f]
     try:
@@ -63,9 +70,9 @@ def _numbers(where, lineno, text, expect):
     return vals
 
 
-def _strip_comment(line):
+def _strip_comment(line: str) -> str:
     """Text before a '!' that is not inside quotes (SIMPACK comments)."""
-    quote = None
+    quote: Optional[str] = None
     for k, ch in enumerate(line):
         if quote:
             if ch == quote:
@@ -81,7 +88,7 @@ def _strip_comment(line):
 MAX_FILE_BYTES = 64 * 2**20
 
 
-def _read_text_lines(path, where):
+def _read_text_lines(path: str, where: str) -> List[str]:
     """The lines of a profile file.  Only a regular file is read: a FIFO or a
     device (even through a symlink) would block or never end, so the file is
     opened without blocking and checked before any byte is read."""
@@ -111,7 +118,8 @@ def _read_text_lines(path, where):
     return data.decode("utf-8", errors="replace").splitlines()
 
 
-def _read_simpack(path, where, kind, units):
+def _read_simpack(path: str, where: str, kind: Optional[str],
+                  units: Optional[str]) -> RawProfile:
     """SIMPACK .prw/.prr: sections header.begin/end (version, type: 0 rail,
     1 wheel) and spline.begin/end with 'key = value' lines and a nested
     point.begin/end block of 'y z [weight]' rows; '!' starts a comment (a
@@ -130,9 +138,11 @@ def _read_simpack(path, where, kind, units):
     inversion = 1 only reorders.
     The header type beats the extension (with a warning); a caller's kind
     must agree with the header."""
-    header, spline = {}, {}
-    rows, lines = [], []
-    stack = []
+    header: Dict[str, HeaderValue] = {}
+    spline: Dict[str, HeaderValue] = {}
+    rows: List[List[float]] = []
+    lines: List[int] = []
+    stack: List[str] = []
     text = _read_text_lines(path, where)
     for lineno, raw in enumerate(text, 1):
         s = _strip_comment(raw).strip()
@@ -176,9 +186,9 @@ def _read_simpack(path, where, kind, units):
     if not rows:
         raise RollerRigError(f"{where}: no points (no point.begin .. point.end block)")
     pts = np.array(rows, dtype=float)
-    lines = np.array(lines)
+    line_of = np.array(lines)
 
-    def num(key, default):
+    def num(key: str, default: float) -> float:
         v = spline.get(key, default)
         try:
             x = math.nan if isinstance(v, (str, bool)) else float(v)
@@ -188,7 +198,7 @@ def _read_simpack(path, where, kind, units):
             raise RollerRigError(f"{where}: {key} = {str(v)[:40]!r} is not a finite number")
         return x
 
-    def flag(key):
+    def flag(key: str) -> bool:
         v = spline.get(key, 0)
         if v not in (0, 1):
             raise RollerRigError(f"{where}: {key} must be 0 or 1, got {v!r}")
@@ -201,7 +211,7 @@ def _read_simpack(path, where, kind, units):
         for i in range(1, len(pts)):
             if math.hypot(*(pts[i] - pts[keep[-1]])) > dmin:
                 keep.append(i)
-        pts, lines = pts[keep], lines[keep]
+        pts, line_of = pts[keep], line_of[keep]
     # 2 shift
     pts = pts + np.array([num("shift.y", 0.0), num("shift.z", 0.0)])
     # 3 rotation about x
@@ -216,7 +226,7 @@ def _read_simpack(path, where, kind, units):
     ylo, yhi = num("bound.y.min", 1.0), num("bound.y.max", 0.0)
     if ylo < yhi:
         inside = (pts[:, 0] >= ylo) & (pts[:, 0] <= yhi)
-        pts, lines = pts[inside], lines[inside]
+        pts, line_of = pts[inside], line_of[inside]
     zlo, zhi = num("bound.z.min", 1.0), num("bound.z.max", 0.0)
     if zlo < zhi:
         pts[:, 1] = np.clip(pts[:, 1], zlo, zhi)
@@ -226,7 +236,7 @@ def _read_simpack(path, where, kind, units):
     if flag("mirror.z"):
         pts[:, 1] = -pts[:, 1]
     if flag("inversion"):
-        pts, lines = pts[::-1], lines[::-1]
+        pts, line_of = pts[::-1], line_of[::-1]
     # 7 units
     if "units.len.f" in spline:
         len_f = num("units.len.f", 1.0)
@@ -239,7 +249,7 @@ def _read_simpack(path, where, kind, units):
                                  f"{len_f!r}")
     elif "units.len" in spline:
         name = spline["units.len"]
-        if name not in UNITS:
+        if not isinstance(name, str) or name not in UNITS:     # (no number is a unit)
             raise RollerRigError(f"{where}: units.len = {name!r} is not one of "
                                  f"{sorted(UNITS)}")
         len_f = 1.0 / UNITS[name]
@@ -269,18 +279,20 @@ def _read_simpack(path, where, kind, units):
         warnings.warn(f"{where}: approx.smooth = {spline['approx.smooth']!r} (SIMPACK's "
                       f"smoothing) is not applied; pass smoothing= for ours",
                       RollerRigWarning, stacklevel=3)
-    return RawProfile(pts[:, 0], pts[:, 1], lines, kind, meta)
+    return RawProfile(pts[:, 0], pts[:, 1], line_of, kind, meta)
 
 
-def _read_miniprof(path, where, kind, units):
+def _read_miniprof(path: str, where: str, kind: Optional[str],
+                   units: Optional[str]) -> RawProfile:
     """MiniProf .whl/.ban: 'Key=value' header lines, then one point per line
     (fields separated by blanks or commas) in millimetres, in the columns
     that ColumnDef names (default 'X,Y'): X lateral, Y vertical, both already
     in our orientation (field side positive, downward positive; wheels with
     y = 0 at the flange back).  XYPoints, when given, must equal the number
     of points.  Returns (y [m], z [m], line numbers, None, meta)."""
-    meta = {}
-    rows, lines = [], []
+    meta: Dict[str, Any] = {}
+    rows: List[List[float]] = []
+    lines: List[int] = []
     text = _read_text_lines(path, where)
     for lineno, raw in enumerate(text, 1):
         s = raw.strip()
@@ -317,15 +329,17 @@ def _read_miniprof(path, where, kind, units):
                       meta)
 
 
-def _read_text(path, where, kind, units):
+def _read_text(path: str, where: str, kind: Optional[str],
+               units: Optional[str]) -> RawProfile:
     """Plain text: one point per line, 'lateral vertical' separated by blanks,
     a comma or a semicolon, in our orientation.  Empty lines and lines
     starting with '#', '!' or '%' are skipped; comment lines of the form
     '# key = value' become meta (name, kind, units and bc are used).  A first
     line whose fields are all non-numeric is taken as column names.  A
     caller's kind and units must agree with the file's."""
-    meta = {}
-    rows, lines = [], []
+    meta: Dict[str, Any] = {}
+    rows: List[List[float]] = []
+    lines: List[int] = []
     text = _read_text_lines(path, where)
     seen_data = False
     for lineno, raw in enumerate(text, 1):
@@ -360,10 +374,11 @@ def _read_text(path, where, kind, units):
                       meta, units, bc)
 
 
-def _header_value(where, meta, key, allowed, shown, given=None):
+def _header_value(where: str, meta: Mapping[str, Any], key: str, allowed: Collection[str],
+                  shown: str, given: Optional[str] = None) -> Optional[str]:
     """A header key's value (None if absent): one of `allowed`, and the same
     as the caller's `given` where both are set."""
-    value = meta.get(key)
+    value: Optional[str] = meta.get(key)    # a str once found in `allowed`
     if value is not None and value not in allowed:
         raise RollerRigError(f"{where}: {key} = {value!r} in the file is not {shown}")
     if value is not None and given is not None and given != value:
@@ -372,7 +387,7 @@ def _header_value(where, meta, key, allowed, shown, given=None):
     return value
 
 
-def _not_number(field):
+def _not_number(field: str) -> bool:
     try:
         float(field)
     except ValueError:
