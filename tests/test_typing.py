@@ -126,6 +126,20 @@ def test_results_are_precise(tmp_path):
         assert_type(rr.stability([10.0, 20.0]), rr.Stability)
         assert_type(rr.hunting([30.0, 20.0]), rr.Hunting)
         assert_type(rr.critical_speed(lambda V: [[-V]], [1.0, 2.0]), float)
+        # rig_contact's wheels by patch (its overloads), either where patch is a str
+        from rollerrig.rig.contact import NonHertzWheel
+        table = rr.build_rig()[2]
+        c = rr.rig_contact(table, spin=10.0, roller_spin=10.0, N_left=1e3, N_right=1e3)
+        assert_type(c, rr.RigContact[rr.WheelContact])
+        nh = rr.rig_contact(table, spin=10.0, roller_spin=10.0, Fz_left=1e3, Fz_right=1e3,
+                            patch="nonhertz")
+        assert_type(nh.left, NonHertzWheel)
+        patch: str = "hertz"
+        either = rr.rig_contact(table, spin=10.0, roller_spin=10.0, N_left=1e3, N_right=1e3,
+                                patch=patch)
+        assert_type(either.left, Union[rr.WheelContact, NonHertzWheel])
+        assert_type(either.left.force, F64)
+        assert_type(rr.replay(rr.simulate(0.1)).right, rr.WheelContact)
         """))
     status, out = mypy(script)
     assert status == 0 and not ERROR.search(out), out
@@ -139,17 +153,10 @@ def _python_chains():
             for name, blocks in test_readme.CHAINS.items()}
 
 
-# The guide's code is not strict-clean yet (2 errors, both in the library:
-# RigContact declares its wheels WheelContact where patch="nonhertz" gives
-# NonHertzWheel, and the regression fixtures' check() is unannotated).  The
-# guide's own causes are gone: one namespace over its pages, so no name is
-# reused for another type; its functions annotated; fmpy (no types) named in
-# pyproject's overrides.  strict: the marker goes once it passes.
-GUIDE_PENDING = pytest.mark.xfail(strict=True, reason="issue 26 item 2 in progress: the guide's "
-                                  "code is not strict-clean yet (test_typing.py says why)")
-
-
-@pytest.mark.parametrize("chain", ["README", pytest.param("guide", marks=GUIDE_PENDING)])
+# The guide's code as a user's script: one namespace over its pages (no name
+# reused for another type), its functions annotated, fmpy (no types) named in
+# pyproject's overrides; rig_contact's overloads give its wheels' type by patch.
+@pytest.mark.parametrize("chain", ["README", "guide"])
 def test_documented_code_is_strict_clean(chain, tmp_path):
     script = user_script(tmp_path, f"{chain.lower()}_examples.py", _python_chains()[chain])
     status, out = mypy(script)
