@@ -181,6 +181,40 @@ def _rebased(rig, s, func):
     return rig.full_state()
 
 
+def _track_loop(loop, rig, state, func):
+    """On track: the rails' held speed and the roller drive, which acts on
+    nothing there, are not coordinates (roller_spin is constant, the roller
+    PI's integral and torque move nothing: their z = 1 and exp(-T/tau) would
+    only hide the loop's own); and the track encoder must read a whole number
+    of counts each sample.  Its counts are capped at 2^31 - 1 a turn of the
+    1000 m rail (rollerrig.rig.params), 2.9 um: at 5 m/s a sample is 6830.5
+    counts, so the speed it reads alternates by one count (1.5e-4 of the
+    speed) and the wheelset's reference with it -- the loop is forced at the
+    sample rate, never steady (the 'drift' of -8e-5 m/s a block end showed
+    was that forced cycle, x +-2.4e-7 m, vx +-1.5e-4 m/s, its mean 3e-8 m/s).
+    So the rail's speed is rounded to a whole number n of counts a sample
+    (a relative change below 1 / (2 n): 7e-5 at 5 m/s) and its angle starts
+    half a count past a count: the reading is then the same every sample
+    and the loop has a fixed point.  A given `state` keeps its own rail
+    speed (and must be steady on its own)."""
+    loop.keep = [i for i in range(14)
+                 if STATES[i] not in ("roller_spin", "torque_roller", "roller_pi_integral")]
+    q = loop.q[0]
+    if state is not None:
+        if isinstance(state, dict) and isinstance(state.get("roller_spin"), (int, float)):
+            loop.roller_ref = float(state["roller_spin"])
+        return
+    n = max(1, round(loop.roller_ref * loop.T / q))
+    loop.roller_ref = n * q / loop.T
+    s = rig.full_state()
+    s.update(roller_spin=loop.roller_ref, theta_r=0.5 * q, roller_count=0.0,
+             roller_enc_speed=loop.roller_ref)
+    st = rig.set_full_state(s)
+    if st < 0:
+        raise RollerRigError(f"{func}: the rig refuses the rail's speed rounded to whole "
+                             f"counts a sample: {status_message(st)}")
+
+
 def closed_loop_linearize(plant, V, state, func):
     """The closed loop of the rig `plant.rig` (stability._Plant) at roller
     surface speed V: settled there from its start (or at `state`, a full
@@ -189,13 +223,8 @@ def closed_loop_linearize(plant, V, state, func):
     loop = _Loop(rig, func, V / plant.R0)
     loop.R0, loop.r0 = plant.R0, plant.r0
     if plant.track:
-        # the rails' speed is held: the roller drive moves nothing (its
-        # integral walks on the encoder's jitter), and the settled loop keeps
-        # a longitudinal velocity (-8e-5 m/s at 5 m/s) not yet explained
-        raise RollerRigError(f"{func}: closed_loop is not available on track (the settled "
-                             "loop is not steady there: its longitudinal velocity stays "
-                             "at about -8e-5 m/s); the plant's linearisation "
-                             "(closed_loop=False) is")
+        _track_loop(loop, rig, state, func)
+        V = loop.roller_ref * plant.R0
     keep = loop.keep
     names = tuple(STATES[i] for i in keep)
     plant_rows = [i for i in keep if i < 10]
