@@ -6,7 +6,9 @@ one sample of the C rig (the encoders read, the PI controllers and the
 creepage controller act, the plant is integrated over T) from its full state
 (Rig.full_state).  Its Jacobian A is taken by central differences of F about
 the steady state the rig settles to under its speed controllers at the
-roller speed, the wheelset held at free rolling (no creepage target).
+roller speed, the wheelset held at free rolling (no creepage target), or
+under the creepage controller at a target (_creep_loop: its proportional
+law, K a coordinate); on the rollers or on track (_track_loop).
 
 Coordinates: the plant's states but the two unwrapped angles, which grow
 without bound; in their place each encoder's angle since its last count,
@@ -36,14 +38,22 @@ from .._errors import RollerRigError, status_message
 #: the closed loop's coordinates, in this order
 STATES = ("x", "y", "yaw", "vx", "vy", "yaw_rate", "spin", "roller_spin", "torque_roller",
           "torque_wheelset", "roller_angle_since_count", "wheelset_angle_since_count",
-          "roller_pi_integral", "wheelset_pi_integral")
+          "roller_pi_integral", "wheelset_pi_integral", "creepctl_K")
 _PLANT = STATES[:10]
+_K = STATES.index("creepctl_K")
 #: the relative finite-difference step (per unit of each coordinate's scale)
 FD_STEP = 2e-8
 #: the dominant |z| at FD_STEP and at 4 FD_STEP must agree to this (relative)
 CHECK_TOL = 1e-5
 #: samples run to reach the steady state, at most
 MAX_SETTLE = 200_000
+#: under creepage control the samples are taken at the target plus this
+#: (see _creep_loop): 20 counts' creepage of the default encoders
+CREEP_OFFSET = 2e-4
+#: samples run under creepage control before the fixed point is sought
+CREEP_SETTLE = 4000
+#: Newton steps to the fixed point under creepage control, at most
+CREEP_NEWTON = 8
 #: steady: the fixed point lies within this (per unit of each scale) of the
 #: state, besides the shift two encoder counts make
 STEADY_TOL = 1e-6
@@ -77,6 +87,11 @@ class ClosedLoopLinearization(NamedTuple):
     T: float
     roller_speed: float
     track: bool
+    #: the creepage controller's target (NaN: free rolling, no creepage control)
+    creepage_target: float = math.nan
+    #: the roller drive's speed reference the loop runs at [rad/s] (a time
+    #: run from full_state reproduces the loop with it)
+    roller_reference: float = math.nan
 
     @property
     def spectral_radius(self):
@@ -93,24 +108,29 @@ class _Loop:
         self.q = (2.0 * math.pi / info.roller_counts, 2.0 * math.pi / info.wheelset_counts)
         self.base = None
         self.keep = list(range(14))
+        # the creepage target (NaN: free rolling), the offset the samples are
+        # taken at and the change of the controller's K it makes (_creep_loop)
+        self.xi, self.delta, self.shift_K = math.nan, 0.0, 0.0
 
     def coords(self, s):
         return np.array([s[k] for k in _PLANT]
                         + [s["theta_r"] - s["roller_count"] * self.q[0],
                            s["chi"] - s["wheelset_count"] * self.q[1],
-                           s["roller_pi_integral"], s["wheelset_pi_integral"]])
+                           s["roller_pi_integral"], s["wheelset_pi_integral"],
+                           s["creepctl_K"]])
 
     def full(self, x):
         s = dict(self.base, **dict(zip(_PLANT, x[:10].tolist())))
         s["theta_r"] = self.base["roller_count"] * self.q[0] + x[10]
         s["chi"] = self.base["wheelset_count"] * self.q[1] + x[11]
         s["roller_pi_integral"], s["wheelset_pi_integral"] = float(x[12]), float(x[13])
+        s["creepctl_K"] = float(x[_K])
         return s
 
     def F(self, x):
         st = self.rig.set_full_state(self.full(x))
         if st >= 0:
-            _, st = self.rig.run([self.roller_ref], [math.nan])
+            _, st = self.rig.run([self.roller_ref], [self.xi + self.delta])
         if st < 0:
             raise RollerRigError(f"{self.func}: the closed loop cannot take a sample from "
                                  f"{dict(zip(STATES, np.round(x, 12)))}: {status_message(st)}")
@@ -123,7 +143,17 @@ class _Loop:
         V = max(abs(x[7]) * self.R0, 1e-3)
         turn = (max(abs(x[7]), 1e-3) * self.T, max(abs(x[6]), 1e-3) * self.T)
         return np.array([1.0, 1.0, 1.0, V, V, V, V / self.r0, V / self.R0, 100.0, 100.0,
-                         turn[0], turn[1], 100.0, 100.0])
+                         turn[0], turn[1], 100.0, 100.0, 1.0])
+
+    def residual(self, x, A):
+        """F(x) - x over `keep` for the loop's own target: under creepage
+        control less the offset's part, the K column of A times the change
+        of K the offset makes (exact to first order: K enters the sample
+        only through K + sense alpha (target - creepage))."""
+        r = (self.F(x) - x)[self.keep]
+        if self.shift_K:
+            r -= A[:, self.keep.index(_K)] * self.shift_K
+        return r
 
     def jacobian(self, x, step):
         """Central differences over the coordinates `keep`: A[keep, keep]."""
@@ -215,31 +245,86 @@ def _track_loop(loop, rig, state, func):
                              f"counts a sample: {status_message(st)}")
 
 
-def closed_loop_linearize(plant, V, state, func):
+def _creep_loop(loop, rig, xi, state, func):
+    """Under the creepage controller (eq. 13-14): K moves by sense alpha
+    (target - creepage) while the creepage is short of the target in its
+    sense (the proportional law), by a fixed -sense beta past it (the
+    recovery law).  The map jumps at the target, so the loop never rests
+    there: it runs a sawtooth (a recovery step, then the proportional law's
+    geometric approach, until the encoders' jitter crosses the target).  Its
+    linearisation is the proportional law's, about its fixed point (the
+    creepage at the target): what the loop follows between recovery steps.
+    The samples are taken at the target plus CREEP_OFFSET (20 counts of
+    creepage: no difference crosses the target), which adds sense alpha
+    CREEP_OFFSET to the K a sample ends with, the same for every difference:
+    the derivatives are of the same law, at K 2e-6 off (their change from
+    that is below the differences' own error), and the residual is taken
+    less it (_Loop.residual)."""
+    if state is not None and not (state.get("creep_control") == 1.0
+                                  and state.get("xi_ref") == xi):
+        raise RollerRigError(f"{func}: with creepage_target {xi:g}, state must be under "
+                             f"creepage control at that target (creep_control 1, xi_ref "
+                             f"{xi:g}), got creep_control {state.get('creep_control')!r}, "
+                             f"xi_ref {state.get('xi_ref')!r}")
+    info = rig.info
+    loop.keep = loop.keep + [_K]
+    loop.xi, loop.delta = xi, CREEP_OFFSET
+    loop.shift_K = info.sense * info.alpha * CREEP_OFFSET
+
+
+def _settle_creep(loop, rig, V, func):
+    """Settled under creepage control: CREEP_SETTLE samples (onto the
+    sawtooth), then Newton's method on the proportional law's fixed point
+    (each step's matrix by the differences the linearisation takes)."""
+    _, st = rig.run(np.full(CREEP_SETTLE, loop.roller_ref), np.full(CREEP_SETTLE, loop.xi))
+    if st < 0:
+        raise RollerRigError(f"{func}: the closed loop under creepage control does not "
+                             f"settle at {V:g} m/s: {status_message(st)}")
+    loop.base = _rebased(rig, rig.full_state(), func)
+    x = loop.coords(loop.base)
+    for _ in range(CREEP_NEWTON):
+        A = loop.jacobian(x, FD_STEP)
+        dx = np.linalg.solve(np.eye(len(loop.keep)) - A, loop.residual(x, A))
+        x[loop.keep] += dx
+        if np.all(np.abs(dx) <= 1e-3 * STEADY_TOL * loop.scales(x)[loop.keep]):
+            break
+    st = rig.set_full_state(loop.full(x))
+    if st < 0:
+        raise RollerRigError(f"{func}: the rig refuses the fixed point under creepage "
+                             f"control: {status_message(st)}")
+    return CREEP_SETTLE
+
+
+def closed_loop_linearize(plant, V, state, func, creepage_target=None):
     """The closed loop of the rig `plant.rig` (stability._Plant) at roller
-    surface speed V: settled there from its start (or at `state`, a full
+    surface speed V, free rolling or under creepage control at
+    `creepage_target`: settled there from its start (or at `state`, a full
     state dict of Rig.full_state, refused if not steady)."""
     rig = plant.rig
     loop = _Loop(rig, func, V / plant.R0)
     loop.R0, loop.r0 = plant.R0, plant.r0
+    if state is not None and not isinstance(state, dict):
+        raise RollerRigError(f"{func}: with closed_loop, state must be a full state dict "
+                             f"(Rig.full_state()), got {type(state).__name__}")
     if plant.track:
         _track_loop(loop, rig, state, func)
         V = loop.roller_ref * plant.R0
+    if creepage_target is not None:
+        _creep_loop(loop, rig, creepage_target, state, func)
     keep = loop.keep
     names = tuple(STATES[i] for i in keep)
     plant_rows = [i for i in keep if i < 10]
     if state is not None:
-        if not isinstance(state, dict):
-            raise RollerRigError(f"{func}: with closed_loop, state must be a full state dict "
-                                 f"(Rig.full_state()), got {type(state).__name__}")
         st = rig.set_full_state(state)
         if st < 0:
             raise RollerRigError(f"{func}: state refused by the rig: {status_message(st)}")
-        if state.get("creep_control", 0.0) != 0.0:
+        if creepage_target is None and state.get("creep_control", 0.0) != 0.0:
             raise RollerRigError(f"{func}: state is under creepage control (creep_control 1);"
-                                 " the closed loop is linearised at free rolling")
+                                 " linearise it with creepage_target (its xi_ref)")
     done = 0
-    if state is None:
+    if state is None and creepage_target is not None:
+        done = _settle_creep(loop, rig, V, func)
+    elif state is None:
         block = 2000
         prev = None
         while done < MAX_SETTLE:
@@ -260,7 +345,7 @@ def closed_loop_linearize(plant, V, state, func):
     n = len(keep)
     # steady: the fixed point of the linearised map lies within STEADY_TOL of x0;
     # the angles since a count only to within a count (the quantiser's jitter)
-    r = (loop.F(xfull) - xfull)[keep]
+    r = loop.residual(xfull, A)
     sc = loop.scales(xfull)[keep]
     try:
         M = np.linalg.inv(np.eye(n) - A)
@@ -301,5 +386,6 @@ def closed_loop_linearize(plant, V, state, func):
     z = z[np.argsort(-np.abs(z))]
     lam = np.log(z.astype(complex)) / loop.T
     return ClosedLoopLinearization(A, names, z, lam, _modes(A, loop.T, names), x0,
-                                   dict(loop.base),
-                                   loop.T, float(V), plant.track)
+                                   dict(loop.base), loop.T, float(V), plant.track,
+                                   math.nan if creepage_target is None
+                                   else float(creepage_target), float(loop.roller_ref))

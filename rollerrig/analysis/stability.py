@@ -299,20 +299,23 @@ def _linearize_at(plant, V, state=None, func="linearize"):
 def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
               track: bool = False, state: Optional[npt.ArrayLike] = None,
               method: Optional[str] = None, closed_loop: Literal[False] = False,
-              **creep: Any) -> Linearization: ...
+              creepage_target: None = None, **creep: Any) -> Linearization: ...
 @overload
 def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
               track: bool = False, state: Optional[npt.ArrayLike] = None,
               method: Optional[str] = None, closed_loop: Literal[True],
+              creepage_target: Optional[float] = None,
               **creep: Any) -> "ClosedLoopLinearization": ...
 @overload
 def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
               track: bool = False, state: Optional[npt.ArrayLike] = None,
               method: Optional[str] = None, closed_loop: bool = False,
+              creepage_target: Optional[float] = None,
               **creep: Any) -> Union[Linearization, "ClosedLoopLinearization"]: ...
 def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
               track: bool = False, state: Optional[npt.ArrayLike] = None,
               method: Optional[str] = None, closed_loop: bool = False,
+              creepage_target: Optional[float] = None,
               **creep: Any) -> Union[Linearization, "ClosedLoopLinearization"]:
     """The rig's plant linearised at its steady state.
 
@@ -336,8 +339,16 @@ def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
         True: the sampled closed loop with the drives, encoders and
         controllers, the wheelset held at free rolling, as a map over one
         control sample (``state`` then a full state dict,
-        :meth:`rollerrig.Rig.full_state`); not on track, nor under creepage
-        control (an error says why).
+        :meth:`rollerrig.Rig.full_state`), on the rollers or on track (the
+        rail's speed then rounded to whole counts of its encoder a sample:
+        ``roller_speed`` of the result, within 1e-4).
+    creepage_target : float, optional
+        With ``closed_loop``: the loop under the rig's creepage controller
+        at this target creepage (finite, ``abs < 0.5``), linearised on its
+        proportional law about the creepage at the target (the recovery
+        law's fixed step past the target is not differentiable: between
+        its steps the loop follows the proportional law;
+        docs/lateral_dynamics.md).  Default: free rolling.
     **creep
         The method's options.
 
@@ -358,12 +369,21 @@ def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
     if not isinstance(closed_loop, bool):
         raise RollerRigError(f"{func}: closed_loop must be True or False, got "
                              f"{_short(closed_loop)}")
+    if creepage_target is not None:
+        if not closed_loop:
+            raise RollerRigError(f"{func}: creepage_target needs closed_loop=True (the "
+                                 "plant alone has no creepage controller)")
+        if (isinstance(creepage_target, bool) or not isinstance(creepage_target, (int, float))
+                or not abs(creepage_target) < 0.5):
+            raise RollerRigError(f"{func}: creepage_target must be a finite number with "
+                                 f"abs < 0.5, got {_short(creepage_target)}")
+        creepage_target = float(creepage_target)
     if roller_speed is not None:
         roller_speed = _speed_arg(func, "roller_speed", roller_speed)
     plant = _Plant(func, params, roller_speed, track, method, creep)
     if closed_loop:
         from .closed_loop import closed_loop_linearize
-        return closed_loop_linearize(plant, plant.V0, state, func)
+        return closed_loop_linearize(plant, plant.V0, state, func, creepage_target)
     return _linearize_at(plant, plant.V0, state, func)
 
 
