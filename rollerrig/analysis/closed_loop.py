@@ -28,12 +28,23 @@ it before the plant moves), so no difference crosses a count.  The matrix is
 checked against steps four times larger: its dominant |z| must agree to
 CHECK_TOL, or the call fails naming the disagreement.
 """
+from __future__ import annotations
+
 import math
-from typing import NamedTuple, Tuple
+from typing import TYPE_CHECKING, Any, Dict, List, NamedTuple, Optional, Sequence, Tuple
 
 import numpy as np
+import numpy.typing as npt
 
 from .._errors import RollerRigError, status_message
+from .._typing import F64Array
+
+if TYPE_CHECKING:
+    from ..rig.build import Rig
+    from .stability import _Plant
+
+#: a full state (Rig.full_state): name -> value
+FullState = Dict[str, float]
 
 #: the closed loop's coordinates, in this order
 STATES = ("x", "y", "yaw", "vx", "vy", "yaw_rate", "spin", "roller_spin", "torque_roller",
@@ -83,7 +94,7 @@ class ClosedLoopLinearization(NamedTuple):
     eigenvalues: np.ndarray
     modes: Tuple[ClosedLoopMode, ...]
     state: np.ndarray
-    full_state: dict
+    full_state: Dict[str, float]
     T: float
     roller_speed: float
     track: bool
@@ -94,40 +105,41 @@ class ClosedLoopLinearization(NamedTuple):
     roller_reference: float = math.nan
 
     @property
-    def spectral_radius(self):
+    def spectral_radius(self) -> float:
         return float(np.max(np.abs(self.z)))
 
 
 class _Loop:
     """One sample of the rig from the closed loop's coordinates."""
 
-    def __init__(self, rig, func, roller_ref):
+    def __init__(self, rig: Rig, func: str, roller_ref: float, R0: float, r0: float) -> None:
         self.rig, self.func, self.roller_ref = rig, func, roller_ref
+        self.R0, self.r0 = R0, r0
         info = rig.info
-        self.T = info.dt
+        self.T = float(info.dt)
         self.q = (2.0 * math.pi / info.roller_counts, 2.0 * math.pi / info.wheelset_counts)
-        self.base = None
+        self.base: FullState = {}
         self.keep = list(range(14))
         # the creepage target (NaN: free rolling), the offset the samples are
         # taken at and the change of the controller's K it makes (_creep_loop)
         self.xi, self.delta, self.shift_K = math.nan, 0.0, 0.0
 
-    def coords(self, s):
+    def coords(self, s: FullState) -> F64Array:
         return np.array([s[k] for k in _PLANT]
                         + [s["theta_r"] - s["roller_count"] * self.q[0],
                            s["chi"] - s["wheelset_count"] * self.q[1],
                            s["roller_pi_integral"], s["wheelset_pi_integral"],
                            s["creepctl_K"]])
 
-    def full(self, x):
-        s = dict(self.base, **dict(zip(_PLANT, x[:10].tolist())))
+    def full(self, x: F64Array) -> FullState:
+        s = dict(self.base, **dict(zip(_PLANT, (float(v) for v in x[:10]))))
         s["theta_r"] = self.base["roller_count"] * self.q[0] + x[10]
         s["chi"] = self.base["wheelset_count"] * self.q[1] + x[11]
         s["roller_pi_integral"], s["wheelset_pi_integral"] = float(x[12]), float(x[13])
         s["creepctl_K"] = float(x[_K])
         return s
 
-    def F(self, x):
+    def F(self, x: F64Array) -> F64Array:
         st = self.rig.set_full_state(self.full(x))
         if st >= 0:
             _, st = self.rig.run([self.roller_ref], [self.xi + self.delta])
@@ -136,7 +148,7 @@ class _Loop:
                                  f"{dict(zip(STATES, np.round(x, 12)))}: {status_message(st)}")
         return self.coords(self.rig.full_state())
 
-    def scales(self, x):
+    def scales(self, x: F64Array) -> F64Array:
         """Each coordinate's unit for the steps and the steadiness test: the
         positions 1 m, the rates the speed, the torques and integrals 100
         N m, the angles since a count the angle a sample turns."""
@@ -145,7 +157,7 @@ class _Loop:
         return np.array([1.0, 1.0, 1.0, V, V, V, V / self.r0, V / self.R0, 100.0, 100.0,
                          turn[0], turn[1], 100.0, 100.0, 1.0])
 
-    def residual(self, x, A):
+    def residual(self, x: F64Array, A: F64Array) -> F64Array:
         """F(x) - x over `keep` for the loop's own target: under creepage
         control less the offset's part, the K column of A times the change
         of K the offset makes (exact to first order: K enters the sample
@@ -155,7 +167,7 @@ class _Loop:
             r -= A[:, self.keep.index(_K)] * self.shift_K
         return r
 
-    def jacobian(self, x, step):
+    def jacobian(self, x: F64Array, step: float) -> F64Array:
         """Central differences over the coordinates `keep`: A[keep, keep]."""
         sc = self.scales(x)
         A = np.empty((len(self.keep), len(self.keep)))
@@ -171,13 +183,13 @@ class _Loop:
         return A
 
 
-def _modes(A, T, names):
+def _modes(A: F64Array, T: float, names: Sequence[str]) -> Tuple[ClosedLoopMode, ...]:
     z, V = np.linalg.eig(A)
     try:
         W = np.linalg.inv(V)
     except np.linalg.LinAlgError:
         W = np.linalg.pinv(V)
-    out = []
+    out: List[ClosedLoopMode] = []
     for k in np.argsort(-np.abs(z)):
         if z[k].imag < 0:
             continue
@@ -191,7 +203,7 @@ def _modes(A, T, names):
     return tuple(out)
 
 
-def _rebased(rig, s, func):
+def _rebased(rig: Rig, s: FullState, func: str) -> FullState:
     """The full state with each angle moved back by whole turns into [0, 2
     pi) and its counter by as many turns' counts: the same state to the rig
     (the angles are cyclic but for the adhesion patch, which repeats each
@@ -208,10 +220,11 @@ def _rebased(rig, s, func):
     if st < 0:
         raise RollerRigError(f"{func}: the rig refuses its own state rebased by whole turns: "
                              f"{status_message(st)}")
-    return rig.full_state()
+    out: FullState = rig.full_state()
+    return out
 
 
-def _track_loop(loop, rig, state, func):
+def _track_loop(loop: _Loop, rig: Rig, state: Optional[FullState], func: str) -> None:
     """On track: the rails' held speed and the roller drive, which acts on
     nothing there, are not coordinates (roller_spin is constant, the roller
     PI's integral and torque move nothing: their z = 1 and exp(-T/tau) would
@@ -245,7 +258,8 @@ def _track_loop(loop, rig, state, func):
                              f"counts a sample: {status_message(st)}")
 
 
-def _creep_loop(loop, rig, xi, state, func):
+def _creep_loop(loop: _Loop, rig: Rig, xi: float, state: Optional[FullState],
+                func: str) -> None:
     """Under the creepage controller (eq. 13-14): K moves by sense alpha
     (target - creepage) while the creepage is short of the target in its
     sense (the proportional law), by a fixed -sense beta past it (the
@@ -272,7 +286,7 @@ def _creep_loop(loop, rig, xi, state, func):
     loop.shift_K = info.sense * info.alpha * CREEP_OFFSET
 
 
-def _settle_creep(loop, rig, V, func):
+def _settle_creep(loop: _Loop, rig: Rig, V: float, func: str) -> int:
     """Settled under creepage control: CREEP_SETTLE samples (onto the
     sawtooth), then Newton's method on the proportional law's fixed point
     (each step's matrix by the differences the linearisation takes)."""
@@ -295,14 +309,14 @@ def _settle_creep(loop, rig, V, func):
     return CREEP_SETTLE
 
 
-def closed_loop_linearize(plant, V, state, func, creepage_target=None):
+def closed_loop_linearize(plant: _Plant, V: float, state: object, func: str,
+                          creepage_target: Optional[float] = None) -> ClosedLoopLinearization:
     """The closed loop of the rig `plant.rig` (stability._Plant) at roller
     surface speed V, free rolling or under creepage control at
     `creepage_target`: settled there from its start (or at `state`, a full
     state dict of Rig.full_state, refused if not steady)."""
     rig = plant.rig
-    loop = _Loop(rig, func, V / plant.R0)
-    loop.R0, loop.r0 = plant.R0, plant.r0
+    loop = _Loop(rig, func, V / plant.R0, plant.R0, plant.r0)
     if state is not None and not isinstance(state, dict):
         raise RollerRigError(f"{func}: with closed_loop, state must be a full state dict "
                              f"(Rig.full_state()), got {type(state).__name__}")
