@@ -31,7 +31,7 @@ CHECK_TOL, or the call fails naming the disagreement.
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any, Dict, List, NamedTuple, Optional, Sequence, Tuple
+from typing import TYPE_CHECKING, Dict, List, NamedTuple, Optional, Protocol, Sequence, Tuple
 
 import numpy as np
 import numpy.typing as npt
@@ -41,10 +41,17 @@ from .._typing import F64Array
 
 if TYPE_CHECKING:
     from ..rig.build import Rig
-    from .stability import _Plant
 
 #: a full state (Rig.full_state): name -> value
 FullState = Dict[str, float]
+
+
+class _PlantLike(Protocol):
+    """What the loop takes of stability._Plant (not imported: it imports us)."""
+    rig: Rig
+    R0: float
+    r0: float
+    track: bool
 
 #: the closed loop's coordinates, in this order
 STATES = ("x", "y", "yaw", "vx", "vy", "yaw_rate", "spin", "roller_spin", "torque_roller",
@@ -309,7 +316,7 @@ def _settle_creep(loop: _Loop, rig: Rig, V: float, func: str) -> int:
     return CREEP_SETTLE
 
 
-def closed_loop_linearize(plant: _Plant, V: float, state: object, func: str,
+def closed_loop_linearize(plant: _PlantLike, V: float, state: object, func: str,
                           creepage_target: Optional[float] = None) -> ClosedLoopLinearization:
     """The closed loop of the rig `plant.rig` (stability._Plant) at roller
     surface speed V, free rolling or under creepage control at
