@@ -237,13 +237,13 @@ def _track_loop(loop: _Loop, rig: Rig, state: Optional[FullState], func: str) ->
     PI's integral and torque move nothing: their z = 1 and exp(-T/tau) would
     only hide the loop's own); and the track encoder must read a whole number
     of counts each sample.  Its counts are capped at 2^31 - 1 a turn of the
-    1000 m rail (rollerrig.rig.params), 2.9 um: at 5 m/s a sample is 6830.5
+    1000 m rail (rollerrig.rig.params), 2.9 um: at 5 m/s a sample is 6835.65
     counts, so the speed it reads alternates by one count (1.5e-4 of the
     speed) and the wheelset's reference with it -- the loop is forced at the
     sample rate, never steady (the 'drift' of -8e-5 m/s a block end showed
     was that forced cycle, x +-2.4e-7 m, vx +-1.5e-4 m/s, its mean 3e-8 m/s).
     So the rail's speed is rounded to a whole number n of counts a sample
-    (a relative change below 1 / (2 n): 7e-5 at 5 m/s) and its angle starts
+    (a relative change below 1 / (2 n): 5.1e-5 at 5 m/s) and its angle starts
     half a count past a count: the reading is then the same every sample
     and the loop has a fixed point.  A given `state` keeps its own rail
     speed (and must be steady on its own)."""
