@@ -167,6 +167,9 @@ def test_closed_loop_on_track():
     rate, ref = _kick_decay(lt, lambda: rr.build_rig(track=True)[0],
                             {"wheelset_pi_integral": 0.5})
     assert rate == pytest.approx(ref, rel=1e-2)
+    # its own steady state given back: accepted, the same matrix and speed
+    again = rr.linearize(track=True, closed_loop=True, state=lt.full_state)
+    assert np.array_equal(again.A, lt.A) and again.roller_speed == lt.roller_speed
 
 
 def _on_mode(loop, x, info):
@@ -206,6 +209,8 @@ def test_closed_loop_under_creepage_control():
     info = rig.info
     assert lc.full_state["creepctl_K"] == pytest.approx(1 + info.sense * 0.02, abs=1e-9)
     assert lc.spectral_radius < 1
+    again = rr.linearize(closed_loop=True, creepage_target=0.02, state=lc.full_state)
+    assert np.array_equal(again.A, lc.A)
     z, V = np.linalg.eig(lc.A)
     W = np.linalg.inv(V)
     kK = lc.states.index("creepctl_K")
