@@ -1,6 +1,7 @@
 """The rig's full state (checkpoints) and the closed loop's linearisation
 (issue 25, item 1's second half)."""
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -167,6 +168,14 @@ def test_closed_loop_on_track():
     rate, ref = _kick_decay(lt, lambda: rr.build_rig(track=True)[0],
                             {"wheelset_pi_integral": 0.5})
     assert rate == pytest.approx(ref, rel=1e-2)
+    # at 20 m/s the rail encoder's angle since a count is read exactly (z = 0):
+    # its mode at -inf /s, damping 1, without a warning
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        fast = rr.linearize(track=True, closed_loop=True, roller_speed=20.0)
+    gone = fast.modes[-1]
+    assert gone.z == 0 and gone.eigenvalue.real == -math.inf and gone.damping_ratio == 1.0
+    assert fast.spectral_radius < 1
     # its own steady state given back: accepted, the same matrix and speed
     again = rr.linearize(track=True, closed_loop=True, state=lt.full_state)
     assert np.array_equal(again.A, lt.A) and again.roller_speed == lt.roller_speed

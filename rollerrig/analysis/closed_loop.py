@@ -190,6 +190,12 @@ class _Loop:
         return A
 
 
+def _continuous(z: complex, T: float) -> complex:
+    """log(z) / T; a mode gone within one sample (z exactly 0: on track the
+    rail encoder's angle since a count, read exactly) at -inf."""
+    return complex(-math.inf, 0.0) if z == 0 else complex(np.log(complex(z))) / T
+
+
 def _modes(A: F64Array, T: float, names: Sequence[str]) -> Tuple[ClosedLoopMode, ...]:
     z, V = np.linalg.eig(A)
     try:
@@ -200,13 +206,13 @@ def _modes(A: F64Array, T: float, names: Sequence[str]) -> Tuple[ClosedLoopMode,
     for k in np.argsort(-np.abs(z)):
         if z[k].imag < 0:
             continue
-        lam = np.log(complex(z[k])) / T
+        lam = _continuous(complex(z[k]), T)
         part = np.abs(V[:, k] * W[k, :])
         order = np.argsort(-part)
         dom = tuple(names[i] for i in order if part[i] >= 0.1 * part[order[0]])
         mag = abs(lam)
-        out.append(ClosedLoopMode(complex(z[k]), lam, abs(lam.imag) / (2 * math.pi),
-                                  float(-lam.real / mag) if mag > 0 else math.nan, dom))
+        zeta = 1.0 if math.isinf(mag) else float(-lam.real / mag) if mag > 0 else math.nan
+        out.append(ClosedLoopMode(complex(z[k]), lam, abs(lam.imag) / (2 * math.pi), zeta, dom))
     return tuple(out)
 
 
@@ -405,7 +411,7 @@ def closed_loop_linearize(plant: _PlantLike, V: float, state: object, func: str,
     rig.set_full_state(loop.base)
     z = np.linalg.eigvals(A)
     z = z[np.argsort(-np.abs(z))]
-    lam = np.log(z.astype(complex)) / loop.T
+    lam = np.array([_continuous(complex(v), loop.T) for v in z])
     return ClosedLoopLinearization(A, names, z, lam, _modes(A, loop.T, names), x0,
                                    dict(loop.base), loop.T, float(V), plant.track,
                                    math.nan if creepage_target is None

@@ -350,7 +350,8 @@ def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
         control sample (``state`` then a full state dict,
         :meth:`rollerrig.Rig.full_state`), on the rollers or on track (the
         rail's speed then rounded to whole counts of its encoder a sample:
-        ``roller_speed`` of the result, within 1e-4).
+        ``roller_speed`` of the result, within half a count a sample, 7e-5
+        of 5 m/s, 4e-4 of 1 m/s).
     creepage_target : float, optional
         With ``closed_loop``: the loop under the rig's creepage controller
         at this target creepage (finite, ``abs < 0.5``), linearised on its
