@@ -1,6 +1,8 @@
 """Speed of the lateral stability analysis (issue 25): rollerrig.stability's
-eigenvalues at 100 speeds (goal: under 1 s), one rollerrig.linearize, and
-the same work against one second of the rig in time, side by side in one run.
+eigenvalues at 100 speeds (goal: under 1 s), one rollerrig.linearize (the
+plant; the sampled closed loop on the rollers, on track and under creepage
+control), the 30-speed bifurcation diagram (goal: under a minute), and the
+same work against one second of the rig in time, side by side in one run.
 
     python benchmarks/bench_stability.py
 
@@ -34,12 +36,18 @@ def main():
         "stability, 100 speeds, track (soft, with its critical speed)":
             lambda: rr.stability(speeds, SOFT, track=True),
         "linearize, one speed (with the rig's build)": lambda: rr.linearize(roller_speed=5.0),
+        "linearize, closed loop, rollers (settling included)":
+            lambda: rr.linearize(closed_loop=True),
+        "linearize, closed loop, track": lambda: rr.linearize(track=True, closed_loop=True),
+        "linearize, closed loop, creepage control 0.02":
+            lambda: rr.linearize(closed_loop=True, creepage_target=0.02),
         "hunting, 30 speeds, track (soft): the bifurcation diagram":
             lambda: rr.hunting(np.arange(130.0, 40.0, -3.0), SOFT, track=True),
         "simulate, 1 s of the paper's scenario (reference)":
             lambda: rr.simulate(duration=1.0, targets=[0.02], target_times=[0.0]),
     }
-    rows = {name: best(f, 1 if name.startswith("hunting") else 5) for name, f in cases.items()}
+    rows = {name: best(f, 1 if name.startswith("hunting") else 3 if "closed" in name else 5)
+            for name, f in cases.items()}
     ref = rows["simulate, 1 s of the paper's scenario (reference)"][0]
     print(f"{'case':<64} {'wall [s]':>9} {'cpu [s]':>9} {'/ simulate 1 s':>15}")
     for name, (w, c) in rows.items():

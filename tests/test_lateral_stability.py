@@ -143,17 +143,18 @@ def test_klingel_wavelength_of_a_nearly_free_wheelset(track):
     assert np.all(np.abs(L / want - 1) < 0.02), L
 
 
-def test_klingel_on_real_profiles_takes_the_rollers_conicity():
+REAL = {"wheelset": {"profile": "s1002"}, "roller": {"profile": "uic60"}}
+
+
+@pytest.fixture(scope="module")
+def real_klingel():
     """S1002 on UIC60 rollers: the contact table's rolling radii give
     lambda_e = dr/dy and lambda_r = -dR/dy at the centred wheelset (both
-    about 0.5 here: matched real profiles); the linearisation's wavelength
-    at 0.1 m/s (the eigenvalue, which test_lateral_linearize.py checks
-    against the time response) is Klingel's with gamma = lambda_e + (r0/R)
-    lambda_r within 2 % (measured 1.4 %: the contact points move 12 mm per mm
-    of shift on these profiles, which the formula's fixed s leaves out), and
-    misses the wheel's lambda_e alone by 20 %: the roller's term is there."""
-    P = {"wheelset": {"profile": "s1002"}, "roller": {"profile": "uic60"}}
-    rig, _, table = rr.build_rig(P)
+    about 0.5 here: matched real profiles), s half the contact points'
+    spacing; Klingel's wavelength with gamma = lambda_e + (r0/R) lambda_r
+    (0.803 m) and with lambda_e alone; the nearly free wheelset's
+    parameters (as _klingel_run's on the rollers)."""
+    rig, _, table = rr.build_rig(REAL)
     y = np.array(rig.y)
 
     def geo(shift):
@@ -164,11 +165,46 @@ def test_klingel_on_real_profiles_takes_the_rollers_conicity():
     lam_e, lam_r = (geo(h)[:2] - geo(-h)[:2]) / (2 * h) * np.array([1, -1])
     assert lam_r > 0.3 and lam_e > 0.3
     gamma = lam_e + r0 / R * lam_r
-    want = 2 * math.pi * math.sqrt(r0 * s / gamma)
     N, r, Rr = _static_load_and_radii()
-    lin = rr.linearize({**P, "suspension": {"kx_N_per_m": 1.2 * N / (Rr + r),
-                                            "ky_N_per_m": 10.0}}, roller_speed=0.1)
+    soft = {**REAL, "suspension": {"kx_N_per_m": 1.2 * N / (Rr + r), "ky_N_per_m": 10.0}}
+    return (soft, 2 * math.pi * math.sqrt(r0 * s / gamma),
+            2 * math.pi * math.sqrt(r0 * s / lam_e))
+
+
+def test_klingel_on_real_profiles_takes_the_rollers_conicity(real_klingel):
+    """The linearisation's wavelength at 0.1 m/s (the eigenvalue, which
+    test_lateral_linearize.py checks against the time response) is
+    Klingel's with gamma = lambda_e + (r0/R) lambda_r within 2 % (measured
+    1.4 %: the contact points move 12 mm per mm of shift on these profiles,
+    which the formula's fixed s leaves out), and misses the wheel's lambda_e
+    alone by 20 %: the roller's term is there."""
+    soft, want, wheel_only = real_klingel
+    lin = rr.linearize(soft, roller_speed=0.1)
     mode = next(m for m in lin.modes if m.frequency_hz > 0)
     L = 0.1 / mode.frequency_hz
     assert L == pytest.approx(want, rel=0.02)
-    assert abs(L / (2 * math.pi * math.sqrt(r0 * s / lam_e)) - 1) > 0.15
+    assert abs(L / wheel_only - 1) > 0.15
+
+
+def test_klingel_time_run_on_real_profiles(real_klingel):
+    """The same from the time simulation: rr.simulate (its integrator,
+    controllers, creepage target 0) of the nearly free wheelset on S1002 /
+    UIC60 rollers at 0.1 m/s, pushed by 20 N for 0.5 s, free for 30 s (3
+    wavelengths, y about 4 um: linear); the distance between upward zero
+    crossings of y is Klingel's within 2 % (measured 1.30 %, the
+    eigenvalue's 1.41 %; the formula's fixed s as above), and 20 % off the
+    wheel's lambda_e alone."""
+    soft, want, wheel_only = real_klingel
+    P = {**soft, "disturbance": {"lateral_force_times_s": [0.0, 0.5, 0.5],
+                                 "lateral_force_N": [20.0, 20.0, 0.0]}}
+    res = rr.simulate(duration=30.0, params=P, targets=[0.0], target_times=[0.0],
+                      roller_speed=0.1)
+    assert res.status == 0
+    y, t = res.y, res.time
+    assert np.max(np.abs(y)) < 1e-4
+    k = np.flatnonzero((y[:-1] < 0) & (y[1:] >= 0))
+    tc = t[k] - y[k] * (t[k + 1] - t[k]) / (y[k + 1] - y[k])
+    L = np.diff(tc) * 0.1
+    assert L.size >= 2
+    assert np.all(np.abs(L / want - 1) < 0.02), L
+    assert np.all(np.abs(L / wheel_only - 1) > 0.15), L

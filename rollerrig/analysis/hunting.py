@@ -16,7 +16,7 @@ a cycle is sustained where the measurement's last period is at least
 SUSTAINED of its first.
 """
 import math
-from typing import Any, NamedTuple, Optional
+from typing import Any, List, NamedTuple, Optional
 
 import numpy as np
 import numpy.typing as npt
@@ -47,7 +47,7 @@ class Hunting(NamedTuple):
     track: bool                    #: on tangent track
 
 
-def _positive(func, name, v):
+def _positive(func: str, name: str, v: object) -> float:
     if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)) \
             or not math.isfinite(float(v)) or float(v) <= 0:
         raise RollerRigError(f"{func}: {name} must be a finite number > 0, got {_short(v)}")
@@ -120,7 +120,10 @@ def hunting(speeds: npt.ArrayLike, params: Params = None, *, track: bool = False
     y0 = np.array(rig.y)
     y0[_Y] += shift
     rig.set_state(rig.t, y0)
-    amp, yaw_amp, freq, sus = [], [], [], []
+    amp: List[float] = []
+    yaw_amp: List[float] = []
+    freq: List[float] = []
+    held: List[bool] = []
     V_prev = float(s[0])
     for V in s:
         y = np.array(rig.y)
@@ -143,13 +146,13 @@ def hunting(speeds: npt.ArrayLike, params: Params = None, *, track: bool = False
         if tc.size >= 3:
             first = np.max(np.abs(yy[(tt >= tc[0]) & (tt < tc[1])]))
             last = np.max(np.abs(yy[(tt >= tc[-2]) & (tt < tc[-1])]))
-            sus.append(bool(last >= SUSTAINED * first))
+            held.append(bool(last >= SUSTAINED * first))
         else:
-            sus.append(False)
-    sus = np.array(sus)
+            held.append(False)
+    sus = np.array(held)
     crit = math.nan
     if sus[0]:
-        k = int(np.argmin(sus)) if not sus.all() else sus.size
-        crit = float(s[k - 1])
+        end = int(np.argmin(sus)) if not sus.all() else sus.size
+        crit = float(s[end - 1])
     return Hunting(s, np.array(amp), np.array(yaw_amp), np.array(freq), sus, crit,
                    bool(P["scenario"]["track"]))

@@ -26,20 +26,23 @@ not in this linearisation (its inputs are the drives' torque references);
 linearize(closed_loop=True) linearises the sampled closed loop with them
 (rollerrig/analysis/closed_loop.py).
 """
+from __future__ import annotations
+
 import math
-from typing import (TYPE_CHECKING, Any, Callable, Literal, NamedTuple, Optional, Tuple, Union,
-                    overload)
+from typing import (TYPE_CHECKING, Any, Callable, Dict, List, Literal, NamedTuple, Optional,
+                    Sequence, Tuple, Union, overload)
 
 import numpy as np
 import numpy.typing as npt
 
 from .._errors import RollerRigError, status_message
 from .._optional import require
-from .._typing import Params
+from .._typing import F64Array, Params
 from ..rig.build import build_rig
 from ..rig.params import _parameters, _short, _with_track
 
 if TYPE_CHECKING:
+    from ..rig.build import Rig
     from .closed_loop import ClosedLoopLinearization
 
 #: the plant's state, in the C order (csrc/rig/rr_rig.h, rr_rig_state_index)
@@ -98,13 +101,13 @@ class Linearization(NamedTuple):
     roller_speed: float            #: roller (or track) surface speed [m/s]
     track: bool                    #: on tangent track
 
-    def to_scipy(self):
+    def to_scipy(self) -> Any:
         """The model as ``scipy.signal.StateSpace(A, B, C, D)`` (needs scipy)."""
-        from scipy import signal
+        from scipy import signal  # type: ignore[import-untyped]  # (no stubs: scipy-stubs)
         return signal.StateSpace(self.A, self.B, self.C, self.D)
 
     @property
-    def least_damped(self):
+    def least_damped(self) -> Mode:
         """The mode of largest real part, not neutral (rollerrig.stability's)."""
         return self.modes[0]
 
@@ -122,10 +125,10 @@ class Stability(NamedTuple):
     critical_speed: float
     critical_mode: object          #: the Mode there (None without a critical speed)
     track: bool                    #: on tangent track
-    modes: tuple = ()              #: each speed's Linearization.modes
+    modes: Tuple[Tuple[Mode, ...], ...] = ()   #: each speed's Linearization.modes
 
 
-def _scales(V, r0, R0):
+def _scales(V: float, r0: float, R0: float) -> F64Array:
     """The step unit of each state (module docstring)."""
     V = max(abs(V), 1e-3)
     return np.array([1.0, 1.0, 1.0, 100.0, 100.0, V, V, V, V / r0, V / R0, 100.0, 100.0])
@@ -134,19 +137,24 @@ def _scales(V, r0, R0):
 class _Plant:
     """The C plant at one parameter set, for any roller speed."""
 
-    def __init__(self, func, params, roller_speed, track, method, creep):
-        P = _with_track(func, _parameters(func, params), track)
-        self.rig, self.P, table = build_rig(P, method=method, roller_speed=roller_speed, **creep)
+    def __init__(self, func: str, params: Params, roller_speed: Optional[float], track: bool,
+                 method: Optional[str], creep: Dict[str, Any]) -> None:
+        P: Dict[str, Dict[str, Any]] = _with_track(func, _parameters(func, params), track)
+        self.rig: Rig
+        self.P: Dict[str, Dict[str, Any]]
+        self.rig, self.P, _ = build_rig(P, method=method, roller_speed=roller_speed, **creep)
         self.track = bool(P["scenario"]["track"])
         self.R0 = float(P["roller"]["radius_m"])
         self.r0 = float(P["wheelset"]["wheel_radius_m"])
         self.taus = (float(P["roller_drive"]["lag_time_constant_s"]),
                      float(P["wheelset_drive"]["lag_time_constant_s"]))
-        self.y_init = np.array(self.rig.y)
+        self.y_init: F64Array = np.array(self.rig.y, dtype=np.float64)
         self.V0 = float(self.y_init[_RSPIN] * self.R0)
         self.func = func
 
-    def f(self, y):
+    def f(self, y: F64Array) -> F64Array:
+        dy: F64Array
+        st: int
         dy, st = self.rig.rhs(0.0, y)
         if st < 0:
             raise RollerRigError(f"{self.func}: the plant cannot be evaluated at state "
@@ -155,13 +163,13 @@ class _Plant:
         return dy
 
     # the unknowns of the steady state and the rates that must vanish
-    def unknowns(self):
+    def unknowns(self) -> List[int]:
         return [_X, _Y, _YAW, _SPIN] + ([] if self.track else [_TR])
 
-    def residual_rows(self):
+    def residual_rows(self) -> List[int]:
         return [_VX, _VY, _YR, _SPIN] + ([] if self.track else [_RSPIN])
 
-    def steady(self, V):
+    def steady(self, V: float) -> F64Array:
         """The steady state at roller surface speed V: the rates zero, the
         wheelset's torque zero, positions, spin and the roller's torque by
         Newton's method on central differences of the plant, each step held
@@ -190,7 +198,7 @@ class _Plant:
             y[u] += step * min(1.0, float(np.min(cap / np.maximum(np.abs(step), 1e-300))))
         return y
 
-    def _accel_scale(self, y):
+    def _accel_scale(self, y: F64Array) -> F64Array:
         """The largest rate change of each row at a 1e-3 disturbance of each
         state (relative units): what 'steady' is measured against."""
         s = 1e-3 * _scales(y[_RSPIN] * self.R0, self.r0, self.R0)
@@ -202,7 +210,7 @@ class _Plant:
             out = np.maximum(out, np.abs(self.f(z) - f0))
         return np.maximum(out, 1e-300)
 
-    def jacobian(self, y, step=FD_STEP):
+    def jacobian(self, y: F64Array, step: float = FD_STEP) -> F64Array:
         """Central differences of the C right-hand side at y."""
         h = step * _scales(y[_RSPIN] * self.R0, self.r0, self.R0)
         A = np.empty((12, 12))
@@ -214,7 +222,7 @@ class _Plant:
         return A
 
 
-def _structural(A):
+def _structural(A: F64Array) -> List[int]:
     """The states that take part in the dynamics: not a cyclic angle (a zero
     column: chi; theta_r without an adhesion patch) nor a held one (a zero
     row: the rails' speed on track).  Their eigenvalues are exactly zero."""
@@ -228,7 +236,7 @@ def _structural(A):
     return [int(i) for i in np.flatnonzero(keep)]
 
 
-def _modes(A, states):
+def _modes(A: F64Array, states: Sequence[str]) -> Tuple[Mode, ...]:
     keep = _structural(A)
     if not keep:
         return ()
@@ -238,7 +246,7 @@ def _modes(A, states):
         W = np.linalg.inv(V)
     except np.linalg.LinAlgError:
         W = np.linalg.pinv(V)
-    modes = []
+    modes: List[Mode] = []
     top = float(np.max(np.abs(lam)))
     for k in np.argsort(-lam.real):
         z = lam[k]
@@ -255,7 +263,7 @@ def _modes(A, states):
     return tuple(sorted(modes, key=lambda m: (m.neutral, -m.eigenvalue.real)))
 
 
-def _speed_arg(func, name, v):
+def _speed_arg(func: str, name: str, v: object) -> float:
     if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)):
         raise RollerRigError(f"{func}: {name} must be a real number [m/s], got {_short(v)}")
     v = float(v)
@@ -264,7 +272,8 @@ def _speed_arg(func, name, v):
     return v
 
 
-def _linearize_at(plant, V, state=None, func="linearize"):
+def _linearize_at(plant: _Plant, V: float, state: Optional[npt.ArrayLike] = None,
+                  func: str = "linearize") -> Linearization:
     if state is None:
         y = plant.steady(V)
     else:
@@ -299,20 +308,23 @@ def _linearize_at(plant, V, state=None, func="linearize"):
 def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
               track: bool = False, state: Optional[npt.ArrayLike] = None,
               method: Optional[str] = None, closed_loop: Literal[False] = False,
-              **creep: Any) -> Linearization: ...
+              creepage_target: None = None, **creep: Any) -> Linearization: ...
 @overload
 def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
               track: bool = False, state: Optional[npt.ArrayLike] = None,
               method: Optional[str] = None, closed_loop: Literal[True],
+              creepage_target: Optional[float] = None,
               **creep: Any) -> "ClosedLoopLinearization": ...
 @overload
 def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
               track: bool = False, state: Optional[npt.ArrayLike] = None,
               method: Optional[str] = None, closed_loop: bool = False,
+              creepage_target: Optional[float] = None,
               **creep: Any) -> Union[Linearization, "ClosedLoopLinearization"]: ...
 def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
               track: bool = False, state: Optional[npt.ArrayLike] = None,
               method: Optional[str] = None, closed_loop: bool = False,
+              creepage_target: Optional[float] = None,
               **creep: Any) -> Union[Linearization, "ClosedLoopLinearization"]:
     """The rig's plant linearised at its steady state.
 
@@ -336,8 +348,17 @@ def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
         True: the sampled closed loop with the drives, encoders and
         controllers, the wheelset held at free rolling, as a map over one
         control sample (``state`` then a full state dict,
-        :meth:`rollerrig.Rig.full_state`); not on track, nor under creepage
-        control (an error says why).
+        :meth:`rollerrig.Rig.full_state`), on the rollers or on track (the
+        rail's speed then rounded to whole counts of its encoder a sample:
+        ``roller_speed`` of the result, within half a count a sample, 7e-5
+        of 5 m/s, 4e-4 of 1 m/s).
+    creepage_target : float, optional
+        With ``closed_loop``: the loop under the rig's creepage controller
+        at this target creepage (finite, ``abs < 0.5``), linearised on its
+        proportional law about the creepage at the target (the recovery
+        law's fixed step past the target is not differentiable: between
+        its steps the loop follows the proportional law;
+        docs/lateral_dynamics.md).  Default: free rolling.
     **creep
         The method's options.
 
@@ -358,20 +379,29 @@ def linearize(params: Params = None, *, roller_speed: Optional[float] = None,
     if not isinstance(closed_loop, bool):
         raise RollerRigError(f"{func}: closed_loop must be True or False, got "
                              f"{_short(closed_loop)}")
+    if creepage_target is not None:
+        if not closed_loop:
+            raise RollerRigError(f"{func}: creepage_target needs closed_loop=True (the "
+                                 "plant alone has no creepage controller)")
+        if (isinstance(creepage_target, bool) or not isinstance(creepage_target, (int, float))
+                or not abs(creepage_target) < 0.5):
+            raise RollerRigError(f"{func}: creepage_target must be a finite number with "
+                                 f"abs < 0.5, got {_short(creepage_target)}")
+        creepage_target = float(creepage_target)
     if roller_speed is not None:
         roller_speed = _speed_arg(func, "roller_speed", roller_speed)
     plant = _Plant(func, params, roller_speed, track, method, creep)
     if closed_loop:
         from .closed_loop import closed_loop_linearize
-        return closed_loop_linearize(plant, plant.V0, state, func)
+        return closed_loop_linearize(plant, plant.V0, state, func, creepage_target)
     return _linearize_at(plant, plant.V0, state, func)
 
 
-def _max_real(modes):
+def _max_real(modes: Sequence[Mode]) -> float:
     return max((m.eigenvalue.real for m in modes if not m.neutral), default=math.nan)
 
 
-def _speeds_arg(func, speeds):
+def _speeds_arg(func: str, speeds: npt.ArrayLike) -> F64Array:
     try:
         s = np.asarray(speeds, dtype=float)
     except (TypeError, ValueError):
@@ -391,7 +421,9 @@ def _speeds_arg(func, speeds):
     return s
 
 
-def _sweep(s, modes_at):
+def _sweep(s: F64Array, modes_at: Callable[[float], Tuple[Mode, ...]]
+           ) -> Tuple[npt.NDArray[np.complex128], F64Array, F64Array, float, Optional[Mode],
+                      Tuple[Tuple[Mode, ...], ...]]:
     """Modes at each speed, the largest real part and least damping, and the
     first upward zero crossing of the largest real part refined by Brent's
     method (NaN, None where there is none)."""
@@ -414,7 +446,8 @@ def _sweep(s, modes_at):
     return eig, mr, md, float(crit), mode, tuple(per)
 
 
-def _system_modes(func, system, V):
+def _system_modes(func: str, system: Callable[[float], npt.ArrayLike],
+                  V: float) -> Tuple[Mode, ...]:
     A = np.asarray(system(V), dtype=float)
     if A.ndim != 2 or A.shape[0] != A.shape[1] or not np.all(np.isfinite(A)):
         raise RollerRigError(f"{func}: system({V:g}) must return a finite square matrix, got "
