@@ -440,3 +440,13 @@ def test_an_option_is_taken_by_one_rule_whatever_ran_before(value):
     with pytest.raises(rr.RollerRigError, match=r"nx must be an integer in \[1, 1020\]"):
         rr.creep_forces(1e-3, nx=value, ny=1, **kw)
     assert rr.creep_forces(1e-3, nx=np.int64(1), ny=1, **kw).status == 0
+
+
+def test_a_modulus_at_the_doubles_top_is_too_extreme_not_infinite():
+    # G = DBL_MAX is finite, but E* = G / (1 - nu) overflows: "inputs too
+    # extreme" (RR_ERR_RANGE), not "NaN or infinite" (fuzz_creep found the
+    # exact method blaming no member for it)
+    with pytest.raises(rr.RollerRigError, match=r"G = 1.7976931348623157e\+308: inputs too "
+                                                r"extreme"):
+        rr.creep_forces(1e-3, a=1e-4, b=1e-4, N=1.0, mu=0.3, G=np.finfo(float).max, nu=0.37,
+                        method="exact")

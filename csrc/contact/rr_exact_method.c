@@ -30,6 +30,10 @@ int rr_exact_problem_from(const rr_contact_problem *p, const rr_creep_opts *o,
         if (st == RR_OK)
             st = rr_exact_hertz_grid(p->a, p->b, (int)o->v[RR_EXACT_NX],
                                      (int)o->v[RR_EXACT_NY], &pb->grid);
+        /* G near the double's top: E* = G / (1 - nu) overflows (a finite
+         * input too extreme, not a NaN one) */
+        if (st == RR_OK && !isfinite(p->G / (1.0 - p->nu)))
+            st = RR_ERR_RANGE;
         if (st == RR_OK)
             st = rr_hertz_curvatures(p->a, p->b, p->N, p->G / (1.0 - p->nu), &pb->A, &pb->B);
     }

@@ -49,6 +49,7 @@
 #include "fuzz.h"
 
 #define MAX_ELEMENTS 32768
+#define FIELD_MAX_ELEMENTS (1u << 20)
 
 /* An interrupt hook that counts its polls; stops at the first where *ctx
  * holds 1 on entry. */
@@ -668,9 +669,15 @@ static void run_registry(fz_in *in, const rr_contact_problem *c, const rr_fricti
         memset(&fl, 0, sizeof fl);
         if (has && d && d->field_shape) {
             d->field_shape(o, NULL, &rows, &cols);
-            if (!(rows >= 1 && cols >= 1 && (size_t)rows * (size_t)cols <= (size_t)MAX_ELEMENTS))
+            if (!(rows >= 1 && cols >= 1 && rows <= RR_FASTSIM_MAX_GRID
+                  && cols <= RR_FASTSIM_MAX_GRID))
                 fz_fail("field_shape: %d x %d for valid options", rows, cols);
             n = (size_t)rows * (size_t)cols;
+            /* a grid set through rr_creep_opts_set (not capped as the
+             * decoded ones are, e.g. 34 x 1000): the field of a million
+             * elements at most, so that one input stays fast */
+            if (n > FIELD_MAX_ELEMENTS)
+                return;
         }
         fl.x = fz_guarded(n * sizeof(double));
         fl.y = fz_guarded(n * sizeof(double));
