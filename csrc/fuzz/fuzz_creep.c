@@ -11,8 +11,9 @@
  * either sign 1e-8 .. 1, spin 1e-6 .. 100 1/m, speed 0.01 .. 100 m/s), the
  * friction law, the options (every field, valid or not: unknown methods,
  * grids outside [1, 4096], k0 or kS out of range), and the field's make-up.
- * Grids are capped at 32768 elements so that one input stays well below
- * 0.1 s.
+ * Decoded grids are capped at 32768 elements so that one input stays well
+ * below 0.1 s; the registry's setter may still put any grid in range (the
+ * oracles take the method's range, not the cap).
  *
  * Oracles: documented errors for invalid arguments, NaN outputs on error,
  * finite outputs on success, |(fx, fy)| <= mu0 N for every method but the
@@ -50,6 +51,10 @@
 
 #define MAX_ELEMENTS 32768
 #define FIELD_MAX_ELEMENTS (1u << 20)
+/* the most elements a valid grid option allows (rr_creep_opts_set takes any
+ * grid in range, past the decoder's cap) */
+#define MAX_GRID_ELEMENTS ((double)RR_FASTSIM_MAX_GRID * RR_FASTSIM_MAX_GRID \
+                           + (double)RR_FASTRIP_MAX_GRID * RR_FASTRIP_MAX_GRID)
 
 /* An interrupt hook that counts its polls; stops at the first where *ctx
  * holds 1 on entry. */
@@ -567,7 +572,7 @@ static void run_registry(fz_in *in, const rr_contact_problem *c, const rr_fricti
                     "options", cost, slope, sat, wl, st < 0 ? "invalid" : "valid");
         /* a closed form: no traction field, no workspace (the exact solver
          * has neither field entry nor a bounded cost) */
-        if (st == RR_OK && !(cost <= (double)MAX_ELEMENTS * 2.0 + 1.0)
+        if (st == RR_OK && !(cost <= 2.0 * MAX_GRID_ELEMENTS + 1.0)
             && d->field_shape == NULL && wl == 0)
             fz_fail("rr_creep_cost %g for a closed form", cost);
         /* rr_creep_forces_work with exactly the workspace asked for */
