@@ -377,6 +377,24 @@ static int at(call *c, double N, double a, rr_gap_patch *p, int *warn)
     return RR_ERR_RANGE;
 }
 
+/* The first step of the load's secant from the solution at N: Newton's on
+ * r(N) = (Fz - fy(N) t2z) / nz - N with fy's slope from its utilisation
+ * f = |F| / (mu N) as in the Hertzian creep curve of the exact theory's
+ * simplified form (Vermeulen-Johnson's 1 - (1 - k)^3, k ~ N^(-1/3) at a
+ * given creepage): d ln fy / d ln N = 1 - k (1 - k)^2 / f, 2/3 at small
+ * creepage, 1 in full slip.  Only a start for the secant (which converges
+ * from any); before, the step was r itself (the slope 0), which left the
+ * second step a tenth of the first on flange contact. */
+static double first_step(const rr_wheel_exact_problem *pb, const rr_wheel_exact_result *res,
+                         const rr_gap_patch *p, double N, double r)
+{
+    const double f = fmin(hypot(res->sol.fx, res->sol.fy) / (pb->mu * N), 1.0);
+    const double k = 1.0 - cbrt(1.0 - f);
+    const double slope = f > 0.0 ? 1.0 - k * (1.0 - k) * (1.0 - k) / f : 2.0 / 3.0;
+    const double d = 1.0 + slope * res->sol.fy * p->t2[2] / (p->n[2] * N);
+    return isfinite(d) && d > 0.2 ? r / d : r;
+}
+
 /* What a caller can get wrong in the problem (the gap's options are
  * rr_gap_build's to judge, at the first build). */
 static int check_problem(const rr_wheel_exact_problem *pb)
@@ -506,7 +524,10 @@ int rr_wheel_exact(const rr_wheel_exact_problem *pb, double *work, size_t work_l
                 double step;
                 if (fabs(r) <= FZ_TOL * pb->Fz)
                     break;
-                step = isnan(lastN) || lastr == r ? r : -r * (N - lastN) / (r - lastr);
+                if (!isnan(lastN))
+                    step = lastr == r ? r : -r * (N - lastN) / (r - lastr);
+                else
+                    step = pb->cold_start ? r : first_step(pb, res, p, N, r);
                 lastN = N;
                 lastr = r;
                 N += step;
