@@ -26,6 +26,21 @@
  * from CONTACT's not at all (1.07e-3 mu N on S1002; 7.4e-5 before, 7.0e-5
  * after on MiniProf; areas and peak pressures the same maxima). */
 #define REBUILD_TOL 0.01
+/* The solver's tolerance on a warm start, times the caller's: from within a
+ * Newton step of the answer a warm solve stops just under the tolerance,
+ * where a cold one's last step overshoots it, so the final warm solution
+ * stood up to 1.3 tol from its patch's cold solve in the spin moment
+ * (tests/test_exact_warm.py, MiniProf at 3.5 mm on n = 40, after the
+ * coarse pass's samples changed its path); at half the tolerance 0.54 at
+ * most on those cases, for 2 % more instructions (callgrind, 12 cases). */
+#define WARM_TOL 0.5
+/* The coarse pass's profile samples' spacing [m] (RR_GAP_SAMPLE's 4 times):
+ * its patch cost as much as the loaded one's (the windows' samples,
+ * sections and lateral scan do not depend on the grid); at 4 times the
+ * spacing the 12 profiled cases took 8 % fewer instructions, and CONTACT's
+ * 72 cases' forces moved by 2.5e-6 mu N at most (their departures from
+ * CONTACT's the same maxima). */
+#define COARSE_SAMPLE (4.0 * RR_GAP_SAMPLE)
 
 void rr_wheel_exact_default(rr_wheel_exact_problem *pb)
 {
@@ -118,6 +133,13 @@ static int build(call *c, double N, int n, double a, double cov, int ref, int lo
     if (coarse) {
         o.dx *= 2.0;
         o.dy *= 2.0;
+        /* its approach alone is used, to within REBUILD_TOL: profile samples
+         * COARSE_SAMPLE apart (a tenth of its elements where given and
+         * smaller), not the loaded grid's, which made this patch as dear as
+         * the loaded one (the windows' samples, sections and scan) */
+        o.sample = o.dx > 0.0 && o.dy > 0.0 ? fmin(COARSE_SAMPLE, 0.1 * fmin(o.dx, o.dy))
+                                             : COARSE_SAMPLE;
+        o.sample = fmax(o.sample, RR_GAP_SAMPLE_MIN);
     }
     c->res->builds++;
     st = rr_gap_build(&site, &o, c->gap, c->gap_len, c->h, c->cells, p);
@@ -315,6 +337,8 @@ static int solve(call *c, const rr_gap_patch *p, double N, int normal_only, int 
         start.px = c->mapped + c->cells;
         start.py = c->mapped + 2 * c->cells;
     }
+    if (warm)
+        ep.tol = pb->tol * WARM_TOL;
     st = rr_exact_solve_from(&ep, warm ? &start : NULL, c->exact, c->exact_len, &res->sol, &f);
     c->have_last = 0;
     if (st < 0) {
