@@ -143,10 +143,13 @@ static int build(call *c, double N, int n, double a, double cov, int ref, int lo
     if (coarse) {
         o.dx *= 2.0;
         o.dy *= 2.0;
+    }
+    if (coarse && !pb->cold_start) {
         /* its approach alone is used, to within REBUILD_TOL: profile samples
          * COARSE_SAMPLE apart (a tenth of its elements where given and
          * smaller), not the loaded grid's, which made this patch as dear as
-         * the loaded one (the windows' samples, sections and scan) */
+         * the loaded one (the windows' samples, sections and scan); cold
+         * starts keep the samples before (the doubles before) */
         o.sample = o.dx > 0.0 && o.dy > 0.0 ? fmin(COARSE_SAMPLE, 0.1 * fmin(o.dx, o.dy))
                                              : COARSE_SAMPLE;
         o.sample = fmax(o.sample, RR_GAP_SAMPLE_MIN);
