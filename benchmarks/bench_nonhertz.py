@@ -28,12 +28,19 @@ Times are medians of R repeats (default 1) per case, then the median and
 the largest over the cases; the machine is shared, so they move by 10-30 %
 from run to run.
 
-    python benchmarks/bench_nonhertz.py --chain [--repeat R]
+    python benchmarks/bench_nonhertz.py --chain [--repeat R] [--every K] [--grid G]
 
 times the full chain alone, with whichever rollerrig the interpreter
 imports: run it with another checkout's environment for its "before" (the
 warm starts of issue 24: main's build, then this one's, one after the
-other), one row per grid with the solves per case.
+other), one row per grid with the solves per case.  The instruction
+count of the C core (the measure on a shared machine):
+
+    valgrind --tool=callgrind --toggle-collect=rr_wheel_exact \
+        python benchmarks/bench_nonhertz.py --chain --every 6 --grid 0.4
+
+(every sixth case: the 12 of RESULTS.md's profiles; 13 calls of
+rr_wheel_exact with the warm-up, the first case twice).
 """
 import argparse
 import csv
@@ -70,7 +77,7 @@ def timed(f, c, repeat):
     return float(np.median(t)), out
 
 
-def chain_only(geo, tables, cs, repeat):
+def chain_only(geo, tables, cs, repeat, grids="both"):
     """The full chain of the rollerrig imported, on both grids: ms per case
     (median, p95, max over the cases of each case's median of R repeats), and the
     solves per case (median, max)."""
@@ -78,6 +85,9 @@ def chain_only(geo, tables, cs, repeat):
     print("| full chain | ms per case, median | p95 | max | solves per case, median | max |")
     print("|---|---|---|---|---|---|")
     for name, grid in (("0.4 mm", True), ("n = 40", False)):
+        if grids != "both" and grid != (grids == "0.4"):
+            continue
+
         def chain(c):
             kw = dict(dx=c["dx"], dy=c["ds"]) if grid else {}
             return rr.rig_exact(geo[c["pair"]], c["y_ws"], Fz=c["FZ"], mu=c["mu"],
@@ -97,14 +107,18 @@ def main():
     ap.add_argument("--repeat", type=int, default=1)
     ap.add_argument("--chain", action="store_true",
                     help="the full chain alone, of the rollerrig imported")
+    ap.add_argument("--every", type=int, default=1,
+                    help="every k-th of the 72 cases (6: the 12 of the callgrind profile)")
+    ap.add_argument("--grid", choices=("both", "0.4", "n40"), default="both",
+                    help="--chain: the grids run")
     args = ap.parse_args()
     repeat = args.repeat
     geo = {"miniprof": rr.RigGeometry.measured_pair(),
            "s1002_uic60": rr.RigGeometry.standard(roller_radius=0.8001)}
     tables = {k: rr.contact_table(g, -0.0065, 0.0065, 261) for k, g in geo.items()}
-    cs = cases()
+    cs = cases()[::args.every]
     if args.chain:
-        chain_only(geo, tables, cs, repeat)
+        chain_only(geo, tables, cs, repeat, args.grid)
         return
 
     def mk(m):

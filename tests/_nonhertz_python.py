@@ -269,7 +269,7 @@ def _pose_and_point(func, geometry, y_ws, side):
 
 def undeformed_distance(geometry, y_ws, *, side="left", N=None, approach=None, n=40, E=2.1e11,
                         nu=0.28, cover=1.5, dx=None, dy=None, reference="weighted",
-                        combine=4e-3, z=None, roll=None):
+                        combine=4e-3, z=None, roll=None, sample=None):
     """The undeformed distance h(x, y) of one wheel on its roller, on a grid.
 
     geometry: RigGeometry; y_ws: the wheelset's lateral shift [m]; side:
@@ -334,6 +334,8 @@ def undeformed_distance(geometry, y_ws, *, side="left", N=None, approach=None, n
         raise RollerRigError(f"{func}: reference must be 'point', 'weighted' or "
                              f"(s_roller, delta), got {reference!r:.60}")
     step = max(min(_SAMPLE, 0.1 * min(v for v in (dx, dy, 1.0) if v is not None)), _SAMPLE_MIN)
+    if sample is not None:                 # rr_gap_opts.sample (rig_exact's coarse pass)
+        step = float(sample)
     sw_P = float(cpt.s_wheel[0])
 
     def sections(sr, dl, sw):
@@ -623,6 +625,12 @@ def rig_exact(geometry, y_ws, *, mu, N=None, Fz=None, side="left", spin=None,
         z = z_given if z_given is not None else (z0 - a / np.cos(delta0) if lower else None)
         o = {k: coarse * v if k in ("dx", "dy") and v is not None else v
              for k, v in opts.items()}
+        if coarse != 1.0:
+            # rr_wheel_exact.c's COARSE_SAMPLE: samples 4 x 2e-5 m apart, or a
+            # tenth of the coarse elements where given and smaller
+            given = [v for v in (o.get("dx"), o.get("dy")) if v]
+            o["sample"] = max(min(4 * _SAMPLE, 0.1 * min(given)) if len(given) == 2
+                              else 4 * _SAMPLE, _SAMPLE_MIN)
         try:
             return undeformed_distance(geometry, y_ws, side=side, N=load, n=nn, E=E, nu=nu,
                                        approach=a, cover=cov, reference=ref, z=z, **o)
@@ -695,7 +703,17 @@ def rig_exact(geometry, y_ws, *, mu, N=None, Fz=None, side="left", spin=None,
                 r = (Fz - s.fy * p.t2[2]) / p.n[2] - N     # the fixed point's residual
                 if abs(r) <= 1e-7 * Fz:
                     break
-                step = r if last is None or last[1] == r else -r * (N - last[0]) / (r - last[1])
+                if last is not None:
+                    step = r if last[1] == r else -r * (N - last[0]) / (r - last[1])
+                else:
+                    # rr_wheel_exact.c's first_step: Newton's with fy's slope
+                    # d ln fy / d ln N = 1 - k (1 - k)^2 / f, f = |F| / (mu N),
+                    # k = 1 - (1 - f)^(1/3) (the slope 0 before)
+                    f = min(np.hypot(s.fx, s.fy) / (mu * N), 1.0)
+                    kk = 1.0 - np.cbrt(1.0 - f)
+                    slope = 1.0 - kk * (1.0 - kk) ** 2 / f if f > 0.0 else 2.0 / 3.0
+                    d = 1.0 + slope * s.fy * p.t2[2] / (p.n[2] * N)
+                    step = r / d if np.isfinite(d) and d > 0.2 else r
                 last = (N, r)
                 N += step                                   # secant after the first step
                 s, k = solve(p, N)

@@ -107,8 +107,7 @@ static void tang_stencil_row(int mx, const double *st, const double *restrict xs
                              const double *restrict xc, const double *restrict xn,
                              const double *restrict ys, const double *restrict yc,
                              const double *restrict yn, const double *restrict a,
-                             const double *restrict ix, const double *restrict iy,
-                             double *restrict ox, double *restrict oy)
+                             double *io_x, double *io_y)
 {
     const double x0 = st[0], x1 = st[1], x2 = st[2], x3 = st[3];
     const double y0 = st[4], y1 = st[5], y2 = st[6], y3 = st[7], xy = st[8];
@@ -123,41 +122,44 @@ static void tang_stencil_row(int mx, const double *st, const double *restrict xs
                           + x3 * dx + xy * cy;
         const double sy = y0 * yc[i] + y1 * (yc[i - 1] + yc[i + 1]) + y2 * (ys[i] + yn[i])
                           + y3 * dy + xy * cx;
-        /* a s + (1 - a) in with a 1 or 0: exactly one of them */
-        ox[i] = a[i] * sx + (1.0 - a[i]) * ix[i];
-        oy[i] = a[i] * sy + (1.0 - a[i]) * iy[i];
+        /* a s + (1 - a) in with a 1 or 0: exactly one of them (in place:
+         * element i's input is read here alone, the neighbours' from the
+         * halo planes) */
+        io_x[i] = a[i] * sx + (1.0 - a[i]) * io_x[i];
+        io_y[i] = a[i] * sy + (1.0 - a[i]) * io_y[i];
     }
 }
 
-/* The tangential preconditioner's second part: out = c S in on the
+/* The tangential preconditioner's second part, in place: v = c S v on the
  * adhering elements, S the symmetric tangential operator's inverse
- * stencil, on the values of adhering elements alone; out = in elsewhere.
+ * stencil, on the values of adhering elements alone (copied to the halo
+ * planes first); v unchanged elsewhere (in place: no copy of the other
+ * elements, which was a third of the stencil's instructions).
  * After the inverse upwind difference (precondition) the steady operator
  * acts on adhering elements as the symmetric one, and S undoes most of
  * that (GMRES took 27 % fewer products on the 300 random cases at 27
  * across, 30 % at 45).  c: 0.8 G / rho, the fewest products of 0.5 to
  * 4 times G / rho. */
-static void tang_stencil(const layout *L, double c, const double *in, double *out)
+static void tang_stencil(const layout *L, double c, double *v)
 {
     const int mx = L->mx, my = L->my, n = L->n, w = mx + 2;
     const size_t hn = (size_t)w * (my + 2);
     const int i0 = L->ai0, nb = L->ai1 - L->ai0 + 1;
     double *hx = L->halo, *hy = L->halo + hn, st[9];
     int j;
-    /* out = in, then S on the adhering elements' bounding box, the halo
-     * rows around it filled (each masked to the adhering elements) */
-    memcpy(out, in, (size_t)(2 * n) * sizeof *out);
+    /* S on the adhering elements' bounding box, the halo rows around it
+     * filled (each masked to the adhering elements) */
     if (L->stn[17] == 0.0 || L->ai1 < 0)
         return;
     for (j = 0; j < 9; j++)
         st[j] = c * L->stn[8 + j];
-    to_halo(L, in, L->madh, L->aj0 - 1, L->aj1 + 1, hx);
-    to_halo(L, in + n, L->madh, L->aj0 - 1, L->aj1 + 1, hy);
+    to_halo(L, v, L->madh, L->aj0 - 1, L->aj1 + 1, hx);
+    to_halo(L, v + n, L->madh, L->aj0 - 1, L->aj1 + 1, hy);
     for (j = L->aj0; j <= L->aj1; j++) {
         const int k = j * mx + i0;
         const double *xs = hx + (size_t)j * w + 1 + i0, *ys = hy + (size_t)j * w + 1 + i0;
         tang_stencil_row(nb, st, xs, xs + w, xs + 2 * w, ys, ys + w, ys + 2 * w, L->madh + k,
-                         in + k, in + n + k, out + k, out + n + k);
+                         v + k, v + n + k);
     }
 }
 
@@ -340,8 +342,8 @@ static int gmres(solver *S, double rho, const double *F, double eta, double *dlt
         gv[0] = beta;
         for (j = 0; j < m && S->products < S->pb->maxit; j++) {
             double *w = V + (size_t)(j + 1) * n2, *mvj = MV + (size_t)j * n2, h, hn;
-            precondition(L, V + (size_t)j * n2, q);
-            tang_stencil(L, cst, q, t);
+            precondition(L, V + (size_t)j * n2, t);
+            tang_stencil(L, cst, t);
             /* the products kept times G, divided once at the end */
             if ((st = tang_product_g(S, t, mvj)) < 0)
                 return st;
@@ -393,9 +395,9 @@ static int gmres(solver *S, double rho, const double *F, double eta, double *dlt
             }
         }
         precondition(L, q, t);
-        tang_stencil(L, cst, t, q);
+        tang_stencil(L, cst, t);
         for (k = 0; k < n2; k++)
-            dlt[k] += q[k];
+            dlt[k] += t[k];
         beta = fabs(gv[jm]);
         if (jm == 0 || beta <= eta * bnorm)
             break;

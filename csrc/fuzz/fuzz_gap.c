@@ -71,7 +71,10 @@ static void decode_gap_opts(fz_in *in, rr_gap_opts *o, double approach_hint, int
         o->keep_hi = o->keep_lo + (fz_choice(in, 16) == 0 ? fz_lin(in, -0.01, 0.0)
                                                           : fz_log(in, 1e-5, 0.5));
     }
-    fz_note("keep %d [%.17g, %.17g] ", o->keep, o->keep_lo, o->keep_hi);
+    if (fz_choice(in, 8) == 0)           /* the samples' spacing: in range, or out of it */
+        o->sample = fz_choice(in, 4) == 0 ? fz_lin(in, -1e-3, 3e-3) : fz_log(in, 5e-6, 1e-4);
+    fz_note("keep %d [%.17g, %.17g] sample %.17g ", o->keep, o->keep_lo, o->keep_hi,
+            o->sample);
     fz_note("opts ref %d (%.17g, %.17g) approach %.17g cover %.17g n %d dx %.17g dy %.17g "
             "combine %.17g; ", o->reference, o->s_roller, o->delta, o->approach, o->cover, o->n,
             o->dx, o->dy, o->combine);
@@ -86,7 +89,9 @@ static int opts_invalid(const rr_gap_opts *o, const rr_wheel_roller *p)
            || !isfinite(o->cover) || o->n < 4 || o->n > RR_GAP_MAX_N || !(o->dx >= 0.0)
            || !(o->dy >= 0.0) || !isfinite(o->dx) || !isfinite(o->dy)
            || !(o->combine >= 0.0) || !isfinite(o->combine) || (p->side != 1 && p->side != -1)
-           || (o->keep != 0 && o->keep != 1) || (o->keep && !(o->keep_lo < o->keep_hi));
+           || (o->keep != 0 && o->keep != 1) || (o->keep && !(o->keep_lo < o->keep_hi))
+           || !(o->sample == 0.0
+                || (o->sample >= RR_GAP_SAMPLE_MIN && o->sample <= RR_GAP_SAMPLE_MAX));
 }
 
 static void check_patch(const char *fn, int st, const rr_gap_patch *P, const double *h,

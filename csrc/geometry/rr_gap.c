@@ -38,16 +38,19 @@ void rr_gap_opts_default(rr_gap_opts *o)
     o->combine = 4e-3;
     o->keep = 0;
     o->keep_lo = o->keep_hi = 0.0;
+    o->sample = 0.0;
 }
 
-/* The samples' spacing (patch.py's step): RR_GAP_SAMPLE, or a tenth of the
- * smallest element given, at least RR_GAP_SAMPLE_MIN; 0 for sizes that are
- * not finite and >= 0. */
+/* The samples' spacing (patch.py's step): the one given, else RR_GAP_SAMPLE,
+ * or a tenth of the smallest element given, at least RR_GAP_SAMPLE_MIN; 0
+ * for sizes that are not finite and >= 0 or a spacing out of its range. */
 static double sample_step(const rr_gap_opts *o)
 {
     double m = 1.0;
     if (!isfinite(o->dx) || !isfinite(o->dy) || !(o->dx >= 0.0) || !(o->dy >= 0.0))
         return 0.0;
+    if (o->sample != 0.0)
+        return o->sample >= RR_GAP_SAMPLE_MIN && o->sample <= RR_GAP_SAMPLE_MAX ? o->sample : 0.0;
     if (o->dx > 0.0 && o->dx < m)
         m = o->dx;
     if (o->dy > 0.0 && o->dy < m)
@@ -311,7 +314,7 @@ static int check_inputs(const rr_gap_site *site, const rr_gap_opts *o)
     const rr_wheel_roller *p = site->pair;
     const double v[] = {site->y_ws, site->z, site->roll, site->s_roller, site->s_wheel,
                         site->delta, p->r0, p->R0, p->wheel_y, p->roller_y, o->approach,
-                        o->cover, o->dx, o->dy, o->combine};
+                        o->cover, o->dx, o->dy, o->combine, o->sample};
     int st;
     if ((st = rr_spline_check(&p->wheel)) != RR_OK || (st = rr_spline_check(&p->roller)) != RR_OK)
         return st;
@@ -326,7 +329,8 @@ static int check_inputs(const rr_gap_site *site, const rr_gap_opts *o)
         || !(fabs(site->delta) < 0.5 * RR_PI)
         || !(o->approach > 0.0) || !(o->cover >= 1.0) || o->n < 4 || o->n > RR_GAP_MAX_N
         || !(o->dx >= 0.0) || !(o->dy >= 0.0) || !(o->combine >= 0.0)
-        || (o->keep != 0 && o->keep != 1))
+        || (o->keep != 0 && o->keep != 1)
+        || !(o->sample == 0.0 || (o->sample >= RR_GAP_SAMPLE_MIN && o->sample <= RR_GAP_SAMPLE_MAX)))
         return RR_ERR_PARAM;
     if (o->keep && !(isfinite(o->keep_lo) && isfinite(o->keep_hi)))
         return RR_ERR_NONFINITE;

@@ -50,6 +50,7 @@
 
 #define RR_GAP_SAMPLE 2e-5       /* profile samples' spacing [m], at most */
 #define RR_GAP_SAMPLE_MIN 1e-7   /* and at least */
+#define RR_GAP_SAMPLE_MAX 1e-3   /* rr_gap_opts.sample at most */
 #define RR_GAP_WINDOW 0.04       /* the samples' half-window around the reference [m] */
 #define RR_GAP_MAX_RUNS 64       /* separate intervals of the region, at most */
 #define RR_GAP_MAX_N 1000        /* elements across the region's longer side, at most */
@@ -77,10 +78,13 @@ typedef struct {
                             the reference's weights from the deepest point there; combine
                             unused): one of several separate patches, rr_nonhertz_table.h */
     double keep_lo, keep_hi;   /* keep = 1: rig Y [m], keep_lo < keep_hi */
+    double sample;       /* the profiles' sample spacing [m], RR_GAP_SAMPLE_MIN..RR_GAP_SAMPLE_MAX;
+                            0: RR_GAP_SAMPLE, or a tenth of the smallest element given
+                            (rr_wheel_exact's coarse pass: coarser, for its approach alone) */
 } rr_gap_opts;
 
 /* Weighted reference, cover 1.5, n 40, dx = dy = 0 (from n), combine 4 mm,
- * keep 0; approach 0 (the caller's to set). */
+ * keep 0, sample 0 (automatic); approach 0 (the caller's to set). */
 void rr_gap_opts_default(rr_gap_opts *o);
 
 /* Where the gap is: one side's wheel and roller at a pose of the wheelset,

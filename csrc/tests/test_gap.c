@@ -108,6 +108,21 @@ static void test_closed_form(void)
         worst = fmax(worst, fabs(hbuf[i] - (ref[i] - hmin)));
     CHECK_CLOSE(worst, 0.0, 5e-12, 0.0, "closed form: h");
     CHECK(!border, "closed form: the region leaves the border free");
+    /* samples 8e-5 m apart (rr_wheel_exact's coarse pass), which the rows
+     * 0.2 mm apart fall between: the same grid, h within the chord's
+     * error over the crown of radius RHO, s^2 / (8 RHO) = 1.6e-8 m, with
+     * its workspace the smaller */
+    o.sample = 8e-5;
+    CHECK(rr_gap_workspace_len(&o) < wl, "sample 8e-5: a smaller workspace");
+    CHECK_STATUS(rr_gap_build(&site, &o, work, wl, hbuf2, HCAP, &Q), RR_OK, "sample 8e-5");
+    CHECK(Q.grid.mx == P.grid.mx && Q.grid.my == P.grid.my && Q.step == 8e-5,
+          "sample 8e-5: the same grid, the step given");
+    worst = 0.0;
+    for (i = 0; i < P.grid.mx * P.grid.my && Q.grid.my == P.grid.my && Q.grid.mx == P.grid.mx;
+         i++)
+        worst = fmax(worst, fabs(hbuf2[i] - hbuf[i]));
+    CHECK_CLOSE(worst, 0.0, 1.1 * 8e-5 * 8e-5 / (8.0 * RHO), 0.0, "sample 8e-5: h");
+    o.sample = 0.0;
     /* the weighted reference of a symmetric region is the same point */
     o.reference = RR_GAP_WEIGHTED;
     CHECK_STATUS(rr_gap_build(&site, &o, work, wl, hbuf2, HCAP, &Q), RR_OK, "weighted");
@@ -326,6 +341,19 @@ static void test_bad_inputs(void)
     o.combine = -1e-3;
     CHECK_STATUS(rr_gap_build(&site, &o, work, wl, hbuf, HCAP, &P), RR_ERR_PARAM, "combine");
     o.combine = 4e-3;
+    o.sample = -1e-5;
+    CHECK_STATUS(rr_gap_build(&site, &o, work, wl, hbuf, HCAP, &P), RR_ERR_PARAM, "sample < 0");
+    CHECK(rr_gap_workspace_len(&o) == 0, "sample < 0: no workspace length");
+    o.sample = 0.5 * RR_GAP_SAMPLE_MIN;
+    CHECK_STATUS(rr_gap_build(&site, &o, work, wl, hbuf, HCAP, &P), RR_ERR_PARAM,
+                 "sample below its least");
+    o.sample = 2.0 * RR_GAP_SAMPLE_MAX;
+    CHECK_STATUS(rr_gap_build(&site, &o, work, wl, hbuf, HCAP, &P), RR_ERR_PARAM,
+                 "sample beyond its most");
+    o.sample = NAN;
+    CHECK_STATUS(rr_gap_build(&site, &o, work, wl, hbuf, HCAP, &P), RR_ERR_NONFINITE,
+                 "sample NaN");
+    o.sample = 0.0;
     o.keep = 2;
     CHECK_STATUS(rr_gap_build(&site, &o, work, wl, hbuf, HCAP, &P), RR_ERR_PARAM, "keep 2");
     o.keep = 1;
