@@ -28,13 +28,17 @@ static const int corr_node[RR_NH_CORR] = {RR_NH_CORR_NODE0, RR_NH_CORR_NODE1};
 #define DX_MIN 1e-5
 #define AB_LO (0.1 * (1.0 + 1e-9))
 #define AB_HI (10.0 * (1.0 - 1e-9))
-/* Elements across a grid's shorter side, at least, as a fraction of the n
- * across its longer.  rr_gap's square elements leave a flange patch (a/b
- * over 10) 3 to 7 elements wide at n 30 to 40: with the flange's spin its
- * exact fx then wanders by 0.05 mu N between n and 2n, and Richardson's
- * 2 F(2n) - F(n) doubles that (S1002 +6.5 mm: the correction at zero
- * creepage 0.065 mu N where the continuum's is 0.001).  Half the long
- * side's count keeps fx within 0.002 mu N there (tests/test_nonhertz_fast.py). */
+/* A grid with fewer square elements than SHORT_FEW across its shorter side
+ * gets SHORT_SIDE n there instead (n across its longer).  rr_gap's square
+ * elements leave a flange patch (a/b over 10) 3 to 7 elements wide at n 30
+ * to 40: with the flange's spin its exact fx then wanders by 0.05 mu N
+ * between n and 2n, and Richardson's 2 F(2n) - F(n) doubles that (S1002
+ * +6.5 mm: the correction at zero creepage 0.065 mu N where the
+ * continuum's is 0.001).  Half the long side's count keeps fx within 0.002
+ * mu N there (tests/test_nonhertz_fast.py).  Grids already SHORT_FEW wide
+ * keep their square elements (refining them moved S1002's flange root,
+ * +5.5 mm, by 0.002 to 0.004 mu N away from the reference). */
+#define SHORT_FEW 8.0
 #define SHORT_SIDE 0.5
 
 void rr_nonhertz_row_default(rr_nh_row_problem *pb)
@@ -61,14 +65,18 @@ static void fine_opts(rr_gap_opts *o, double dx)
     o->dx = o->dy = dx;
 }
 
-/* Element sizes for n across patch p's region: n across its longer side,
- * at least SHORT_SIDE n across its shorter (rr_gap's region: half_length
+/* Element sizes for n across patch p's region: square, n across its
+ * longer side, or SHORT_SIDE n across its shorter where square ones leave
+ * fewer than SHORT_FEW there (rr_gap's region: half_length
  * along x, lo to hi along y, which the approach and cover fix, not the
  * elements); none under DX_MIN, what the workspace's samples hold. */
 static void element_sizes(const rr_gap_patch *p, int n, double *dx, double *dy)
 {
     const double lx = 2.0 * p->half_length, ly = p->hi - p->lo, m = ceil(SHORT_SIDE * n);
     const double d = fmax(lx, ly) / n;
+    *dx = *dy = d;
+    if (fmin(lx, ly) >= SHORT_FEW * d)
+        return;
     *dx = fmax(fmin(d, lx / m), DX_MIN);
     *dy = fmax(fmin(d, ly / m), DX_MIN);
 }
