@@ -69,7 +69,9 @@ static void fine_opts(rr_gap_opts *o, double dx)
  * longer side, or SHORT_SIDE n across its shorter where square ones leave
  * fewer than SHORT_FEW there (rr_gap's region: half_length
  * along x, lo to hi along y, which the approach and cover fix, not the
- * elements); none under DX_MIN, what the workspace's samples hold. */
+ * elements); the narrower ones none under 2 DX_MIN, so that the finer
+ * grids' halves stay within what the workspace's samples hold (Manchester's
+ * right wheel at -10.4 mm, its smallest node, 96 N, asked for less). */
 static void element_sizes(const rr_gap_patch *p, int n, double *dx, double *dy)
 {
     const double lx = 2.0 * p->half_length, ly = p->hi - p->lo, m = ceil(SHORT_SIDE * n);
@@ -77,8 +79,8 @@ static void element_sizes(const rr_gap_patch *p, int n, double *dx, double *dy)
     *dx = *dy = d;
     if (fmin(lx, ly) >= SHORT_FEW * d)
         return;
-    *dx = fmax(fmin(d, lx / m), DX_MIN);
-    *dy = fmax(fmin(d, ly / m), DX_MIN);
+    *dx = fmax(fmin(d, lx / m), fmin(d, 2.0 * DX_MIN));
+    *dy = fmax(fmin(d, ly / m), fmin(d, 2.0 * DX_MIN));
 }
 
 /* The problem of node solves: rr_wheel_exact at vertical load Fz, no creepage. */
