@@ -468,3 +468,15 @@ def test_a_row_that_cannot_be_built_is_named():
     g = cone_on_crown()[0]
     with pytest.raises(rr.RollerRigError, match=r"the left side at y = 0.0 m, node \d"):
         rr.nonhertz_table(g, None, None, y=[0.0, 1e-4], Fz=1e12, sides=("left",))
+
+
+def test_a_narrow_flange_patch_at_a_small_load_builds():
+    # Manchester A-2.2's right wheel at -10.4 mm (rail as a roller of 10 km,
+    # 10 kN): its first node (96 N) is a flange patch so narrow that n / 2
+    # elements across it would be finer than the workspace's profile samples
+    # hold (their halves, Richardson's grid, under DX_MIN): the narrow
+    # elements stop at 2 DX_MIN and the row builds, one patch
+    g = rr.RigGeometry.standard(roller_radius=1e4)
+    t = rr.nonhertz_table(g, None, None, y=[-10.4e-3, -10.2e-3], Fz=1e4, mu_ref=0.3,
+                          E=2 * 8.2e10 * 1.28, nu=0.28, sides=("right",))
+    assert np.all(t.right.rows[:, 1] == 1) and np.all(np.isfinite(t.right.rows))
