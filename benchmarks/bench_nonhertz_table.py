@@ -3,9 +3,12 @@
     python benchmarks/bench_nonhertz_table.py build [--pair miniprof|s1002] [--dy 2e-4]
         the full sweep's table, -8 to +8 mm, both sides: rows, wall time
         (2 threads), saved to benchmarks/out/nonhertz/table_<pair>.npz
-    python benchmarks/bench_nonhertz_table.py sweep [--pair miniprof]
-        accuracy on the saved table against rig_exact (n = 80), both sides,
-        -7.9 to +7.9 mm every 0.5 mm (half-way between rows), four creepages
+    python benchmarks/bench_nonhertz_table.py sweep [--pair miniprof] [--table T.npz]
+            [--baseline B.npz] [--y-lo -7.9e-3] [--y-hi 7.9e-3]
+        accuracy on the saved table (or T) against rig_exact (n = 80), both sides,
+        -7.9 to +7.9 mm every 0.5 mm (half-way between rows), four creepages;
+        with --baseline a second table judged on the same references (before /
+        after a change, side by side in one run)
     python benchmarks/bench_nonhertz_table.py speed [--pair miniprof] [--states 2000]
         per wheel in C: rr_nonhertz_wheel against Hertz + FASTSIM 20 x 20 on the
         same random states (bench_nonhertz_speed.c), on the saved table
@@ -92,14 +95,30 @@ def speed(pair, n_states, repeats=31, seed=1):
     print(json.dumps(r))
 
 
-def sweep(pair, y_lo=-7.9e-3, y_hi=7.9e-3, step=5e-4, n_ref=80):
+def _nonhertz_error(ct, tab, kw, side, ref, y):
+    """|dF| / (mu N) of the nonhertz wheel on table tab, NaN where it fails."""
+    try:
+        nh = getattr(rr.rig_contact(ct, patch="nonhertz", nonhertz=tab, errors="ignore", **kw),
+                     side)
+        if nh.status < 0:
+            raise rr.RollerRigError("the vertical balance has no solution")
+    except rr.RollerRigError as e:
+        print(f"# nonhertz failed at y = {y:.4f} {side} (the reference did not): {e}",
+              file=sys.stderr)
+        return np.nan
+    return np.linalg.norm(nh.force - ref.force) / (kw["mu"] * ref.N)
+
+
+def sweep(pair, y_lo=-7.9e-3, y_hi=7.9e-3, step=5e-4, n_ref=80, table=None, baseline=None):
     """Both sides from y_lo to y_hi every step (offset 0.1 mm from the 0.2 mm
     rows: half-way between two), creepage targets cx 0.0005, 0.002, 0.006 at
     the rigid contact point and one with lateral slip (vy 0.01 m/s), Fz
     61.163 kN, mu 0.52: |dF| / (mu N) of nonhertz and of Hertz (FASTSIM 20 x
-    20) against rig_exact (n = n_ref)."""
+    20) against rig_exact (n = n_ref); table: the table's file (default the
+    build's), baseline: a second table's, judged on the same references."""
     g = geometry(pair)
-    tab = rr.NonHertzTable.load(OUT / f"table_{pair}.npz")
+    tab = rr.NonHertzTable.load(table or OUT / f"table_{pair}.npz")
+    base = rr.NonHertzTable.load(baseline) if baseline else None
     ct = rr.contact_table(g, -0.0085, 0.0085, 341)
     rs, Fz, mu = 5.587302, 61163.0, 0.52
     out = []
@@ -117,31 +136,27 @@ def sweep(pair, y_lo=-7.9e-3, y_hi=7.9e-3, step=5e-4, n_ref=80):
                 except rr.RollerRigError as e:
                     print(f"# reference failed at y = {y:.4f} {side}: {e}", file=sys.stderr)
                     continue
-                try:
-                    nh = getattr(rr.rig_contact(ct, patch="nonhertz", nonhertz=tab,
-                                                errors="ignore", **kw), side)
-                    if nh.status < 0:
-                        raise rr.RollerRigError("the vertical balance has no solution")
-                except rr.RollerRigError as e:
-                    print(f"# nonhertz failed at y = {y:.4f} {side} (the reference did not): "
-                          f"{e}", file=sys.stderr)
-                    out.append((y, side == "left", np.nan, np.nan))
-                    continue
+                e = _nonhertz_error(ct, tab, kw, side, ref, y)
+                eb = _nonhertz_error(ct, base, kw, side, ref, y) if base else np.nan
                 hz = getattr(rr.rig_contact(ct, **kw), side)
-                muN = mu * ref.N
-                out.append((y, side == "left", np.linalg.norm(nh.force - ref.force) / muN,
-                            np.linalg.norm(hz.force - ref.force) / muN))
+                out.append((y, side == "left", e,
+                            np.linalg.norm(hz.force - ref.force) / (mu * ref.N), eb, target,
+                            vy))
     a = np.array(out)
+    OUT.mkdir(parents=True, exist_ok=True)
     np.save(OUT / f"sweep_{pair}.npy", a)
-    failed = int(np.isnan(a[:, 2]).sum())
-    a = a[~np.isnan(a[:, 2])]
-    res = dict(pair=pair, cases=len(a), nonhertz_failed_where_reference_did_not=failed)
-    for name, col in (("nonhertz", 2), ("hertz_fastsim", 3)):
-        res[name] = (round(float(np.percentile(a[:, col], 95)), 4),
-                     round(float(a[:, col].max()), 4))
-    worst = a[np.argmax(a[:, 2])]
-    res["worst_nonhertz_at_y_mm"] = round(float(worst[0]) * 1e3, 2)
-    res["worst_side"] = "left" if worst[1] else "right"
+    res = dict(pair=pair, cases=int(np.isfinite(a[:, 2]).sum()),
+               nonhertz_failed_where_reference_did_not=int(np.isnan(a[:, 2]).sum()))
+    cols = [("nonhertz", 2), ("hertz_fastsim", 3)] + ([("baseline", 4)] if base else [])
+    for name, col in cols:
+        v = a[np.isfinite(a[:, col]), col]
+        res[name] = (round(float(np.percentile(v, 95)), 4), round(float(v.max()), 4))
+        k = np.nanargmax(a[:, col])
+        res[f"worst_{name}"] = dict(y_mm=round(float(a[k, 0]) * 1e3, 2),
+                                    side="left" if a[k, 1] else "right",
+                                    cx_target=float(a[k, 5]), vy=float(a[k, 6]))
+    if base:
+        res["baseline_failed"] = int(np.isnan(a[:, 4]).sum())
     print(json.dumps(res))
 
 
@@ -151,11 +166,15 @@ def main():
     ap.add_argument("--pair", default="miniprof", choices=("miniprof", "s1002"))
     ap.add_argument("--dy", type=float, default=2e-4)
     ap.add_argument("--states", type=int, default=2000)
+    ap.add_argument("--table", help="sweep: the table's .npz (default the build's)")
+    ap.add_argument("--baseline", help="sweep: a second table's .npz, on the same references")
+    ap.add_argument("--y-lo", type=float, default=-7.9e-3)
+    ap.add_argument("--y-hi", type=float, default=7.9e-3)
     a = ap.parse_args()
     if a.what == "build":
         build(a.pair, a.dy)
     elif a.what == "sweep":
-        sweep(a.pair)
+        sweep(a.pair, a.y_lo, a.y_hi, table=a.table, baseline=a.baseline)
     else:
         speed(a.pair, a.states)
 

@@ -28,6 +28,18 @@ static const int corr_node[RR_NH_CORR] = {RR_NH_CORR_NODE0, RR_NH_CORR_NODE1};
 #define DX_MIN 1e-5
 #define AB_LO (0.1 * (1.0 + 1e-9))
 #define AB_HI (10.0 * (1.0 - 1e-9))
+/* A grid with fewer square elements than SHORT_FEW across its shorter side
+ * gets SHORT_SIDE n there instead (n across its longer).  rr_gap's square
+ * elements leave a flange patch (a/b over 10) 3 to 7 elements wide at n 30
+ * to 40: with the flange's spin its exact fx then wanders by 0.05 mu N
+ * between n and 2n, and Richardson's 2 F(2n) - F(n) doubles that (S1002
+ * +6.5 mm: the correction at zero creepage 0.065 mu N where the
+ * continuum's is 0.001).  Half the long side's count keeps fx within 0.002
+ * mu N there (tests/test_nonhertz_fast.py).  Grids already SHORT_FEW wide
+ * keep their square elements (refining them moved S1002's flange root,
+ * +5.5 mm, by 0.002 to 0.004 mu N away from the reference). */
+#define SHORT_FEW 8.0
+#define SHORT_SIDE 0.5
 
 void rr_nonhertz_row_default(rr_nh_row_problem *pb)
 {
@@ -51,6 +63,24 @@ static void fine_opts(rr_gap_opts *o, double dx)
 {
     rr_gap_opts_default(o);
     o->dx = o->dy = dx;
+}
+
+/* Element sizes for n across patch p's region: square, n across its
+ * longer side, or SHORT_SIDE n across its shorter where square ones leave
+ * fewer than SHORT_FEW there (rr_gap's region: half_length
+ * along x, lo to hi along y, which the approach and cover fix, not the
+ * elements); the narrower ones none under 2 DX_MIN, so that the finer
+ * grids' halves stay within what the workspace's samples hold (Manchester's
+ * right wheel at -10.4 mm, its smallest node, 96 N, asked for less). */
+static void element_sizes(const rr_gap_patch *p, int n, double *dx, double *dy)
+{
+    const double lx = 2.0 * p->half_length, ly = p->hi - p->lo, m = ceil(SHORT_SIDE * n);
+    const double d = fmax(lx, ly) / n;
+    *dx = *dy = d;
+    if (fmin(lx, ly) >= SHORT_FEW * d)
+        return;
+    *dx = fmax(fmin(d, lx / m), fmin(d, 2.0 * DX_MIN));
+    *dy = fmax(fmin(d, ly / m), fmin(d, 2.0 * DX_MIN));
 }
 
 /* The problem of node solves: rr_wheel_exact at vertical load Fz, no creepage. */
@@ -97,10 +127,10 @@ size_t rr_nonhertz_row_workspace_len(const rr_nh_row_problem *pb, int side)
     return lens(pb, side, part);
 }
 
-/* A grid of elements dx (n across when dx = 0) on the node's plane and pose
- * (patch p of result r) into h (hlen doubles). */
-static int grid_at(rr_nh_call *c, const rr_wheel_exact_result *r, int n, double dx, double *h,
-                   size_t hlen, rr_gap_patch *out)
+/* A grid of elements dx, dy (from n by element_sizes when dx = 0) on the
+ * node's plane and pose (patch p of result r) into h (hlen doubles). */
+static int grid_at(rr_nh_call *c, const rr_wheel_exact_result *r, int n, double dx, double dy,
+                   double *h, size_t hlen, rr_gap_patch *out)
 {
     const rr_nh_row_problem *pb = c->pb;
     rr_gap_site site;
@@ -113,7 +143,10 @@ static int grid_at(rr_nh_call *c, const rr_wheel_exact_result *r, int n, double 
     o.approach = r->approach;
     o.cover = r->cover;
     o.n = n;
-    o.dx = o.dy = dx;
+    if (!(dx > 0.0))
+        element_sizes(&r->patch, n, &dx, &dy);
+    o.dx = dx;
+    o.dy = dy;
     o.keep = 1;
     o.keep_lo = c->bd->lo;
     o.keep_hi = c->bd->hi;
@@ -286,8 +319,10 @@ static int normal_at(rr_nh_call *c, double e, double N, double cov, node_data *d
     o.keep = 1;
     o.keep_lo = bd->lo;
     o.keep_hi = bd->hi;
-    /* the plane at the pose's own interpenetration */
-    for (it = 0; it < 4; it++) {
+    /* the plane at the pose's own interpenetration, its elements by
+     * element_sizes (the region's extent: the first build's, square) */
+    for (it = 0; it < 6; it++) {
+        double dx, dy;
         o.approach = a;
         st = rr_gap_build(&site, &o, b->gap, b->gap_len, b->h, b->cells, &r->patch);
         if (st < 0) {
@@ -303,9 +338,13 @@ static int normal_at(rr_nh_call *c, double e, double N, double cov, node_data *d
             c->info->why = RR_NH_ROW_GRID;
             return RR_ERR_GEOMETRY;
         }
-        if (fabs(r->patch.pen / a - 1.0) < 1e-3)
+        element_sizes(&r->patch, pb->n, &dx, &dy);
+        if (fabs(r->patch.pen / a - 1.0) < 1e-3 && fabs(r->patch.grid.dx / dx - 1.0) < 1e-9
+            && fabs(r->patch.grid.dy / dy - 1.0) < 1e-9)
             break;
-        a = r->patch.pen;
+        a = fabs(r->patch.pen / a - 1.0) < 1e-3 ? a : r->patch.pen;
+        o.dx = dx;
+        o.dy = dy;
     }
     /* the load: N ~ approach^1.5, iterated until the approach is pen */
     memset(&ep, 0, sizeof ep);
@@ -390,7 +429,7 @@ static int solve_node(rr_nh_call *c, int k, double e, double Nguess, double *p, 
     d->ab = d->ab < AB_LO ? AB_LO : d->ab > AB_HI ? AB_HI : d->ab;
     /* the linear coefficients (Richardson where asked) */
     if (pb->richardson
-        && (st = grid_at(c, &d->r, pb->n, 0.5 * g->grid.dx, b->hf, 4 * b->cells, &gf)) < 0)
+        && (st = grid_at(c, &d->r, pb->n, 0.5 * g->grid.dx, 0.5 * g->grid.dy, b->hf, 4 * b->cells, &gf)) < 0)
         return st;
     if ((st = forces(c, g, b->h, &gf, b->hf, d->N, (const double (*)[3])cr, 3, F, warn)) < 0)
         return st;
@@ -463,10 +502,10 @@ static int correct_node(rr_nh_call *c, const node_data *d, double *cb, int *warn
         cr[i][1] = cc[i][1] - cphi * d->xc;
         cr[i][2] = cphi;
     }
-    if ((st = grid_at(c, &d->r, pb->n_corr, 0.0, b->hc, b->cells, &gc)) < 0)
+    if ((st = grid_at(c, &d->r, pb->n_corr, 0.0, 0.0, b->hc, b->cells, &gc)) < 0)
         return st;
     if (pb->richardson
-        && (st = grid_at(c, &d->r, pb->n_corr, 0.5 * gc.grid.dx, b->hcf, 4 * b->cells, &gcf))
+        && (st = grid_at(c, &d->r, pb->n_corr, 0.5 * gc.grid.dx, 0.5 * gc.grid.dy, b->hcf, 4 * b->cells, &gcf))
                < 0)
         return st;
     if ((st = forces(c, &gc, b->hc, &gcf, b->hcf, d->N, (const double (*)[3])cr, m, F, warn))

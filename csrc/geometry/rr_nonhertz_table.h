@@ -60,7 +60,9 @@ typedef struct {
     rr_motion wheelset;            /* the wheelset's motion at free rolling there (the
                                       correction's spin) */
     double roller_spin, vmin;      /* [rad/s], [m/s] > 0 */
-    int n;                         /* elements across the nodes' grids, 8..RR_GAP_MAX_N/2 */
+    int n;                         /* elements across the nodes' grids' longer side (at
+                                      least n / 2 across the shorter: a flange patch, a/b
+                                      over 10, resolved across), 8..RR_GAP_MAX_N/2 */
     int n_corr;                    /* and across the correction's, 8..n */
     int richardson;                /* 1: coefficients and correction extrapolated from
                                       elements half as large; 0: the grids' own */

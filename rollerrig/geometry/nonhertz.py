@@ -262,7 +262,9 @@ def nonhertz_table(geometry: RigGeometry, y_min: Optional[float], y_max: Optiona
     sides : sequence of {"left", "right"}, optional
         The sides to build (the others None).
     n, n_corr : int, optional
-        Elements across the nodes' and the correction's grids, >= 1.
+        Elements across the longer side of the nodes' and the correction's
+        grids, >= 1 (at least half as many across the shorter: a flange
+        patch, 10 times longer than wide, is resolved across its width).
     richardson : bool, optional
         Extrapolate the coefficients and the correction from elements half
         as large.
