@@ -185,6 +185,7 @@ static int weighted_reference(const plane *f, const samples *rs, section *wsec, 
     const double target = f->sigma * (p->roller_y + sr_P);
     plane id = *f;
     section run;
+    walker w;
     double best = INFINITY, gmin = INFINITY, sw = 0.0, swa = 0.0, swy = 0.0;
     int i, i0 = rs->k, i1 = -1, n, deep = 0, it, st;
 
@@ -194,9 +195,10 @@ static int weighted_reference(const plane *f, const samples *rs, section *wsec, 
     id.t2y = id.nz = 1.0;
     id.t2z = id.ny = 0.0;
     wsec->k0 = 0;
+    walker_set(&id, wsec, 0.0, &w);
     for (i = 0; i < wsec->q->k; i++) {
         double d;
-        sec_point(&id, wsec, i, 0.0);
+        walk_point(&w, i);
         d = fabs(wsec->yc[i] - target);
         if (d < best) {
             best = d;

@@ -131,29 +131,8 @@ typedef struct {
     int hint;                /* the last interpolation's interval */
 } section;
 
-static void sec_point(const plane *f, section *c, int i, double x)
-{
-    const rr_wheel_roller *p = f->p;
-    const double zi = c->q->z[i];
-    double Y, Z, dY, dZ;
-    if (c->body == 0) {
-        Y = f->sigma * (p->roller_y + c->q->s[i]);
-        Z = zi - drop(p->R0 + zi, x);
-    } else {
-        const double yl = f->sigma * (p->wheel_y + c->q->s[i]);
-        const double zl = -p->r0 + zi + drop(p->r0 - zi, x);
-        Y = f->y_ws + yl * f->cr - zl * f->sr;
-        Z = f->z + yl * f->sr + zl * f->cr;
-    }
-    dY = Y - f->P0;
-    dZ = Z - f->P1;
-    c->yc[i] = dY * f->t2y + dZ * f->t2z;
-    c->ze[i] = dY * f->ny + dZ * f->nz;
-}
-
-/* sec_point's numbers for one walk, read once (the walk's loop is the
- * build's largest: a sample's point and test in fewer instructions than
- * sec_point called per sample; the same expressions, the same doubles). */
+/* A section's numbers for a loop over its samples, read once (the walk's
+ * loop is the build's largest: a sample's point in few instructions). */
 typedef struct {
     const double *s, *z;
     double *yc, *ze;
@@ -185,7 +164,7 @@ static void walker_set(const plane *f, const section *c, double x, walker *w)
     w->nz = f->nz;
 }
 
-/* sec_point(f, c, i, x) by w */
+/* sample i of w's section at x: its (yc, ze) in the plane */
 static void walk_point(const walker *w, int i)
 {
     const double zi = w->z[i];
