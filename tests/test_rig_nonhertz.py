@@ -50,6 +50,22 @@ def test_hertz_named_is_the_default_bit_for_bit():
                           b.to_dataframe().to_numpy(dtype=float), equal_nan=True)
 
 
+@pytest.mark.parametrize("pair", ["s1002_uic60", "measured"])
+def test_the_default_elements_build_at_the_rigs_scale(pair):
+    """The default 40 elements across, at the 1/5 rig's scale: the lightest
+    node's patch (5 N) has elements under 10 um.  A regression: its grids
+    were given their sizes, which set the profile samples a tenth of an
+    element apart, finer than the row's workspace holds, and the default
+    table failed at the centre (RR_ERR_WORKSPACE); square grids keep
+    rr_gap's own elements and samples."""
+    params = S1002_UIC60 if pair == "s1002_uic60" else MEASURED
+    P = with_contact(params, patch="nonhertz", nonhertz_half_range_m=8e-5)
+    nh = quiet(rr.rig_nonhertz_table, P)
+    for side in (nh.left, nh.right):
+        assert side.rows.shape[0] >= 5 and np.all(np.isfinite(side.rows))
+        assert side.y.min() <= -8e-5 and side.y.max() >= 8e-5
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("pair", ["s1002_uic60", "measured"])
 def test_paper_scenario_reaches_its_targets_on_the_nonhertz_contact(pair):

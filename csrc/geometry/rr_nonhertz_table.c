@@ -66,21 +66,23 @@ static void fine_opts(rr_gap_opts *o, double dx)
 }
 
 /* Element sizes for n across patch p's region: square, n across its
- * longer side, or SHORT_SIDE n across its shorter where square ones leave
- * fewer than SHORT_FEW there (rr_gap's region: half_length
+ * longer side (returns 0), or SHORT_SIDE n across its shorter where square
+ * ones leave fewer than SHORT_FEW there (returns 1; rr_gap's region: half_length
  * along x, lo to hi along y, which the approach and cover fix, not the
- * elements); the narrower ones none under 2 DX_MIN, so that the finer
+ * elements); the narrower ones none under 2 DX_MIN (a patch whose square
+ * ones are that small stays square), so that the finer
  * grids' halves stay within what the workspace's samples hold (Manchester's
  * right wheel at -10.4 mm, its smallest node, 96 N, asked for less). */
-static void element_sizes(const rr_gap_patch *p, int n, double *dx, double *dy)
+static int element_sizes(const rr_gap_patch *p, int n, double *dx, double *dy)
 {
     const double lx = 2.0 * p->half_length, ly = p->hi - p->lo, m = ceil(SHORT_SIDE * n);
     const double d = fmax(lx, ly) / n;
     *dx = *dy = d;
-    if (fmin(lx, ly) >= SHORT_FEW * d)
-        return;
+    if (fmin(lx, ly) >= SHORT_FEW * d || d <= 2.0 * DX_MIN)
+        return 0;
     *dx = fmax(fmin(d, lx / m), fmin(d, 2.0 * DX_MIN));
     *dy = fmax(fmin(d, ly / m), fmin(d, 2.0 * DX_MIN));
+    return 1;
 }
 
 /* The problem of node solves: rr_wheel_exact at vertical load Fz, no creepage. */
@@ -143,8 +145,12 @@ static int grid_at(rr_nh_call *c, const rr_wheel_exact_result *r, int n, double 
     o.approach = r->approach;
     o.cover = r->cover;
     o.n = n;
-    if (!(dx > 0.0))
-        element_sizes(&r->patch, n, &dx, &dy);
+    /* square elements from n are rr_gap's own (its samples RR_GAP_SAMPLE
+     * apart): sizes given would set the samples a tenth of an element
+     * apart, finer than the workspace holds on a rig-scale patch's lightest
+     * node (elements under DX_MIN) */
+    if (!(dx > 0.0) && !element_sizes(&r->patch, n, &dx, &dy))
+        dx = dy = 0.0;
     o.dx = dx;
     o.dy = dy;
     o.keep = 1;
@@ -338,9 +344,12 @@ static int normal_at(rr_nh_call *c, double e, double N, double cov, node_data *d
             c->info->why = RR_NH_ROW_GRID;
             return RR_ERR_GEOMETRY;
         }
-        element_sizes(&r->patch, pb->n, &dx, &dy);
-        if (fabs(r->patch.pen / a - 1.0) < 1e-3 && fabs(r->patch.grid.dx / dx - 1.0) < 1e-9
-            && fabs(r->patch.grid.dy / dy - 1.0) < 1e-9)
+        if (!element_sizes(&r->patch, pb->n, &dx, &dy))
+            dx = dy = 0.0;               /* square: rr_gap's own from n (grid_at's) */
+        if (fabs(r->patch.pen / a - 1.0) < 1e-3
+            && (dx > 0.0 ? fabs(r->patch.grid.dx / dx - 1.0) < 1e-9
+                               && fabs(r->patch.grid.dy / dy - 1.0) < 1e-9
+                         : o.dx == 0.0))
             break;
         a = fabs(r->patch.pen / a - 1.0) < 1e-3 ? a : r->patch.pen;
         o.dx = dx;
