@@ -192,8 +192,10 @@ def _build(P: _Params, table: ContactTable, key: Mapping[str, object]) -> NonHer
     E, nu = float(P["contact"]["youngs_modulus_Pa"]), float(P["contact"]["poisson_ratio"])
     rows = {side: _rows(g, side, half, dy, scale) for side in ("left", "right")}
     total = sum(len(r) for r in rows.values())
+    # 0.08 s a row at n = 40: the default tables' builds on 2 free cores
+    # (benchmarks/RESULTS.md, rig_nonhertz: 395 rows in 33 s, 358 in 30 s)
     print(f"rollerrig: building the non-Hertzian contact's table of the rig's pair ({total} "
-          f"rows, about {0.25 * total * (n / 40) ** 2:.0f} s on 2 free cores; kept for this "
+          f"rows, about {0.08 * total * (n / 40) ** 2:.0f} s on 2 free cores; kept for this "
           f"session, or save it: rollerrig.rig_nonhertz_table(params, path))", file=sys.stderr)
     t0 = time.perf_counter()
     kw: Dict[str, Any] = dict(Fz=Fz, mu_ref=float(P["scenario"]["mu0"]), E=E, nu=nu, n=n,
