@@ -40,8 +40,9 @@ NOTES = """Notes (measured on this branch, not by this script):
   wheel rr_nonhertz_wheel_law takes 18.5 k: two rows, one pass of the vertical balance each
   (seeded from the rig's previous evaluation, rr_wheel_contact.nh_tz; before: two passes on the
   first row), two rr_exact_table_forces calls (5.8 k), five load sums per row's secant on the
-  lowering (1.9 k), the correction (1.3 k).  On a free machine the measured pair's Hertz loop
-  runs 545x real time (the rig_profiles block), so the nonhertz loop about 0.62 x 545 = 340x:
+  lowering (1.9 k), the correction (1.3 k).  On a free machine (the table above, load average
+  about 1) the nonhertz loop runs 577-578x real time, 0.59-0.62 of the Hertz loop's 925-975x
+  (an earlier run the same hour: 545-574x against 923-929x):
   the issue's 250x, not its 1000x goal.
 - Accuracy in the loop (tests/test_rig_nonhertz.py): on the cone's elliptic gap the nonhertz
   rig's fx history stays within 0.015 mu0 (N_left + N_right) of the Hertz rig with the exact
@@ -59,9 +60,12 @@ NOTES = """Notes (measured on this branch, not by this script):
 - The default table's build (+-2.5 mm, rows 0.04 mm apart, a quarter of that near the rigid
   contact point's jumps, 40 elements): the measured pair 396 rows (its left side ends at
   +2.047 mm, where the exact theory's largest node fails in deep flange contact: warned),
-  209 s under load 8-10; S1002/UIC60 358 rows, 95 s under load 10 (two threads; on free cores
-  about half).  Richardson is off at the rig's scale: its half-size elements do not fit the
-  exact solver's grid at the lightest node (rr_nonhertz_row: RR_ERR_WORKSPACE).
+  S1002/UIC60 358 rows; 33 and 30 s on free cores (two threads; the table above).  Richardson
+  is off at the rig's scale: its half-size elements do not fit the exact solver's grid at the
+  lightest node (rr_nonhertz_row: RR_ERR_WORKSPACE).  The flange patches' narrowed grids
+  (nh-flange) had given the square ones their sizes too, which set the profile samples a tenth
+  of an element apart, finer than a row's workspace holds at the lightest node: the default
+  table failed at the centre (fixed, tests/test_rig_nonhertz.py builds it).
 """
 
 
