@@ -66,6 +66,21 @@ def test_the_default_elements_build_at_the_rigs_scale(pair):
         assert side.y.min() <= -8e-5 and side.y.max() >= 8e-5
 
 
+def test_a_row_beyond_the_measured_profiles_says_why():
+    """Where the measured pair's left table ends (+2.047 mm at the 1/5 scale:
+    its heaviest node's flange-root region reaches the end of the measured
+    profiles in the tangent plane) the error names that reason, not the
+    status's generic words ("inputs too extreme")."""
+    P = rr.load_parameters(MEASURED)
+    g = rr.build_rig(P)[2].geometry
+    Fz = nonhertz_rig.static_load(rr.rig.check_parameters(P))
+    with pytest.raises(rr.RollerRigError, match=r"y = 0.002057 m, node 8 .*: the exact "
+                       r"solution of a load node failed: the contact region reaches the end "
+                       r"of the profiles in the tangent plane \(rr_wheel_exact why 1"):
+        quiet(rr.nonhertz_table, g, None, None, y=[0.002057, 0.00206], Fz=Fz,
+              sides=("left",), richardson=False)
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("pair", ["s1002_uic60", "measured"])
 def test_paper_scenario_reaches_its_targets_on_the_nonhertz_contact(pair):

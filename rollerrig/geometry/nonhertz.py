@@ -406,13 +406,36 @@ def _row(geometry: RigGeometry, side: str, y: float, Fz: float, E: float, nu: fl
                 _core.NH_ROW_SOLVE: "a creep solution of a node",
                 _core.NH_ROW_COEFF: "a node's linear creep coefficient (not positive)"}
         patch = f"patch {info['patch']}, " if info["patch"] > 0 else ""
+        # the patch's reason where a patch failed (a status alone, RR_ERR_RANGE,
+        # would read "inputs too extreme"), else the status's
+        detail = _GAP_WORDS.get(info["gap_why"], status_message(st))
         raise RollerRigError(f"nonhertz_table: the {side} side at y = {y!r} m, {patch}node "
                              f"{info['node']} (vertical load "
                              f"{LOAD_SPAN * Fz * _NODE_F[max(info['node'], 0)] ** 1.5:.6g} N): "
-                             f"{what.get(info['why'], 'the row')} failed: "
-                             f"{status_message(st)} (why {info['wheel_why']}, "
-                             f"gap {info['gap_why']})")
+                             f"{what.get(info['why'], 'the row')} failed: {detail} "
+                             f"(rr_wheel_exact why {info['wheel_why']}, rr_gap why "
+                             f"{info['gap_why']})")
     return row, info
+
+
+#: rr_gap_build's reasons in words (geometry.patch._gap_error says them with
+#: the numbers a single build leaves; a row keeps only the reason)
+_GAP_WORDS = {
+    _core.GAP_OFF_PROFILE: "the reference point lies off a profile",
+    _core.GAP_FOLD: "a profile folds at the reference point",
+    _core.GAP_APART: "the cross-sections do not overlap laterally",
+    _core.GAP_REGION_ENDS: "the contact region reaches the end of the profiles in the "
+                           "tangent plane",
+    _core.GAP_REGION_LONG: "the contact region is as long as the radii",
+    _core.GAP_REGION_BEYOND: "the contact region's ends along x lie beyond the profiles",
+    _core.GAP_TOO_MANY: "the grid would need more elements a side than it may have",
+    _core.GAP_PATCH_REACHES: "the patch reaches where a profile folds or ends",
+    _core.GAP_PATCH_NONFINITE: "the gap is not finite on the grid (a profile folds or ends)",
+    _core.GAP_RUNS: "the gap has too many separate intervals",
+    _core.GAP_WEIGHTS: "the weighted reference's weights vanish or overflow",
+    _core.GAP_SCAN: "the cross-sections are far longer than the profiles' window",
+    _core.GAP_FAR: "the region lies too many elements from the reference point",
+}
 
 
 _NODE_F = (0.03, 0.1, 0.2, 0.33, 0.46, 0.6, 0.75, 0.88, 1.0)
