@@ -435,7 +435,7 @@ def build_parser() -> _Parser:
                    f"(default the scenario's contact.creep_method)")
     p.add_argument("--patch", choices=("hertz", "nonhertz"), help="the contact's patch "
                    "(contact.patch; default the scenario's, hertz): nonhertz builds the "
-                   "non-Hertzian contact's table of the rig's pair first (about a minute on 2 "
+                   "non-Hertzian contact's table of the rig's pair first (about 30 s on 2 "
                    "cores) unless contact.nonhertz_table names a saved one")
     p.add_argument("--record-every", type=_positive_int, default=1, metavar="K",
                    help="record every K-th sample only (long runs: the records are capped "

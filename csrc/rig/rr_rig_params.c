@@ -219,7 +219,7 @@ static const rr_rig_param params[] = {
            "by the exact theory (csrc/geometry/rr_nonhertz.h; contact.creep_method unused)"),
     CHOICE("contact.nonhertz_table", nonhertz_sources, 0, nonhertz_table,
            "choice: rollerrig builds the table from the rig's profiles, scale, gauge and "
-           "material (about a minute on 2 cores; kept in memory); in rollerrig a file's path "
+           "material (about 30 s on 2 cores; kept in memory); in rollerrig a file's path "
            "(.npz of rollerrig.rig_nonhertz_table, checked against the rig's pair); read by "
            "rollerrig, not by the C rig (rr_rig_params_set_nonhertz)"),
     REAL("contact.nonhertz_half_range_m", "m", 0.0025, POS, nonhertz_half_range,
