@@ -2,8 +2,9 @@
 codes become exceptions or warnings."""
 from __future__ import annotations
 
+import math
 import warnings
-from typing import Callable, Dict, Iterable, Mapping, Optional
+from typing import Callable, Dict, Iterable, Literal, Mapping, Optional, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -35,6 +36,31 @@ class RollerRigWarning(UserWarning):
     the first bad element and how many failed; the failed elements are NaN
     with a negative status.
     """
+
+
+@overload
+def check_number(func: str, name: str, value: object, positive: bool = ...,
+                 allow_none: Literal[False] = ...) -> float: ...
+@overload
+def check_number(func: str, name: str, value: object, positive: bool = ...,
+                 allow_none: bool = ...) -> Optional[float]: ...
+def check_number(func: str, name: str, value: object, positive: bool = False,
+                 allow_none: bool = False) -> Optional[float]:
+    """value as a float: a finite real number (not a bool), > 0 where
+    positive, None passed where allow_none; else a RollerRigError naming
+    func, name and value (the rig's parameters say it in these words too)."""
+    if value is None and allow_none:
+        return None
+    if isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool):
+        try:
+            v = float(value)
+        except OverflowError:                  # an int beyond a double
+            v = math.inf
+        if math.isfinite(v) and (v > 0 or not positive):
+            return v
+    raise RollerRigError(f"{func}: {name} must be a finite number"
+                         f"{' > 0' if positive else ''}{' or None' if allow_none else ''}"
+                         f", got {value!r:.60}")
 
 
 def status_message(code: int) -> str:

@@ -204,8 +204,8 @@ def test_combine_must_not_be_negative(func):
 @pytest.mark.parametrize("kwargs, match", [
     (dict(n=1001), "n must be an integer from 4 to 1000"),
     (dict(cover=0.9), "cover must be >= 1"),
-    (dict(E=-1.0), "E must be a finite positive number"),
-    (dict(mu=float("nan")), "mu must be a finite positive number"),
+    (dict(E=-1.0), "E must be a finite number > 0"),
+    (dict(mu=float("nan")), "mu must be a finite number > 0"),
     (dict(tol=1.0), "tol"),
     (dict(maxit=0), "maxit"),
     (dict(vmin=0.0, cx=None, cy=None, cphi=None, spin=12.0, roller_spin=5.0), "vmin"),

@@ -337,7 +337,7 @@ def test_conical_and_cylinder_arguments():
         Profile.conical(float("nan"))
     with pytest.raises(RollerRigError, match=r"y_range must be finite with y_min < y_max"):
         Profile.conical(0.05, y_range=(0.01, -0.01))
-    with pytest.raises(RollerRigError, match=r"r0 must be a positive finite number"):
+    with pytest.raises(RollerRigError, match=r"r0 must be a finite number > 0"):
         Profile.conical(0.05, r0=-1.0)
     with pytest.raises(RollerRigError, match=r"n must be an integer from 4 to 100000"):
         Profile.cylinder(n=3)
@@ -428,7 +428,7 @@ def test_smoothing_arguments_and_copies():
     np.testing.assert_allclose(p.mirrored().z, p.z[::-1], atol=1e-14)
     with pytest.raises(RollerRigError, match=r"smoothing spline is natural"):
         Profile(y, z, kind="rail", smoothing=1e-3, bc="not-a-knot")
-    with pytest.raises(RollerRigError, match=r"smoothing must be a positive finite number"):
+    with pytest.raises(RollerRigError, match=r"smoothing must be a finite number > 0"):
         Profile(y, z, kind="rail", smoothing=0.0)
     r = Profile.uic60(smoothing=0.5e-3)
     assert r.curvature(-7.5e-3) == pytest.approx(1 / 0.3, rel=1e-3)

@@ -31,7 +31,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .. import _core
-from .._errors import RollerRigError, RollerRigWarning, status_message
+from .._errors import RollerRigError, RollerRigWarning, check_number, status_message
 from .._typing import F64Array
 from .wheelset import RigGeometry, wheelset_contact
 
@@ -219,14 +219,6 @@ def row_shifts(geometry: RigGeometry, y_min: float, y_max: float, dy: float, sid
     return y[(y >= y_min - 1e-12) & (y <= y_min + n * dy + 1e-12)]
 
 
-def _number(func: str, name: str, v: object, positive: bool = True) -> float:
-    if not (isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, bool)) \
-            or not np.isfinite(float(v)) or (positive and not float(v) > 0):
-        raise RollerRigError(f"{func}: {name} must be a finite number{' > 0' if positive else ''}"
-                             f", got {v!r}")
-    return float(v)
-
-
 def nonhertz_table(geometry: RigGeometry, y_min: Optional[float], y_max: Optional[float],
                    *, Fz: float, dy: float = 2e-4, dy_jump: Optional[float] = 5e-5,
                    mu_ref: float = 0.52,
@@ -322,11 +314,11 @@ def nonhertz_table(geometry: RigGeometry, y_min: Optional[float], y_max: Optiona
     func = "nonhertz_table"
     if not isinstance(geometry, RigGeometry):
         raise RollerRigError(f"{func}: geometry must be a RigGeometry, got {geometry!r:.60}")
-    Fz = _number(func, "Fz", Fz)
-    mu_ref = _number(func, "mu_ref", mu_ref)
-    E = _number(func, "E", E)
-    nu = _number(func, "nu", nu, positive=False)
-    combine = _number(func, "combine", combine, positive=False)
+    Fz = check_number(func, "Fz", Fz, positive=True)
+    mu_ref = check_number(func, "mu_ref", mu_ref, positive=True)
+    E = check_number(func, "E", E, positive=True)
+    nu = check_number(func, "nu", nu)
+    combine = check_number(func, "combine", combine)
     if combine < 0:
         raise RollerRigError(f"{func}: combine must be >= 0 [m], got {combine!r}")
     for name, v in (("n", n), ("n_corr", n_corr), ("workers", workers)):
@@ -335,13 +327,13 @@ def nonhertz_table(geometry: RigGeometry, y_min: Optional[float], y_max: Optiona
     if not set(sides) <= {"left", "right"} or not sides:
         raise RollerRigError(f"{func}: sides must name 'left' and/or 'right', got {sides!r}")
     if y is None:
-        y_min = _number(func, "y_min", y_min, positive=False)
-        y_max = _number(func, "y_max", y_max, positive=False)
-        dy = _number(func, "dy", dy)
+        y_min = check_number(func, "y_min", y_min)
+        y_max = check_number(func, "y_max", y_max)
+        dy = check_number(func, "dy", dy, positive=True)
         if not y_max > y_min:
             raise RollerRigError(f"{func}: y_max must exceed y_min, got {y_min!r}, {y_max!r}")
         if dy_jump is not None:
-            dy_jump = _number(func, "dy_jump", dy_jump)
+            dy_jump = check_number(func, "dy_jump", dy_jump, positive=True)
     G = E / (2.0 * (1.0 + nu))
     t0 = time.perf_counter()
     out: Dict[str, Optional[NonHertzSide]] = {}

@@ -65,13 +65,13 @@ from __future__ import annotations
 
 import warnings
 from dataclasses import dataclass
-from typing import Any, List, Literal, Mapping, NamedTuple, Optional, Tuple, Union, overload
+from typing import Any, List, Mapping, NamedTuple, Optional, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
 
 from .. import _core
-from .._errors import RollerRigError, RollerRigWarning, status_message
+from .._errors import RollerRigError, RollerRigWarning, check_number, status_message
 from .._typing import F64Array
 from .wheelset import ContactSide, RigGeometry, wheelset_contact
 
@@ -154,30 +154,13 @@ def _runs(mask: npt.ArrayLike) -> List[Tuple[np.intp, np.intp]]:
     return list(zip(np.flatnonzero(d == 1), np.flatnonzero(d == -1)))
 
 
-@overload
-def _number(func: str, name: str, v: object, positive: bool = ...,
-            allow_none: Literal[False] = ...) -> float: ...
-@overload
-def _number(func: str, name: str, v: object, positive: bool = ...,
-            allow_none: bool = ...) -> Optional[float]: ...
-def _number(func: str, name: str, v: object, positive: bool = True,
-            allow_none: bool = False) -> Optional[float]:
-    if v is None and allow_none:
-        return None
-    if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)) \
-            or not np.isfinite(v) or (positive and not v > 0):
-        raise RollerRigError(f"{func}: {name} must be a finite "
-                             f"{'positive ' if positive else ''}number, got {v!r}")
-    return float(v)
-
-
 def _pose_and_point(func: str, geometry: RigGeometry, y_ws: float,
                     side: str) -> Tuple[float, float, ContactSide]:
     if not isinstance(geometry, RigGeometry):
         raise RollerRigError(f"{func}: geometry must be a RigGeometry, got {geometry!r:.60}")
     if side not in ("left", "right"):
         raise RollerRigError(f"{func}: side must be 'left' or 'right', got {side!r}")
-    y_ws = _number(func, "y_ws", y_ws, positive=False)
+    y_ws = check_number(func, "y_ws", y_ws)
     c = wheelset_contact(geometry, y_ws)
     return float(c.z[0]), float(c.roll[0]), getattr(c, side)
 
@@ -187,8 +170,8 @@ def _reference(func: str, reference: Reference) -> Tuple[int, float, float]:
     if isinstance(reference, str) and reference in ("point", "weighted"):
         return (_core.GAP_POINT if reference == "point" else _core.GAP_WEIGHTED), 0.0, 0.0
     if isinstance(reference, (tuple, list)) and len(reference) == 2:
-        sr = _number(func, "reference s_roller", reference[0], positive=False)
-        delta = _number(func, "reference delta", reference[1], positive=False)
+        sr = check_number(func, "reference s_roller", reference[0])
+        delta = check_number(func, "reference delta", reference[1])
         if not abs(delta) < 0.5 * np.pi:
             raise RollerRigError(f"{func}: the reference angle must be within +-pi/2, got "
                                  f"{delta!r}")
@@ -198,7 +181,7 @@ def _reference(func: str, reference: Reference) -> Tuple[int, float, float]:
 
 
 def _combine(func: str, combine: float) -> float:
-    combine = _number(func, "combine", combine, positive=False)
+    combine = check_number(func, "combine", combine)
     if combine < 0:
         # a negative one kept not even the deepest interval (issue 24: min()
         # of an empty sequence)
@@ -392,25 +375,25 @@ def undeformed_distance(geometry: RigGeometry, y_ws: float, *, side: str = "left
     """
     func = "undeformed_distance"
     z_ws, roll_ws, cpt = _pose_and_point(func, geometry, y_ws, side)
-    z = z_ws if z is None else _number(func, "z", z)
-    roll = roll_ws if roll is None else _number(func, "roll", roll, positive=False)
+    z = z_ws if z is None else check_number(func, "z", z, positive=True)
+    roll = roll_ws if roll is None else check_number(func, "roll", roll)
     for name, v in (("N", N), ("approach", approach)):
-        _number(func, name, v, allow_none=True)
+        check_number(func, name, v, allow_none=True, positive=True)
     if approach is None:
         if N is None:
             raise RollerRigError(f"{func}: give the normal load N [N] or the approach [m]")
         from ..contact.creep import hertz
         approach = float(hertz(float(cpt.A[0]), float(cpt.B[0]), float(N), E=E, nu=nu).delta)
     approach = float(approach)
-    cover = _number(func, "cover", cover)
+    cover = check_number(func, "cover", cover, positive=True)
     if cover < 1.0:
         raise RollerRigError(f"{func}: cover must be >= 1, got {cover!r}")
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) \
             or not 4 <= n <= _core.GAP_MAX_N:
         raise RollerRigError(f"{func}: n must be an integer from 4 to {_core.GAP_MAX_N}, "
                              f"got {n!r}")
-    dx = _number(func, "dx", dx, allow_none=True)
-    dy = _number(func, "dy", dy, allow_none=True)
+    dx = check_number(func, "dx", dx, allow_none=True, positive=True)
+    dy = check_number(func, "dy", dy, allow_none=True, positive=True)
     combine = _combine(func, combine)
     code, ref_s, ref_d = _reference(func, reference)
     y_ws = float(y_ws)

@@ -28,9 +28,9 @@ if TYPE_CHECKING:
 
 from .. import _core
 from .._binding import METHODS, check_creep_options
-from .._errors import RollerRigError, check_status, status_message
+from .._errors import RollerRigError, check_number, check_status, status_message
 from ..contact.exact import ExactSolution, _solution
-from ..geometry.patch import (Patch, _combine, _gap_error, _number, _patch, _pose_and_point,
+from ..geometry.patch import (Patch, _combine, _gap_error, _patch, _pose_and_point,
                               _reference, _warn_excluded, patch_shape)
 from ..geometry.wheelset import contact_table
 from .contact import rig_contact
@@ -205,8 +205,8 @@ def rig_exact(geometry: RigGeometry, y_ws: float, *, mu: float, N: Optional[floa
     func = "rig_exact"
     if (N is None) == (Fz is None):
         raise RollerRigError(f"{func}: give the normal load N or the vertical load Fz [N]")
-    N = _number(func, "N", N, allow_none=True)
-    Fz = _number(func, "Fz", Fz, allow_none=True)
+    N = check_number(func, "N", N, allow_none=True, positive=True)
+    Fz = check_number(func, "Fz", Fz, allow_none=True, positive=True)
     if passes not in (1, 2):
         raise RollerRigError(f"{func}: passes must be 1 or 2, got {passes!r}")
     given = [v is not None for v in (cx, cy, cphi)]
@@ -218,24 +218,25 @@ def rig_exact(geometry: RigGeometry, y_ws: float, *, mu: float, N: Optional[floa
     if unknown:
         raise RollerRigError(f"{func}: unknown option(s) {sorted(unknown)}")
     opts = dict(patch_options)
-    approach = _number(func, "approach", opts.pop("approach", None), allow_none=True)
-    cover = _number(func, "cover", opts.pop("cover", 1.5))
+    approach = check_number(func, "approach", opts.pop("approach", None), positive=True,
+                            allow_none=True)
+    cover = check_number(func, "cover", opts.pop("cover", 1.5), positive=True)
     if cover < 1.0:
         raise RollerRigError(f"{func}: cover must be >= 1, got {cover!r}")
-    z_given = _number(func, "z", opts.pop("z", None), allow_none=True)
-    roll_given = _number(func, "roll", opts.pop("roll", None), positive=False,
+    z_given = check_number(func, "z", opts.pop("z", None), allow_none=True, positive=True)
+    roll_given = check_number(func, "roll", opts.pop("roll", None), positive=False,
                          allow_none=True)
-    dx = _number(func, "dx", opts.pop("dx", None), allow_none=True)
-    dy = _number(func, "dy", opts.pop("dy", None), allow_none=True)
+    dx = check_number(func, "dx", opts.pop("dx", None), allow_none=True, positive=True)
+    dy = check_number(func, "dy", opts.pop("dy", None), allow_none=True, positive=True)
     combine = _combine(func, opts.pop("combine", 4e-3))
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) \
             or not 4 <= n <= _core.GAP_MAX_N:
         raise RollerRigError(f"{func}: n must be an integer from 4 to {_core.GAP_MAX_N}, "
                              f"got {n!r}")
     code, ref_s, ref_d = _reference(func, reference)
-    E = _number(func, "E", E)
-    nu = _number(func, "nu", nu, positive=False)
-    mu = _number(func, "mu", mu)
+    E = check_number(func, "E", E, positive=True)
+    nu = check_number(func, "nu", nu)
+    mu = check_number(func, "mu", mu, positive=True)
     G = E / (2.0 * (1.0 + nu))
     # the solver's options by the registry's rules (names, ranges, integers)
     check_creep_options(func, "exact", dict(tol=tol, maxit=maxit))

@@ -3,9 +3,8 @@ conditions, scale (unit mistakes), single-valuedness (folds), and the
 preparation of raw points (any order, any folds) for a Profile."""
 from __future__ import annotations
 
-import math
 import warnings
-from typing import Any, Dict, List, Literal, Optional, Tuple, Union, overload
+from typing import Any, Dict, List, Optional, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -33,25 +32,6 @@ def _as_float_array(func: str, name: str, value: npt.ArrayLike) -> F64Array:
         raise RollerRigError(f"{func}: {name} must be real numbers, got dtype {arr.dtype} "
                              f"({value!r:.60})")
     return arr.astype(np.float64)
-
-
-@overload
-def _check_number(func: str, name: str, value: object, positive: bool = ...,
-                  allow_none: Literal[False] = ...) -> float: ...
-@overload
-def _check_number(func: str, name: str, value: object, positive: bool = ...,
-                  allow_none: bool = ...) -> Optional[float]: ...
-def _check_number(func: str, name: str, value: object, positive: bool = False,
-                  allow_none: bool = False) -> Optional[float]:
-    if value is None and allow_none:
-        return None
-    if not (isinstance(value, (int, float, np.integer, np.floating))
-            and not isinstance(value, bool) and math.isfinite(value)
-            and (value > 0 if positive else True)):
-        what = "a positive finite number" if positive else "a finite number"
-        raise RollerRigError(f"{func}: {name} must be {what}"
-                             f"{' or None' if allow_none else ''}, got {value!r}")
-    return float(value)
 
 
 def _check_kind(func: str, kind: str) -> str:

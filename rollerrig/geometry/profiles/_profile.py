@@ -14,12 +14,12 @@ import numpy as np
 import numpy.typing as npt
 
 from ... import _core
-from ..._errors import RollerRigError, RollerRigWarning, status_message
+from ..._errors import RollerRigError, RollerRigWarning, check_number, status_message
 from ..._files import write_file
 from ..._typing import F64Array, FloatResult
 from ._checks import (MAX_COORD, MAX_POINTS, MIN_POINTS, MIN_SPACING, MIN_WIDTH,
-                      UNITS, _as_float_array, _check_bc, _check_kind, _check_number,
-                      _check_scale, _prepare)
+                      UNITS, _as_float_array, _check_bc, _check_kind, _check_scale,
+                      _prepare)
 from ._spline import _smooth, _spline_fit
 from .readers import READERS
 
@@ -111,7 +111,7 @@ class Profile:
                  smoothing: Optional[float] = None) -> None:
         func = "Profile"
         _check_kind(func, kind)
-        smoothing = _check_number(func, "smoothing", smoothing, positive=True,
+        smoothing = check_number(func, "smoothing", smoothing, positive=True,
                                   allow_none=True)
         if smoothing is not None and smoothing > MAX_COORD:
             raise RollerRigError(f"{func}: smoothing is a wavelength [m] up to {MAX_COORD:g} "
@@ -352,8 +352,8 @@ class Profile:
 
     def shifted(self, dy: float = 0.0, dz: float = 0.0) -> Profile:
         """The profile moved by dy laterally and dz downward [m] (a new Profile)."""
-        dy = _check_number("Profile.shifted", "dy", dy)
-        dz = _check_number("Profile.shifted", "dz", dz)
+        dy = check_number("Profile.shifted", "dy", dy)
+        dz = check_number("Profile.shifted", "dz", dz)
         return self._derived("Profile.shifted", self._y + dy, self._z_input + dz, self._name,
                              f"shifted by dy = {dy!r} m, dz = {dz!r} m")
 
@@ -373,7 +373,7 @@ class Profile:
         -43.033 mm
         """
         func = "Profile.gauge_point"
-        depth = _check_number(func, "depth", depth, positive=True)
+        depth = check_number(func, "depth", depth, positive=True)
         lo, hi = self.y_min, float(self._y[np.argmin(self._z)])
         if not self.z_at(lo) >= depth:
             raise RollerRigError(f"{func}: the profile does not reach {depth!r} m below z = 0 "
@@ -392,7 +392,7 @@ class Profile:
         steep face) are an error (RollerRigError).
         """
         func = "Profile.canted"
-        inc = _check_number(func, "inclination", inclination)
+        inc = check_number(func, "inclination", inclination)
         if not abs(inc) <= 0.1:
             raise RollerRigError(f"{func}: inclination must be within [-0.1, 0.1], got {inc!r}")
         c = math.atan(inc)
@@ -509,12 +509,12 @@ class Profile:
         -0.025005 0.0625
         """
         func = "Profile.conical"
-        alpha = _check_number(func, "alpha", alpha)
+        alpha = check_number(func, "alpha", alpha)
         if not abs(alpha) < math.pi / 2:
             raise RollerRigError(f"{func}: alpha must be within (-pi/2, pi/2) rad, "
                                  f"got {alpha!r}")
         y0, y1, n = _range_points(func, y_range, n)
-        r0 = _check_number(func, "r0", r0, positive=True, allow_none=True)
+        r0 = check_number(func, "r0", r0, positive=True, allow_none=True)
         y, z = _analytic(func, 0, alpha, y0, y1, n)
         with _named(func):
             return cls(y, z, kind="wheel",
@@ -532,7 +532,7 @@ class Profile:
         """
         func = "Profile.cylinder"
         y0, y1, n = _range_points(func, y_range, n)
-        R = _check_number(func, "crown_radius", crown_radius, positive=True, allow_none=True)
+        R = check_number(func, "crown_radius", crown_radius, positive=True, allow_none=True)
         if R is not None and max(abs(y0), abs(y1)) >= R:
             raise RollerRigError(f"{func}: y_range {y_range!r} reaches beyond the crown "
                                  f"radius {R!r} m")
