@@ -342,6 +342,7 @@ def test_one_wheel_that_fails_leaves_the_other():
 @pytest.mark.parametrize("kwargs, match", [
     (dict(Fz=-5.0), r"Fz must be a finite number > 0"),
     (dict(Fz=np.nan), r"Fz must be"),
+    (dict(Fz=10 ** 400), r"Fz must be a finite number > 0, got 1000000"),   # beyond a double
     (dict(n="40"), r"n must be a positive integer"),
     (dict(combine=-1e-3), r"combine must be >= 0 \[m\], got -0.001"),
     (dict(combine=np.nan), r"combine must be a finite number, got nan"),
