@@ -224,8 +224,7 @@ def rig_exact(geometry: RigGeometry, y_ws: float, *, mu: float, N: Optional[floa
     if cover < 1.0:
         raise RollerRigError(f"{func}: cover must be >= 1, got {cover!r}")
     z_given = check_number(func, "z", opts.pop("z", None), allow_none=True, positive=True)
-    roll_given = check_number(func, "roll", opts.pop("roll", None), positive=False,
-                         allow_none=True)
+    roll_given = check_number(func, "roll", opts.pop("roll", None), allow_none=True)
     dx = check_number(func, "dx", opts.pop("dx", None), allow_none=True, positive=True)
     dy = check_number(func, "dy", opts.pop("dy", None), allow_none=True, positive=True)
     combine = _combine(func, opts.pop("combine", 4e-3))
