@@ -307,7 +307,9 @@ def test_the_hertzian_contact_takes_vertical_loads():
     (dict(Fz_left=-1.0), r"left wheel's load must be > 0"),
     (dict(Fz_left=np.inf), r"load_left = inf"),
     (dict(nonhertz=None), r"needs nonhertz=, an rr.NonHertzTable"),
-    (dict(y=np.array([0.0, 1e-4])), r"one state: y must be a number"),
+    (dict(y="0.0"), r"y must be numbers"),
+    (dict(y=np.zeros(0)), r"y is empty"),
+    (dict(y=np.zeros(2), Fz_left=np.full(3, 5e4)), r"shapes do not broadcast"),
     (dict(N_left=1e4), r"not both"),
     (dict(patch="strips"), r"patch must be 'hertz' or 'nonhertz'"),
     (dict(E=2e11), r"the nonhertz table was built for G"),
@@ -337,6 +339,50 @@ def test_one_wheel_that_fails_leaves_the_other():
     assert c.right.status == 0 and np.all(np.isfinite(c.right.force))
     with pytest.warns(rr.RollerRigWarning, match="the left wheel"):
         rr.rig_contact(ct, errors="warn", **kw)
+
+
+def test_arrays_of_states_are_each_states_call():
+    """An array call is the scalar call at every state, bit for bit (the
+    rows' kinematics taken in one call), in the broadcast shape; a bad
+    element is NaN with its status, the others kept, and "warn" names the
+    first and the count, as the Hertzian call does."""
+    g, ct, tab = cone_on_crown()
+    kw = dict(spin=10.0, roller_spin=5.8, mu=0.4, patch="nonhertz", nonhertz=tab)
+    y = np.array([[-1.5e-4, 0.0, 1e-4], [2e-5, -2e-5, 1.9e-4]])
+    Fz = np.array([5e4, 4e4, 6e4])
+    c = rr.rig_contact(ct, y=y, yaw=1e-3, Fz_left=Fz, Fz_right=5e4, **kw)
+    assert c.left.force.shape == (3, 2, 3) and c.right.N.shape == (2, 3)
+    assert c.left.patches.shape == (2, 3) and c.status.shape == (2, 3) and np.all(c.status == 0)
+    for i, j in np.ndindex(2, 3):
+        s = rr.rig_contact(ct, y=float(y[i, j]), yaw=1e-3, Fz_left=float(Fz[j]),
+                           Fz_right=5e4, **kw)
+        for side in ("left", "right"):
+            a, b = getattr(s, side), getattr(c, side)
+            assert np.array_equal(a.force, b.force[:, i, j])
+            assert np.array_equal(a.moment, b.moment[:, i, j])
+            assert (a.N, a.area, a.pmax, a.Fz) == (b.N[i, j], b.area[i, j], b.pmax[i, j],
+                                                   b.Fz[i, j])
+            assert [p.N for p in a.patches] == [p.N for p in b.patches[i, j]]
+        assert np.array_equal(s.pose.c, c.pose.c[:, i, j])
+    # normal loads given: the same settling per element
+    n = rr.rig_contact(ct, y=y[0], N_left=5e4, N_right=5e4, **kw)
+    assert np.allclose(n.left.N, 5e4, rtol=1e-8)
+    # bad elements: y not finite, a load not positive (that wheel only), y beyond the rows
+    yb = np.array([0.0, np.nan, 0.0, 1e-3])
+    Fb = np.array([5e4, 5e4, -1.0, 5e4])
+    with pytest.warns(rr.RollerRigWarning, match=r"y = nan: input is NaN or infinite at index "
+                                                 r"\(1,\) \(3 of 4 elements failed"):
+        b = rr.rig_contact(ct, y=yb, Fz_left=Fb, Fz_right=5e4, **kw)
+    assert list(b.left.status) == [0, -1, -2, -14] and list(b.right.status) == [0, -1, 0, -14]
+    assert np.all(np.isfinite(b.left.force[:, 0])) and np.all(np.isnan(b.left.force[:, 1:]))
+    assert np.isfinite(b.right.N[2]) and b.left.patches[1] == ()
+    ok = rr.rig_contact(ct, y=0.0, Fz_left=5e4, Fz_right=5e4, **kw)
+    assert np.array_equal(b.left.force[:, 0], ok.left.force)
+    with pytest.raises(rr.RollerRigError, match=r"at index \(1,\)"):
+        rr.rig_contact(ct, y=yb, Fz_left=Fb, Fz_right=5e4, errors="raise", **kw)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        rr.rig_contact(ct, y=yb, Fz_left=Fb, Fz_right=5e4, errors="ignore", **kw)
 
 
 @pytest.mark.parametrize("kwargs, match", [

@@ -42,6 +42,8 @@ from .._binding import (_broadcast, _finish, _friction, check_creep_options, cor
                         swap_blame)
 from .._typing import F64Array
 from ..geometry.wheelset import ContactTable
+from ._nonhertz_contact import (NonHertzPatch, NonHertzWheel, _Loads, _Status,
+                                nonhertz_rig_contact)
 
 __all__ = ["RigPose", "WheelContact", "RigContact", "rig_contact", "LinearCreepages",
            "linear_creepages", "NonHertzWheel", "NonHertzPatch"]
@@ -104,9 +106,9 @@ WheelContact.__doc__ = "One wheel's contact; fields, units [SI] and meanings:\n"
     for name, width, unit, meaning in WHEEL_FIELDS) + "\n    status: this wheel's status"
 
 
-#: the worse of the two wheels' statuses: an int8 array, a numpy int8 for a
-#: call on scalars, an int for patch="nonhertz"
-_Status = Union[int, np.int8, npt.NDArray[np.int8]]
+#: the worse of the two wheels' statuses (_Status, from _nonhertz_contact):
+#: an int8 array, a numpy int8 for a call on scalars, an int for
+#: patch="nonhertz" on one state
 
 #: both wheels' contact.  For the type checker RigContact is generic in its
 #: wheels' type (tests/test_typing_decl.py holds it to the run-time fields):
@@ -167,8 +169,7 @@ def elastic_constants(E: float, nu: float) -> Tuple[float, float]:
 _Model = Tuple[float, float, float, float, float, float, float, float]
 
 _TINY = np.finfo(float).tiny      # a subnormal modulus has too few digits for a force
-#: ("N" or "Fz", left, right): the normal or the vertical loads (_loads)
-_Loads = Tuple[str, Any, Any]
+#: the normal or the vertical loads are _Loads (_nonhertz_contact): _loads
 _RANGES = {"nu": "in [0, 0.5]", "mu": f"in (0, {_core.FRICTION_MAX:g}]"}
 
 
@@ -298,8 +299,9 @@ def rig_contact(table: ContactTable, *, x: npt.ArrayLike = 0.0, y: npt.ArrayLike
     patch : {"hertz", "nonhertz"}, optional
         "hertz" (default): one Hertz ellipse at the rigid contact point;
         "nonhertz": the non-Hertzian, multi-patch contact from the tables
-        of `nonhertz`, Coulomb friction, one state (x and yaw turn each
-        patch's frame by the rig's first-order law).
+        of `nonhertz`, Coulomb friction (x and yaw turn each patch's frame
+        by the rig's first-order law); states as arrays too, one at a time
+        in C (about 0.1 ms a state).
     nonhertz : NonHertzTable, optional
         For patch="nonhertz": an :class:`rollerrig.NonHertzTable` built for
         this pair (:func:`nonhertz_table`).
@@ -323,10 +325,11 @@ def rig_contact(table: ContactTable, *, x: npt.ArrayLike = 0.0, y: npt.ArrayLike
         vmin not finite or out of range; an unknown method or option; with
         errors="raise", a bad state, naming the argument and its value.
         For patch="nonhertz": nonhertz not a NonHertzTable, a friction law,
-        method or options given, a state not scalar or not finite, E and nu
-        not those of the table, y beyond the table's rows, a load not
-        positive or with no vertical balance; vertical loads that do not
-        settle.
+        method or options given, mu, E, nu or vmin not one finite number, E
+        and nu not those of the table, states not numbers, empty or not
+        broadcasting; with errors="raise", a state not finite, y beyond the
+        table's rows, a load not positive or with no vertical balance, or
+        vertical loads that do not settle.
 
     See Also
     --------
@@ -362,10 +365,11 @@ def rig_contact(table: ContactTable, *, x: npt.ArrayLike = 0.0, y: npt.ArrayLike
         raise RollerRigError(f"{func}: patch must be 'hertz' or 'nonhertz', got {patch!r:.60}")
     loads = _loads(func, N_left, N_right, Fz_left, Fz_right, kinematics_only)
     if patch == "nonhertz":
-        return _nonhertz_rig_contact(func, table, nonhertz, loads, x=x, y=y, yaw=yaw, vx=vx, vy=vy,
-                                    yaw_rate=yaw_rate, spin=spin, roller_spin=roller_spin,
-                                    mu=mu, friction=friction, E=E, nu=nu, vmin=vmin,
-                                    method=method, options=options, errors=errors)
+        return cast("RigContact[NonHertzWheel]", nonhertz_rig_contact(
+            func, table, nonhertz, loads, x=x, y=y, yaw=yaw, vx=vx, vy=vy, yaw_rate=yaw_rate,
+            spin=spin, roller_spin=roller_spin, mu=mu, friction=friction, E=E, nu=nu,
+            vmin=vmin, method=method, options=options, errors=errors, rig_contact=rig_contact,
+            make=RigContact, settle=(FZ_TOL, FZ_ITER)))
     if loads[0] == "Fz":
         return _hertz_from_vertical(table, loads[1], loads[2], x=x, y=y, yaw=yaw, vx=vx, vy=vy,
                                     yaw_rate=yaw_rate, spin=spin, roller_spin=roller_spin,
@@ -408,164 +412,6 @@ def rig_contact(table: ContactTable, *, x: npt.ArrayLike = 0.0, y: npt.ArrayLike
     if scalar:
         res = _scalarise(res)
     return res
-
-
-class NonHertzPatch(NamedTuple):
-    """One patch of a wheel's non-Hertzian contact (rig frame; fx, fy along the
-    patch's t1, t2, mz about its normal at the pressure's centroid)."""
-    N: float            #: normal load [N]
-    fx: float           #: creep forces on the wheel [N]
-    fy: float
-    mz: float           #: spin moment [N m]
-    force: F64Array     #: fx t1 + fy t2 + N n [N]
-    point: F64Array     #: the pressure's centroid [m]
-    t1: F64Array        #: the patch's frame: rolling direction,
-    t2: F64Array        #: lateral in its plane,
-    n: F64Array         #: and its normal into the wheel
-    delta: float        #: the plane's angle [rad]
-    cx: float           #: creepages at the centroid [-], [-], [rad/m]
-    cy: float
-    cphi: float
-    area: float         #: contact area [m^2]
-    pmax: float         #: peak pressure [Pa]
-
-
-class NonHertzWheel(NamedTuple):
-    """One wheel's non-Hertzian contact (rig_contact(..., patch="nonhertz"))."""
-    force: F64Array     #: total contact force on the wheel, rig frame [N]
-    moment: F64Array    #: its moment about the wheelset centre [N m]
-    N: float            #: the patches' normal loads summed [N]
-    area: float         #: their areas summed [m^2]
-    pmax: float         #: the largest peak pressure [Pa]
-    centre: F64Array    #: the load-weighted force centre [m]
-    patches: Tuple[NonHertzPatch, ...]  #: NonHertzPatch per patch
-    Fz: float           #: the vertical load carried [N]
-    status: int         #: 0 ok, < 0 the wheel failed (NaN numbers, no patches)
-
-
-def _nonhertz_patch(p: Mapping[str, Any]) -> NonHertzPatch:
-    """A patch of the core's (a dict) as a NonHertzPatch, its vectors arrays."""
-    fields: Dict[str, Any] = {f: (np.array(p[f]) if f in ("force", "point", "t1", "t2", "n")
-                                  else p[f]) for f in NonHertzPatch._fields}
-    return NonHertzPatch(**fields)
-
-
-def _nonhertz_rig_contact(func: str, table: ContactTable, nonhertz: object, loads: _Loads, *,
-                          x: npt.ArrayLike, y: npt.ArrayLike, yaw: npt.ArrayLike,
-                          vx: npt.ArrayLike, vy: npt.ArrayLike, yaw_rate: npt.ArrayLike,
-                          spin: npt.ArrayLike, roller_spin: npt.ArrayLike, mu: float,
-                          friction: object, E: float, nu: float, vmin: float, method: str,
-                          options: Mapping[str, Any],
-                          errors: Optional[str]) -> RigContact[NonHertzWheel]:
-    """rig_contact's patch="nonhertz" for one state (scalars).  errors None or
-    "raise": a wheel that fails raises; "warn", "ignore": its NonHertzWheel
-    has NaN numbers, no patches and its status (< 0), the other wheel is
-    kept (and "warn" warns)."""
-    if errors not in (None, "raise", "warn", "ignore"):
-        raise RollerRigError(f"{func}: errors must be 'raise', 'warn' or 'ignore', "
-                             f"got {errors!r}")
-    from ..geometry.nonhertz import LOAD_SPAN, NonHertzTable, nonhertz_locate, nonhertz_wheel
-    if not isinstance(nonhertz, NonHertzTable):
-        raise RollerRigError(f"{func}: patch='nonhertz' needs nonhertz=, an rr.NonHertzTable "
-                             f"(rr.nonhertz_table), got {nonhertz!r:.60}")
-    if friction is not None:
-        raise RollerRigError(f"{func}: patch='nonhertz' takes Coulomb friction (friction=None)")
-    if options or method != "fastsim":
-        raise RollerRigError(f"{func}: patch='nonhertz' has its own creep method: no method or "
-                             f"options")
-    named = dict(x=x, y=y, yaw=yaw, vx=vx, vy=vy, yaw_rate=yaw_rate, spin=spin,
-                 roller_spin=roller_spin, mu=mu, vmin=vmin, E=E, nu=nu,
-                 load_left=loads[1], load_right=loads[2])
-    vals: Dict[str, float] = {}
-    for k, v in named.items():
-        a = np.asarray(v)
-        if a.ndim != 0 or isinstance(v, bool) or a.dtype.kind not in "fiu":
-            raise RollerRigError(f"{func}: patch='nonhertz' takes one state: {k} must be a "
-                                 f"number, got {v!r:.60}")
-        vals[k] = float(a)
-        if not np.isfinite(vals[k]):
-            raise RollerRigError(f"{func}: {k} = {vals[k]!r}: {status_message(-1)}")
-    G = E / (2.0 * (1.0 + nu))
-    y = vals["y"]
-    wheels: Dict[str, NonHertzWheel] = {}
-    poses: Optional[RigPose] = None
-    for side in ("left", "right"):
-        t = nonhertz.side(side)
-        if abs(t.G / G - 1) > 1e-9 or abs(t.nu - nu) > 1e-12:
-            raise RollerRigError(f"{func}: E, nu give G = {G:g} Pa, nu = {nu:g}; the nonhertz "
-                                 f"table was built for G = {t.G:g} Pa, nu = {t.nu:g}")
-        st, i, w = nonhertz_locate(t, y)
-        if st < 0:
-            ys = t.rows[:, 0]
-            raise RollerRigError(f"{func}: y = {y!r} m: beyond the nonhertz table's rows "
-                                 f"({ys[0]:g} to {ys[-1]:g} m): {status_message(st)}")
-        yr = t.rows[[i, i + 1], 0]
-        kin = rig_contact(table, x=vals["x"], y=yr, yaw=vals["yaw"], vx=vals["vx"],
-                          vy=vals["vy"], yaw_rate=vals["yaw_rate"], spin=vals["spin"],
-                          roller_spin=vals["roller_spin"], vmin=vals["vmin"],
-                          kinematics_only=True, errors="raise")
-        # the wheelset's centre, velocity, angular velocity at the two rows
-        motion0, motion1 = [tuple((float(a[0, j]), float(a[1, j]), float(a[2, j]))
-                                  for a in map(np.asarray, (kin.pose.c, kin.pose.v, kin.pose.w)))
-                            for j in range(2)]
-        load = vals[f"load_{side}"]
-        if not load > 0:
-            raise RollerRigError(f"{func}: the {side} wheel's load must be > 0, got {load!r}")
-
-        def run(Fz: float) -> Tuple[Dict[str, Any], Tuple[Dict[str, Any], ...]]:
-            st, res, pts = nonhertz_wheel(t, y, Fz, vals["mu"], vals["roller_spin"], motion0,
-                                          motion1, vmin=vals["vmin"], x=vals["x"],
-                                          yaw=vals["yaw"])
-            if st == -12:        # RR_ERR_RANGE: the vertical balance (rr_nonhertz.h)
-                raise RollerRigError(f"{func}: the {side} wheel at y = {y!r} m, Fz = {Fz!r} N: "
-                                     f"the vertical load has no balance on the table's "
-                                     f"patches (the creep forces' vertical share near or "
-                                     f"beyond Fz: the flange climbs) or a load far beyond "
-                                     f"its nodes: {status_message(st)}")
-            if st == -14:        # RR_ERR_TABLE: y is inside, so the load is not
-                raise RollerRigError(f"{func}: the {side} wheel at y = {y!r} m, Fz = {Fz!r} N: "
-                                     f"a load beyond the nonhertz table's (built for Fz = "
-                                     f"{nonhertz.Fz:g} N, its nodes to {LOAD_SPAN:.3g} times "
-                                     f"that, extrapolated to 2.8 times more): "
-                                     f"{status_message(st)}")
-            if st < 0:
-                raise RollerRigError(f"{func}: the {side} wheel at y = {y!r} m, Fz = {Fz!r} N: "
-                                     f"{status_message(st)}")
-            return res, pts
-        Fz = load
-        try:
-            res, pts = run(Fz)
-            if loads[0] == "N":
-                # the vertical load that gives the normal load asked for (N ~ Fz / n_z)
-                for _ in range(FZ_ITER):
-                    Fz *= load / res["N"]
-                    res, pts = run(Fz)
-                    if abs(res["N"] - load) <= FZ_TOL * load:
-                        break
-                else:
-                    raise RollerRigError(f"{func}: the {side} wheel's vertical load for N = "
-                                         f"{load!r} N did not settle")
-        except RollerRigError as e:
-            if errors in (None, "raise"):
-                raise
-            if errors == "warn":
-                warnings.warn(str(e), RollerRigWarning, stacklevel=3)
-            nan3 = np.full(3, np.nan)
-            wheels[side] = NonHertzWheel(nan3, nan3.copy(), np.nan, np.nan, np.nan, nan3.copy(),
-                                         (), Fz, -12)
-            poses = poses or kin.pose
-            continue
-        patches = tuple(_nonhertz_patch(p) for p in pts)
-        wheels[side] = NonHertzWheel(np.array(res["force"]), np.array(res["moment"]), res["N"],
-                                     res["area"], res["pmax"], np.array(res["centre"]), patches,
-                                     Fz, 0)
-        poses = poses or kin.pose
-    pose = rig_contact(table, x=vals["x"], y=y, yaw=vals["yaw"], vx=vals["vx"], vy=vals["vy"],
-                       yaw_rate=vals["yaw_rate"], spin=vals["spin"],
-                       roller_spin=vals["roller_spin"], vmin=vals["vmin"],
-                       kinematics_only=True, errors="raise").pose
-    return RigContact(pose, wheels["left"], wheels["right"],
-                      min(wheels["left"].status, wheels["right"].status))
 
 
 def _loads(func: str, N_left: Optional[npt.ArrayLike], N_right: Optional[npt.ArrayLike],
