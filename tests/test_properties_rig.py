@@ -9,6 +9,7 @@ Run:  python -m pytest tests/test_properties_rig.py          (profile "ci")
 simulate() and fit_polach() are whole workflows (milliseconds to a second
 per call): they get few, short examples.
 """
+import functools
 import math
 import warnings
 
@@ -219,6 +220,56 @@ def test_rig_contact_shapes_that_do_not_broadcast(shapes):
         rr.rig_contact(STANDARD_TABLE, y=np.zeros(shapes[0]), yaw=np.zeros(shapes[1]),
                        spin=50.0, roller_spin=50.0, N_left=1e3, N_right=1e3)
     assert_names_argument(exc.value, "rig_contact", ["y", "yaw"])
+
+
+# ------------------------------------------------ rig_contact, patch="nonhertz"
+
+@functools.lru_cache(maxsize=None)
+def nonhertz_cone():
+    """A full-size cone on a crowned roller and its two-row non-Hertzian table
+    (y within +-0.2 mm; states beyond fail by name)."""
+    hw = 0.05
+    g = rr.RigGeometry(wheel=rr.Profile.conical(0.025, (-hw, hw), r0=0.46, n=401),
+                       roller=rr.Profile.cylinder((-hw, hw), crown_radius=0.3, n=401),
+                       wheel_radius=0.46, roller_radius=0.8, wheel_y=0.75, roller_y=0.75)
+    return (rr.contact_table(g, -0.004, 0.004, 81),
+            rr.nonhertz_table(g, None, None, y=[-2e-4, 2e-4], Fz=5e4, mu_ref=0.4))
+
+
+NH_STATE = dict(x=signed(1e-7, 2e-3), y=uniform(-3e-4, 3e-4), yaw=signed(1e-7, 4e-3),
+                vy=signed(1e-6, 0.05), yaw_rate=signed(1e-6, 0.5), spin=uniform(9.5, 10.5),
+                roller_spin=uniform(5.5, 6.1), Fz_left=log_uniform(1e3, 2e5),
+                Fz_right=log_uniform(1e3, 2e5))
+NH_FIELDS = ("force", "moment", "N", "area", "pmax", "centre")
+
+
+@examples(1)
+@given(args=batches(NH_STATE, max_size=5))
+@example(args=dict(x=np.array([1.0, -2e-3]), y=np.array([-1.99e-4, -3e-4]), yaw=-4e-3,
+                   vy=-0.05, yaw_rate=-0.5, spin=9.5, roller_spin=5.5, Fz_left=1e3,
+                   Fz_right=1e3))   # x = 1 m: the rows' kinematics fail (escaped the batch)
+def test_nonhertz_rig_contact_batch(args):
+    """patch="nonhertz" over arrays: per wheel and state, status >= 0 and
+    every number finite with its patches, or a negative status, NaN and no
+    patches (a state beyond the rows, a load beyond the table, wild input);
+    the good states alone give the same doubles."""
+    ct, nh = nonhertz_cone()
+    kw = dict(mu=0.4, patch="nonhertz", nonhertz=nh, errors="ignore")
+    c = rr.rig_contact(ct, **args, **kw)
+    for side in ("left", "right"):
+        w = getattr(c, side)
+        assert_batch_consistent({f: getattr(w, f) for f in NH_FIELDS}, w.status, f"{side}.")
+        for s, p in zip(np.ravel(w.status), np.ravel(w.patches)):
+            assert (len(p) > 0) == (s >= 0)
+    np.testing.assert_array_equal(c.status, np.minimum(c.left.status, c.right.status))
+    good = np.flatnonzero(c.status >= 0)
+    if 0 < good.size < c.status.size:
+        alone = rr.rig_contact(ct, **subset(args, good), **kw)
+        for side in ("left", "right"):
+            for f in NH_FIELDS:
+                a, b = np.asarray(getattr(getattr(c, side), f)), np.asarray(
+                    getattr(getattr(alone, side), f))
+                np.testing.assert_array_equal(a[..., good], b, f"{side}.{f}")
 
 
 # ================================================================== linear_creepages

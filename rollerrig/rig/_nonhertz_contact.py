@@ -287,10 +287,20 @@ def _nonhertz_state(func: str, table: ContactTable, nonhertz: Any, kind: str,
             motion0, motion1 = given
         else:
             yr = t.rows[[i, i + 1], 0]
-            kin = rig_contact(table, x=vals["x"], y=yr, yaw=vals["yaw"], vx=vals["vx"],
-                              vy=vals["vy"], yaw_rate=vals["yaw_rate"], spin=vals["spin"],
-                              roller_spin=vals["roller_spin"], vmin=model["vmin"],
-                              kinematics_only=True, errors="raise")
+            kw = dict(x=vals["x"], y=yr, yaw=vals["yaw"], vx=vals["vx"], vy=vals["vy"],
+                      yaw_rate=vals["yaw_rate"], spin=vals["spin"],
+                      roller_spin=vals["roller_spin"], vmin=model["vmin"],
+                      kinematics_only=True)
+            kin = rig_contact(table, errors="ignore", **kw)
+            if np.min(kin.status) < 0:
+                # the rows' kinematics fail (an extreme x or yaw): the state does,
+                # in the words of the call that raises
+                code = int(np.min(kin.status))
+                try:
+                    rig_contact(table, errors="raise", **kw)
+                except RollerRigError as e:
+                    raise _StateFailure(str(e), code) from None
+                raise _StateFailure(f"{func}: {status_message(code)}", code)
             # the wheelset's centre, velocity, angular velocity at the two rows
             motion0, motion1 = [tuple((float(a[0, j]), float(a[1, j]), float(a[2, j]))
                                       for a in map(np.asarray, (kin.pose.c, kin.pose.v,
