@@ -272,6 +272,44 @@ def test_nonhertz_rig_contact_batch(args):
                 np.testing.assert_array_equal(a[..., good], b, f"{side}.{f}")
 
 
+# ------------------------------------------------ rig_exact
+
+EXACT_GEOMETRY = rr.RigGeometry.measured_pair()
+EXACT_TABLE = rr.contact_table(EXACT_GEOMETRY, -0.0075, 0.0075, 151)
+EXACT_CASE = dict(y_ws=uniform(-7e-3, 7e-3), Fz=log_uniform(1e3, 2e5), mu=log_uniform(0.05, 1.0),
+                  spin=uniform(12.0, 12.8), roller_spin=uniform(5.5, 5.7),
+                  vy=signed(1e-6, 0.05), yaw_rate=signed(1e-6, 0.5))
+
+
+@examples(0.5)
+@given(args=cases(EXACT_CASE), n=st.integers(8, 20), side=st.sampled_from(["left", "right"]))
+# found: errors named wheelset_contact or rig_contact, not rig_exact
+@example(args=dict(y_ws=1.0, Fz=1e3, mu=0.05, spin=12.0, roller_spin=5.5, vy=-0.05,
+                   yaw_rate=-0.5), n=8, side="left")
+@example(args=dict(y_ws=0.0, Fz=6e4, mu=0.5, spin=float("nan"), roller_spin=5.5, vy=0.0,
+                   yaw_rate=0.0), n=8, side="left")
+@example(args=dict(y_ws=-0.007, Fz=6e4, mu=0.5, spin=12.4, roller_spin=5.5, vy=1.75e308,
+                   yaw_rate=0.0), n=8, side="left")
+def test_rig_exact_finite_or_named_error(args, n, side):
+    """The exact theory on a wheel's own patch of the measured pair, any
+    shift, load, friction and motion (or wild values): a finite solution
+    carrying the vertical load, or a RollerRigError naming the function;
+    never another exception, never a non-finite number with success."""
+    args = dict(args)
+    y_ws = args.pop("y_ws")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RollerRigWarning)
+        try:
+            e = rr.rig_exact(EXACT_GEOMETRY, y_ws, side=side, n=n, table=EXACT_TABLE, **args)
+        except RollerRigError as err:
+            assert str(err).startswith(("rig_exact:", "undeformed_distance:")), str(err)
+            return
+    s = e.solution
+    assert_finite(dict(fx=s.fx, fy=s.fy, mz=s.mz, fn=s.fn, N=e.N, cx=e.cx, cy=e.cy, cphi=e.cphi),
+                  "rig_exact: ")
+    assert np.all(np.isfinite(e.force)) and abs(e.force[2] / args["Fz"] - 1) < 1e-5
+
+
 # ================================================================== linear_creepages
 
 LINEAR_ARGS = ("y", "yaw", "vx", "vy", "yaw_rate", "spin", "roller_spin", "table")

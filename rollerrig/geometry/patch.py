@@ -161,7 +161,13 @@ def _pose_and_point(func: str, geometry: RigGeometry, y_ws: float,
     if side not in ("left", "right"):
         raise RollerRigError(f"{func}: side must be 'left' or 'right', got {side!r}")
     y_ws = check_number(func, "y_ws", y_ws)
-    c = wheelset_contact(geometry, y_ws)
+    c = wheelset_contact(geometry, y_ws, errors="ignore")
+    if c.status[0] < 0:
+        raise RollerRigError(f"{func}: y_ws = {y_ws!r} m: no rigid contact of the wheelset "
+                             f"there: {status_message(int(c.status[0]))}")
+    if c.status[0] > 0:
+        warnings.warn(f"{func}: y_ws = {y_ws!r} m: the wheelset's rigid contact: "
+                      f"{status_message(int(c.status[0]))}", RollerRigWarning, stacklevel=3)
     return float(c.z[0]), float(c.roll[0]), getattr(c, side)
 
 

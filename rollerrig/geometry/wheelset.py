@@ -342,7 +342,9 @@ def wheelset_contact(geometry: RigGeometry, y_ws: npt.ArrayLike, *, nsamples: in
         *geometry._arrays(), geometry._params(), y, *opts)
     if errors is None:
         errors = "raise" if np.ndim(y_ws) == 0 else "warn"
-    check_status(func, status, {"y_ws": y}, errors)
+    # a scalar y_ws's message names no index (its results stay arrays of one)
+    shape = np.shape(y_ws) if np.ndim(y_ws) == 0 else status.shape
+    check_status(func, status.reshape(shape), {"y_ws": y.reshape(shape)}, errors)
     return WheelsetContact(y, z, roll, _side(left), _side(right), status)
 
 
