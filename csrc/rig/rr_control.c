@@ -131,8 +131,9 @@ static int loop_matrix(const rr_speed_loop *l, double T, double A[LOOP_N * LOOP_
 {
     const double kp = l->pi.Kp * T / l->J, ki = l->pi.KI * T / l->J, a = T / l->tau;
     const double E = exp(-a), k = kp + ki;
-    /* G2 = (a - 1 + exp(-a))/a^2 loses its digits for small a: its series */
-    const double G1 = -expm1(-a) / a;
+    /* G2 = (a - 1 + exp(-a))/a^2 loses its digits for small a: its series;
+     * G1 is 1 at a = 0 (T / tau underflows: a subnormal T, a huge tau) */
+    const double G1 = a > 0.0 ? -expm1(-a) / a : 1.0;
     const double G2 = a < 1e-3 ? 0.5 - a / 6.0 + a * a / 24.0 : (1.0 - G1) / a;
     /* e and u as rows over the states (w, m, z, I, r) */
     const double e[LOOP_N] = {0.0, 0.0, -(1.0 + l->alpha), 0.0, 1.0};

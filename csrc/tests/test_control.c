@@ -992,6 +992,15 @@ static void test_speed_loop(void)
     CHECK_STATUS(rr_speed_loop_radius(&l, &rho), RR_OK, "no gains");
     CHECK_CLOSE(rho, 1.0, 1e-12, 0.0, "a held speed: radius 1");
     CHECK_STATUS(rr_speed_loop_check(&l), RR_OK, "held, not growing: stable");
+    /* the same where T / tau underflows to 0 (a subnormal sample, a huge lag:
+     * G1 = (1 - exp(-a)) / a was 0/0 and the radius +inf; fuzz_control) */
+    l.pi.T = 8.1482516377275492e-310;
+    l.tau = 2.1789786685991768e+158;
+    CHECK_STATUS(rr_speed_loop_radius(&l, &rho), RR_OK, "no gains, T / tau = 0");
+    CHECK_CLOSE(rho, 1.0, 1e-12, 0.0, "T / tau = 0: radius 1");
+    CHECK_STATUS(rr_speed_loop_check(&l), RR_OK, "T / tau = 0: stable");
+    l.pi.T = 0.1;
+    l.tau = 1e-3;
     /* gains beyond any stable value: no stable time, NaN limits */
     l.pi.Kp = 1e300;
     l.J = 1e-300;
