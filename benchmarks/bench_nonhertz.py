@@ -31,7 +31,7 @@ from run to run.
     python benchmarks/bench_nonhertz.py --chain [--repeat R] [--every K] [--grid G]
 
 times the full chain alone, with whichever rollerrig the interpreter
-imports: run it with another checkout's environment for its "before" (the
+imports, and the C call's part of it (rr_wheel_exact through the binding): run it with another checkout's environment for its "before" (the
 warm starts of issue 24: main's build, then this one's, one after the
 other), one row per grid with the solves per case.  The instruction
 count of the C core (the measure on a shared machine):
@@ -77,29 +77,66 @@ def timed(f, c, repeat):
     return float(np.median(t)), out
 
 
+class _CoreTimer:
+    """rollerrig.rig.exact's _core with wheel_exact timed: the C call alone
+    (rr_wheel_exact and the binding's arrays), apart from rig_exact's Python."""
+
+    def __init__(self, core):
+        self._core, self.spent = core, 0.0
+
+    def __getattr__(self, name):
+        return getattr(self._core, name)
+
+    def wheel_exact(self, *args):
+        t0 = time.perf_counter()
+        try:
+            return self._core.wheel_exact(*args)
+        finally:
+            self.spent += time.perf_counter() - t0
+
+
 def chain_only(geo, tables, cs, repeat, grids="both"):
     """The full chain of the rollerrig imported, on both grids: ms per case
-    (median, p95, max over the cases of each case's median of R repeats), and the
-    solves per case (median, max)."""
+    (median, p95, max over the cases of each case's median of R repeats),
+    the C call's share of it (rr_wheel_exact through the binding, the same
+    statistics), and the solves per case (median, max)."""
+    import rollerrig.rig.exact as exact
     print(f"rollerrig from {os.path.dirname(rr.__file__)}")
-    print("| full chain | ms per case, median | p95 | max | solves per case, median | max |")
-    print("|---|---|---|---|---|---|")
-    for name, grid in (("0.4 mm", True), ("n = 40", False)):
-        if grids != "both" and grid != (grids == "0.4"):
-            continue
+    print("| full chain | ms per case, median | p95 | max | the C call: median | p95 | max "
+          "| solves per case, median | max |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    timer = _CoreTimer(exact._core)
+    exact._core = timer
+    try:
+        for name, grid in (("0.4 mm", True), ("n = 40", False)):
+            if grids != "both" and grid != (grids == "0.4"):
+                continue
 
-        def chain(c):
-            kw = dict(dx=c["dx"], dy=c["ds"]) if grid else {}
-            return rr.rig_exact(geo[c["pair"]], c["y_ws"], Fz=c["FZ"], mu=c["mu"],
-                                spin=c["spin"], roller_spin=c["roller_spin"],
-                                E=2 * c["G"] * (1 + c["nu"]), nu=c["nu"],
-                                table=tables[c["pair"]], **kw)
-        chain(cs[0])                                     # warm up
-        res = [timed(chain, c, repeat) for c in cs]
-        t = 1e3 * np.array([r[0] for r in res])
-        p = np.array([r[1].passes for r in res])
-        print(f"| {name} | {np.median(t):.2f} | {np.percentile(t, 95):.2f} | {t.max():.2f} | "
-              f"{np.median(p):g} | {p.max()} |")
+            def chain(c):
+                kw = dict(dx=c["dx"], dy=c["ds"]) if grid else {}
+                return rr.rig_exact(geo[c["pair"]], c["y_ws"], Fz=c["FZ"], mu=c["mu"],
+                                    spin=c["spin"], roller_spin=c["roller_spin"],
+                                    E=2 * c["G"] * (1 + c["nu"]), nu=c["nu"],
+                                    table=tables[c["pair"]], **kw)
+            chain(cs[0])                                     # warm up
+            t, tc, p = [], [], []
+            for c in cs:
+                whole, core = [], []
+                for _ in range(repeat):
+                    timer.spent = 0.0
+                    t0 = time.perf_counter()
+                    out = chain(c)
+                    whole.append(time.perf_counter() - t0)
+                    core.append(timer.spent)
+                t.append(np.median(whole))
+                tc.append(np.median(core))
+                p.append(out.passes)
+            t, tc, p = 1e3 * np.array(t), 1e3 * np.array(tc), np.array(p)
+            print(f"| {name} | {np.median(t):.2f} | {np.percentile(t, 95):.2f} | {t.max():.2f} "
+                  f"| {np.median(tc):.2f} | {np.percentile(tc, 95):.2f} | {tc.max():.2f} "
+                  f"| {np.median(p):g} | {p.max()} |")
+    finally:
+        exact._core = timer._core
 
 
 def main():
