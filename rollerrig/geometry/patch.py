@@ -389,7 +389,12 @@ def undeformed_distance(geometry: RigGeometry, y_ws: float, *, side: str = "left
         if N is None:
             raise RollerRigError(f"{func}: give the normal load N [N] or the approach [m]")
         from ..contact.creep import hertz
-        approach = float(hertz(float(cpt.A[0]), float(cpt.B[0]), float(N), E=E, nu=nu).delta)
+        try:
+            approach = float(hertz(float(cpt.A[0]), float(cpt.B[0]), float(N), E=E,
+                                   nu=nu).delta)
+        except RollerRigError as e:      # Hertz's approach at the contact point
+            raise RollerRigError(f"{func}: Hertz's approach for N at the contact point: "
+                                 f"{e}") from None
     approach = float(approach)
     cover = check_number(func, "cover", cover, positive=True)
     if cover < 1.0:

@@ -298,7 +298,7 @@ def _wheel_error(func: str, status: int, pinfo: Dict[str, Any], rinfo: Dict[str,
                                  load, rinfo["z"], rinfo["roll"]))
         if rinfo["fail_pass"] and (dx is not None or dy is not None):
             return RollerRigError(f"{func}: the first pass, on elements twice dx, dy: {msg}")
-        return RollerRigError(msg)
+        return RollerRigError(f"{func}: the patch: {msg}")
     if why == _core.WHEEL_EXACT_EDGE:
         return RollerRigError(f"{func}: at y_ws = {y_ws!r} m the contact keeps reaching the "
                               f"grid's edge")
