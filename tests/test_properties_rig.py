@@ -272,6 +272,35 @@ def test_nonhertz_rig_contact_batch(args):
                 np.testing.assert_array_equal(a[..., good], b, f"{side}.{f}")
 
 
+# ------------------------------------------------ nonhertz_table
+
+TABLE_CASE = dict(y0=uniform(-6e-3, 6e-3), Fz=log_uniform(1e2, 3e5),
+                  mu_ref=log_uniform(0.05, 1.0), combine=log_uniform(1e-5, 0.05))
+
+
+@examples(0.2)
+@given(args=cases(TABLE_CASE), n=st.integers(8, 24), side=st.sampled_from(["left", "right"]))
+@example(args=dict(y0=1.0, Fz=6e4, mu_ref=0.5, combine=4e-3), n=8,
+         side="left")                           # was named wheelset_contact:
+def test_nonhertz_table_finite_or_named_error(args, n, side):
+    """Two rows of the measured pair's table at any shift, load, friction and
+    region spacing (or wild values): finite rows, or a RollerRigError naming
+    nonhertz_table; never another exception."""
+    y0 = args["y0"]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RollerRigWarning)
+        try:
+            t = rr.nonhertz_table(EXACT_GEOMETRY, None, None, y=[y0, y0 + 1e-4], Fz=args["Fz"],
+                                  mu_ref=args["mu_ref"], combine=args["combine"], n=n,
+                                  n_corr=max(8, n // 2), richardson=False, sides=(side,),
+                                  workers=1)
+        except RollerRigError as err:
+            assert str(err).startswith("nonhertz_table:"), str(err)
+            return
+    rows = t.side(side).rows
+    assert rows.shape[0] == 2 and np.all(np.isfinite(rows))
+
+
 # ------------------------------------------------ rig_exact
 
 EXACT_GEOMETRY = rr.RigGeometry.measured_pair()

@@ -378,7 +378,11 @@ def _row(geometry: RigGeometry, side: str, y: float, Fz: float, E: float, nu: fl
          mu_ref: float, n: int, n_corr: int, richardson: bool, combine: float, tol: float,
          maxit: int) -> Tuple[F64Array, Dict[str, int]]:
     """One row by the core (rr_nonhertz_row), the GIL released."""
-    c = wheelset_contact(geometry, y)
+    c = wheelset_contact(geometry, y, errors="ignore")
+    if c.status[0] < 0:
+        raise RollerRigError(f"nonhertz_table: the {side} side at y = {y!r} m: no rigid "
+                             f"contact of the wheelset there: "
+                             f"{status_message(int(c.status[0]))}")
     z0, roll0, p = float(c.z[0]), float(c.roll[0]), getattr(c, side)
     point = tuple(float(getattr(p, k)[0]) for k in ("s_roller", "s_wheel", "delta", "A", "B"))
     # the wheelset's motion at free rolling (rig_contact's at zero yaw and
