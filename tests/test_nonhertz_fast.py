@@ -395,6 +395,12 @@ def test_arrays_of_states_are_each_states_call():
     (dict(y=[0.0]), r"at least two finite rows"),
     (dict(sides=("middle",)), r"sides must name"),
     (dict(y_min=1e-3, y_max=0.0, y=None), r"y_max must exceed y_min"),
+    # bounded before any row is made (a tiny step was numpy's ValueError)
+    (dict(y_min=0.0, y_max=1e-4, dy=1e-300, y=None), r"would make 1e\+296 rows a side, "
+                                                     r"at most 20000"),
+    (dict(y_min=0.0, y_max=1e-4, dy_jump=1e-12, y=None), r"dy_jump = 1e-12 m would make"),
+    (dict(y_min=-1.0, y_max=1.0, y=None), r"y_max - y_min = 2.0 m, at most 0.1 m"),
+    (dict(y=np.arange(20001) * 1e-7), r"20001 rows a side, at most 20000"),
 ])
 def test_the_table_refuses_bad_input(kwargs, match):
     g = cone_on_crown()[0]

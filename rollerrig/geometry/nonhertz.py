@@ -45,6 +45,8 @@ LOAD_SPAN = 1.6 * 1.1 ** 1.5
 JUMP = 0.5e-3
 #: rows within this distance of a jump are refined
 JUMP_ZONE = 0.3e-3
+#: rows a side at most (640 doubles each: 100 MB), and the widest range of shifts [m]
+MAX_ROWS, MAX_SPAN = 20000, 0.1
 
 #: a wheelset's motion at a row as the core takes it: ((centre), (velocity),
 #: (angular velocity)), rig frame
@@ -332,8 +334,17 @@ def nonhertz_table(geometry: RigGeometry, y_min: Optional[float], y_max: Optiona
         dy = check_number(func, "dy", dy, positive=True)
         if not y_max > y_min:
             raise RollerRigError(f"{func}: y_max must exceed y_min, got {y_min!r}, {y_max!r}")
+        if not y_max - y_min <= MAX_SPAN:
+            raise RollerRigError(f"{func}: y_max - y_min = {y_max - y_min!r} m, at most "
+                                 f"{MAX_SPAN:g} m (a wheelset's lateral shifts)")
         if dy_jump is not None:
             dy_jump = check_number(func, "dy_jump", dy_jump, positive=True)
+        # bounded before any is made: a tiny step asked for rows without end
+        count = (y_max - y_min) / dy + (0.0 if dy_jump is None else 2 * JUMP_ZONE / dy_jump)
+        if not count <= MAX_ROWS:
+            raise RollerRigError(f"{func}: dy = {dy!r} m, dy_jump = {dy_jump!r} m would make "
+                                 f"{count:.3g} rows a side, at most {MAX_ROWS} (give larger "
+                                 f"steps)")
     G = E / (2.0 * (1.0 + nu))
     t0 = time.perf_counter()
     out: Dict[str, Optional[NonHertzSide]] = {}
@@ -348,6 +359,8 @@ def nonhertz_table(geometry: RigGeometry, y_min: Optional[float], y_max: Optiona
             ys = row_shifts(geometry, y_min, y_max, dy, side, dy_jump)
         if ys.size < 2 or not np.all(np.isfinite(ys)):
             raise RollerRigError(f"{func}: at least two finite rows are needed, got {ys!r:.80}")
+        if ys.size > MAX_ROWS:
+            raise RollerRigError(f"{func}: {ys.size} rows a side, at most {MAX_ROWS}")
         with ThreadPoolExecutor(max_workers=int(workers)) as ex:
             built = list(ex.map(lambda v: _row(geometry, side, float(v), Fz, E, nu, mu_ref, n,
                                                n_corr, richardson, combine, tol, maxit), ys))
