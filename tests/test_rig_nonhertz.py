@@ -191,6 +191,12 @@ def test_bad_patch_and_table_files_name_the_argument(tmp_path):
                    ("nonhertz_elements", 2)):
         with pytest.raises(rr.RollerRigError, match=f"contact.{key}"):
             rr.simulate(params={"contact": {"patch": "nonhertz", key: v}}, duration=0.1, targets=[0.02])
+    # rows and range bounded before the build (a tiny spacing was numpy's ValueError)
+    for key, v, msg in (("nonhertz_row_spacing_m", 1e-300, r"would make 5e\+297 rows a side, "
+                                                          r"at most 20000"),
+                        ("nonhertz_half_range_m", 10.0, r"span at most 0.1 m")):
+        with pytest.raises(rr.RollerRigError, match=f"contact.{key} = .*{msg}"):
+            rr.rig_nonhertz_table({"contact": {"patch": "nonhertz", key: v}})
 
 
 def test_the_pair_key_names_profiles_and_scales():

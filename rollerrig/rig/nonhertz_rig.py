@@ -29,7 +29,8 @@ import numpy.typing as npt
 
 from .._errors import RollerRigError, RollerRigWarning
 from .._typing import F64Array
-from ..geometry.nonhertz import LOAD_SPAN, NonHertzSide, NonHertzTable, nonhertz_table
+from ..geometry.nonhertz import (LOAD_SPAN, MAX_ROWS, MAX_SPAN, NonHertzSide, NonHertzTable,
+                                 nonhertz_table)
 from ..geometry.wheelset import ContactTable, RigGeometry, wheelset_contact
 from . import real_profiles as _real_profiles
 
@@ -130,9 +131,18 @@ def _rows(geometry: RigGeometry, side: str, half: float, dy: float, scale: float
 
 
 def _settings(P: _Params) -> Tuple[float, float, int]:
+    """(half range, row spacing, elements); rows and range bounded as
+    nonhertz_table bounds them, checked before the build's long work."""
     C = P["contact"]
-    return (float(C["nonhertz_half_range_m"]), float(C["nonhertz_row_spacing_m"]),
-            int(C["nonhertz_elements"]))
+    half, dy = float(C["nonhertz_half_range_m"]), float(C["nonhertz_row_spacing_m"])
+    if not 2.0 * half <= MAX_SPAN:
+        raise RollerRigError(f"contact.nonhertz_half_range_m = {half!r}: the table's shifts "
+                             f"span at most {MAX_SPAN:g} m")
+    if not 2.0 * half / dy <= MAX_ROWS:
+        raise RollerRigError(f"contact.nonhertz_row_spacing_m = {dy!r} over "
+                             f"contact.nonhertz_half_range_m = {half!r} would make "
+                             f"{2.0 * half / dy:.3g} rows a side, at most {MAX_ROWS}")
+    return half, dy, int(C["nonhertz_elements"])
 
 
 #: rows built together (two threads)
