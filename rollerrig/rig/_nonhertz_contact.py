@@ -247,13 +247,14 @@ def _row_motions(rig_contact: _RigContactFn, table: ContactTable, t: Any,
                       yaw_rate=two["yaw_rate"], spin=two["spin"],
                       roller_spin=two["roller_spin"], vmin=vmin, kinematics_only=True,
                       errors="ignore")
-    c, v, w = (np.asarray(a) for a in (kin.pose.c, kin.pose.v, kin.pose.w))
+    c, v, w = (np.asarray(a) for a in (kin.pose.c, kin.pose.v, kin.pose.w))   # (3, 2, n)
+    ok = np.all(np.isfinite(c) & np.isfinite(v) & np.isfinite(w), axis=(0, 1)).tolist()
+    cl, vl, wl = (a.transpose(2, 1, 0).tolist() for a in (c, v, w))        # [state][row][k]
     out: List[Optional[Tuple[_Motion, _Motion]]] = []
     for i in range(n):
-        m0, m1 = (tuple((float(a[0, r, i]), float(a[1, r, i]), float(a[2, r, i]))
-                        for a in (c, v, w)) for r in range(2))
-        ok = all(np.isfinite(x) for m in (m0, m1) for vec in m for x in vec)
-        out.append((m0, m1) if ok else None)
+        m0, m1 = (tuple((a[i][r][0], a[i][r][1], a[i][r][2]) for a in (cl, vl, wl))
+                  for r in range(2))
+        out.append((m0, m1) if ok[i] else None)
     return out
 
 
