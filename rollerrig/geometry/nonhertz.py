@@ -33,6 +33,7 @@ import numpy.typing as npt
 from .. import _core
 from .._errors import RollerRigError, RollerRigWarning, check_number, status_message
 from .._typing import F64Array
+from .patch import _pose_and_point
 from .wheelset import RigGeometry, wheelset_contact
 
 __all__ = ["NonHertzSide", "NonHertzTable", "nonhertz_table"]
@@ -391,12 +392,7 @@ def _row(geometry: RigGeometry, side: str, y: float, Fz: float, E: float, nu: fl
          mu_ref: float, n: int, n_corr: int, richardson: bool, combine: float, tol: float,
          maxit: int) -> Tuple[F64Array, Dict[str, int]]:
     """One row by the core (rr_nonhertz_row), the GIL released."""
-    c = wheelset_contact(geometry, y, errors="ignore")
-    if c.status[0] < 0:
-        raise RollerRigError(f"nonhertz_table: the {side} side at y = {y!r} m: no rigid "
-                             f"contact of the wheelset there: "
-                             f"{status_message(int(c.status[0]))}")
-    z0, roll0, p = float(c.z[0]), float(c.roll[0]), getattr(c, side)
+    z0, roll0, p = _pose_and_point("nonhertz_table", geometry, y, side)
     point = tuple(float(getattr(p, k)[0]) for k in ("s_roller", "s_wheel", "delta", "A", "B"))
     # the wheelset's motion at free rolling (rig_contact's at zero yaw and
     # lateral speed: centre (0, y, z0), spin about the rolled axle); the

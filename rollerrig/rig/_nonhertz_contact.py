@@ -92,7 +92,7 @@ def nonhertz_rig_contact(func: str, table: ContactTable, nonhertz: object, loads
                           rig_contact: _RigContactFn, make: Callable[..., Any],
                           settle: Tuple[float, int]) -> Any:
     """rig_contact's patch="nonhertz": the states broadcast, one at a time
-    (each wheel by rr_nonhertz_wheel, the GIL released), the results as the
+    (each wheel one rr_nonhertz_wheel call), the results as the
     Hertzian call's (arrays of the broadcast shape, 3-vectors (3, ...),
     numbers for a call on scalars).  errors as for the Hertzian call (None:
     "raise" on scalars, "warn" on arrays).  On a scalar call with "warn" or
@@ -155,7 +155,7 @@ def nonhertz_rig_contact(func: str, table: ContactTable, nonhertz: object, loads
                            roller_spin=vals["roller_spin"], vmin=model["vmin"],
                            kinematics_only=True, errors="raise").pose
         return make(pose, wheels["left"], wheels["right"],
-                          min(wheels["left"].status, wheels["right"].status))
+                    min(wheels["left"].status, wheels["right"].status))
     n = int(np.prod(shape, dtype=np.int64))
     motions = {side: _row_motions(rig_contact, table, nonhertz.side(side), flat, model["vmin"])
                for side in ("left", "right")}
@@ -278,15 +278,15 @@ def _nonhertz_state(func: str, table: ContactTable, nonhertz: Any, kind: str,
     wheels: Dict[str, Any] = {}
     for side in ("left", "right"):
         t = nonhertz.side(side)
-        st, i, w = nonhertz_locate(t, y)
-        if st < 0:
-            ys = t.rows[:, 0]
-            raise _StateFailure(f"{func}: y = {y!r} m: beyond the nonhertz table's rows "
-                                f"({ys[0]:g} to {ys[-1]:g} m): {status_message(st)}", st)
         given = motions[side] if motions is not None else None
-        if given is not None:
+        if given is not None:                # its rows located by _row_motions
             motion0, motion1 = given
         else:
+            st, i, w = nonhertz_locate(t, y)
+            if st < 0:
+                ys = t.rows[:, 0]
+                raise _StateFailure(f"{func}: y = {y!r} m: beyond the nonhertz table's rows "
+                                    f"({ys[0]:g} to {ys[-1]:g} m): {status_message(st)}", st)
             yr = t.rows[[i, i + 1], 0]
             kw = dict(x=vals["x"], y=yr, yaw=vals["yaw"], vx=vals["vx"], vy=vals["vy"],
                       yaw_rate=vals["yaw_rate"], spin=vals["spin"],

@@ -250,10 +250,6 @@ def rig_exact(geometry: RigGeometry, y_ws: float, *, mu: float, N: Optional[floa
     else:
         assert spin is not None and roller_spin is not None         # (checked above)
         creep = (0, 0.0, 0.0, 0.0)
-        spin, roller_spin = check_number(func, "spin", spin), check_number(func, "roller_spin",
-                                                                           roller_spin)
-        vy, yaw_rate = check_number(func, "vy", vy), check_number(func, "yaw_rate", yaw_rate)
-        vmin = check_number(func, "vmin", vmin, positive=True)
         try:
             motion = _motion(geometry, y_ws, spin, roller_spin, vy, yaw_rate, vmin, table)
         except RollerRigError as e:          # the rig's kinematics refuse the motion
