@@ -110,6 +110,16 @@ static void test_spline_fit(void)
     CHECK_STATUS(rr_spline_fit(NP, y, z, 1, s, c2, c3, w), RR_ERR_RANGE, "fit: h^3 overflows");
     CHECK(all_nan(s, NP) && all_nan(c2, NP - 1) && all_nan(c3, NP - 1), "fit: h^3 -> NaN");
     {
+        /* fuzz_spline_fit: finite coefficients, but over the 1000 m last
+         * interval c2 h^2 and c3 h^3 each overflow (their sum does not) */
+        const double yy[4] = {0.0, 0.00097855699711994477, 0.010978554118196935,
+                              1000.0109785541182};
+        const double zz[4] = {-4.017429170375668e+56, 1e300, 0.0073333333333333358, 1e300};
+        CHECK_STATUS(rr_spline_fit(4, yy, zz, 0, s, c2, c3, w), RR_ERR_RANGE,
+                     "fit: c2 h^2 overflows");
+        CHECK(all_nan(s, 4) && all_nan(c2, 3) && all_nan(c3, 3), "fit: c2 h^2 -> NaN");
+    }
+    {
         /* fuzz_spline_fit: c3 finite but 6 c3 infinite, times t = 0 NaN */
         double cc2[NP], cc3[NP];
         for (i = 0; i < NP; i++) {

@@ -233,8 +233,11 @@ int rr_spline_fit(int n, const double *y, const double *z, int end, double *slop
         c3[i] = (slope[i] + slope[i + 1] - 2.0 * d) / (h * h);
         /* an interval so long that h^3 overflows: c3 (of the order of
          * z / h^3) rounds to 0 and the coefficients no longer give the
-         * spline (a finite wrong answer) */
-        if (!isfinite(h * h * h))
+         * spline (a finite wrong answer); and terms that overflow over
+         * their interval (c2 h^2 against c3 h^3, each beyond DBL_MAX
+         * though their sum is not): no one can evaluate that spline */
+        if (!isfinite(h * h * h) || !isfinite(c2[i] * h * h) || !isfinite(c3[i] * h * h * h)
+            || !isfinite(3.0 * c3[i] * h * h))
             c3[i] = NAN;
     }
     if (!rr_all_finite(slope, n) || !rr_all_finite(c2, n - 1) || !rr_all_finite(c3, n - 1)) {

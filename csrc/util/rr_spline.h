@@ -81,8 +81,9 @@ enum rr_spline_end {
  *            c3 or work NULL), RR_ERR_PARAM (n out of range, end unknown),
  *            RR_ERR_NONFINITE, RR_ERR_GEOMETRY (y not strictly increasing),
  *            RR_ERR_RANGE (a coefficient not finite: points far too close
- *            for their values, or an interval so long, beyond 5e102, that
- *            its cube overflows).  On error the outputs it can reach are NaN.
+ *            for their values, an interval so long, beyond 5e102, that
+ *            its cube overflows, or a term c2 h^2 or c3 h^3 that overflows
+ *            over its interval).  On error the outputs it can reach are NaN.
  */
 int rr_spline_fit(int n, const double *y, const double *z, int end, double *slope,
                   double *c2, double *c3, double *work);
