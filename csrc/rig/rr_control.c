@@ -239,7 +239,9 @@ static double edge(const rr_speed_loop *l, double stable, double unstable)
 {
     int i;
     for (i = 0; i < 200 && fabs(unstable - stable) > 1e-9 * stable; i++) {
-        const double mid = sqrt(stable * unstable);
+        /* the geometric mean, each root apart: stable * unstable
+         * underflows to 0 (or overflows) at the ends of the double range */
+        const double mid = sqrt(stable) * sqrt(unstable);
         if (stable_at(l, mid))
             stable = mid;
         else

@@ -1008,6 +1008,22 @@ static void test_speed_loop(void)
     CHECK(isinf(rho), "radius +inf");
     CHECK_STATUS(rr_speed_loop_range(&l, 1e-6, 0.1, &lo, &hi), RR_ERR_PARAM, "no stable time");
     CHECK(isnan(lo) && isnan(hi), "NaN limits");
+    /* a stable range that ends among the tiniest times: the bisection's
+     * geometric mean sqrt(a b) underflowed to 0, so the range ended at 0,
+     * below its own start (fuzz_control) */
+    l.pi.T = 1.0346860992996427e-06;
+    l.pi.KI = 48.760403844664445;
+    l.J = 8.620040870995247;
+    l.tau = 1.1191909246743634e-204;
+    CHECK_STATUS(rr_speed_loop_range(&l, 2.1502881457880059e-290, 2.1502881457880058e-210, &lo,
+                                     &hi), RR_OK, "range among the tiniest times");
+    CHECK(lo == 2.1502881457880059e-290 && hi >= lo && hi < 2.1502881457880058e-210,
+          "the range inside the times asked");
+    l.pi.T = hi;
+    CHECK_STATUS(rr_speed_loop_check(&l), RR_OK, "stable at the range's end");
+    l.pi.T = 0.1;
+    l.pi.KI = 0.0;
+    l.tau = 1e-3;
 
     /* errors */
     l.pi.Kp = 300.0;
