@@ -302,7 +302,10 @@ int rr_wheelset_contact(const rr_wheel_roller *left, const rr_wheel_roller *righ
         if (fabs(cl->gap) < 1e-13 && fabs(cr->gap) < 1e-13)
             break;
         droll = -(cl->gap - cr->gap) / (cl->y - cr->y);
-        z += -cl->gap - (cl->y - y_ws) * droll;
+        /* dz from both rows' mean: the mirrored shift (sides swapped,
+         * droll negated) then gives the same z bit for bit, where one
+         * side's row alone rounds differently from the other's */
+        z += -0.5 * (cl->gap + cr->gap) - 0.5 * ((cl->y - y_ws) + (cr->y - y_ws)) * droll;
         roll += droll;
     }
     if (!isfinite(cl->gap) || !isfinite(cr->gap)) {
