@@ -351,7 +351,8 @@ static void check_field(int st, const rr_contact_problem *c, const rr_friction *
         return;
     if (fl->pn && isfinite(sum_p * area) && !(fabs(sum_p * area - c->N) <= 1e-9 * c->N))
         fz_fail("%s: pressure sums to %.17g, not N = %.17g", fn, sum_p * area, c->N);
-    scale = 1e-9 * fr->mu0 * c->N;
+    /* mu0 N first: 1e-9 mu0 underflows to 0 for a subnormal mu0 */
+    scale = 1e-9 * (fr->mu0 * c->N);
     if (fl->px && isfinite(sum_x * area) && !(fabs(sum_x * area - f->fx) <= scale))
         fz_fail("%s: px sums to %.17g, not fx = %.17g", fn, sum_x * area, f->fx);
     if (fl->py && isfinite(sum_y * area) && !(fabs(sum_y * area - f->fy) <= scale))

@@ -339,7 +339,7 @@ static void warm_start(fz_in *in, const rr_exact_problem *pb, double *work, size
         if (f && f->pn)
             check_fields(pb, sw, &rw, &fw);
         if (st == RR_OK && sw == RR_OK && pb->tol <= 1e-8
-            && !(hypot(rw.fx - r->fx, rw.fy - r->fy) <= 1e-3 * pb->mu * pb->N))
+            && !(hypot(rw.fx - r->fx, rw.fy - r->fy) <= 1e-3 * (pb->mu * pb->N)))
             fz_fail("rr_exact_solve_from: (%.17g, %.17g), the cold solve (%.17g, %.17g)", rw.fx,
                     rw.fy, r->fx, r->fy);
     }
