@@ -716,6 +716,8 @@ def test_fit_polach_on_its_own_curves(mu0, kA, ratio, A, B, speeds):
          speed=10.0)                               # scipy's raw ValueError (SVD of inf)
 @example(cx=[2.1199606298837714e+154], force=[2.1199606298837714e+154], a=6e-3,
          N=2.1199606298830757e+154, speed=10.0)    # creep_forces' message, not fit_polach's
+@example(cx=[0.0, 0.0625], force=[0.0, 1.7900366715866362e-91], a=6e-3, N=2e4,
+         speed=10.0)                               # scipy's divide by zero, all but no force
 def test_fit_polach_any_data_finite_or_named(cx, force, a, N, speed):
     names = ("cx", "force", "a", "b", "N", "G", "nu", "speed", "cy", "cphi", "weights", "x0",
              "fit", "bounds")

@@ -392,9 +392,11 @@ def _fit(func: str, model: str, spec: Spec, cx: object, force: object, a: object
     for t0 in _starts(theta0, inner, lo, hi, x0, stiffness):
         try:
             # data too extreme overflow in scipy's own arithmetic (its squares of
-            # the Jacobian) before it gives up: the error below says so, numpy's
-            # warnings would only come first
-            with np.errstate(over="ignore", invalid="ignore"):
+            # the Jacobian) before it gives up, and data all but zero (forces of
+            # 1e-91 N) divide by zero in its trust-region step: the error below
+            # says so, or the result is checked finite; numpy's warnings would
+            # only come first
+            with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
                 s = least_squares(residuals, t0, bounds=(lo, hi), loss=loss,
                                   f_scale=f_scale, x_scale=1.0, method="trf")
         except ValueError as e:                 # scipy's SVD met an overflowed Jacobian
