@@ -92,6 +92,15 @@ def test_c_core_sanitize(sanitizers_usable):
     _make("sanitize")
 
 
+def test_fuzz_finds_stay_fixed(sanitizers_usable):
+    """Every fuzz target, built with $CC under ASan and UBSan without
+    libFuzzer, replays its seed corpus and every find kept in
+    csrc/fuzz/regressions/ (make fuzz-replay): a bug the fuzzers found
+    and that was fixed is checked on every run, not only when a fuzzer
+    happens on it again."""
+    _make("fuzz-replay")
+
+
 def test_realtime_example_runs():
     """examples/rig_realtime.c builds against the C core alone and runs the
     paper's scenario in its fixed-rate loop (1 s at 4 ms; step times are

@@ -28,25 +28,6 @@
 
 #define MAX_CELLS 4096
 
-static void set_pair(fz_in *in, const fz_profile *w, const fz_profile *r, rr_wheel_roller *p)
-{
-    p->wheel.n = w->n;
-    p->wheel.s = w->s;
-    p->wheel.z = w->z;
-    p->wheel.m = w->m;
-    p->roller.n = r->n;
-    p->roller.s = r->s;
-    p->roller.z = r->z;
-    p->roller.m = r->m;
-    p->r0 = fz_log(in, 0.02, 0.5);
-    p->R0 = fz_log(in, 0.02, 0.9);
-    p->wheel_y = fz_lin(in, 0.05, 0.8);
-    p->roller_y = p->wheel_y + fz_lin(in, -0.005, 0.005);
-    p->side = fz_choice(in, 16) == 0 ? fz_int(in, -2, 2) : 1;
-    fz_note("pair r0 %.17g R0 %.17g wheel_y %.17g roller_y %.17g side %d; ", p->r0, p->R0,
-            p->wheel_y, p->roller_y, p->side);
-}
-
 static void decode_gap_opts(fz_in *in, rr_gap_opts *o, double approach_hint, int small)
 {
     rr_gap_opts_default(o);
@@ -300,7 +281,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (fz_decode_profile(&in, &w, 0, 4, 0) != RR_OK || fz_decode_profile(&in, &r, 1, 4, 0) != RR_OK)
         return 0;
     in.edges = 1;
-    set_pair(&in, &w, &r, &p);
+    fz_set_pair(&in, &w, &r, &p);
     if (which == 0)
         check_wheel(&in, &p);
     else

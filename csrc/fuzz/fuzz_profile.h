@@ -1,7 +1,7 @@
 /*
  * fuzz_profile.h - a wheel's or a roller's profile decoded from the input,
  * for the targets that search contacts on them (fuzz_geometry.c,
- * fuzz_gap.c): its base shape (a cone of slope tan(alpha), a circular
+ * fuzz_gap.c, fuzz_nonhertz_row.c), and a pair on two of them: its base shape (a cone of slope tan(alpha), a circular
  * crown of radius rho) on min_points .. FZ_PROFILE_POINTS points over a
  * width from the input, that shape with a perturbation of each point, or a
  * free point list (increments and heights).  Include after fuzz.h.
@@ -52,6 +52,28 @@ static int fz_decode_profile(fz_in *in, fz_profile *p, int roller, int min_point
         fz_note(" (%.17g, %.17g)", p->s[i], p->z[i]);
     fz_note("; ");
     return rr_spline_init(n, p->s, p->z, p->m, work);
+}
+
+/* The pair on profiles w and r: radii, places and side (now and then not
+ * +-1) from the input. */
+static inline void fz_set_pair(fz_in *in, const fz_profile *w, const fz_profile *r,
+                               rr_wheel_roller *p)
+{
+    p->wheel.n = w->n;
+    p->wheel.s = w->s;
+    p->wheel.z = w->z;
+    p->wheel.m = w->m;
+    p->roller.n = r->n;
+    p->roller.s = r->s;
+    p->roller.z = r->z;
+    p->roller.m = r->m;
+    p->r0 = fz_log(in, 0.02, 0.5);
+    p->R0 = fz_log(in, 0.02, 0.9);
+    p->wheel_y = fz_lin(in, 0.05, 0.8);
+    p->roller_y = p->wheel_y + fz_lin(in, -0.005, 0.005);
+    p->side = fz_choice(in, 16) == 0 ? fz_int(in, -2, 2) : 1;
+    fz_note("pair r0 %.17g R0 %.17g wheel_y %.17g roller_y %.17g side %d; ", p->r0, p->R0,
+            p->wheel_y, p->roller_y, p->side);
 }
 
 #endif

@@ -10,7 +10,7 @@ import os
 import random
 
 TARGETS = ("fuzz_control", "fuzz_creep", "fuzz_creepage", "fuzz_exact", "fuzz_exact_table",
-           "fuzz_fft", "fuzz_fmu", "fuzz_gap", "fuzz_geometry", "fuzz_nonhertz", "fuzz_hertz", "fuzz_kalker", "fuzz_ode", "fuzz_rig", "fuzz_rig_contact",
+           "fuzz_fft", "fuzz_fmu", "fuzz_gap", "fuzz_geometry", "fuzz_nonhertz", "fuzz_nonhertz_row", "fuzz_hertz", "fuzz_kalker", "fuzz_ode", "fuzz_rig", "fuzz_rig_contact",
            "fuzz_rig_params", "fuzz_spline", "fuzz_spline_fit", "fuzz_tables")
 HERE = os.path.dirname(os.path.abspath(__file__))
 

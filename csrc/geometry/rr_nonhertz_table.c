@@ -153,6 +153,13 @@ static int grid_at(rr_nh_call *c, const rr_wheel_exact_result *r, int n, double 
         dx = dy = 0.0;
     o.dx = dx;
     o.dy = dy;
+    /* elements under DX_MIN (the Richardson halves of a small patch's, a
+     * light node at a fine n): samples no finer than the workspace holds,
+     * DX_MIN / 10, some five to ten to an element where rr_gap's own rule
+     * (a tenth of it) would refuse the grid; the same step as rr_gap's
+     * from DX_MIN up */
+    if (o.dx > 0.0)
+        o.sample = fmax(fmin(RR_GAP_SAMPLE, 0.1 * fmin(o.dx, o.dy)), 0.1 * DX_MIN);
     o.keep = 1;
     o.keep_lo = c->bd->lo;
     o.keep_hi = c->bd->hi;
