@@ -240,7 +240,8 @@ def nan_at(arr, i):
     ((CX2, FX2), dict(speed=-1.0), r"speed must be > 0, got -1.0"),
     (([CX2, CX2], [FX2, FX2]), dict(speed=[5.0, 10.0, 20.0]),
      r"speed must be a scalar or one value per curve \(2\)"),
-    ((CX2, FX2), dict(N=-1.0), r"N must be a finite positive number, got -1.0"),
+    ((CX2, FX2), dict(N=-1.0), r"N must be a finite number > 0, got -1.0"),
+    ((CX2, FX2), dict(a=10 ** 400), r"a must be a finite number > 0, got 1000"),  # no OverflowError
     ((CX2, 0 * FX2), {}, r"force is zero everywhere"),
     ((CX2, FX2), dict(weights=np.ones(3)), r"weights has 3 points but cx has 30"),
 ])

@@ -9,7 +9,7 @@ from typing import (Dict, List, Mapping, NoReturn, Optional, Sequence, Tuple, Un
 import numpy as np
 import numpy.typing as npt
 
-from .._errors import RollerRigError
+from .._errors import RollerRigError, check_number
 from .._typing import F64Array
 
 _TINY = 1e-6      # stands in for an open lower bound at 0 (all parameters are O(0.1 - 1))
@@ -89,15 +89,6 @@ def _data(func: str, cx: object, force: object, speed: object, weights: object
     return cxs, fs, sp, ws, many
 
 
-def _scalar(func: str, name: str, v: object, positive: bool = True) -> float:
-    if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)) \
-            or not math.isfinite(v) or (positive and v <= 0):
-        shown = float(v) if isinstance(v, (np.integer, np.floating)) else v
-        _fail(func, f"{name} must be a finite {'positive ' if positive else ''}number, "
-                    f"got {shown!r}")
-    return float(v)
-
-
 def _interval(lo: float, hi: float, lo_open: bool, hi_open: bool) -> str:
     return f"{'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
 
@@ -127,7 +118,7 @@ def _setup(func: str, spec: Spec, fit: Union[str, Sequence[str]],
     for n, v in x0.items():
         if n not in spec:
             _fail(func, f"unknown parameter {n!r} in x0; choose from {names}")
-        _scalar(func, f"x0[{n!r}]", v, positive=False)
+        check_number(func, f"x0[{n!r}]", v)
     start: Dict[str, float] = {}
     for n, (default, lo, hi, lo_open, hi_open) in spec.items():
         v = float(x0.get(n, mu0_default if default is None else default))

@@ -72,12 +72,12 @@ import math
 
 import numpy as np
 
-from .._errors import RollerRigError
+from .._errors import RollerRigError, check_number
 from .._optional import require
 from .._typing import F64Array, FloatResult
 from .._units import cf_unit
 from ..contact.creep import METHODS, FallingFriction, creep_forces
-from ._fit_inputs import _RATIO, Curves, Spec, _data, _fail, _scalar, _setup
+from ._fit_inputs import _RATIO, Curves, Spec, _data, _fail, _setup
 
 __all__ = ["FitResult", "fit_polach", "fit_modified_fastsim", "POLACH_PARAMETERS",
            "MODIFIED_FASTSIM_PARAMETERS", "PARAMETER_UNITS", "LOSSES"]
@@ -335,14 +335,14 @@ def _fit(func: str, model: str, spec: Spec, cx: object, force: object, a: object
     least_squares = require("scipy.optimize", func, "fit", package="scipy").least_squares
     cxs, fs, speeds, ws, many = _data(func, cx, force, speed, weights)
     settings: Dict[str, Any] = dict(
-        a=_scalar(func, "a", a), b=_scalar(func, "b", b), N=_scalar(func, "N", N),
-        G=_scalar(func, "G", G), nu=_scalar(func, "nu", nu, positive=False),
-        cy=_scalar(func, "cy", cy, positive=False),
-        cphi=_scalar(func, "cphi", cphi, positive=False),
+        a=check_number(func, "a", a, positive=True), b=check_number(func, "b", b, positive=True),
+        N=check_number(func, "N", N, positive=True), G=check_number(func, "G", G, positive=True),
+        nu=check_number(func, "nu", nu), cy=check_number(func, "cy", cy),
+        cphi=check_number(func, "cphi", cphi),
         speeds=tuple(float(v) for v in speeds), **extra)
     if loss not in LOSSES:
         _fail(func, f"loss must be one of {LOSSES}, got {loss!r}")
-    f_scale = 0.05 if f_scale is None else _scalar(func, "f_scale", f_scale)
+    f_scale = 0.05 if f_scale is None else check_number(func, "f_scale", f_scale, positive=True)
 
     c_all = np.concatenate(cxs)
     f_all = np.concatenate(fs)
