@@ -393,3 +393,22 @@ def test_rig_run_reports_the_worst_status_of_the_whole_run():
     warned = np.flatnonzero(rec[:, -1] > 0)
     assert warned.size and warned.max() < n - 256        # none in the last block
     assert status == 1
+
+
+HUGE_INT = 10 ** 400        # an int no double holds: float() of it raises OverflowError
+
+
+@pytest.mark.parametrize("call, name", [
+    (lambda: rr.fit_polach(np.linspace(-0.01, 0.01, 9), np.linspace(-1e3, 1e3, 9),
+                           a=HUGE_INT, b=4e-3, N=2e4, speed=10.0), "a"),
+    (lambda: rr.hunting([10.0], settle=HUGE_INT), "settle"),
+    (lambda: rr.linearize(roller_speed=HUGE_INT), "roller_speed"),
+    (lambda: rr.equivalent_conicity(rr.RigGeometry.standard(), centre=HUGE_INT), "centre"),
+])
+def test_a_huge_integer_is_refused_by_name_not_overflowed(call, name):
+    """A Python int beyond the double range, where a number is asked for: the
+    library's error naming the argument, not Python's OverflowError from a
+    float() or math.isfinite() of it (fit_polach's and hunting's own number
+    checks raised it)."""
+    with pytest.raises(rr.RollerRigError, match=name):
+        call()

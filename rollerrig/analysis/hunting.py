@@ -21,7 +21,7 @@ from typing import Any, List, NamedTuple, Optional
 import numpy as np
 import numpy.typing as npt
 
-from .._errors import RollerRigError, status_message
+from .._errors import RollerRigError, check_number, status_message
 from .._typing import Params
 from ..rig.build import build_rig
 from ..rig.params import _parameters, _short, _with_track
@@ -45,13 +45,6 @@ class Hunting(NamedTuple):
     #: (NaN if the first speed's is not sustained)
     nonlinear_critical_speed: float
     track: bool                    #: on tangent track
-
-
-def _positive(func: str, name: str, v: object) -> float:
-    if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)) \
-            or not math.isfinite(float(v)) or float(v) <= 0:
-        raise RollerRigError(f"{func}: {name} must be a finite number > 0, got {_short(v)}")
-    return float(v)
 
 
 #: plant steps per 4 ms sample in the ramp.  The rig's Jacobian carries the
@@ -108,8 +101,9 @@ def hunting(speeds: npt.ArrayLike, params: Params = None, *, track: bool = False
     if s.size == 0 or not np.all(np.isfinite(s)) or np.any(s <= 0) or np.any(np.diff(s) >= 0):
         raise RollerRigError(f"{func}: speeds must be a non-empty, decreasing array of finite "
                              f"speeds > 0 [m/s], got {_short(speeds)}")
-    settle, measure = _positive(func, "settle", settle), _positive(func, "measure", measure)
-    shift = _positive(func, "shift", shift)
+    settle = check_number(func, "settle", settle, positive=True)
+    measure = check_number(func, "measure", measure, positive=True)
+    shift = check_number(func, "shift", shift, positive=True)
     P = _with_track(func, _parameters(func, params), track)
     rig, P, _ = build_rig(P, method=method, roller_speed=float(s[0]), substeps=substeps,
                           **creep)

@@ -266,7 +266,10 @@ def _modes(A: F64Array, states: Sequence[str]) -> Tuple[Mode, ...]:
 def _speed_arg(func: str, name: str, v: object) -> float:
     if isinstance(v, bool) or not isinstance(v, (int, float, np.floating, np.integer)):
         raise RollerRigError(f"{func}: {name} must be a real number [m/s], got {_short(v)}")
-    v = float(v)
+    try:
+        v = float(v)
+    except OverflowError:                      # an int beyond a double
+        v = math.inf
     if not math.isfinite(v) or v <= 0.0:
         raise RollerRigError(f"{func}: {name} must be a finite speed > 0 [m/s], got {v!r}")
     return v

@@ -71,6 +71,7 @@ Example::
 from __future__ import annotations
 
 import math
+import sys
 import numbers
 import warnings
 from typing import Any, Callable, Optional, Tuple, Union, overload
@@ -371,7 +372,7 @@ def equivalent_conicity(geometry: Union[RigGeometry, DeltaRTable],
         if centre != "balance":
             raise RollerRigError(f"{_FUNC}: centre must be 'balance' or a number [m], "
                                  f"got {centre!r}")
-    elif not (_is_number(centre) and math.isfinite(centre)):
+    elif not (_is_number(centre) and abs(centre) <= sys.float_info.max):   # finite, ints too
         raise RollerRigError(f"{_FUNC}: centre must be 'balance' or a number [m], "
                              f"got {centre!r:.60}")
     elif method == "klingel":
