@@ -106,18 +106,27 @@ def test_profile_from_any_arrays_is_valid_or_named(y, z, kind):
 
 @examples(5)
 @given(nodes=node_arrays(wild_gaps=False), bc=st.sampled_from(("natural", "not-a-knot")))
+@example(nodes=(np.array([0.5, 0.5039954219855185, 0.5040054219855185, 0.50896349206128]),
+                np.array([-0.05, -0.05, -0.049609369016252104, -0.05])),
+         bc="not-a-knot")                        # intervals 1e-5 beside 4e-3
 def test_profile_mirror_is_mirror_image(nodes, bc):
     """mirrored() is the mirror image y -> -y: the spline through mirrored
-    points is the mirrored spline, up to the rounding of its slope solve
-    (measured 3e-14 of the profile's scale |z| + |z'| width; allowed 1e-11)."""
+    points is the mirrored spline, up to the rounding of its slope solve,
+    which eliminates the mirrored system from the other end (measured 3e-14
+    of the profile's scale |z| + |z'| width; allowed 1e-11, and 1e-12 times
+    the ratio of the longest interval to the shortest beyond 10: the
+    not-a-knot end rows are not diagonally dominant, and their rounding
+    grows with that ratio, 1e-11 measured at 400)."""
     y, z = nodes
     p = rr.Profile(y, z, kind="rail", bc=bc)
     m = p.mirrored()
     t = np.linspace(p.y_min, p.y_max, 41)[1:-1]
     zp, sp, _ = p.evaluate(t)
+    h = np.diff(np.asarray(y, dtype=float))
+    tol = 1e-12 * max(10.0, float(np.max(h) / np.min(h)))
     scale = np.max(np.abs(z)) + np.max(np.abs(sp)) * (p.y_max - p.y_min)
-    assert np.max(np.abs(m.z_at(-t) - zp)) <= 1e-11 * scale
-    assert np.max(np.abs(m.slope(-t) + sp)) * (p.y_max - p.y_min) <= 1e-11 * scale
+    assert np.max(np.abs(m.z_at(-t) - zp)) <= tol * scale
+    assert np.max(np.abs(m.slope(-t) + sp)) * (p.y_max - p.y_min) <= tol * scale
 
 
 PROFILES = {"s1002": rr.Profile.s1002(), "uic60": rr.Profile.uic60(),
