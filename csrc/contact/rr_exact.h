@@ -80,7 +80,8 @@ typedef struct {
     int ncontact, nslip; /* elements in contact, of them slipping */
     int normal_products, tang_products;  /* FFT products used */
     int newton_steps;
-    double normal_residual, tang_residual;  /* final relative residuals */
+    double normal_residual, tang_residual;  /* final relative residuals (the normal
+                            one the last step over the pressure, 1 before any step) */
 } rr_exact_result;
 
 /* Fields of a solution, each NULL (not wanted) or mx * my values. */

@@ -184,7 +184,7 @@ int rr_exact_solve_normal(solver *S, rr_exact_result *res)
     double *h = L->h, *p = L->pn, *g = L->gap, *r = L->r, *rold = L->rold, *d = L->d,
            *v = L->v, *z = L->stn[4] != 0.0 ? L->z : L->r;
     signed char *in = L->state;
-    double hmin = HUGE_VAL, hmax = -HUGE_VAL, delta = 0.0, rz_old = 0.0, step_rms = HUGE_VAL;
+    double hmin = HUGE_VAL, hmax = -HUGE_VAL, delta = 0.0, rz_old = 0.0, step_rms = 1.0;
     double h0;
     rr_hertz_result hz;
     int k, cnt, restart = 1, st, converged = 0, have_delta = 0;
@@ -270,6 +270,7 @@ int rr_exact_solve_normal(solver *S, rr_exact_result *res)
                 }
             if (!joined) {
                 converged = 1;
+                step_rms = 0.0;          /* nothing left to move */
                 break;
             }
             restart = 1;
@@ -298,7 +299,10 @@ int rr_exact_solve_normal(solver *S, rr_exact_result *res)
             return st;
         for (k = 0; k < n; k++)
             dv += d[k] * v[k];
-        if (!(dv > 0.0))
+        /* d.v overflowing (elements of 1e62 m: the gap's 1e127 m against
+         * displacements scaled by dx / G) made alpha 0, and the unmoved
+         * pressure passed for converged: scales beyond the doubles */
+        if (!(dv > 0.0) || !(dv < HUGE_VAL) || !isfinite(rd))
             return RR_ERR_RANGE;
         alpha = rd / dv;
         /* the gap changes everywhere, the pressure only on C; elements

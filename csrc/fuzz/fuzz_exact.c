@@ -331,6 +331,8 @@ static void warm_start(fz_in *in, const rr_exact_problem *pb, double *work, size
         FZ_FINITE("rr_exact_solve_from", sw, rw.fy);
         FZ_FINITE("rr_exact_solve_from", sw, rw.mz);
         FZ_FINITE("rr_exact_solve_from", sw, rw.delta);
+        FZ_FINITE("rr_exact_solve_from", sw, rw.normal_residual);
+        FZ_FINITE("rr_exact_solve_from", sw, rw.tang_residual);
         if (!(fabs(rw.fn - pb->N) <= 1e-6 * pb->N))
             fz_fail("rr_exact_solve_from: fn %.17g, not N %.17g", rw.fn, pb->N);
         if (!(hypot(rw.fx, rw.fy) <= pb->mu * rw.fn * (1.0 + 1e-9)))
@@ -467,6 +469,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         FZ_FINITE("rr_exact_solve", st, r.delta);
         FZ_FINITE("rr_exact_solve", st, r.area);
         FZ_FINITE("rr_exact_solve", st, r.pmax);
+        FZ_FINITE("rr_exact_solve", st, r.normal_residual);
+        FZ_FINITE("rr_exact_solve", st, r.tang_residual);
         if (!(fabs(r.fn - pb.N) <= 1e-6 * pb.N))
             fz_fail("rr_exact_solve: fn %.17g, not N %.17g", r.fn, pb.N);
         if (!(hypot(r.fx, r.fy) <= pb.mu * r.fn * (1.0 + 1e-9)))
