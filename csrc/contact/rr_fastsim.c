@@ -560,7 +560,9 @@ static int fastsim_checked(const rr_contact_problem *c, const rr_creep_opts *o,
         for (r = 0; r < g->nr; r++)
             S += rows[r] * g->h[r];
     }
-    m.scale = c->N / (S * dy);
+    /* N / (S dy), unless S dy is subnormal (semi-axes of 1e-92 and 1e-230
+     * m): then dividing by each in turn keeps the pressure's digits */
+    m.scale = fabs(S * dy) >= DBL_MIN ? c->N / (S * dy) : c->N / dy / S;
     if (!march_in_range(&m, &fl, dy))
         return fail(RR_ERR_RANGE, o, out, field);
 

@@ -309,7 +309,11 @@ static void check_field(int st, const rr_contact_problem *c, const rr_friction *
 {
     const char *fn = "rr_fastsim (field)";
     const int n = (int)(o->v[RR_FASTSIM_NX] * o->v[RR_FASTSIM_NY]);
-    const double area = (2.0 * c->a / o->v[RR_FASTSIM_NX]) * (2.0 * c->b / o->v[RR_FASTSIM_NY]);
+    /* an element's sides: a sum times one, then the other (a and b near
+     * 1e-92 and 1e-230 make their product subnormal, rounded to a few bits,
+     * where sum dx dy stays a normal number) */
+    const double dx = 2.0 * c->a / o->v[RR_FASTSIM_NX], dy = 2.0 * c->b / o->v[RR_FASTSIM_NY];
+    const double area = dx * dy;
     double sum_p = 0.0, sum_x = 0.0, sum_y = 0.0, scale;
     int i, nslip = 0;
 
@@ -349,14 +353,14 @@ static void check_field(int st, const rr_contact_problem *c, const rr_friction *
         fz_fail("%s: nslip = %d but %d elements flagged", fn, fl->nslip, nslip);
     if (o->v[RR_FASTSIM_GRID] != RR_GRID_RECT || !isfinite(area))
         return;
-    if (fl->pn && isfinite(sum_p * area) && !(fabs(sum_p * area - c->N) <= 1e-9 * c->N))
-        fz_fail("%s: pressure sums to %.17g, not N = %.17g", fn, sum_p * area, c->N);
+    if (fl->pn && isfinite(sum_p * dx * dy) && !(fabs(sum_p * dx * dy - c->N) <= 1e-9 * c->N))
+        fz_fail("%s: pressure sums to %.17g, not N = %.17g", fn, sum_p * dx * dy, c->N);
     /* mu0 N first: 1e-9 mu0 underflows to 0 for a subnormal mu0 */
     scale = 1e-9 * (fr->mu0 * c->N);
-    if (fl->px && isfinite(sum_x * area) && !(fabs(sum_x * area - f->fx) <= scale))
-        fz_fail("%s: px sums to %.17g, not fx = %.17g", fn, sum_x * area, f->fx);
-    if (fl->py && isfinite(sum_y * area) && !(fabs(sum_y * area - f->fy) <= scale))
-        fz_fail("%s: py sums to %.17g, not fy = %.17g", fn, sum_y * area, f->fy);
+    if (fl->px && isfinite(sum_x * dx * dy) && !(fabs(sum_x * dx * dy - f->fx) <= scale))
+        fz_fail("%s: px sums to %.17g, not fx = %.17g", fn, sum_x * dx * dy, f->fx);
+    if (fl->py && isfinite(sum_y * dx * dy) && !(fabs(sum_y * dx * dy - f->fy) <= scale))
+        fz_fail("%s: py sums to %.17g, not fy = %.17g", fn, sum_y * dx * dy, f->fy);
 }
 
 static void run_fastsim(fz_in *in, const rr_contact_problem *c, const rr_friction *fr,
