@@ -51,14 +51,7 @@ static int plain_pair(fz_in *in, fz_profile *w, fz_profile *r, rr_wheel_roller *
     if ((st = rr_spline_init(w->n, w->s, w->z, w->m, work)) != RR_OK
         || (st = rr_spline_init(r->n, r->s, r->z, r->m, work)) != RR_OK)
         return st;
-    p->wheel.n = w->n;
-    p->wheel.s = w->s;
-    p->wheel.z = w->z;
-    p->wheel.m = w->m;
-    p->roller.n = r->n;
-    p->roller.s = r->s;
-    p->roller.z = r->z;
-    p->roller.m = r->m;
+    fz_attach_profiles(w, r, p);
     p->r0 = 0.09;
     p->R0 = 0.19;
     p->wheel_y = 0.15;
@@ -196,7 +189,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rr_nh_row_problem pb;
     rr_nh_row_info info;
     double *work, *row;
-    size_t need, len;
+    size_t need, len, work_bytes;
     int side, st, null_pb, null_pair, null_work, null_row, invalid;
 
     if (fz_choice(&in, 2) == 0) {
@@ -234,8 +227,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         len = 1;         /* the memory stays small: only the refusal is checked */
     fz_note("side %d workspace %zu of %zu; NULL pb %d pair %d work %d row %d", side, len, need,
             null_pb, null_pair, null_work, null_row);
-    work = fz_guarded((len > 0 ? len : 1) * sizeof(double));
-    memset(work, 0, (len > 0 ? len : 1) * sizeof(double));   /* zero-filled, as documented */
+    work_bytes = (len > 0 ? len : 1) * sizeof(double);
+    work = fz_guarded(work_bytes);
+    memset(work, 0, work_bytes);   /* zero-filled, as documented */
     row = fz_guarded(RR_NH_ROW_LEN * sizeof(double));
     invalid = null_pb || null_pair || null_work || null_row || row_invalid(&pb);
 
@@ -261,7 +255,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             fz_fail("%s: status %d, not OK or not converged", fn, st);
         check_row(&pb, &p, st, row, &info);
     }
-    fz_guard_ok(fn, work, (len > 0 ? len : 1) * sizeof(double), "the workspace");
+    fz_guard_ok(fn, work, work_bytes, "the workspace");
     fz_guard_ok(fn, row, RR_NH_ROW_LEN * sizeof(double), "row[RR_NH_ROW_LEN]");
     fz_guard_free(work);
     fz_guard_free(row);

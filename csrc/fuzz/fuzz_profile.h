@@ -54,10 +54,9 @@ static int fz_decode_profile(fz_in *in, fz_profile *p, int roller, int min_point
     return rr_spline_init(n, p->s, p->z, p->m, work);
 }
 
-/* The pair on profiles w and r: radii, places and side (now and then not
- * +-1) from the input. */
-static inline void fz_set_pair(fz_in *in, const fz_profile *w, const fz_profile *r,
-                               rr_wheel_roller *p)
+/* The pair's splines: profiles w and r (their arrays, not copies). */
+static inline void fz_attach_profiles(const fz_profile *w, const fz_profile *r,
+                                      rr_wheel_roller *p)
 {
     p->wheel.n = w->n;
     p->wheel.s = w->s;
@@ -67,6 +66,14 @@ static inline void fz_set_pair(fz_in *in, const fz_profile *w, const fz_profile 
     p->roller.s = r->s;
     p->roller.z = r->z;
     p->roller.m = r->m;
+}
+
+/* The pair on profiles w and r: radii, places and side (now and then not
+ * +-1) from the input. */
+static inline void fz_set_pair(fz_in *in, const fz_profile *w, const fz_profile *r,
+                               rr_wheel_roller *p)
+{
+    fz_attach_profiles(w, r, p);
     p->r0 = fz_log(in, 0.02, 0.5);
     p->R0 = fz_log(in, 0.02, 0.9);
     p->wheel_y = fz_lin(in, 0.05, 0.8);

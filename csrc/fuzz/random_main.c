@@ -96,9 +96,9 @@ int main(int argc, char **argv)
     }
     seconds = atof(argv[1]);
     seed = strtoull(argv[2], NULL, 10);
-    snprintf(crash_path, sizeof crash_path, "%s",
-             argc == 4 ? argv[3] : "crash-random");
-    if (argc < 4)
+    if (argc == 4)
+        snprintf(crash_path, sizeof crash_path, "%s", argv[3]);
+    else
         snprintf(crash_path, sizeof crash_path, "crash-random-%llu", seed);
     state = 0x9E3779B97F4A7C15ull ^ (seed * 0xBF58476D1CE4E5B9ull);
     if (state == 0)
