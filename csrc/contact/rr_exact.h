@@ -28,9 +28,16 @@
  * cy + cphi x) about the reference point.  Element (i, j) of every field
  * is stored at j * mx + i, its centre at (x0 + i dx, y0 + j dy) (rr_grid).
  *
+ * The tangential problem lives on the elements in contact, so it is
+ * solved on the grid's box around them where that box's torus is at most
+ * 4/5 of the grid's (a wheel's patch covers where h reaches the approach,
+ * about twice the contact's area): the same equations, the products'
+ * rounding aside.
+ *
  * Memory: caller workspace only (rr_exact_workspace_len doubles for the
- * largest grid used), zero-filled before its first use: the solver keeps
- * the kernel spectra of the last grid shape and Poisson ratio there and
+ * largest grid used: the grid's layout and room for its box's), zero-filled
+ * before its first use: the solver keeps the kernel spectra of the last
+ * grid shape and Poisson ratio there, and those of its last box, and
  * reuses them for the next case of the same shape (a batch of cases with
  * the same a/b and grid builds them once).  Nothing else a case leaves
  * there (its iterates, a failed case's NaN) reaches the next: a case gives

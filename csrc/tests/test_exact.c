@@ -425,6 +425,67 @@ int main(void)
             free(w2);
         }
     }
+    /* the tangential problem on the contact's box (rr_exact.c): a grid with
+     * 12 exterior elements on every side, on which the box pays, against
+     * the Hertzian grid of 2 (the same element centres: the same discrete
+     * problem on the elements in contact); the wide grid's solution holds
+     * the discrete equations by direct sums on the whole grid; and a
+     * workspace that a larger grid used in between (its layout over the
+     * box's) gives a fresh workspace's doubles.  Tolerances: both solved to
+     * tol 1e-9, so forces within a few 1e-9 mu N of each other. */
+    {
+        rr_exact_problem tight = hertz_case(0.005, 0.003, 15), wide = tight, big;
+        size_t lw, lb;
+        double *w1, *w2, *w3, muN = tight.mu * tight.N;
+        rr_exact_result rt, rw, rb;
+        tight.cx = 3e-4;
+        tight.cy = -1e-4;
+        tight.cphi = 0.6;
+        wide = tight;
+        wide.grid.mx += 24;
+        wide.grid.my += 24;
+        wide.grid.x0 -= 12 * wide.grid.dx;
+        wide.grid.y0 -= 12 * wide.grid.dy;
+        big = wide;
+        big.grid.mx += 20;
+        big.grid.my += 20;
+        big.grid.x0 -= 10 * big.grid.dx;
+        big.grid.y0 -= 10 * big.grid.dy;
+        lw = rr_exact_workspace_len(wide.grid.mx, wide.grid.my);
+        lb = rr_exact_workspace_len(big.grid.mx, big.grid.my);
+        w1 = calloc(lb, sizeof *w1);
+        w2 = calloc(lb, sizeof *w2);
+        w3 = calloc(lw, sizeof *w3);
+        CHECK_STATUS(rr_exact_solve(&tight, w1, lb, &rt, NULL), RR_OK, "box: the tight grid");
+        CHECK_STATUS(rr_exact_solve(&wide, w2, lb, &rw, NULL), RR_OK, "box: the wide grid");
+        CHECK(hypot(rw.fx - rt.fx, rw.fy - rt.fy) < 1e-8 * muN
+                  && fabs(rw.mz - rt.mz) < 1e-8 * muN * wide.grid.dx
+                  && rw.ncontact == rt.ncontact && rw.nslip == rt.nslip,
+              "box: the wide grid's forces, contact and slip are the tight grid's");
+        CHECK(steady_equations_error(&wide, w3, lw) < 1e-7,
+              "box: the wide grid's solution holds the equations on the whole grid");
+        {
+            /* the box's layout starts where the grid's ends (half the
+             * workspace's length), its key first; a larger grid's layout
+             * may write over the box's numbers and not over that key (its
+             * Krylov vectors reach only as far as its solve used them):
+             * NaN after the key stands for that */
+            const size_t base = lw / 2;
+            size_t i;
+            CHECK_STATUS(rr_exact_solve(&big, w2, lb, &rb, NULL), RR_OK,
+                         "box: a larger grid between");
+            for (i = base + 8; i < lb; i++)
+                w2[i] = NAN;
+        }
+        CHECK_STATUS(rr_exact_solve(&wide, w2, lb, &rb, NULL), RR_OK, "box: the wide grid again");
+        CHECK(memcmp(&rb.fx, &rw.fx, sizeof rb.fx) == 0 && memcmp(&rb.fy, &rw.fy, sizeof rb.fy) == 0
+                  && memcmp(&rb.mz, &rw.mz, sizeof rb.mz) == 0
+                  && rb.tang_products == rw.tang_products,
+              "box: after a larger grid, a fresh workspace's doubles");
+        free(w1);
+        free(w2);
+        free(w3);
+    }
     /* a workspace as any other case may leave it (NaN everywhere: a failed
      * one; the caches' tags then match nothing) gives a fresh workspace's
      * doubles: no start, search direction or scratch value of another
