@@ -16,6 +16,7 @@ hold rr_exact_solve_from itself to the cold solve at tol 1e-9, its bad
 starts refused.
 """
 import functools
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 import pytest
@@ -60,3 +61,24 @@ def test_rig_exact_is_a_cold_solve_on_its_patch_to_the_tolerance(pair, y_ws, mu,
     assert np.array_equal(s.contact, q.contact) and np.array_equal(s.slip, q.slip)
     # and the load it was solved for balances the vertical one (the secant's 1e-7)
     assert abs(e.force[2] - 6e4) <= 1e-7 * 6e4
+
+
+def test_kept_workspaces_give_a_fresh_ones_doubles_on_any_thread():
+    # the binding keeps rr_wheel_exact's workspaces from call to call
+    # (rollerrig/_core_c/batch.c, with the spectra of their last grids):
+    # each call takes one to itself, and a case gives the doubles it gives on
+    # a fresh workspace whatever ran there before: three threads at once,
+    # each after other cases, give the doubles of the serial calls
+    runs = [(pair, y_ws, mu, grid) for pair, y_ws, mu, grid in CASES]
+
+    def run(case):
+        pair, y_ws, mu, grid = case
+        e = rr.rig_exact(geometry(pair), y_ws, Fz=6e4, mu=mu, spin=12.4, roller_spin=5.587,
+                         **grid)
+        return np.array([e.solution.fx, e.solution.fy, e.solution.mz, e.N])
+
+    first = [run(c) for c in runs]
+    with ThreadPoolExecutor(3) as pool:
+        again = list(pool.map(run, runs * 3))
+    for k, got in enumerate(again):
+        np.testing.assert_array_equal(got, first[k % len(runs)])

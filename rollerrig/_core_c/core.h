@@ -6,7 +6,8 @@
  *   module.c       the module: its function table, the registry's and the
  *                  rig's declarations exported as tuples, PyInit__core
  *   batch.c        the one batch loop (run_batch), the 1-D float64 inputs
- *                  and outputs of every batch call, Ctrl-C within a case
+ *                  and outputs of every batch call, Ctrl-C within a case,
+ *                  the exact solver's workspaces kept between calls
  *   options.c      a creep-force method and its options from Python
  *                  keywords, checked once (parse_opts, CreepOptions)
  *   contact.c      Hertz, Kalker's coefficients, creep forces, traction fields
@@ -105,6 +106,13 @@ typedef struct {
 /* The hook, first checked INTERRUPT_PERIOD from now; call with the GIL
  * held, hand &h->hook to the core while the GIL is released. */
 CORE_PRIVATE void interrupt_hook_init(interrupt_hook *h);
+
+/* The exact solver's workspaces (batch.c), kept from call to call: one of
+ * at least len doubles (*got its length), zero-filled where new, NULL
+ * without memory; and given back (freed, or kept for a later call).  Both
+ * with the GIL held. */
+CORE_PRIVATE double *work_take(size_t len, size_t *got);
+CORE_PRIVATE void work_give(double *w, size_t len);
 
 /* A Python integer as a C int: 0, or -1 with a ValueError naming func and
  * name where it is not an integer or lies outside [lo, hi] (a value beyond

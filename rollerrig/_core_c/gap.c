@@ -202,62 +202,6 @@ static int wheel_kernel(void *ctx, npy_intp start, npy_intp stop)
     return 0;
 }
 
-/* rr_wheel_exact's workspaces, kept from call to call.  The solver's rule
- * is a workspace zero-filled before its first use, after which it keeps
- * the kernel spectra of its grids there (rr_exact.h: a case gives the
- * doubles it gives on a fresh workspace).  A fresh one zero-filled each
- * call cost as much as a quarter of the call's instructions (a workspace
- * for grids of n + 16 elements a side, most of it never touched), and
- * threw the spectra away.  Taken and given back with the GIL held, so a
- * call has its workspace to itself while it runs without it. */
-#define POOL_SIZE 2
-static double *pool_work[POOL_SIZE];
-static size_t pool_len[POOL_SIZE];
-
-/* A workspace of at least len doubles: the smallest kept one that is long
- * enough, else a new one zero-filled; *got its length.  NULL: no memory. */
-static double *work_take(size_t len, size_t *got)
-{
-    int j, best = -1;
-    double *w;
-    for (j = 0; j < POOL_SIZE; j++)
-        if (pool_work[j] && pool_len[j] >= len && (best < 0 || pool_len[j] < pool_len[best]))
-            best = j;
-    if (best >= 0) {
-        w = pool_work[best];
-        *got = pool_len[best];
-        pool_work[best] = NULL;
-        return w;
-    }
-    *got = len;
-    return PyMem_RawCalloc(len, sizeof(double));
-}
-
-/* w (of len doubles) kept for the next call: in an empty place, else in
- * place of the smallest kept one where that is shorter (which is freed),
- * else freed. */
-static void work_give(double *w, size_t len)
-{
-    int j, slot = 0;
-    if (!w)
-        return;
-    for (j = 0; j < POOL_SIZE; j++) {
-        if (!pool_work[j]) {
-            slot = j;
-            break;
-        }
-        if (pool_len[j] < pool_len[slot])
-            slot = j;
-    }
-    if (pool_work[slot] && pool_len[slot] >= len) {
-        PyMem_RawFree(w);
-        return;
-    }
-    PyMem_RawFree(pool_work[slot]);
-    pool_work[slot] = w;
-    pool_len[slot] = len;
-}
-
 static void wheel_free(wheel_call *k)
 {
     work_give(k->work, k->work_len);
