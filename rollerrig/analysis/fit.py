@@ -250,6 +250,13 @@ def _jacobian(fun: Callable[[F64Array], F64Array], theta: npt.ArrayLike, lo: F64
     return J
 
 
+def _rms(v: F64Array) -> float:
+    """The root mean square of finite v, scaled by its largest value so that
+    no square overflows or underflows."""
+    m = float(np.max(np.abs(v))) if v.size else 0.0
+    return m * float(np.sqrt(np.mean((v / m) ** 2))) if m > 0.0 else 0.0
+
+
 def _covariance(J: F64Array, r: F64Array) -> F64Array:
     """(J^T J)^-1 s^2, NaN in the rows and columns of ill-determined parameters."""
     m, p = J.shape
@@ -258,7 +265,11 @@ def _covariance(J: F64Array, r: F64Array) -> F64Array:
     s2 = float(r @ r) / (m - p)
     _, sv, vt = np.linalg.svd(J, full_matrices=False)
     keep = sv > np.sqrt(np.finfo(float).eps) * sv[0] if sv[0] > 0 else np.zeros_like(sv, bool)
-    cov: F64Array = (vt[keep].T / sv[keep] ** 2) @ vt[keep] * s2
+    # singular values of data all but zero square to 0 (or of huge data to
+    # inf): those variances come out infinite or NaN, and the caller names
+    # them NaN (not a warning)
+    with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
+        cov: F64Array = (vt[keep].T / sv[keep] ** 2) @ vt[keep] * s2
     bad = np.zeros(p, bool)
     for k in np.flatnonzero(~keep):
         bad |= np.abs(vt[k]) > 1e-3
@@ -356,10 +367,11 @@ def _fit(func: str, model: str, spec: Spec, cx: object, force: object, a: object
     if f_ref > 10.0 * settings["N"]:
         _fail(func, f"force reaches {f_ref:.6g} N, more than 10 N = {10 * settings['N']:.6g} "
                     f"N: a creep force is mu N at most (check the units of force and N)")
-    # the curve's sense, once the forces are known to be bounded (a sum of
-    # forces near the double's range would overflow)
-    sign = -1 if float(np.sum(f_all * np.sign(c_all))) > 0.0 else 1
+    # the curve's sense and the residuals in units of the largest force: sums,
+    # differences and squares of forces near the double's range overflow
+    sign = -1 if float(np.sum(f_all / f_ref * np.sign(c_all))) > 0.0 else 1
     target = sign * f_all
+    target_n = target / f_ref
 
     start, fit, inner, lo, hi = _setup(func, spec, fit, x0, bounds, f_ref / settings["N"])
     # the start point through the library's own checks: a bad a, b, N, G, nu raises here,
@@ -373,7 +385,7 @@ def _fit(func: str, model: str, spec: Spec, cx: object, force: object, a: object
     def residuals(theta: F64Array) -> F64Array:
         p = _natural(start, inner, theta)
         f = _model(model, p, settings, c_all, v_all, settings["cy"], settings["cphi"])
-        r = w_all * (f - target) / f_ref
+        r = w_all * (f / f_ref - target_n)
         if not np.all(np.isfinite(r)):
             raise RollerRigError(f"{func}: the model gives no finite force at the parameters "
                                  f"{p} for these data (cx, force, a, b, N, speed)")
@@ -428,7 +440,12 @@ def _fit(func: str, model: str, spec: Spec, cx: object, force: object, a: object
                      zip(inner, sol.x, lo, hi, near) if x - l <= d or h - x <= d)
     at_bound = tuple(n for n in fit if n in at_bound)
     model_f = _model(model, params, settings, c_all, v_all, settings["cy"], settings["cphi"])
-    res_all = sign * model_f - f_all
+    res_n = sign * model_f / f_ref - f_all / f_ref
+    with np.errstate(over="ignore"):
+        res_all = res_n * f_ref
+    if not np.all(np.isfinite(res_all)):
+        _fail(func, f"the residuals of the fit overflow (force up to {f_ref:.6g} N): the "
+                    f"data (force, N) are too extreme for a creep curve")
     res_out: Union[F64Array, List[F64Array]]
     if many:
         cuts = np.cumsum([c.size for c in cxs])[:-1]
@@ -441,7 +458,7 @@ def _fit(func: str, model: str, spec: Spec, cx: object, force: object, a: object
                    "for cx > 0); fitted -force, and predict() returns the data's sign. "
                    + message)
     return FitResult(model=model, params=params, stderr=stderr, fitted=fit,
-                     residuals=res_out, rms=float(np.sqrt(np.mean(res_all ** 2))),
+                     residuals=res_out, rms=_rms(res_all),
                      cost=float(sol.cost), success=bool(sol.success), message=message,
                      nfev=int(sol.nfev), sign=sign, at_bound=at_bound,
                      settings=settings)
