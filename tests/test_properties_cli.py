@@ -29,7 +29,7 @@ import tempfile
 
 import numpy as np
 import pytest
-from hypothesis import event, given, strategies as st
+from hypothesis import event, example, given, strategies as st
 
 from _properties import examples, watchdog
 from rollerrig import cli, rig
@@ -263,6 +263,10 @@ needs_fifo_and_symlink = pytest.mark.skipif(
 @needs_fifo_and_symlink
 @examples(0.2, deadline=None)
 @given(args=simulate_args, scenario=scenarios(), extra=unknown)
+# two samples for the four default targets: refused, the message naming no
+# option (it began "2 of the 4 targets"; now "--duration = 0.02 s at ...")
+@example(args={"duration": ["--duration", "0.02"], "dt": ["--dt", "0.01"], "method": [],
+               "record": [], "out": "new"}, scenario=("none", None), extra=[])
 def test_simulate_exits_cleanly_and_writes_only_its_outputs(args, scenario, extra):
     def argv(root):
         argv, allowed = _simulate_argv(root, args)

@@ -386,10 +386,12 @@ def test_targets_no_sample_applies_are_refused():
     controller.  A target whose interval holds no sample's start is refused,
     named."""
     with pytest.warns(rr.RollerRigWarning, match="scaled by 0.0002"):
-        with pytest.raises(rr.RollerRigError, match=r"simulate: 3 of the 4 targets would never "
-                                                    r"be applied \(0.015 from 0.001 s, 0.02 from "
-                                                    r"0.002 s, 0.03 from 0.003 s\): no sample "
-                                                    r"starts between"):
+        with pytest.raises(rr.RollerRigError, match=r"simulate: duration = 0.004 s at "
+                                                    r"scenario.control_sample_time_s = 0.004 s "
+                                                    r"\(1 sample\): 3 of the 4 targets "
+                                                    r"would never be applied \(0.015 from 0.001 "
+                                                    r"s, 0.02 from 0.002 s, 0.03 from 0.003 s\): "
+                                                    r"no sample starts between"):
             rr.simulate(duration=0.004)
     with pytest.raises(rr.RollerRigError, match=r"1 of the 3 targets .*\(0.02 from 0.001 s\)"):
         rr.simulate(duration=0.4, targets=[0.01, 0.02, 0.03], target_times=[0.0, 0.001, 0.002])

@@ -183,7 +183,7 @@ def _first_sample(t: float, dt: float) -> int:
 
 
 def _check_targets_applied(targets: Sequence[float], target_times: Sequence[float], dt: float,
-                           n: int) -> None:
+                           n: int, duration_name: str, dt_name: str) -> None:
     """Refuse targets no sample would apply: the schedule gives each sample
     the target of the last start time at or before its start (k dt), so a
     target whose interval holds no sample start (it starts within one sample
@@ -193,11 +193,13 @@ def _check_targets_applied(targets: Sequence[float], target_times: Sequence[floa
     never = [f"{x:g} from {t:g} s" for x, t, a, b in zip(targets, target_times, firsts,
                                                           firsts[1:]) if a >= min(b, n)]
     if never:
+        # the run's arguments first (the command line names them as its options)
         raise RollerRigError(
-            f"simulate: {len(never)} of the {len(targets)} targets would never be applied "
-            f"({', '.join(never[:5])}{', ...' if len(never) > 5 else ''}): no sample starts "
-            f"between such a target's start and the next's (dt = {dt:g} s, {n} sample"
-            f"{'s' if n > 1 else ''}); lengthen the duration or space the target_times")
+            f"simulate: {duration_name} = {n * dt:g} s at {dt_name} = {dt:g} s ({n} sample"
+            f"{'s' if n > 1 else ''}): {len(never)} of the {len(targets)} targets would never "
+            f"be applied ({', '.join(never[:5])}{', ...' if len(never) > 5 else ''}): no "
+            f"sample starts between such a target's start and the next's; lengthen "
+            f"{duration_name} or space the target_times")
 
 
 def _record_plan(n: int, dt: float, record_every: int,
@@ -400,7 +402,7 @@ def simulate(duration: Optional[float] = None, dt: Optional[float] = None,
                       f"{dt_name} = {dt:g} s: the run takes {n} samples, {n * dt:.9g} s",
                       RollerRigWarning, stacklevel=2)
     targets, target_times = _target_schedule(P, duration, dt, targets, target_times, names)
-    _check_targets_applied(targets, target_times, dt, n)
+    _check_targets_applied(targets, target_times, dt, n, duration_name, dt_name)
     record_every, kept = _record_plan(n, dt, record_every, max_record_bytes)
     rig, _, dt, V, used = _build("simulate", P, dt=dt, method=method, substeps=substeps,
                                  ode=ode, nx=nx, ny=ny, roller_speed=roller_speed,
