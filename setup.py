@@ -33,9 +33,12 @@ from setuptools.command.build_ext import build_ext
 # march does (ISO C mode already implies this; the flag keeps it so).  The
 # core's calls into itself need not go through the PLT, as if another
 # library could replace its functions (-fPIC's default): binding them
-# locally makes the rig's step 4-5 % faster (benchmarks/RESULTS.md).
+# locally makes the rig's step 4-5 % faster (benchmarks/RESULTS.md).  The
+# core never reads errno (csrc/util/rr_common.h), so sqrt need not set it:
+# loops with a square root then vectorise (the patch's cross-sections, in
+# rr_gap_section.h), with the same doubles.
 UNIX_COMPILE_ARGS = ["-std=c99", "-O3", "-fno-wrapv", "-ffp-contract=off",
-                     "-fno-semantic-interposition", "-Wall", "-Wextra"]
+                     "-fno-math-errno", "-fno-semantic-interposition", "-Wall", "-Wextra"]
 
 CORE_SOURCES = sorted(glob("csrc/*/rr_*.c"))
 # the layer folders: those holding the core's sources (util, contact, ...)
