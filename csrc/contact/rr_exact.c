@@ -240,6 +240,16 @@ static int box_pays(int bx, int by, int mx, int my)
     return b <= 0.8 * g;
 }
 
+/* The tangential problem of S on its own grid, its tangential spectra
+ * built first where missing. */
+static int tangential_on_grid(solver *S, rr_exact_result *res)
+{
+    const rr_exact_problem *pb = S->pb;
+    const int st = rr_exact_build_spectra(S->L, S->cv, pb->grid.dy / pb->grid.dx, pb->nu, 1,
+                                          pb->interrupt);
+    return st < 0 ? st : rr_exact_solve_tangential(S, res);
+}
+
 /* The tangential problem of S (its layout L holding the normal solution),
  * on the contact's box where that pays, else on the grid: the box's
  * layout at work + box_base (its spectra kept there, keyed as the grid's),
@@ -266,16 +276,16 @@ static int tangential_on_contact(solver *S, double *work, size_t box_base, rr_ex
                 j1 = j > j1 ? j : j1;
             }
     if (i1 < 0)
-        return rr_exact_solve_tangential(S, res);
+        return tangential_on_grid(S, res);
     bx = box_side(i1 - i0 + 1, mx);
     by = box_side(j1 - j0 + 1, my);
     if (!box_pays(bx, by, mx, my) || rr_exact_carve(&B, bx, by, NULL) > box_base)
-        return rr_exact_solve_tangential(S, res);
+        return tangential_on_grid(S, res);
     fi = box_first(i0, i1, bx, mx);
     fj = box_first(j0, j1, by, my);
     rr_exact_carve(&B, bx, by, work + box_base);
     if ((st = rr_conv2d_init(&cvb, bx, by, B.conv, B.conv_len)) < 0
-        || (st = rr_exact_build_spectra(&B, &cvb, pb->grid.dy / pb->grid.dx, pb->nu,
+        || (st = rr_exact_build_spectra(&B, &cvb, pb->grid.dy / pb->grid.dx, pb->nu, 1,
                                         pb->interrupt)) < 0)
         return st;
     pbb = *pb;
@@ -366,7 +376,8 @@ int rr_exact_solve_from(const rr_exact_problem *pb, const rr_exact_start *start,
     if (st == RR_OK) {
         double key[HDR_LEN];
         memcpy(key, L.hdr, sizeof key);
-        st = rr_exact_build_spectra(&L, &cv, pb->grid.dy / pb->grid.dx, pb->nu, pb->interrupt);
+        st = rr_exact_build_spectra(&L, &cv, pb->grid.dy / pb->grid.dx, pb->nu, 0,
+                                    pb->interrupt);
         /* the grid's spectra built anew: the last grid may have been
          * larger, its layout over the box's, so the box's key goes too */
         if (memcmp(key, L.hdr, sizeof key) != 0)

@@ -170,55 +170,98 @@ static int stencil_positive(const double *s)
            && s[0] - 2.0 * s[1] - 2.0 * s[2] + 4.0 * s[3] > 0.0;
 }
 
+/* The cosines and sines inverse_stencils' sums take (in L->kern):
+ * cx, sx of 2 pi kx / L1 and wy, cy, sy: the weight (1 or 2) of line ky
+ * and it times cos and sin of 2 pi ky / L2. */
+typedef struct {
+    double *cx, *sx, *wy, *cy, *sy;
+} torus_trig;
+
+static torus_trig trig_of(layout *L, const rr_conv2d *cv)
+{
+    const int L1 = cv->L1, L2 = cv->L2, nh = cv->nh;
+    torus_trig t;
+    int a;
+    t.cx = L->kern;
+    t.sx = t.cx + L1;
+    t.wy = t.sx + L1;
+    t.cy = t.wy + nh;
+    t.sy = t.cy + nh;
+    for (a = 0; a < L1; a++) {
+        t.cx[a] = cos(2.0 * RR_PI * a / L1);
+        t.sx[a] = sin(2.0 * RR_PI * a / L1);
+    }
+    for (a = 0; a < nh; a++) {
+        t.wy[a] = a == 0 || 2 * a == L2 ? 1.0 : 2.0;
+        t.cy[a] = t.wy[a] * cos(2.0 * RR_PI * a / L2);
+        t.sy[a] = t.wy[a] * sin(2.0 * RR_PI * a / L2);
+    }
+    return t;
+}
+
 /* The 3 x 3 stencils nearest the inverses of the half-space's operators,
  * for the preconditioners: the inverse symbols on the torus, transformed
  * back at the offsets -1 .. 1.  The half-space's symbol grows as 1/|w| at
  * low frequencies, so the inverse decays fast and these few values carry
  * most of it; it must be the symbol of the kernel on the whole torus
  * (the grid's offsets alone, zero beyond, leave it negative somewhere).
- * Given the symbols (scaled as rr_conv2d's spectra) of A_nn in snn and of
- * the symmetric tangential block in sp2 (xx), sp3 (yy), spinv (xy) (the
- * three overwritten); stn[0..3] Snn (centre, (1, 0), (0, 1), (1, 1)),
- * stn[4] = 1 where usable; stn[8..11] Sxx, stn[12..15] Syy, stn[16] Sxy at
- * (1, 1) (odd in x and in y), stn[17] = 1 where usable.  Not usable: grids
- * under 3 x 3, a symbol with a zero, or a stencil whose symbol is not
- * positive (definite). */
-static void inverse_stencils(layout *L, const rr_conv2d *cv)
+ * The normal one, from the symbol (scaled as rr_conv2d's spectra) of A_nn
+ * in snn: stn[0..3] Snn (centre, (1, 0), (0, 1), (1, 1)), stn[4] = 1 where
+ * usable.  Not usable: grids under 3 x 3, a symbol with a zero, or a
+ * stencil whose symbol is not positive (definite). */
+static void normal_stencil(layout *L, const rr_conv2d *cv)
 {
     const int L1 = cv->L1, L2 = cv->L2, nh = cv->nh;
     const size_t half = (size_t)L1 * nh;
-    const double sc = 2.0 * L1 * L2;
-    double *stn = L->stn, *cx = L->kern, *sx = cx + L1, *wy = sx + L1, *cy = wy + nh;
-    double *sy = cy + nh, *nr = L->kern2, *ni = nr + half, t[4];
-    const double ks = 1.0 / ((double)L1 * L2);
+    const double sc = 2.0 * L1 * L2, ks = 1.0 / ((double)L1 * L2);
+    double *stn = L->stn, *nr = L->kern2, *ni = nr + half;
+    torus_trig t;
     size_t i;
-    int a, usable_n = 1, usable_t = 1;
+    int usable = 1;
 
-    memset(stn, 0, STN_LEN * sizeof *stn);
+    memset(stn, 0, 8 * sizeof *stn);
     if (L->mx < 3 || L->my < 3)
         return;
-    for (a = 0; a < L1; a++) {
-        cx[a] = cos(2.0 * RR_PI * a / L1);
-        sx[a] = sin(2.0 * RR_PI * a / L1);
-    }
-    for (a = 0; a < nh; a++) {
-        wy[a] = a == 0 || 2 * a == L2 ? 1.0 : 2.0;
-        cy[a] = wy[a] * cos(2.0 * RR_PI * a / L2);
-        sy[a] = wy[a] * sin(2.0 * RR_PI * a / L2);
-    }
+    t = trig_of(L, cv);
     for (i = 0; i < half; i++) {
-        /* 1 / nn; [[a, b], [b, d]]^-1 = [[d, -b], [-b, a]] / (a d - b b) */
         const double re = L->snn[i] * sc, im = L->snn[half + i] * sc, m = re * re + im * im;
+        usable &= m > 0.0 && isfinite(m);
+        nr[i] = re / m;
+        ni[i] = -im / m;
+    }
+    if (usable) {
+        kernel_near_origin(L1, nh, ks, nr, ni, t.cx, t.sx, t.wy, t.cy, t.sy, stn);
+        stn[4] = stencil_positive(stn) && rr_all_finite(stn, 4);
+    }
+}
+
+/* The tangential one, from the symmetric tangential block's symbols in sp2
+ * (xx), sp3 (yy), spinv (xy) (the three overwritten): stn[8..11] Sxx,
+ * stn[12..15] Syy, stn[16] Sxy at (1, 1) (odd in x and in y), stn[17] = 1
+ * where usable (as above, positive definite where sampled). */
+static void tangential_stencil(layout *L, const rr_conv2d *cv)
+{
+    const int L1 = cv->L1, L2 = cv->L2, nh = cv->nh;
+    const size_t half = (size_t)L1 * nh;
+    const double sc = 2.0 * L1 * L2, ks = 1.0 / ((double)L1 * L2);
+    double *stn = L->stn, t4[4];
+    torus_trig t;
+    size_t i;
+    int usable = 1;
+
+    memset(stn + 8, 0, (STN_LEN - 8) * sizeof *stn);
+    if (L->mx < 3 || L->my < 3)
+        return;
+    t = trig_of(L, cv);
+    for (i = 0; i < half; i++) {
+        /* [[a, b], [b, d]]^-1 = [[d, -b], [-b, a]] / (a d - b b) */
         const double ar = L->sp2[i] * sc, ai = L->sp2[half + i] * sc;
         const double dr = L->sp3[i] * sc, di = L->sp3[half + i] * sc;
         const double br = L->spinv[i] * sc, bi = L->spinv[half + i] * sc;
         const double er = ar * dr - ai * di - (br * br - bi * bi);
         const double ei = ar * di + ai * dr - 2.0 * br * bi, me = er * er + ei * ei;
         const double fr = er / me, fi = -ei / me;
-        usable_n &= m > 0.0 && isfinite(m);
-        usable_t &= me > 0.0 && isfinite(me);
-        nr[i] = re / m;
-        ni[i] = -im / m;
+        usable &= me > 0.0 && isfinite(me);
         L->sp2[i] = dr * fr - di * fi;
         L->sp2[half + i] = dr * fi + di * fr;
         L->sp3[i] = ar * fr - ai * fi;
@@ -226,120 +269,133 @@ static void inverse_stencils(layout *L, const rr_conv2d *cv)
         L->spinv[i] = -(br * fr - bi * fi);
         L->spinv[half + i] = -(br * fi + bi * fr);
     }
-    if (usable_n) {
-        kernel_near_origin(L1, nh, ks, nr, ni, cx, sx, wy, cy, sy, stn);
-        stn[4] = stencil_positive(stn) && rr_all_finite(stn, 4);
-    }
-    if (usable_t) {
-        kernel_near_origin(L1, nh, ks, L->sp2, L->sp2 + half, cx, sx, wy, cy, sy, stn + 8);
-        kernel_near_origin(L1, nh, ks, L->sp3, L->sp3 + half, cx, sx, wy, cy, sy, stn + 12);
-        kernel_near_origin(L1, nh, ks, L->spinv, L->spinv + half, cx, sx, wy, cy, sy, t);
-        stn[16] = t[3];
-        /* positive definite where sampled: diagonals positive, and their
-         * product above the square of the coupling -4 Sxy sin wx sin wy
-         * (at most 16 Sxy^2) */
-        stn[17] = stencil_positive(stn + 8) && stencil_positive(stn + 12)
-                  && rr_all_finite(stn + 8, 9);
-        if (stn[17] != 0.0) {
-            int p, q;
-            for (p = 0; p <= 8 && stn[17] != 0.0; p++)
-                for (q = 0; q <= 8; q++) {
-                    const double wx = RR_PI * p / 8.0, wy = RR_PI * q / 8.0;
-                    const double c1 = cos(wx), c2 = cos(wy);
-                    const double xx = stn[8] + 2.0 * stn[9] * c1 + 2.0 * stn[10] * c2
-                                      + 4.0 * stn[11] * c1 * c2;
-                    const double yy = stn[12] + 2.0 * stn[13] * c1 + 2.0 * stn[14] * c2
-                                      + 4.0 * stn[15] * c1 * c2;
-                    const double xy = -4.0 * stn[16] * sin(wx) * sin(wy);
-                    if (!(xx * yy > xy * xy)) {
-                        stn[17] = 0.0;
-                        break;
-                    }
+    if (!usable)
+        return;
+    kernel_near_origin(L1, nh, ks, L->sp2, L->sp2 + half, t.cx, t.sx, t.wy, t.cy, t.sy, stn + 8);
+    kernel_near_origin(L1, nh, ks, L->sp3, L->sp3 + half, t.cx, t.sx, t.wy, t.cy, t.sy, stn + 12);
+    kernel_near_origin(L1, nh, ks, L->spinv, L->spinv + half, t.cx, t.sx, t.wy, t.cy, t.sy, t4);
+    stn[16] = t4[3];
+    /* positive definite where sampled: diagonals positive, and their
+     * product above the square of the coupling -4 Sxy sin wx sin wy
+     * (at most 16 Sxy^2) */
+    stn[17] = stencil_positive(stn + 8) && stencil_positive(stn + 12)
+              && rr_all_finite(stn + 8, 9);
+    if (stn[17] != 0.0) {
+        int p, q;
+        for (p = 0; p <= 8 && stn[17] != 0.0; p++)
+            for (q = 0; q <= 8; q++) {
+                const double wx = RR_PI * p / 8.0, wy = RR_PI * q / 8.0;
+                const double c1 = cos(wx), c2 = cos(wy);
+                const double xx = stn[8] + 2.0 * stn[9] * c1 + 2.0 * stn[10] * c2
+                                  + 4.0 * stn[11] * c1 * c2;
+                const double yy = stn[12] + 2.0 * stn[13] * c1 + 2.0 * stn[14] * c2
+                                  + 4.0 * stn[15] * c1 * c2;
+                const double xy = -4.0 * stn[16] * sin(wx) * sin(wy);
+                if (!(xx * yy > xy * xy)) {
+                    stn[17] = 0.0;
+                    break;
                 }
-        }
+            }
     }
 }
 
-/* The kernels' spectra for the grid shape (mx, my, dy/dx) and nu: the
- * normal A_nn/dx and the steady tangential (A(k) - A(k + e_x))/dx, and
- * the preconditioners' stencils (inverse_stencils); kept in the workspace
- * and rebuilt only when the key changes.  Three transforms: the
- * primitives' boxes ta, tb, tr on the whole torus, of which every kernel is
- * a sum (rr_influence.h); the steady kernel's symbol is the symmetric one's
- * times 1 - e^(i wx) (the shift by one element, exact where the torus
- * holds offset mx: L1 >= 2 mx; else its kernel is transformed itself). */
-int rr_exact_build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu,
-                         const rr_interrupt *stop)
+/* The primitives' box table tab (ta, tb: even; tr: odd in x and y, 0 on
+ * the axes) on the whole torus, into L->kern: offsets 0 .. L/2, then
+ * -(L - L/2 - 1) .. -1 (the offset L/2 of an even L taken as +L/2: it lies
+ * beyond the grid's offsets, where only the symbol's shape needs it). */
+static void torus_table(layout *L, const rr_conv2d *cv, int nkx, const double *tab, int odd)
 {
-    const int mx = L->mx, my = L->my, L1 = cv->L1, L2 = cv->L2, nh = cv->nh;
-    const int nkx = mx + 1 > L1 / 2 + 1 ? mx + 1 : L1 / 2 + 1;
-    const int nky = my > L2 / 2 + 1 ? my : L2 / 2 + 1;
+    const int L1 = cv->L1, L2 = cv->L2;
+    int kx, ky;
+    for (ky = 0; ky < L2; ky++) {
+        const int j = ky <= L2 / 2 ? ky : L2 - ky;
+        const double sy = odd && ky > L2 / 2 ? -1.0 : 1.0;
+        const double *row = tab + (size_t)j * nkx;
+        double *o = L->kern + (size_t)ky * L1;
+        for (kx = 0; kx <= L1 / 2; kx++)
+            o[kx] = sy * row[kx];
+        for (kx = L1 / 2 + 1; kx < L1; kx++)
+            o[kx] = (odd ? -sy : sy) * row[L1 - kx];
+    }
+}
+
+/* The first phase of rr_exact_build_spectra: the primitives' tables, the
+ * transforms of ta (into sp2) and tb (sp3), snn and the normal stencil. */
+static int spectra_normal(layout *L, rr_conv2d *cv, double aspect, double nu,
+                          const rr_interrupt *stop)
+{
+    const int L1 = cv->L1, L2 = cv->L2, nh = cv->nh;
+    const int nkx = L->mx + 1 > L1 / 2 + 1 ? L->mx + 1 : L1 / 2 + 1;
+    const int nky = L->my > L2 / 2 + 1 ? L->my : L2 / 2 + 1;
     const size_t half = (size_t)L1 * nh;
     const double c = 1.0 / RR_PI;
-    double fr = 0.0, fi = 0.0;
-    int st, kx, ky, q;
+    int st, q;
     size_t i;
 
-    if (L->hdr[0] == HDR_TAG && L->hdr[1] == mx && L->hdr[2] == my && L->hdr[3] == aspect
-        && L->hdr[4] == nu)
-        return RR_OK;
-    L->hdr[0] = 0.0;
-    st = rr_influence_boxes(nkx, nky, 1.0, aspect, L->ta, L->tb, L->tr);
-    if (st < 0)
+    if ((st = rr_influence_boxes(nkx, nky, 1.0, aspect, L->ta, L->tb, L->tr)) < 0)
         return st;
+    for (q = 0; q < 2; q++) {
+        torus_table(L, cv, nkx, q == 0 ? L->ta : L->tb, 0);
+        if (rr_interrupted(stop))
+            return RR_ERR_INTERRUPTED;
+        if ((st = rr_conv2d_spectrum_torus(cv, L->kern, q == 0 ? L->sp2 : L->sp3)) < 0)
+            return st;
+    }
+    for (i = 0; i < half; i++) {
+        L->snn[i] = (1.0 - nu) * c * (L->sp2[i] + L->sp3[i]);
+        L->snn[half + i] = (1.0 - nu) * c * (L->sp2[half + i] + L->sp3[half + i]);
+    }
+    if (!finite4(L->snn, 2 * half))
+        return RR_ERR_RANGE;
+    if (rr_interrupted(stop))
+        return RR_ERR_INTERRUPTED;
+    normal_stencil(L, cv);
+    return RR_OK;
+}
+
+/* The second: the transform of tr, the steady tangential spectra and the
+ * tangential stencil, from the first's tables and transforms. */
+static int spectra_tangential(layout *L, rr_conv2d *cv, double nu, const rr_interrupt *stop)
+{
+    const int mx = L->mx, my = L->my, L1 = cv->L1, nh = cv->nh;
+    const int nkx = mx + 1 > L1 / 2 + 1 ? mx + 1 : L1 / 2 + 1;
+    const size_t half = (size_t)L1 * nh;
+    const double c = 1.0 / RR_PI;
+    int st, kx, ky, a, b;
+
+    torus_table(L, cv, nkx, L->tr, 1);
+    if (rr_interrupted(stop))
+        return RR_ERR_INTERRUPTED;
+    if ((st = rr_conv2d_spectrum_torus(cv, L->kern, L->spinv)) < 0)
+        return st;
+    /* every kernel a sum of the three, the steady ones shifted by one
+     * element: times 1 - e^(i wx) on the line kx = a */
+    for (a = 0; a < L1; a++) {
+        const double wx = 2.0 * RR_PI * (double)a / L1, fr = 1.0 - cos(wx), fi = -sin(wx);
+        for (b = 0; b < nh; b++) {
+            const size_t i = (size_t)a * nh + (size_t)b;
+            const double ar = L->sp2[i], ai = L->sp2[half + i], br = L->sp3[i];
+            const double bi = L->sp3[half + i], rr = L->spinv[i], ri = L->spinv[half + i];
+            const double xr = c * ((1.0 - nu) * ar + br), xi = c * ((1.0 - nu) * ai + bi);
+            const double yr = c * (ar + (1.0 - nu) * br), yi = c * (ai + (1.0 - nu) * bi);
+            const double zr = -nu * c * rr, zi = -nu * c * ri;
+            L->sxx[i] = xr * fr - xi * fi;
+            L->sxx[half + i] = xr * fi + xi * fr;
+            L->syy[i] = yr * fr - yi * fi;
+            L->syy[half + i] = yr * fi + yi * fr;
+            L->sxy[i] = zr * fr - zi * fi;
+            L->sxy[half + i] = zr * fi + zi * fr;
+            L->sp2[i] = xr;
+            L->sp2[half + i] = xi;
+            L->sp3[i] = yr;
+            L->sp3[half + i] = yi;
+            L->spinv[i] = zr;
+            L->spinv[half + i] = zi;
+        }
+    }
 #define QA(i, j) (L->ta[(j) * nkx + (i)])
 #define QB(i, j) (L->tb[(j) * nkx + (i)])
 #define QR(i, j) (L->tr[(j) * nkx + (i)])
-    /* ta, tb, tr on the whole torus (tr odd in x and y, 0 on the axes):
-     * offsets 0 .. L/2, then -(L - L/2 - 1) .. -1 (the offset L/2 of an
-     * even L taken as +L/2: it lies beyond the grid's offsets, where only
-     * the symbol's shape needs it) */
-    for (q = 0; q < 3; q++) {
-        double *spec = q == 0 ? L->sp2 : q == 1 ? L->sp3 : L->spinv;
-        const double *tab = q == 0 ? L->ta : q == 1 ? L->tb : L->tr;
-        for (ky = 0; ky < L2; ky++) {
-            const int j = ky <= L2 / 2 ? ky : L2 - ky;
-            const double sy = q == 2 && ky > L2 / 2 ? -1.0 : 1.0;
-            const double *row = tab + (size_t)j * nkx;
-            double *o = L->kern + (size_t)ky * L1;
-            for (kx = 0; kx <= L1 / 2; kx++)
-                o[kx] = sy * row[kx];
-            for (kx = L1 / 2 + 1; kx < L1; kx++)
-                o[kx] = (q < 2 ? sy : -sy) * row[L1 - kx];
-        }
-        if (rr_interrupted(stop))
-            return RR_ERR_INTERRUPTED;
-        if ((st = rr_conv2d_spectrum_torus(cv, L->kern, spec)) < 0)
-            return st;
-    }
-    /* every kernel a sum of the three, the steady ones shifted */
-    for (i = 0; i < half; i++) {
-        const double ar = L->sp2[i], ai = L->sp2[half + i], br = L->sp3[i], bi = L->sp3[half + i];
-        const double rr = L->spinv[i], ri = L->spinv[half + i];
-        const double xr = c * ((1.0 - nu) * ar + br), xi = c * ((1.0 - nu) * ai + bi);
-        const double yr = c * (ar + (1.0 - nu) * br), yi = c * (ai + (1.0 - nu) * bi);
-        const double zr = -nu * c * rr, zi = -nu * c * ri;
-        if (i % nh == 0) {
-            /* 1 - e^(i wx), for the line kx = i / nh */
-            const double wx = 2.0 * RR_PI * (double)(i / nh) / L1;
-            fr = 1.0 - cos(wx);
-            fi = -sin(wx);
-        }
-        L->snn[i] = (1.0 - nu) * c * (ar + br);
-        L->snn[half + i] = (1.0 - nu) * c * (ai + bi);
-        L->sxx[i] = xr * fr - xi * fi;
-        L->sxx[half + i] = xr * fi + xi * fr;
-        L->syy[i] = yr * fr - yi * fi;
-        L->syy[half + i] = yr * fi + yi * fr;
-        L->sxy[i] = zr * fr - zi * fi;
-        L->sxy[half + i] = zr * fi + zi * fr;
-        L->sp2[i] = xr;
-        L->sp2[half + i] = xi;
-        L->sp3[i] = yr;
-        L->sp3[half + i] = yi;
-        L->spinv[i] = zr;
-        L->spinv[half + i] = zi;
-    }
     if (L1 < 2 * mx) {
         /* the steady kernels themselves, on the grid's offsets */
         const int kw = 2 * mx - 1;
@@ -371,17 +427,52 @@ int rr_exact_build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu,
 #undef QA
 #undef QB
 #undef QR
-    if (!finite4(L->snn, 2 * half) || !finite4(L->sxx, 2 * half) || !finite4(L->syy, 2 * half)
-        || !finite4(L->sxy, 2 * half))
+    if (!finite4(L->sxx, 2 * half) || !finite4(L->syy, 2 * half) || !finite4(L->sxy, 2 * half))
         return RR_ERR_RANGE;
     if (rr_interrupted(stop))
         return RR_ERR_INTERRUPTED;
-    inverse_stencils(L, cv);
-    L->hdr[1] = mx;
-    L->hdr[2] = my;
-    L->hdr[3] = aspect;
-    L->hdr[4] = nu;
-    L->hdr[0] = HDR_TAG;
+    tangential_stencil(L, cv);
+    return RR_OK;
+}
+
+/* The kernels' spectra for the grid shape (mx, my, dy/dx) and nu: the
+ * normal A_nn/dx and, where tangential is set, the steady tangential
+ * (A(k) - A(k + e_x))/dx, with the preconditioners' stencils; kept in the
+ * workspace, keyed (hdr[1..4]; hdr[5] = 1 once the tangential ones are
+ * there too), and built only where missing: a grid whose tangential
+ * problem is solved on its box (rr_exact.c) never needs its own.  Three
+ * transforms in all: the primitives' boxes ta, tb, tr on the whole torus,
+ * of which every kernel is a sum (rr_influence.h); the steady kernel's
+ * symbol is the symmetric one's times 1 - e^(i wx) (the shift by one
+ * element, exact where the torus holds offset mx: L1 >= 2 mx; else its
+ * kernel is transformed itself).  The tangential phase takes the normal
+ * one's tables and transforms of ta and tb (sp2, sp3), which nothing else
+ * writes while the key holds. */
+int rr_exact_build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu, int tangential,
+                           const rr_interrupt *stop)
+{
+    const int mx = L->mx, my = L->my;
+    int st;
+
+    if (!(L->hdr[0] == HDR_TAG && L->hdr[1] == mx && L->hdr[2] == my && L->hdr[3] == aspect
+          && L->hdr[4] == nu)) {
+        L->hdr[0] = 0.0;
+        if ((st = spectra_normal(L, cv, aspect, nu, stop)) < 0)
+            return st;
+        L->hdr[1] = mx;
+        L->hdr[2] = my;
+        L->hdr[3] = aspect;
+        L->hdr[4] = nu;
+        L->hdr[5] = 0.0;
+        L->hdr[0] = HDR_TAG;
+    }
+    if (tangential && L->hdr[5] != 1.0) {
+        if ((st = spectra_tangential(L, cv, nu, stop)) < 0) {
+            L->hdr[0] = 0.0;         /* sp2, sp3 may be half overwritten */
+            return st;
+        }
+        L->hdr[5] = 1.0;
+    }
     return RR_OK;
 }
 

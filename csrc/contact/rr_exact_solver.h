@@ -73,7 +73,7 @@ typedef struct {
  * problem of a case (rr_exact_normal.c, rr_exact_tangential.c). */
 size_t rr_exact_spectrum_len(int mx, int my);
 size_t rr_exact_carve(layout *L, int mx, int my, double *base);
-int rr_exact_build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu,
+int rr_exact_build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu, int tangential,
                            const rr_interrupt *stop);
 double rr_exact_steady_diagonal(double aspect, double nu);
 int rr_exact_solve_normal(solver *S, rr_exact_result *res);
