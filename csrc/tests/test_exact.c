@@ -486,6 +486,29 @@ int main(void)
         free(w2);
         free(w3);
     }
+    /* the spectra's phases (rr_exact_build_spectra): a grid first solved
+     * without creepage keeps the normal spectra alone; the next case of that
+     * grid with creepage adds the tangential ones and gives a fresh
+     * workspace's doubles (the tight Hertzian grid: no box) */
+    {
+        rr_exact_problem p2 = hertz_case(0.005, 0.003, 15), p0;
+        const size_t l2 = rr_exact_workspace_len(p2.grid.mx, p2.grid.my);
+        double *w1 = calloc(l2, sizeof *w1), *w2 = calloc(l2, sizeof *w2);
+        p2.cx = 3e-4;
+        p2.cphi = 0.6;
+        p0 = p2;
+        p0.cx = p0.cphi = 0.0;
+        p0.N = 0.7 * p2.N;            /* another normal problem: no cached pressure */
+        CHECK_STATUS(rr_exact_solve(&p2, w1, l2, &r, NULL), RR_OK, "phases: fresh");
+        CHECK_STATUS(rr_exact_solve(&p0, w2, l2, &r2, NULL), RR_OK, "phases: no creepage");
+        CHECK(r2.tang_products == 0 && r2.fx == 0.0, "phases: no creepage, no traction");
+        CHECK_STATUS(rr_exact_solve(&p2, w2, l2, &r2, NULL), RR_OK, "phases: then creepage");
+        CHECK(memcmp(&r.fx, &r2.fx, sizeof r.fx) == 0 && memcmp(&r.mz, &r2.mz, sizeof r.mz) == 0
+                  && r.tang_products == r2.tang_products,
+              "phases: the tangential spectra added later, a fresh workspace's doubles");
+        free(w1);
+        free(w2);
+    }
     /* a workspace as any other case may leave it (NaN everywhere: a failed
      * one; the caches' tags then match nothing) gives a fresh workspace's
      * doubles: no start, search direction or scratch value of another
