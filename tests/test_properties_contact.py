@@ -303,6 +303,16 @@ def test_creep_forces_odd_in_creepage(args, opts, friction):
 
 @examples(8)
 @given(args=batches(CREEP, wild_share=8), opts=creep_options(), friction=frictions)
+# a = 479 km with spin 50/m: FASTSIM's middle element stood at x = 6e-11 m,
+# not 0 (aj - 1.5 h), 3e-9 of its rigid slip: fx +-9e-15, 1.9e-12 mu N apart.
+# The grid's centres are now exact mirror images
+@example(args={"cx": np.array([0.0]), "cy": np.array([-1.0]),
+               "cphi": np.array([-50.000000000000014]), "a": np.array([479145.0]),
+               "b": np.array([0.00010000000000000009]), "N": np.array([1.0]),
+               "mu": np.array([0.010000000000000004]), "G": np.array([9.999999999999993e+08]),
+               "nu": np.array([0.0]), "speed": np.array([0.0])},
+         opts={"method": "fastsim", "nx": 3, "ny": 5, "bound": "parabolic", "grid": "strips",
+               "slip_speed": None}, friction=None)
 def test_creep_forces_mirror_in_y(args, opts, friction):
     """Mirroring y: (cx, -cy, -cphi) gives (fx, -fy, -mz).  The FASTSIM rows
     are mirror images but summed in the other order: rounding of a sum of

@@ -501,10 +501,11 @@ def _pressure_shape(bound, q):
 
 
 def _row_geometry(j, ny, a, b, grid):
-    """Row j of the grid: (w2, y, aj) with y_j/b = -1 + (2 j + 1)/ny,
-    w2 = 1 - y_j^2/b^2, and aj the row's half-length: a ("rect", the
-    ellipse's bounding box) or a sqrt(w2) ("strips", the row's own chord)."""
-    yh = -1.0 + (2.0 * j + 1.0) / ny
+    """Row j of the grid: (w2, y, aj) with y_j/b = (2 j + 1 - ny)/ny (rows j
+    and ny - 1 - j at exactly -y and y), w2 = 1 - y_j^2/b^2, and aj the
+    row's half-length: a ("rect", the ellipse's bounding box) or a sqrt(w2)
+    ("strips", the row's own chord)."""
+    yh = (2.0 * j + 1.0 - ny) / ny
     w2 = 1.0 - yh * yh
     y = yh * b
     aj = a * math.sqrt(w2) if grid == "strips" else a
@@ -514,9 +515,9 @@ def _row_geometry(j, ny, a, b, grid):
 def _pressure_scale(a, b, N, nx, ny, bound, grid):
     """Scale of the pressure p = scale * shape(q) at the element centres so
     that it sums to N over the grid (full sliding then gives exactly
-    |F| = mu N).  The sum runs over the element centres x = aj - (i + 1/2) h
-    of every row, computed as in the march, empty elements (q <= 0) left
-    out."""
+    |F| = mu N).  The sum runs over the element centres x = ((nx - 1)/2 - i) h
+    of every row (elements i and nx - 1 - i at exactly -x and x), computed
+    as in the march, empty elements (q <= 0) left out."""
     dy = 2.0 * b / ny
     S = 0.0
     for j in range(ny):
@@ -524,7 +525,7 @@ def _pressure_scale(a, b, N, nx, ny, bound, grid):
         h = 2.0 * aj / nx
         row = 0.0
         for i in range(nx):
-            t = (aj - (i + 0.5) * h) / a
+            t = ((0.5 * (nx - 1) - i) * h) / a
             q = w2 - t * t
             if q > 0.0:
                 row += _pressure_shape(bound, q)
@@ -581,7 +582,7 @@ def _march_row(j, nx, ny, a, b, bound, grid, scale, L1, L2, L3, cx, cy, cphi,
     sx = sy = sm = 0.0
     elements = []
     for i in range(nx):
-        x = aj - (i + 0.5) * h
+        x = (0.5 * (nx - 1) - i) * h
         t = x / a
         q = w2 - t * t
         pn = 0.0

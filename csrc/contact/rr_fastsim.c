@@ -181,11 +181,14 @@ typedef struct {
     double y[GROUP], w2[GROUP], aj[GROUP], h[GROUP], gxh[GROUP];
 } group;
 
-/* Element i of row k: centre x and q = 1 - x^2/a^2 - y^2/b^2, inside if
+/* Element i of row k: centre x = ((nx - 1)/2 - i) h (the elements i and
+ * nx - 1 - i at exactly -x and x, the middle one of an odd row at 0: the
+ * grid is its own mirror image, so mirrored creepages give mirrored forces
+ * to the rounding of their sums) and q = 1 - x^2/a^2 - y^2/b^2, inside if
  * q > 0.  The vector code below does the very same operations. */
 static double elem_q(const march *m, const group *g, int k, int i, double *x)
 {
-    const double xc = g->aj[k] - (i + 0.5) * g->h[k], t = xc * m->inv_a;
+    const double xc = (0.5 * (m->nx - 1) - i) * g->h[k], t = xc * m->inv_a;
     *x = xc;
     return g->w2[k] - t * t;
 }
@@ -215,7 +218,8 @@ static void group_init(const march *m, int j0, group *g)
     g->nr = left < g->width ? left : g->width;
     for (k = 0; k < g->width; k++) {
         const int j = k < g->nr ? j0 + k : j0;
-        const double yh = -1.0 + (2.0 * j + 1.0) * inv_ny, w2 = 1.0 - yh * yh;
+        /* y_j / b, rows j and ny - 1 - j at exactly -y and y */
+        const double yh = (2.0 * j + 1.0 - m->ny) * inv_ny, w2 = 1.0 - yh * yh;
         const double aj = m->strips ? c->a * sqrt(w2) : c->a;
         g->y[k] = yh * c->b;
         g->w2[k] = k < g->nr ? w2 : -1.0;

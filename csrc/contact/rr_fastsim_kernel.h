@@ -26,18 +26,19 @@
 #define v_load V_CAT(V, _load)
 #define v_store V_CAT(V, _store)
 
-/* Element positions of a step i for nv vectors of rows: x, (x/a)^2 and the
- * rigid slip (gy + gphi x) h.  On the rectangular grid every row has the
- * same elements (aj = a, h = 2a/nx), so the first vector's serve all. */
-V_FN RR_FASTSIM_INLINE void V_NAME(step_geometry)(const march *m, const vec *aj, const vec *h,
+/* Element positions of a step i for nv vectors of rows: x = ((nx - 1)/2 - i)
+ * h (elem_q's), (x/a)^2 and the rigid slip (gy + gphi x) h.  On the
+ * rectangular grid every row has the same elements (h = 2a/nx), so the
+ * first vector's serve all. */
+V_FN RR_FASTSIM_INLINE void V_NAME(step_geometry)(const march *m, const vec *h,
                                                   int nv, int rect, int slip_too, int i,
                                                   vec *x, vec *tt, vec *vy)
 {
-    const vec xi = v_set1(i + 0.5), inv_a = v_set1(m->inv_a);
+    const vec xi = v_set1(0.5 * (m->nx - 1) - i), inv_a = v_set1(m->inv_a);
     const vec gy = v_set1(m->gy), gphi = v_set1(m->gphi);
     int v;
     for (v = 0; v < (rect ? 1 : nv); v++) {
-        const vec xv = v_sub(aj[v], v_mul(xi, h[v])), t = v_mul(xv, inv_a);
+        const vec xv = v_mul(xi, h[v]), t = v_mul(xv, inv_a);
         x[v] = xv;
         tt[v] = v_mul(t, t);
         if (slip_too)
@@ -54,16 +55,14 @@ V_FN RR_FASTSIM_INLINE void V_NAME(step_geometry)(const march *m, const vec *aj,
 /* Sum of q (parabolic) or sqrt(q) over the inside elements of each row of
  * the group, for the pressure scale.  An element outside adds +0, which
  * changes no sum (a sum that starts at +0 never becomes -0).  Elements i
- * and nx - 1 - i lie symmetrically about the row's centre: the left half's
- * values are taken twice (the right half's differ in rounding only). */
+ * and nx - 1 - i lie at -x and x: the left half's values are taken twice. */
 V_FN RR_FASTSIM_INLINE void V_NAME(group_pressure)(const march *m, const group *g, int nv,
                                                    int rect, double *rows)
 {
-    vec aj[GROUP_VECS], h[GROUP_VECS], w2[GROUP_VECS], acc[GROUP_VECS];
+    vec h[GROUP_VECS], w2[GROUP_VECS], acc[GROUP_VECS];
     const vec zero = v_set1(0.0);
     int i, v;
     for (v = 0; v < nv; v++) {
-        aj[v] = v_load(g->aj + V_LANES * v);
         h[v] = v_load(g->h + V_LANES * v);
         w2[v] = v_load(g->w2 + V_LANES * v);
         acc[v] = zero;
@@ -71,7 +70,7 @@ V_FN RR_FASTSIM_INLINE void V_NAME(group_pressure)(const march *m, const group *
     const int lo = g->lo < m->nx - g->hi ? g->lo : m->nx - g->hi, mid = m->nx / 2;
     for (i = lo; i < mid + m->nx % 2; i++) {
         vec x[GROUP_VECS], tt[GROUP_VECS];
-        V_NAME(step_geometry)(m, aj, h, nv, rect, 0, i, x, tt, 0);
+        V_NAME(step_geometry)(m, h, nv, rect, 0, i, x, tt, 0);
         for (v = 0; v < nv; v++) {
             const vec q = v_max(v_sub(w2[v], tt[v]), zero), r = m->parabolic ? q : v_sqrt(q);
             acc[v] = v_add(acc[v], i < mid ? v_add(r, r) : r);
@@ -97,13 +96,12 @@ V_FN RR_FASTSIM_INLINE void V_NAME(group_pressure)(const march *m, const group *
 V_FN RR_FASTSIM_INLINE void V_NAME(group_coulomb)(const march *m, const group *g, int nv,
                                                   int rect, sums *s)
 {
-    vec aj[GROUP_VECS], h[GROUP_VECS], w2[GROUP_VECS], y[GROUP_VECS], gxh[GROUP_VECS];
+    vec h[GROUP_VECS], w2[GROUP_VECS], y[GROUP_VECS], gxh[GROUP_VECS];
     vec px[GROUP_VECS], py[GROUP_VECS], sx[GROUP_VECS], sy[GROUP_VECS], sm[GROUP_VECS];
     const vec zero = v_set1(0.0), tiny = v_set1(DBL_MIN);
     const vec scale = v_set1(m->scale), mu = v_set1(m->mu_bound);
     int i, v;
     for (v = 0; v < nv; v++) {
-        aj[v] = v_load(g->aj + V_LANES * v);
         h[v] = v_load(g->h + V_LANES * v);
         w2[v] = v_load(g->w2 + V_LANES * v);
         y[v] = v_load(g->y + V_LANES * v);
@@ -112,7 +110,7 @@ V_FN RR_FASTSIM_INLINE void V_NAME(group_coulomb)(const march *m, const group *g
     }
     for (i = g->lo; i < g->hi; i++) {
         vec x[GROUP_VECS], tt[GROUP_VECS], vy[GROUP_VECS];
-        V_NAME(step_geometry)(m, aj, h, nv, rect, 1, i, x, tt, vy);
+        V_NAME(step_geometry)(m, h, nv, rect, 1, i, x, tt, vy);
         for (v = 0; v < nv; v++) {
             const vec q = v_max(v_sub(w2[v], tt[v]), zero);
             const vec gb = v_mul(mu, v_mul(scale, m->parabolic ? q : v_sqrt(q)));
