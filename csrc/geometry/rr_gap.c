@@ -196,10 +196,9 @@ static int weighted_reference(const plane *f, const samples *rs, section *wsec, 
     id.t2z = id.ny = 0.0;
     wsec->k0 = 0;
     walker_set(&id, wsec, 0.0, &w);
+    walk_points(&w, 0, wsec->q->k - 1);
     for (i = 0; i < wsec->q->k; i++) {
-        double d;
-        walk_point(&w, i);
-        d = fabs(wsec->yc[i] - target);
+        const double d = fabs(wsec->yc[i] - target);
         if (d < best) {
             best = d;
             wsec->k0 = i;
