@@ -588,7 +588,8 @@ def rig_exact(geometry, y_ws, *, mu, N=None, Fz=None, side="left", spin=None,
     passes: 2 (default): a first grid of n/2 across (elements twice dx, dy
     where those are given) at the zero-gap pose, sized from Hertz's
     approach, finds the approach; the second, with n
-    across, covers where h <= 1.1 times it; 1: one grid sized from Hertz's
+    across, covers where h <= 1.1 times it (1.03 on elements of given
+    dx, dy); 1: one grid sized from Hertz's
     approach (or the approach given).  Either way a solution whose contact
     reaches the grid's edge, or whose approach exceeds what the grid
     covers, is solved again on a grid sized from the approach found.
@@ -656,7 +657,8 @@ def rig_exact(geometry, y_ws, *, mu, N=None, Fz=None, side="left", spin=None,
     def at(load, a):
         """Patch, solution and creepages for the normal load; a: an
         estimate of the approach (None: find it)."""
-        cov = 1.1
+        # elements of given size: 1.03 (rr_wheel_exact.c, GIVEN_COVER)
+        cov = 1.03 if opts.get("dx") and opts.get("dy") else 1.1
         if a is None:
             if passes == 2:
                 s, _ = solve(build(load, max(4, n // 2), approach, cover, first_ref, False,

@@ -50,6 +50,15 @@
  * 72 cases' forces moved by 2.5e-6 mu N at most (their departures from
  * CONTACT's the same maxima). */
 #define COARSE_SAMPLE (4.0 * RR_GAP_SAMPLE)
+/* The loaded grid's cover of the coarse pass's approach (it holds every
+ * element h reaches the approach at while the approach found is within it;
+ * beyond it the grid is built again, 1.3 times).  Elements of given size
+ * stand on the same lattice whatever the cover, so a tighter one changes
+ * no element of the contact, only the exterior: at 1.03 instead of 1.1
+ * CONTACT's 72 roller cases took 3.5 % fewer instructions (12 profiled
+ * cases), the same solves, forces within 6e-13 mu N.  Elements from n are
+ * sized by the grid's extent, so their cover stays 1.1 (the doubles before). */
+#define GIVEN_COVER 1.03
 
 void rr_wheel_exact_default(rr_wheel_exact_problem *pb)
 {
@@ -381,7 +390,7 @@ static int at(call *c, double N, double a, rr_gap_patch *p, int *warn)
     const rr_wheel_exact_problem *pb = c->pb;
     const int n = pb->gap.n;
     const int first_ref = pb->gap.reference == RR_GAP_WEIGHTED ? RR_GAP_POINT : pb->gap.reference;
-    double cov = 1.1;
+    double cov = pb->gap.dx > 0.0 && pb->gap.dy > 0.0 ? GIVEN_COVER : 1.1;
     int st, edge, k;
     if (!(a > 0.0)) {
         if (pb->passes == 2) {

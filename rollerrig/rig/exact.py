@@ -152,7 +152,9 @@ def rig_exact(geometry: RigGeometry, y_ws: float, *, mu: float, N: Optional[floa
         2 (default): a first grid of n/2 across (elements twice dx, dy
         where those are given) at the zero-gap pose, sized from Hertz's
         approach, finds the approach; the second, with n across, covers
-        where h <= 1.1 times it; 1: one grid sized from Hertz's approach
+        where h <= 1.1 times it (1.03 where dx and dy are given: the
+        elements stand on the same lattice whatever the cover, so only
+        the exterior shrinks); 1: one grid sized from Hertz's approach
         (or the approach given).  Either way a solution whose contact
         reaches the grid's edge, or whose approach exceeds what the grid
         covers, is solved again on a grid sized from the approach found.
