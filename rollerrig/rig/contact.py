@@ -37,7 +37,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .. import _core
-from .._errors import RollerRigError, RollerRigWarning, status_message
+from .._errors import RollerRigError, RollerRigWarning, check_number, status_message
 from .._binding import (_broadcast, _finish, _friction, check_creep_options, core, loop_method,
                         swap_blame)
 from .._typing import F64Array
@@ -170,24 +170,21 @@ _Model = Tuple[float, float, float, float, float, float, float, float]
 
 _TINY = np.finfo(float).tiny      # a subnormal modulus has too few digits for a force
 #: the normal or the vertical loads are _Loads (_nonhertz_contact): _loads
-_RANGES = {"nu": "in [0, 0.5]", "mu": f"in (0, {_core.FRICTION_MAX:g}]"}
-
-
 def _model(func: str, table: ContactTable, mu: float, E: float, nu: float, vmin: float,
            friction: object) -> _Model:
     g = table.geometry
-    checks: Tuple[Tuple[str, float, Callable[[float], bool]], ...] = (
-        ("mu", mu, lambda x: 0 < x <= _core.FRICTION_MAX), ("E", E, lambda x: x > 0),
-        ("nu", nu, lambda x: 0 <= x <= 0.5), ("vmin", vmin, lambda x: x > 0))
-    for name, v, ok in checks:
-        real = isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, bool)
+    # a number by check_number's rule, then its range (one message for both)
+    checks: Tuple[Tuple[str, float, Callable[[float], bool], str], ...] = (
+        ("mu", mu, lambda x: 0 < x <= _core.FRICTION_MAX, f"in (0, {_core.FRICTION_MAX:g}]"),
+        ("E", E, lambda x: x > 0, "> 0"), ("nu", nu, lambda x: 0 <= x <= 0.5, "in [0, 0.5]"),
+        ("vmin", vmin, lambda x: x > 0, "> 0"))
+    for name, v, ok, words in checks:
         try:
-            good = real and np.isfinite(float(v)) and ok(float(v))
-        except OverflowError:                          # an int beyond the doubles
+            good = ok(check_number(func, name, v))
+        except RollerRigError:
             good = False
         if not good:
-            raise RollerRigError(f"{func}: {name} must be a finite number "
-                                 f"{_RANGES.get(name, '> 0')}, got {v!r}")
+            raise RollerRigError(f"{func}: {name} must be a finite number {words}, got {v!r}")
     fA, fB = _friction(func, friction)
     estar, G = elastic_constants(E, nu)
     if not (estar >= _TINY and G >= _TINY):
