@@ -184,7 +184,7 @@ def _model(func: str, table: ContactTable, mu: float, E: float, nu: float, vmin:
         except RollerRigError:
             good = False
         if not good:
-            raise RollerRigError(f"{func}: {name} must be a finite number {words}, got {v!r}")
+            raise RollerRigError(f"{func}: {name} must be a finite number {words}, got {v!r:.60}")
     fA, fB = _friction(func, friction)
     estar, G = elastic_constants(E, nu)
     if not (estar >= _TINY and G >= _TINY):
