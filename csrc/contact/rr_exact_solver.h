@@ -14,7 +14,8 @@
 
 /* Krylov vectors kept by GMRES before it restarts. */
 #define GMRES_M 30
-/* The workspace's header: a tag, then the key of the cached spectra. */
+/* The workspace's header: a tag, then the key of the cached spectra
+ * (mx, my, dy/dx, nu) and 1 where their tangential phase is built too. */
 #define HDR_LEN 8
 /* the stencils of the inverse operators (inverse_stencils), kept with the spectra */
 #define STN_LEN 24
@@ -68,7 +69,8 @@ typedef struct {
 
 /* Not API: the doubles of one kernel spectrum of an mx x my grid; the
  * workspace carved (base NULL: its length only); the kernel spectra and
- * inverse stencils of a grid's aspect dy/dx and nu (polling the interrupt
+ * inverse stencils of a grid's aspect dy/dx and nu, the normal ones and,
+ * where tangential is set, the tangential ones too (polling the interrupt
  * hook); the steady operator's diagonal; the normal and the tangential
  * problem of a case (rr_exact_normal.c, rr_exact_tangential.c). */
 size_t rr_exact_spectrum_len(int mx, int my);
