@@ -107,16 +107,6 @@ typedef struct {
     double t2y, t2z, ny, nz; /* t2 and n in the rig's (Y, Z) */
 } plane;
 
-/* radius - sqrt(radius^2 - x^2) without cancellation (patch.py's _drop:
- * numpy.maximum keeps a NaN) */
-static double drop(double radius, double x)
-{
-    const double x2 = x * x;
-    double v = radius * radius - x2;
-    v = v < 0.0 ? 0.0 : v;
-    return x2 / (radius + sqrt(v));
-}
-
 static void plane_set(plane *f, double P0, double P1, double delta)
 {
     const double c = cos(delta), s = sin(delta);
@@ -174,29 +164,12 @@ static void walker_set(const plane *f, const section *c, double x, walker *w)
     w->nz = f->nz;
 }
 
-/* sample i of w's section at x: its (yc, ze) in the plane */
-static void walk_point(const walker *w, int i)
-{
-    const double zi = w->z[i];
-    double Y, Z, dY, dZ;
-    if (w->body == 0) {
-        Y = w->sigma * (w->body_y + w->s[i]);
-        Z = zi - drop(w->radius + zi, w->x);
-    } else {
-        const double yl = w->sigma * (w->body_y + w->s[i]);
-        const double zl = -w->radius + zi + drop(w->radius - zi, w->x);
-        Y = w->y_ws + yl * w->cr - zl * w->sr;
-        Z = w->z0 + yl * w->sr + zl * w->cr;
-    }
-    dY = Y - w->P0;
-    dZ = Z - w->P1;
-    w->yc[i] = dY * w->t2y + dZ * w->t2z;
-    w->ze[i] = dY * w->ny + dZ * w->nz;
-}
-
-/* samples i0 .. i1 (i0 <= i1) of w's section at x, as walk_point does
- * each: a loop per body, whose samples are independent, so that the
- * compiler computes several at once (the walk's loop of checks follows) */
+/* samples i0 .. i1 (i0 <= i1) of w's section at x: their (yc, ze) in the
+ * plane, a loop per body, whose samples are independent, so that the
+ * compiler computes several at once (the walk's loop of checks follows).
+ * A body of radius r drops by r - sqrt(r^2 - x^2) at x, written
+ * x^2 / (r + sqrt(r^2 - x^2)) against cancellation (patch.py's _drop; its
+ * numpy.maximum keeps a NaN, as the comparison here does). */
 static RR_GAP_INLINE void walk_points_loops(const walker *w, int i0, int i1)
 {
     const double *s = w->s, *z = w->z;
@@ -280,8 +253,7 @@ static int sec_walk(const plane *f, section *c, double x, double need_lo, double
     double d;
     int a, b, dir, done;
     walker_set(f, c, x, &w);
-    walk_point(&w, k0);
-    walk_point(&w, k0 + 1);
+    walk_points(&w, k0, k0 + 1);
     d = c->yc[k0 + 1] - c->yc[k0];
     if (!(isfinite(d) && d != 0.0 && isfinite(c->ze[k0]) && isfinite(c->ze[k0 + 1]))) {
         out->why = RR_GAP_FOLD;
