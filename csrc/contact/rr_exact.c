@@ -318,7 +318,6 @@ static int tangential_on_contact(solver *S, double *work, size_t box_base, rr_ex
         SB.start = &sb;
     }
     st = rr_exact_solve_tangential(&SB, res);
-    S->products += SB.products;
     /* back onto the grid: nothing outside the box (no pressure there) */
     for (i = 0; i < 2 * n; i++)
         L->p[i] = L->s[i] = 0.0;

@@ -171,7 +171,7 @@ static int start_from_caller(const rr_exact_problem *pb, layout *L, const double
  * the multiplier, eliminated by keeping every search direction mean-free on
  * the contact set C.  Preconditioned, as Vollebregt's NormCG, by an
  * approximate inverse of A restricted to C and made mean-free there: here
- * the 3 x 3 stencil of the inverse (inverse_stencils), which costs a
+ * the 3 x 3 stencil of the inverse (normal_stencil in rr_exact_ops.c), which costs a
  * stencil instead of a product and took the products on the 300 random
  * cases from 18.4 to 10.0 at 27 across, 20.7 to 10.8 at 45.  Returns the
  * status; res gets delta, the products and the residual. */

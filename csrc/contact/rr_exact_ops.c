@@ -170,7 +170,9 @@ static int stencil_positive(const double *s)
            && s[0] - 2.0 * s[1] - 2.0 * s[2] + 4.0 * s[3] > 0.0;
 }
 
-/* The cosines and sines inverse_stencils' sums take (in L->kern):
+/* The cosines and sines the stencils' sums take (in L->kern, which the
+ * tangential phase's table overwrites in between, so each stencil sets
+ * them; a few hundred values against the transforms' tens of thousands):
  * cx, sx of 2 pi kx / L1 and wy, cy, sy: the weight (1 or 2) of line ky
  * and it times cos and sin of 2 pi ky / L2. */
 typedef struct {

@@ -17,7 +17,8 @@
 /* The workspace's header: a tag, then the key of the cached spectra
  * (mx, my, dy/dx, nu) and 1 where their tangential phase is built too. */
 #define HDR_LEN 8
-/* the stencils of the inverse operators (inverse_stencils), kept with the spectra */
+/* the stencils of the inverse operators (normal_stencil, tangential_stencil),
+ * kept with the spectra */
 #define STN_LEN 24
 #define HDR_TAG 20261204.5
 /* The key of the cached normal solution: a tag, the problem's numbers, then

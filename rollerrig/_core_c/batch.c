@@ -215,7 +215,7 @@ fail:
 /* The solver's rule is a workspace zero-filled before its first use, after
  * which it keeps the kernel spectra of its grids there (rr_exact.h: a case
  * gives the doubles it gives on a fresh workspace).  A fresh one
- * zero-filled each call cost rr_wheel_exact a quarter of its instructions
+ * zero-filled each call cost rig_exact's call a ninth of its instructions
  * (a workspace for grids of n + 16 elements a side, most of it never
  * touched), and threw the spectra away.  Taken and given back with the GIL
  * held, so a call has its workspace to itself while it runs without it. */

@@ -440,7 +440,7 @@ def _fit(func: str, model: str, spec: Spec, cx: object, force: object, a: object
                      zip(inner, sol.x, lo, hi, near) if x - l <= d or h - x <= d)
     at_bound = tuple(n for n in fit if n in at_bound)
     model_f = _model(model, params, settings, c_all, v_all, settings["cy"], settings["cphi"])
-    res_n = sign * model_f / f_ref - f_all / f_ref
+    res_n = sign * (model_f / f_ref - target_n)    # sign * target_n is f_all / f_ref
     with np.errstate(over="ignore"):
         res_all = res_n * f_ref
     if not np.all(np.isfinite(res_all)):

@@ -169,7 +169,8 @@ def elastic_constants(E: float, nu: float) -> Tuple[float, float]:
 _Model = Tuple[float, float, float, float, float, float, float, float]
 
 _TINY = np.finfo(float).tiny      # a subnormal modulus has too few digits for a force
-#: the normal or the vertical loads are _Loads (_nonhertz_contact): _loads
+
+
 def _model(func: str, table: ContactTable, mu: float, E: float, nu: float, vmin: float,
            friction: object) -> _Model:
     g = table.geometry
