@@ -240,6 +240,153 @@ static int box_pays(int bx, int by, int mx, int my)
     return b <= 0.8 * g;
 }
 
+/* A box of the grid: its first element and sides (bx 0: none). */
+typedef struct {
+    int fi, fj, bx, by;
+} box;
+
+/* The box around elements [i0, i1] x [j0, j1] of L's grid, where it pays
+ * and its layout fits below box_base; 1 where there is one. */
+static int box_around(const layout *L, int i0, int i1, int j0, int j1, size_t box_base, box *b)
+{
+    layout B;
+    b->bx = box_side(i1 - i0 + 1, L->mx);
+    b->by = box_side(j1 - j0 + 1, L->my);
+    if (!box_pays(b->bx, b->by, L->mx, L->my) || rr_exact_carve(&B, b->bx, b->by, NULL) > box_base) {
+        b->bx = 0;
+        return 0;
+    }
+    b->fi = box_first(i0, i1, b->bx, L->mx);
+    b->fj = box_first(j0, j1, b->by, L->my);
+    return 1;
+}
+
+/* The bounding box of the positive values of v (mx x my); 0 where none. */
+static int positive_bounds(const double *v, int mx, int my, int *i0, int *i1, int *j0, int *j1)
+{
+    int i, j;
+    *i0 = mx;
+    *i1 = -1;
+    *j0 = my;
+    *j1 = -1;
+    for (j = 0; j < my; j++)
+        for (i = 0; i < mx; i++)
+            if (v[j * mx + i] > 0.0) {
+                *i0 = i < *i0 ? i : *i0;
+                *i1 = i > *i1 ? i : *i1;
+                *j0 = j < *j0 ? j : *j0;
+                *j1 = j > *j1 ? j : *j1;
+            }
+    return *i1 >= 0;
+}
+
+/* in (the grid's rows of mx) boxed into out (b's rows) */
+static void box_in(const box *b, int mx, const double *in, double *out)
+{
+    int j;
+    for (j = 0; j < b->by; j++)
+        memcpy(out + (size_t)j * b->bx, in + (size_t)(j + b->fj) * mx + b->fi,
+               (size_t)b->bx * sizeof *out);
+}
+
+/* The solver SB of S's problem on box b: its layout carved at work +
+ * box_base (its spectra kept there, keyed as the grid's; the tangential
+ * phase where asked), its problem pbb (no h: the callers fill the box's). */
+static int box_solver(const solver *S, double *work, size_t box_base, const box *b,
+                      int tangential, layout *B, rr_conv2d *cvb, rr_exact_problem *pbb,
+                      solver *SB)
+{
+    const rr_exact_problem *pb = S->pb;
+    int st;
+    rr_exact_carve(B, b->bx, b->by, work + box_base);
+    if ((st = rr_conv2d_init(cvb, b->bx, b->by, B->conv, B->conv_len)) < 0
+        || (st = rr_exact_build_spectra(B, cvb, pb->grid.dy / pb->grid.dx, pb->nu, tangential,
+                                        pb->interrupt)) < 0)
+        return st;
+    *pbb = *pb;
+    pbb->grid.mx = b->bx;
+    pbb->grid.my = b->by;
+    pbb->grid.x0 = pb->grid.x0 + b->fi * pb->grid.dx;
+    pbb->grid.y0 = pb->grid.y0 + b->fj * pb->grid.dy;
+    pbb->h = NULL;
+    SB->pb = pbb;
+    SB->start = NULL;
+    SB->L = B;
+    SB->cv = cvb;
+    SB->products = 0;
+    return RR_OK;
+}
+
+/* ---- the normal problem on the contact's box -------------------------------- */
+
+/* A warm start's contact (the caller's pressure) moves little: the normal
+ * problem is solved on the box around it (widened to the longest side on
+ * its torus, as the tangential one's: the same box, whose spectra serve
+ * both), and the box's answer is the grid's where no element outside the
+ * box is penetrated, which one product on the grid shows (the
+ * displacements there are the box pressure's); an element that would be
+ * penetrated sends the problem to the grid, from the caller's start.  The
+ * same equations on the same elements where the contact stays inside:
+ * only the products' rounding differs.  A margin of one element around
+ * the start's contact changed the box's torus on some of CONTACT's roller
+ * cases, and with it the tangential problem's: more instructions. */
+static int normal_on_contact(solver *S, double *work, size_t box_base, rr_exact_result *res,
+                             box *used)
+{
+    layout *L = S->L, B;
+    rr_conv2d cvb;
+    rr_exact_problem pbb;
+    rr_exact_start sb;
+    solver SB;
+    const int mx = L->mx, my = L->my, n = L->n;
+    int i0, i1, j0, j1, st, pen = 0, k, j;
+    box b;
+
+    used->bx = 0;
+    if (!S->start || !positive_bounds(S->start->pn, mx, my, &i0, &i1, &j0, &j1)
+        || !box_around(L, i0, i1, j0, j1, box_base, &b))
+        return rr_exact_solve_normal(S, res);
+    if ((st = box_solver(S, work, box_base, &b, 0, &B, &cvb, &pbb, &SB)) < 0)
+        return st;
+    box_in(&b, mx, L->h, B.h);
+    /* the start boxed into gap, which the solver writes after taking it */
+    box_in(&b, mx, S->start->pn, B.gap);
+    sb = *S->start;
+    sb.mx = b.bx;
+    sb.my = b.by;
+    sb.pn = B.gap;
+    sb.px = sb.py = NULL;
+    SB.start = &sb;
+    st = rr_exact_solve_normal(&SB, res);
+    S->products += SB.products;          /* the cap (maxit) counts them too */
+    if (st < 0)
+        return st;
+    /* back onto the grid, and the grid's gap of that pressure */
+    memset(L->pn, 0, (size_t)n * sizeof *L->pn);
+    memset(L->state, OUTSIDE, (size_t)n);
+    for (j = 0; j < b.by; j++)
+        for (k = 0; k < b.bx; k++) {
+            L->pn[(j + b.fj) * mx + b.fi + k] = B.pn[j * b.bx + k];
+            L->state[(j + b.fj) * mx + b.fi + k] = B.state[j * b.bx + k];
+        }
+    if ((st = rr_exact_normal_gap(S, L->pn, L->gap)) < 0)
+        return st;
+    for (j = 0; j < my && !pen; j++)
+        for (k = 0; k < mx; k++)
+            if ((k < b.fi || k >= b.fi + b.bx || j < b.fj || j >= b.fj + b.by)
+                && L->gap[j * mx + k] < res->delta) {
+                pen = 1;
+                break;
+            }
+    if (pen)
+        return rr_exact_solve_normal(S, res);
+    res->normal_products = S->products;
+    *used = b;
+    return st;
+}
+
+/* ---- the tangential problem on the contact's box --------------------------- */
+
 /* The tangential problem of S on its own grid, its tangential spectra
  * built first where missing. */
 static int tangential_on_grid(solver *S, rr_exact_result *res)
@@ -251,70 +398,42 @@ static int tangential_on_grid(solver *S, rr_exact_result *res)
 }
 
 /* The tangential problem of S (its layout L holding the normal solution),
- * on the contact's box where that pays, else on the grid: the box's
- * layout at work + box_base (its spectra kept there, keyed as the grid's),
- * the solution put back into L's p, s and state. */
-static int tangential_on_contact(solver *S, double *work, size_t box_base, rr_exact_result *res)
+ * on the contact's box where that pays (the normal problem's box nb where
+ * it had one: the contact lies in it, and its spectra are there), else on
+ * the grid; the solution put back into L's p, s and state. */
+static int tangential_on_contact(solver *S, double *work, size_t box_base, const box *nb,
+                                 rr_exact_result *res)
 {
-    const rr_exact_problem *pb = S->pb;
     layout *L = S->L, B;
     rr_conv2d cvb;
     rr_exact_problem pbb;
     rr_exact_start sb;
     solver SB;
     const int mx = L->mx, my = L->my, n = L->n;
-    int i0 = mx, i1 = -1, j0 = my, j1 = -1, bx, by, fi, fj, i, j, st;
+    int i0, i1, j0, j1, i, j, st;
+    box b;
 
-    if (pb->cx == 0.0 && pb->cy == 0.0 && pb->cphi == 0.0)
+    if (S->pb->cx == 0.0 && S->pb->cy == 0.0 && S->pb->cphi == 0.0)
         return rr_exact_solve_tangential(S, res);     /* no traction, no product */
-    for (j = 0; j < my; j++)
-        for (i = 0; i < mx; i++)
-            if (L->pn[j * mx + i] > 0.0) {
-                i0 = i < i0 ? i : i0;
-                i1 = i > i1 ? i : i1;
-                j0 = j < j0 ? j : j0;
-                j1 = j > j1 ? j : j1;
-            }
-    if (i1 < 0)
+    if (nb->bx > 0)
+        b = *nb;
+    else if (!positive_bounds(L->pn, mx, my, &i0, &i1, &j0, &j1)
+             || !box_around(L, i0, i1, j0, j1, box_base, &b))
         return tangential_on_grid(S, res);
-    bx = box_side(i1 - i0 + 1, mx);
-    by = box_side(j1 - j0 + 1, my);
-    if (!box_pays(bx, by, mx, my) || rr_exact_carve(&B, bx, by, NULL) > box_base)
-        return tangential_on_grid(S, res);
-    fi = box_first(i0, i1, bx, mx);
-    fj = box_first(j0, j1, by, my);
-    rr_exact_carve(&B, bx, by, work + box_base);
-    if ((st = rr_conv2d_init(&cvb, bx, by, B.conv, B.conv_len)) < 0
-        || (st = rr_exact_build_spectra(&B, &cvb, pb->grid.dy / pb->grid.dx, pb->nu, 1,
-                                        pb->interrupt)) < 0)
+    if ((st = box_solver(S, work, box_base, &b, 1, &B, &cvb, &pbb, &SB)) < 0)
         return st;
-    pbb = *pb;
-    pbb.grid.mx = bx;
-    pbb.grid.my = by;
-    pbb.grid.x0 = pb->grid.x0 + fi * pb->grid.dx;
-    pbb.grid.y0 = pb->grid.y0 + fj * pb->grid.dy;
-    pbb.h = NULL;                      /* the tangential problem does not read it */
-    for (j = 0; j < by; j++)
-        memcpy(B.pn + j * bx, L->pn + (j + fj) * mx + fi, (size_t)bx * sizeof *B.pn);
-    SB.pb = &pbb;
-    SB.start = NULL;
-    SB.L = &B;
-    SB.cv = &cvb;
-    SB.products = 0;
+    box_in(&b, mx, L->pn, B.pn);
     if (S->start && S->start->px) {
         /* the caller's start, boxed into scratch the solver reads before
          * it writes (dlt: GMRES's, after the start is taken) */
-        double *px = B.dlt, *py = B.dlt + B.n;
-        for (j = 0; j < by; j++) {
-            memcpy(px + j * bx, S->start->px + (j + fj) * mx + fi, (size_t)bx * sizeof *px);
-            memcpy(py + j * bx, S->start->py + (j + fj) * mx + fi, (size_t)bx * sizeof *py);
-        }
+        box_in(&b, mx, S->start->px, B.dlt);
+        box_in(&b, mx, S->start->py, B.dlt + B.n);
         sb = *S->start;
-        sb.mx = bx;
-        sb.my = by;
+        sb.mx = b.bx;
+        sb.my = b.by;
         sb.pn = B.pn;
-        sb.px = px;
-        sb.py = py;
+        sb.px = B.dlt;
+        sb.py = B.dlt + B.n;
         SB.start = &sb;
     }
     st = rr_exact_solve_tangential(&SB, res);
@@ -322,9 +441,9 @@ static int tangential_on_contact(solver *S, double *work, size_t box_base, rr_ex
     for (i = 0; i < 2 * n; i++)
         L->p[i] = L->s[i] = 0.0;
     memset(L->state, OUTSIDE, (size_t)n);
-    for (j = 0; j < by; j++)
-        for (i = 0; i < bx; i++) {
-            const int k = (j + fj) * mx + fi + i, q = j * bx + i;
+    for (j = 0; j < b.by; j++)
+        for (i = 0; i < b.bx; i++) {
+            const int k = (j + b.fj) * mx + b.fi + i, q = j * b.bx + i;
             L->p[k] = B.p[q];
             L->p[k + n] = B.p[q + B.n];
             L->s[k] = B.s[q];
@@ -348,6 +467,7 @@ int rr_exact_solve_from(const rr_exact_problem *pb, const rr_exact_start *start,
     solver S;
     int st, st2, k, n, mx;
     size_t box_base;
+    box nb = {0, 0, 0, 0};
     double fx = 0.0, fy = 0.0, mz = 0.0, fn = 0.0, pmax = 0.0, dA;
 
     if (!res)
@@ -408,7 +528,7 @@ int rr_exact_solve_from(const rr_exact_problem *pb, const rr_exact_start *start,
     if (start) {
         /* a warm solve: the cache (a cold solve's doubles) neither read nor
          * replaced */
-        st = rr_exact_solve_normal(&S, res);
+        st = normal_on_contact(&S, work, box_base, res, &nb);
     } else if ((st = normal_cached(pb, &L, res)) == 2) {
         /* a new normal problem: solved, and kept for the next case */
         L.nkey[0] = 0.0;
@@ -418,7 +538,7 @@ int rr_exact_solve_from(const rr_exact_problem *pb, const rr_exact_start *start,
             normal_keep(pb, &L, res, st);
     }
     if (st >= 0)
-        st2 = tangential_on_contact(&S, work, box_base, res);
+        st2 = tangential_on_contact(&S, work, box_base, &nb, res);
     else
         st2 = st;
     if (st < 0 || st2 < 0) {

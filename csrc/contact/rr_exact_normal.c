@@ -76,6 +76,11 @@ static int gap_of(solver *S, const double *p, double *g)
     return st;
 }
 
+int rr_exact_normal_gap(solver *S, const double *p, double *g)
+{
+    return gap_of(S, p, g);
+}
+
 static double mean_on(const double *v, const signed char *in, int n, int *count)
 {
     double sum = 0.0;

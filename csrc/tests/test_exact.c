@@ -486,6 +486,62 @@ int main(void)
         free(w2);
         free(w3);
     }
+    /* the normal problem of a warm start on its contact's box (rr_exact.c):
+     * on the wide grid, from the solution at a load 0.2 % higher (its
+     * contact the new one's: the box's answer) and at a quarter of the
+     * load (the contact grows out of the start's box: the grid's solve),
+     * against cold solves of the grid.  Tolerances: all solved to tol
+     * 1e-9, so forces within a few 1e-9 mu N, pressures' sums N to 1e-9. */
+    {
+        rr_exact_problem wide = hertz_case(0.005, 0.003, 15), near, far;
+        size_t lw;
+        double *w1, *w2, *f[3];
+        const double loads[2] = {1.002, 0.25};
+        rr_exact_result rc, rs, rwm;
+        rr_exact_field fld;
+        rr_exact_start st;
+        int q, k;
+        wide.cx = 3e-4;
+        wide.cy = -1e-4;
+        wide.cphi = 0.6;
+        wide.grid.mx += 24;
+        wide.grid.my += 24;
+        wide.grid.x0 -= 12 * wide.grid.dx;
+        wide.grid.y0 -= 12 * wide.grid.dy;
+        near = far = wide;
+        lw = rr_exact_workspace_len(wide.grid.mx, wide.grid.my);
+        w1 = calloc(lw, sizeof *w1);
+        w2 = calloc(lw, sizeof *w2);
+        for (k = 0; k < 3; k++)
+            f[k] = calloc((size_t)wide.grid.mx * wide.grid.my, sizeof *f[k]);
+        CHECK_STATUS(rr_exact_solve(&wide, w1, lw, &rc, NULL), RR_OK, "normal box: cold");
+        for (q = 0; q < 2; q++) {
+            rr_exact_problem *from = q == 0 ? &near : &far;
+            from->N = loads[q] * wide.N;
+            memset(&fld, 0, sizeof fld);
+            fld.pn = f[0];
+            fld.px = f[1];
+            fld.py = f[2];
+            CHECK_STATUS(rr_exact_solve(from, w2, lw, &rs, &fld), RR_OK, "normal box: the start");
+            st.mx = wide.grid.mx;
+            st.my = wide.grid.my;
+            st.pn = f[0];
+            st.px = f[1];
+            st.py = f[2];
+            CHECK_STATUS(rr_exact_solve_from(&wide, &st, w2, lw, &rwm, NULL), RR_OK,
+                         "normal box: warm");
+            CHECK(hypot(rwm.fx - rc.fx, rwm.fy - rc.fy) < 1e-8 * wide.mu * wide.N
+                      && fabs(rwm.fn - wide.N) < 1e-9 * wide.N && rwm.ncontact == rc.ncontact
+                      && rwm.nslip == rc.nslip && fabs(rwm.delta - rc.delta) < 1e-8 * rc.delta,
+                  q == 0 ? "normal box: warm from a near load, the cold solve's answer"
+                         : "normal box: warm from a quarter of the load (the grid's), the cold "
+                           "solve's answer");
+        }
+        free(w1);
+        free(w2);
+        for (k = 0; k < 3; k++)
+            free(f[k]);
+    }
     /* the spectra's phases (rr_exact_build_spectra): a grid first solved
      * without creepage keeps the normal spectra alone; the next case of that
      * grid with creepage adds the tangential ones and gives a fresh
