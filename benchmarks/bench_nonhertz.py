@@ -31,16 +31,21 @@ from run to run.
     python benchmarks/bench_nonhertz.py --chain [--repeat R] [--every K] [--grid G]
 
 times the full chain alone, with whichever rollerrig the interpreter
-imports, and the C call's part of it (rr_wheel_exact through the binding): run it with another checkout's environment for its "before" (the
-warm starts of issue 24: main's build, then this one's, one after the
-other), one row per grid with the solves per case.  The instruction
-count of the C core (the measure on a shared machine):
+imports, and the C call's part of it (rr_wheel_exact through the
+binding): run it with another checkout's environment for its "before"
+(main's build, then this one's, one after the other), one row per grid
+with the solves per case.  The cases run in turn, R sweeps of them, as a
+table's rows or the rig's steps would: a case's grids often have the last
+one's sizes, whose kernel spectra the core keeps.  The instruction count
+of the C core (the measure on a shared machine):
 
-    valgrind --tool=callgrind --toggle-collect=rr_wheel_exact \
+    valgrind --tool=callgrind --toggle-collect=py_wheel_exact \
         python benchmarks/bench_nonhertz.py --chain --every 6 --grid 0.4
 
-(every sixth case: the 12 of RESULTS.md's profiles; 13 calls of
-rr_wheel_exact with the warm-up, the first case twice).
+(every sixth case: the 12 of RESULTS.md's profiles, 13 calls with the
+warm-up, the first case twice; six cases apart, their grids' sizes seldom
+repeat: the cost of a case alone); without --every, all 72 in turn (the
+cost of a sweep).
 """
 import argparse
 import csv
@@ -97,7 +102,9 @@ class _CoreTimer:
 
 def chain_only(geo, tables, cs, repeat, grids="both"):
     """The full chain of the rollerrig imported, on both grids: ms per case
-    (median, p95, max over the cases of each case's median of R repeats),
+    (median, p95, max over the cases of each case's median of R sweeps over
+    the cases in turn: each case after the one before, whose grids often
+    have its sizes and so its kernel spectra),
     the C call's share of it (rr_wheel_exact through the binding, the same
     statistics), and the solves per case (median, max)."""
     import rollerrig.rig.exact as exact
@@ -119,19 +126,20 @@ def chain_only(geo, tables, cs, repeat, grids="both"):
                                     E=2 * c["G"] * (1 + c["nu"]), nu=c["nu"],
                                     table=tables[c["pair"]], **kw)
             chain(cs[0])                                     # warm up
-            t, tc, p = [], [], []
-            for c in cs:
-                whole, core = [], []
-                for _ in range(repeat):
+            # the cases in turn, as a sweep's (a table's rows, the rig's
+            # steps): each after the one before, R sweeps
+            whole = np.empty((repeat, len(cs)))
+            core = np.empty((repeat, len(cs)))
+            p = np.empty(len(cs), dtype=int)
+            for r in range(repeat):
+                for i, c in enumerate(cs):
                     timer.spent = 0.0
                     t0 = time.perf_counter()
                     out = chain(c)
-                    whole.append(time.perf_counter() - t0)
-                    core.append(timer.spent)
-                t.append(np.median(whole))
-                tc.append(np.median(core))
-                p.append(out.passes)
-            t, tc, p = 1e3 * np.array(t), 1e3 * np.array(tc), np.array(p)
+                    whole[r, i] = time.perf_counter() - t0
+                    core[r, i] = timer.spent
+                    p[i] = out.passes
+            t, tc = 1e3 * np.median(whole, axis=0), 1e3 * np.median(core, axis=0)
             print(f"| {name} | {np.median(t):.2f} | {np.percentile(t, 95):.2f} | {t.max():.2f} "
                   f"| {np.median(tc):.2f} | {np.percentile(tc, 95):.2f} | {tc.max():.2f} "
                   f"| {np.median(p):g} | {p.max()} |")

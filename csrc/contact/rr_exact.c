@@ -14,9 +14,9 @@
 #include "contact/rr_exact.h"
 #include "contact/rr_exact_solver.h"
 
-/* The workspace: the grid's layout, then room for the layout of the box the
- * tangential problem is solved on (tangential_on_contact), at most the
- * grid's own. */
+/* The workspace: the grid's layout, then, from the middle, room for the
+ * layout of the box the problems are solved on (normal_on_contact,
+ * tangential_on_contact), at most the grid's own. */
 size_t rr_exact_workspace_len(int mx, int my)
 {
     layout L;
@@ -246,13 +246,13 @@ typedef struct {
 } box;
 
 /* The box around elements [i0, i1] x [j0, j1] of L's grid, where it pays
- * and its layout fits below box_base; 1 where there is one. */
-static int box_around(const layout *L, int i0, int i1, int j0, int j1, size_t box_base, box *b)
+ * and its layout fits in room doubles; 1 where there is one. */
+static int box_around(const layout *L, int i0, int i1, int j0, int j1, size_t room, box *b)
 {
     layout B;
     b->bx = box_side(i1 - i0 + 1, L->mx);
     b->by = box_side(j1 - j0 + 1, L->my);
-    if (!box_pays(b->bx, b->by, L->mx, L->my) || rr_exact_carve(&B, b->bx, b->by, NULL) > box_base) {
+    if (!box_pays(b->bx, b->by, L->mx, L->my) || rr_exact_carve(&B, b->bx, b->by, NULL) > room) {
         b->bx = 0;
         return 0;
     }
@@ -289,16 +289,16 @@ static void box_in(const box *b, int mx, const double *in, double *out)
                (size_t)b->bx * sizeof *out);
 }
 
-/* The solver SB of S's problem on box b: its layout carved at work +
- * box_base (its spectra kept there, keyed as the grid's; the tangential
- * phase where asked), its problem pbb (no h: the callers fill the box's). */
-static int box_solver(const solver *S, double *work, size_t box_base, const box *b,
+/* The solver SB of S's problem on box b: its layout carved at bw (its
+ * spectra kept there, keyed as the grid's; the tangential phase where
+ * asked), its problem pbb (no h: the callers fill the box's). */
+static int box_solver(const solver *S, double *bw, const box *b,
                       int tangential, layout *B, rr_conv2d *cvb, rr_exact_problem *pbb,
                       solver *SB)
 {
     const rr_exact_problem *pb = S->pb;
     int st;
-    rr_exact_carve(B, b->bx, b->by, work + box_base);
+    rr_exact_carve(B, b->bx, b->by, bw);
     if ((st = rr_conv2d_init(cvb, b->bx, b->by, B->conv, B->conv_len)) < 0
         || (st = rr_exact_build_spectra(B, cvb, pb->grid.dy / pb->grid.dx, pb->nu, tangential,
                                         pb->interrupt)) < 0)
@@ -330,7 +330,7 @@ static int box_solver(const solver *S, double *work, size_t box_base, const box 
  * only the products' rounding differs.  A margin of one element around
  * the start's contact changed the box's torus on some of CONTACT's roller
  * cases, and with it the tangential problem's: more instructions. */
-static int normal_on_contact(solver *S, double *work, size_t box_base, rr_exact_result *res,
+static int normal_on_contact(solver *S, double *bw, size_t room, rr_exact_result *res,
                              box *used)
 {
     layout *L = S->L, B;
@@ -344,9 +344,9 @@ static int normal_on_contact(solver *S, double *work, size_t box_base, rr_exact_
 
     used->bx = 0;
     if (!S->start || !positive_bounds(S->start->pn, mx, my, &i0, &i1, &j0, &j1)
-        || !box_around(L, i0, i1, j0, j1, box_base, &b))
+        || !box_around(L, i0, i1, j0, j1, room, &b))
         return rr_exact_solve_normal(S, res);
-    if ((st = box_solver(S, work, box_base, &b, 0, &B, &cvb, &pbb, &SB)) < 0)
+    if ((st = box_solver(S, bw, &b, 0, &B, &cvb, &pbb, &SB)) < 0)
         return st;
     box_in(&b, mx, L->h, B.h);
     /* the start boxed into gap, which the solver writes after taking it */
@@ -401,7 +401,7 @@ static int tangential_on_grid(solver *S, rr_exact_result *res)
  * on the contact's box where that pays (the normal problem's box nb where
  * it had one: the contact lies in it, and its spectra are there), else on
  * the grid; the solution put back into L's p, s and state. */
-static int tangential_on_contact(solver *S, double *work, size_t box_base, const box *nb,
+static int tangential_on_contact(solver *S, double *bw, size_t room, const box *nb,
                                  rr_exact_result *res)
 {
     layout *L = S->L, B;
@@ -418,9 +418,9 @@ static int tangential_on_contact(solver *S, double *work, size_t box_base, const
     if (nb->bx > 0)
         b = *nb;
     else if (!positive_bounds(L->pn, mx, my, &i0, &i1, &j0, &j1)
-             || !box_around(L, i0, i1, j0, j1, box_base, &b))
+             || !box_around(L, i0, i1, j0, j1, room, &b))
         return tangential_on_grid(S, res);
-    if ((st = box_solver(S, work, box_base, &b, 1, &B, &cvb, &pbb, &SB)) < 0)
+    if ((st = box_solver(S, bw, &b, 1, &B, &cvb, &pbb, &SB)) < 0)
         return st;
     box_in(&b, mx, L->pn, B.pn);
     if (S->start && S->start->px) {
@@ -488,19 +488,23 @@ int rr_exact_solve_from(const rr_exact_problem *pb, const rr_exact_start *start,
     result_nan(res);
     mx = pb->grid.mx;
     n = mx * pb->grid.my;
-    box_base = rr_exact_carve(&L, mx, pb->grid.my, work);
+    rr_exact_carve(&L, mx, pb->grid.my, work);
+    box_base = work_len / 2;
     st = rr_conv2d_init(&cv, mx, pb->grid.my, L.conv, L.conv_len);
     if (st == RR_OK && rr_conv2d_spectrum_len(&cv) > rr_exact_spectrum_len(mx, pb->grid.my))
         st = RR_ERR_WORKSPACE;
     if (st == RR_OK) {
-        double key[HDR_LEN];
-        memcpy(key, L.hdr, sizeof key);
         st = rr_exact_build_spectra(&L, &cv, pb->grid.dy / pb->grid.dx, pb->nu, 0,
                                     pb->interrupt);
-        /* the grid's spectra built anew: the last grid may have been
-         * larger, its layout over the box's, so the box's key goes too */
-        if (memcmp(key, L.hdr, sizeof key) != 0)
+        /* the box's spectra are kept at the middle of the workspace, above
+         * any grid's layout (the workspace holds two), from call to call;
+         * the grid's header records where the last call had its box: a
+         * call of another length may have written over this one's numbers
+         * and not over its key, so the key goes where it moved */
+        if (L.hdr[BOX_AT] != (double)box_base) {
             work[box_base] = 0.0;
+            L.hdr[BOX_AT] = (double)box_base;
+        }
     }
     if (st < 0) {
         field_nan(pb, field);
@@ -528,7 +532,7 @@ int rr_exact_solve_from(const rr_exact_problem *pb, const rr_exact_start *start,
     if (start) {
         /* a warm solve: the cache (a cold solve's doubles) neither read nor
          * replaced */
-        st = normal_on_contact(&S, work, box_base, res, &nb);
+        st = normal_on_contact(&S, work + box_base, work_len - box_base, res, &nb);
     } else if ((st = normal_cached(pb, &L, res)) == 2) {
         /* a new normal problem: solved, and kept for the next case */
         L.nkey[0] = 0.0;
@@ -538,7 +542,7 @@ int rr_exact_solve_from(const rr_exact_problem *pb, const rr_exact_start *start,
             normal_keep(pb, &L, res, st);
     }
     if (st >= 0)
-        st2 = tangential_on_contact(&S, work, box_base, &nb, res);
+        st2 = tangential_on_contact(&S, work + box_base, work_len - box_base, &nb, res);
     else
         st2 = st;
     if (st < 0 || st2 < 0) {

@@ -15,8 +15,10 @@
 /* Krylov vectors kept by GMRES before it restarts. */
 #define GMRES_M 30
 /* The workspace's header: a tag, then the key of the cached spectra
- * (mx, my, dy/dx, nu) and 1 where their tangential phase is built too. */
+ * (mx, my, dy/dx, nu), 1 where their tangential phase is built too, and
+ * (the grid's header alone) where the last call had its box's layout. */
 #define HDR_LEN 8
+#define BOX_AT 6
 /* the stencils of the inverse operators (normal_stencil, tangential_stencil),
  * kept with the spectra */
 #define STN_LEN 24

@@ -91,20 +91,34 @@ static size_t warm_len(size_t cells)
     return 6 * cells;
 }
 
+/* The solvers' share of the workspace: the loaded grids' (ex, for grids
+ * up to the caller's size) and a quarter more for the coarse pass's, each
+ * grid's spectra kept in its own from call to call (the grids of a sweep's
+ * next case have the same sizes more often than not: on CONTACT's 72
+ * roller cases in turn, the coarse pass's 53 times, the loaded grid's 51);
+ * one double after them says whether the coarse share was written over. */
+static size_t solvers_len(size_t ex)
+{
+    return ex + (ex + 2) / 3 + 1;
+}
+
 size_t rr_wheel_exact_workspace_len(const rr_wheel_exact_problem *pb, int mx, int my)
 {
     size_t ex, gw, cells = (size_t)mx * (size_t)my;
     if (!pb || !(ex = rr_exact_workspace_len(mx, my)) || !(gw = rr_gap_workspace_len(&pb->gap)))
         return 0;
-    return ex + warm_len(cells) + state_len(cells) + gw;
+    return solvers_len(ex) + warm_len(cells) + state_len(cells) + gw;
 }
 
 /* The call's state: the problem, its buffers carved from the caller's, the
  * result being filled. */
 typedef struct {
     const rr_wheel_exact_problem *pb;
-    double *exact, *gap;          /* the solver's workspace (at the start), the gap's */
-    size_t exact_len, gap_len;
+    double *exact, *gap;          /* the solvers' workspace (at the start), the gap's */
+    size_t exact_len, gap_len;    /* exact: the loaded grids' share (main_len), the coarse
+                                     pass's (coarse_len) after it, its flag, all */
+    size_t main_len, coarse_len;
+    double *coarse_dirty;         /* 1: the coarse share was written over by a larger grid */
     signed char *state;           /* the contact's state, for the grid's edge */
     double *last, *mapped;        /* the last solution's pn, px, py (cells each), and
                                      those mapped onto a new grid */
@@ -297,8 +311,8 @@ static int solve(call *c, const rr_gap_patch *p, double N, int normal_only, int 
     rr_exact_problem ep;
     rr_exact_field f;
     rr_exact_start start;
-    double k[4] = {pb->cx, pb->cy, pb->cphi, 0.0};
-    size_t n;
+    double k[4] = {pb->cx, pb->cy, pb->cphi, 0.0}, *work;
+    size_t n, need, work_len;
     int st, warm;
     if (normal_only)
         k[0] = k[1] = k[2] = 0.0;
@@ -324,10 +338,27 @@ static int solve(call *c, const rr_gap_patch *p, double N, int normal_only, int 
     res->V = k[3];
     res->N = N;
     res->passes++;
-    if (rr_exact_workspace_len(p->grid.mx, p->grid.my) > c->exact_len) {
+    need = rr_exact_workspace_len(p->grid.mx, p->grid.my);
+    if (need > c->exact_len) {
         res->need = rr_wheel_exact_workspace_len(pb, p->grid.mx, p->grid.my);
         res->why = RR_WHEEL_EXACT_SOLVE;
         return RR_ERR_WORKSPACE;
+    }
+    /* the coarse pass in its share, the loaded grids in theirs, each
+     * keeping its spectra for the next call; a grid too large for its
+     * share takes all (and the coarse share's key goes, at its next use) */
+    if (normal_only && need <= c->coarse_len) {
+        work = c->exact + c->main_len;
+        work_len = c->coarse_len;
+        if (*c->coarse_dirty != 0.0) {
+            work[0] = 0.0;
+            *c->coarse_dirty = 0.0;
+        }
+    } else {
+        work = c->exact;
+        work_len = need <= c->main_len ? c->main_len : c->exact_len;
+        if (work_len > c->main_len)
+            *c->coarse_dirty = 1.0;
     }
     /* the solution's pn, px, py into last (the next solve's start; the
      * caller's field gets the final one's), its slip to the caller's */
@@ -363,7 +394,7 @@ static int solve(call *c, const rr_gap_patch *p, double N, int normal_only, int 
         ep.tol = fmax(pb->tol, LOOSE_TOL);
     else if (warm)
         ep.tol = pb->tol * WARM_TOL;
-    st = rr_exact_solve_from(&ep, warm ? &start : NULL, c->exact, c->exact_len, &res->sol, &f);
+    st = rr_exact_solve_from(&ep, warm ? &start : NULL, work, work_len, &res->sol, &f);
     c->have_last = 0;
     if (st < 0) {
         res->why = RR_WHEEL_EXACT_SOLVE;
@@ -529,9 +560,9 @@ int rr_wheel_exact(const rr_wheel_exact_problem *pb, double *work, size_t work_l
         res->why = RR_WHEEL_EXACT_GAP;
         return RR_ERR_PARAM;
     }
-    if (work_len < c.gap_len + state_len(c.cells) + warm_len(c.cells) + 1) {
+    if (work_len < c.gap_len + state_len(c.cells) + warm_len(c.cells) + 2) {
         res->need = c.gap_len + state_len(c.cells) + warm_len(c.cells)
-                    + rr_exact_workspace_len(1, 1);
+                    + solvers_len(rr_exact_workspace_len(1, 1));
         return RR_ERR_WORKSPACE;
     }
     c.gap = work + (work_len - c.gap_len);
@@ -539,7 +570,10 @@ int rr_wheel_exact(const rr_wheel_exact_problem *pb, double *work, size_t work_l
     c.last = c.gap - state_len(c.cells) - warm_len(c.cells);
     c.mapped = c.last + 3 * c.cells;
     c.exact = work;
-    c.exact_len = work_len - c.gap_len - state_len(c.cells) - warm_len(c.cells);
+    c.exact_len = work_len - c.gap_len - state_len(c.cells) - warm_len(c.cells) - 1;
+    c.coarse_dirty = work + c.exact_len;
+    c.coarse_len = (c.exact_len + 3) / 4;
+    c.main_len = c.exact_len - c.coarse_len;
     p = &res->patch;
 
     if (pb->N > 0.0) {

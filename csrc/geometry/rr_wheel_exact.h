@@ -55,7 +55,12 @@
  * No allocation: the caller's workspace (rr_wheel_exact_workspace_len for
  * the largest grid it allows, zero-filled before its first use, as the
  * solver's), h buffer and fields; a grid beyond them is RR_ERR_WORKSPACE
- * with the sizes needed, before anything is written past them.
+ * with the sizes needed, before anything is written past them.  The
+ * workspace keeps the kernel spectra of the coarse pass's grid, of the
+ * loaded grid and of the contact's box from call to call (each in its own
+ * share, keyed by its sizes): the next call of a sweep, whose grids often
+ * have the same sizes, builds none of them again.  Pass it unchanged
+ * between calls, or zero-filled.
  */
 #ifndef RR_WHEEL_EXACT_H
 #define RR_WHEEL_EXACT_H
@@ -135,7 +140,8 @@ typedef struct {
 } rr_wheel_exact_result;
 
 /* Doubles of workspace for grids up to mx x my (the profile samples, the
- * solver's, the last solution and its map onto the next grid); 0 if pb is
+ * solver's for the loaded grids and a third more for the coarse pass's,
+ * the last solution and its map onto the next grid); 0 if pb is
  * NULL, its element sizes invalid or a size outside [1, RR_EXACT_MAX_GRID]. */
 size_t rr_wheel_exact_workspace_len(const rr_wheel_exact_problem *pb, int mx, int my);
 

@@ -430,8 +430,9 @@ int main(void)
      * the Hertzian grid of 2 (the same element centres: the same discrete
      * problem on the elements in contact); the wide grid's solution holds
      * the discrete equations by direct sums on the whole grid; and a
-     * workspace that a larger grid used in between (its layout over the
-     * box's) gives a fresh workspace's doubles.  Tolerances: both solved to
+     * workspace that a call of another length used in between (its box's
+     * layout elsewhere, over this one's numbers) gives a fresh workspace's
+     * doubles.  Tolerances: both solved to
      * tol 1e-9, so forces within a few 1e-9 mu N of each other. */
     {
         rr_exact_problem tight = hertz_case(0.005, 0.003, 15), wide = tight, big;
@@ -465,23 +466,23 @@ int main(void)
         CHECK(steady_equations_error(&wide, w3, lw) < 1e-7,
               "box: the wide grid's solution holds the equations on the whole grid");
         {
-            /* the box's layout starts where the grid's ends (half the
-             * workspace's length), its key first; a larger grid's layout
-             * may write over the box's numbers and not over that key (its
-             * Krylov vectors reach only as far as its solve used them):
+            /* the box's layout starts at the middle of the workspace, its
+             * key first; a call of another length has its box elsewhere,
+             * and may write over this one's numbers and not over its key:
              * NaN after the key stands for that */
-            const size_t base = lw / 2;
             size_t i;
-            CHECK_STATUS(rr_exact_solve(&big, w2, lb, &rb, NULL), RR_OK,
-                         "box: a larger grid between");
-            for (i = base + 8; i < lb; i++)
+            CHECK_STATUS(rr_exact_solve(&big, w2, lb - 64, &rb, NULL), RR_ERR_WORKSPACE,
+                         "box: a workspace too short for the larger grid");
+            CHECK_STATUS(rr_exact_solve(&wide, w2, lb - 64, &rb, NULL), RR_OK,
+                         "box: a call of another length between");
+            for (i = lb / 2 + 8; i < lb; i++)
                 w2[i] = NAN;
         }
         CHECK_STATUS(rr_exact_solve(&wide, w2, lb, &rb, NULL), RR_OK, "box: the wide grid again");
         CHECK(memcmp(&rb.fx, &rw.fx, sizeof rb.fx) == 0 && memcmp(&rb.fy, &rw.fy, sizeof rb.fy) == 0
                   && memcmp(&rb.mz, &rw.mz, sizeof rb.mz) == 0
                   && rb.tang_products == rw.tang_products,
-              "box: after a larger grid, a fresh workspace's doubles");
+              "box: after a call of another length, a fresh workspace's doubles");
         free(w1);
         free(w2);
         free(w3);

@@ -202,6 +202,36 @@ int main(void)
           "N given: coarse and loaded, the coarse approach within 1 %");
     CHECK_CLOSE(rw.sol.fx, rc.sol.fx, 1e-6 * pb.mu * pb.N, 0.0, "N given: fx");
     CHECK_CLOSE(rw.sol.fy, rc.sol.fy, 1e-6 * pb.mu * pb.N, 0.0, "N given: fy");
+    /* the coarse pass's share of the workspace, kept from call to call
+     * (a quarter of the solvers' share, after the loaded grids'; the layout of
+     * rr_wheel_exact.c:
+     * the solvers' share, the flag, the last solutions, the states, the
+     * gap's): its spectra are read again by the next call (NaN over them,
+     * the key kept, fails it), and where the flag says a larger grid wrote
+     * over them, built anew (that call gives a fresh workspace's doubles) */
+    {
+        const size_t exact_len = len - rr_gap_workspace_len(&pb.gap) - (CELLS / 8 + 1)
+                                 - 6 * (size_t)CELLS - 1;
+        const size_t coarse_len = (exact_len + 3) / 4, main_len = exact_len - coarse_len;
+        rr_wheel_exact_result r2;
+        size_t i;
+        pb.cold_start = 0;
+        CHECK_STATUS(run(&pb, w, len, ow, &rw), RR_OK, "coarse share: fresh");
+        for (i = main_len + 8; i < exact_len; i++)
+            w[i] = NAN;
+        CHECK(rr_wheel_exact(&pb, w, len, oc->h, CELLS, NULL, 0, &r2) < 0 && r2.passes == 1,
+              "coarse share: its spectra read again by the next call");
+        CHECK_STATUS(run(&pb, w, len, ow, &rw), RR_OK, "coarse share: fresh again");
+        for (i = main_len + 8; i < exact_len; i++)
+            w[i] = NAN;
+        w[exact_len] = 1.0;
+        CHECK_STATUS(rr_wheel_exact(&pb, w, len, oc->h, CELLS, NULL, 0, &r2), RR_OK,
+                     "coarse share: written over, flagged");
+        CHECK(memcmp(&r2.sol.fx, &rw.sol.fx, sizeof rw.sol.fx) == 0
+                  && memcmp(&r2.sol.fy, &rw.sol.fy, sizeof rw.sol.fy) == 0
+                  && memcmp(&r2.N, &rw.N, sizeof rw.N) == 0,
+              "coarse share: written over, flagged: a fresh workspace's doubles");
+    }
     /* the workspace the warm starts need is in rr_wheel_exact_workspace_len:
      * one double short refused */
     pb.cold_start = 0;
