@@ -84,11 +84,11 @@ static size_t state_len(size_t cells)
     return cells / sizeof(double) + 1;
 }
 
-/* Doubles of the last solution (pn, px, py) and of its map onto the next
- * grid, for cells elements. */
+/* Doubles of the last solution (pn, px, py), of its map onto the next
+ * grid, and of the solution before it, for cells elements. */
 static size_t warm_len(size_t cells)
 {
-    return 6 * cells;
+    return 9 * cells;
 }
 
 /* The solvers' share of the workspace: the loaded grids' (ex, for grids
@@ -123,6 +123,9 @@ typedef struct {
     double *last, *mapped;        /* the last solution's pn, px, py (cells each), and
                                      those mapped onto a new grid */
     int have_last, last_normal;   /* a last solution; one of the normal problem alone */
+    double *prev;                 /* the solution before it (pn, px, py), where prev_N is
+                                     not NaN: on the same patch, at the load prev_N */
+    double last_N, prev_N;
     int loose;                    /* solves at LOOSE_TOL (the load's first, on Fz) */
     rr_gap_patch last_patch;      /* its grid and frame */
     double *h;
@@ -290,6 +293,34 @@ static int map_last(call *c, const rr_gap_patch *p)
     return positive;
 }
 
+/* The start of a solve at load N on the last solution's patch where the
+ * one before was solved there too (the load's secant, whose steps shrink):
+ * the two solutions extrapolated to N, element by element (the pressure
+ * kept >= 0), into mapped (n elements a field).  The last step's start
+ * from the last solution alone is off by the load's change, which the
+ * solvers then iterate away (3 to 6 products); extrapolated, it is off by
+ * that change's square and by the solution before's tolerance times the
+ * steps' ratio.  0 where there are not two solutions or the step is
+ * longer than the last (no extrapolation: the last solution as it is). */
+static int extrapolate(call *c, size_t n, double N)
+{
+    const double *l = c->last, *q = c->prev;
+    double *o = c->mapped, r;
+    size_t k;
+    if (isnan(c->prev_N) || c->last_N == c->prev_N)
+        return 0;
+    r = (N - c->last_N) / (c->last_N - c->prev_N);
+    if (!(fabs(r) <= 1.0))
+        return 0;
+    for (k = 0; k < n; k++) {
+        const double v = l[k] + r * (l[k] - q[k]);
+        o[k] = v > 0.0 && l[k] > 0.0 ? v : 0.0;
+    }
+    for (k = n; k < 3 * n; k++)
+        o[k] = l[k] + r * (l[k] - q[k]);
+    return 1;
+}
+
 /* 1 where patch p has the last solution's grid and frame (the load's
  * iteration on one patch): the start is that solution as it is. */
 static int same_patch(const rr_gap_patch *a, const rr_gap_patch *b)
@@ -384,6 +415,11 @@ static int solve(call *c, const rr_gap_patch *p, double N, int normal_only, int 
         start.px = f.px;
         start.py = f.py;
         warm = 1;
+        if (extrapolate(c, n, N)) {
+            start.pn = c->mapped;
+            start.px = c->mapped + n;
+            start.py = c->mapped + 2 * n;
+        }
     } else {
         warm = map_last(c, p) > 0;
         start.pn = c->mapped;
@@ -394,6 +430,13 @@ static int solve(call *c, const rr_gap_patch *p, double N, int normal_only, int 
         ep.tol = fmax(pb->tol, LOOSE_TOL);
     else if (warm)
         ep.tol = pb->tol * WARM_TOL;
+    /* the last solution becomes the one before, where the next solve may
+     * take both (the same patch, the creepages the same) */
+    c->prev_N = NAN;
+    if (warm && !normal_only && same_patch(p, &c->last_patch)) {
+        memcpy(c->prev, c->last, 3 * n * sizeof *c->prev);
+        c->prev_N = c->last_N;
+    }
     st = rr_exact_solve_from(&ep, warm ? &start : NULL, work, work_len, &res->sol, &f);
     c->have_last = 0;
     if (st < 0) {
@@ -404,6 +447,7 @@ static int solve(call *c, const rr_gap_patch *p, double N, int normal_only, int 
     c->have_last = 1;
     c->last_normal = normal_only;
     c->last_patch = *p;
+    c->last_N = N;
     *edge = rr_exact_at_edge(c->state, p->grid.mx, p->grid.my);
     return st;
 }
@@ -569,6 +613,8 @@ int rr_wheel_exact(const rr_wheel_exact_problem *pb, double *work, size_t work_l
     c.state = (signed char *)(c.gap - state_len(c.cells));
     c.last = c.gap - state_len(c.cells) - warm_len(c.cells);
     c.mapped = c.last + 3 * c.cells;
+    c.prev = c.last + 6 * c.cells;
+    c.prev_N = NAN;
     c.exact = work;
     c.exact_len = work_len - c.gap_len - state_len(c.cells) - warm_len(c.cells) - 1;
     c.coarse_dirty = work + c.exact_len;

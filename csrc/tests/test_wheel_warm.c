@@ -211,7 +211,7 @@ int main(void)
      * over them, built anew (that call gives a fresh workspace's doubles) */
     {
         const size_t exact_len = len - rr_gap_workspace_len(&pb.gap) - (CELLS / 8 + 1)
-                                 - 6 * (size_t)CELLS - 1;
+                                 - 9 * (size_t)CELLS - 1;
         const size_t coarse_len = (exact_len + 3) / 4, main_len = exact_len - coarse_len;
         rr_wheel_exact_result r2;
         size_t i;
