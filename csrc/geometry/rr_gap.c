@@ -358,6 +358,7 @@ static void carve_work(double *work, size_t kmax, carve *c)
     c->kmax = kmax;
     c->rs.s = work;
     c->rs.z = work + kmax;
+    c->rs.sp = c->ws.sp = NULL;
     c->ws.s = work + 2 * kmax;
     c->ws.z = work + 3 * kmax;
     c->ryc = work + 4 * kmax;
@@ -461,13 +462,15 @@ static int place_plane(plane *f, carve *c, section *rsec, section *wsec, double 
     plane_set(f, f->sigma * (p->roller_y + sr_P), zP, delta);
     rsec->k0 = c->rs.k0;
     wsec->k0 = c->ws.k0;
-    if ((st = sections0(f, rsec, wsec, lo, hi, out)) != RR_OK)
+    if ((st = sections0(f, rsec, rsec, wsec, lo, hi, out)) != RR_OK)
         return st;
     *sw_P = sec_interp(wsec, 0.0, c->ws.s);
     if ((st = take_samples(&p->wheel, *sw_P, step, c->kmax, &c->ws, out, 1)) != RR_OK)
         return st;
     wsec->k0 = c->ws.k0;
-    return sections0(f, rsec, wsec, lo, hi, out);
+    /* the roller's section is the one just walked (its samples and the
+     * plane the same): the wheel's alone again */
+    return sections0(f, NULL, rsec, wsec, lo, hi, out);
 }
 
 int rr_gap_build(const rr_gap_site *site, const rr_gap_opts *o, double *work, size_t work_len,

@@ -29,6 +29,8 @@ typedef struct {
     double *s, *z;   /* positions and heights (up) */
     int k;           /* count */
     int k0;          /* the sample nearest the centre */
+    const rr_spline *sp;     /* the profile and window sampled (sp NULL: none yet): */
+    double lo, hi, step;     /* a window the same as the last is not sampled again */
 } samples;
 
 /* rr_spline_eval_at's value at s (NaN off the knots), for positions that
@@ -77,11 +79,19 @@ static int take_samples(const rr_spline *sp, double centre, double step, size_t 
     cnt = ceil((hi - lo) / step) + 1.0;
     if (!(cnt <= (double)kmax))
         return RR_ERR_WORKSPACE;        /* not reached: kmax bounds any window */
-    q->k = (int)cnt;
-    d = (hi - lo) / (double)(q->k - 1);
-    for (i = 0; i < q->k; i++) {
-        q->s[i] = i < q->k - 1 ? (double)i * d + lo : hi;
-        q->z[i] = spline_at_increasing(sp, q->s[i], &hint);
+    d = (hi - lo) / (cnt - 1.0);
+    /* the same window of the same profile (the roller's, clipped at the
+     * profile's end, about half the time): the same samples */
+    if (!(q->sp == sp && q->lo == lo && q->hi == hi && q->step == step && q->k == (int)cnt)) {
+        q->k = (int)cnt;
+        for (i = 0; i < q->k; i++) {
+            q->s[i] = i < q->k - 1 ? (double)i * d + lo : hi;
+            q->z[i] = spline_at_increasing(sp, q->s[i], &hint);
+        }
+        q->sp = sp;
+        q->lo = lo;
+        q->hi = hi;
+        q->step = step;
     }
     /* |s - centre| falls then rises along the samples: the least is within
      * one of the rounded position (the window holds at least two) */
@@ -381,13 +391,14 @@ static double gap_at(section *r, section *w, double y)
     return y < lo || y > hi ? NAN : g;
 }
 
-/* Both runs at x = 0 in full and where they overlap; RR_ERR_GEOMETRY (why
- * FOLD, APART). */
-static int sections0(const plane *f, section *r, section *w, double *lo, double *hi,
-                     rr_gap_patch *out)
+/* Both runs at x = 0 in full (the roller's: walk, r itself or NULL where r
+ * holds it already) and where they overlap; RR_ERR_GEOMETRY (why FOLD,
+ * APART). */
+static int sections0(const plane *f, section *walk, section *r, section *w, double *lo,
+                     double *hi, rr_gap_patch *out)
 {
     int st;
-    if ((st = sec_walk(f, r, 0.0, 0.0, 0.0, 1, out)) != RR_OK
+    if ((walk && (st = sec_walk(f, walk, 0.0, 0.0, 0.0, 1, out)) != RR_OK)
         || (st = sec_walk(f, w, 0.0, 0.0, 0.0, 1, out)) != RR_OK)
         return st;
     *lo = fmax(sec_first(r), sec_first(w));
