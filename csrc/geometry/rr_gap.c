@@ -186,6 +186,7 @@ static int weighted_reference(const plane *f, const samples *rs, section *wsec, 
     plane id = *f;
     section run;
     walker w;
+    cursor k;
     double best = INFINITY, gmin = INFINITY, sw = 0.0, swa = 0.0, swy = 0.0;
     int i, i0 = rs->k, i1 = -1, n, deep = 0, it, st;
 
@@ -219,8 +220,9 @@ static int weighted_reference(const plane *f, const samples *rs, section *wsec, 
         return RR_ERR_GEOMETRY;
     }
     n = i1 - i0 + 1;
+    cursor_set(wsec, &k);
     for (i = i0; i <= i1; i++) {
-        W->g[i] = sec_interp(wsec, W->Y[i], wsec->ze) - rs->z[i];
+        W->g[i] = cursor_at(&k, W->Y[i]) - rs->z[i];      /* Y monotonic: the cursor's steps */
         W->a[i] = W->alpha[i] = NAN;
         if (o->keep && !(W->Y[i] >= o->keep_lo && W->Y[i] <= o->keep_hi))
             continue;
@@ -394,12 +396,10 @@ static int fill_h(const plane *f, section *r, section *w, double dx, double dy, 
         if ((st = sec_walk(f, r, dx * (double)i, y_lo, y_hi, 0, out)) != RR_OK
             || (st = sec_walk(f, w, dx * (double)i, y_lo, y_hi, 0, out)) != RR_OK)
             return st;
-        for (j = j_lo; j <= j_hi; j++) {
-            const double v = gap_at(r, w, dy * (double)j);
-            h[(size_t)(j - j_lo) * mx + (i - i_lo)] = v;
-            if (twin)
-                h[(size_t)(j - j_lo) * mx + (m - i_lo)] = v;
-        }
+        gap_column(r, w, dy, j_lo, j_hi, h + (i - i_lo), (size_t)mx);
+        if (twin)
+            for (j = j_lo; j <= j_hi; j++)
+                h[(size_t)(j - j_lo) * mx + (m - i_lo)] = h[(size_t)(j - j_lo) * mx + (i - i_lo)];
     }
     return RR_OK;
 }
@@ -555,9 +555,10 @@ int rr_gap_build(const rr_gap_site *site, const rr_gap_opts *o, double *work, si
      * the surfaces, which lie within a gap's height of the plane there) */
     klo = (o->keep_lo - f.P0) / f.t2y;
     khi = (o->keep_hi - f.P0) / f.t2y;
-    for (i = 0; i < nf; i++) {
+    for (i = 0; i < nf; i++)
         c.yf[i] = i < nf - 1 ? (double)i * df + plo : phi;     /* numpy.linspace */
-        c.hy[i] = gap_at(&rsec, &wsec, c.yf[i]);
+    gap_sorted(&rsec, &wsec, c.yf, nf, c.hy);
+    for (i = 0; i < nf; i++) {
         if (o->keep && !(c.yf[i] >= klo && c.yf[i] <= khi))
             continue;
         if (c.hy[i] < hmin) {

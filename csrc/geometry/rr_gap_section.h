@@ -391,6 +391,94 @@ static double gap_at(section *r, section *w, double y)
     return y < lo || y > hi ? NAN : g;
 }
 
+/* sec_interp of a run's ze for queries in monotonic y (a scan, a
+ * column's rows), its numbers read once: the interval stepped on from the
+ * last query's, and the same formula and special cases, so the same
+ * doubles (a query's interval is the one whose ends hold it, found
+ * either way).  The per-call overhead of sec_interp, its hint clamped and
+ * its bisection where the hint was more than four samples behind, was the
+ * patch's largest single cost. */
+typedef struct {
+    const double *x, *f;
+    int n, s, j;
+} cursor;
+
+static void cursor_set(const section *c, cursor *k)
+{
+    k->n = c->b - c->a + 1;
+    k->s = c->dir;
+    k->x = c->yc + (k->s > 0 ? c->a : c->b);
+    k->f = c->ze + (k->s > 0 ? c->a : c->b);
+    k->j = c->hint < 0 ? 0 : c->hint > k->n - 1 ? k->n - 1 : c->hint;
+}
+
+static RR_GAP_INLINE double cursor_at(cursor *k, double y)
+{
+    const double *x = k->x, *f = k->f;
+    const int n = k->n, s = k->s;
+    int j = k->j;
+    double xj, xj1, fj, fj1, slope, r;
+    if (isnan(y))
+        return y;
+    if (y > x[s * (n - 1)])
+        return f[s * (n - 1)];
+    if (y < x[0])
+        return f[0];
+    while (j > 0 && x[s * j] > y)
+        j--;
+    while (j < n - 1 && x[s * (j + 1)] <= y)
+        j++;
+    k->j = j;
+    xj = x[s * j];
+    fj = f[s * j];
+    if (j == n - 1 || xj == y)
+        return fj;
+    xj1 = x[s * (j + 1)];
+    fj1 = f[s * (j + 1)];
+    slope = (fj1 - fj) / (xj1 - xj);
+    r = slope * (y - xj) + fj;
+    if (isnan(r)) {
+        r = slope * (y - xj1) + fj1;
+        if (isnan(r) && fj == fj1)
+            r = fj;
+    }
+    return r;
+}
+
+/* gap_at at y[0 .. m) (increasing) into out[0 .. m) */
+static void gap_sorted(section *r, section *w, const double *y, int m, double *out)
+{
+    const double lo = fmax(sec_first(r), sec_first(w)), hi = fmin(sec_last(r), sec_last(w));
+    cursor kr, kw;
+    int i;
+    cursor_set(r, &kr);
+    cursor_set(w, &kw);
+    for (i = 0; i < m; i++) {
+        const double g = cursor_at(&kw, y[i]) - cursor_at(&kr, y[i]);
+        out[i] = y[i] < lo || y[i] > hi ? NAN : g;
+    }
+    r->hint = kr.j;
+    w->hint = kw.j;
+}
+
+/* gap_at at y = dy j for j = j_lo .. j_hi into out[(j - j_lo) stride] */
+static void gap_column(section *r, section *w, double dy, int j_lo, int j_hi, double *out,
+                       size_t stride)
+{
+    const double lo = fmax(sec_first(r), sec_first(w)), hi = fmin(sec_last(r), sec_last(w));
+    cursor kr, kw;
+    int j;
+    cursor_set(r, &kr);
+    cursor_set(w, &kw);
+    for (j = j_lo; j <= j_hi; j++) {
+        const double y = dy * (double)j;
+        const double g = cursor_at(&kw, y) - cursor_at(&kr, y);
+        out[(size_t)(j - j_lo) * stride] = y < lo || y > hi ? NAN : g;
+    }
+    r->hint = kr.j;
+    w->hint = kw.j;
+}
+
 /* Both runs at x = 0 in full (the roller's: walk, r itself or NULL where r
  * holds it already) and where they overlap; RR_ERR_GEOMETRY (why FOLD,
  * APART). */
