@@ -33,29 +33,41 @@ typedef struct {
     double lo, hi, step;     /* a window the same as the last is not sampled again */
 } samples;
 
-/* rr_spline_eval_at's value at s (NaN off the knots), for positions that
- * increase from call to call: its interval (the last knot at or below s,
- * at most the last but one) stepped on from the last call's *k, its
- * formula as written there (the same doubles at half the instructions: the
- * samples below are the build's largest loop over a spline). */
-static double spline_at_increasing(const rr_spline *sp, double s, int *k)
+/* rr_spline_eval_at's values at the increasing positions s[0 .. k) (NaN
+ * off the knots) into z: its interval (the last knot at or below s, at
+ * most the last but one) stepped on from the last sample's, and the
+ * samples of each interval in one loop with the interval's numbers read
+ * once, which vectorises; its formula as written there, so the same
+ * doubles (the samples below are the build's largest loop over a
+ * spline). */
+static void spline_samples(const rr_spline *sp, const double *s, int k, double *z)
 {
-    const double *x = sp->s;
-    int lo = *k, hi;
-    double h, a, b;
-    if (!(s >= x[0] && s <= x[sp->n - 1]))
-        return NAN;
-    if (lo < 0 || lo > sp->n - 2 || x[lo] > s)
-        lo = 0;                              /* not increasing: from the start */
-    while (lo < sp->n - 2 && x[lo + 1] <= s)
-        lo++;
-    *k = lo;
-    hi = lo + 1;
-    h = x[hi] - x[lo];
-    a = (x[hi] - s) / h;
-    b = 1.0 - a;
-    return a * sp->z[lo] + b * sp->z[hi]
-           + ((a * a * a - a) * sp->m[lo] + (b * b * b - b) * sp->m[hi]) * h * h / 6.0;
+    const double *x = sp->s, x0 = x[0], xn = x[sp->n - 1];
+    int i = 0, lo = 0, e;
+    while (i < k) {
+        double xl, xh, h, zl, zh, ml, mh;
+        if (!(s[i] >= x0 && s[i] <= xn)) {
+            z[i++] = NAN;
+            continue;
+        }
+        while (lo < sp->n - 2 && x[lo + 1] <= s[i])
+            lo++;
+        xl = x[lo];
+        xh = x[lo + 1];
+        /* the interval's samples: below its upper knot, or on the last
+         * interval up to the profile's end */
+        for (e = i + 1; e < k && (lo < sp->n - 2 ? s[e] < xh : s[e] <= xn); e++)
+            ;
+        h = xh - xl;
+        zl = sp->z[lo];
+        zh = sp->z[lo + 1];
+        ml = sp->m[lo];
+        mh = sp->m[lo + 1];
+        for (; i < e; i++) {
+            const double a = (xh - s[i]) / h, b = 1.0 - a;
+            z[i] = a * zl + b * zh + ((a * a * a - a) * ml + (b * b * b - b) * mh) * h * h / 6.0;
+        }
+    }
 }
 
 /* numpy.linspace over the profile within RR_GAP_WINDOW of centre, heights
@@ -67,7 +79,7 @@ static int take_samples(const rr_spline *sp, double centre, double step, size_t 
     const double y0 = sp->s[0], y1 = sp->s[sp->n - 1];
     const double lo = fmax(y0, centre - RR_GAP_WINDOW), hi = fmin(y1, centre + RR_GAP_WINDOW);
     double cnt, d, best;
-    int i, hint = 0, c;
+    int i, c;
     if (!(hi > lo)) {
         out->why = RR_GAP_OFF_PROFILE;
         out->off_body = body;
@@ -84,10 +96,9 @@ static int take_samples(const rr_spline *sp, double centre, double step, size_t 
      * profile's end, about half the time): the same samples */
     if (!(q->sp == sp && q->lo == lo && q->hi == hi && q->step == step && q->k == (int)cnt)) {
         q->k = (int)cnt;
-        for (i = 0; i < q->k; i++) {
+        for (i = 0; i < q->k; i++)
             q->s[i] = i < q->k - 1 ? (double)i * d + lo : hi;
-            q->z[i] = spline_at_increasing(sp, q->s[i], &hint);
-        }
+        spline_samples(sp, q->s, q->k, q->z);
         q->sp = sp;
         q->lo = lo;
         q->hi = hi;
