@@ -697,6 +697,7 @@ int rr_rig_geometry_from(const rr_rig_config *c, rr_rig_geometry *g)
 {
     if (!c || !g)
         return RR_ERR_NULL;
+    memset(g, 0, sizeof *g);      /* its padding too: callers compare it byte for byte */
     g->wheel_radius = c->wheel_radius;
     g->roller_radius = c->roller_radius;
     g->profile_half_width = c->profile_half_width;

@@ -559,6 +559,9 @@ int rr_rig_bind(rr_rig *rig, const rr_rig_params *p)
     jac_const(p, J0);
     if (!rr_all_finite(J0, NS * NS))
         return RR_ERR_RANGE;
+    /* zero first: the rig is compared and copied byte for byte (its
+     * padding too), and nothing of it may be undefined */
+    memset(&contact, 0, sizeof contact);
     if ((st = rr_rig_contact_bind(&contact, &p->contact, rig->work, rig->work_len)) != RR_OK)
         return st;                  /* not after rr_rig_check; nothing changed */
     memcpy(rig->J0, J0, sizeof J0);
