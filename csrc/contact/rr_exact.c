@@ -340,6 +340,7 @@ static int normal_on_contact(solver *S, double *bw, size_t room, rr_exact_result
     solver SB;
     const int mx = L->mx, my = L->my, n = L->n;
     int i0, i1, j0, j1, st, pen = 0, k, j;
+    double hmin = L->h[0];
     box b;
 
     used->bx = 0;
@@ -348,7 +349,14 @@ static int normal_on_contact(solver *S, double *bw, size_t room, rr_exact_result
         return rr_exact_solve_normal(S, res);
     if ((st = box_solver(S, bw, &b, 0, &B, &cvb, &pbb, &SB)) < 0)
         return st;
-    box_in(&b, mx, L->h, B.h);
+    /* h from the grid's lowest value, as the grid's solve takes it (a
+     * large offset would drown the displacements in round-off: the
+     * comparisons below are in these terms too) */
+    for (k = 1; k < n; k++)
+        hmin = L->h[k] < hmin ? L->h[k] : hmin;
+    for (j = 0; j < b.by; j++)
+        for (k = 0; k < b.bx; k++)
+            B.h[j * b.bx + k] = L->h[(j + b.fj) * mx + b.fi + k] - hmin;
     /* the start boxed into gap, which the solver writes after taking it */
     box_in(&b, mx, S->start->pn, B.gap);
     sb = *S->start;
@@ -369,17 +377,18 @@ static int normal_on_contact(solver *S, double *bw, size_t room, rr_exact_result
             L->pn[(j + b.fj) * mx + b.fi + k] = B.pn[j * b.bx + k];
             L->state[(j + b.fj) * mx + b.fi + k] = B.state[j * b.bx + k];
         }
-    if ((st = rr_exact_normal_gap(S, L->pn, L->gap)) < 0)
+    if ((st = rr_exact_normal_displacement(S, L->pn, L->gap)) < 0)
         return st;
     for (j = 0; j < my && !pen; j++)
         for (k = 0; k < mx; k++)
             if ((k < b.fi || k >= b.fi + b.bx || j < b.fj || j >= b.fj + b.by)
-                && L->gap[j * mx + k] < res->delta) {
+                && L->gap[j * mx + k] + (L->h[j * mx + k] - hmin) < res->delta) {
                 pen = 1;
                 break;
             }
     if (pen)
         return rr_exact_solve_normal(S, res);
+    res->delta += hmin;                 /* as the grid's solve gives it */
     res->normal_products = S->products;
     *used = b;
     return st;

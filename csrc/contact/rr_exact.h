@@ -32,14 +32,17 @@
  * solved on the grid's box around them where that box's torus is at most
  * 4/5 of the grid's (a wheel's patch covers where h reaches the approach,
  * about twice the contact's area): the same equations, the products'
- * rounding aside.
+ * rounding aside.  So is the normal problem of a warm start
+ * (rr_exact_solve_from), on the box around the start's contact, where one
+ * product on the grid shows that no element outside the box is
+ * penetrated (else the grid's own solve follows).
  *
  * Memory: caller workspace only (rr_exact_workspace_len doubles for the
- * largest grid used: the grid's layout and room for its box's), zero-filled
- * before its first use: the solver keeps the kernel spectra of the last
- * grid shape and Poisson ratio there, and those of its last box, and
- * reuses them for the next case of the same shape (a batch of cases with
- * the same a/b and grid builds them once).  Nothing else a case leaves
+ * largest grid used: the grid's layout, and from its middle room for its
+ * box's), zero-filled before its first use: the solver keeps the kernel
+ * spectra of the last grid shape and Poisson ratio there, and those of its
+ * last box, and reuses them for the next case of the same shape (a batch
+ * of cases with the same a/b and grid builds them once).  Nothing else a case leaves
  * there (its iterates, a failed case's NaN) reaches the next: a case gives
  * the doubles it gives on a fresh workspace.  One workspace per thread.
  */

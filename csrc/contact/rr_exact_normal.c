@@ -76,9 +76,9 @@ static int gap_of(solver *S, const double *p, double *g)
     return st;
 }
 
-int rr_exact_normal_gap(solver *S, const double *p, double *g)
+int rr_exact_normal_displacement(solver *S, const double *p, double *u)
 {
-    return gap_of(S, p, g);
+    return normal_product(S, p, u);
 }
 
 static double mean_on(const double *v, const signed char *in, int n, int *count)

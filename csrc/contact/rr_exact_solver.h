@@ -82,8 +82,9 @@ int rr_exact_build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu, i
                            const rr_interrupt *stop);
 double rr_exact_steady_diagonal(double aspect, double nu);
 int rr_exact_solve_normal(solver *S, rr_exact_result *res);
-/* g = h + u(p) on S's grid (one product, counted), h as the layout holds it */
-int rr_exact_normal_gap(solver *S, const double *p, double *g);
+/* u(p), the normal displacements of pressure p on S's grid (one product,
+ * counted) */
+int rr_exact_normal_displacement(solver *S, const double *p, double *u);
 int rr_exact_solve_tangential(solver *S, rr_exact_result *res);
 
 #endif

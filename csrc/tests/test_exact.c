@@ -543,6 +543,40 @@ int main(void)
         for (k = 0; k < 3; k++)
             free(f[k]);
     }
+    /* the box's check in the grid's own terms: a flat punch 1e130 m from
+     * the plane (h the same everywhere), warm from a pressure on its first
+     * rows alone.  Against the offset the displacements are lost to
+     * round-off: the elements outside the box are penetrated only in h
+     * taken from its lowest value, as the grid's solve takes it (a check
+     * against the absolute h kept the box's contact: the fuzzer's find).
+     * Tolerance: the cold solve's to tol 1e-9. */
+    {
+        rr_exact_problem fl = hertz_case(0.005, 0.003, 15);
+        const int n = fl.grid.mx * fl.grid.my;
+        size_t lf = rr_exact_workspace_len(fl.grid.mx, fl.grid.my);
+        double *w1 = calloc(lf, sizeof *w1), *h = malloc((size_t)n * sizeof *h);
+        double *pn = calloc((size_t)n, sizeof *pn);
+        rr_exact_result rc, rwm;
+        rr_exact_start st;
+        int k;
+        for (k = 0; k < n; k++)
+            h[k] = 1e130;
+        for (k = 0; k < 3 * fl.grid.mx; k++)
+            pn[k] = 1.0;
+        fl.h = h;
+        CHECK_STATUS(rr_exact_solve(&fl, w1, lf, &rc, NULL), RR_OK, "flat punch: cold");
+        memset(&st, 0, sizeof st);
+        st.mx = fl.grid.mx;
+        st.my = fl.grid.my;
+        st.pn = pn;
+        CHECK_STATUS(rr_exact_solve_from(&fl, &st, w1, lf, &rwm, NULL), RR_OK,
+                     "flat punch: warm from its first rows");
+        CHECK(rwm.ncontact == rc.ncontact && rc.ncontact == n,
+              "flat punch: warm from its first rows, the whole grid in contact as cold");
+        free(w1);
+        free(h);
+        free(pn);
+    }
     /* the spectra's phases (rr_exact_build_spectra): a grid first solved
      * without creepage keeps the normal spectra alone; the next case of that
      * grid with creepage adds the tangential ones and gives a fresh
