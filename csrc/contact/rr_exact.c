@@ -377,8 +377,8 @@ static int normal_on_contact(solver *S, double *bw, size_t room, rr_exact_result
             L->pn[(j + b.fj) * mx + b.fi + k] = B.pn[j * b.bx + k];
             L->state[(j + b.fj) * mx + b.fi + k] = B.state[j * b.bx + k];
         }
-    if ((st = rr_exact_normal_displacement(S, L->pn, L->gap)) < 0)
-        return st;
+    if ((k = rr_exact_normal_displacement(S, L->pn, L->gap)) < 0)
+        return k;                       /* st keeps the box's status (a warning) */
     for (j = 0; j < my && !pen; j++)
         for (k = 0; k < mx; k++)
             if ((k < b.fi || k >= b.fi + b.bx || j < b.fj || j >= b.fj + b.by)

@@ -529,6 +529,15 @@ int main(void)
             st.pn = f[0];
             st.px = f[1];
             st.py = f[2];
+            if (q == 0) {
+                /* the box's solve out of products warns (no creepage: the
+                 * normal problem's status alone; the fuzzer's find) */
+                rr_exact_problem few = wide;
+                few.cx = few.cy = few.cphi = 0.0;
+                few.maxit = 2;
+                CHECK_STATUS(rr_exact_solve_from(&few, &st, w2, lw, &rwm, NULL),
+                             RR_WARN_NOT_CONVERGED, "normal box: out of products, a warning");
+            }
             CHECK_STATUS(rr_exact_solve_from(&wide, &st, w2, lw, &rwm, NULL), RR_OK,
                          "normal box: warm");
             CHECK(hypot(rwm.fx - rc.fx, rwm.fy - rc.fy) < 1e-8 * wide.mu * wide.N
@@ -538,6 +547,7 @@ int main(void)
                          : "normal box: warm from a quarter of the load (the grid's), the cold "
                            "solve's answer");
         }
+
         free(w1);
         free(w2);
         for (k = 0; k < 3; k++)
