@@ -396,7 +396,7 @@ static int fill_h(const plane *f, section *r, section *w, double dx, double dy, 
         if ((st = sec_walk(f, r, dx * (double)i, y_lo, y_hi, 0, out)) != RR_OK
             || (st = sec_walk(f, w, dx * (double)i, y_lo, y_hi, 0, out)) != RR_OK)
             return st;
-        gap_column(r, w, dy, j_lo, j_hi, h + (i - i_lo), (size_t)mx);
+        gap_many(r, w, NULL, dy, j_lo, j_hi - j_lo + 1, h + (i - i_lo), (size_t)mx);
         if (twin)
             for (j = j_lo; j <= j_hi; j++)
                 h[(size_t)(j - j_lo) * mx + (m - i_lo)] = h[(size_t)(j - j_lo) * mx + (i - i_lo)];
@@ -557,7 +557,7 @@ int rr_gap_build(const rr_gap_site *site, const rr_gap_opts *o, double *work, si
     khi = (o->keep_hi - f.P0) / f.t2y;
     for (i = 0; i < nf; i++)
         c.yf[i] = i < nf - 1 ? (double)i * df + plo : phi;     /* numpy.linspace */
-    gap_sorted(&rsec, &wsec, c.yf, nf, c.hy);
+    gap_many(&rsec, &wsec, c.yf, 0.0, 0, nf, c.hy, 1);
     for (i = 0; i < nf; i++) {
         if (o->keep && !(c.yf[i] >= klo && c.yf[i] <= khi))
             continue;

@@ -342,6 +342,44 @@ static double sec_last(const section *c)
     return c->yc[sec_index(c, c->b - c->a)];
 }
 
+/* numpy.interp's special cases over a run (x[s j] its j-th point in
+ * increasing order, f its values, n of them): y NaN, or beyond either
+ * end (the end's value); 1 with *r set where y is one of them. */
+static RR_GAP_INLINE int interp_outside(const double *x, const double *f, int s, int n,
+                                        double y, double *r)
+{
+    if (isnan(y))
+        *r = y;
+    else if (y > x[s * (n - 1)])
+        *r = f[s * (n - 1)];
+    else if (y < x[0])
+        *r = f[0];
+    else
+        return 0;
+    return 1;
+}
+
+/* numpy.interp's formula in the run's interval j (x[s j] <= y, below the
+ * next point unless j is the last), its special cases included */
+static RR_GAP_INLINE double interp_in(const double *x, const double *f, int s, int n, int j,
+                                      double y)
+{
+    const double xj = x[s * j], fj = f[s * j];
+    double xj1, fj1, slope, r;
+    if (j == n - 1 || xj == y)
+        return fj;
+    xj1 = x[s * (j + 1)];
+    fj1 = f[s * (j + 1)];
+    slope = (fj1 - fj) / (xj1 - xj);
+    r = slope * (y - xj) + fj;
+    if (isnan(r)) {
+        r = slope * (y - xj1) + fj1;
+        if (isnan(r) && fj == fj1)
+            r = fj;
+    }
+    return r;
+}
+
 /* numpy.interp(y, yc of the run, v of the run) (v: ze, or the samples'
  * positions), its formula and special cases; c->hint keeps the interval of
  * the last call: queries in order (a scan, a column's rows) step on from
@@ -352,13 +390,9 @@ static double sec_interp(section *c, double y, const double *v)
     const double *x = c->yc + (s > 0 ? c->a : c->b);   /* x[s j]: j-th in increasing yc */
     const double *f = v + (s > 0 ? c->a : c->b);
     int j, step;
-    double xj, xj1, fj, fj1, slope, r;
-    if (isnan(y))
-        return y;
-    if (y > x[s * (n - 1)])
-        return f[s * (n - 1)];
-    if (y < x[0])
-        return f[0];
+    double r;
+    if (interp_outside(x, f, s, n, y, &r))
+        return r;
     j = c->hint < 0 ? 0 : c->hint > n - 1 ? n - 1 : c->hint;
     for (step = 0; step < 4 && j < n - 1 && x[s * (j + 1)] <= y; step++)
         j++;
@@ -378,20 +412,7 @@ static double sec_interp(section *c, double y, const double *v)
         j = lo;
     }
     c->hint = j;
-    xj = x[s * j];
-    fj = f[s * j];
-    if (j == n - 1 || xj == y)
-        return fj;
-    xj1 = x[s * (j + 1)];
-    fj1 = f[s * (j + 1)];
-    slope = (fj1 - fj) / (xj1 - xj);
-    r = slope * (y - xj) + fj;
-    if (isnan(r)) {
-        r = slope * (y - xj1) + fj1;
-        if (isnan(r) && fj == fj1)
-            r = fj;
-    }
-    return r;
+    return interp_in(x, f, s, n, j, y);
 }
 
 /* h along n at lateral y (patch.py's _Sections.gap): NaN outside both runs. */
@@ -428,36 +449,21 @@ static RR_GAP_INLINE double cursor_at(cursor *k, double y)
     const double *x = k->x, *f = k->f;
     const int n = k->n, s = k->s;
     int j = k->j;
-    double xj, xj1, fj, fj1, slope, r;
-    if (isnan(y))
-        return y;
-    if (y > x[s * (n - 1)])
-        return f[s * (n - 1)];
-    if (y < x[0])
-        return f[0];
+    double r;
+    if (interp_outside(x, f, s, n, y, &r))
+        return r;
     while (j > 0 && x[s * j] > y)
         j--;
     while (j < n - 1 && x[s * (j + 1)] <= y)
         j++;
     k->j = j;
-    xj = x[s * j];
-    fj = f[s * j];
-    if (j == n - 1 || xj == y)
-        return fj;
-    xj1 = x[s * (j + 1)];
-    fj1 = f[s * (j + 1)];
-    slope = (fj1 - fj) / (xj1 - xj);
-    r = slope * (y - xj) + fj;
-    if (isnan(r)) {
-        r = slope * (y - xj1) + fj1;
-        if (isnan(r) && fj == fj1)
-            r = fj;
-    }
-    return r;
+    return interp_in(x, f, s, n, j, y);
 }
 
-/* gap_at at y[0 .. m) (increasing) into out[0 .. m) */
-static void gap_sorted(section *r, section *w, const double *y, int m, double *out)
+/* gap_at at m increasing y into out[i stride]: ys[i], or dy (j0 + i)
+ * where ys is NULL (a column's rows) */
+static void gap_many(section *r, section *w, const double *ys, double dy, int j0, int m,
+                     double *out, size_t stride)
 {
     const double lo = fmax(sec_first(r), sec_first(w)), hi = fmin(sec_last(r), sec_last(w));
     cursor kr, kw;
@@ -465,26 +471,9 @@ static void gap_sorted(section *r, section *w, const double *y, int m, double *o
     cursor_set(r, &kr);
     cursor_set(w, &kw);
     for (i = 0; i < m; i++) {
-        const double g = cursor_at(&kw, y[i]) - cursor_at(&kr, y[i]);
-        out[i] = y[i] < lo || y[i] > hi ? NAN : g;
-    }
-    r->hint = kr.j;
-    w->hint = kw.j;
-}
-
-/* gap_at at y = dy j for j = j_lo .. j_hi into out[(j - j_lo) stride] */
-static void gap_column(section *r, section *w, double dy, int j_lo, int j_hi, double *out,
-                       size_t stride)
-{
-    const double lo = fmax(sec_first(r), sec_first(w)), hi = fmin(sec_last(r), sec_last(w));
-    cursor kr, kw;
-    int j;
-    cursor_set(r, &kr);
-    cursor_set(w, &kw);
-    for (j = j_lo; j <= j_hi; j++) {
-        const double y = dy * (double)j;
+        const double y = ys ? ys[i] : dy * (double)(j0 + i);
         const double g = cursor_at(&kw, y) - cursor_at(&kr, y);
-        out[(size_t)(j - j_lo) * stride] = y < lo || y > hi ? NAN : g;
+        out[(size_t)i * stride] = y < lo || y > hi ? NAN : g;
     }
     r->hint = kr.j;
     w->hint = kw.j;
