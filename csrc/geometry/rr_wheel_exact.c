@@ -92,11 +92,12 @@ static size_t warm_len(size_t cells)
 }
 
 /* The solvers' share of the workspace: the loaded grids' (ex, for grids
- * up to the caller's size) and a quarter more for the coarse pass's, each
- * grid's spectra kept in its own from call to call (the grids of a sweep's
- * next case have the same sizes more often than not: on CONTACT's 72
- * roller cases in turn, the coarse pass's 53 times, the loaded grid's 51);
- * one double after them says whether the coarse share was written over. */
+ * up to the caller's size) and a third more for the coarse pass's (a
+ * quarter of the share), each grid's spectra kept in its own from call to
+ * call (the grids of a sweep's next case have the same sizes more often
+ * than not: on CONTACT's 72 roller cases in turn, the coarse pass's 53
+ * times, the loaded grid's 51); one double after them says whether the
+ * coarse share was written over. */
 static size_t solvers_len(size_t ex)
 {
     return ex + (ex + 2) / 3 + 1;
