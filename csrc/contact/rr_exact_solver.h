@@ -74,16 +74,16 @@ typedef struct {
  * workspace carved (base NULL: its length only); the kernel spectra and
  * inverse stencils of a grid's aspect dy/dx and nu, the normal ones and,
  * where tangential is set, the tangential ones too (polling the interrupt
- * hook); the steady operator's diagonal; the normal and the tangential
- * problem of a case (rr_exact_normal.c, rr_exact_tangential.c). */
+ * hook); the steady operator's diagonal; the normal problem of a case, the
+ * normal displacements u of a pressure p on its grid (one product,
+ * counted), and its tangential problem (rr_exact_normal.c,
+ * rr_exact_tangential.c). */
 size_t rr_exact_spectrum_len(int mx, int my);
 size_t rr_exact_carve(layout *L, int mx, int my, double *base);
 int rr_exact_build_spectra(layout *L, rr_conv2d *cv, double aspect, double nu, int tangential,
                            const rr_interrupt *stop);
 double rr_exact_steady_diagonal(double aspect, double nu);
 int rr_exact_solve_normal(solver *S, rr_exact_result *res);
-/* u(p), the normal displacements of pressure p on S's grid (one product,
- * counted) */
 int rr_exact_normal_displacement(solver *S, const double *p, double *u);
 int rr_exact_solve_tangential(solver *S, rr_exact_result *res);
 
