@@ -195,7 +195,7 @@ static int check_start(const rr_exact_problem *pb, const rr_exact_start *s)
     return positive ? RR_OK : RR_ERR_PARAM;
 }
 
-/* ---- the tangential problem on the contact's box --------------------------- */
+/* ---- the contact's box ----------------------------------------------------- */
 
 /* The tangential problem lives on the elements in contact: the tractions
  * are 0 elsewhere, and only there are slip equations.  So it is solved on
@@ -280,41 +280,79 @@ static int positive_bounds(const double *v, int mx, int my, int *i0, int *i1, in
     return *i1 >= 0;
 }
 
+/* Values of size bytes each between the grid's rows (mx a row) and box
+ * b's: grid into box (to_grid 0), or box into grid (1). */
+static void box_rows(const box *b, int mx, size_t size, const void *from, void *to, int to_grid)
+{
+    const size_t row = (size_t)b->bx * size;
+    int j;
+    for (j = 0; j < b->by; j++) {
+        const size_t g = ((size_t)(j + b->fj) * mx + b->fi) * size, q = (size_t)j * row;
+        memcpy((char *)to + (to_grid ? g : q), (const char *)from + (to_grid ? q : g), row);
+    }
+}
+
 /* in (the grid's rows of mx) boxed into out (b's rows) */
 static void box_in(const box *b, int mx, const double *in, double *out)
 {
-    int j;
-    for (j = 0; j < b->by; j++)
-        memcpy(out + (size_t)j * b->bx, in + (size_t)(j + b->fj) * mx + b->fi,
-               (size_t)b->bx * sizeof *out);
+    box_rows(b, mx, sizeof *in, in, out, 0);
 }
 
-/* The solver SB of S's problem on box b: its layout carved at bw (its
+/* in (b's rows) into out (the grid's rows of mx) */
+static void box_out(const box *b, int mx, const double *in, double *out)
+{
+    box_rows(b, mx, sizeof *in, in, out, 1);
+}
+
+/* A problem of the grid's solver on a box of it: the box, its layout, FFT
+ * engine, problem, start and solver. */
+typedef struct {
+    box b;
+    layout L;
+    rr_conv2d cv;
+    rr_exact_problem pb;
+    rr_exact_start start;
+    solver S;
+} boxed;
+
+/* The solver X->S of S's problem on box X->b: its layout carved at bw (its
  * spectra kept there, keyed as the grid's; the tangential phase where
- * asked), its problem pbb (no h: the callers fill the box's). */
-static int box_solver(const solver *S, double *bw, const box *b,
-                      int tangential, layout *B, rr_conv2d *cvb, rr_exact_problem *pbb,
-                      solver *SB)
+ * asked), its problem (no h: the callers fill the box's), no start. */
+static int box_solver(const solver *S, double *bw, int tangential, boxed *X)
 {
     const rr_exact_problem *pb = S->pb;
     int st;
-    rr_exact_carve(B, b->bx, b->by, bw);
-    if ((st = rr_conv2d_init(cvb, b->bx, b->by, B->conv, B->conv_len)) < 0
-        || (st = rr_exact_build_spectra(B, cvb, pb->grid.dy / pb->grid.dx, pb->nu, tangential,
-                                        pb->interrupt)) < 0)
+    rr_exact_carve(&X->L, X->b.bx, X->b.by, bw);
+    if ((st = rr_conv2d_init(&X->cv, X->b.bx, X->b.by, X->L.conv, X->L.conv_len)) < 0
+        || (st = rr_exact_build_spectra(&X->L, &X->cv, pb->grid.dy / pb->grid.dx, pb->nu,
+                                        tangential, pb->interrupt)) < 0)
         return st;
-    *pbb = *pb;
-    pbb->grid.mx = b->bx;
-    pbb->grid.my = b->by;
-    pbb->grid.x0 = pb->grid.x0 + b->fi * pb->grid.dx;
-    pbb->grid.y0 = pb->grid.y0 + b->fj * pb->grid.dy;
-    pbb->h = NULL;
-    SB->pb = pbb;
-    SB->start = NULL;
-    SB->L = B;
-    SB->cv = cvb;
-    SB->products = 0;
+    X->pb = *pb;
+    X->pb.grid.mx = X->b.bx;
+    X->pb.grid.my = X->b.by;
+    X->pb.grid.x0 = pb->grid.x0 + X->b.fi * pb->grid.dx;
+    X->pb.grid.y0 = pb->grid.y0 + X->b.fj * pb->grid.dy;
+    X->pb.h = NULL;
+    X->S.pb = &X->pb;
+    X->S.start = NULL;
+    X->S.L = &X->L;
+    X->S.cv = &X->cv;
+    X->S.products = 0;
     return RR_OK;
+}
+
+/* The caller's start s boxed (its pressure pn, its tractions px, py or
+ * NULL: arrays of the box's) as X's start. */
+static void box_start(const rr_exact_start *s, const double *pn, const double *px,
+                      const double *py, boxed *X)
+{
+    X->start = *s;
+    X->start.mx = X->b.bx;
+    X->start.my = X->b.by;
+    X->start.pn = pn;
+    X->start.px = px;
+    X->start.py = py;
+    X->S.start = &X->start;
 }
 
 /* ---- the normal problem on the contact's box -------------------------------- */
@@ -333,55 +371,43 @@ static int box_solver(const solver *S, double *bw, const box *b,
 static int normal_on_contact(solver *S, double *bw, size_t room, rr_exact_result *res,
                              box *used)
 {
-    layout *L = S->L, B;
-    rr_conv2d cvb;
-    rr_exact_problem pbb;
-    rr_exact_start sb;
-    solver SB;
+    layout *L = S->L;
     const int mx = L->mx, my = L->my, n = L->n;
     int i0, i1, j0, j1, st, pen = 0, k, j;
     double hmin = L->h[0];
-    box b;
+    boxed X;
 
     used->bx = 0;
     if (!S->start || !positive_bounds(S->start->pn, mx, my, &i0, &i1, &j0, &j1)
-        || !box_around(L, i0, i1, j0, j1, room, &b))
+        || !box_around(L, i0, i1, j0, j1, room, &X.b))
         return rr_exact_solve_normal(S, res);
-    if ((st = box_solver(S, bw, &b, 0, &B, &cvb, &pbb, &SB)) < 0)
+    if ((st = box_solver(S, bw, 0, &X)) < 0)
         return st;
     /* h from the grid's lowest value, as the grid's solve takes it (a
      * large offset would drown the displacements in round-off: the
      * comparisons below are in these terms too) */
     for (k = 1; k < n; k++)
         hmin = L->h[k] < hmin ? L->h[k] : hmin;
-    for (j = 0; j < b.by; j++)
-        for (k = 0; k < b.bx; k++)
-            B.h[j * b.bx + k] = L->h[(j + b.fj) * mx + b.fi + k] - hmin;
+    box_in(&X.b, mx, L->h, X.L.h);
+    for (k = 0; k < X.L.n; k++)
+        X.L.h[k] -= hmin;
     /* the start boxed into gap, which the solver writes after taking it */
-    box_in(&b, mx, S->start->pn, B.gap);
-    sb = *S->start;
-    sb.mx = b.bx;
-    sb.my = b.by;
-    sb.pn = B.gap;
-    sb.px = sb.py = NULL;
-    SB.start = &sb;
-    st = rr_exact_solve_normal(&SB, res);
-    S->products += SB.products;          /* the cap (maxit) counts them too */
+    box_in(&X.b, mx, S->start->pn, X.L.gap);
+    box_start(S->start, X.L.gap, NULL, NULL, &X);
+    st = rr_exact_solve_normal(&X.S, res);
+    S->products += X.S.products;         /* the cap (maxit) counts them too */
     if (st < 0)
         return st;
-    /* back onto the grid, and the grid's gap of that pressure */
+    /* back onto the grid, and the grid's displacements of that pressure */
     memset(L->pn, 0, (size_t)n * sizeof *L->pn);
     memset(L->state, OUTSIDE, (size_t)n);
-    for (j = 0; j < b.by; j++)
-        for (k = 0; k < b.bx; k++) {
-            L->pn[(j + b.fj) * mx + b.fi + k] = B.pn[j * b.bx + k];
-            L->state[(j + b.fj) * mx + b.fi + k] = B.state[j * b.bx + k];
-        }
+    box_out(&X.b, mx, X.L.pn, L->pn);
+    box_rows(&X.b, mx, 1, X.L.state, L->state, 1);
     if ((k = rr_exact_normal_displacement(S, L->pn, L->gap)) < 0)
         return k;                       /* st keeps the box's status (a warning) */
     for (j = 0; j < my && !pen; j++)
         for (k = 0; k < mx; k++)
-            if ((k < b.fi || k >= b.fi + b.bx || j < b.fj || j >= b.fj + b.by)
+            if ((k < X.b.fi || k >= X.b.fi + X.b.bx || j < X.b.fj || j >= X.b.fj + X.b.by)
                 && L->gap[j * mx + k] + (L->h[j * mx + k] - hmin) < res->delta) {
                 pen = 1;
                 break;
@@ -390,7 +416,7 @@ static int normal_on_contact(solver *S, double *bw, size_t room, rr_exact_result
         return rr_exact_solve_normal(S, res);
     res->delta += hmin;                 /* as the grid's solve gives it */
     res->normal_products = S->products;
-    *used = b;
+    *used = X.b;
     return st;
 }
 
@@ -413,52 +439,38 @@ static int tangential_on_grid(solver *S, rr_exact_result *res)
 static int tangential_on_contact(solver *S, double *bw, size_t room, const box *nb,
                                  rr_exact_result *res)
 {
-    layout *L = S->L, B;
-    rr_conv2d cvb;
-    rr_exact_problem pbb;
-    rr_exact_start sb;
-    solver SB;
+    layout *L = S->L;
     const int mx = L->mx, my = L->my, n = L->n;
-    int i0, i1, j0, j1, i, j, st;
-    box b;
+    int i0, i1, j0, j1, i, st;
+    boxed X;
 
     if (S->pb->cx == 0.0 && S->pb->cy == 0.0 && S->pb->cphi == 0.0)
         return rr_exact_solve_tangential(S, res);     /* no traction, no product */
     if (nb->bx > 0)
-        b = *nb;
+        X.b = *nb;
     else if (!positive_bounds(L->pn, mx, my, &i0, &i1, &j0, &j1)
-             || !box_around(L, i0, i1, j0, j1, room, &b))
+             || !box_around(L, i0, i1, j0, j1, room, &X.b))
         return tangential_on_grid(S, res);
-    if ((st = box_solver(S, bw, &b, 1, &B, &cvb, &pbb, &SB)) < 0)
+    if ((st = box_solver(S, bw, 1, &X)) < 0)
         return st;
-    box_in(&b, mx, L->pn, B.pn);
+    box_in(&X.b, mx, L->pn, X.L.pn);
     if (S->start && S->start->px) {
         /* the caller's start, boxed into scratch the solver reads before
          * it writes (dlt: GMRES's, after the start is taken) */
-        box_in(&b, mx, S->start->px, B.dlt);
-        box_in(&b, mx, S->start->py, B.dlt + B.n);
-        sb = *S->start;
-        sb.mx = b.bx;
-        sb.my = b.by;
-        sb.pn = B.pn;
-        sb.px = B.dlt;
-        sb.py = B.dlt + B.n;
-        SB.start = &sb;
+        box_in(&X.b, mx, S->start->px, X.L.dlt);
+        box_in(&X.b, mx, S->start->py, X.L.dlt + X.L.n);
+        box_start(S->start, X.L.pn, X.L.dlt, X.L.dlt + X.L.n, &X);
     }
-    st = rr_exact_solve_tangential(&SB, res);
+    st = rr_exact_solve_tangential(&X.S, res);
     /* back onto the grid: nothing outside the box (no pressure there) */
     for (i = 0; i < 2 * n; i++)
         L->p[i] = L->s[i] = 0.0;
     memset(L->state, OUTSIDE, (size_t)n);
-    for (j = 0; j < b.by; j++)
-        for (i = 0; i < b.bx; i++) {
-            const int k = (j + b.fj) * mx + b.fi + i, q = j * b.bx + i;
-            L->p[k] = B.p[q];
-            L->p[k + n] = B.p[q + B.n];
-            L->s[k] = B.s[q];
-            L->s[k + n] = B.s[q + B.n];
-            L->state[k] = B.state[q];
-        }
+    box_out(&X.b, mx, X.L.p, L->p);
+    box_out(&X.b, mx, X.L.p + X.L.n, L->p + n);
+    box_out(&X.b, mx, X.L.s, L->s);
+    box_out(&X.b, mx, X.L.s + X.L.n, L->s + n);
+    box_rows(&X.b, mx, 1, X.L.state, L->state, 1);
     return st;
 }
 

@@ -462,7 +462,7 @@ static int place_plane(plane *f, carve *c, section *rsec, section *wsec, double 
     plane_set(f, f->sigma * (p->roller_y + sr_P), zP, delta);
     rsec->k0 = c->rs.k0;
     wsec->k0 = c->ws.k0;
-    if ((st = sections0(f, rsec, rsec, wsec, lo, hi, out)) != RR_OK)
+    if ((st = sections0(f, 1, rsec, wsec, lo, hi, out)) != RR_OK)
         return st;
     *sw_P = sec_interp(wsec, 0.0, c->ws.s);
     if ((st = take_samples(&p->wheel, *sw_P, step, c->kmax, &c->ws, out, 1)) != RR_OK)
@@ -470,7 +470,7 @@ static int place_plane(plane *f, carve *c, section *rsec, section *wsec, double 
     wsec->k0 = c->ws.k0;
     /* the roller's section is the one just walked (its samples and the
      * plane the same): the wheel's alone again */
-    return sections0(f, NULL, rsec, wsec, lo, hi, out);
+    return sections0(f, 0, rsec, wsec, lo, hi, out);
 }
 
 int rr_gap_build(const rr_gap_site *site, const rr_gap_opts *o, double *work, size_t work_len,

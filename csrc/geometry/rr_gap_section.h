@@ -479,14 +479,14 @@ static void gap_many(section *r, section *w, const double *ys, double dy, int j0
     w->hint = kw.j;
 }
 
-/* Both runs at x = 0 in full (the roller's: walk, r itself or NULL where r
- * holds it already) and where they overlap; RR_ERR_GEOMETRY (why FOLD,
+/* Both runs at x = 0 in full (the roller's only where walk_r is set: r
+ * may hold it already) and where they overlap; RR_ERR_GEOMETRY (why FOLD,
  * APART). */
-static int sections0(const plane *f, section *walk, section *r, section *w, double *lo,
+static int sections0(const plane *f, int walk_r, section *r, section *w, double *lo,
                      double *hi, rr_gap_patch *out)
 {
     int st;
-    if ((walk && (st = sec_walk(f, walk, 0.0, 0.0, 0.0, 1, out)) != RR_OK)
+    if ((walk_r && (st = sec_walk(f, r, 0.0, 0.0, 0.0, 1, out)) != RR_OK)
         || (st = sec_walk(f, w, 0.0, 0.0, 0.0, 1, out)) != RR_OK)
         return st;
     *lo = fmax(sec_first(r), sec_first(w));

@@ -345,7 +345,7 @@ static int solve(call *c, const rr_gap_patch *p, double N, int normal_only, int 
     rr_exact_start start;
     double k[4] = {pb->cx, pb->cy, pb->cphi, 0.0}, *work;
     size_t n, need, work_len;
-    int st, warm;
+    int st, warm, same = 0;
     if (normal_only)
         k[0] = k[1] = k[2] = 0.0;
     else if (!pb->creep_given && (st = creepages(c, p, k)) != RR_OK)
@@ -411,7 +411,7 @@ static int solve(call *c, const rr_gap_patch *p, double N, int normal_only, int 
          * grid's solution than the solver's own start from h (measured on
          * the 72 cases: 19 to 23 products against 13 to 16) */
         warm = 0;
-    } else if (same_patch(p, &c->last_patch)) {
+    } else if ((same = same_patch(p, &c->last_patch))) {
         start.pn = f.pn;              /* read before the solver writes the field */
         start.px = f.px;
         start.py = f.py;
@@ -434,7 +434,7 @@ static int solve(call *c, const rr_gap_patch *p, double N, int normal_only, int 
     /* the last solution becomes the one before, where the next solve may
      * take both (the same patch, the creepages the same) */
     c->prev_N = NAN;
-    if (warm && !normal_only && same_patch(p, &c->last_patch)) {
+    if (same && !normal_only) {
         memcpy(c->prev, c->last, 3 * n * sizeof *c->prev);
         c->prev_N = c->last_N;
     }
