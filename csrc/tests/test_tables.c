@@ -120,6 +120,20 @@ static void test_spline_fit(void)
         CHECK(all_nan(s, 4) && all_nan(c2, 3) && all_nan(c3, 3), "fit: c2 h^2 -> NaN");
     }
     {
+        /* fuzz_spline_fit: values near 1e-187 over intervals of 8e71 m:
+         * c2 (about 1e-310) and c3 (1e-382) underflow, and the spline they
+         * gave missed its second knot by 2e5 times its value */
+        const double yy[5] = {7.845016548974284e-187, 7.7756037293369766e+71,
+                              1.5551188174766575e+72, 2.3326772620196172e+72,
+                              3.1102357065625769e+72};
+        const double zz[5] = {1.7024806598384478e-166, 1.5804925908410008e-187,
+                              1.5685542162784258e-187, 1.580497508713229e-187,
+                              1.5804947031972617e-187};
+        CHECK_STATUS(rr_spline_fit(5, yy, zz, 0, s, c2, c3, w), RR_ERR_RANGE,
+                     "fit: coefficients underflow");
+        CHECK(all_nan(s, 5) && all_nan(c2, 4) && all_nan(c3, 4), "fit: underflow -> NaN");
+    }
+    {
         /* fuzz_spline_fit: c3 finite but 6 c3 infinite, times t = 0 NaN */
         double cc2[NP], cc3[NP];
         for (i = 0; i < NP; i++) {

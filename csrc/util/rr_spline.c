@@ -1,4 +1,5 @@
 /* rr_spline.c - natural cubic spline (de Boor 1978, ch. IV). */
+#include <float.h>
 #include <math.h>
 #include "util/rr_common.h"
 #include "util/rr_spline.h"
@@ -162,6 +163,12 @@ static void solve_rows(const double *y, const double *z, int lo, int hi, tri_row
         x[i] -= c[i] * x[i + 1];
 }
 
+/* q = num / something, nonzero in exact arithmetic, below DBL_MIN */
+static int underflows(double num, double q)
+{
+    return num != 0.0 && fabs(q) < DBL_MIN;
+}
+
 static void fill_nan(double *v, int n)
 {
     int i;
@@ -229,8 +236,16 @@ int rr_spline_fit(int n, const double *y, const double *z, int end, double *slop
     }
     for (i = 0; i < n - 1; i++) {
         const double h = y[i + 1] - y[i], d = (z[i + 1] - z[i]) / h;
-        c2[i] = (3.0 * d - 2.0 * slope[i] - slope[i + 1]) / h;
-        c3[i] = (slope[i] + slope[i + 1] - 2.0 * d) / (h * h);
+        const double n2 = 3.0 * d - 2.0 * slope[i] - slope[i + 1];
+        const double n3 = slope[i] + slope[i + 1] - 2.0 * d;
+        c2[i] = n2 / h;
+        c3[i] = n3 / (h * h);
+        /* the other end of the range: a coefficient (or a slope) that
+         * underflows below the smallest normal double keeps too few digits
+         * to give the spline (values near 1e-187 over intervals of 1e72) */
+        if (underflows(n2, c2[i]) || underflows(n3, c3[i]) || underflows(slope[i], slope[i])
+            || underflows(slope[i + 1], slope[i + 1]))
+            c3[i] = NAN;
         /* an interval so long that h^3 overflows: c3 (of the order of
          * z / h^3) rounds to 0 and the coefficients no longer give the
          * spline (a finite wrong answer); and terms that overflow over

@@ -83,7 +83,9 @@ enum rr_spline_end {
  *            RR_ERR_RANGE (a coefficient not finite: points far too close
  *            for their values, an interval so long, beyond 5e102, that
  *            its cube overflows, or a term c2 h^2 or c3 h^3 that overflows
- *            over its interval).  On error the outputs it can reach are NaN.
+ *            over its interval; or, at the other end, a coefficient or slope
+ *            that underflows below DBL_MIN and keeps too few digits to give
+ *            the spline).  On error the outputs it can reach are NaN.
  */
 int rr_spline_fit(int n, const double *y, const double *z, int end, double *slope,
                   double *c2, double *c3, double *work);
