@@ -163,10 +163,13 @@ static void solve_rows(const double *y, const double *z, int lo, int hi, tri_row
         x[i] -= c[i] * x[i + 1];
 }
 
-/* q = num / something, nonzero in exact arithmetic, below DBL_MIN */
-static int underflows(double num, double q)
+/* q = num / h^k, nonzero in exact arithmetic, below DBL_MIN, where the
+ * subnormals' spacing over the interval (its term q h^k) is coarser than
+ * the values' own rounding (eps |z|, and never finer than DBL_MIN: a
+ * profile of 1e-315 m, a crown of 1e300 m, is flat, not lost) */
+static int underflows(double num, double q, double hk, double zs)
 {
-    return num != 0.0 && fabs(q) < DBL_MIN;
+    return num != 0.0 && fabs(q) < DBL_MIN && 0x1p-1074 * hk > fmax(DBL_EPSILON * zs, DBL_MIN);
 }
 
 static void fill_nan(double *v, int n)
@@ -242,9 +245,10 @@ int rr_spline_fit(int n, const double *y, const double *z, int end, double *slop
         c3[i] = n3 / (h * h);
         /* the other end of the range: a coefficient (or a slope) that
          * underflows below the smallest normal double keeps too few digits
-         * to give the spline (values near 1e-187 over intervals of 1e72) */
-        if (underflows(n2, c2[i]) || underflows(n3, c3[i]) || underflows(slope[i], slope[i])
-            || underflows(slope[i + 1], slope[i + 1]))
+         * to give the spline (values near 1e-166 over intervals of 8e71 m) */
+        const double zs = fmax(fabs(z[i]), fabs(z[i + 1]));
+        if (underflows(n2, c2[i], h * h, zs) || underflows(n3, c3[i], h * h * h, zs)
+            || underflows(slope[i], slope[i], h, zs) || underflows(slope[i + 1], slope[i + 1], h, zs))
             c3[i] = NAN;
         /* an interval so long that h^3 overflows: c3 (of the order of
          * z / h^3) rounds to 0 and the coefficients no longer give the
