@@ -132,6 +132,34 @@ def test_wheel_off_the_roller():
                             0.0)
 
 
+def test_the_pose_converges_on_the_flange():
+    """The zero-gap pose's Newton on (z, roll) takes the exact d gap / d roll:
+    the contact point's arm plus r tan(delta) (the wheel's point moves across
+    as it turns, along a surface of slope tan delta).  With the arm alone it
+    contracted by r tan(delta) / arm a step, 2 % on the tread but near 1 on
+    S1002's flange (delta 1.2 rad): from 6.4 mm out it ran out of its 50
+    steps with gaps above 1e-9 m and the axle up to 6 um off (status 1).
+    Now every shift to 8 mm converges, both gaps within the 1e-13 m the
+    Newton stops at (on the tread in two steps: six searches a pose on
+    CONTACT's roller cases, seventeen before)."""
+    y = np.linspace(-0.008, 0.008, 321)
+    for g in (rr.RigGeometry.standard(), rr.RigGeometry.measured_pair()):
+        c = rr.wheelset_contact(g, y, errors="ignore")
+        assert (c.status == 0).all(), y[c.status != 0]
+        assert np.abs(c.left.gap).max() < 1e-13 and np.abs(c.right.gap).max() < 1e-13
+
+
+def test_an_axle_beyond_the_gaps_rounding_is_no_pose():
+    """A wheel radius of 1e300 m puts the axle where a gap's rounding is
+    1e284 m: a gap that rounds to 0 there is no pose found (RR_ERR_RANGE),
+    not a converged one."""
+    g = rr.RigGeometry(wheel=rr.Profile.conical(0.05, (-0.015, 0.015), r0=1e300),
+                       roller=rr.Profile.cylinder((-0.015, 0.015), crown_radius=0.06),
+                       wheel_radius=1e300, roller_radius=0.16, wheel_y=0.15, roller_y=0.15)
+    c = rr.wheelset_contact(g, [0.0, 0.001], errors="ignore")
+    assert (c.status < 0).all() and np.isnan(c.z).all()
+
+
 def test_core_evaluates_the_profiles_own_spline():
     """The core takes each Profile's spline (knots, values, second
     derivatives), so its radii are the Profile's heights exactly."""

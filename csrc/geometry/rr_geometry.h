@@ -93,7 +93,9 @@ typedef struct {
  * rr_wheelset_contact - axle height and roll for lateral shift y_ws such
  * that both wheels touch their rollers (zero gap), and both contact points.
  *   status:  0 OK; RR_WARN_NOT_CONVERGED; errors of rr_contact_search;
- *            RR_ERR_NULL (pose, cl or cr NULL)
+ *            RR_ERR_NULL (pose, cl or cr NULL); RR_ERR_RANGE (a pose so
+ *            far from the origin, beyond ~5e5 m, that the gap's rounding
+ *            exceeds 1e-9 m: absurd radii)
  */
 int rr_wheelset_contact(const rr_wheel_roller *left, const rr_wheel_roller *right, double y_ws,
                         const rr_search_opts *o, rr_wheelset_pose *pose,
