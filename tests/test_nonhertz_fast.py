@@ -148,6 +148,27 @@ def test_a_flange_row_against_the_exact_solver():
         assert abs(dF[0]) <= 0.01, (target, dF)        # the fault's signature: fx
 
 
+def test_a_saturated_flange_finds_its_vertical_balance():
+    # S1002 right wheel at -6.4 mm with lateral slip (vy 0.01 m/s): the flank
+    # at delta 1.21 rad in full slip, mu tan(delta) = 1.4, so the creep
+    # forces' vertical share at the load Fz exceeds Fz.  The share's
+    # safeguard then stood still (halfway between Tz and itself) and the
+    # fast method found no balance where rig_exact finds one (N 73.2 kN,
+    # the share 58 % of Fz); it now steps halfway to Fz.  |dF| 0.0012 mu N
+    # against rig_exact at n = 80 (tolerance 0.02, the issue's p95)
+    g = geometry("s1002_uic60")
+    ct = rr.contact_table(g, -7.4e-3, -6.2e-3, 25)
+    Fz, mu, rs, y = 61163.0, 0.52, 5.587302, -6.4e-3
+    tab = rr.nonhertz_table(g, None, None, y=[y, y + 2e-4], Fz=Fz, mu_ref=mu)
+    p = rr.wheelset_contact(g, y).right
+    spin = rs * float(p.R[0]) / float(p.r[0]) * (1 - 1e-3)
+    ref = rr.rig_exact(g, y, side="right", Fz=Fz, mu=mu, spin=spin, roller_spin=rs, vy=0.01,
+                       table=ct, n=N_REF)
+    nh = rr.rig_contact(ct, y=y, vy=0.01, spin=spin, roller_spin=rs, mu=mu, Fz_left=Fz,
+                        Fz_right=Fz, patch="nonhertz", nonhertz=tab).right
+    assert np.linalg.norm(nh.force - ref.force) / (mu * ref.N) <= 0.02
+
+
 # ------------------------------------------------------------ elliptic gap
 
 @functools.lru_cache(maxsize=None)

@@ -468,12 +468,16 @@ static int eval_row(const rr_nh_table *tb, const double *row, const rr_motion *w
             return RR_OK;
         }
         /* a secant on the fixed point's residual (at the flange the share
-         * is a large part of Fz and the plain iteration slow), kept below Fz */
+         * is a large part of Fz and the plain iteration slow), kept below
+         * Fz: halfway to Tn, or to Fz where the share reached it (a
+         * saturated flange, mu tan(delta) > 1, whose share at the load
+         * Fz exceeds Fz: the halfway to Tz that stood here stayed at Tz,
+         * S1002 at -6.4 mm with lateral slip found no balance) */
         step = Tn;
         if (pass > 0 && r != r0)
             step = Tz - r * (Tz - T0) / (r - r0);
         if (!(step < s->Fz) || !isfinite(step))
-            step = 0.5 * (Tz + (Tn < s->Fz ? Tn : Tz));
+            step = 0.5 * (Tz + (Tn < s->Fz ? Tn : s->Fz));
         T0 = Tz;
         r0 = r;
         Tz = step;
