@@ -20,6 +20,15 @@ if not any(glob.glob(os.path.join(ROOT, "rollerrig", pattern)) for pattern in _B
 import pytest  # noqa: E402
 
 
+def pytest_configure(config):
+    """The package's own warnings are errors.  Added here, after the path
+    above is settled: as an ini line (pyproject.toml) pytest resolved the
+    category while reading its configuration, before this file ran, and
+    after a plain ``pip install .`` the source folder could not import it:
+    the filter was dropped with a PytestConfigWarning and CI ran without it."""
+    config.addinivalue_line("filterwarnings", "error::rollerrig.RollerRigWarning")
+
+
 @pytest.fixture(scope="session", autouse=True)
 def _fmu_core_cache(tmp_path_factory):
     """One compile of the C core for every FMU the tests build (test_fmu.py,
