@@ -228,8 +228,6 @@ static void grid_problem(const rr_exact_problem *pb, int st, const rr_exact_resu
     }
 }
 
-/* 1 where the start s is one rr_exact_solve_from refuses for pb's grid
- * (n elements), with the status it must give in *want. */
 /* 1 where the elastic displacements (the mean pressure's over an element,
  * u = p dx / G) stand above h's rounding by a million ulps: below, the
  * contact within a row that h leaves flat is decided by h's round-off, and
@@ -257,6 +255,8 @@ static int determined(const rr_exact_problem *pb)
     return u > 1e6 * DBL_EPSILON * hs && u > 1e-140;
 }
 
+/* 1 where the start s is one rr_exact_solve_from refuses for pb's grid
+ * (n elements), with the status it must give in *want. */
 static int start_invalid(const rr_exact_problem *pb, const rr_exact_start *s, int n, int *want)
 {
     int k, positive = 0;

@@ -144,6 +144,18 @@ static double refine(const rr_wheel_roller *p, double y_ws, double z_ws, double 
     return s;
 }
 
+/* The point's place, the wheel's profile coordinate s probed (q): where
+ * it is, its gap and contact angle (the search's and a Newton step's). */
+static void place(const probe *q, double s, rr_contact_point *out)
+{
+    out->y = q->Y;
+    out->z = q->zr;
+    out->s_wheel = s;
+    out->s_roller = q->sr;
+    out->gap = q->gap;
+    out->delta = atan(q->zr1);
+}
+
 /* rr_contact_search on a pair and options already checked (a pose's
  * Newton searches several times; the profiles' check cost a tenth) */
 static int search(const rr_wheel_roller *p, double y_ws, double z_ws, double roll,
@@ -231,18 +243,13 @@ static int search(const rr_wheel_roller *p, double y_ws, double z_ws, double rol
             ysecond = q2.Y;
         }
     }
-    out->y = q.Y;
-    out->z = q.zr;
-    out->s_wheel = s;
-    out->s_roller = q.sr;
-    out->gap = q.gap;
+    place(&q, s, out);
     {
         double zw;
         rr_spline_eval(&p->wheel, s, &zw, 0, 0);
         out->r = p->r0 - zw;
     }
     out->R = p->R0 + q.zr;
-    out->delta = atan(q.zr1);
     /* profile curvatures, convex toward the other body positive */
     k_w = q.zw2 / pow(1.0 + q.zw1 * q.zw1, 1.5);
     k_r = -q.zr2 / pow(1.0 + q.zr1 * q.zr1, 1.5);
@@ -281,7 +288,7 @@ int rr_contact_search(const rr_wheel_roller *p, double y_ws, double z_ws, double
 /* A Newton step's contact point (out from the step before): refined from
  * its last s alone at the new pose (z, roll), without the scan, within a
  * sample spacing of it (the pose moves little from step to step, the
- * minimum with it); out's y, z, s, gap and delta.  RR_ERR_GEOMETRY where
+ * minimum with it); out's place.  RR_ERR_GEOMETRY where
  * it leaves a profile. */
 static int track(const rr_wheel_roller *p, double y_ws, double z, double roll,
                  const rr_search_opts *o, rr_contact_point *out)
@@ -293,12 +300,7 @@ static int track(const rr_wheel_roller *p, double y_ws, double z, double roll,
     s = refine(p, y_ws, z, cos(roll), sin(roll), out->s_wheel, (s1 - s0) / o->nsamples, &q);
     if (isnan(s))
         return RR_ERR_GEOMETRY;
-    out->y = q.Y;
-    out->z = q.zr;
-    out->s_wheel = s;
-    out->s_roller = q.sr;
-    out->gap = q.gap;
-    out->delta = atan(q.zr1);
+    place(&q, s, out);
     return RR_OK;
 }
 

@@ -547,7 +547,6 @@ int main(void)
                          : "normal box: warm from a quarter of the load (the grid's), the cold "
                            "solve's answer");
         }
-
         free(w1);
         free(w2);
         for (k = 0; k < 3; k++)

@@ -248,7 +248,8 @@ int rr_spline_fit(int n, const double *y, const double *z, int end, double *slop
          * to give the spline (values near 1e-166 over intervals of 8e71 m) */
         const double zs = fmax(fabs(z[i]), fabs(z[i + 1]));
         if (underflows(n2, c2[i], h * h, zs) || underflows(n3, c3[i], h * h * h, zs)
-            || underflows(slope[i], slope[i], h, zs) || underflows(slope[i + 1], slope[i + 1], h, zs))
+            || underflows(slope[i], slope[i], h, zs)
+            || underflows(slope[i + 1], slope[i + 1], h, zs))
             c3[i] = NAN;
         /* an interval so long that h^3 overflows: c3 (of the order of
          * z / h^3) rounds to 0 and the coefficients no longer give the
