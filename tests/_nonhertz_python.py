@@ -573,7 +573,7 @@ def rig_exact(geometry, y_ws, *, mu, N=None, Fz=None, side="left", spin=None,
     The load: N [N] along the patch's normal, or Fz [N] the vertical force
     on the wheel (the rig's wheel load, CONTACT's FZ): N is then iterated
     until the contact force's vertical component, N n_z + fy t2_z, is Fz
-    to 1e-7.  mu: Coulomb friction; E [Pa], nu: both bodies.
+    to tol (at least 1e-7).  mu: Coulomb friction; E [Pa], nu: both bodies.
     Creepages: cx, cy, cphi given (at the patch's reference point, in its
     frame), or from the kinematics: spin, roller_spin [rad/s] as for
     rig_contact (vy [m/s], yaw_rate [rad/s]; zero yaw and longitudinal
@@ -688,22 +688,24 @@ def rig_exact(geometry, y_ws, *, mu, N=None, Fz=None, side="left", spin=None,
         # vertical balance: Fz = N n_z + fy t2_z (t1 is horizontal), by the
         # secant method on N on a fixed grid (fy depends on N only weakly: a
         # few solves), then once more on the grid and pose of the load found
-        # (elements of a given size: where the approach moved by over 1 %)
+        # where the approach moved by over 1 %
         N = Fz / np.cos(delta0)
         p, s, k = at(N, None)
         sized = all(float(patch_options.get(d) or 0.0) > 0.0 for d in ("dx", "dy"))
+        cov_loaded = 1.03 if sized else 1.1
         for rebuild in (False, True):
             if rebuild:
-                # rr_wheel_exact.c's REBUILD_TOL: elements of a given size on
-                # a grid built for an approach within 1 % of the one found
-                # are kept (elements from n follow the approach: rebuilt)
-                if sized and abs(s.delta / p.approach - 1.0) <= 0.01:
+                # rr_wheel_exact.c's REBUILD_TOL: a grid built for an
+                # approach within 1 % of the one found is kept (elements
+                # from n: where its cover is the loaded grid's)
+                if ((sized or p.cover == cov_loaded)
+                        and abs(s.delta / p.approach - 1.0) <= 0.01):
                     break
                 p, s, k = at(N, s.delta)
             last = None
             for _ in range(30):
                 r = (Fz - s.fy * p.t2[2]) / p.n[2] - N     # the fixed point's residual
-                if abs(r) <= 1e-7 * Fz:
+                if abs(r) <= max(tol, 1e-7) * Fz:          # rr_wheel_exact.c's FZ_TOL
                     break
                 if last is not None:
                     step = r if last[1] == r else -r * (N - last[0]) / (r - last[1])

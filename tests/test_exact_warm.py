@@ -46,9 +46,9 @@ CASES = [  # pair, y_ws [m], mu, grid: the tread, a two-point zone, the flange r
 def test_rig_exact_is_a_cold_solve_on_its_patch_to_the_tolerance(pair, y_ws, mu, grid):
     e = rr.rig_exact(geometry(pair), y_ws, Fz=6e4, mu=mu, spin=12.4, roller_spin=5.587,
                      **grid)
-    # coarse, loaded, the load's steps, the rebuild (elements of a given size:
-    # only where the approach found moved by over 1 %)
-    assert e.passes >= (3 if "dx" in grid else 4)
+    # coarse, loaded, the load's steps (the rebuild only where the approach
+    # found moved by over 1 %)
+    assert e.passes >= 3
     p, q = e.patch, e.solution
     s = rr.exact_solve(p.h, dx=p.dx, dy=p.dy, x0=p.x0, y0=p.y0, N=e.N, mu=mu,
                        G=E / (2 * (1 + NU)), nu=NU, cx=e.cx, cy=e.cy, cphi=e.cphi)
@@ -59,8 +59,9 @@ def test_rig_exact_is_a_cold_solve_on_its_patch_to_the_tolerance(pair, y_ws, mu,
     assert np.abs(s.pn - q.pn).max() < 1e-5 * s.pmax
     assert max(np.abs(s.px - q.px).max(), np.abs(s.py - q.py).max()) < 1e-5 * mu * s.pmax
     assert np.array_equal(s.contact, q.contact) and np.array_equal(s.slip, q.slip)
-    # and the load it was solved for balances the vertical one (the secant's 1e-7)
-    assert abs(e.force[2] - 6e4) <= 1e-7 * 6e4
+    # and the load it was solved for balances the vertical one (the secant's
+    # tolerance: the solver's, 1e-6)
+    assert abs(e.force[2] - 6e4) <= 1e-6 * 6e4
 
 
 def test_kept_workspaces_give_a_fresh_ones_doubles_on_any_thread():

@@ -22,16 +22,15 @@
  *     approach beyond what the grid covers, is solved again on a grid
  *     sized from the approach found (cover 1.3), at most four times;
  *   - the vertical load Fz: N iterated on that grid until the contact
- *     force's vertical component N n_z + fy t2_z is Fz to 1e-7 (a secant
- *     on the fixed point N = (Fz - fy t2_z)/n_z), then the patch rebuilt
- *     at the pose of the load found and the balance solved again on it;
- *     on a grid of given element sizes (dx, dy) only where the approach
- *     found differs from the one the grid was built for by more than 1 %
- *     (within it the grid is kept: on CONTACT's 72 roller cases at 0.4 mm
- *     that moved the forces by 2.8e-4 mu N at most and their largest
- *     departures from CONTACT's not at all, and saved a third of the
- *     patches and a quarter of the solves; elements from n follow the
- *     approach in size, and the forces with them: always rebuilt).
+ *     force's vertical component N n_z + fy t2_z is Fz to the solver's
+ *     tolerance tol, at least 1e-7 (a secant on the fixed point
+ *     N = (Fz - fy t2_z)/n_z), then, where the approach found differs from
+ *     the one the grid was built for by more than 1 %, the patch rebuilt at
+ *     the pose of the load found and the balance solved again on it (within
+ *     1 % the grid is kept: on CONTACT's 72 roller cases that moved the
+ *     forces by 2.8e-4 mu N at most on 0.4 mm elements, 1.2e-3 on n = 40,
+ *     whose elements follow the approach in size, and their departures from
+ *     CONTACT's not at all, for a third fewer patches and solves).
  * Creepages: given (at the patch's reference point, in its frame), or
  * Kalker's from the rigid motions: the slip of the wheel's material point
  * at P - pen n (CONTACT's Q: pen the pose's interpenetration along n; the
@@ -49,8 +48,8 @@
  * pass's pressure, on elements twice as large, starts the loaded grid worse
  * than the solver's own start: that solve starts cold.)
  * The results are the cold starts' to the solver's tolerance (cold_start
- * gives those, and rebuilds the grid at the load found whatever the
- * approach's change: the doubles before either saving).
+ * gives those, rebuilds the grid at the load found whatever the approach's
+ * change and balances the load to 1e-7: the doubles before the savings).
  *
  * No allocation: the caller's workspace (rr_wheel_exact_workspace_len for
  * the largest grid it allows, zero-filled before its first use, as the

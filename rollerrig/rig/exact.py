@@ -119,7 +119,10 @@ def rig_exact(geometry: RigGeometry, y_ws: float, *, mu: float, N: Optional[floa
     Fz : float, optional
         The vertical force on the wheel [N] (the rig's wheel load,
         CONTACT's FZ): N is then iterated until the contact force's
-        vertical component, N n_z + fy t2_z, is Fz to 1e-7.  Give N or Fz.
+        vertical component, N n_z + fy t2_z, is Fz to the solver's
+        tolerance tol (at least 1e-7), and solved again on a grid built at
+        the pose of the load found where its approach moved by over 1 %.
+        Give N or Fz.
     side : {"left", "right"}, optional
         The wheel.
     spin, roller_spin : float, optional
@@ -202,7 +205,7 @@ def rig_exact(geometry: RigGeometry, y_ws: float, *, mu: float, N: Optional[floa
     >>> g = rr.RigGeometry.measured_pair()
     >>> e = rr.rig_exact(g, 0.0035, Fz=6e4, spin=12.4, roller_spin=5.587, mu=0.5, n=16)
     >>> print(f"N = {e.N:.0f} N, fx = {e.solution.fx:.0f} N")
-    N = 59972 N, fx = -18155 N
+    N = 59972 N, fx = -18156 N
     """
     func = "rig_exact"
     if (N is None) == (Fz is None):
