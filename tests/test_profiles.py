@@ -455,6 +455,15 @@ def test_constructor_errors(y, z, kw, match):
         Profile(y, z, **kw)
 
 
+def test_gaps_beyond_the_doubles_are_the_scale_error_without_a_warning():
+    # y's gaps overflow (3.4e308 m): the scale check's error, and no
+    # RuntimeWarning from the gaps before it (a property test's find)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(RollerRigError, match=r"beyond 2 m"):
+            Profile([-1.7e308, 1.7e308, 1.71e308, 1.72e308], [0, 0, 0, 0], kind="rail")
+
+
 def test_from_points():
     y = np.array([3.0, 2.0, 1.0, 0.0, -1.0])
     p = Profile.from_points(y, y ** 2, kind="rail", units="mm")

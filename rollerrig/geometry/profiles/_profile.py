@@ -130,7 +130,8 @@ class Profile:
             i = int(bad[0])
             raise RollerRigError(f"{func}: non-finite value at index {i}: y = {y[i]!r}, "
                                  f"z = {z[i]!r}")
-        dy = np.diff(y)
+        with np.errstate(over="ignore"):     # gaps beyond 1.8e308 m: _check_scale's
+            dy = np.diff(y)
         close = np.flatnonzero((dy > 0.0) & (dy < MIN_SPACING))
         if close.size:
             i = int(close[0])
