@@ -190,47 +190,64 @@ static double load(const double *p, double e, double *nz)
     return e * sqrt(e) * node(p, RR_NH_Q, k, t);
 }
 
-/* Correction node c of patch p (over mu N) at normalised creepage (x, y):
- * linear in u between 0 (R0), the nodes and 1 (none), periodic in theta. */
-static void residual(const double *p, int c, double x, double y, double r[3])
+/* Where a normalised creepage (x, y) lies on the correction's rings:
+ * radially u = rho / (1 + rho) between the nodes rr_nh_corr_u (below the
+ * first from 0, the centre's value; above the last to 1, none), in angle
+ * between two of RR_NH_TH spokes.  Found once for both correction nodes. */
+typedef struct {
+    int i, j0, j1;          /* ring interval (-1: below the first, RR_NH_U - 1: above the last) */
+    double tu, tj;          /* weights within it */
+} corr_at;
+
+static void corr_locate(double x, double y, corr_at *at)
 {
-    const double *cb = p + RR_NH_CORR_AT(c);
     const double rho = hypot(x, y), u = rho / (1.0 + rho);
-    double th = atan2(y, x), kk, tj, tu, lo[3], hi[3];
-    int j0, j1, i, m;
-#define RING(i, j, m) cb[4 + ((i) * RR_NH_TH + (j)) * 3 + (m)]
+    double th = atan2(y, x), kk;
     if (th < 0.0)
         th += TWO_PI;
     kk = th / (TWO_PI / RR_NH_TH);
-    j0 = (int)floor(kk);
-    tj = kk - j0;
-    j0 %= RR_NH_TH;
-    j1 = (j0 + 1) % RR_NH_TH;
+    at->j0 = (int)floor(kk);
+    at->tj = kk - at->j0;
+    at->j0 %= RR_NH_TH;
+    at->j1 = (at->j0 + 1) % RR_NH_TH;
     if (u <= rr_nh_corr_u[0]) {
-        tu = u / rr_nh_corr_u[0];
-        for (m = 0; m < 3; m++) {
+        at->i = -1;
+        at->tu = u / rr_nh_corr_u[0];
+    } else if (u >= rr_nh_corr_u[RR_NH_U - 1]) {
+        at->i = RR_NH_U - 1;
+        at->tu = (u - rr_nh_corr_u[RR_NH_U - 1]) / (1.0 - rr_nh_corr_u[RR_NH_U - 1]);
+    } else {
+        at->i = 0;
+        while (u > rr_nh_corr_u[at->i + 1])
+            at->i++;
+        at->tu = (u - rr_nh_corr_u[at->i]) / (rr_nh_corr_u[at->i + 1] - rr_nh_corr_u[at->i]);
+    }
+}
+
+/* Correction node c of patch p (over mu N) at a creepage located by at:
+ * linear in u between 0 (R0), the nodes and 1 (none), periodic in theta. */
+static void residual(const double *p, int c, const corr_at *at, double r[3])
+{
+    const double *cb = p + RR_NH_CORR_AT(c);
+    const double tj = at->tj, tu = at->tu;
+    const int i = at->i, j0 = at->j0, j1 = at->j1;
+    double lo[3], hi[3];
+    int m;
+#define RING(i, j, m) cb[4 + ((i) * RR_NH_TH + (j)) * 3 + (m)]
+    for (m = 0; m < 3; m++) {
+        if (i < 0) {
             lo[m] = cb[1 + m];
             hi[m] = (1 - tj) * RING(0, j0, m) + tj * RING(0, j1, m);
-        }
-    } else if (u >= rr_nh_corr_u[RR_NH_U - 1]) {
-        tu = (u - rr_nh_corr_u[RR_NH_U - 1]) / (1.0 - rr_nh_corr_u[RR_NH_U - 1]);
-        for (m = 0; m < 3; m++) {
+        } else if (i == RR_NH_U - 1) {
             lo[m] = (1 - tj) * RING(RR_NH_U - 1, j0, m) + tj * RING(RR_NH_U - 1, j1, m);
             hi[m] = 0.0;
-        }
-    } else {
-        i = 0;
-        while (u > rr_nh_corr_u[i + 1])
-            i++;
-        tu = (u - rr_nh_corr_u[i]) / (rr_nh_corr_u[i + 1] - rr_nh_corr_u[i]);
-        for (m = 0; m < 3; m++) {
+        } else {
             lo[m] = (1 - tj) * RING(i, j0, m) + tj * RING(i, j1, m);
             hi[m] = (1 - tj) * RING(i + 1, j0, m) + tj * RING(i + 1, j1, m);
         }
+        r[m] = (1 - tu) * lo[m] + tu * hi[m];
     }
 #undef RING
-    for (m = 0; m < 3; m++)
-        r[m] = (1 - tu) * lo[m] + tu * hi[m];
 }
 
 /* The correction at lowering e: linear in e between its two nodes, held
@@ -239,18 +256,20 @@ static void correction(const double *p, double e, double x, double y, double r[3
 {
     const double e0 = p[RR_NH_CORR_AT(0)], e1 = p[RR_NH_CORR_AT(1)];
     double r1[3], t;
+    corr_at at;
     int m;
+    corr_locate(x, y, &at);
     if (e <= e0) {
-        residual(p, 0, x, y, r);
+        residual(p, 0, &at, r);
         return;
     }
     if (e >= e1) {
-        residual(p, 1, x, y, r);
+        residual(p, 1, &at, r);
         return;
     }
     t = (e - e0) / (e1 - e0);
-    residual(p, 0, x, y, r);
-    residual(p, 1, x, y, r1);
+    residual(p, 0, &at, r);
+    residual(p, 1, &at, r1);
     for (m = 0; m < 3; m++)
         r[m] = (1 - t) * r[m] + t * r1[m];
 }
@@ -380,7 +399,7 @@ static double vertical_normal(const double *row, double dz)
  * bracket.  RR_ERR_RANGE if it does not settle. */
 static int solve_dz(const double *row, double target, double *dz_io)
 {
-    const double tt = cbrt(target) * cbrt(target);
+    const double ct = cbrt(target), tt = ct * ct;
     double dz = *dz_io, d0 = 0.0, f0 = 0.0, lo = 0.0, hi = 0.0, S, f, step;
     int it, have = 0, hlo = 0, hhi = 0;
     for (it = 0; it < DZ_ITER; it++) {
@@ -393,10 +412,14 @@ static int solve_dz(const double *row, double target, double *dz_io)
             lo = dz, hlo = 1;
         if (S > target && (!hhi || dz < hi))
             hi = dz, hhi = 1;
-        f = cbrt(S) * cbrt(S) - tt;
-        step = dz * pow(target / (S > 1e-3 * target ? S : 1e-3 * target), 2.0 / 3.0);
+        {
+            const double cs = cbrt(S);
+            f = cs * cs - tt;
+        }
         if (have && f != f0 && dz != d0)
             step = dz - f * (dz - d0) / (f - f0);
+        else
+            step = dz * pow(target / (S > 1e-3 * target ? S : 1e-3 * target), 2.0 / 3.0);
         if (hlo && hhi && !(lo < step && step < hi))
             step = 0.5 * (lo + hi);
         else if (!(isfinite(step) && step > 0.0))
