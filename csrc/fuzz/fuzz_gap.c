@@ -260,7 +260,10 @@ static void check_wheel(fz_in *in, rr_wheel_roller *p)
             if (!(fabs(r.force[k] - (r.sol.fx * r.patch.t1[k] + r.sol.fy * r.patch.t2[k]
                                      + r.sol.fn * r.patch.n[k])) <= 1e-9 * (fabs(r.sol.fn) + 1.0)))
                 fz_fail("%s: force[%d] is not fx t1 + fy t2 + fn n", fn, k);
-        if (pb.Fz > 0.0 && st == RR_OK && !(fabs(r.force[2] - pb.Fz) <= 1e-5 * pb.Fz))
+        /* the balance is held to the solver's tolerance, at least 1e-7
+         * (rr_wheel_exact.c's FZ_TOL; 1e-7 on cold starts) */
+        if (pb.Fz > 0.0 && st == RR_OK
+            && !(fabs(r.force[2] - pb.Fz) <= 1.001 * fmax(pb.tol, 1e-7) * pb.Fz))
             fz_fail("%s: OK with vertical force %.17g for Fz %.17g", fn, r.force[2], pb.Fz);
     }
     fz_guard_ok(fn, work, wl * sizeof(double), "the workspace");
