@@ -707,6 +707,9 @@ def rig_exact(geometry, y_ws, *, mu, N=None, Fz=None, side="left", spin=None,
                 r = (Fz - s.fy * p.t2[2]) / p.n[2] - N     # the fixed point's residual
                 if abs(r) <= max(tol, 1e-7) * Fz:          # rr_wheel_exact.c's FZ_TOL
                     break
+                if (not rebuild and abs(r) <= 1e-3 * Fz    # EARLY_TOL: a grid to be rebuilt
+                        and abs(s.delta / p.approach - 1.0) > 0.01):
+                    break
                 if last is not None:
                     step = r if last[1] == r else -r * (N - last[0]) / (r - last[1])
                 else:

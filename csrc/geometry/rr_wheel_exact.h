@@ -26,7 +26,8 @@
  *     tolerance tol, at least 1e-7 (a secant on the fixed point
  *     N = (Fz - fy t2_z)/n_z), then, where the approach found differs from
  *     the one the grid was built for by more than 1 %, the patch rebuilt at
- *     the pose of the load found and the balance solved again on it (within
+ *     the pose of the load found and the balance solved again on it (such
+ *     a grid is left once its balance is within 1e-3 of Fz; within
  *     1 % the grid is kept: on CONTACT's 72 roller cases that moved the
  *     forces by 2.8e-4 mu N at most on 0.4 mm elements, 1.2e-3 on n = 40,
  *     whose elements follow the approach in size, and their departures from
