@@ -430,6 +430,13 @@ static int solve_dz(const double *row, double target, double *dz_io)
     return RR_ERR_RANGE;
 }
 
+/* The vertical part of patch p's normal load at its load node k. */
+static double node_vertical(const double *p, int k)
+{
+    const double e = p[RR_NH_NODE(RR_NH_E, k)];
+    return e * sqrt(e) * p[RR_NH_NODE(RR_NH_Q, k)] * cos(p[RR_NH_NODE(RR_NH_DELTA, k)]);
+}
+
 /* One row at vertical load Fz: its patches (out->patch, npatch) and sums;
  * *tz_io the creep forces' vertical share to start from (the other row's,
  * 0 for the first: neighbouring rows share most of it, so the second row
@@ -447,17 +454,18 @@ static int eval_row(const rr_nh_table *tb, const double *row, const rr_motion *w
     for (j = 1; j < np; j++)
         if (row[RR_NH_PATCH(j)] < p0[0])
             p0 = row + RR_NH_PATCH(j);
+    a1 = node_vertical(p0, 0);
     for (k = 0; k < RR_NH_NODES - 2; k++) {
-        const double e = p0[RR_NH_NODE(RR_NH_E, k + 1)];
-        if (e * sqrt(e) * p0[RR_NH_NODE(RR_NH_Q, k + 1)] * cos(p0[RR_NH_NODE(RR_NH_DELTA, k + 1)])
-            >= s->Fz)
+        a0 = a1;
+        if ((a1 = node_vertical(p0, k + 1)) >= s->Fz)
             break;
+    }
+    if (k == RR_NH_NODES - 2) {         /* beyond the nodes: the last interval */
+        a0 = a1;
+        a1 = node_vertical(p0, k + 1);
     }
     {
         const double e0 = p0[RR_NH_NODE(RR_NH_E, k)], e1 = p0[RR_NH_NODE(RR_NH_E, k + 1)];
-        a0 = e0 * sqrt(e0) * p0[RR_NH_NODE(RR_NH_Q, k)] * cos(p0[RR_NH_NODE(RR_NH_DELTA, k)]);
-        a1 = e1 * sqrt(e1) * p0[RR_NH_NODE(RR_NH_Q, k + 1)]
-             * cos(p0[RR_NH_NODE(RR_NH_DELTA, k + 1)]);
         t = (s->Fz - a0) / (a1 - a0);
         dz = p0[0] + e0 + t * (e1 - e0);
         if (!(dz > p0[0]))
