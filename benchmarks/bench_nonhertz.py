@@ -28,13 +28,15 @@ Times are medians of R repeats (default 1) per case, then the median and
 the largest over the cases; the machine is shared, so they move by 10-30 %
 from run to run.
 
-    python benchmarks/bench_nonhertz.py --chain [--repeat R] [--every K] [--grid G]
+    python benchmarks/bench_nonhertz.py --chain [--repeat R] [--every K] [--grid G] [--worst W]
 
 times the full chain alone, with whichever rollerrig the interpreter
 imports, and the C call's part of it (rr_wheel_exact through the
 binding): run it with another checkout's environment for its "before"
 (main's build, then this one's, one after the other), one row per grid
-with the solves per case.  The cases run in turn, R sweeps of them, as a
+with the solves per case (--worst W: the W slowest cases of each grid
+after its row, with their solves, patches and grid sizes: what sets the
+p95).  The cases run in turn, R sweeps of them, as a
 table's rows or the rig's steps would: a case's grids often have the last
 one's sizes, whose kernel spectra the core keeps.  The instruction count
 of the C core (the measure on a shared machine):
@@ -100,13 +102,14 @@ class _CoreTimer:
             self.spent += time.perf_counter() - t0
 
 
-def chain_only(geo, tables, cs, repeat, grids="both"):
+def chain_only(geo, tables, cs, repeat, grids="both", worst=0):
     """The full chain of the rollerrig imported, on both grids: ms per case
     (median, p95, max over the cases of each case's median of R sweeps over
     the cases in turn: each case after the one before, whose grids often
     have its sizes and so its kernel spectra),
     the C call's share of it (rr_wheel_exact through the binding, the same
-    statistics), and the solves per case (median, max)."""
+    statistics), and the solves per case (median, max); with worst, the
+    slowest cases after each grid's row (what sets its p95)."""
     import rollerrig.rig.exact as exact
     print(f"rollerrig from {os.path.dirname(rr.__file__)}")
     print("| full chain | ms per case, median | p95 | max | the C call: median | p95 | max "
@@ -131,6 +134,7 @@ def chain_only(geo, tables, cs, repeat, grids="both"):
             whole = np.empty((repeat, len(cs)))
             core = np.empty((repeat, len(cs)))
             p = np.empty(len(cs), dtype=int)
+            shape = {}
             for r in range(repeat):
                 for i, c in enumerate(cs):
                     timer.spent = 0.0
@@ -139,10 +143,15 @@ def chain_only(geo, tables, cs, repeat, grids="both"):
                     whole[r, i] = time.perf_counter() - t0
                     core[r, i] = timer.spent
                     p[i] = out.passes
+                    shape[i] = (out.builds, out.patch.h.shape)
             t, tc = 1e3 * np.median(whole, axis=0), 1e3 * np.median(core, axis=0)
             print(f"| {name} | {np.median(t):.2f} | {np.percentile(t, 95):.2f} | {t.max():.2f} "
                   f"| {np.median(tc):.2f} | {np.percentile(tc, 95):.2f} | {tc.max():.2f} "
                   f"| {np.median(p):g} | {p.max()} |")
+            for i in np.argsort(t)[::-1][:worst]:
+                c = cs[i]
+                print(f"    {c['key']}: {t[i]:.2f} ms (C {tc[i]:.2f}), {p[i]} solves, "
+                      f"{shape[i][0]} patches, grid {shape[i][1][1]} x {shape[i][1][0]}")
     finally:
         exact._core = timer._core
 
@@ -156,6 +165,8 @@ def main():
                     help="every k-th of the 72 cases (6: the 12 of the callgrind profile)")
     ap.add_argument("--grid", choices=("both", "0.4", "n40"), default="both",
                     help="--chain: the grids run")
+    ap.add_argument("--worst", type=int, default=0,
+                    help="--chain: list the K slowest cases of each grid")
     args = ap.parse_args()
     repeat = args.repeat
     geo = {"miniprof": rr.RigGeometry.measured_pair(),
@@ -163,7 +174,7 @@ def main():
     tables = {k: rr.contact_table(g, -0.0065, 0.0065, 261) for k, g in geo.items()}
     cs = cases()[::args.every]
     if args.chain:
-        chain_only(geo, tables, cs, repeat, args.grid)
+        chain_only(geo, tables, cs, repeat, args.grid, args.worst)
         return
 
     def mk(m):
