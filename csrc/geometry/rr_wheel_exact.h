@@ -97,10 +97,10 @@ typedef struct {
     const rr_interrupt *interrupt;
     int cold_start;               /* 0: every solve after the first starts from the last
                                      solution (rr_exact_solve_from; mapped onto a new
-                                     grid; a grid of given dx, dy kept within 1 % of
-                                     the approach found); 1: each from the solver's
-                                     own starts, the grid always rebuilt (the doubles
-                                     before) */
+                                     grid; a grid kept within 1 % of the approach
+                                     found, the balance to tol); 1: each from the
+                                     solver's own starts, the grid always rebuilt, the
+                                     balance to 1e-7 (the doubles before) */
 } rr_wheel_exact_problem;
 
 /* rollerrig.rig_exact's defaults: N = Fz = 0 (the caller's), E 2.1e11,

@@ -437,8 +437,8 @@ static void test_wheel_exact(void)
     /* The rig's cone on its crowned roller, where the patch is an ellipse:
      * the exact solution's area and approach are Hertz's to the grid's
      * discretisation (30 elements across: 2 % and 0.5 %, as test_exact's
-     * ellipses), the vertical balance holds to 1e-7, a grid beyond the
-     * workspace is refused with the workspace it needs. */
+     * ellipses), the vertical balance holds to the solver's tolerance, a
+     * grid beyond the workspace is refused with the workspace it needs. */
     rr_wheel_roller pair[2];
     rr_search_opts so;
     rr_wheel_exact_problem pb;
