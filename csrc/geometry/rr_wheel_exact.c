@@ -487,6 +487,13 @@ static int worse(int a, int b)
     return a < 0 || b < 0 ? (a < b ? a : b) : (a > b ? a : b);
 }
 
+/* Whether the approach found moved beyond REBUILD_TOL from the one the
+ * grid was built for (the grid is then rebuilt at the load found). */
+static int approach_moved(const rr_wheel_exact_result *res)
+{
+    return !(fabs(res->sol.delta / res->approach - 1.0) <= REBUILD_TOL);
+}
+
 /* The cover of a loaded grid built from an approach found. */
 static double loaded_cover(const rr_wheel_exact_problem *pb)
 {
@@ -664,12 +671,12 @@ int rr_wheel_exact(const rr_wheel_exact_problem *pb, double *work, size_t work_l
         /* vertical balance: Fz = N n_z + fy t2_z (t1 is horizontal), by the
          * secant method on N on a fixed grid, then once more on the grid
          * and pose of the load found */
+        const double ftol = (pb->cold_start ? FZ_TOL : fmax(pb->tol, FZ_TOL)) * pb->Fz;
         N = pb->Fz / cos(c.delta0);
         c.loose = !pb->cold_start;
         st = at(&c, N, 0.0, p, &warn);
         for (k = 0; k < 2 && st >= 0; k++) {
             double lastN = NAN, lastr = NAN;
-            const double ftol = (pb->cold_start ? FZ_TOL : fmax(pb->tol, FZ_TOL)) * pb->Fz;
             int edge;
             if (k == 1) {
                 /* a grid built for an approach within REBUILD_TOL of the one
@@ -680,7 +687,7 @@ int rr_wheel_exact(const rr_wheel_exact_problem *pb, double *work, size_t work_l
                  * (the doubles before) */
                 const int given = pb->gap.dx > 0.0 && pb->gap.dy > 0.0;
                 if (!pb->cold_start && (given || res->cover == loaded_cover(pb))
-                    && fabs(res->sol.delta / res->approach - 1.0) <= REBUILD_TOL)
+                    && !approach_moved(res))
                     break;
                 if ((st = at(&c, N, res->sol.delta, p, &warn)) < 0)
                     break;
@@ -691,7 +698,7 @@ int rr_wheel_exact(const rr_wheel_exact_problem *pb, double *work, size_t work_l
                 if (fabs(r) <= ftol && !c.loose)
                     break;
                 if (k == 0 && !c.loose && !pb->cold_start && fabs(r) <= EARLY_TOL * pb->Fz
-                    && fabs(res->sol.delta / res->approach - 1.0) > REBUILD_TOL)
+                    && approach_moved(res))
                     break;              /* the grid is rebuilt: no need to settle on it */
                 if (fabs(r) <= ftol) {
                     step = 0.0;           /* balanced on a loose solve: solved again */
