@@ -51,6 +51,13 @@ def _case(i):
     return {k: v[i] for k, v in C.items()}
 
 
+def _chain_kw(c, grid):
+    """rig_exact's arguments for CONTACT's case c on a grid (its own 0.4 mm
+    elements, or {} for the default n = 40)."""
+    return dict(Fz=c["FZ"], mu=c["mu"], spin=c["spin"], roller_spin=c["roller_spin"],
+                E=2 * c["G"] * (1 + c["nu"]), nu=c["nu"], table=table(c["pair"]), **grid)
+
+
 def _same_grid(a, b, rel=1e-12):
     assert a.h.shape == b.h.shape
     for k in ("dx", "dy", "x0", "y0"):
@@ -116,8 +123,7 @@ def test_rig_exact_is_the_python_construction():
     for i in range(0, C["key"].size, 6):
         c = _case(i)
         for grid in (dict(dx=c["dx"], dy=c["ds"]), {}):
-            kw = dict(Fz=c["FZ"], mu=c["mu"], spin=c["spin"], roller_spin=c["roller_spin"],
-                      E=2 * c["G"] * (1 + c["nu"]), nu=c["nu"], table=table(c["pair"]), **grid)
+            kw = _chain_kw(c, grid)
             a = rr.rig_exact(geometry(c["pair"]), c["y_ws"], **kw)
             b = py.rig_exact(geometry(c["pair"]), c["y_ws"], **kw)
             # the secant may take one step more or fewer where its residual
@@ -152,10 +158,7 @@ def test_rig_exact_rebuilds_its_grid_only_where_the_approach_moved():
     for i, builds in ((0, 2), (36, 2), (69, 3)):
         c = _case(i)
         for grid in (dict(dx=c["dx"], dy=c["ds"]), {}):
-            e = rr.rig_exact(geometry(c["pair"]), c["y_ws"], Fz=c["FZ"], mu=c["mu"],
-                             spin=c["spin"], roller_spin=c["roller_spin"],
-                             E=2 * c["G"] * (1 + c["nu"]), nu=c["nu"],
-                             table=table(c["pair"]), **grid)
+            e = rr.rig_exact(geometry(c["pair"]), c["y_ws"], **_chain_kw(c, grid))
             assert e.builds == builds, (i, grid, e.builds)
             moved = abs(e.patch.approach / e.solution.delta - 1)
             assert moved <= (0.01 if builds == 2 else 1e-3), (i, grid, moved)
