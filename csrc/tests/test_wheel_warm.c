@@ -142,8 +142,8 @@ int main(void)
     CHECK(rw.patch.grid.mx == rc.patch.grid.mx && rw.patch.grid.my == rc.patch.grid.my,
           "warm: the same final grid");
     /* the load: each within the balance's 1e-7 of Fz (tol 1e-9 here: the
-     * balance's least, FZ_TOL), by different secant
-     * paths (warm: a first step with fy's slope, cold: the slope 0) */
+     * balance's least, FZ_TOL), by different secant paths (warm: a first
+     * step with fy's slope, cold: the slope 0) */
     CHECK_CLOSE(rw.N, rc.N, 0.0, 2e-7, "warm: the load");
     CHECK_CLOSE(rw.sol.fx, rc.sol.fx, 1e-7 * muN, 0.0, "warm: fx the cold one's");
     CHECK_CLOSE(rw.sol.fy, rc.sol.fy, 1e-7 * muN, 0.0, "warm: fy the cold one's");
