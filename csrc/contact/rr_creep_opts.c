@@ -1,5 +1,6 @@
 /* rr_creep_opts.c - option checks driven by a method's descriptor, and
  * what every creep-force method starts with. */
+#include <float.h>
 #include <math.h>
 #include <string.h>
 #include "util/rr_common.h"
@@ -90,12 +91,11 @@ int rr_creep_ellipse_check(const rr_contact_problem *p)
     return p && p->patch != RR_PATCH_ELLIPSE ? RR_ERR_PATCH : rr_contact_problem_check(p, NULL);
 }
 
-int rr_creep_prepare(const rr_contact_problem *p, rr_kalker_coeffs *k)
+/* rr_creep_prepare's checks of the problem, p not NULL */
+static int prepare_checks(const rr_contact_problem *p)
 {
     int st;
 
-    if (!k || !p)
-        return RR_ERR_NULL;
     if (p->patch != RR_PATCH_ELLIPSE)
         return RR_ERR_PATCH;
     if ((st = rr_contact_problem_check(p, NULL)) < 0)
@@ -106,5 +106,33 @@ int rr_creep_prepare(const rr_contact_problem *p, rr_kalker_coeffs *k)
      * mu0 N rounds the saturated force above it */
     if (!isnormal(p->friction.mu0 * p->N))
         return RR_ERR_RANGE;
+    return RR_OK;
+}
+
+int rr_creep_prepare(const rr_contact_problem *p, rr_kalker_coeffs *k)
+{
+    int st;
+
+    if (!k || !p)
+        return RR_ERR_NULL;
+    if ((st = prepare_checks(p)) < 0)
+        return st;
     return rr_creep_kalker(p, k);
+}
+
+int rr_creep_prepare_given(const rr_contact_problem *p, const rr_kalker_coeffs *given,
+                           rr_kalker_coeffs *k)
+{
+    int st;
+
+    if (!k || !p || !given)
+        return RR_ERR_NULL;
+    if ((st = prepare_checks(p)) < 0)
+        return st;
+    if (!(given->c11 > 0.0 && given->c22 > 0.0 && given->c23 > 0.0 && given->c33 > 0.0
+          && given->c11 <= DBL_MAX && given->c22 <= DBL_MAX && given->c23 <= DBL_MAX
+          && given->c33 <= DBL_MAX))
+        return RR_ERR_PARAM;
+    *k = *given;
+    return RR_OK;
 }

@@ -167,6 +167,13 @@ int rr_method_check(const rr_method_desc *d, const rr_creep_opts *o, int *bad);
  */
 int rr_creep_prepare(const rr_contact_problem *p, rr_kalker_coeffs *k);
 
+/* rr_creep_prepare with Kalker's coefficients given (a caller that has
+ * them for the same a/b and nu, to rounding): its checks, then *k =
+ * *given; RR_ERR_PARAM where a given coefficient is not finite and
+ * positive. */
+int rr_creep_prepare_given(const rr_contact_problem *p, const rr_kalker_coeffs *given,
+                           rr_kalker_coeffs *k);
+
 /* Kalker's coefficients of a checked ellipse problem; RR_ERR_RANGE (NaN
  * coefficients) where a/b is not a normal double (semi-axes some 300
  * orders of magnitude apart). */

@@ -198,7 +198,7 @@ static int outside(const rr_exact_table *t, const rr_contact_problem *c, double 
 
 /* the forces of a checked table */
 static int forces(const rr_exact_table *t, const rr_contact_problem *c, int simd,
-                  rr_forces *out)
+                  const rr_kalker_coeffs *given, rr_forces *out)
 {
     const rr_friction *fr;
     rr_kalker_coeffs k;
@@ -207,7 +207,7 @@ static int forces(const rr_exact_table *t, const rr_contact_problem *c, int simd
     int e = 0;
     int st;
 
-    st = rr_creep_prepare(c, &k);
+    st = given ? rr_creep_prepare_given(c, given, &k) : rr_creep_prepare(c, &k);
     if (st == RR_OK) {
         aob = c->a / c->b;
         q[0] = log(aob);
@@ -301,30 +301,38 @@ static int forces(const rr_exact_table *t, const rr_contact_problem *c, int simd
     return rr_forces_checked(RR_OK, out);
 }
 
-/* the checked entries: simd 0 takes the baseline build of the sums */
+/* the checked entries: simd 0 takes the baseline build of the sums; the
+ * built-in table is not checked again at each call (it is constant data,
+ * checked by csrc/tests/test_exact_table.c) */
 static int checked(const rr_exact_table *t, const rr_contact_problem *p, int simd,
-                   rr_forces *out)
+                   const rr_kalker_coeffs *given, rr_forces *out)
 {
     int st;
     if (!out)
         return RR_ERR_NULL;
-    if ((st = rr_exact_table_check(t)) != RR_OK) {
+    if (t != &rr_exact_table_builtin && (st = rr_exact_table_check(t)) != RR_OK) {
         rr_forces_nan(out);
         return st;
     }
-    return forces(t, p, simd, out);
+    return forces(t, p, simd, given, out);
 }
 
 int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_problem *p,
                           rr_forces *out)
 {
-    return checked(t, p, 1, out);
+    return checked(t, p, 1, NULL, out);
+}
+
+int rr_exact_table_forces_kalker(const rr_exact_table *t, const rr_contact_problem *p,
+                                 const rr_kalker_coeffs *k, rr_forces *out)
+{
+    return checked(t, p, 1, k, out);
 }
 
 int rr_exact_table_forces_baseline(const rr_exact_table *t, const rr_contact_problem *p,
                                    rr_forces *out)
 {
-    return checked(t, p, 0, out);
+    return checked(t, p, 0, NULL, out);
 }
 
 /* ---- the method ---------------------------------------------------------------- */
@@ -341,7 +349,7 @@ static int table_forces(const rr_contact_problem *p, const rr_creep_opts *o, dou
         return RR_ERR_NULL;
     }
     /* the built-in table is checked by csrc/tests/test_exact_table.c */
-    return forces(&rr_exact_table_builtin, p, 1, out);
+    return forces(&rr_exact_table_builtin, p, 1, NULL, out);
 }
 
 /* outside the table: nu or a/b (the problem valid) */

@@ -21,6 +21,7 @@
 #define RR_EXACT_TABLE_H
 
 #include "contact/rr_contact.h"
+#include "contact/rr_kalker.h"
 
 typedef struct {
     int n[4];             /* nodes along log(a/b), alpha, theta, u; each >= 4 */
@@ -50,6 +51,13 @@ int rr_exact_table_check(const rr_exact_table *t);
  */
 int rr_exact_table_forces(const rr_exact_table *t, const rr_contact_problem *p,
                           rr_forces *out);
+
+/* rr_exact_table_forces with Kalker's coefficients of p's ellipse given
+ * (k NULL: computed, as there), for a caller that has them already for
+ * the same a/b and nu to rounding (the non-Hertzian patch calibrates its
+ * ellipse by them): rr_creep_prepare_given's checks and status. */
+int rr_exact_table_forces_kalker(const rr_exact_table *t, const rr_contact_problem *p,
+                                 const rr_kalker_coeffs *k, rr_forces *out);
 
 /* Not API: rr_exact_table_forces with the interpolation's sums in the
  * baseline build (on x86-64 with GCC or clang rr_exact_table_forces takes

@@ -9,7 +9,8 @@
  * outside the table or nu is not its own); NaN forces on error, finite ones
  * on success with |(fx, fy)| <= mu0 N; on the built-in table, reversing
  * every creepage reverses the forces bit for bit and a creepage-free case
- * has no force.
+ * has no force; Kalker's coefficients of the case given
+ * (rr_exact_table_forces_kalker) give the same status and doubles.
  */
 #include "fuzz.h"
 
@@ -51,6 +52,21 @@ static void check(const rr_exact_table *t, const rr_contact_problem *c, int buil
     memset(&f, 0x55, sizeof f);
     st = rr_exact_table_forces(t, c, &f);
     fz_status(fn, st);
+    {
+        /* Kalker's coefficients of the same a/b and nu given: the same */
+        rr_kalker_coeffs k;
+        rr_forces g;
+        int sg;
+        if (isnormal(c->a / c->b) && rr_kalker(c->a / c->b, c->nu, &k) == RR_OK) {
+            memset(&g, 0x55, sizeof g);
+            sg = rr_exact_table_forces_kalker(t, c, &k, &g);
+            if (sg != st || (st >= 0 && memcmp(&f, &g, sizeof f) != 0)
+                || (st < 0 && !(isnan(g.fx) && isnan(g.fy) && isnan(g.mz))))
+                fz_fail("rr_exact_table_forces_kalker: status %d (%.17g, %.17g, %.17g) against "
+                        "%s's %d (%.17g, %.17g, %.17g)", sg, g.fx, g.fy, g.mz, fn, st, f.fx,
+                        f.fy, f.mz);
+        }
+    }
     if (table_invalid(t) && st != RR_ERR_PARAM)
         fz_fail("%s: a bad table gave status %d, not RR_ERR_PARAM", fn, st);
     if (st < 0) {

@@ -233,20 +233,29 @@ static void test_builtin(void)
     const rr_exact_table *t = &rr_exact_table_builtin;
     const int m = rr_method_find("exact_table");
     rr_creep_opts o;
-    int i, same = 1, same_isa = 1, bad = 0, bound = 1;
+    int i, same = 1, same_isa = 1, same_given = 1, bad = 0, bound = 1;
     CHECK_STATUS(rr_exact_table_check(t), RR_OK, "the built-in table passes its check");
     CHECK(m >= 0 && rr_creep_opts_default(&o, m) == RR_OK, "method exact_table");
     for (i = 0; i < 20000; i++) {
         rr_contact_problem c = {0};    /* an ellipse problem */
         rr_friction fr;
-        rr_forces f1, f2, f3;
-        int s1, s2, s3;
+        rr_forces f1, f2, f3, f4, f5;
+        rr_kalker_coeffs kc;
+        int s1, s2, s3, s4, s5;
         random_case(&c, &fr);
         s1 = rr_exact_table_forces(t, with_law(&c, &fr), &f1);
         s2 = rr_creep_forces(with_law(&c, &fr), &o, &f2);
         s3 = rr_exact_table_forces_baseline(t, with_law(&c, &fr), &f3);
         same &= s1 == s2 && memcmp(&f1, &f2, sizeof f1) == 0;
         same_isa &= s1 == s3 && memcmp(&f1, &f3, sizeof f1) == 0;
+        /* Kalker's coefficients given (those of the same a/b and nu), or
+         * NULL: the doubles computed */
+        if (rr_kalker(c.a / c.b, c.nu, &kc) == RR_OK) {
+            s4 = rr_exact_table_forces_kalker(t, with_law(&c, &fr), &kc, &f4);
+            s5 = rr_exact_table_forces_kalker(t, with_law(&c, &fr), NULL, &f5);
+            same_given &= s1 == s4 && memcmp(&f1, &f4, sizeof f1) == 0 && s1 == s5
+                          && memcmp(&f1, &f5, sizeof f1) == 0;
+        }
         bad += s1 != RR_OK;
         /* to rounding: the clipped forces times mu N */
         bound &= hypot(f1.fx, f1.fy)
@@ -254,6 +263,7 @@ static void test_builtin(void)
     }
     CHECK(same, "the method (no table check) gives rr_exact_table_forces's doubles");
     CHECK(same_isa, "the AVX2 build of the sums gives the baseline's doubles");
+    CHECK(same_given, "Kalker's coefficients given (or NULL) give rr_exact_table_forces's doubles");
     CHECK(bad == 0, "every random case inside the table is looked up");
     CHECK(bound, "|(fx, fy)| <= mu N");
     {
@@ -276,6 +286,30 @@ static void test_builtin(void)
         CHECK_STATUS(rr_exact_table_forces(t, &c, NULL), RR_ERR_NULL, "out NULL");
         CHECK_STATUS(rr_exact_table_forces(NULL, &c, &f), RR_ERR_NULL, "table NULL");
         CHECK_STATUS(rr_creep_forces(&c, &o, NULL), RR_ERR_NULL, "method: out NULL");
+    }
+    {
+        /* coefficients a caller can get wrong: refused, NaN forces */
+        const rr_contact_problem c = {.a = 6e-3, .b = 4e-3, .N = 5e4, .G = G_MOD, .nu = NU,
+                                      .cx = 1e-3, .speed = 1.0, .friction = {0.3, 1.0, 0.0}};
+        const double bad_values[] = {0.0, -1.0, NAN, INFINITY};
+        rr_kalker_coeffs kc, k;
+        rr_forces f;
+        int j, m;
+        CHECK_STATUS(rr_kalker(c.a / c.b, c.nu, &kc), RR_OK, "Kalker's coefficients");
+        for (j = 0; j < 4; j++)
+            for (m = 0; m < 4; m++) {
+                double *v[4];
+                k = kc;
+                v[0] = &k.c11, v[1] = &k.c22, v[2] = &k.c23, v[3] = &k.c33;
+                *v[m] = bad_values[j];
+                f.fx = 0.0;
+                CHECK_STATUS(rr_exact_table_forces_kalker(t, &c, &k, &f), RR_ERR_PARAM,
+                             "a coefficient not finite and positive");
+                CHECK(isnan(f.fx) && isnan(f.fy) && isnan(f.mz), "refused: NaN forces");
+            }
+        CHECK_STATUS(rr_exact_table_forces_kalker(t, &c, &kc, NULL), RR_ERR_NULL, "out NULL");
+        CHECK_STATUS(rr_exact_table_forces_kalker(t, NULL, &kc, &f), RR_ERR_NULL, "problem NULL");
+        CHECK(isnan(f.fx), "problem NULL: NaN forces");
     }
 }
 
