@@ -378,8 +378,11 @@ static int patch_forces(const rr_nh_table *tb, const double *p, double dz, const
     }
     out->a = cp.a;
     out->b = cp.b;
-    out->area = node(p, RR_NH_AREA, kn, t) * cbrt(N * N);
-    out->pmax = node(p, RR_NH_PMAX, kn, t) * cbrt(N);
+    {
+        const double cn = cbrt(N);
+        out->area = node(p, RR_NH_AREA, kn, t) * (cn * cn);
+        out->pmax = node(p, RR_NH_PMAX, kn, t) * cn;
+    }
     *vert = out->force[2];
     return RR_OK;
 }
@@ -400,13 +403,12 @@ static double vertical_normal(const double *row, double dz)
 }
 
 /* dz with vertical_normal(dz) = target: a secant on S^(2/3) (nearly
- * linear in dz), its first step by slope0 (d S^(2/3) / d dz from the
- * nodes; not positive: Hertz's law from dz = 0), bisection once bracketed
- * and the secant leaves the bracket.  RR_ERR_RANGE if it does not
- * settle. */
-static int solve_dz(const double *row, double target, double slope0, double *dz_io)
+ * linear in dz; tt = target^(2/3)), its first step by slope0 (d S^(2/3) /
+ * d dz from the nodes; not positive: Hertz's law from dz = 0), bisection
+ * once bracketed and the secant leaves the bracket.  RR_ERR_RANGE if it
+ * does not settle. */
+static int solve_dz(const double *row, double target, double tt, double slope0, double *dz_io)
 {
-    const double ct = cbrt(target), tt = ct * ct;
     double dz = *dz_io, d0 = 0.0, f0 = 0.0, lo = 0.0, hi = 0.0, S, f, step;
     int it, have = 0, hlo = 0, hhi = 0;
     for (it = 0; it < DZ_ITER; it++) {
@@ -458,7 +460,7 @@ static int eval_row(const rr_nh_table *tb, const double *row, const rr_motion *w
     const double *p0 = row + RR_NH_PATCH(0);
     double Tz = *tz_io < 0.5 * s->Fz ? *tz_io : 0.0;   /* a seed near Fz: from 0 */
     const double F0 = s->Fz - Tz;       /* the normal loads' vertical sum sought first */
-    double T0 = 0.0, r0 = 0.0, r, step, dz, t, a0, a1, vert, total, slope0 = NAN;
+    double T0 = 0.0, r0 = 0.0, r, step, dz, t, a0, a1, cF, vert, total, slope0 = NAN;
     int j, k, st, pass;
     /* a start: the shallowest-gap patch's nodes, N cos(delta) = F0, taken
      * between two nodes in (N cos delta)^(2/3), nearly linear in the
@@ -479,7 +481,7 @@ static int eval_row(const rr_nh_table *tb, const double *row, const rr_motion *w
     }
     {
         const double e0 = p0[RR_NH_NODE(RR_NH_E, k)], e1 = p0[RR_NH_NODE(RR_NH_E, k + 1)];
-        double c0, c1, cF;
+        double c0, c1;
         a0 = node_vertical(p0, k);      /* beyond the nodes: the last interval */
         a1 = node_vertical(p0, k + 1);
         c0 = cbrt(a0), c0 *= c0;
@@ -499,7 +501,11 @@ static int eval_row(const rr_nh_table *tb, const double *row, const rr_motion *w
         double Tn;
         if (!(s->Fz - Tz > 0.0))
             return RR_ERR_RANGE;
-        if ((st = solve_dz(row, s->Fz - Tz, slope0, &dz)) < 0)
+        if (pass > 0) {
+            cF = cbrt(s->Fz - Tz);
+            cF *= cF;
+        }
+        if ((st = solve_dz(row, s->Fz - Tz, cF, slope0, &dz)) < 0)
             return st;
         for (j = 0; j < np; j++) {
             const double *p = row + RR_NH_PATCH(j);
