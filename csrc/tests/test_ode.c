@@ -790,7 +790,8 @@ static void test_model(void)
 typedef struct {
     int bad_call;     /* 1-based f call that misbehaves, 0 never */
     int bad_status;   /* status it returns, or 0 to return a NaN instead */
-    int jac_status;   /* status of the Jacobian: 0 ok, 99 NaN entry, else returned */
+    int jac_status;   /* status of the Jacobian: 0 ok, 99 NaN entry, 98 -inf, 97 the
+                         largest double (finite), else returned */
     int f_warn;       /* status f returns on good calls */
     int nf;
     double scale;     /* f = scale * y */
@@ -818,8 +819,8 @@ static int err_j(void *v, double t, const double *y, double *J)
     (void)t;
     (void)y;
     J[0] = c->scale; J[1] = 0.0; J[2] = 0.0; J[3] = c->scale;
-    if (c->jac_status == 99) {
-        J[2] = NAN;
+    if (c->jac_status == 99 || c->jac_status == 98 || c->jac_status == 97) {
+        J[2] = c->jac_status == 99 ? NAN : c->jac_status == 98 ? -INFINITY : DBL_MAX;
         return 0;
     }
     return c->jac_status;
@@ -915,6 +916,12 @@ static void test_errors(void)
 
         c.jac_status = 99;
         STEP(err_j, 0.0, 0.1, RR_ERR_NONFINITE, "J with a NaN");
+        c.jac_status = 98;
+        STEP(err_j, 0.0, 0.1, RR_ERR_NONFINITE, "J with -inf");
+        c.jac_status = 97;          /* overflows the factors: not a non-finite entry */
+        c.nf = 0;
+        CHECK(rr_ode_step(&s, err_f, err_j, &c, 0.0, 0.1, y) != RR_ERR_NONFINITE,
+              "J with the largest double: not refused as non-finite");
         c.jac_status = -5;
         STEP(err_j, 0.0, 0.1, -5, "jac returns -5");
         c.jac_status = RR_WARN_NOT_CONVERGED;

@@ -2,6 +2,8 @@
 #include <float.h>
 #include <math.h>
 #include <stddef.h>
+#include <stdint.h>
+#include <string.h>
 #include "util/rr_common.h"
 #include "util/rr_ode.h"
 
@@ -229,11 +231,18 @@ static int jacobian(rr_ode *s, rr_ode_rhs f, rr_ode_jac jac, void *ctx, double t
         if (st > *warn)
             *warn = st;
         {
-            /* one test at the end, no branch per entry (NaN fails <=) */
-            int bad = 0;
-            for (i = 0; i < n * n; i++)
-                bad |= !(fabs(s->W[i]) <= DBL_MAX);
-            if (bad)
+            /* one test at the end, no branch per entry: an infinity or NaN
+             * has every exponent bit set, and only then does adding the
+             * exponent's lowest bit to them carry into the sign bit (integer
+             * operations the compiler vectorises; the comparison per entry
+             * it did not, 8 instructions an entry, 2 % of the rig's step) */
+            const uint64_t exponent = 0x7ff0000000000000u, one = 0x0010000000000000u;
+            uint64_t bad = 0, u;
+            for (i = 0; i < n * n; i++) {
+                memcpy(&u, &s->W[i], sizeof u);
+                bad |= (u & exponent) + one;
+            }
+            if (bad >> 63)
                 return RR_ERR_NONFINITE;
         }
         return RR_OK;
