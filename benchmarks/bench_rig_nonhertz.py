@@ -43,7 +43,18 @@ NOTES = """Notes (measured on this branch, not by this script):
   lowering (1.9 k), the correction (1.3 k).  On a free machine (the table above, load average
   about 1) the nonhertz loop runs 577-578x real time, 0.59-0.62 of the Hertz loop's 925-975x
   (an earlier run the same hour: 545-574x against 923-929x):
-  the issue's 250x, not its 1000x goal.
+  the issue's 250x, not its 1000x goal (that machine, 2026-12-05).
+- Stop 37 (2026-12-06, this machine): the lowering's secant starts between two load nodes in
+  (N cos delta)^(2/3) and takes their slope for its first step, to 1e-6 of the load (the
+  balance it serves settles to 1e-4): 2 to 2.25 load sums a row where 4 were taken; the
+  calibration's Kalker coefficients passed to the exact table, which no longer checks the
+  built-in table at each call; the integrator's test of the Jacobian's finiteness vectorised.
+  Instructions a sample (callgrind on Rig.run, the whole scenario): measured pair 55.9 k ->
+  50.2 k, S1002/UIC60 52.5 k -> 49.2 k, Hertz 34.2 k -> 33.4 k; rr_nonhertz_wheel_law 15.2 k ->
+  12.7 k a wheel.  The two builds taking turns (best of 7, Rig.run alone, 09:07 UTC, load
+  about 1): measured pair 928-935x -> 1048-1071x, S1002/UIC60 925-933x -> 1042-1044x.  The
+  forces moved by 2.6e-6 mu N at most (3000 random states, both pairs, both wheels), the
+  targets reached by under 4e-5.  Over the issue's 1000x goal on this machine, on both pairs.
 - Accuracy in the loop (tests/test_rig_nonhertz.py): on the cone's elliptic gap the nonhertz
   rig's fx history stays within 0.015 mu0 (N_left + N_right) of the Hertz rig with the exact
   table (measured max 0.0093, p95 4e-5; FASTSIM against the same reference 0.0091, p95 2e-5:
