@@ -48,6 +48,18 @@ int rr_exact_hertz_grid(double a, double b, int nx, int ny, rr_grid *g)
     return RR_OK;
 }
 
+void rr_exact_workspace_forget(double *work, size_t work_len)
+{
+    if (!work || work_len < HDR_LEN + STN_LEN + NKEY_LEN)
+        return;
+    /* the tags of the grid's spectra and of the normal solution (at fixed
+     * places: rr_exact_carve), and where the box was (no box_base is
+     * negative: its key goes at the next solve) */
+    work[0] = 0.0;
+    work[BOX_AT] = -1.0;
+    work[HDR_LEN + STN_LEN] = 0.0;
+}
+
 /* ---- the normal solution of the previous case ------------------------------- */
 
 /* The numbers that decide the normal problem, in key order. */

@@ -131,6 +131,15 @@ enum {
  * [1, RR_EXACT_MAX_GRID]. */
 size_t rr_exact_workspace_len(int mx, int my);
 
+/* What a workspace keeps for the next case (the spectra of its last grid
+ * and box, its last normal solution) forgotten: the next solve on work
+ * builds them anew, as on a fresh workspace, whatever the memory holds.
+ * For a caller that carves a workspace of its own differently from call
+ * to call (rr_wheel_exact), where one carving's scratch may fall on
+ * another's kept numbers and not on their keys.  Nothing for work NULL or
+ * shorter than the header. */
+void rr_exact_workspace_forget(double *work, size_t work_len);
+
 /*
  * rr_exact_solve - the normal, then the tangential problem of pb.
  *   status: RR_OK; RR_WARN_NOT_CONVERGED (a problem hit maxit: results

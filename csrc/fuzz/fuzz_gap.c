@@ -21,7 +21,9 @@
  * (and that grid beyond h_len); nothing written outside the workspace or
  * h (guard bytes); rr_wheel_exact's success: finite forces, Coulomb's
  * bound mu fn, the force in the rig frame from its parts, the vertical
- * balance (Fz given) to the solver's load tolerance.
+ * balance (Fz given) to the solver's load tolerance; the same call on the
+ * workspace kept through one carved otherwise (h of half the length): the
+ * fresh workspace's status and doubles.
  */
 #include "fuzz.h"
 #include "fuzz_profile.h"
@@ -265,6 +267,24 @@ static void check_wheel(fz_in *in, rr_wheel_roller *p)
         if (pb.Fz > 0.0 && st == RR_OK
             && !(fabs(r.force[2] - pb.Fz) <= 1.001 * fmax(pb.tol, 1e-7) * pb.Fz))
             fz_fail("%s: OK with vertical force %.17g for Fz %.17g", fn, r.force[2], pb.Fz);
+    }
+    if (st >= 0) {
+        /* the workspace kept through a call that carves it otherwise (h and
+         * fields of half the length): the same call again gives the fresh
+         * workspace's status and doubles */
+        rr_exact_field f;
+        rr_wheel_exact_result r2;
+        int st2;
+        memset(&f, 0, sizeof f);
+        f.pn = pn;
+        (void)rr_wheel_exact(&pb, work, wl, h, cells / 2, &f, cells / 2, &r2);
+        st2 = rr_wheel_exact(&pb, work, wl, h, cells, &f, cells, &r2);
+        if (st2 != st || memcmp(&r2.sol.fx, &r.sol.fx, sizeof r.sol.fx) != 0
+            || memcmp(&r2.sol.fy, &r.sol.fy, sizeof r.sol.fy) != 0
+            || memcmp(&r2.N, &r.N, sizeof r.N) != 0)
+            fz_fail("%s: a kept workspace, carved otherwise between, gave status %d (%.17g, "
+                    "%.17g, N %.17g), a fresh one %d (%.17g, %.17g, N %.17g)", fn, st2, r2.sol.fx,
+                    r2.sol.fy, r2.N, st, r.sol.fx, r.sol.fy, r.N);
     }
     fz_guard_ok(fn, work, wl * sizeof(double), "the workspace");
     fz_guard_ok(fn, h, cells * sizeof(double), "h");

@@ -136,7 +136,7 @@ size_t rr_wheel_exact_workspace_len(const rr_wheel_exact_problem *pb, int mx, in
     size_t ex, gw, cells = (size_t)mx * (size_t)my;
     if (!pb || !(ex = rr_exact_workspace_len(mx, my)) || !(gw = rr_gap_workspace_len(&pb->gap)))
         return 0;
-    return solvers_len(ex) + warm_len(cells) + state_len(cells) + gw;
+    return solvers_len(ex) + warm_len(cells) + state_len(cells) + gw + 1;
 }
 
 /* The call's state: the problem, its buffers carved from the caller's, the
@@ -640,28 +640,41 @@ int rr_wheel_exact(const rr_wheel_exact_problem *pb, double *work, size_t work_l
     c.roll0 = pb->pose0.roll;
     c.delta0 = pb->point.delta;
     /* the workspace: the solver's at its start (where it keeps its spectra
-     * from call to call), the contact state, the gap's at the end */
+     * from call to call), the contact state, the gap's, and at the end how
+     * the last call carved it */
     c.gap_len = rr_gap_workspace_len(&pb->gap);
     if (!c.gap_len) {
         res->why = RR_WHEEL_EXACT_GAP;
         return RR_ERR_PARAM;
     }
-    if (work_len < c.gap_len + state_len(c.cells) + warm_len(c.cells) + 2) {
+    if (work_len < c.gap_len + state_len(c.cells) + warm_len(c.cells) + 3) {
         res->need = c.gap_len + state_len(c.cells) + warm_len(c.cells)
-                    + solvers_len(rr_exact_workspace_len(1, 1));
+                    + solvers_len(rr_exact_workspace_len(1, 1)) + 1;
         return RR_ERR_WORKSPACE;
     }
-    c.gap = work + (work_len - c.gap_len);
+    c.gap = work + (work_len - 1 - c.gap_len);
     c.state = (signed char *)(c.gap - state_len(c.cells));
     c.last = c.gap - state_len(c.cells) - warm_len(c.cells);
     c.mapped = c.last + 3 * c.cells;
     c.prev = c.last + 6 * c.cells;
     c.prev_N = NAN;
     c.exact = work;
-    c.exact_len = work_len - c.gap_len - state_len(c.cells) - warm_len(c.cells) - 1;
+    c.exact_len = work_len - 1 - c.gap_len - state_len(c.cells) - warm_len(c.cells) - 1;
     c.coarse_dirty = work + c.exact_len;
     c.coarse_len = (c.exact_len + 3) / 4;
     c.main_len = c.exact_len - c.coarse_len;
+    if (work[work_len - 1] != (double)c.exact_len) {
+        /* carved otherwise than by the last call (h and fields of another
+         * length move the shares): that call's scratch may lie on the
+         * shares' kept spectra and not on their keys, so nothing kept is
+         * trusted (a pool of workspaces, three threads, S1002's flange
+         * after its tread: the tread case's coarse spectra half written
+         * over, the solve not converged, until stop 37) */
+        rr_exact_workspace_forget(c.exact, c.main_len);
+        rr_exact_workspace_forget(c.exact + c.main_len, c.coarse_len);
+        *c.coarse_dirty = 0.0;
+        work[work_len - 1] = (double)c.exact_len;
+    }
     p = &res->patch;
 
     if (pb->N > 0.0) {

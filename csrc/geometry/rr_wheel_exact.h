@@ -60,7 +60,9 @@
  * loaded grid and of the contact's box from call to call (each in its own
  * share, keyed by its sizes): the next call of a sweep, whose grids often
  * have the same sizes, builds none of them again.  Pass it unchanged
- * between calls, or zero-filled.
+ * between calls, or zero-filled; h_len and field_len may change from call
+ * to call (they move the shares: the workspace remembers how the last call
+ * carved it, and a call carved otherwise builds what it keeps anew).
  */
 #ifndef RR_WHEEL_EXACT_H
 #define RR_WHEEL_EXACT_H

@@ -640,6 +640,28 @@ int main(void)
             free(w2);
         }
     }
+    /* rr_exact_workspace_forget: what the workspace keeps is built anew by
+     * the next solve (its normal problem solved again, not taken from the
+     * cache), with a fresh workspace's doubles */
+    {
+        rr_exact_problem p2 = hertz_case(0.005, 0.003, 15);
+        const size_t l2 = rr_exact_workspace_len(p2.grid.mx, p2.grid.my);
+        double *w1 = calloc(l2, sizeof *w1);
+        rr_exact_result r3;
+        p2.cx = 3e-4;
+        CHECK_STATUS(rr_exact_solve(&p2, w1, l2, &r, NULL), RR_OK, "forget: fresh");
+        CHECK_STATUS(rr_exact_solve(&p2, w1, l2, &r2, NULL), RR_OK, "forget: kept");
+        CHECK(r.normal_products > 0 && r2.normal_products == 0, "forget: kept, the cache taken");
+        rr_exact_workspace_forget(w1, l2);
+        CHECK_STATUS(rr_exact_solve(&p2, w1, l2, &r3, NULL), RR_OK, "forget: forgotten");
+        CHECK(r3.normal_products == r.normal_products && r3.tang_products == r.tang_products
+                  && memcmp(&r.fx, &r3.fx, sizeof r.fx) == 0
+                  && memcmp(&r.fy, &r3.fy, sizeof r.fy) == 0,
+              "forget: solved anew, a fresh workspace's doubles");
+        rr_exact_workspace_forget(NULL, l2);
+        rr_exact_workspace_forget(w1, 3);      /* shorter than the header: nothing */
+        free(w1);
+    }
     /* the interrupt hook: polled before every product and kernel transform;
      * one that never stops leaves the doubles as they are, one that stops
      * gives RR_ERR_INTERRUPTED with NaN at once, and leaves nothing in the

@@ -207,11 +207,13 @@ int main(void)
      * (a quarter of the solvers' share, after the loaded grids'; the layout of
      * rr_wheel_exact.c:
      * the solvers' share, the flag, the last solutions, the states, the
-     * gap's): its spectra are read again by the next call (NaN over them,
-     * the key kept, fails it), and where the flag says a larger grid wrote
-     * over them, built anew (that call gives a fresh workspace's doubles) */
+     * gap's, the carving's mark): its spectra are read again by the next
+     * call (NaN over them, the key kept, fails it), and where the flag says
+     * a larger grid wrote over them, built anew (that call gives a fresh
+     * workspace's doubles), as where a call carved the workspace otherwise
+     * (h and fields of another length) */
     {
-        const size_t exact_len = len - rr_gap_workspace_len(&pb.gap) - (CELLS / 8 + 1)
+        const size_t exact_len = len - 1 - rr_gap_workspace_len(&pb.gap) - (CELLS / 8 + 1)
                                  - 9 * (size_t)CELLS - 1;
         const size_t coarse_len = (exact_len + 3) / 4, main_len = exact_len - coarse_len;
         rr_wheel_exact_result r2;
@@ -232,6 +234,71 @@ int main(void)
                   && memcmp(&r2.sol.fy, &rw.sol.fy, sizeof rw.sol.fy) == 0
                   && memcmp(&r2.N, &rw.N, sizeof rw.N) == 0,
               "coarse share: written over, flagged: a fresh workspace's doubles");
+        /* another carving between (h of half the length), whose scratch
+         * wrote over the coarse spectra and not their key: built anew */
+        {
+            double key[8];
+            CHECK_STATUS(run(&pb, w, len, ow, &rw), RR_OK, "carved otherwise: fresh");
+            memcpy(key, w + main_len, sizeof key);
+            CHECK_STATUS(rr_wheel_exact(&pb, w, len, oc->h, CELLS / 2, NULL, 0, &r2), RR_OK,
+                         "carved otherwise: h of half the length");
+            memcpy(w + main_len, key, sizeof key);
+            for (i = main_len + 8; i < exact_len; i++)
+                w[i] = NAN;
+            CHECK_STATUS(rr_wheel_exact(&pb, w, len, ow->h, CELLS, NULL, 0, &r2), RR_OK,
+                         "carved otherwise, then as before");
+            CHECK(memcmp(&r2.sol.fx, &rw.sol.fx, sizeof rw.sol.fx) == 0
+                      && memcmp(&r2.sol.fy, &rw.sol.fy, sizeof rw.sol.fy) == 0
+                      && memcmp(&r2.N, &rw.N, sizeof rw.N) == 0,
+                  "carved otherwise between: a fresh workspace's doubles");
+        }
+    }
+    /* one workspace kept through calls that carve it differently (h and
+     * fields of other lengths move the solvers' shares: a pool of
+     * workspaces hands one to whichever call comes): each call gives a
+     * fresh workspace's doubles, whatever ran there before */
+    {
+        enum { NCASE = 3, NCELL = 3, NRUN = 40 };
+        static const size_t cells[NCELL] = {CELLS, CELLS * 3 / 4, CELLS / 2};
+        rr_wheel_exact_problem cs[NCASE];
+        double ref[NCASE][NCELL][3];
+        unsigned seed = 12345u;
+        int i, j, ok = 1, ran = 0;
+        pb.cold_start = 0;
+        pb.N = 0.0;
+        pb.Fz = 5000.0;
+        for (i = 0; i < NCASE; i++)
+            cs[i] = pb;
+        cs[1].y_ws = -0.002;
+        rr_wheelset_contact(&pair[0], &pair[1], cs[1].y_ws, &so, &cs[1].pose0, &cl, &cr);
+        cs[1].point = cl;
+        cs[1].gap.n = 24;
+        cs[2].gap.dx = cs[2].gap.dy = 4e-4;
+        cs[2].mu = 0.4;
+        for (i = 0; i < NCASE; i++)
+            for (j = 0; j < NCELL; j++) {
+                memset(w, 0, len * sizeof *w);
+                CHECK_STATUS(rr_wheel_exact(&cs[i], w, len, ow->h, cells[j], NULL, 0, &rw), RR_OK,
+                             "kept through other carvings: the fresh workspace's call");
+                ref[i][j][0] = rw.sol.fx;
+                ref[i][j][1] = rw.sol.fy;
+                ref[i][j][2] = rw.N;
+            }
+        memset(w, 0, len * sizeof *w);
+        for (k = 0; k < NRUN; k++) {
+            seed = seed * 1103515245u + 12345u;
+            i = (int)((seed >> 16) % NCASE);
+            seed = seed * 1103515245u + 12345u;
+            j = (int)((seed >> 16) % NCELL);
+            if (rr_wheel_exact(&cs[i], w, len, ow->h, cells[j], NULL, 0, &rw) != RR_OK)
+                ok = 0;
+            ok &= memcmp(&rw.sol.fx, &ref[i][j][0], sizeof(double)) == 0
+                  && memcmp(&rw.sol.fy, &ref[i][j][1], sizeof(double)) == 0
+                  && memcmp(&rw.N, &ref[i][j][2], sizeof(double)) == 0;
+            ran++;
+        }
+        CHECK(ok && ran == NRUN,
+              "kept through calls of other carvings: each call a fresh workspace's doubles");
     }
     /* the workspace the warm starts need is in rr_wheel_exact_workspace_len:
      * one double short refused */
