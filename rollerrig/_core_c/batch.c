@@ -218,51 +218,60 @@ fail:
  * zero-filled each call cost rig_exact's call a ninth of its instructions
  * (a workspace for grids of n + 16 elements a side, most of it never
  * touched), and threw the spectra away.  Taken and given back with the GIL
- * held, so a call has its workspace to itself while it runs without it. */
+ * held, so a call has its workspace to itself while it runs without it.
+ * A pool per kind of call: exact_solve's layout and rig_exact's carving of
+ * the same memory differ, and one's scratch can fall on the other's kept
+ * spectra and not on their keys (rr_wheel_exact.c marks its own carving;
+ * the bare solver's could not tell). */
 #define POOL_SIZE 2
-static double *pool_work[POOL_SIZE];
-static size_t pool_len[POOL_SIZE];
+static double *pool_work[WORK_KINDS][POOL_SIZE];
+static size_t pool_len[WORK_KINDS][POOL_SIZE];
 
-/* A workspace of at least len doubles: the smallest kept one that is long
- * enough, else a new one zero-filled; *got its length.  NULL: no memory. */
-double *work_take(size_t len, size_t *got)
+/* A workspace of kind for at least len doubles: the smallest kept one that
+ * is long enough, else a new one zero-filled; *got its length.  NULL: no
+ * memory. */
+double *work_take(int kind, size_t len, size_t *got)
 {
+    double **pw = pool_work[kind];
+    size_t *pl = pool_len[kind];
     int j, best = -1;
     double *w;
     for (j = 0; j < POOL_SIZE; j++)
-        if (pool_work[j] && pool_len[j] >= len && (best < 0 || pool_len[j] < pool_len[best]))
+        if (pw[j] && pl[j] >= len && (best < 0 || pl[j] < pl[best]))
             best = j;
     if (best >= 0) {
-        w = pool_work[best];
-        *got = pool_len[best];
-        pool_work[best] = NULL;
+        w = pw[best];
+        *got = pl[best];
+        pw[best] = NULL;
         return w;
     }
     *got = len;
     return PyMem_RawCalloc(len, sizeof(double));
 }
 
-/* w (of len doubles) kept for the next call: in an empty place, else in
- * place of the smallest kept one where that is shorter (which is freed),
- * else freed. */
-void work_give(double *w, size_t len)
+/* w (of len doubles) kept for the next call of its kind: in an empty place,
+ * else in place of the smallest kept one where that is shorter (which is
+ * freed), else freed. */
+void work_give(int kind, double *w, size_t len)
 {
+    double **pw = pool_work[kind];
+    size_t *pl = pool_len[kind];
     int j, slot = 0;
     if (!w)
         return;
     for (j = 0; j < POOL_SIZE; j++) {
-        if (!pool_work[j]) {
+        if (!pw[j]) {
             slot = j;
             break;
         }
-        if (pool_len[j] < pool_len[slot])
+        if (pl[j] < pl[slot])
             slot = j;
     }
-    if (pool_work[slot] && pool_len[slot] >= len) {
+    if (pw[slot] && pl[slot] >= len) {
         PyMem_RawFree(w);
         return;
     }
-    PyMem_RawFree(pool_work[slot]);
-    pool_work[slot] = w;
-    pool_len[slot] = len;
+    PyMem_RawFree(pw[slot]);
+    pw[slot] = w;
+    pl[slot] = len;
 }

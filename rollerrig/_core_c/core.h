@@ -107,12 +107,14 @@ typedef struct {
  * held, hand &h->hook to the core while the GIL is released. */
 CORE_PRIVATE void interrupt_hook_init(interrupt_hook *h);
 
-/* The exact solver's workspaces (batch.c), kept from call to call: one of
- * at least len doubles (*got its length), zero-filled where new, NULL
- * without memory; and given back (freed, or kept for a later call).  Both
- * with the GIL held. */
-CORE_PRIVATE double *work_take(size_t len, size_t *got);
-CORE_PRIVATE void work_give(double *w, size_t len);
+/* The exact solver's workspaces (batch.c), kept from call to call, a pool
+ * per kind of call (their layouts differ): one of at least len doubles
+ * (*got its length), zero-filled where new, NULL without memory; and given
+ * back (freed, or kept for a later call of the kind).  Both with the GIL
+ * held. */
+enum { WORK_EXACT = 0, WORK_WHEEL = 1, WORK_KINDS = 2 };
+CORE_PRIVATE double *work_take(int kind, size_t len, size_t *got);
+CORE_PRIVATE void work_give(int kind, double *w, size_t len);
 
 /* A Python integer as a C int: 0, or -1 with a ValueError naming func and
  * name where it is not an integer or lies outside [lo, hi] (a value beyond

@@ -116,14 +116,14 @@ static PyObject *solve_fields(const rr_contact_problem *p, const rr_creep_checke
     call.field.state = (signed char *)PyArray_DATA((PyArrayObject *)arr[5]);
     if (call.st == RR_OK) {
         call.work_len = rr_exact_workspace_len(pb->grid.mx, pb->grid.my);
-        if (!(call.work = work_take(call.work_len, &call.work_len))) {
+        if (!(call.work = work_take(WORK_EXACT, call.work_len, &call.work_len))) {
             PyErr_NoMemory();
             goto fail;
         }
         interrupt_hook_init(&call.stop);
         pb->interrupt = &call.stop.hook;
         k = run_batch(exact_kernel, &call, 1, 1.0);
-        work_give(call.work, call.work_len);
+        work_give(WORK_EXACT, call.work, call.work_len);
         if (k < 0)
             goto fail;
     } else {

@@ -204,7 +204,7 @@ static int wheel_kernel(void *ctx, npy_intp start, npy_intp stop)
 
 static void wheel_free(wheel_call *k)
 {
-    work_give(k->work, k->work_len);
+    work_give(WORK_WHEEL, k->work, k->work_len);
     PyMem_RawFree(k->h);
     PyMem_RawFree(k->field.pn);
     PyMem_RawFree(k->field.px);
@@ -225,7 +225,7 @@ static int wheel_alloc(wheel_call *k, int side)
     k->work_len = rr_wheel_exact_workspace_len(&k->pb, side, side);
     if (!k->work_len)
         k->work_len = 1;                     /* options rr_wheel_exact names */
-    k->work = work_take(k->work_len, &k->work_len);
+    k->work = work_take(WORK_WHEEL, k->work_len, &k->work_len);
     k->h = PyMem_RawMalloc(k->cells * sizeof(double));
     k->field.pn = PyMem_RawMalloc(k->cells * sizeof(double));
     k->field.px = PyMem_RawMalloc(k->cells * sizeof(double));
