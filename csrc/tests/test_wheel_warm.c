@@ -91,6 +91,14 @@ static int solve_patch(const rr_wheel_exact_problem *pb, const rr_wheel_exact_re
     return st;
 }
 
+/* a and b the same doubles (fx, fy, the load) */
+static int same_doubles(const rr_wheel_exact_result *a, const rr_wheel_exact_result *b)
+{
+    return memcmp(&a->sol.fx, &b->sol.fx, sizeof a->sol.fx) == 0
+           && memcmp(&a->sol.fy, &b->sol.fy, sizeof a->sol.fy) == 0
+           && memcmp(&a->N, &b->N, sizeof a->N) == 0;
+}
+
 int main(void)
 {
     rr_wheel_roller pair[2];
@@ -230,9 +238,7 @@ int main(void)
         w[exact_len] = 1.0;
         CHECK_STATUS(rr_wheel_exact(&pb, w, len, oc->h, CELLS, NULL, 0, &r2), RR_OK,
                      "coarse share: written over, flagged");
-        CHECK(memcmp(&r2.sol.fx, &rw.sol.fx, sizeof rw.sol.fx) == 0
-                  && memcmp(&r2.sol.fy, &rw.sol.fy, sizeof rw.sol.fy) == 0
-                  && memcmp(&r2.N, &rw.N, sizeof rw.N) == 0,
+        CHECK(same_doubles(&r2, &rw),
               "coarse share: written over, flagged: a fresh workspace's doubles");
         /* another carving between (h of half the length), whose scratch
          * wrote over the coarse spectra and not their key: built anew */
@@ -247,10 +253,7 @@ int main(void)
                 w[i] = NAN;
             CHECK_STATUS(rr_wheel_exact(&pb, w, len, ow->h, CELLS, NULL, 0, &r2), RR_OK,
                          "carved otherwise, then as before");
-            CHECK(memcmp(&r2.sol.fx, &rw.sol.fx, sizeof rw.sol.fx) == 0
-                      && memcmp(&r2.sol.fy, &rw.sol.fy, sizeof rw.sol.fy) == 0
-                      && memcmp(&r2.N, &rw.N, sizeof rw.N) == 0,
-                  "carved otherwise between: a fresh workspace's doubles");
+            CHECK(same_doubles(&r2, &rw), "carved otherwise between: a fresh workspace's doubles");
         }
     }
     /* one workspace kept through calls that carve it differently (h and
@@ -261,7 +264,7 @@ int main(void)
         enum { NCASE = 3, NCELL = 3, NRUN = 40 };
         static const size_t cells[NCELL] = {CELLS, CELLS * 3 / 4, CELLS / 2};
         rr_wheel_exact_problem cs[NCASE];
-        double ref[NCASE][NCELL][3];
+        static rr_wheel_exact_result ref[NCASE][NCELL];
         unsigned seed = 12345u;
         int i, j, ok = 1, ran = 0;
         pb.cold_start = 0;
@@ -278,11 +281,8 @@ int main(void)
         for (i = 0; i < NCASE; i++)
             for (j = 0; j < NCELL; j++) {
                 memset(w, 0, len * sizeof *w);
-                CHECK_STATUS(rr_wheel_exact(&cs[i], w, len, ow->h, cells[j], NULL, 0, &rw), RR_OK,
-                             "kept through other carvings: the fresh workspace's call");
-                ref[i][j][0] = rw.sol.fx;
-                ref[i][j][1] = rw.sol.fy;
-                ref[i][j][2] = rw.N;
+                CHECK_STATUS(rr_wheel_exact(&cs[i], w, len, ow->h, cells[j], NULL, 0, &ref[i][j]),
+                             RR_OK, "kept through other carvings: the fresh workspace's call");
             }
         memset(w, 0, len * sizeof *w);
         for (k = 0; k < NRUN; k++) {
@@ -290,11 +290,8 @@ int main(void)
             i = (int)((seed >> 16) % NCASE);
             seed = seed * 1103515245u + 12345u;
             j = (int)((seed >> 16) % NCELL);
-            if (rr_wheel_exact(&cs[i], w, len, ow->h, cells[j], NULL, 0, &rw) != RR_OK)
-                ok = 0;
-            ok &= memcmp(&rw.sol.fx, &ref[i][j][0], sizeof(double)) == 0
-                  && memcmp(&rw.sol.fy, &ref[i][j][1], sizeof(double)) == 0
-                  && memcmp(&rw.N, &ref[i][j][2], sizeof(double)) == 0;
+            ok &= rr_wheel_exact(&cs[i], w, len, ow->h, cells[j], NULL, 0, &rw) == RR_OK
+                  && same_doubles(&rw, &ref[i][j]);
             ran++;
         }
         CHECK(ok && ran == NRUN,
