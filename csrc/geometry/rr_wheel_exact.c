@@ -147,7 +147,8 @@ typedef struct {
     size_t exact_len, gap_len;    /* exact: the loaded grids' share (main_len), the coarse
                                      pass's (coarse_len) after it, its flag, all */
     size_t main_len, coarse_len;
-    double *coarse_dirty;         /* 1: the coarse share was written over by a larger grid */
+    double *coarse_dirty;         /* 1: the coarse share's memory last held a grid too large
+                                     for its own share (it takes all); 0: the coarse pass's */
     signed char *state;           /* the contact's state, for the grid's edge */
     double *last, *mapped;        /* the last solution's pn, px, py (cells each), and
                                      those mapped onto a new grid */
@@ -406,19 +407,24 @@ static int solve(call *c, const rr_gap_patch *p, double N, int normal_only, int 
     }
     /* the coarse pass in its share, the loaded grids in theirs, each
      * keeping its spectra for the next call; a grid too large for its
-     * share takes all (and the coarse share's key goes, at its next use) */
+     * share takes all.  That grid and the coarse pass then write over each
+     * other's numbers (its box lies from the middle of all), not always
+     * over their keys: whichever comes after the other forgets what its
+     * memory kept */
     if (normal_only && need <= c->coarse_len) {
         work = c->exact + c->main_len;
         work_len = c->coarse_len;
         if (*c->coarse_dirty != 0.0) {
-            work[0] = 0.0;
+            rr_exact_workspace_forget(work, work_len);
             *c->coarse_dirty = 0.0;
         }
     } else {
         work = c->exact;
         work_len = need <= c->main_len ? c->main_len : c->exact_len;
-        if (work_len > c->main_len)
+        if (work_len > c->main_len && *c->coarse_dirty == 0.0) {
+            rr_exact_workspace_forget(work, work_len);
             *c->coarse_dirty = 1.0;
+        }
     }
     /* the solution's pn, px, py into last (the next solve's start; the
      * caller's field gets the final one's), its slip to the caller's */

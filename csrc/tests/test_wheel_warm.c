@@ -256,6 +256,38 @@ int main(void)
             CHECK(same_doubles(&r2, &rw), "carved otherwise between: a fresh workspace's doubles");
         }
     }
+    /* a workspace whose loaded grid takes the coarse share too (a grid
+     * too large for its own share): the calls after it on the kept
+     * workspace, whose coarse pass writes over that grid's box, give a
+     * fresh workspace's doubles */
+    {
+        const size_t rest = 1 + rr_gap_workspace_len(&pb.gap) + (CELLS / 8 + 1)
+                            + 9 * (size_t)CELLS + 1;
+        rr_wheel_exact_result r1, r2;
+        size_t need, ex;
+        double *w2;
+        int q, ok = 1;
+        pb.cold_start = 0;
+        pb.N = 0.0;
+        pb.Fz = 5000.0;
+        CHECK_STATUS(run(&pb, w, len, ow, &rw), RR_OK, "takes all: the grid's size");
+        need = rr_exact_workspace_len(rw.patch.grid.mx, rw.patch.grid.my);
+        ex = need + need / 8;       /* the loaded grids' share 0.84 of need */
+        w2 = calloc(ex + rest, sizeof *w2);
+        CHECK_STATUS(rr_wheel_exact(&pb, w2, ex + rest, ow->h, CELLS, NULL, 0, &r1), RR_OK,
+                     "takes all: fresh");
+        for (q = 0; q < 3; q++) {
+            /* the coarse share written over (as the coarse pass of a call
+             * of another grid would) */
+            size_t i;
+            for (i = ex - (ex + 3) / 4; i < ex; i++)
+                w2[i] = NAN;
+            ok &= rr_wheel_exact(&pb, w2, ex + rest, ow->h, CELLS, NULL, 0, &r2) == RR_OK
+                  && same_doubles(&r2, &r1);
+        }
+        CHECK(ok, "takes all, then kept: a fresh workspace's doubles");
+        free(w2);
+    }
     /* one workspace kept through calls that carve it differently (h and
      * fields of other lengths move the solvers' shares: a pool of
      * workspaces hands one to whichever call comes): each call gives a
