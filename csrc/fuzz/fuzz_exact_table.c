@@ -10,7 +10,8 @@
  * on success with |(fx, fy)| <= mu0 N; on the built-in table, reversing
  * every creepage reverses the forces bit for bit and a creepage-free case
  * has no force; Kalker's coefficients of the case given
- * (rr_exact_table_forces_kalker) give the same status and doubles.
+ * (rr_exact_table_forces_kalker) give the same status and doubles, a
+ * negative one an error with NaN forces.
  */
 #include "fuzz.h"
 
@@ -65,6 +66,12 @@ static void check(const rr_exact_table *t, const rr_contact_problem *c, int buil
                 fz_fail("rr_exact_table_forces_kalker: status %d (%.17g, %.17g, %.17g) against "
                         "%s's %d (%.17g, %.17g, %.17g)", sg, g.fx, g.fy, g.mz, fn, st, f.fx,
                         f.fy, f.mz);
+            /* a coefficient a caller got wrong: refused, NaN forces */
+            k.c22 = -k.c22;
+            memset(&g, 0x55, sizeof g);
+            sg = rr_exact_table_forces_kalker(t, c, &k, &g);
+            if (sg >= 0 || !(isnan(g.fx) && isnan(g.fy) && isnan(g.mz)))
+                fz_fail("rr_exact_table_forces_kalker: c22 < 0 gave status %d", sg);
         }
     }
     if (table_invalid(t) && st != RR_ERR_PARAM)
