@@ -197,6 +197,11 @@ def profile_table(wheel_y: _ArrayIn, wheel_z: _ArrayIn, wheel_end: object, rolle
 
 
 def rig_contact(*args: Any, **options: object) -> Tuple[Any, ...]: ...
+#: (status, pose[11, n]): the pose at y moving with the rates of y_rates
+def rig_row_kinematics(data: _F64, y0: float, dy: float, model: Tuple[float, float],
+                       x: _ArrayIn, y: _ArrayIn, yaw: _ArrayIn, vx: _ArrayIn, vy: _ArrayIn,
+                       yaw_rate: _ArrayIn, spin: _ArrayIn, roller_spin: _ArrayIn,
+                       y_rates: _ArrayIn, /) -> Tuple[_I8, _F64]: ...
 def rig_schedule(roller_speed: float, roller_radius: float, targets: _ArrayIn,
                  target_start: _ArrayIn, T: float, first: int, stop: int,
                  /) -> Tuple[_F64, _F64]: ...

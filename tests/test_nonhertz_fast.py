@@ -148,6 +148,32 @@ def test_a_flange_row_against_the_exact_solver():
         assert abs(dF[0]) <= 0.01, (target, dF)        # the fault's signature: fx
 
 
+def test_the_rows_move_with_the_wheelsets_own_rates():
+    # S1002/UIC60's right wheel at +6.3 mm, between its rows 6.2 and 6.4 mm,
+    # with 1 cm/s of lateral speed: the left wheel's contact jumps from the
+    # flange root to its flank at +6.27 mm, and the wheelset's vertical and
+    # roll rates (the table's slopes times vy) jump with it, the right
+    # wheel's lateral creepage from 0.0028 to 0.019.  The rows took their
+    # own rates and blended them: cy 0.0090, 0.25 mu N off; now each row
+    # moves with the state's (rr_rig_kinematics_rates_at): cy within 0.1 %,
+    # the force 5e-4 mu N from rig_exact on 80 elements (here 40: the
+    # tolerance is the issue's p95, which that grid's own error fits in)
+    g = geometry("s1002_uic60")
+    ct = rr.contact_table(g, -0.0085, 0.0085, 341)
+    Fz, mu, rs, y = 61163.0, 0.52, 5.587302, 6.3e-3
+    tab = rr.nonhertz_table(g, None, None, y=[6.2e-3, 6.4e-3], Fz=Fz, mu_ref=mu,
+                            sides=("right",))
+    tab = rr.NonHertzTable(tab.right, tab.right, tab.Fz)
+    p = rr.wheelset_contact(g, y).right
+    spin = rs * float(p.R[0]) / float(p.r[0]) * (1 - 1e-3)
+    ref = rr.rig_exact(g, y, side="right", Fz=Fz, mu=mu, spin=spin, roller_spin=rs, vy=0.01,
+                       table=ct)
+    nh = rr.rig_contact(ct, y=y, vy=0.01, spin=spin, roller_spin=rs, mu=mu, Fz_left=Fz,
+                        Fz_right=Fz, patch="nonhertz", nonhertz=tab).right
+    assert nh.patches[0].cy == pytest.approx(ref.cy, rel=1e-3)
+    assert np.linalg.norm(nh.force - ref.force) / (mu * ref.N) <= 0.02
+
+
 def test_a_saturated_flange_finds_its_vertical_balance():
     # S1002 right wheel at -6.4 mm with lateral slip (vy 0.01 m/s): the flank
     # at delta 1.21 rad in full slip, mu tan(delta) = 1.4, so the creep

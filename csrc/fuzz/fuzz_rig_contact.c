@@ -331,6 +331,36 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         st2 = rr_rig_kinematics_checked(&checked, &s, &pose2, w2);
         same_checked("rr_rig_kinematics_checked", st, st2, &pose, w, &pose2, w2,
                      model_invalid(&m));
+        /* the rates at its own y: the same doubles */
+        memset(w2, 0x55, sizeof w2);
+        memset(&pose2, 0x55, sizeof pose2);
+        st2 = rr_rig_kinematics_rates_at(&checked, &s, s.y, &pose2, w2);
+        same_checked("rr_rig_kinematics_rates_at", st, st2, &pose, w, &pose2, w2,
+                     model_invalid(&m));
+        {
+            /* at another shift: the pose of its own y, the roll rate of that
+             * shift's kinematics (the table's slope there times vy) */
+            const char *fr = "rr_rig_kinematics_rates_at";
+            const double yr = fz_choice(&in, 8) == 0 ? NAN : s.y + fz_lin(&in, -3e-3, 3e-3);
+            rr_rig_state s3 = s;
+            rr_rig_pose pose3;
+            rr_wheel_contact w3[2];
+            fz_note("y_rates %.17g", yr);
+            st2 = rr_rig_kinematics_rates_at(&checked, &s, yr, &pose2, w2);
+            fz_status(fr, st2);
+            check_pose(fr, st2, &pose2);
+            if (model_invalid(&m) ? st2 != RR_ERR_NULL
+                                  : (state_nonfinite(&s) || !isfinite(yr)) && st2 != RR_ERR_NONFINITE)
+                fz_fail("%s: status %d for an invalid model, state or y_rates", fr, st2);
+            s3.y = yr;
+            if (st2 >= 0 && st >= 0
+                && memcmp(pose.c, pose2.c, sizeof pose.c) != 0)
+                fz_fail("%s: the centre is not its own y's", fr);
+            if (st2 >= 0 && rr_rig_kinematics_checked(&checked, &s3, &pose3, w3) >= 0
+                && !(pose2.roll_rate == pose3.roll_rate))
+                fz_fail("%s: roll rate %.17g, that shift's %.17g", fr, pose2.roll_rate,
+                        pose3.roll_rate);
+        }
         return 0;
     }
     st = rr_rig_contact(&m, &s, N, &pose, w);

@@ -17,8 +17,8 @@
  * over mu_ref N on a polar grid of normalised creepage.
  *
  * The run time, per wheel: the two rows around y each evaluated as if the
- * wheelset were at the row's shift (the caller gives the wheelset's motion
- * there), the results blended linearly in y (results, not node data: the
+ * wheelset were at the row's shift, moving as it does at y (the caller
+ * gives that motion), the results blended linearly in y (results, not node data: the
  * forces stay continuous where the rows' patches differ).  Per row: the
  * shared lowering dz from the vertical load Fz (sum over patches of
  * N_j(dz - g_j) cos(delta_j) + the creep forces' vertical share = Fz: a
@@ -148,8 +148,11 @@ typedef struct {
                              first-order law (rr_rig_contact.h) with the patch's delta,
                              r and R; 0, 0: the table's planes */
     rr_motion motion[2];  /* the wheelset's rigid motion at rows i and i + 1 of
-                             rr_nonhertz_locate (rr_rig_contact's pose at x, y, yaw:
-                             c its centre, v, w) */
+                             rr_nonhertz_locate (c its centre, v, w): the rig's
+                             pose at the row's shift moving with the state's own
+                             rates (rr_rig_kinematics_rates_at, y_rates = y: the
+                             vertical and roll rates vy gives at y itself, which
+                             jump where the other wheel's contact does) */
 } rr_nh_state;
 
 /* One patch of the result: row i's and row i + 1's patch of the same

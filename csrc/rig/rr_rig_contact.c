@@ -195,10 +195,19 @@ static int pose_of(const rr_rig_contact_model *m, const rr_rig_state *s, double 
     return RR_OK;
 }
 
+/* The table's slopes (d z / d y, d roll / d y) at y: the vertical and roll
+ * rates a lateral speed gives there. */
+static int slopes_at(const rr_rig_contact_model *m, double y, rr_wheelset_pose *slope)
+{
+    rr_wheelset_pose tp;
+    rr_contact_point g[2];
+    return rr_contact_table_lookup(m->table, y, &tp, slope, &g[0], &g[1]);
+}
+
 /* rr_rig_kinematics with st the model's status (RR_OK: checked), pose and w
- * not NULL */
+ * not NULL, the rates' slopes taken at y_rates (s->y: the table's pose's) */
 static int kinematics(const rr_rig_contact_model *m, int st, const rr_rig_state *s,
-                      rr_rig_pose *pose, rr_wheel_contact w[2])
+                      double y_rates, rr_rig_pose *pose, rr_wheel_contact w[2])
 {
     rr_wheelset_pose tp, slope;
     rr_motion wheel, roller;
@@ -207,10 +216,13 @@ static int kinematics(const rr_rig_contact_model *m, int st, const rr_rig_state 
 
     if (st == RR_OK && !(isfinite(s->x) && isfinite(s->y) && isfinite(s->yaw)
                          && isfinite(s->vx) && isfinite(s->vy) && isfinite(s->yaw_rate)
-                         && isfinite(s->spin) && isfinite(s->roller_spin)))
+                         && isfinite(s->spin) && isfinite(s->roller_spin)
+                         && isfinite(y_rates)))
         st = RR_ERR_NONFINITE;
     if (st == RR_OK)
         st = rr_contact_table_lookup(m->table, s->y, &tp, &slope, &w[0].geo, &w[1].geo);
+    if (st == RR_OK && y_rates != s->y)
+        st = slopes_at(m, y_rates, &slope);
     if (st == RR_OK)
         st = pose_of(m, s, s->y, &tp, &slope, pose);
     if (st < 0) {
@@ -297,7 +309,7 @@ int rr_rig_kinematics(const rr_rig_contact_model *m, const rr_rig_state *s, rr_r
 {
     if (!pose || !w)
         return RR_ERR_NULL;
-    return kinematics(m, s ? rr_rig_contact_check(m) : RR_ERR_NULL, s, pose, w);
+    return kinematics(m, s ? rr_rig_contact_check(m) : RR_ERR_NULL, s, s ? s->y : 0.0, pose, w);
 }
 
 int rr_rig_kinematics_checked(const rr_rig_contact_checked *k, const rr_rig_state *s,
@@ -305,7 +317,17 @@ int rr_rig_kinematics_checked(const rr_rig_contact_checked *k, const rr_rig_stat
 {
     if (!pose || !w)
         return RR_ERR_NULL;
-    return kinematics(bound(k) ? &k->m : NULL, s && bound(k) ? RR_OK : RR_ERR_NULL, s, pose, w);
+    return kinematics(bound(k) ? &k->m : NULL, s && bound(k) ? RR_OK : RR_ERR_NULL, s,
+                      s ? s->y : 0.0, pose, w);
+}
+
+int rr_rig_kinematics_rates_at(const rr_rig_contact_checked *k, const rr_rig_state *s,
+                               double y_rates, rr_rig_pose *pose, rr_wheel_contact w[2])
+{
+    if (!pose || !w)
+        return RR_ERR_NULL;
+    return kinematics(bound(k) ? &k->m : NULL, s && bound(k) ? RR_OK : RR_ERR_NULL, s, y_rates,
+                      pose, w);
 }
 
 /* Wheel k (0 left, 1 right) of a finished kinematics by the non-Hertzian
@@ -316,6 +338,7 @@ static int nonhertz_wheel(const rr_rig_contact_model *m, int k, double N,
 {
     const rr_nh_table *t = m->nonhertz[k];
     const rr_rig_state *s = &pose->state;
+    rr_wheelset_pose slope;
     rr_nh_state ns;
     rr_nh_result r;
     double w, Nsum = 0.0, ab_sum = 0.0, Nmax = -1.0, ab = 1.0, scale;
@@ -328,13 +351,16 @@ static int nonhertz_wheel(const rr_rig_contact_model *m, int k, double N,
         return RR_ERR_LOAD;                  /* the normal does not lift the wheel */
     if ((st = rr_nonhertz_locate(t, s->y, &i, &w)) < 0)
         return st;                           /* the wheelset beyond the table's rows */
+    if ((st = slopes_at(m, s->y, &slope)) < 0)
+        return st;
     for (j = 0; j < 2; j++) {
-        /* the wheelset's motion as if at row i + j's shift */
-        rr_wheelset_pose tp, slope;
+        /* the wheelset's motion as if at row i + j's shift, with the rates
+         * of its own (rr_rig_kinematics_rates_at) */
+        rr_wheelset_pose tp, unused;
         rr_contact_point g[2];
         rr_rig_pose pr;
         const double yr = t->rows[(size_t)(i + j) * RR_NH_ROW_LEN];
-        if ((st = rr_contact_table_lookup(m->table, yr, &tp, &slope, &g[0], &g[1])) < 0
+        if ((st = rr_contact_table_lookup(m->table, yr, &tp, &unused, &g[0], &g[1])) < 0
             || (st = pose_of(m, s, yr, &tp, &slope, &pr)) < 0)
             return st;
         memcpy(ns.motion[j].c, pr.c, sizeof pr.c);

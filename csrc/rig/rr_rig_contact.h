@@ -199,6 +199,23 @@ int rr_rig_kinematics(const rr_rig_contact_model *m, const rr_rig_state *s, rr_r
                       rr_wheel_contact w[2]);
 
 /*
+ * rr_rig_kinematics_rates_at - rr_rig_kinematics_checked with the vertical
+ * and roll rates that the lateral speed s->vy gives at shift y_rates, not
+ * at s->y (the table's slopes there): the wheelset as if at s->y, moving as
+ * it does at y_rates.  The non-Hertzian contact evaluates its table's rows
+ * so (rr_nonhertz.h: the motion at rows i, i + 1 of a state at y_rates):
+ * where the other wheel's contact point jumps between two rows, the
+ * wheelset's rates jump with it (S1002 at +6.27 mm, its left flank: at 1
+ * cm/s the right wheel's lateral creepage goes from 0.003 to 0.018), and
+ * the rows' own rates, blended, missed that by up to 0.37 mu N.
+ *   status:  rr_rig_kinematics_checked's; RR_ERR_NONFINITE also for
+ *            y_rates, RR_ERR_GEOMETRY for y_rates outside the table.
+ *            y_rates = s->y gives rr_rig_kinematics_checked's doubles.
+ */
+int rr_rig_kinematics_rates_at(const rr_rig_contact_checked *k, const rr_rig_state *s,
+                               double y_rates, rr_rig_pose *pose, rr_wheel_contact w[2]);
+
+/*
  * rr_rig_contact - the whole contact evaluation of both wheels.
  *   given:   m; s; N[0], N[1] the normal loads of the left and right
  *            wheel [N]

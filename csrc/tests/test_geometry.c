@@ -253,6 +253,9 @@ static void test_rig_contact_checked(rr_rig_contact_model *m, const rr_rig_state
                 CHECK_STATUS(rr_rig_kinematics_checked(&k, &s, &p2, w2), st,
                              "rig: checked kinematics");
                 CHECK(same_wheels(&p1, w1, &p2, w2), "rig: checked kinematics, bit for bit");
+                CHECK_STATUS(rr_rig_kinematics_rates_at(&k, &s, s.y, &p2, w2), st,
+                             "rig: kinematics with the rates at its own y");
+                CHECK(same_wheels(&p1, w1, &p2, w2), "rig: the rates at its own y, bit for bit");
                 if (st >= 0) {
                     st = rr_rig_contact_loads(m, loads[l], &p1, w1);
                     CHECK_STATUS(rr_rig_contact_loads_checked(&k, loads[l], &p2, w2), st,
@@ -260,6 +263,30 @@ static void test_rig_contact_checked(rr_rig_contact_model *m, const rr_rig_state
                     CHECK(same_wheels(&p1, w1, &p2, w2), "rig: checked loads, bit for bit");
                 }
             }
+    /* the rates at another shift: the pose of its own y, the vertical and
+     * roll rates of the state at y_rates (the table's slopes there) */
+    s = *s0;
+    s.vy = 0.01;
+    s.y = 2e-3;
+    CHECK_STATUS(rr_rig_kinematics_checked(&k, &s, &p1, w1), RR_OK, "rig: at 2 mm");
+    s.y = 0.0;
+    CHECK_STATUS(rr_rig_kinematics_rates_at(&k, &s, 2e-3, &p2, w2), RR_OK,
+                 "rig: at 0 with 2 mm's rates");
+    CHECK(p2.roll_rate == p1.roll_rate && p2.roll_rate != 0.0, "rig: 2 mm's roll rate");
+    CHECK_STATUS(rr_rig_kinematics_checked(&k, &s, &p1, w1), RR_OK, "rig: at 0");
+    CHECK(p2.c[1] == p1.c[1] && p2.c[2] == p1.c[2] && p2.roll == p1.roll,
+          "rig: at 0 with 2 mm's rates: 0's pose");
+    CHECK(p2.roll_rate != p1.roll_rate, "rig: the rates are 2 mm's, not 0's");
+    CHECK_STATUS(rr_rig_kinematics_rates_at(&k, &s, NAN, &p2, w2), RR_ERR_NONFINITE,
+                 "rig: y_rates NaN");
+    CHECK(isnan(p2.c[0]) && isnan(p2.roll_rate) && w2[0].status == RR_ERR_NONFINITE,
+          "rig: y_rates NaN: NaN pose");
+    CHECK_STATUS(rr_rig_kinematics_rates_at(&k, &s, 1.0, &p2, w2), RR_ERR_GEOMETRY,
+                 "rig: y_rates beyond the table");
+    CHECK_STATUS(rr_rig_kinematics_rates_at(&k, &s, 0.0, NULL, w2), RR_ERR_NULL,
+                 "rig: rates_at, NULL pose");
+    CHECK_STATUS(rr_rig_kinematics_rates_at(&k, NULL, 0.0, &p2, w2), RR_ERR_NULL,
+                 "rig: rates_at, NULL state");
     /* a copy: the model changed after the bind does not reach it */
     s = *s0;
     s.spin *= 0.98;

@@ -250,6 +250,7 @@ CORE_PRIVATE int add_nonhertz(PyObject *m);
 /* ------------------------------------------------ rig_contact.c, rig.c */
 
 CORE_PRIVATE PyObject *py_rig_contact(PyObject *self, PyObject *args, PyObject *kwargs);
+CORE_PRIVATE PyObject *py_rig_row_kinematics(PyObject *self, PyObject *args);
 
 CORE_PRIVATE extern PyTypeObject RigType;
 

@@ -99,6 +99,9 @@ static PyMethodDef core_methods[] = {
      "rig_contact(data, y0, dy, (R0, estar, G, nu, mu0, A, B, vmin), x, y, yaw, vx, vy,"
      " yaw_rate, spin, roller_spin, N_left, N_right, *, kinematics_only, <creep options>)"
      " -> (status, pose, left, right, left_status, right_status)"},
+    {"rig_row_kinematics", py_rig_row_kinematics, METH_VARARGS,
+     "rig_row_kinematics(data, y0, dy, (R0, vmin), x, y, yaw, vx, vy, yaw_rate, spin,"
+     " roller_spin, y_rates) -> (status, pose): the pose at y, the rates of y_rates"},
     {"spline_fit", py_spline_fit, METH_VARARGS,
      "spline_fit(y, z, end) -> (status, slope, c2, c3, d2)"},
     {"analytic_profile", py_analytic_profile, METH_VARARGS,

@@ -157,3 +157,105 @@ fail:
     release(out, 6);
     return NULL;
 }
+
+/* ------------------------------------------------ the rows' kinematics */
+
+#define NROW 9     /* the state's eight numbers and y_rates */
+static const char *const row_names[NROW] = {"x", "y", "yaw", "vx", "vy", "yaw_rate", "spin",
+                                            "roller_spin", "y_rates"};
+
+typedef struct {
+    input in[NROW];
+    const rr_rig_contact_checked *m;
+    npy_intp n;
+    npy_int8 *status;
+    double *pose;
+} row_batch;
+
+static int row_kernel(void *ctx, npy_intp start, npy_intp stop)
+{
+    row_batch *b = ctx;
+    npy_intp i;
+    int k;
+    for (i = start; i < stop; i++) {
+        rr_rig_state s;
+        rr_rig_pose pose;
+        rr_wheel_contact w[2];
+        s.x = IN(b->in[0], i);
+        s.y = IN(b->in[1], i);
+        s.yaw = IN(b->in[2], i);
+        s.vx = IN(b->in[3], i);
+        s.vy = IN(b->in[4], i);
+        s.yaw_rate = IN(b->in[5], i);
+        s.spin = IN(b->in[6], i);
+        s.roller_spin = IN(b->in[7], i);
+        memset(w, 0, sizeof w);
+        b->status[i] = (npy_int8)rr_rig_kinematics_rates_at(b->m, &s, IN(b->in[8], i), &pose, w);
+        {
+            const double pv[NPOSE] = {pose.c[0], pose.c[1], pose.c[2], pose.roll, pose.beta,
+                                      pose.v[0], pose.v[1], pose.v[2], pose.w[0], pose.w[1],
+                                      pose.w[2]};
+            for (k = 0; k < NPOSE; k++)
+                b->pose[k * b->n + i] = pv[k];
+        }
+    }
+    return 0;
+}
+
+/* rig_row_kinematics(data, y0, dy, (R0, vmin), x, y, yaw, vx, vy, yaw_rate,
+ * spin, roller_spin, y_rates) -> (status, pose[NPOSE, n]): the wheelset's
+ * pose at y with the rates of y_rates (rr_rig_kinematics_rates_at; the
+ * rows of the non-Hertzian contact's table, y_rates the state's own). */
+PyObject *py_rig_row_kinematics(PyObject *self, PyObject *args)
+{
+    PyObject *dobj, *objs[NROW], *out[2] = {NULL, NULL}, *res;
+    row_batch b;
+    rr_contact_table t;
+    rr_rig_contact_model m;
+    rr_rig_contact_checked checked;
+    double y0, dy;
+    npy_intp n, dims[2];
+    int st;
+    (void)self;
+
+    memset(&m, 0, sizeof m);
+    if (!PyArg_ParseTuple(args, "Odd(dd)OOOOOOOOO:rig_row_kinematics", &dobj, &y0, &dy, &m.R0,
+                          &m.vmin, &objs[0], &objs[1], &objs[2], &objs[3], &objs[4], &objs[5],
+                          &objs[6], &objs[7], &objs[8]))
+        return NULL;
+    if (parse_table(dobj, y0, dy, "rig_row_kinematics", &t) < 0)
+        return NULL;
+    m.table = &t;
+    /* the kinematics use no material, friction or creep method: valid ones */
+    m.estar = 1.0;
+    m.G = 1.0;
+    m.nu = 0.25;
+    m.friction.mu0 = 1.0;
+    m.friction.A = 1.0;
+    rr_creep_opts_default(&m.creep, RR_METHOD_FASTSIM);
+    st = rr_rig_contact_bind(&checked, &m, NULL, 0);
+    if (st < 0) {
+        PyErr_Format(PyExc_ValueError, "rig_row_kinematics: invalid model: %s",
+                     rr_status_message(st));
+        return NULL;
+    }
+    if (parse_inputs("rig_row_kinematics", objs, row_names, NROW, &n, b.in) < 0)
+        return NULL;
+    dims[0] = NPOSE;
+    dims[1] = n;
+    out[0] = PyArray_SimpleNew(1, &n, NPY_INT8);
+    out[1] = PyArray_SimpleNew(2, dims, NPY_DOUBLE);
+    if (!out[0] || !out[1])
+        goto fail;
+    b.m = &checked;
+    b.n = n;
+    b.status = OUT8(out[0]);
+    b.pose = OUT(out[1]);
+    if (run_batch(row_kernel, &b, n, 8.0) < 0)
+        goto fail;
+    if ((res = outputs_tuple(out, 2)) != NULL)
+        return res;
+fail:
+    release(out, 2);
+    return NULL;
+}

@@ -13,6 +13,8 @@ from typing import Any, Callable, Dict, List, Mapping, NamedTuple, Optional, Tup
 import numpy as np
 import numpy.typing as npt
 
+from .. import _core
+from .._binding import core
 from .._errors import RollerRigError, RollerRigWarning, status_message
 from .._typing import F64Array
 from ..geometry.wheelset import ContactTable
@@ -227,6 +229,29 @@ def _stack_wheels(ws: List[NonHertzWheel], shape: Tuple[int, ...]) -> NonHertzWh
 _Motion = Tuple[Tuple[float, float, float], ...]
 
 
+def _row_kinematics(table: ContactTable, vmin: float, state: Mapping[str, Any],
+                    rows: npt.ArrayLike) -> Tuple[npt.NDArray[np.int8], F64Array, F64Array,
+                                                 F64Array]:
+    """(status, c, v, w) of the wheelset at the shifts rows (any shape; c,
+    v, w (3,) + that shape), the state's other numbers broadcast to it,
+    moving as at its own y: the vertical and roll rates its lateral speed
+    gives there (rr_rig_kinematics_rates_at: between two rows the other
+    wheel's contact may jump, and those rates with it)."""
+    rows = np.asarray(rows, dtype=float)
+
+    def flat(a: Any) -> F64Array:
+        return np.ascontiguousarray(np.broadcast_to(np.asarray(a, dtype=float),
+                                                    rows.shape)).ravel()
+    st, pose = core(_core.rig_row_kinematics, table.data, table.y0, table.dy,
+                    (float(table.geometry.roller_radius), float(vmin)), flat(state["x"]),
+                    flat(rows), *(flat(state[k]) for k in ("yaw", "vx", "vy", "yaw_rate",
+                                                           "spin", "roller_spin")),
+                    flat(state["y"]))
+    shape = (3,) + rows.shape
+    return (st.reshape(rows.shape), pose[0:3].reshape(shape), pose[5:8].reshape(shape),
+            pose[8:11].reshape(shape))
+
+
 def _row_motions(rig_contact: _RigContactFn, table: ContactTable, t: Any,
                  flat: Mapping[str, F64Array],
                  vmin: float) -> List[Optional[Tuple[_Motion, _Motion]]]:
@@ -241,13 +266,7 @@ def _row_motions(rig_contact: _RigContactFn, table: ContactTable, t: Any,
             st, j, _ = nonhertz_locate(t, float(y))
             if st >= 0:
                 rows[:, i] = t.rows[[j, j + 1], 0]
-    two = {k: np.broadcast_to(flat[k], (2, n)) for k in
-           ("x", "yaw", "vx", "vy", "yaw_rate", "spin", "roller_spin")}
-    kin = rig_contact(table, x=two["x"], y=rows, yaw=two["yaw"], vx=two["vx"], vy=two["vy"],
-                      yaw_rate=two["yaw_rate"], spin=two["spin"],
-                      roller_spin=two["roller_spin"], vmin=vmin, kinematics_only=True,
-                      errors="ignore")
-    c, v, w = (np.asarray(a) for a in (kin.pose.c, kin.pose.v, kin.pose.w))   # (3, 2, n)
+    _, c, v, w = _row_kinematics(table, vmin, flat, rows)       # (3, 2, n) each
     ok = np.all(np.isfinite(c) & np.isfinite(v) & np.isfinite(w), axis=(0, 1)).tolist()
     cl, vl, wl = (a.transpose(2, 1, 0).tolist() for a in (c, v, w))        # [state][row][k]
     out: List[Optional[Tuple[_Motion, _Motion]]] = []
@@ -292,11 +311,11 @@ def _nonhertz_state(func: str, table: ContactTable, nonhertz: Any, kind: str,
                       yaw_rate=vals["yaw_rate"], spin=vals["spin"],
                       roller_spin=vals["roller_spin"], vmin=model["vmin"],
                       kinematics_only=True)
-            kin = rig_contact(table, errors="ignore", **kw)
-            if np.min(kin.status) < 0:
+            kst, *cvw = _row_kinematics(table, model["vmin"], vals, yr)
+            if np.min(kst) < 0:
                 # the rows' kinematics fail (an extreme x or yaw): the state does,
                 # in the words of the call that raises
-                code = int(np.min(kin.status))
+                code = int(np.min(kst))
                 try:
                     rig_contact(table, errors="raise", **kw)
                 except RollerRigError as e:
@@ -304,8 +323,7 @@ def _nonhertz_state(func: str, table: ContactTable, nonhertz: Any, kind: str,
                 raise _StateFailure(f"{func}: {status_message(code)}", code)
             # the wheelset's centre, velocity, angular velocity at the two rows
             motion0, motion1 = [tuple((float(a[0, j]), float(a[1, j]), float(a[2, j]))
-                                      for a in map(np.asarray, (kin.pose.c, kin.pose.v,
-                                                                kin.pose.w)))
+                                      for a in cvw)
                                 for j in range(2)]
         load = vals[f"load_{side}"]
 
