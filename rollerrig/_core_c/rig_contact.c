@@ -15,6 +15,29 @@ static void store_wheel(double *d, npy_intp n, npy_intp i, const rr_wheel_contac
     rr_wheel_store(w, d + i, (long)n);
 }
 
+/* State i of the inputs in[0..8) (x, y, yaw, vx, vy, yaw_rate, spin, roller_spin). */
+static void read_state(const input *in, npy_intp i, rr_rig_state *s)
+{
+    s->x = IN(in[0], i);
+    s->y = IN(in[1], i);
+    s->yaw = IN(in[2], i);
+    s->vx = IN(in[3], i);
+    s->vy = IN(in[4], i);
+    s->yaw_rate = IN(in[5], i);
+    s->spin = IN(in[6], i);
+    s->roller_spin = IN(in[7], i);
+}
+
+/* The pose's NPOSE numbers into column i of d (NPOSE rows of n). */
+static void store_pose(double *d, npy_intp n, npy_intp i, const rr_rig_pose *p)
+{
+    const double pv[NPOSE] = {p->c[0], p->c[1], p->c[2], p->roll, p->beta, p->v[0], p->v[1],
+                              p->v[2], p->w[0], p->w[1], p->w[2]};
+    int k;
+    for (k = 0; k < NPOSE; k++)
+        d[k * n + i] = pv[k];
+}
+
 typedef struct {
     input in[NSTATE];
     const rr_rig_contact_checked *m;     /* checked once for the batch */
@@ -34,14 +57,7 @@ static int rig_contact_kernel(void *ctx, npy_intp start, npy_intp stop)
         rr_rig_pose pose;
         rr_wheel_contact w[2];
         double N[2];
-        s.x = IN(b->in[0], i);
-        s.y = IN(b->in[1], i);
-        s.yaw = IN(b->in[2], i);
-        s.vx = IN(b->in[3], i);
-        s.vy = IN(b->in[4], i);
-        s.yaw_rate = IN(b->in[5], i);
-        s.spin = IN(b->in[6], i);
-        s.roller_spin = IN(b->in[7], i);
+        read_state(b->in, i, &s);
         N[0] = IN(b->in[8], i);
         N[1] = IN(b->in[9], i);
         memset(w, 0, sizeof w);                /* each state on its own: no seed */
@@ -58,13 +74,7 @@ static int rig_contact_kernel(void *ctx, npy_intp start, npy_intp stop)
         }
         b->left_status[i] = (npy_int8)w[0].status;
         b->right_status[i] = (npy_int8)w[1].status;
-        {
-            const double pv[NPOSE] = {pose.c[0], pose.c[1], pose.c[2], pose.roll, pose.beta,
-                                      pose.v[0], pose.v[1], pose.v[2], pose.w[0], pose.w[1],
-                                      pose.w[2]};
-            for (k = 0; k < NPOSE; k++)
-                b->pose[k * b->n + i] = pv[k];
-        }
+        store_pose(b->pose, b->n, i, &pose);
         store_wheel(b->left, b->n, i, &w[0]);
         store_wheel(b->right, b->n, i, &w[1]);
     }
@@ -176,28 +186,14 @@ static int row_kernel(void *ctx, npy_intp start, npy_intp stop)
 {
     row_batch *b = ctx;
     npy_intp i;
-    int k;
     for (i = start; i < stop; i++) {
         rr_rig_state s;
         rr_rig_pose pose;
         rr_wheel_contact w[2];
-        s.x = IN(b->in[0], i);
-        s.y = IN(b->in[1], i);
-        s.yaw = IN(b->in[2], i);
-        s.vx = IN(b->in[3], i);
-        s.vy = IN(b->in[4], i);
-        s.yaw_rate = IN(b->in[5], i);
-        s.spin = IN(b->in[6], i);
-        s.roller_spin = IN(b->in[7], i);
+        read_state(b->in, i, &s);
         memset(w, 0, sizeof w);
         b->status[i] = (npy_int8)rr_rig_kinematics_rates_at(b->m, &s, IN(b->in[8], i), &pose, w);
-        {
-            const double pv[NPOSE] = {pose.c[0], pose.c[1], pose.c[2], pose.roll, pose.beta,
-                                      pose.v[0], pose.v[1], pose.v[2], pose.w[0], pose.w[1],
-                                      pose.w[2]};
-            for (k = 0; k < NPOSE; k++)
-                b->pose[k * b->n + i] = pv[k];
-        }
+        store_pose(b->pose, b->n, i, &pose);
     }
     return 0;
 }
