@@ -341,7 +341,9 @@ def _nonhertz_state(func: str, table: ContactTable, nonhertz: Any, kind: str,
                 raise _StateFailure(f"{func}: the {side} wheel at y = {y!r} m, Fz = {Fz!r} N: "
                                     f"a load beyond the nonhertz table's (built for Fz = "
                                     f"{nonhertz.Fz:g} N, its nodes to {LOAD_SPAN:.3g} times "
-                                    f"that, extrapolated to 2.8 times more): "
+                                    f"that, extrapolated to 2.8 times more), or on a flange "
+                                    f"whose creep forces pull the wheel down no vertical "
+                                    f"balance at all (the flange climbs): "
                                     f"{status_message(st)}", st)
             if st < 0:
                 raise _StateFailure(f"{func}: the {side} wheel at y = {y!r} m, Fz = {Fz!r} N: "
