@@ -3,8 +3,9 @@ multi-patch contact (rr_nonhertz_wheel, csrc/geometry/rr_nonhertz.h) from a
 rollerrig.NonHertzTable, over a state or arrays of states; the wheels'
 types, NonHertzWheel and its NonHertzPatch.  rollerrig.rig.contact
 dispatches here and re-exports the types, and hands in what it owns (the
-Hertzian rig_contact for the rows' kinematics, RigContact, the settling's
-tolerance), so that this module does not import it back."""
+Hertzian rig_contact for the pose and the words of a failed kinematics,
+RigContact, the settling's tolerance), so that this module does not import
+it back."""
 from __future__ import annotations
 
 import warnings
@@ -159,7 +160,7 @@ def nonhertz_rig_contact(func: str, table: ContactTable, nonhertz: object, loads
         return make(pose, wheels["left"], wheels["right"],
                     min(wheels["left"].status, wheels["right"].status))
     n = int(np.prod(shape, dtype=np.int64))
-    motions = {side: _row_motions(rig_contact, table, nonhertz.side(side), flat, model["vmin"])
+    motions = {side: _row_motions(table, nonhertz.side(side), flat, model["vmin"])
                for side in ("left", "right")}
     out: Dict[str, List[NonHertzWheel]] = {"left": [], "right": []}
     first, bad = None, 0
@@ -252,12 +253,12 @@ def _row_kinematics(table: ContactTable, vmin: float, state: Mapping[str, Any],
             pose[8:11].reshape(shape))
 
 
-def _row_motions(rig_contact: _RigContactFn, table: ContactTable, t: Any,
-                 flat: Mapping[str, F64Array],
+def _row_motions(table: ContactTable, t: Any, flat: Mapping[str, F64Array],
                  vmin: float) -> List[Optional[Tuple[_Motion, _Motion]]]:
     """Per state of an array call, the wheelset's (centre, velocity, angular
-    velocity) at the two rows of side table t around its y (one kinematics
-    call for them all; None where y has no rows: the state fails there)."""
+    velocity) at the two rows of side table t around its y, moving with the
+    state's own rates (one kinematics call for them all, _row_kinematics;
+    None where y has no rows: the state fails there)."""
     from ..geometry.nonhertz import nonhertz_locate
     n = flat["y"].size
     rows = np.full((2, n), np.nan)
