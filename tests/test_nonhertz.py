@@ -335,6 +335,20 @@ def test_hertz_limit_on_s1002_tread():
 
 # ---------------------------------------------------------------- the API
 
+def test_the_default_table_is_a_table_around_y():
+    # without a table rig_exact builds one at y_ws and 10 um beyond: y_ws
+    # a row, the rates from the next (the lookup's interval from y_ws on),
+    # as the table 10 um either side gave, for one rigid search less; with
+    # lateral speed and yaw rate, where the rates enter
+    g = geometry("miniprof")
+    for y in (0.0035, -0.0051):
+        kw = dict(Fz=6e4, mu=0.5, spin=12.43, roller_spin=5.587, vy=0.01, yaw_rate=1e-3, n=16)
+        a = rr.rig_exact(g, y, **kw)
+        b = rr.rig_exact(g, y, table=rr.contact_table(g, y - 1e-5, y + 1e-5, 3), **kw)
+        assert (a.cx, a.cy, a.cphi) == (b.cx, b.cy, b.cphi)
+        assert np.array_equal(a.force, b.force)
+
+
 def test_right_wheel_mirrors_the_left():
     # the standard pair is symmetric: the right wheel at -y is the left at +y,
     # its plane's y (toward +Y) running the other way across the profiles
