@@ -18,8 +18,8 @@
  *
  * The run time, per wheel: the two rows around y each evaluated as if the
  * wheelset were at the row's shift, moving as it does at y (the caller
- * gives that motion), the results blended linearly in y (results, not node data: the
- * forces stay continuous where the rows' patches differ).  Per row: the
+ * gives that motion), the results blended linearly in y (results, not node
+ * data: the forces stay continuous where the rows' patches differ).  Per row: the
  * shared lowering dz from the vertical load Fz (sum over patches of
  * N_j(dz - g_j) cos(delta_j) + the creep forces' vertical share = Fz: a
  * bracketed secant on S^(2/3), the share fixed-point iterated); per patch

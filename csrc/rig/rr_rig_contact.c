@@ -332,13 +332,15 @@ int rr_rig_kinematics_rates_at(const rr_rig_contact_checked *k, const rr_rig_sta
 
 /* Wheel k (0 left, 1 right) of a finished kinematics by the non-Hertzian
  * contact (rr_rig_contact.h, Patch) at the caller's normal load N; c->N,
- * c->friction set, N > 0.  Its status, c filled or not touched on error. */
+ * c->friction set, N > 0; slope the table's at the state's y (its rates,
+ * rr_rig_kinematics_rates_at).  Its status, c filled or not touched on
+ * error. */
 static int nonhertz_wheel(const rr_rig_contact_model *m, int k, double N,
-                          const rr_rig_pose *pose, rr_wheel_contact *c)
+                          const rr_rig_pose *pose, const rr_wheelset_pose *slope,
+                          rr_wheel_contact *c)
 {
     const rr_nh_table *t = m->nonhertz[k];
     const rr_rig_state *s = &pose->state;
-    rr_wheelset_pose slope;
     rr_nh_state ns;
     rr_nh_result r;
     double w, Nsum = 0.0, ab_sum = 0.0, Nmax = -1.0, ab = 1.0, scale;
@@ -351,17 +353,15 @@ static int nonhertz_wheel(const rr_rig_contact_model *m, int k, double N,
         return RR_ERR_LOAD;                  /* the normal does not lift the wheel */
     if ((st = rr_nonhertz_locate(t, s->y, &i, &w)) < 0)
         return st;                           /* the wheelset beyond the table's rows */
-    if ((st = slopes_at(m, s->y, &slope)) < 0)
-        return st;
     for (j = 0; j < 2; j++) {
         /* the wheelset's motion as if at row i + j's shift, with the rates
          * of its own (rr_rig_kinematics_rates_at) */
-        rr_wheelset_pose tp, unused;
+        rr_wheelset_pose tp;
         rr_contact_point g[2];
         rr_rig_pose pr;
         const double yr = t->rows[(size_t)(i + j) * RR_NH_ROW_LEN];
-        if ((st = rr_contact_table_lookup(m->table, yr, &tp, &unused, &g[0], &g[1])) < 0
-            || (st = pose_of(m, s, yr, &tp, &slope, &pr)) < 0)
+        if ((st = rr_contact_table_lookup(m->table, yr, &tp, NULL, &g[0], &g[1])) < 0
+            || (st = pose_of(m, s, yr, &tp, slope, &pr)) < 0)
             return st;
         memcpy(ns.motion[j].c, pr.c, sizeof pr.c);
         memcpy(ns.motion[j].v, pr.v, sizeof pr.v);
@@ -421,6 +421,11 @@ static int loads(const rr_rig_contact_model *m, const rr_creep_checked *creep, i
                  double *work, size_t work_len, const double N[2], const rr_rig_pose *pose,
                  rr_wheel_contact w[2])
 {
+    /* the non-Hertzian rows' rates: the table's slopes at the state's y,
+     * once for both wheels (inside the table: its kinematics found y) */
+    rr_wheelset_pose slope;
+    const int sst = m->patch == RR_RIG_PATCH_NONHERTZ ? slopes_at(m, pose->state.y, &slope)
+                                                      : RR_OK;
     int k;
     for (k = 0; k < 2; k++) {
         rr_wheel_contact *c = &w[k];
@@ -440,7 +445,7 @@ static int loads(const rr_rig_contact_model *m, const rr_creep_checked *creep, i
             continue;
         }
         if (m->patch == RR_RIG_PATCH_NONHERTZ) {
-            sk = cst < 0 ? cst : nonhertz_wheel(m, k, N[k], pose, c);
+            sk = cst < 0 ? cst : sst < 0 ? sst : nonhertz_wheel(m, k, N[k], pose, &slope, c);
             if (sk < 0)
                 wheel_nan(c, sk);
             else if (!rr_all_finite(c->force, 3) || !rr_all_finite(c->moment, 3)

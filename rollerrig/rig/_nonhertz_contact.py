@@ -308,17 +308,16 @@ def _nonhertz_state(func: str, table: ContactTable, nonhertz: Any, kind: str,
                 raise _StateFailure(f"{func}: y = {y!r} m: beyond the nonhertz table's rows "
                                     f"({ys[0]:g} to {ys[-1]:g} m): {status_message(st)}", st)
             yr = t.rows[[i, i + 1], 0]
-            kw = dict(x=vals["x"], y=yr, yaw=vals["yaw"], vx=vals["vx"], vy=vals["vy"],
-                      yaw_rate=vals["yaw_rate"], spin=vals["spin"],
-                      roller_spin=vals["roller_spin"], vmin=model["vmin"],
-                      kinematics_only=True)
             kst, *cvw = _row_kinematics(table, model["vmin"], vals, yr)
             if np.min(kst) < 0:
                 # the rows' kinematics fail (an extreme x or yaw): the state does,
                 # in the words of the call that raises
                 code = int(np.min(kst))
                 try:
-                    rig_contact(table, errors="raise", **kw)
+                    rig_contact(table, x=vals["x"], y=yr, yaw=vals["yaw"], vx=vals["vx"],
+                                vy=vals["vy"], yaw_rate=vals["yaw_rate"], spin=vals["spin"],
+                                roller_spin=vals["roller_spin"], vmin=model["vmin"],
+                                kinematics_only=True, errors="raise")
                 except RollerRigError as e:
                     raise _StateFailure(str(e), code) from None
                 raise _StateFailure(f"{func}: {status_message(code)}", code)
