@@ -59,7 +59,8 @@ NOTES = """Notes (measured on this branch, not by this script):
   rates (rr_rig_kinematics_rates_at; one more table lookup a wheel): 50.16 k -> 50.88 k
   instructions a sample over Rig.run (the measured pair, callgrind); in turn with the build
   before, best of 7: the measured pair 1028 / 1066x -> 1023 / 1040x, S1002 1033 / 1022x ->
-  1014 / 1008x.  The table above is this script's run after it.
+  1014 / 1008x.  The table above is this script's run after it.  Then the slopes at y were
+  looked up once a sample for both wheels: 50.48 k (the history bit for bit).
 - Accuracy in the loop (tests/test_rig_nonhertz.py): on the cone's elliptic gap the nonhertz
   rig's fx history stays within 0.015 mu0 (N_left + N_right) of the Hertz rig with the exact
   table (measured max 0.0093, p95 4e-5; FASTSIM against the same reference 0.0091, p95 2e-5:
