@@ -116,7 +116,10 @@ int rr_nonhertz_locate(const rr_nh_table *t, double y, int *row, double *w)
 void rr_nonhertz_frame(double PY, double PZ, double delta, double theta, double sigma,
                        double R0, rr_nh_frame *f)
 {
-    const double sd = sin(delta), cd = cos(delta), st = sin(theta), ct = cos(theta);
+    /* theta is 0 without yaw or x (the rig's usual state): its sine and
+     * cosine are theta itself (+-0) and 1, without the calls */
+    const double sd = sin(delta), cd = cos(delta);
+    const double st = theta == 0.0 ? theta : sin(theta), ct = theta == 0.0 ? 1.0 : cos(theta);
     f->P[0] = (PZ + R0) * st;
     f->P[1] = PY;
     f->P[2] = theta == 0.0 ? PZ : (PZ + R0) * ct - R0;
@@ -316,7 +319,8 @@ static int patch_forces(const rr_nh_table *tb, const double *p, double dz, const
         theta = asin(xj / (r + R)) + sig * r * tan(d) * s->yaw / (r + R);
     }
     rr_nonhertz_frame(PY, PZ, d, theta, sig, tb->R0, &fr);
-    if ((st = rr_nonhertz_creepages(ws, s->roller_spin, tb->R0, &fr, e * cos(d), dz, s->vmin,
+    /* the frame's t2[1] is cos(d) */
+    if ((st = rr_nonhertz_creepages(ws, s->roller_spin, tb->R0, &fr, e * fr.t2[1], dz, s->vmin,
                                     k)) < 0)
         return st;
     /* the creepages at the centroid; the calibrated ellipse there */
