@@ -19,6 +19,7 @@ typedef struct {
     double *h, *pn, *hf, *hc, *hcf;     /* side^2, side^2, 4 side^2, side^2, 4 side^2 */
     signed char *state;                 /* side^2 bytes */
     size_t cells;
+    int side;                           /* the coarse grids' solver's side (the fine's: 2 side) */
 } rr_nh_bufs;
 
 /* A patch of the row: the band of rig Y whose gap it holds (rr_gap's keep:

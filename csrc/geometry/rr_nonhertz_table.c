@@ -129,11 +129,29 @@ size_t rr_nonhertz_row_workspace_len(const rr_nh_row_problem *pb, int side)
     return lens(pb, side, part);
 }
 
-/* A grid of elements dx, dy (from n by element_sizes when dx = 0) on the
- * node's plane and pose (patch p of result r) into h (hlen doubles). */
-static int grid_at(rr_nh_call *c, const rr_wheel_exact_result *r, int n, double dx, double dy,
-                   double *h, size_t hlen, rr_gap_patch *out)
+/* A grid for a solver of scale x side elements a side (the coarse grids'
+ * 1, the fine's 2): rr_gap_build holds it to the cells, scale^2 side^2,
+ * but the solver's transforms to its side along each axis (a 6 x 20 grid
+ * fits 144 cells, not a 12 x 12 transform).  RR_ERR_WORKSPACE beyond it,
+ * with the row's side it needs. */
+static int grid_fits(rr_nh_call *c, const rr_gap_patch *p, int scale)
 {
+    const int m = p->grid.mx > p->grid.my ? p->grid.mx : p->grid.my;
+    if (m <= scale * c->b.side)
+        return RR_OK;
+    c->info->why = RR_NH_ROW_GRID;
+    c->info->gap_why = RR_GAP_H_BUFFER;
+    c->info->need = (size_t)((m + scale - 1) / scale);
+    return RR_ERR_WORKSPACE;
+}
+
+/* A grid of elements dx, dy (from n by element_sizes when dx = 0) on the
+ * node's plane and pose (patch p of result r) into h, for a solver of
+ * scale x side a side (grid_fits). */
+static int grid_at(rr_nh_call *c, const rr_wheel_exact_result *r, int n, double dx, double dy,
+                   double *h, int scale, rr_gap_patch *out)
+{
+    const size_t hlen = (size_t)(scale * scale) * c->b.cells;
     const rr_nh_row_problem *pb = c->pb;
     rr_gap_site site;
     rr_gap_opts o;
@@ -182,6 +200,8 @@ static int grid_at(rr_nh_call *c, const rr_wheel_exact_result *r, int n, double 
             c->info->need = (size_t)(out->grid.mx > out->grid.my ? out->grid.mx : out->grid.my);
         return st;
     }
+    if (grid_fits(c, out, scale) != RR_OK)
+        return RR_ERR_WORKSPACE;
     rr_nh_clip_band(c->bd, out, h);
     return st;
 }
@@ -362,6 +382,8 @@ static int normal_at(rr_nh_call *c, double e, double N, double cov, node_data *d
         o.dx = dx;
         o.dy = dy;
     }
+    if ((st = grid_fits(c, &r->patch, 1)) != RR_OK)
+        return st;
     /* the load: N ~ approach^1.5, iterated until the approach is pen */
     memset(&ep, 0, sizeof ep);
     ep.grid = r->patch.grid;
@@ -445,7 +467,7 @@ static int solve_node(rr_nh_call *c, int k, double e, double Nguess, double *p, 
     d->ab = d->ab < AB_LO ? AB_LO : d->ab > AB_HI ? AB_HI : d->ab;
     /* the linear coefficients (Richardson where asked) */
     if (pb->richardson
-        && (st = grid_at(c, &d->r, pb->n, 0.5 * g->grid.dx, 0.5 * g->grid.dy, b->hf, 4 * b->cells, &gf)) < 0)
+        && (st = grid_at(c, &d->r, pb->n, 0.5 * g->grid.dx, 0.5 * g->grid.dy, b->hf, 2, &gf)) < 0)
         return st;
     if ((st = forces(c, g, b->h, &gf, b->hf, d->N, (const double (*)[3])cr, 3, F, warn)) < 0)
         return st;
@@ -518,10 +540,10 @@ static int correct_node(rr_nh_call *c, const node_data *d, double *cb, int *warn
         cr[i][1] = cc[i][1] - cphi * d->xc;
         cr[i][2] = cphi;
     }
-    if ((st = grid_at(c, &d->r, pb->n_corr, 0.0, 0.0, b->hc, b->cells, &gc)) < 0)
+    if ((st = grid_at(c, &d->r, pb->n_corr, 0.0, 0.0, b->hc, 1, &gc)) < 0)
         return st;
     if (pb->richardson
-        && (st = grid_at(c, &d->r, pb->n_corr, 0.5 * gc.grid.dx, 0.5 * gc.grid.dy, b->hcf, 4 * b->cells, &gcf))
+        && (st = grid_at(c, &d->r, pb->n_corr, 0.5 * gc.grid.dx, 0.5 * gc.grid.dy, b->hcf, 2, &gcf))
                < 0)
         return st;
     if ((st = forces(c, &gc, b->hc, &gcf, b->hcf, d->N, (const double (*)[3])cr, m, F, warn))
@@ -605,6 +627,7 @@ int rr_nonhertz_row(const rr_nh_row_problem *pb, double *work, size_t work_len, 
     c.b.gap = c.b.fine_ex + part[1];
     c.b.gap_len = part[2];
     c.b.cells = (size_t)side * (size_t)side;
+    c.b.side = side;
     c.b.h = c.b.gap + part[2];
     c.b.pn = c.b.h + c.b.cells;
     c.b.hf = c.b.pn + c.b.cells;
