@@ -76,11 +76,8 @@ static int probe(rr_nh_call *c, double L, const rr_nh_band *bd, rr_gap_patch *q)
     a = (L - (bd ? bd->g : 0.0)) * cos(site.delta);
     for (it = 0; it < 4; it++) {
         o.approach = a > 1e-3 * L ? a : 1e-3 * L;
-        if ((st = rr_gap_build(&site, &o, c->b.gap, c->b.gap_len, c->b.h, c->b.cells, q)) < 0) {
-            c->info->why = RR_NH_ROW_GRID;
-            c->info->gap_why = q->why;
-            return st;
-        }
+        if ((st = rr_gap_build(&site, &o, c->b.gap, c->b.gap_len, c->b.h, c->b.cells, q)) < 0)
+            return rr_nh_grid_failed(c, st, q, 1);
         if (bd)
             rr_nh_clip_band(bd, q, c->b.h);
         if (!(q->pen > 0.0) || fabs(q->pen / o.approach - 1.0) < 1e-3)

@@ -39,6 +39,12 @@ typedef struct {
     const rr_nh_band *bd;                     /* the patch being built */
 } rr_nh_call;
 
+/* Not API.  A gap build's failure st (its patch p, for a solver of scale x
+ * side elements a side: 1 the coarse grids, 2 the fine) into the row's
+ * info: why GRID, the gap's reason and, where h or the side was short, the
+ * row's side it needs (rr_nonhertz_table.c).  Returns st. */
+int rr_nh_grid_failed(rr_nh_call *c, int st, const rr_gap_patch *p, int scale);
+
 /* Not API.  Rows of grid g outside band bd lifted out of reach, h and g->pen shifted
  * back to least 0 (rr_nonhertz_bands.c). */
 void rr_nh_clip_band(const rr_nh_band *bd, rr_gap_patch *g, double *h);

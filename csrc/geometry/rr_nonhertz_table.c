@@ -129,20 +129,26 @@ size_t rr_nonhertz_row_workspace_len(const rr_nh_row_problem *pb, int side)
     return lens(pb, side, part);
 }
 
-/* A grid for a solver of scale x side elements a side (the coarse grids'
- * 1, the fine's 2): rr_gap_build holds it to the cells, scale^2 side^2,
- * but the solver's transforms to its side along each axis (a 6 x 20 grid
- * fits 144 cells, not a 12 x 12 transform).  RR_ERR_WORKSPACE beyond it,
- * with the row's side it needs. */
-static int grid_fits(rr_nh_call *c, const rr_gap_patch *p, int scale)
+int rr_nh_grid_failed(rr_nh_call *c, int st, const rr_gap_patch *p, int scale)
 {
     const int m = p->grid.mx > p->grid.my ? p->grid.mx : p->grid.my;
-    if (m <= scale * c->b.side)
-        return RR_OK;
     c->info->why = RR_NH_ROW_GRID;
-    c->info->gap_why = RR_GAP_H_BUFFER;
-    c->info->need = (size_t)((m + scale - 1) / scale);
-    return RR_ERR_WORKSPACE;
+    c->info->gap_why = p->why;
+    if (st == RR_ERR_WORKSPACE)
+        c->info->need = (size_t)((m + scale - 1) / scale);
+    return st;
+}
+
+/* A grid for a solver of scale x side elements a side (the coarse grids'
+ * 1, the fine's 2): rr_gap_build holds it to the cells, scale^2 side^2,
+ * but the solver's transforms to its side along each axis (a 13 x 11 grid
+ * fits 144 cells, not a 12 x 12 transform).  RR_ERR_WORKSPACE beyond it. */
+static int grid_fits(rr_nh_call *c, rr_gap_patch *p, int scale)
+{
+    if (p->grid.mx <= scale * c->b.side && p->grid.my <= scale * c->b.side)
+        return RR_OK;
+    p->why = RR_GAP_H_BUFFER;
+    return rr_nh_grid_failed(c, RR_ERR_WORKSPACE, p, scale);
 }
 
 /* A grid of elements dx, dy (from n by element_sizes when dx = 0) on the
@@ -193,13 +199,8 @@ static int grid_at(rr_nh_call *c, const rr_wheel_exact_result *r, int n, double 
     site.s_wheel = c->bd->s_wheel;
     site.delta = c->bd->delta;
     st = rr_gap_build(&site, &o, c->b.gap, c->b.gap_len, h, hlen, out);
-    if (st < 0) {
-        c->info->why = RR_NH_ROW_GRID;
-        c->info->gap_why = out->why;
-        if (st == RR_ERR_WORKSPACE)
-            c->info->need = (size_t)(out->grid.mx > out->grid.my ? out->grid.mx : out->grid.my);
-        return st;
-    }
+    if (st < 0)
+        return rr_nh_grid_failed(c, st, out, scale);
     if (grid_fits(c, out, scale) != RR_OK)
         return RR_ERR_WORKSPACE;
     rr_nh_clip_band(c->bd, out, h);
@@ -358,14 +359,8 @@ static int normal_at(rr_nh_call *c, double e, double N, double cov, node_data *d
         double dx, dy;
         o.approach = a;
         st = rr_gap_build(&site, &o, b->gap, b->gap_len, b->h, b->cells, &r->patch);
-        if (st < 0) {
-            c->info->why = RR_NH_ROW_GRID;
-            c->info->gap_why = r->patch.why;
-            if (st == RR_ERR_WORKSPACE)
-                c->info->need = (size_t)(r->patch.grid.mx > r->patch.grid.my ? r->patch.grid.mx
-                                                                             : r->patch.grid.my);
-            return st;
-        }
+        if (st < 0)
+            return rr_nh_grid_failed(c, st, &r->patch, 1);
         rr_nh_clip_band(bd, &r->patch, b->h);
         if (!(r->patch.pen > 0.0)) {
             c->info->why = RR_NH_ROW_GRID;
