@@ -8,6 +8,7 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "rr_test.h"
 #include "contact/rr_contact.h"
@@ -15,6 +16,7 @@
 #include "contact/rr_hertz.h"
 #include "contact/rr_kalker.h"
 #include "geometry/rr_nonhertz.h"
+#include "geometry/rr_geometry.h"
 #include "geometry/rr_nonhertz_table.h"
 
 #define G_ 8.2e10
@@ -265,10 +267,111 @@ static void test_row_inputs(void)
     CHECK(rr_nonhertz_row_workspace_len(NULL, 48) == 0, "no problem");
 }
 
+/* A row on too small a side says the side it needs (info.need > side), so
+ * that a caller can grow it: a coarse grid may fit side^2 cells but not the
+ * side along one axis (13 x 11 on side 12), and the bands' probe may need
+ * more cells than side^2.  fuzz_nonhertz_row's find: a 1:14 cone on a
+ * roller crowned at 22.5 mm, 3.4 mm wide, at the rig's loads; sides 8 to 40
+ * each give a row or that refusal, and the side grown by it gives a row. */
+static void test_row_says_the_side_it_needs(void)
+{
+    enum { NW = 30, NR = 24 };
+    double ws[NW], wz[NW], wm[NW], rs[NR], rz[NR], rm[NR], scratch[NW];
+    double row[RR_NH_ROW_LEN];
+    rr_wheel_roller left, right;
+    rr_search_opts so;
+    rr_contact_point cr;
+    rr_nh_row_problem pb;
+    rr_nh_row_info info;
+    int i, side, refused = 0, built = 0, grown_ok = 1;
+    for (i = 0; i < NW; i++) {
+        ws[i] = -0.0258783 + 2.0 * 0.0258783 * i / (NW - 1);
+        wz[i] = 0.0693929 * ws[i];
+    }
+    for (i = 0; i < NR; i++) {
+        rs[i] = -0.00337956 + 2.0 * 0.00337956 * i / (NR - 1);
+        rz[i] = sqrt(0.0225353 * 0.0225353 - rs[i] * rs[i]) - 0.0225353;
+    }
+    CHECK(rr_spline_init(NW, ws, wz, wm, scratch) == RR_OK
+          && rr_spline_init(NR, rs, rz, rm, scratch) == RR_OK, "the profiles' splines");
+    memset(&left, 0, sizeof left);
+    left.wheel.n = NW, left.wheel.s = ws, left.wheel.z = wz, left.wheel.m = wm;
+    left.roller.n = NR, left.roller.s = rs, left.roller.z = rz, left.roller.m = rm;
+    left.r0 = 0.0320864;
+    left.R0 = 0.143133;
+    left.wheel_y = 0.388111;
+    left.roller_y = 0.390399;
+    left.side = 1;
+    right = left;
+    right.side = -1;
+    rr_search_opts_default(&so);
+    rr_nonhertz_row_default(&pb);
+    pb.pair = &left;
+    pb.y_ws = -1.128026e-3;
+    CHECK_STATUS(rr_wheelset_contact(&left, &right, pb.y_ws, &so, &pb.pose0, &pb.point, &cr),
+                 RR_OK, "the zero-gap pose");
+    pb.Fz_max = 52.41;
+    pb.Fz_regions = 12.14;
+    pb.mu = 0.18;
+    pb.vmin = 3e-4;
+    pb.n = pb.n_corr = 8;
+    pb.richardson = 0;
+    pb.combine = 3.087e-3;
+    pb.tol = 2.42e-5;
+    pb.maxit = 82;
+    pb.roller_spin = 10.0;
+    pb.wheelset.c[1] = pb.y_ws;
+    pb.wheelset.c[2] = pb.pose0.z;
+    pb.wheelset.w[1] = 10.0 * left.R0 / left.r0 * cos(pb.pose0.roll);
+    pb.wheelset.w[2] = 10.0 * left.R0 / left.r0 * sin(pb.pose0.roll);
+    for (side = 8; side <= 40; side++) {
+        const size_t len = rr_nonhertz_row_workspace_len(&pb, side);
+        double *work = calloc(len, sizeof *work);
+        int st;
+        if (!work) {
+            CHECK(0, "memory for the workspace");
+            return;
+        }
+        st = rr_nonhertz_row(&pb, work, len, side, row, &info);
+        free(work);
+        if (st >= 0) {
+            built++;
+            continue;
+        }
+        CHECK(st == RR_ERR_WORKSPACE && info.need > (size_t)side,
+              "a refusal on its own side says a larger side");
+        if (st != RR_ERR_WORKSPACE || info.need <= (size_t)side) {
+            printf("  side %d: status %d, need %zu, why %d, gap_why %d\n", side, st, info.need,
+                   info.why, info.gap_why);
+            continue;
+        }
+        refused++;
+        {
+            /* grown to the side it says, again while refused (a larger
+             * node's grid may need more: the binding's loop, without its
+             * margin) */
+            int s2 = side, tries, st2 = st;
+            for (tries = 0; tries < 6 && st2 == RR_ERR_WORKSPACE && (int)info.need > s2; tries++) {
+                const size_t len2 = rr_nonhertz_row_workspace_len(&pb, s2 = (int)info.need);
+                double *w2 = calloc(len2, sizeof *w2);
+                st2 = w2 ? rr_nonhertz_row(&pb, w2, len2, s2, row, &info) : RR_ERR_WORKSPACE;
+                free(w2);
+            }
+            if (st2 < 0) {
+                printf("  side %d grown to %d: status %d, need %zu\n", side, s2, st2, info.need);
+                grown_ok = 0;
+            }
+        }
+    }
+    CHECK(refused > 0 && built > 0, "sides both too small and enough");
+    CHECK(grown_ok, "each refused side, grown to the side it said, gives a row");
+}
+
 int main(void)
 {
     test_hertz_table_gives_hertz();
     test_bad_state_and_table();
     test_row_inputs();
+    test_row_says_the_side_it_needs();
     return rr_test_summary();
 }
